@@ -1,0 +1,139 @@
+"""The map model: size, obstacles, start and goal; the eight moves and their order.
+
+Coordinates follow MovingAI: ``x`` is the column counted from 0 at the left, ``y`` the row
+counted from 0 at the top.  The grid is a plain, mutable value: editing it never touches a
+search, because every search copies what it needs when it starts (search state lives in the
+run, never on the grid).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+Cell = tuple[int, int]
+
+#: Every direction the robot can move in, with its (dx, dy).  The tuple's order is only the
+#: numbering of direction codes; the order in which successors are generated is ``order``.
+DIRECTIONS: tuple[str, ...] = ("N", "NE", "E", "SE", "S", "SW", "W", "NW")
+DELTAS: dict[str, Cell] = {
+    "N": (0, -1),
+    "NE": (1, -1),
+    "E": (1, 0),
+    "SE": (1, 1),
+    "S": (0, 1),
+    "SW": (-1, 1),
+    "W": (-1, 0),
+    "NW": (-1, -1),
+}
+DIR_CODE: dict[str, int] = {name: i for i, name in enumerate(DIRECTIONS)}
+
+#: Counterclockwise from north: the order the tutorial's narrative implies ("successors are
+#: added (SW, S, E, NE) in the order that they are discovered").
+DEFAULT_ORDER: tuple[str, ...] = ("N", "NW", "W", "SW", "S", "SE", "E", "NE")
+
+SQRT2 = math.sqrt(2.0)
+
+
+def parse_order(text: str) -> tuple[str, ...]:
+    """Parse ``"N,NE,E,SE,S,SW,W,NW"`` into a permutation of the eight directions.
+
+    Raises ``ValueError`` with a one-line reason when it is not a permutation.
+    """
+    names = tuple(part.strip().upper() for part in text.split(",") if part.strip())
+    unknown = [n for n in names if n not in DELTAS]
+    if unknown:
+        raise ValueError(f"unknown direction {unknown[0]!r} (use N, NE, E, SE, S, SW, W, NW)")
+    if len(set(names)) != len(names):
+        dup = next(n for n in names if names.count(n) > 1)
+        raise ValueError(f"direction {dup} is given twice")
+    if len(names) != 8:
+        missing = [n for n in DIRECTIONS if n not in names]
+        raise ValueError(f"the order must name all eight directions; missing {', '.join(missing)}")
+    return names
+
+
+def move_cost(direction: str) -> float:
+    """Octile cost of one move: 1 straight, sqrt(2) diagonal."""
+    return SQRT2 if len(direction) == 2 else 1.0
+
+
+def is_diagonal(direction: str) -> bool:
+    return len(direction) == 2
+
+
+@dataclass
+class Grid:
+    """A ``width`` x ``height`` map; ``blocked[y * width + x]`` is 1 for an obstacle."""
+
+    width: int
+    height: int
+    blocked: bytearray = field(default=None)  # type: ignore[assignment]
+    start: Cell | None = None
+    goal: Cell | None = None
+
+    def __post_init__(self) -> None:
+        if self.width < 1 or self.height < 1:
+            raise ValueError("a grid needs at least one row and one column")
+        if self.blocked is None:
+            self.blocked = bytearray(self.width * self.height)
+        elif len(self.blocked) != self.width * self.height:
+            raise ValueError("blocked has the wrong size")
+
+    # -- queries -------------------------------------------------------------------------
+    def in_bounds(self, cell: Cell) -> bool:
+        x, y = cell
+        return 0 <= x < self.width and 0 <= y < self.height
+
+    def is_blocked(self, cell: Cell) -> bool:
+        x, y = cell
+        return bool(self.blocked[y * self.width + x])
+
+    def is_free(self, cell: Cell) -> bool:
+        return self.in_bounds(cell) and not self.is_blocked(cell)
+
+    def row(self, y: int) -> bytes:
+        """The obstacle bytes of row ``y`` (fast path for drawing)."""
+        w = self.width
+        return bytes(self.blocked[y * w : (y + 1) * w])
+
+    def neighbours(
+        self, cell: Cell, order: tuple[str, ...] = DEFAULT_ORDER, corner_cutting: bool = True
+    ) -> list[tuple[str, Cell]]:
+        """Legal moves from ``cell`` in ``order`` (ignoring visited state): the reference
+        definition that the fast search loops must agree with."""
+        x, y = cell
+        out = []
+        for name in order:
+            dx, dy = DELTAS[name]
+            nxt = (x + dx, y + dy)
+            if not self.is_free(nxt):
+                continue
+            if dx and dy and not corner_cutting:
+                if not (self.is_free((x + dx, y)) and self.is_free((x, y + dy))):
+                    continue
+            out.append((name, nxt))
+        return out
+
+    # -- edits (the app owns the grid and calls these) ----------------------------------
+    def set_blocked(self, cell: Cell, value: bool) -> None:
+        x, y = cell
+        self.blocked[y * self.width + x] = 1 if value else 0
+
+    def copy(self) -> Grid:
+        return Grid(self.width, self.height, bytearray(self.blocked), self.start, self.goal)
+
+    def free_count(self) -> int:
+        return len(self.blocked) - self.blocked.count(1)
+
+
+def path_moves(path: list[Cell]) -> list[str]:
+    """Direction names of the moves along ``path``."""
+    by_delta = {v: k for k, v in DELTAS.items()}
+    return [by_delta[(b[0] - a[0], b[1] - a[1])] for a, b in zip(path, path[1:])]
+
+
+def path_cost(moves: list[str]) -> float:
+    """Octile length of a list of moves."""
+    diag = sum(1 for m in moves if len(m) == 2)
+    return (len(moves) - diag) + diag * SQRT2
