@@ -1,0 +1,125 @@
+"""The recorded run: the state at step k is the same however k was reached."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from tests.helpers import TUTORIAL_ROWS, grid_from_rows
+from tests.engine.test_search import random_grids
+from tui_search.engine.grid import Grid
+from tui_search.engine.run import CellState, Run
+
+
+def snapshot(run: Run) -> tuple:
+    """Everything the app shows at the position: cells, frontier, tree, counts."""
+    g = run.grid
+    cells = tuple(run.cell_state((x, y)) for y in range(g.height) for x in range(g.width))
+    rows = tuple(tuple(run.row_states(y)) for y in range(g.height))
+    frontier = tuple((run.gen_cell(e), run.gen_dir(e)) for e in run.frontier())
+    root = run.tree_root()
+    tree = []
+    todo = [root]
+    while todo:
+        e = todo.pop()
+        kids = list(run.children(e))
+        tree.append((run.gen_cell(e), tuple(run.gen_cell(c) for c in kids)))
+        todo.extend(kids)
+    return (run.k, cells, rows, frontier, tuple(tree), run.expanded, run.generated,
+            run.peak_frontier(), run.depth_limit(), tuple(run.added_now()))
+
+
+def fresh_at(grid: Grid, algo: str, k: int) -> tuple:
+    run = Run(grid, algo)
+    run.advance()
+    for _ in range(k):
+        run.forward()
+    return snapshot(run)
+
+
+@settings(max_examples=120, deadline=None)
+@given(random_grids(max_side=7), st.sampled_from(["bfs", "dfs", "iddfs"]),
+       st.lists(st.integers(0, 400), min_size=1, max_size=6))
+def test_goto_from_any_direction_gives_the_same_state(grid, algo, targets) -> None:
+    run = Run(grid, algo)
+    run.advance()
+    for t in targets:
+        k = t % (run.total + 1)
+        run.goto(k)
+        assert snapshot(run) == fresh_at(grid, algo, k)
+
+
+@settings(max_examples=60, deadline=None)
+@given(random_grids(max_side=7), st.sampled_from(["bfs", "dfs", "iddfs"]))
+def test_backward_undoes_forward_exactly(grid, algo) -> None:
+    run = Run(grid, algo)
+    run.advance()
+    states = [snapshot(run)]
+    while run.forward():
+        states.append(snapshot(run))
+    assert len(states) == run.total + 1
+    for expected in reversed(states[:-1]):
+        assert run.backward()
+        assert snapshot(run) == expected
+    assert not run.backward()
+
+
+def test_tutorial_states_by_step() -> None:
+    run = Run(grid_from_rows(TUTORIAL_ROWS), "bfs")
+    assert run.cell_state((0, 0)) == CellState.FRONTIER and run.frontier_len() == 1
+    run.goto(2)
+    assert run.cell_state((0, 1)) == CellState.CURRENT
+    assert run.cell_state((0, 0)) == CellState.EXPANDED
+    assert [run.gen_cell(e) for e in run.frontier()] == [(0, 2), (1, 2)]
+    assert [run.gen_dir(e) for e in run.added_now()] == ["S", "SE"]
+    run.goto(run.total)
+    assert run.at_end and run.found
+    assert run.cell_state((4, 0)) == CellState.PATH
+    assert run.cell_state((5, 3)) == CellState.UNSEEN
+
+
+def test_dfs_frontier_is_listed_top_first() -> None:
+    run = Run(grid_from_rows(TUTORIAL_ROWS), "dfs")
+    run.goto(3)
+    assert [run.gen_dir(e) for e in run.frontier()] == ["NE", "E", "S", "SW", "S"]
+
+
+def test_the_run_owns_a_copy_of_the_grid() -> None:
+    grid = grid_from_rows(TUTORIAL_ROWS)
+    run = Run(grid, "bfs")
+    grid.set_blocked((0, 1), True)  # the app edits its map...
+    assert run.summary()["found"]  # ...and the old run is unaffected
+    assert Run(grid, "bfs").summary()["found"] is False  # a new run sees the edit
+
+
+def test_lazy_recording_advances_in_chunks() -> None:
+    grid = Grid(300, 300)
+    grid.start, grid.goal = (0, 0), (299, 299)
+    run = Run(grid, "bfs")
+    assert not run.done and run.recorded < 90_000
+    run.goto(5)
+    assert run.k == 5 and not run.done
+    run.advance()
+    assert run.done and run.found and run.total == run.recorded
+
+
+def test_memory_grows_with_steps_not_steps_times_map() -> None:
+    grid = Grid(200, 200)
+    grid.start, grid.goal = (0, 0), (199, 199)
+    run = Run(grid, "dfs")
+    run.advance()
+    assert run.rec.nbytes() < 40 * (run.total + 1)
+
+
+def test_engine_imports_without_textual_or_rich() -> None:
+    code = (
+        "import sys, tui_search.engine.grid, tui_search.engine.search, tui_search.engine.run, "
+        "tui_search.engine.mapfile, tui_search.cli\n"
+        "bad = [m for m in sys.modules if m.split('.')[0] in ('textual', 'rich')]\n"
+        "print(bad); sys.exit(1 if bad else 0)"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert out.returncode == 0, out.stdout + out.stderr

@@ -1,0 +1,55 @@
+"""Shared test helpers: build grids from rows, and an independent shortest-path oracle."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from tui_search.engine.grid import Grid
+
+ROOT = Path(__file__).resolve().parents[1]
+MAPS = ROOT / "maps"
+#: The MovingAI benchmark maps every developer and CI has beside the repository.
+MOVINGAI = ROOT.parent / "shared" / "maps" / "movingai"
+
+TUTORIAL_ROWS = [
+    "S#...#",
+    ".#.##.",
+    "...##G",
+    "..#.#.",
+    "....##",
+    "......",
+]
+
+
+def grid_from_rows(rows: list[str]) -> Grid:
+    """A grid from text rows: '#' obstacle, 'S' start, 'G' goal, anything else free."""
+    grid = Grid(len(rows[0]), len(rows))
+    for y, row in enumerate(rows):
+        for x, ch in enumerate(row):
+            if ch == "#":
+                grid.set_blocked((x, y), True)
+            elif ch == "S":
+                grid.start = (x, y)
+            elif ch == "G":
+                grid.goal = (x, y)
+    return grid
+
+
+def reference_distances(grid: Grid, corner_cutting: bool = True) -> dict[tuple[int, int], int]:
+    """Fewest moves from the start to every reachable cell, by relaxing all edges until
+    nothing changes (Bellman-Ford): deliberately not a queue-based search, so it checks
+    BFS independently."""
+    inf = float("inf")
+    dist = {(x, y): inf for y in range(grid.height) for x in range(grid.width)}
+    dist[grid.start] = 0
+    changed = True
+    while changed:
+        changed = False
+        for cell, d in dist.items():
+            if d == inf or grid.is_blocked(cell):
+                continue
+            for _, nxt in grid.neighbours(cell, corner_cutting=corner_cutting):
+                if dist[nxt] > d + 1:
+                    dist[nxt] = d + 1
+                    changed = True
+    return {c: int(d) for c, d in dist.items() if d != inf}
