@@ -16,10 +16,12 @@ record) plus two counters per cell of the map.
 from __future__ import annotations
 
 from array import array
+import operator
 from bisect import bisect_right
 from collections.abc import Iterator
 from dataclasses import dataclass
 from enum import IntEnum
+from itertools import accumulate
 
 from tui_search.engine.grid import DIRECTIONS, Cell, Grid, path_cost
 from tui_search.engine.search import (
@@ -171,7 +173,7 @@ class Run:
         if it and rec.iter_first_step[it] == k:
             self._clear_iteration(it - 1, k - 1)
             self._enter_iteration(it)
-        g = rec.step_exp[k]
+        g = rec.exp(k)
         if self._lifo:
             top = self._stack.pop()
             assert top == g, "the recorded step does not match the stack"
@@ -191,7 +193,7 @@ class Run:
         succ = self.succ_range(k)
         for h in succ:
             n_gen[gen_node[h]] -= 1
-        g = rec.step_exp[k]
+        g = rec.exp(k)
         self._n_exp[gen_node[g]] -= 1
         if self._lifo:
             del self._stack[len(self._stack) - len(succ):]
@@ -253,7 +255,7 @@ class Run:
         p = self.problem.pad(cell)
         if self.at_end and self.found and p in self.path_set():
             return CellState.PATH
-        if self.k and p == self.rec.gen_node[self.rec.step_exp[self.k]]:
+        if self.k and p == self.rec.gen_node[self.rec.exp(self.k)]:
             return CellState.CURRENT
         if self._n_exp[p]:
             return CellState.EXPANDED
@@ -270,7 +272,7 @@ class Run:
             2 if n_exp[p] else (1 if n_gen[p] else 0) for p in range(base + x0, base + x1)
         ]
         if self.k:
-            cur = self.rec.gen_node[self.rec.step_exp[self.k]]
+            cur = self.rec.gen_node[self.rec.exp(self.k)]
             if base + x0 <= cur < base + x1:
                 out[cur - base - x0] = CellState.CURRENT
         if self.at_end and self.found:
@@ -281,12 +283,12 @@ class Run:
 
     def current_node(self) -> Cell | None:
         """The node expanded by the step just taken (None at step 0)."""
-        return self.problem.unpad(self.rec.gen_node[self.rec.step_exp[self.k]]) if self.k else None
+        return self.problem.unpad(self.rec.gen_node[self.rec.exp(self.k)]) if self.k else None
 
     def changed_cells(self, k: int) -> list[Cell]:
         """Cells whose state step ``k`` changes (its node and its successors)."""
         rec = self.rec
-        cells = [rec.gen_node[rec.step_exp[k]]]
+        cells = [rec.gen_node[rec.exp(k)]]
         cells.extend(rec.gen_node[h] for h in self.succ_range(k))
         return [self.problem.unpad(p) for p in cells]
 
@@ -315,21 +317,26 @@ class Run:
     def gen_cell(self, g: int) -> Cell:
         return self.problem.unpad(self.rec.gen_node[g])
 
-    def gen_dir(self, g: int) -> str:
-        return DIR_NAMES[self.rec.gen_dir[g]]
-
     def gen_parent(self, g: int) -> int:
-        return self.rec.gen_parent[g]
+        """The event expanded to generate ``g`` (-1 for a root): the expansion of the step
+        whose successors include ``g``."""
+        rec = self.rec
+        it = bisect_right(rec.iter_root, g) - 1
+        if rec.iter_root[it] == g:
+            return -1
+        return rec.exp(bisect_right(rec.step_end, g))
+
+    def gen_dir(self, g: int) -> str:
+        parent = self.gen_parent(g)
+        if parent < 0:
+            return DIR_NAMES[ROOT_DIR]
+        node = self.rec.gen_node
+        return DIR_NAMES[self.problem.dir_of_offset[node[g] - node[parent]]]
 
     def gen_depth(self, g: int) -> int:
         if self.rec.gen_depth is not None:
             return self.rec.gen_depth[g]
-        depth = 0
-        parent = self.rec.gen_parent
-        while parent[g] >= 0:
-            g = parent[g]
-            depth += 1
-        return depth
+        return len(self.ancestors(g)) - 1
 
     def expanded_at(self, g: int) -> int | None:
         """The step at which event ``g`` was expanded, if it was (in the whole record)."""
@@ -338,8 +345,9 @@ class Run:
         table = self._gen_step
         if table is None or len(table) < len(self.rec.gen_node):
             table = self._gen_step = array("i", [-1]) * len(self.rec.gen_node)
-            for k in range(1, self.rec.steps + 1):
-                table[self.rec.step_exp[k]] = k
+            for k, expanded in enumerate(self.rec.step_exp):
+                if k:
+                    table[expanded] = k
         step = table[g]
         return step if step > 0 else None
 
@@ -361,10 +369,9 @@ class Run:
     def ancestors(self, g: int) -> list[int]:
         """Events from the root down to ``g``."""
         chain = []
-        parent = self.rec.gen_parent
         while g >= 0:
             chain.append(g)
-            g = parent[g]
+            g = self.gen_parent(g)
         chain.reverse()
         return chain
 
@@ -390,12 +397,14 @@ class Run:
         k = self.k if k is None else k
         peak = self._peak
         if len(peak) <= k:
-            best = peak[-1] if peak else 0
-            for j in range(len(peak), min(k, self.rec.steps) + 1):
-                size = self.frontier_size_at(j)
-                if size > best:
-                    best = size
-                peak.append(best)
+            lo, hi = len(peak), min(k, self.rec.steps) + 1
+            if self.rec.gen_depth is None:  # one iteration: size = generated - expanded
+                sizes = map(operator.sub, self.rec.step_end[lo:hi], range(lo, hi))
+            else:
+                sizes = (self.frontier_size_at(j) for j in range(lo, hi))
+            running = accumulate(sizes, max, initial=peak[-1] if peak else 0)
+            next(running)  # the initial value is already in the table
+            peak.extend(running)
         return peak[k]
 
     # -- the answer ------------------------------------------------------------------------
@@ -429,7 +438,7 @@ class Run:
         succ = tuple((self.gen_dir(h), self.gen_cell(h)) for h in self.succ_range(k))
         return Step(
             index=k,
-            node=self.gen_cell(rec.step_exp[k]),
+            node=self.gen_cell(rec.exp(k)),
             successors=succ,
             depth_limit=self.depth_limit(k),
             found_goal=rec.found and k == rec.steps,
