@@ -40,11 +40,13 @@ def fresh_at(grid: Grid, algo: str, k: int) -> tuple:
     return snapshot(run)
 
 
-@settings(max_examples=120, deadline=None)
+@settings(max_examples=150, deadline=None)
 @given(random_grids(max_side=7), st.sampled_from(["bfs", "dfs", "iddfs"]),
-       st.lists(st.integers(0, 400), min_size=1, max_size=6))
-def test_goto_from_any_direction_gives_the_same_state(grid, algo, targets) -> None:
+       st.lists(st.integers(0, 400), min_size=1, max_size=6), st.sampled_from([0, 3, 10**9]))
+def test_goto_from_any_direction_gives_the_same_state(grid, algo, targets, rebuild) -> None:
+    """Whether a jump steps (forwards or backwards) or rebuilds the state in bulk."""
     run = Run(grid, algo)
+    run.REBUILD_AFTER = rebuild
     run.advance()
     for t in targets:
         k = t % (run.total + 1)

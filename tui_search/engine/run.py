@@ -18,7 +18,7 @@ from __future__ import annotations
 from array import array
 import operator
 from bisect import bisect_right
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 from enum import IntEnum
 from itertools import accumulate
@@ -210,18 +210,49 @@ class Run:
             while self.k < last:
                 self._forward()
 
+    #: A jump longer than this rebuilds the state in bulk instead of stepping.
+    REBUILD_AFTER = 512
+
     def goto(self, k: int) -> None:
         """Move the position to step ``k`` (clamped to the run), recording as needed."""
         k = max(0, k)
         if k > self.rec.steps:
             self.advance(k)
         k = min(k, self.rec.steps)
-        if k < self.k and self.k - k > k:
-            self.reset()  # nearer from the start than backwards
+        if abs(k - self.k) > self.REBUILD_AFTER:
+            self._rebuild(k)
         while self.k < k:
             self._forward()
         while self.k > k:
             self._backward()
+
+    def _expanded_events(self, first: int, last: int) -> Iterable[int]:
+        """Events expanded by steps ``first .. last``."""
+        exp = self.rec.step_exp
+        return exp[first : last + 1] if isinstance(exp, array) else range(first - 1, last)
+
+    def _rebuild(self, k: int) -> None:
+        """Set the position to step ``k`` in bulk, in time linear in the iteration's events
+        (a long jump: ``end`` or ``home`` on a big map).  Within an iteration every event is
+        pushed in generation order and only the top is popped, so the stack at ``k`` is
+        simply the events generated and not yet expanded, in generation order."""
+        rec = self.rec
+        self._clear_iteration(self.iteration_of(self.k), self.k)
+        it = self.iteration_of(k)
+        root, first = rec.iter_root[it], rec.iter_first_step[it]
+        end = rec.step_end[k] if k >= first else root + 1
+        gen_node, n_gen, n_exp = rec.gen_node, self._n_gen, self._n_exp
+        for p in gen_node[root:end]:
+            n_gen[p] += 1
+        expanded = self._expanded_events(first, k)
+        for g in expanded:
+            n_exp[gen_node[g]] += 1
+        if self._lifo:
+            open_ = bytearray(b"\x01") * (end - root)
+            for g in expanded:
+                open_[g - root] = 0
+            self._stack = [g for g in range(root, end) if open_[g - root]]
+        self.k = k
 
     def forward(self) -> bool:
         """One step forwards; False when already at the end."""
