@@ -143,10 +143,12 @@ def human_summary(result: dict, where: str) -> str:
 def run_headless(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
     if args.trace == "-" and args.json:
         raise UsageError("--trace - and --json both want stdout; give --trace a file")
-    try:
-        run = Run(grid, args.algorithm, _options(args))
-    except ValueError as exc:  # no start/goal, or on an obstacle
-        raise MapError(str(path or TUTORIAL_NAME), str(exc)) from None
+    where = str(path or TUTORIAL_NAME)
+    missing = [name for name in ("start", "goal") if getattr(grid, name) is None]
+    if missing:
+        raise MapError(where, f"the map has no {' or '.join(missing)}: give --start X,Y "
+                       "--goal X,Y, or --scen FILE --scen-row N")
+    run = Run(grid, args.algorithm, _options(args))
     if args.trace == "-":
         write_trace(run, sys.stdout)
     elif args.trace:
@@ -159,7 +161,7 @@ def run_headless(args: argparse.Namespace, grid: Grid, path: Path | None) -> int
     if args.json:
         print(json.dumps(result))
     elif args.trace != "-":
-        print(human_summary(result, str(path or TUTORIAL_NAME)))
+        print(human_summary(result, where))
     return EXIT_FOUND if result["found"] else EXIT_NO_PATH
 
 

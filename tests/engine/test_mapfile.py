@@ -1,0 +1,747 @@
+"""Map and scenario files: exact error locations, round trips, the real MovingAI files,
+atomic saving, and that no text makes the parsers raise anything but MapError."""
+
+from __future__ import annotations
+
+import os
+import pickle
+import stat
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from tui_search.engine import mapfile
+from tui_search.engine.grid import Grid
+from tui_search.engine.mapfile import (
+    MAX_MAP_BYTES,
+    MapError,
+    Scenario,
+    check_scenario_matches,
+    format_text_map,
+    load_map,
+    load_scenario,
+    parse_cell,
+    parse_map_text,
+    parse_movingai_map,
+    parse_scenarios,
+    parse_text_map,
+    read_scenarios,
+    save_text_map,
+)
+
+#: The MovingAI benchmark files kept beside the repository (/work/shared/maps/movingai).
+MOVINGAI = Path(__file__).resolve().parents[3] / "shared" / "maps" / "movingai"
+
+needs_movingai = pytest.mark.skipif(
+    not MOVINGAI.is_dir(), reason=f"MovingAI benchmark folder {MOVINGAI} is absent"
+)
+
+#: (width, height) and scenario row counts, from SOURCES.md in that folder.
+MAP_SIZES = {
+    "room-32-32-4.map": (32, 32),
+    "den201d.map": (37, 37),
+    "arena.map": (49, 49),
+    "den312d.map": (65, 81),
+    "lak303d.map": (194, 194),
+    "Berlin_0_256.map": (256, 256),
+    "64room_005.map": (512, 512),
+    "maze512-1-0.map": (512, 512),
+    "random512-40-5.map": (512, 512),
+}
+SCEN_ROWS = {
+    "room-32-32-4-random-1.scen": 341,
+    "den201d.map.scen": 100,
+    "arena.map.scen": 130,
+    "den312d.map.scen": 290,
+    "lak303d.map.scen": 1060,
+    "Berlin_0_256.map.scen": 930,
+    "64room_005.map.scen": 2320,
+    "maze512-1-0.map.scen": 12120,
+    "random512-40-5.map.scen": 5240,
+}
+
+TUTORIAL = "S#...#\n.#.##.\n...##G\n..#.#.\n....##\n......\n"
+MAI_2x3 = "type octile\nheight 2\nwidth 3\nmap\n.@T\nGSW\n"
+
+
+def error_of(func, *args, **kwargs) -> str:
+    """``str`` of the MapError that ``func`` raises (and fail if it raises none)."""
+    with pytest.raises(MapError) as info:
+        func(*args, **kwargs)
+    return str(info.value)
+
+
+def write(tmp_path: Path, name: str, content: str | bytes) -> Path:
+    path = tmp_path / name
+    if isinstance(content, str):
+        path.write_bytes(content.encode("utf-8"))
+    else:
+        path.write_bytes(content)
+    return path
+
+
+# -- MapError ---------------------------------------------------------------------------
+
+
+def test_map_error_str_and_attributes() -> None:
+    err = MapError("a.txt", "bad", 3, 7)
+    assert (err.path, err.message, err.line, err.col) == ("a.txt", "bad", 3, 7)
+    assert str(err) == "a.txt:3:7: bad"
+    assert str(MapError("a.txt", "bad", 3)) == "a.txt:3: bad"
+    assert str(MapError("a.txt", "bad")) == "a.txt: bad"
+
+
+def test_map_error_pickles() -> None:
+    """Errors may cross a process boundary (workers); they must survive pickling."""
+    err = pickle.loads(pickle.dumps(MapError("a.txt", "bad", 3, 7)))
+    assert str(err) == "a.txt:3:7: bad" and err.col == 7
+
+
+# -- text format --------------------------------------------------------------------------
+
+
+def test_text_map_parses_the_tutorial() -> None:
+    grid = parse_text_map(TUTORIAL)
+    assert (grid.width, grid.height) == (6, 6)
+    assert grid.start == (0, 0) and grid.goal == (5, 2)
+    assert grid.is_blocked((1, 0)) and grid.is_blocked((5, 0)) and not grid.is_blocked((0, 1))
+    assert not grid.is_blocked(grid.start) and not grid.is_blocked(grid.goal)
+    assert grid.free_count() == TUTORIAL.count(".") + 2
+
+
+def test_text_map_tolerates_comments_crlf_trailing_space_and_blank_ends() -> None:
+    text = "\ufeff\n; a comment\nS#. \r\n;; another\r\n..G\t\r\n\n\n  \n"
+    grid = parse_text_map(text)
+    assert (grid.width, grid.height, grid.start, grid.goal) == (3, 2, (0, 0), (2, 1))
+    assert grid.blocked == bytearray([0, 1, 0, 0, 0, 0])
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("S.\n.q\n", "m.txt:2:2: unknown cell character 'q'"),
+        ("; one\nS.\n; two\n.G\n; three\n.q\n", "m.txt:6:2: unknown cell character 'q'"),
+        ("S. .\n", "m.txt:1:3: unknown cell character ' '"),
+        ("S.\n .G\n", "m.txt:2:1: unknown cell character ' '"),
+        ("S@G\n", "m.txt:1:2: unknown cell character '@'"),
+        ("S.\n.G.\n", "m.txt:2: row has 3 cells, expected 2"),
+        ("S..\n.G\n...\n", "m.txt:2: row has 2 cells, expected 3"),
+        ("S.\n\n.G\n", "m.txt:2: blank line inside the map"),
+        ("S.\n\n; c\n.G\n", "m.txt:2: blank line inside the map"),
+        (
+            "S.\nG.\n.S\n",
+            "m.txt:3:2: a second start 'S' (the first is at line 1, column 1)",
+        ),
+        ("G.SS\n", "m.txt:1:4: a second start 'S' (the first is at line 1, column 3)"),
+        (
+            ";\n.G\nS.\nG.\n",
+            "m.txt:4:1: a second goal 'G' (the first is at line 2, column 2)",
+        ),
+        ("..\n.G\n", "m.txt: no start 'S' in the map"),
+        ("S.\n..\n", "m.txt: no goal 'G' in the map"),
+        ("", "m.txt: the map is empty"),
+        ("\n\n  \n", "m.txt: the map is empty"),
+        ("; only\n;comments\n", "m.txt: the map is empty"),
+    ],
+)
+def test_text_map_errors(text: str, expected: str) -> None:
+    assert error_of(parse_map_text, text, "m.txt") == expected
+    assert error_of(parse_text_map, text, "m.txt") == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        TUTORIAL,
+        "SG\n",
+        "S\nG\n",
+        "#S#\n#.#\n#G#\n",
+        "G.....#####\n#####.....S\n",
+    ],
+)
+def test_text_map_round_trip(text: str) -> None:
+    assert format_text_map(parse_text_map(text)) == text
+
+
+def test_format_writes_what_the_grid_holds() -> None:
+    """No start/goal: no letter; a start on an obstacle is written as S (comes back free)."""
+    grid = Grid(3, 1, bytearray([1, 0, 0]))
+    assert format_text_map(grid) == "#..\n"
+    grid.start = (0, 0)
+    assert format_text_map(grid) == "S..\n"
+
+
+@st.composite
+def grids(draw: st.DrawFn) -> Grid:
+    width = draw(st.integers(1, 12))
+    height = draw(st.integers(1, 12))
+    if width * height < 2:
+        width = 2
+    cells = [(x, y) for y in range(height) for x in range(width)]
+    start, goal = draw(st.lists(st.sampled_from(cells), min_size=2, max_size=2, unique=True))
+    blocked = bytearray(draw(st.lists(st.integers(0, 1), min_size=width * height,
+                                      max_size=width * height)))
+    for x, y in (start, goal):
+        blocked[y * width + x] = 0
+    return Grid(width, height, blocked, start, goal)
+
+
+@given(grids())
+def test_arbitrary_grids_round_trip(grid: Grid) -> None:
+    text = format_text_map(grid)
+    assert parse_map_text(text) == grid
+    assert format_text_map(parse_text_map(text)) == text
+
+
+# -- MovingAI .map ----------------------------------------------------------------------
+
+
+def test_movingai_letters() -> None:
+    grid = parse_map_text(MAI_2x3)
+    assert (grid.width, grid.height, grid.start, grid.goal) == (3, 2, None, None)
+    # . @ T / G S W: ".", "G", "S" passable; "@", "O", "T", "W" blocked.
+    assert grid.blocked == bytearray([0, 1, 1, 0, 0, 1])
+    assert parse_movingai_map("type octile\nheight 1\nwidth 1\nmap\nO").blocked == bytearray([1])
+
+
+def test_movingai_crlf_missing_final_newline_and_header_order() -> None:
+    text = "type octile\r\nwidth 3\r\nheight 2\r\nmap\r\n.@T\r\nGSW"
+    assert parse_map_text(text) == parse_map_text(MAI_2x3)
+    assert parse_map_text("\n\n" + MAI_2x3 + "\n\n") == parse_map_text(MAI_2x3)
+
+
+def test_dispatch_is_by_content_not_name(tmp_path: Path) -> None:
+    assert load_map(write(tmp_path, "x.txt", MAI_2x3)).width == 3
+    assert load_map(write(tmp_path, "x.map", TUTORIAL)).start == (0, 0)
+
+
+def mai(height: int, width: int) -> str:
+    """A MovingAI header."""
+    return f"type octile\nheight {height}\nwidth {width}\nmap\n"
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        (mai(2, 3) + ".@T\n", "m.map:2: the header says height 2 but the map has 1 row"),
+        (mai(3, 3) + "...\n...", "m.map:2: the header says height 3 but the map has 2 rows"),
+        (mai(1, 3) + "...\n...\n", "m.map:6: more rows than the height (1) in the header"),
+        (mai(2, 3) + "...\n....\n", "m.map:6: row has 4 cells, expected 3"),
+        (mai(2, 3) + "...\n..\n", "m.map:6: row has 2 cells, expected 3"),
+        (mai(2, 3) + "...\n\n...\n", "m.map:6: blank line inside the map"),
+        (mai(2, 3) + "...\n.#.\n", "m.map:6:2: unknown cell character '#'"),
+        (mai(1, 3).replace("\n", "\r\n") + "..x\r\n", "m.map:5:3: unknown cell character 'x'"),
+        ("type octile\nwidth 3\nmap\n...\n", "m.map:3: the header has no height"),
+        ("type octile\nheight 1\nmap\n...\n", "m.map:3: the header has no width"),
+        (mai(2, 3).replace("2", "x"), "m.map:2: expected 'height N', found 'height x'"),
+        (mai(1, -3), "m.map:3: expected 'width N', found 'width -3'"),
+        (mai(1, 3).replace(" 1", ""), "m.map:2: expected 'height N', found 'height'"),
+        (mai(0, 3), "m.map:2: height must be at least 1"),
+        ("type octile\nheight 1\nheight 1\n", "m.map:3: height is given twice"),
+        (mai(1, int("9" * 50)), "m.map:3: width is too large: '999999999999...'"),
+        (mai(1, 3).replace("map\n", "...\n"), "m.map:4: expected 'height', 'width' or 'map', "
+                                                "found '...'"),
+        ("type octile\nheight 1\nwidth 3\n", "m.map:3: the header has no 'map' line"),
+        ("type octile\n", "m.map:1: the header has no 'map' line"),
+    ],
+)
+def test_movingai_errors(text: str, expected: str) -> None:
+    assert error_of(parse_map_text, text, "m.map") == expected
+    assert error_of(parse_movingai_map, text, "m.map") == expected
+
+
+def test_movingai_parser_wants_a_type_line() -> None:
+    assert error_of(parse_movingai_map, "\n...\n", "m.map") == (
+        "m.map:2: expected 'type octile' on the first line"
+    )
+    assert error_of(parse_movingai_map, "", "m.map") == (
+        "m.map:1: expected 'type octile' on the first line"
+    )
+
+
+# -- load_map: files and overrides ---------------------------------------------------------
+
+
+def test_load_map_reads_a_file(tmp_path: Path) -> None:
+    path = write(tmp_path, "t.txt", TUTORIAL)
+    assert load_map(path) == parse_text_map(TUTORIAL)
+    assert load_map(str(path)) == parse_text_map(TUTORIAL)
+
+
+def test_load_map_errors_name_the_file(tmp_path: Path) -> None:
+    path = write(tmp_path, "t.txt", "S.\n.q\n")
+    assert error_of(load_map, path) == f"{path}:2:2: unknown cell character 'q'"
+
+
+def test_load_map_missing_file(tmp_path: Path) -> None:
+    path = tmp_path / "nope.txt"
+    assert error_of(load_map, path) == f"{path}: no such file"
+    inside_a_file = write(tmp_path, "t.txt", TUTORIAL) / "x"
+    assert error_of(load_map, inside_a_file) == f"{inside_a_file}: no such file"
+
+
+def test_load_map_directory(tmp_path: Path) -> None:
+    assert error_of(load_map, tmp_path) == f"{tmp_path}: is a directory, not a map file"
+
+
+def test_load_map_permission_denied(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Simulated, because root (CI containers) can read a chmod 000 file."""
+    path = write(tmp_path, "t.txt", TUTORIAL)
+
+    def denied(*args: object, **kwargs: object) -> None:
+        raise PermissionError(13, "Permission denied")
+
+    monkeypatch.setattr(mapfile, "open", denied, raising=False)
+    assert error_of(load_map, path) == f"{path}: permission denied"
+
+
+@pytest.mark.skipif(os.name != "posix", reason="POSIX file modes")
+def test_load_map_permission_denied_for_real(tmp_path: Path) -> None:
+    path = write(tmp_path, "t.txt", TUTORIAL)
+    path.chmod(0)
+    try:
+        try:
+            path.read_bytes()
+        except PermissionError:
+            pass
+        else:
+            pytest.skip("this user can read a chmod 000 file (root with CAP_DAC_OVERRIDE)")
+        assert error_of(load_map, path) == f"{path}: permission denied"
+    finally:
+        path.chmod(0o644)
+
+
+def test_load_map_too_big_is_refused_before_reading(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    path = tmp_path / "huge.map"
+    with open(path, "wb") as handle:  # sparse: no disk used
+        handle.truncate(MAX_MAP_BYTES + 1)
+
+    def no_reading(*args: object, **kwargs: object) -> None:
+        raise AssertionError("the file was opened")
+
+    monkeypatch.setattr(mapfile, "open", no_reading, raising=False)
+    assert error_of(load_map, path) == f"{path}: file is 64.1 MB; a map may be at most 64 MB"
+    with open(path, "r+b") as handle:
+        handle.truncate(200 * 1024 * 1024)
+    assert error_of(load_map, path) == f"{path}: file is 200.0 MB; a map may be at most 64 MB"
+
+
+def test_load_map_just_under_the_limit_is_read(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr(mapfile, "MAX_MAP_BYTES", len(TUTORIAL))
+    assert load_map(write(tmp_path, "t.txt", TUTORIAL)).width == 6
+    path = write(tmp_path, "u.txt", TUTORIAL + "\n")
+    assert "a map may be at most" in error_of(load_map, path)
+
+
+@pytest.mark.parametrize(
+    "content",
+    [b"S.\n.G\x00\n", b"\x89PNG\r\n\x1a\n", "S.\n.G\n".encode("utf-16"), b"S.\n\xff\xfe\n"],
+)
+def test_load_map_binary(tmp_path: Path, content: bytes) -> None:
+    path = write(tmp_path, "b.map", content)
+    assert error_of(load_map, path) == f"{path}: binary file, not a text map"
+
+
+def test_overrides_win_and_make_s_and_g_optional(tmp_path: Path) -> None:
+    tutorial = write(tmp_path, "t.txt", TUTORIAL)
+    grid = load_map(tutorial, start=(0, 5), goal=(2, 0))
+    assert (grid.start, grid.goal) == ((0, 5), (2, 0))
+    bare = write(tmp_path, "bare.txt", "...\n.#.\n")
+    assert error_of(load_map, bare) == f"{bare}: no start 'S' in the map"
+    assert error_of(load_map, bare, start=(0, 0)) == f"{bare}: no goal 'G' in the map"
+    assert load_map(bare, start=(0, 0), goal=(2, 1)).goal == (2, 1)
+    only_s = write(tmp_path, "s.txt", "S..\n...\n")
+    assert load_map(only_s, goal=(2, 1)).start == (0, 0)
+
+
+def test_movingai_needs_overrides_for_start_and_goal(tmp_path: Path) -> None:
+    path = write(tmp_path, "m.map", MAI_2x3)
+    grid = load_map(path)
+    assert (grid.start, grid.goal) == (None, None)
+    grid = load_map(path, start=(0, 0), goal=(1, 1))
+    assert (grid.start, grid.goal) == ((0, 0), (1, 1))
+    assert load_map(path, goal=(0, 1)).start is None
+
+
+@pytest.mark.parametrize(
+    ("start", "goal", "expected"),
+    [
+        ((9, 9), None, "start (9,9) is outside the 6x6 map"),
+        (None, (6, 0), "goal (6,0) is outside the 6x6 map"),
+        ((-1, 0), None, "start (-1,0) is outside the 6x6 map"),
+        ((1, 1), None, "start (1,1) is on an obstacle"),
+        (None, (1, 1), "goal (1,1) is on an obstacle"),
+    ],
+)
+def test_override_errors(tmp_path: Path, start, goal, expected: str) -> None:
+    path = write(tmp_path, "t.txt", TUTORIAL)
+    assert error_of(load_map, path, start=start, goal=goal) == f"{path}: {expected}"
+
+
+# -- parse_cell -----------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "cell"), [("3,4", (3, 4)), (" 3 , 4 ", (3, 4)), ("(0,12)", (0, 12)), ("007,1", (7, 1))]
+)
+def test_parse_cell(text: str, cell: tuple[int, int]) -> None:
+    assert parse_cell(text) == cell
+
+
+@pytest.mark.parametrize("text", ["", "3", "3,4,5", "a,b", "3;4", "-1,2", "3.5,4", "1,2)x"])
+def test_parse_cell_rejects(text: str) -> None:
+    with pytest.raises(ValueError) as info:
+        parse_cell(text)
+    assert "\n" not in str(info.value) and str(info.value)
+
+
+@given(st.text())
+def test_parse_cell_raises_only_value_error(text: str) -> None:
+    try:
+        x, y = parse_cell(text)
+    except ValueError as err:
+        assert "\n" not in str(err)
+    else:
+        assert x >= 0 and y >= 0
+
+
+# -- robustness: only MapError, always one line --------------------------------------------
+
+TOKENS = [
+    "type octile", "type", "height ", "width ", "map", "version 1", "0", "1", "2", "3", "12",
+    ".", "#", "S", "G", "@", "O", "T", "W", "q", " ", "\t", "\n", "\n", "\n", "\r\n", "\r",
+    ";", "\ufeff", "\x00", "\x0c", "\u2028", "é", "-", "99999999999",
+]  # fmt: skip
+
+
+def check_only_map_error(text: str) -> None:
+    for parse in (parse_map_text, parse_text_map, parse_movingai_map, parse_scenarios):
+        try:
+            result = parse(text, "f")
+        except MapError as err:
+            assert str(err).startswith("f") and "\n" not in str(err)
+        else:
+            if isinstance(result, Grid):
+                assert len(result.blocked) == result.width * result.height >= 1
+
+
+@settings(max_examples=300)
+@given(st.text())
+def test_arbitrary_text_raises_only_map_error(text: str) -> None:
+    check_only_map_error(text)
+
+
+@settings(max_examples=300)
+@given(st.lists(st.sampled_from(TOKENS), max_size=60).map("".join))
+def test_map_alphabet_text_raises_only_map_error(text: str) -> None:
+    check_only_map_error(text)
+
+
+@settings(max_examples=200)
+@given(
+    st.integers(1, 5),
+    st.integers(1, 5),
+    st.lists(st.text(alphabet=".@TSGOW#\n\r ", max_size=8), max_size=7),
+)
+def test_movingai_shaped_text_raises_only_map_error(h: int, w: int, rows: list[str]) -> None:
+    check_only_map_error(f"type octile\nheight {h}\nwidth {w}\nmap\n" + "\n".join(rows))
+
+
+@settings(max_examples=200)
+@given(st.lists(st.lists(st.sampled_from(["0", "a.map", "5", "-1", "x", "1.5", "nan", " ",
+                                          "99999999999"]), max_size=10).map("\t".join),
+                max_size=5))
+def test_scenario_shaped_text_raises_only_map_error(rows: list[str]) -> None:
+    check_only_map_error("version 1\n" + "\n".join(rows))
+
+
+# -- scenarios ------------------------------------------------------------------------------
+
+SCEN = (
+    "version 1\n"
+    "0\tt.txt\t6\t6\t0\t0\t5\t2\t9.41421356\n"
+    "\n"
+    "2\tsub/dir/t.txt\t6\t6\t0\t5\t3\t0\t8.00000000\n"
+)
+
+
+def test_read_scenarios(tmp_path: Path) -> None:
+    path = write(tmp_path, "t.scen", SCEN)
+    rows = read_scenarios(path)
+    assert rows == [
+        Scenario(0, "t.txt", 6, 6, (0, 0), (5, 2), 9.41421356, 2),
+        Scenario(2, "sub/dir/t.txt", 6, 6, (0, 5), (3, 0), 8.0, 4),
+    ]
+    assert load_scenario(path, 1) == rows[1]
+    assert load_scenario(str(path), 0) == rows[0]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        SCEN.replace("version 1", "version 1.0"),
+        SCEN.replace("\n", "\r\n"),
+        SCEN.replace("\t", "   "),
+        SCEN.replace("\t", " \t "),
+        SCEN.rstrip("\n"),
+        SCEN + "\n\n",
+    ],
+)
+def test_scenario_variants(text: str) -> None:
+    assert parse_scenarios(text) == parse_scenarios(SCEN)
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("", "s.scen:1: expected 'version 1' on the first line, found an empty line"),
+        ("\nversion 1\n", "s.scen:1: expected 'version 1' on the first line, found an empty line"),
+        ("verison 1\n", "s.scen:1: expected 'version 1' on the first line, found 'verison 1'"),
+        ("version one\n", "s.scen:1: expected 'version 1' on the first line, found 'version one'"),
+        (
+            "version 1\n\n0\ta.map\t6\t6\t0\t0\t5\n",
+            "s.scen:3: expected 9 fields (bucket, map, map width, map height, start x, start y, "
+            "goal x, goal y, optimal length), found 7",
+        ),
+        (
+            "version 1\n0\ta.map\t6\tsix\t0\t0\t5\t2\t3\n",
+            "s.scen:2: map height is not a whole number >= 0: 'six'",
+        ),
+        (
+            "version 1\n0\ta.map\t6\t6\t-1\t0\t5\t2\t3\n",
+            "s.scen:2: start x is not a whole number >= 0: '-1'",
+        ),
+        (
+            "version 1\n0\ta.map\t6\t6\t0\t0\t5\t2\tlong\n",
+            "s.scen:2: optimal length is not a number >= 0: 'long'",
+        ),
+        (
+            "version 1\n0\ta.map\t6\t6\t0\t0\t5\t2\tnan\n",
+            "s.scen:2: optimal length is not a number >= 0: 'nan'",
+        ),
+        ("version 1\n0\ta.map\t0\t6\t0\t0\t0\t0\t1\n", "s.scen:2: map size 0x6 is empty"),
+        (
+            "version 1\n0\ta.map\t6\t6\t0\t0\t6\t2\t3\n",
+            "s.scen:2: goal (6,2) is outside the 6x6 map",
+        ),
+    ],
+)
+def test_scenario_errors(tmp_path: Path, text: str, expected: str) -> None:
+    assert error_of(parse_scenarios, text, "s.scen") == expected
+    path = write(tmp_path, "s.scen", text)
+    assert error_of(read_scenarios, path) == expected.replace("s.scen", str(path), 1)
+
+
+def test_scenario_file_errors(tmp_path: Path) -> None:
+    assert error_of(read_scenarios, tmp_path / "no.scen") == f"{tmp_path / 'no.scen'}: no such file"
+    path = write(tmp_path, "b.scen", b"version 1\n\x00")
+    assert error_of(read_scenarios, path) == f"{path}: binary file, not a text map"
+
+
+def test_load_scenario_missing_row(tmp_path: Path) -> None:
+    path = write(tmp_path, "t.scen", SCEN)
+    assert error_of(load_scenario, path, 2) == f"{path}: no row 2: the file has 2 rows (0 to 1)"
+    assert error_of(load_scenario, path, -1) == f"{path}: no row -1: the file has 2 rows (0 to 1)"
+    one = write(tmp_path, "one.scen", SCEN.split("\n\n")[0])
+    assert error_of(load_scenario, one, 1) == f"{one}: no row 1: the file has 1 row (row 0)"
+    empty = write(tmp_path, "e.scen", "version 1\n")
+    assert error_of(load_scenario, empty, 0) == f"{empty}: no row 0: the file has no scenario rows"
+
+
+def test_check_scenario_matches(tmp_path: Path) -> None:
+    grid = parse_text_map(TUTORIAL)
+    scen_path = str(tmp_path / "t.scen")
+    map_path = str(tmp_path / "t.txt")
+    good = Scenario(0, "t.txt", 6, 6, (0, 0), (5, 2), 9.4, 7)
+    check_scenario_matches(good, grid, scen_path, map_path)
+    # Matched by basename, whatever directory the scenario names (either separator).
+    for name in ("maps/dao/t.txt", "maps\\dao\\t.txt"):
+        check_scenario_matches(
+            Scenario(0, name, 6, 6, (0, 0), (5, 2), 9.4, 7), grid, scen_path, Path(map_path)
+        )
+
+    def check(scen: Scenario) -> str:
+        return error_of(check_scenario_matches, scen, grid, scen_path, map_path)
+
+    prefix = f"{scen_path}:7: "
+    assert check(Scenario(0, "maps/u.txt", 6, 6, (0, 0), (5, 2), 1, 7)) == (
+        prefix + "scenario is for map 'u.txt', not 't.txt'"
+    )
+    assert check(Scenario(0, "t.txt", 6, 7, (0, 0), (5, 2), 1, 7)) == (
+        prefix + "scenario says the map is 6x7, but t.txt is 6x6"
+    )
+    assert check(Scenario(0, "t.txt", 6, 6, (6, 0), (5, 2), 1, 7)) == (
+        prefix + "start (6,0) is outside the 6x6 map"
+    )
+    assert check(Scenario(0, "t.txt", 6, 6, (0, 0), (1, 0), 1, 7)) == (
+        prefix + "goal (1,0) is on an obstacle"
+    )
+
+
+# -- the real MovingAI files ------------------------------------------------------------------
+
+
+def naive_blocked(path: Path) -> tuple[int, int, bytearray]:
+    """An independent, slow reading of a MovingAI file: height/width lines, then rows."""
+    lines = path.read_text().replace("\r\n", "\n").split("\n")
+    height = int(lines[1].split()[1])
+    width = int(lines[2].split()[1])
+    assert lines[0].startswith("type") and lines[3] == "map"
+    rows = lines[4 : 4 + height]
+    return width, height, bytearray(int(ch in "@OTW") for row in rows for ch in row)
+
+
+@needs_movingai
+@pytest.mark.parametrize("name", sorted(MAP_SIZES))
+def test_real_maps_parse(name: str) -> None:
+    path = MOVINGAI / name
+    grid = load_map(path)
+    assert (grid.width, grid.height) == MAP_SIZES[name]
+    assert (grid.start, grid.goal) == (None, None)
+    assert (grid.width, grid.height, grid.blocked) == naive_blocked(path)
+
+
+@needs_movingai
+def test_berlin_has_crlf_and_no_final_newline() -> None:
+    """Guards the test itself: the quirk the parser must cope with is really in the file."""
+    data = (MOVINGAI / "Berlin_0_256.map").read_bytes()
+    assert data.count(b"\r\n") == 256 + 4 - 1 and not data.endswith(b"\n")
+    assert (load_map(MOVINGAI / "Berlin_0_256.map").width, 256) == (256, 256)
+
+
+@needs_movingai
+@pytest.mark.parametrize("name", sorted(SCEN_ROWS))
+def test_real_scenarios_parse_and_match_their_maps(name: str) -> None:
+    scen_path = MOVINGAI / name
+    rows = read_scenarios(scen_path)
+    assert len(rows) == SCEN_ROWS[name]
+    map_name = rows[0].map_name.rsplit("/", 1)[-1]
+    map_path = MOVINGAI / map_name
+    grid = load_map(map_path)
+    for scen in (rows[0], rows[-1], load_scenario(scen_path, len(rows) // 2)):
+        check_scenario_matches(scen, grid, scen_path, map_path)
+    assert all(scen.map_name.endswith(map_name) for scen in rows)
+    assert rows[0].line == 2
+    assert error_of(load_scenario, scen_path, len(rows)).endswith(
+        f"the file has {len(rows)} rows (0 to {len(rows) - 1})"
+    )
+
+
+@needs_movingai
+def test_real_scenario_values() -> None:
+    first = load_scenario(MOVINGAI / "den312d.map.scen", 0)
+    assert first == Scenario(0, "den312d.map", 65, 81, (61, 72), (60, 72), 1.0, 2)
+    last = load_scenario(MOVINGAI / "arena.map.scen", 129)
+    assert last == Scenario(12, "arena.map", 49, 49, (4, 32), (47, 19), 48.38477631, 131)
+
+
+@needs_movingai
+def test_lak303d_2011_scenario_names_a_path_and_matches_by_basename() -> None:
+    scen_path = MOVINGAI / "lak303d.map.scen"
+    rows = read_scenarios(scen_path)
+    assert {scen.map_name for scen in rows} == {"maps/dao/lak303d.map"}
+    assert rows[0].optimal_length == 1.41421
+    grid = load_map(MOVINGAI / "lak303d.map")
+    for scen in rows:
+        check_scenario_matches(scen, grid, scen_path, MOVINGAI / "lak303d.map")
+    with pytest.raises(MapError) as info:
+        check_scenario_matches(rows[0], grid, scen_path, MOVINGAI / "arena.map")
+    assert str(info.value) == (
+        f"{scen_path}:2: scenario is for map 'lak303d.map', not 'arena.map'"
+    )
+
+
+# -- save_text_map ----------------------------------------------------------------------------
+
+
+def test_save_and_load_back(tmp_path: Path) -> None:
+    grid = parse_text_map(TUTORIAL)
+    path = tmp_path / "saved.txt"
+    save_text_map(grid, path)
+    assert path.read_text() == TUTORIAL
+    assert load_map(path) == grid
+    assert os.listdir(tmp_path) == ["saved.txt"]
+    if os.name == "posix":
+        umask = os.umask(0)
+        os.umask(umask)
+        assert stat.S_IMODE(path.stat().st_mode) == 0o666 & ~umask
+
+
+def test_save_replaces_and_keeps_the_mode(tmp_path: Path) -> None:
+    path = write(tmp_path, "m.txt", "old\n")
+    path.chmod(0o640)
+    save_text_map(parse_text_map(TUTORIAL), str(path))
+    assert path.read_text() == TUTORIAL
+    assert stat.S_IMODE(path.stat().st_mode) == 0o640
+    assert os.listdir(tmp_path) == ["m.txt"]
+
+
+@pytest.mark.parametrize("failing", ["replace", "fsync"])
+def test_failed_save_leaves_the_old_file_and_no_temp_file(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, failing: str
+) -> None:
+    path = write(tmp_path, "m.txt", "old\n")
+
+    def broken(*args: object) -> None:
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(mapfile.os, failing, broken)
+    assert error_of(save_text_map, parse_text_map(TUTORIAL), path) == (
+        f"{path}: cannot save: no space left on device"
+    )
+    monkeypatch.undo()
+    assert path.read_text() == "old\n"
+    assert os.listdir(tmp_path) == ["m.txt"]
+
+
+def test_save_onto_a_directory_fails_cleanly(tmp_path: Path) -> None:
+    target = tmp_path / "d"
+    target.mkdir()
+    (target / "keep").write_text("x")
+    assert error_of(save_text_map, parse_text_map(TUTORIAL), target) == (
+        f"{target}: cannot save: is a directory"
+    )
+    assert sorted(os.listdir(tmp_path)) == ["d"] and os.listdir(target) == ["keep"]
+
+
+def test_save_into_a_missing_folder(tmp_path: Path) -> None:
+    target = tmp_path / "missing" / "m.txt"
+    assert error_of(save_text_map, parse_text_map(TUTORIAL), target) == (
+        f"{target}: cannot save: the folder does not exist"
+    )
+    assert os.listdir(tmp_path) == []
+
+
+@pytest.mark.skipif(os.name != "posix", reason="POSIX file modes")
+def test_save_into_a_read_only_folder(tmp_path: Path) -> None:
+    path = write(tmp_path, "m.txt", "old\n")
+    tmp_path.chmod(0o555)
+    try:
+        try:
+            (tmp_path / "probe").touch()
+        except PermissionError:
+            pass
+        else:
+            (tmp_path / "probe").unlink()
+            pytest.skip("this user can write into a chmod 555 folder (root with CAP_DAC_OVERRIDE)")
+        assert error_of(save_text_map, parse_text_map(TUTORIAL), path) == (
+            f"{path}: cannot save: permission denied"
+        )
+    finally:
+        tmp_path.chmod(0o755)
+    assert path.read_text() == "old\n"
+    assert os.listdir(tmp_path) == ["m.txt"]
+
+
+@settings(max_examples=30, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(grids())
+def test_saved_grids_load_back(tmp_path: Path, grid: Grid) -> None:
+    path = tmp_path / "g.txt"
+    save_text_map(grid, path)
+    assert load_map(path) == grid

@@ -1,0 +1,572 @@
+"""Reading and writing map files: our text format, MovingAI ``.map`` and ``.scen``.
+
+Every problem with an input file becomes a :class:`MapError` whose ``str`` is one line,
+``path:line:col: message``, so the CLI and the app can show it as is instead of a traceback.
+The parsers raise nothing else on any text (the tests check this with hypothesis).
+
+Text format (what the app saves)::
+
+    ; a comment
+    S#...#
+    .#.##G
+
+``.`` free, ``#`` obstacle, ``S`` start, ``G`` goal.  A file whose first non-empty line is
+``type ...`` is read as a MovingAI map instead (https://movingai.com/benchmarks/formats.html).
+
+Stdlib only: the engine must not depend on the UI libraries.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import re
+import secrets
+import stat
+from dataclasses import dataclass
+
+from tui_search.engine.grid import Cell, Grid
+
+__all__ = [
+    "MAX_MAP_BYTES",
+    "MapError",
+    "Scenario",
+    "check_scenario_matches",
+    "format_text_map",
+    "load_map",
+    "load_scenario",
+    "parse_cell",
+    "parse_map_text",
+    "parse_movingai_map",
+    "parse_scenarios",
+    "parse_text_map",
+    "read_scenarios",
+    "save_text_map",
+]
+
+#: Bigger files are refused before reading: a 512x512 MovingAI map is 257 KB, so anything
+#: near this is a mistake (a wrong file), not a map, and would only hang the app.
+MAX_MAP_BYTES = 64 * 1024 * 1024
+
+#: Header numbers longer than this are refused: no map is that big, and Python refuses to
+#: convert very long digit strings (ValueError) anyway.
+_MAX_DIGITS = 9
+
+
+class MapError(Exception):
+    """One-line, user-facing error about an input file."""
+
+    def __init__(
+        self, path: str, message: str, line: int | None = None, col: int | None = None
+    ) -> None:
+        # All four go to Exception so that the error pickles and copies like any other.
+        super().__init__(path, message, line, col)
+        self.path = path
+        self.message = message
+        self.line = line
+        self.col = col
+
+    def __str__(self) -> str:
+        where = self.path
+        if self.line is not None:
+            where += f":{self.line}"
+        if self.col is not None:
+            where += f":{self.col}"
+        return f"{where}: {self.message}"
+
+
+# -- helpers ------------------------------------------------------------------------------
+
+
+def _lines(text: str) -> list[str]:
+    """Split on ``\\n`` only (not ``str.splitlines``, which also splits on form feeds and
+    other separators, so that line numbers match what an editor shows), dropping a BOM
+    and trailing whitespace including the ``\\r`` of CRLF files."""
+    if text.startswith("\ufeff"):
+        text = text[1:]
+    return [line.rstrip() for line in text.split("\n")]
+
+
+def _show(text: str, limit: int = 40) -> str:
+    """A short ``repr`` of user text for an error message (keeps the message one line)."""
+    if len(text) > limit:
+        text = text[:limit] + "..."
+    return repr(text)
+
+
+def _os_reason(err: OSError) -> str:
+    """A short lower-case reason for an OS error, without the path (the MapError has it)."""
+    if isinstance(err, FileNotFoundError):
+        return "no such file"
+    if isinstance(err, PermissionError):
+        return "permission denied"
+    if isinstance(err, IsADirectoryError):
+        return "is a directory"
+    if isinstance(err, NotADirectoryError):
+        return "a part of the path is not a directory"
+    reason = err.strerror or str(err) or type(err).__name__
+    return reason[:1].lower() + reason[1:]
+
+
+def _read_text(path: str) -> str:
+    """The file's text, or a MapError saying why it cannot be a map.
+
+    The size is checked with ``os.stat`` before anything is read, and the read itself is
+    capped too, for pipes and files that grow while we look.
+    """
+    try:
+        st = os.stat(path)
+    except (FileNotFoundError, NotADirectoryError):
+        raise MapError(path, "no such file") from None
+    except OSError as err:
+        raise MapError(path, _os_reason(err)) from None
+    except ValueError:  # e.g. an embedded NUL in the path
+        raise MapError(path, "not a valid file name") from None
+    if stat.S_ISDIR(st.st_mode):
+        raise MapError(path, "is a directory, not a map file")
+    if st.st_size > MAX_MAP_BYTES:
+        raise MapError(path, _too_big(st.st_size))
+    try:
+        with open(path, "rb") as handle:
+            data = handle.read(MAX_MAP_BYTES + 1)
+    except IsADirectoryError:
+        raise MapError(path, "is a directory, not a map file") from None
+    except OSError as err:
+        raise MapError(path, _os_reason(err)) from None
+    if len(data) > MAX_MAP_BYTES:
+        raise MapError(path, _too_big(len(data)))
+    if b"\x00" in data:
+        raise MapError(path, "binary file, not a text map")
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError:
+        raise MapError(path, "binary file, not a text map") from None
+
+
+def _too_big(size: int) -> str:
+    # Round up to a tenth so a file just over the limit never reads as "64.0 MB".
+    mb = math.ceil(size * 10 / (1024 * 1024)) / 10
+    limit = MAX_MAP_BYTES // (1024 * 1024)
+    return f"file is {mb:.1f} MB; a map may be at most {limit} MB"
+
+
+def _first_bad(row: str, bad: re.Pattern[str]) -> int:
+    """Index of the first character of ``row`` that ``bad`` matches, or -1."""
+    found = bad.search(row)
+    return -1 if found is None else found.start()
+
+
+def _block_table(blocked_chars: str) -> bytes:
+    table = bytearray(256)
+    for ch in blocked_chars:
+        table[ord(ch)] = 1
+    return bytes(table)
+
+
+# -- text format --------------------------------------------------------------------------
+
+_TEXT_BAD = re.compile(r"[^.#SG]")
+_TEXT_BLOCK = _block_table("#")
+
+
+def parse_text_map(text: str, path: str = "<map>") -> Grid:
+    """Parse our text format; the map must have exactly one ``S`` and one ``G``."""
+    return _parse_text(text, path, need_start=True, need_goal=True)
+
+
+def _parse_text(text: str, path: str, *, need_start: bool, need_goal: bool) -> Grid:
+    rows: list[bytes] = []
+    width = 0
+    cells: dict[str, Cell] = {}  # "S"/"G" -> (x, y)
+    seen_at: dict[str, tuple[int, int]] = {}  # "S"/"G" -> (line, col), for "a second S"
+    blank_line: int | None = None  # first blank line after the rows began
+    for number, line in enumerate(_lines(text), start=1):
+        if line.lstrip().startswith(";"):
+            continue
+        if not line:
+            if rows and blank_line is None:
+                blank_line = number
+            continue
+        if blank_line is not None:
+            raise MapError(path, "blank line inside the map", blank_line)
+        bad = _first_bad(line, _TEXT_BAD)
+        if bad >= 0:
+            raise MapError(path, f"unknown cell character {line[bad]!r}", number, bad + 1)
+        if not rows:
+            width = len(line)
+        elif len(line) != width:
+            raise MapError(path, f"row has {len(line)} cells, expected {width}", number)
+        for letter, what in (("S", "start"), ("G", "goal")):
+            x = line.find(letter)
+            if x < 0:
+                continue
+            if letter not in seen_at:
+                cells[letter] = (x, len(rows))
+                seen_at[letter] = (number, x + 1)
+                x = line.find(letter, x + 1)
+                if x < 0:
+                    continue
+            first_line, first_col = seen_at[letter]
+            raise MapError(
+                path,
+                f"a second {what} {letter!r} (the first is at line {first_line}, "
+                f"column {first_col})",
+                number,
+                x + 1,
+            )
+        rows.append(line.encode("ascii").translate(_TEXT_BLOCK))
+    if not rows:
+        raise MapError(path, "the map is empty")
+    if "S" not in cells and need_start:
+        raise MapError(path, "no start 'S' in the map")
+    if "G" not in cells and need_goal:
+        raise MapError(path, "no goal 'G' in the map")
+    blocked = bytearray(b"".join(rows))
+    return Grid(width, len(rows), blocked, cells.get("S"), cells.get("G"))
+
+
+def format_text_map(grid: Grid) -> str:
+    """The text-format file for ``grid``, one line per row, ending with a newline.
+
+    A grid without a start or goal is written without its ``S``/``G``; such a file loads
+    only with ``--start``/``--goal`` overrides.  A start or goal on an obstacle is written as
+    ``S``/``G``, so it comes back free.
+    """
+    w = grid.width
+    text = bytes(grid.blocked).translate(bytes.maketrans(b"\x00\x01", b".#")).decode("ascii")
+    rows = [text[y * w : (y + 1) * w] for y in range(grid.height)]
+    for cell, letter in ((grid.start, "S"), (grid.goal, "G")):
+        if cell is not None and grid.in_bounds(cell):
+            x, y = cell
+            rows[y] = rows[y][:x] + letter + rows[y][x + 1 :]
+    return "".join(row + "\n" for row in rows)
+
+
+def save_text_map(grid: Grid, path: str | os.PathLike) -> None:
+    """Write ``grid`` in the text format, atomically: readers (and a crash) see the old file
+    or the new one, never half of one.
+
+    Writes a temporary file beside the target, fsyncs it and renames it over the target.  On
+    failure the temporary file is removed, the old file is untouched, and a MapError says why.
+    """
+    target = os.fsdecode(path)
+    data = format_text_map(grid).encode("ascii")
+    folder = os.path.dirname(os.path.abspath(target))
+    try:
+        old_mode: int | None = stat.S_IMODE(os.stat(target).st_mode)
+    except OSError:
+        old_mode = None
+    tmp = ""  # set once the temporary file exists, cleared once it has been renamed
+    try:
+        # os.open with 0o666 applies the umask like any new file (mkstemp would make it
+        # private); O_EXCL so that another writer's temporary file is never reused.
+        for _ in range(100):
+            name = os.path.join(folder, f".{os.path.basename(target)}.{secrets.token_hex(4)}.tmp")
+            try:
+                fd = os.open(name, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
+            except FileExistsError:
+                continue
+            tmp = name
+            break
+        else:  # pragma: no cover - 100 random clashes in a row
+            raise FileExistsError("could not pick a temporary file name")
+        with os.fdopen(fd, "wb") as handle:
+            if old_mode is not None and hasattr(os, "fchmod"):
+                os.fchmod(handle.fileno(), old_mode)
+            handle.write(data)
+            handle.flush()
+            os.fsync(handle.fileno())
+        os.replace(tmp, target)
+        tmp = ""
+    except FileNotFoundError:
+        raise MapError(target, "cannot save: the folder does not exist") from None
+    except OSError as err:
+        raise MapError(target, f"cannot save: {_os_reason(err)}") from None
+    finally:
+        if tmp:
+            try:
+                os.unlink(tmp)
+            except OSError:
+                pass
+    _fsync_dir(folder)
+
+
+def _fsync_dir(folder: str) -> None:
+    """Make the rename itself durable; best effort (not every OS or filesystem allows it)."""
+    try:
+        fd = os.open(folder, os.O_RDONLY)
+    except OSError:
+        return
+    try:
+        os.fsync(fd)
+    except OSError:
+        pass
+    finally:
+        os.close(fd)
+
+
+# -- MovingAI .map --------------------------------------------------------------------------
+
+_MAI_BAD = re.compile(r"[^.GS@OTW]")
+_MAI_BLOCK = _block_table("@OTW")
+_NUMBER = re.compile(r"[0-9]+")
+
+
+def parse_movingai_map(text: str, path: str = "<map>") -> Grid:
+    """Parse a MovingAI map: ``.``, ``G``, ``S`` passable; ``@``, ``O``, ``T``, ``W`` blocked.
+
+    MovingAI maps carry no start or goal, so both are None.
+    """
+    lines = _lines(text)
+    n = len(lines)
+    i = 0
+    while i < n and not lines[i]:
+        i += 1
+    if i == n or lines[i].split()[0].lower() != "type":
+        raise MapError(path, "expected 'type octile' on the first line", i + 1 if i < n else 1)
+    i += 1
+    header: dict[str, tuple[int, int]] = {}  # name -> (value, line)
+    map_line = 0
+    while i < n:
+        number, line = i + 1, lines[i]
+        i += 1
+        if not line:
+            continue
+        words = line.split()
+        key = words[0].lower()
+        if key == "map" and len(words) == 1:
+            map_line = number
+            break
+        if key in ("height", "width"):
+            if key in header:
+                raise MapError(path, f"{key} is given twice", number)
+            if len(words) != 2 or not _NUMBER.fullmatch(words[1]):
+                raise MapError(path, f"expected '{key} N', found {_show(line)}", number)
+            if len(words[1].lstrip("0")) > _MAX_DIGITS:
+                raise MapError(path, f"{key} is too large: {_show(words[1], 12)}", number)
+            value = int(words[1])
+            if value < 1:
+                raise MapError(path, f"{key} must be at least 1", number)
+            header[key] = (value, number)
+            continue
+        raise MapError(path, f"expected 'height', 'width' or 'map', found {_show(line)}", number)
+    if not map_line:
+        last_text = max((k + 1 for k in range(n) if lines[k]), default=1)
+        raise MapError(path, "the header has no 'map' line", last_text)
+    for key in ("height", "width"):
+        if key not in header:
+            raise MapError(path, f"the header has no {key}", map_line)
+    height, height_line = header["height"]
+    width = header["width"][0]
+    last = n
+    while last > i and not lines[last - 1]:
+        last -= 1  # trailing blank lines (a final newline, or more) are not rows
+    rows: list[bytes] = []
+    for k in range(i, last):
+        number, line = k + 1, lines[k]
+        if len(rows) == height:
+            raise MapError(path, f"more rows than the height ({height}) in the header", number)
+        if not line:
+            raise MapError(path, "blank line inside the map", number)
+        bad = _first_bad(line, _MAI_BAD)
+        if bad >= 0:
+            raise MapError(path, f"unknown cell character {line[bad]!r}", number, bad + 1)
+        if len(line) != width:
+            raise MapError(path, f"row has {len(line)} cells, expected {width}", number)
+        rows.append(line.encode("ascii").translate(_MAI_BLOCK))
+    if len(rows) < height:
+        found = f"{len(rows)} row" + ("" if len(rows) == 1 else "s")
+        raise MapError(
+            path, f"the header says height {height} but the map has {found}", height_line
+        )
+    return Grid(width, height, bytearray(b"".join(rows)))
+
+
+# -- dispatch and loading ------------------------------------------------------------------
+
+
+_TYPE_LINE = re.compile(r"\ufeff?\s*type(?:\s|$)", re.IGNORECASE)
+
+
+def _is_movingai(text: str) -> bool:
+    """Whether the first non-empty line starts with the word ``type`` (without splitting
+    the whole text into lines: a big map would be split twice)."""
+    return _TYPE_LINE.match(text) is not None
+
+
+def parse_map_text(text: str, path: str = "<map>") -> Grid:
+    """Parse either format, chosen by content: a first non-empty line ``type ...`` means
+    MovingAI (whatever the file is called), anything else our text format."""
+    if _is_movingai(text):
+        return parse_movingai_map(text, path)
+    return parse_text_map(text, path)
+
+
+def load_map(
+    path: str | os.PathLike, *, start: Cell | None = None, goal: Cell | None = None
+) -> Grid:
+    """Read a map file of either format.
+
+    ``start``/``goal`` override the file's ``S``/``G`` (and make them optional), which is
+    how MovingAI maps, having none, get a start and goal.
+    """
+    where = os.fsdecode(path)
+    text = _read_text(where)
+    if _is_movingai(text):
+        grid = parse_movingai_map(text, where)
+    else:
+        grid = _parse_text(text, where, need_start=start is None, need_goal=goal is None)
+    for cell, what in ((start, "start"), (goal, "goal")):
+        if cell is None:
+            continue
+        _check_cell(grid, cell, what, where, None)
+        if what == "start":
+            grid.start = (cell[0], cell[1])
+        else:
+            grid.goal = (cell[0], cell[1])
+    return grid
+
+
+def _check_cell(grid: Grid, cell: Cell, what: str, path: str, line: int | None) -> None:
+    x, y = cell
+    if not grid.in_bounds(cell):
+        raise MapError(
+            path, f"{what} ({x},{y}) is outside the {grid.width}x{grid.height} map", line
+        )
+    if grid.is_blocked(cell):
+        raise MapError(path, f"{what} ({x},{y}) is on an obstacle", line)
+
+
+_CELL = re.compile(r"\(?\s*(-?[0-9]+)\s*,\s*(-?[0-9]+)\s*\)?")
+
+
+def parse_cell(text: str) -> Cell:
+    """``"3,4"`` -> ``(3, 4)`` (column, row from 0); ValueError with a one-line reason."""
+    match = _CELL.fullmatch(text.strip())
+    if not match:
+        raise ValueError(f"expected a cell as X,Y (column,row counted from 0), got {_show(text)}")
+    if any(len(part.lstrip("-0")) > _MAX_DIGITS for part in match.groups()):
+        raise ValueError(f"cell {_show(text)} is far too large")
+    x, y = int(match.group(1)), int(match.group(2))
+    if x < 0 or y < 0:
+        raise ValueError(f"cell {_show(text)} has a negative coordinate")
+    return (x, y)
+
+
+# -- MovingAI .scen ------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Scenario:
+    """One benchmark problem: a start and goal on a named map, with its optimal length."""
+
+    bucket: int
+    map_name: str  # as written in the file; may include directories (match by basename)
+    width: int
+    height: int
+    start: Cell
+    goal: Cell
+    optimal_length: float
+    line: int  # 1-based line in the .scen file, for error messages
+
+
+_VERSION = re.compile(r"version\s+[0-9]+(\.[0-9]+)?", re.IGNORECASE)
+_FIELDS = (
+    "bucket", "map", "map width", "map height",
+    "start x", "start y", "goal x", "goal y", "optimal length",
+)  # fmt: skip
+
+
+def read_scenarios(path: str | os.PathLike) -> list[Scenario]:
+    """Every problem in a ``.scen`` file, in file order."""
+    where = os.fsdecode(path)
+    return parse_scenarios(_read_text(where), where)
+
+
+def parse_scenarios(text: str, path: str = "<scen>") -> list[Scenario]:
+    """Every problem in the text of a ``.scen`` file (``path`` is only for messages)."""
+    lines = _lines(text)
+    if not _VERSION.fullmatch(lines[0].strip()):
+        found = _show(lines[0]) if lines[0] else "an empty line"
+        raise MapError(path, f"expected 'version 1' on the first line, found {found}", 1)
+    out = []
+    for number, line in enumerate(lines[1:], start=2):
+        if not line.strip():
+            continue
+        fields = [f.strip() for f in line.split("\t")]
+        if len(fields) != 9:
+            fields = line.split()
+        if len(fields) != 9:
+            raise MapError(
+                path,
+                f"expected 9 fields ({', '.join(_FIELDS)}), found {len(fields)}",
+                number,
+            )
+        ints = []
+        for k in (0, 2, 3, 4, 5, 6, 7):
+            word = fields[k]
+            if not _NUMBER.fullmatch(word) or len(word.lstrip("0")) > _MAX_DIGITS:
+                raise MapError(
+                    path, f"{_FIELDS[k]} is not a whole number >= 0: {_show(word)}", number
+                )
+            ints.append(int(word))
+        bucket, width, height, sx, sy, gx, gy = ints
+        try:
+            length = float(fields[8])
+        except ValueError:
+            length = math.nan
+        if not (math.isfinite(length) and length >= 0):
+            raise MapError(path, f"optimal length is not a number >= 0: {_show(fields[8])}", number)
+        if not fields[1]:
+            raise MapError(path, "the map name is empty", number)
+        if width < 1 or height < 1:
+            raise MapError(path, f"map size {width}x{height} is empty", number)
+        for what, (x, y) in (("start", (sx, sy)), ("goal", (gx, gy))):
+            if x >= width or y >= height:
+                raise MapError(
+                    path, f"{what} ({x},{y}) is outside the {width}x{height} map", number
+                )
+        out.append(Scenario(bucket, fields[1], width, height, (sx, sy), (gx, gy), length, number))
+    return out
+
+
+def load_scenario(path: str | os.PathLike, row: int) -> Scenario:
+    """Problem number ``row`` (from 0, after the version line) of a ``.scen`` file."""
+    where = os.fsdecode(path)
+    scenarios = read_scenarios(where)
+    if 0 <= row < len(scenarios):
+        return scenarios[row]
+    if not scenarios:
+        raise MapError(where, f"no row {row}: the file has no scenario rows")
+    count = len(scenarios)
+    rows = "1 row (row 0)" if count == 1 else f"{count} rows (0 to {count - 1})"
+    raise MapError(where, f"no row {row}: the file has {rows}")
+
+
+def _basename(name: str) -> str:
+    """Basename for either separator: scenario files written on Windows use backslashes."""
+    return re.split(r"[\\/]", name)[-1]
+
+
+def check_scenario_matches(
+    scen: Scenario, grid: Grid, scen_path: str | os.PathLike, map_path: str | os.PathLike
+) -> None:
+    """Raise MapError (at the scenario's line) unless ``scen`` is a problem on this map.
+
+    Maps are matched by basename because older files give a path (``maps/dao/x.map``).
+    The spec's "scale the map to the scenario's size" is not supported: sizes must match.
+    """
+    where = os.fsdecode(scen_path)
+    map_name = _basename(os.fsdecode(map_path))
+    wanted = _basename(scen.map_name)
+    if wanted != map_name:
+        raise MapError(where, f"scenario is for map {wanted!r}, not {map_name!r}", scen.line)
+    if (scen.width, scen.height) != (grid.width, grid.height):
+        raise MapError(
+            where,
+            f"scenario says the map is {scen.width}x{scen.height}, "
+            f"but {map_name} is {grid.width}x{grid.height}",
+            scen.line,
+        )
+    _check_cell(grid, scen.start, "start", where, scen.line)
+    _check_cell(grid, scen.goal, "goal", where, scen.line)
