@@ -111,6 +111,7 @@ def test_bfs_cost_matches_the_scenario_optimum_when_corners_are_respected(capsys
         ([TUTORIAL, "--headless", "--scen", "x.scen"], "tui-search: error: --scen and --scen-row"),
         ([TUTORIAL, "--headless", "--json", "--trace", "-"], "tui-search: error: --trace -"),
         ([str(MAPS), "--headless"], f"tui-search: {MAPS}"),
+        (["--headless", "--start", "1,0"], "tui-search: tutorial.txt: start (1,0) is on an"),
     ],
 )
 def test_bad_input_is_one_line_and_exit_2(capsys, argv, expected) -> None:

@@ -89,10 +89,7 @@ def load_problem(args: argparse.Namespace) -> tuple[Grid, Path | None]:
         if args.scen:
             raise UsageError("--scen needs a MAP")
         text = resources.files("tui_search").joinpath("maps", TUTORIAL_NAME).read_text("utf-8")
-        grid = parse_map_text(text, TUTORIAL_NAME)
-        grid.start = start or grid.start
-        grid.goal = goal or grid.goal
-        return grid, None
+        return parse_map_text(text, TUTORIAL_NAME, start=start, goal=goal), None
     path = Path(args.map)
     scen = None
     if args.scen:

@@ -394,37 +394,35 @@ def _is_movingai(text: str) -> bool:
     return _TYPE_LINE.match(text) is not None
 
 
-def parse_map_text(text: str, path: str = "<map>") -> Grid:
-    """Parse either format, chosen by content: a first non-empty line ``type ...`` means
-    MovingAI (whatever the file is called), anything else our text format."""
-    if _is_movingai(text):
-        return parse_movingai_map(text, path)
-    return parse_text_map(text, path)
-
-
-def load_map(
-    path: str | os.PathLike, *, start: Cell | None = None, goal: Cell | None = None
+def parse_map_text(
+    text: str, path: str = "<map>", *, start: Cell | None = None, goal: Cell | None = None
 ) -> Grid:
-    """Read a map file of either format.
+    """Parse either format (a first line ``type ...`` means MovingAI).
 
     ``start``/``goal`` override the file's ``S``/``G`` (and make them optional), which is
     how MovingAI maps, having none, get a start and goal.
     """
-    where = os.fsdecode(path)
-    text = _read_text(where)
     if _is_movingai(text):
-        grid = parse_movingai_map(text, where)
+        grid = parse_movingai_map(text, path)
     else:
-        grid = _parse_text(text, where, need_start=start is None, need_goal=goal is None)
+        grid = _parse_text(text, path, need_start=start is None, need_goal=goal is None)
     for cell, what in ((start, "start"), (goal, "goal")):
         if cell is None:
             continue
-        _check_cell(grid, cell, what, where, None)
+        _check_cell(grid, cell, what, path, None)
         if what == "start":
             grid.start = (cell[0], cell[1])
         else:
             grid.goal = (cell[0], cell[1])
     return grid
+
+
+def load_map(
+    path: str | os.PathLike, *, start: Cell | None = None, goal: Cell | None = None
+) -> Grid:
+    """Read a map file of either format (see :func:`parse_map_text` for the overrides)."""
+    where = os.fsdecode(path)
+    return parse_map_text(_read_text(where), where, start=start, goal=goal)
 
 
 def _check_cell(grid: Grid, cell: Cell, what: str, path: str, line: int | None) -> None:
