@@ -82,8 +82,9 @@ class Run:
         self._n_exp = array("i", bytes(4 * size))
         self._stack: list[int] = []
         self._peak = array("i")
-        self._gen_step: array | None = None
-        self._path: list[int] | None = None
+        self._gen_step = array("i")  # event -> step that expanded it (DFS, IDDFS; lazy)
+        self._gen_step_filled = 0
+        self._path: set[int] | None = None
         self.k = 0
         self._advance_once()  # records the start (and the answer, when start == goal)
         self._enter_iteration(0)
@@ -307,9 +308,10 @@ class Run:
             if base + x0 <= cur < base + x1:
                 out[cur - base - x0] = CellState.CURRENT
         if self.at_end and self.found:
-            for p in self.path_set():
-                if base + x0 <= p < base + x1:
-                    out[p - base - x0] = CellState.PATH
+            path = self.path_set()
+            for i, p in enumerate(range(base + x0, base + x1)):
+                if p in path:
+                    out[i] = CellState.PATH
         return out
 
     def current_node(self) -> Cell | None:
@@ -374,11 +376,12 @@ class Run:
         if not self._lifo:
             return g + 1 if g + 1 <= self.rec.steps else None
         table = self._gen_step
-        if table is None or len(table) < len(self.rec.gen_node):
-            table = self._gen_step = array("i", [-1]) * len(self.rec.gen_node)
-            for k, expanded in enumerate(self.rec.step_exp):
-                if k:
-                    table[expanded] = k
+        if len(table) < len(self.rec.gen_node):  # extend it over what was recorded since
+            filled = self._gen_step_filled
+            table.extend(array("i", [-1]) * (len(self.rec.gen_node) - len(table)))
+            for k in range(filled + 1, self.rec.steps + 1):
+                table[self.rec.step_exp[k]] = k
+            self._gen_step_filled = self.rec.steps
         step = table[g]
         return step if step > 0 else None
 
@@ -449,9 +452,12 @@ class Run:
         return [self.gen_cell(g) for g in self.path_gens()]
 
     def path_set(self) -> set[int]:
+        """Padded cells on the path (empty until the goal is found)."""
         if self._path is None:
-            self._path = [self.rec.gen_node[g] for g in self.path_gens()]
-        return set(self._path)
+            if not self.rec.found:
+                return set()
+            self._path = {self.rec.gen_node[g] for g in self.path_gens()}
+        return self._path
 
     def moves(self) -> list[str] | None:
         if not self.rec.found:
