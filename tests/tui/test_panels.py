@@ -1,0 +1,404 @@
+"""The frontier panel and the search-tree panel, each alone in a tiny app, on the tutorial's map.
+
+Assertions are on the text of the rendered lines (``render_line(y).text``), so they check what a
+student sees: the queue/stack order, the markers, the titles, the tree's edge labels.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import functools
+from collections.abc import Callable, Coroutine
+from typing import Any
+
+import pytest
+from textual.app import App, ComposeResult
+from textual.widget import Widget
+
+from tests.helpers import TUTORIAL_ROWS, grid_from_rows
+from tui_search.engine.grid import Grid
+from tui_search.engine.run import Run
+from tui_search.tui.widgets import search_tree
+from tui_search.tui.widgets.frontier_panel import FrontierPanel
+from tui_search.tui.widgets.search_tree import SearchTreePanel
+
+
+def sync(test: Callable[..., Coroutine[Any, Any, None]]) -> Callable[..., None]:
+    """Run an async test with ``asyncio.run`` (the project pins no async pytest plugin)."""
+
+    @functools.wraps(test)
+    def wrapper(*args: Any, **kwargs: Any) -> None:
+        asyncio.run(test(*args, **kwargs))
+
+    return wrapper
+
+
+class PanelApp(App):
+    """Just one panel, shown the run at mount."""
+
+    def __init__(self, panel: Widget, run: Run) -> None:
+        super().__init__()
+        self.panel = panel
+        self.run_ = run
+
+    def compose(self) -> ComposeResult:
+        yield self.panel
+
+    def on_mount(self) -> None:
+        self.panel.show(self.run_)  # type: ignore[attr-defined]
+
+
+def tutorial_run(algorithm: str, k: int | None = None) -> Run:
+    """A run on the tutorial map at step ``k`` (the end when None)."""
+    run = Run(grid_from_rows(TUTORIAL_ROWS), algorithm)
+    run.advance()
+    run.goto(run.recorded if k is None else k)
+    return run
+
+
+def screen_lines(panel: Widget) -> list[str]:
+    """The panel's visible lines as plain text, trailing blanks dropped."""
+    lines = [panel.render_line(y).text.rstrip() for y in range(panel.size.height)]
+    while lines and not lines[-1]:
+        lines.pop()
+    return lines
+
+
+def walled_goal_grid(size: int) -> Grid:
+    """An open ``size`` x ``size`` map whose goal (the far corner) is walled in, so a search
+    explores everything."""
+    grid = Grid(size, size, start=(0, 0), goal=(size - 1, size - 1))
+    for cell in ((size - 2, size - 1), (size - 2, size - 2), (size - 1, size - 2)):
+        grid.set_blocked(cell, True)
+    return grid
+
+
+# -- the frontier panel --------------------------------------------------------------------
+
+
+@sync
+async def test_bfs_queue_follows_the_tutorial() -> None:
+    """BFS: START adds S; S adds S, SE; S adds S, SE; SE adds E, NE -- a queue, front first."""
+    run = tutorial_run("bfs", 0)
+    panel = FrontierPanel()
+    async with PanelApp(panel, run).run_test(size=(50, 12)) as pilot:
+        assert panel.border_title == "Queue (FIFO) · 1"
+        assert screen_lines(panel) == ["▶  (0,0) START ← front and back"]
+        expected = {
+            1: ["▶+ (0,1) S   ← front and back"],
+            2: ["▶+ (0,2) S   ← front (next out)",
+                " + (1,2) SE  ← back (newest)"],
+            3: ["▶  (1,2) SE  ← front (next out)",
+                " + (0,3) S",
+                " + (1,3) SE  ← back (newest)"],
+            4: ["▶  (0,3) S   ← front (next out)",
+                "   (1,3) SE",
+                " + (2,2) E",
+                " + (2,1) NE  ← back (newest)"],
+        }
+        for k, lines in expected.items():
+            run.goto(k)
+            panel.show(run)
+            await pilot.pause()
+            assert panel.border_title == f"Queue (FIFO) · {len(lines)}"
+            assert screen_lines(panel) == lines, k
+        assert panel.border_subtitle == "▶ next out  + just added"
+
+
+@sync
+async def test_dfs_stack_has_ne_on_top() -> None:
+    """DFS step 3 expands SE (1,2), pushing SW, S, E, NE: NE on top, the old S at the bottom."""
+    run = tutorial_run("dfs", 3)
+    panel = FrontierPanel()
+    async with PanelApp(panel, run).run_test(size=(50, 12)):
+        assert run.current_node() == (1, 2)
+        assert panel.border_title == "Stack (LIFO) · 5"
+        assert screen_lines(panel) == [
+            "▶+ (2,1) NE  ← top (next out)",
+            " + (2,2) E",
+            " + (1,3) S",
+            " + (0,3) SW",
+            "   (0,2) S   ← bottom (oldest)",
+        ]
+
+
+@sync
+async def test_iddfs_stack_shows_depths_and_iteration_ends() -> None:
+    """Iterative deepening: each entry's depth; an emptied stack announces the next limit."""
+    run = tutorial_run("iddfs", 5)
+    panel = FrontierPanel()
+    async with PanelApp(panel, run).run_test(size=(50, 12)) as pilot:
+        assert run.depth_limit() == 2
+        assert panel.border_title == "Stack (LIFO) · 2"
+        assert screen_lines(panel) == [
+            "▶+ (1,2) SE d=2  ← top (next out)",
+            " + (0,2) S  d=2  ← bottom (oldest)",
+        ]
+        run.goto(3)  # limit 1: S (0,1) expanded at the limit, nothing left
+        panel.show(run)
+        await pilot.pause()
+        assert panel.border_title == "Stack (LIFO) · 0"
+        assert screen_lines(panel) == ["empty — iteration over; next: depth limit 2"]
+
+
+@sync
+async def test_empty_frontier_says_no_path() -> None:
+    run = Run(grid_from_rows(["S.#.", "..#G"]), "bfs")
+    run.advance()
+    run.goto(run.recorded)
+    assert run.at_end and not run.found
+    panel = FrontierPanel()
+    async with PanelApp(panel, run).run_test(size=(40, 6)):
+        assert panel.border_title == "Queue (FIFO) · 0"
+        assert screen_lines(panel) == ["empty — no path"]
+
+
+@sync
+async def test_big_queue_renders_and_scrolls_to_the_end() -> None:
+    """BFS on an open 400x400 map after 100 000 steps: lines come from the run on demand."""
+    run = Run(walled_goal_grid(400), "bfs")
+    run.goto(100_000)
+    n = run.frontier_len()
+    panel = FrontierPanel()
+    async with PanelApp(panel, run).run_test(size=(50, 20)) as pilot:
+        assert panel.virtual_size.height == n
+        assert screen_lines(panel)[0].startswith("▶")
+        panel.scroll_end(animate=False, immediate=True)
+        await pilot.pause()
+        last = screen_lines(panel)[-1]
+        (g,) = run.frontier(n - 1, n)
+        x, y = run.gen_cell(g)
+        assert f"({x},{y}) {run.gen_dir(g)}" in last and last.endswith("← back (newest)")
+        # one more step: back to the front, the new entries marked at the back
+        run.forward()
+        panel.show(run)
+        await pilot.pause()
+        assert panel.scroll_offset.y == 0
+        assert panel.line_text(run.frontier_len() - 1).startswith(" +")
+
+
+@sync
+async def test_stack_of_100_000_entries() -> None:
+    """DFS on an open 1000x1000 map: a stack of over 100 000 entries, bottom line reachable."""
+    run = Run(walled_goal_grid(1000), "dfs")
+    run.goto(80_000)
+    n = run.frontier_len()
+    assert n >= 100_000
+    panel = FrontierPanel()
+    async with PanelApp(panel, run).run_test(size=(50, 20)) as pilot:
+        assert panel.border_title == f"Stack (LIFO) · {n:,}".replace(",", " ")
+        panel.scroll_end(animate=False, immediate=True)
+        await pilot.pause()
+        assert screen_lines(panel)[-1].endswith("← bottom (oldest)")
+        bottom = screen_lines(panel)[-1].split()
+        assert bottom[:2] == ["(0,1)", "S"]  # START's only push sits at the bottom
+
+
+# -- the search tree -----------------------------------------------------------------------
+
+
+def reference_tree(run: Run) -> list[str]:
+    """The tree at the position in preorder, built from the engine's ``children()``:
+    ``"  S (0,2)"`` (two spaces a level) -- an independent check of the panel's listing."""
+    out = []
+    todo = [(run.tree_root(), 0)]
+    while todo:
+        g, depth = todo.pop()
+        x, y = run.gen_cell(g)
+        out.append(f"{'  ' * depth}{run.gen_dir(g)} ({x},{y})")
+        todo.extend((c, depth + 1) for c in reversed(run.children(g)))
+    return out
+
+
+def strip_tree(line: str) -> str:
+    """A panel line reduced to the reference form: guides to two spaces a level, no glyph,
+    no suffix."""
+    body = line.split("  ◀")[0].split("  ★")[0].split("  ✂")[0]
+    i = 0
+    while i < len(body) and body[i] in " │├└─":
+        i += 1
+    guides, label = body[:i], body[i + 2 :]  # drop "● " / "○ " / "★ "
+    return "  " * (len(guides) // 3) + label
+
+
+@sync
+async def test_bfs_tree_after_four_steps() -> None:
+    """The tutorial's BFS tree after S, S, SE are expanded; SE (1,2) is being expanded."""
+    run = tutorial_run("bfs", 4)
+    panel = SearchTreePanel()
+    async with PanelApp(panel, run).run_test(size=(50, 14)):
+        assert panel.border_title == "Search tree · 8 nodes"
+        assert panel.mode == "list"
+        assert screen_lines(panel) == [
+            "● START (0,0)",
+            "└─ ● S (0,1)",
+            "   ├─ ● S (0,2)",
+            "   │  ├─ ○ S (0,3)",
+            "   │  └─ ○ SE (1,3)",
+            "   └─ ● SE (1,2)  ◀ expanding",
+            "      ├─ ○ E (2,2)",
+            "      └─ ○ NE (2,1)",
+        ]
+
+
+@sync
+async def test_dfs_tree_after_three_steps_and_current_highlight() -> None:
+    """DFS step 3: SE (1,2) expanded, its four successors under it; its line highlighted."""
+    run = tutorial_run("dfs", 3)
+    panel = SearchTreePanel()
+    async with PanelApp(panel, run).run_test(size=(50, 14)):
+        lines = screen_lines(panel)
+        assert lines == [
+            "● START (0,0)",
+            "└─ ● S (0,1)",
+            "   ├─ ○ S (0,2)",
+            "   └─ ● SE (1,2)  ◀ expanding",
+            "      ├─ ○ SW (0,3)",
+            "      ├─ ○ S (1,3)",
+            "      ├─ ○ E (2,2)",
+            "      └─ ○ NE (2,1)",
+        ]
+        assert panel.current_line() == 3
+        current = panel.get_component_rich_style("search-tree--current")
+        frontier = panel.get_component_rich_style("search-tree--frontier")
+        expanded = panel.get_component_rich_style("search-tree--expanded")
+        assert len({current, frontier, expanded}) == 3
+
+        def style_of(y: int, text: str):
+            return next(s.style for s in panel.render_line(y) if text in s.text)
+
+        assert style_of(3, "SE (1,2)") == current
+        assert style_of(1, "S (0,1)") == expanded
+        assert style_of(7, "NE (2,1)") == frontier
+
+
+@sync
+async def test_tree_path_highlighted_at_the_end() -> None:
+    """Found: the goal S (5,2) under SE (5,1), the whole path START .. goal in the path colour
+    (like the grid, the path outranks the "being expanded" highlight at the end)."""
+    run = tutorial_run("bfs")
+    panel = SearchTreePanel()
+    async with PanelApp(panel, run).run_test(size=(50, 40)):
+        lines = screen_lines(panel)
+        assert "★ goal" in panel.border_subtitle
+        goal_line = next(y for y, line in enumerate(lines) if "★ goal" in line)
+        assert lines[goal_line].endswith("└─ ★ S (5,2)  ★ goal")
+        path_style = panel.get_component_rich_style("search-tree--path")
+        on_path = {run.gen_cell(g) for g in run.path_gens()}  # the path outranks "current"
+        assert len(on_path) == 8
+        for y, line in enumerate(lines):
+            cell = line.split(" (")[-1].split(")")[0] if "(" in line else None
+            styles = [s.style for s in panel.render_line(y) if "(" in s.text]
+            if cell and tuple(int(v) for v in cell.split(",")) in on_path:
+                assert styles == [path_style], line
+
+
+@sync
+async def test_iddfs_tree_title_and_cutoff() -> None:
+    """Iterative deepening: the current iteration's tree, its depth limit in the title, and
+    nodes expanded at the limit marked as cut off."""
+    run = tutorial_run("iddfs", 7)
+    panel = SearchTreePanel()
+    async with PanelApp(panel, run).run_test(size=(50, 14)):
+        assert run.depth_limit() == 2
+        assert panel.border_title == "Search tree · depth limit 2 · 4 nodes"
+        assert screen_lines(panel) == [
+            "● START (0,0)",
+            "└─ ● S (0,1)",
+            "   ├─ ● S (0,2)  ◀ expanding",
+            "   └─ ● SE (1,2)  ✂ depth limit",
+        ]
+
+
+@pytest.mark.parametrize("algorithm", ["bfs", "dfs", "iddfs"])
+@sync
+async def test_tree_listing_matches_the_engine_stepping_both_ways(algorithm: str) -> None:
+    """The incrementally kept listing equals a tree built from ``run.children()`` at every
+    step, forwards, backwards and after jumps."""
+    run = tutorial_run(algorithm, 0)
+    panel = SearchTreePanel()
+    async with PanelApp(panel, run).run_test(size=(60, 50)):
+        order = list(range(run.recorded + 1))
+        order += order[::-1] + [run.recorded // 2, run.recorded, 0, run.recorded // 3]
+        for k in order:
+            run.goto(k)
+            panel.show(run)
+            assert [strip_tree(line) for line in panel.lines()] == reference_tree(run), k
+
+
+@sync
+async def test_big_tree_shows_the_focused_view() -> None:
+    """BFS on an open 400x400 map after 100 000 steps: the path to the node being expanded,
+    each line one edge, and that node's children, with the node in view."""
+    run = Run(walled_goal_grid(400), "bfs")
+    run.goto(100_000)
+    panel = SearchTreePanel()
+    async with PanelApp(panel, run).run_test(size=(90, 20)) as pilot:
+        assert panel.mode == "focus"
+        size = run.tree_size()
+        assert panel.border_title == f"Search tree · {size:,} nodes".replace(",", " ")
+        note = panel.line_text(0)
+        assert note == f"({size:,} nodes; showing the path to the node being expanded)".replace(
+            ",", " ")
+        chain = run.ancestors(run.rec.step_exp[run.k])
+        depth = len(chain) - 1
+        kids = list(run.added_now())
+        assert panel.virtual_size.height == 3 + search_tree.SHOW_LEVELS + 1 + len(kids)
+        assert panel.line_text(1) == "  0 ● START (0,0)"
+        hidden = depth - search_tree.SHOW_LEVELS - 1
+        assert panel.line_text(2) == f"    ⋮  {hidden} levels not shown"
+        visible = screen_lines(panel)
+        current = next(line for line in visible if "◀ expanding" in line)
+        x, y = run.current_node()  # type: ignore[misc]
+        assert current.lstrip().startswith(f"{depth} ")
+        assert f"● {run.gen_dir(chain[-1])} ({x},{y})" in current
+        # the last lines: the deepest edges, each with its move, then the children
+        below = len(visible) - len(kids)
+        for g, line in zip(chain[-5:], visible[below - 5 : below], strict=True):
+            cx, cy = run.gen_cell(g)
+            assert f"{run.gen_dir(g)} ({cx},{cy})" in line
+        for g, line in zip(kids, visible[below:], strict=True):
+            cx, cy = run.gen_cell(g)
+            assert f"○ {run.gen_dir(g)} ({cx},{cy})" in line
+        # a step forward keeps the new node in view
+        run.forward()
+        panel.show(run)
+        await pilot.pause()
+        x, y = run.current_node()  # type: ignore[misc]
+        assert any("◀ expanding" in line and f"({x},{y})" in line for line in screen_lines(panel))
+
+
+@sync
+async def test_focused_view_on_the_tutorial(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The focused view in full on a small tree (forced): START to the expanding node, sibling
+    counts, depths, and the goal under it."""
+    monkeypatch.setattr(search_tree, "SMALL_TREE", 3)
+    run = tutorial_run("dfs")
+    panel = SearchTreePanel()
+    async with PanelApp(panel, run).run_test(size=(64, 14)):
+        assert panel.mode == "focus"
+        assert screen_lines(panel) == [
+            "(13 nodes; showing the path to the node being expanded)",
+            "0 ● START (0,0)",
+            "1 └─ ● S (0,1)  only child",
+            "2    └─ ● SE (1,2)  child 2 of 2",
+            "3       └─ ● NE (2,1)  child 4 of 4",
+            "4          └─ ● NE (3,0)  child 2 of 2",
+            "5             └─ ● E (4,0)  only child",
+            "6                └─ ● SE (5,1)  ◀ expanding  only child",
+            "7                   └─ ★ S (5,2)  ★ goal",
+        ]
+
+
+@sync
+async def test_deep_dfs_chain_is_cut_to_its_deepest_levels() -> None:
+    """A depth-first chain thousands of moves deep: START, a "⋮" line, the deepest levels."""
+    run = Run(walled_goal_grid(400), "dfs")
+    run.goto(20_000)
+    panel = SearchTreePanel()
+    async with PanelApp(panel, run).run_test(size=(90, 20)):
+        assert panel.mode == "focus"
+        assert panel.line_text(1).endswith("● START (0,0)")
+        assert "⋮" in panel.line_text(2) and "levels not shown" in panel.line_text(2)
+        x, y = run.current_node()  # type: ignore[misc]
+        assert any("◀ expanding" in line and f"({x},{y})" in line for line in screen_lines(panel))

@@ -1,0 +1,231 @@
+"""The frontier: BFS's FIFO queue or DFS's / iterative deepening's LIFO stack, one entry a line.
+
+The panel is a line-API :class:`~textual.scroll_view.ScrollView`: it holds no copy of the
+frontier, only the run and the position it was last shown.  ``render_line`` asks the run for the
+one entry on that row (``run.frontier(i, i + 1)``), so drawing costs O(rows visible) whether the
+frontier holds 3 entries or 100 000, and :meth:`FrontierPanel.show` costs O(1).
+
+Each line reads ``▶+ (2,1) NE`` -- a marker column (``▶`` the entry expanded next, ``+`` an entry
+the step just taken added), the cell, and the move that reached it -- plus ``d=3`` for iterative
+deepening.  The first and last lines carry a hint (``← front (next out)`` / ``← back (newest)``
+for a queue, ``← top (next out)`` / ``← bottom (oldest)`` for a stack) so a student sees which
+end is which.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, ClassVar
+
+from rich.cells import cell_len
+from rich.segment import Segment
+from rich.style import Style
+from textual.geometry import Size
+from textual.scroll_view import ScrollView
+from textual.strip import Strip
+
+if TYPE_CHECKING:
+    from tui_search.engine.run import Run
+
+#: Cells between an entry and its end hint.
+HINT_GAP = 2
+
+
+def _num(n: int) -> str:
+    """``100000`` -> ``100 000`` (digit groups a student can read at a glance)."""
+    return f"{n:,}".replace(",", " ")
+
+
+class FrontierPanel(ScrollView, can_focus=True):
+    """The frontier of a :class:`Run` at its position, next-to-expand first.
+
+    Call :meth:`show` after every change of run or position.
+    """
+
+    DEFAULT_CSS = """
+    FrontierPanel {
+        border: round $border-blurred;
+        border-title-align: left;
+        border-subtitle-align: right;
+        border-title-color: $foreground;
+        border-subtitle-color: $text-muted;
+        padding: 0 1;
+        &:focus { border: round $border; border-title-color: $text-primary; }
+        & > .frontier-panel--entry { color: $foreground; }
+        & > .frontier-panel--next {
+            color: $text-accent; background: $accent 15%; text-style: bold;
+        }
+        & > .frontier-panel--added { color: $text-warning; }
+        & > .frontier-panel--detail { color: $text-muted; }
+        & > .frontier-panel--hint { color: $text-muted; text-style: italic; }
+        & > .frontier-panel--empty { color: $text-muted; text-style: italic; }
+        & > .frontier-panel--no-path { color: $text-error; text-style: bold; }
+    }
+    """
+
+    COMPONENT_CLASSES: ClassVar[set[str]] = {
+        "frontier-panel--entry",
+        "frontier-panel--next",
+        "frontier-panel--added",
+        "frontier-panel--detail",
+        "frontier-panel--hint",
+        "frontier-panel--empty",
+        "frontier-panel--no-path",
+    }
+    """
+    | Class | Description |
+    | :- | :- |
+    | `frontier-panel--entry` | An entry waiting on the frontier. |
+    | `frontier-panel--next` | The entry that will be expanded next (the `▶` line). |
+    | `frontier-panel--added` | The `+` marker of entries added by the step just taken. |
+    | `frontier-panel--detail` | The `d=` depth of iterative deepening. |
+    | `frontier-panel--hint` | The front/back or top/bottom hints. |
+    | `frontier-panel--empty` | The line shown for an empty frontier. |
+    | `frontier-panel--no-path` | The line shown when the search ended without a path. |
+    """
+
+    def __init__(
+        self,
+        *,
+        name: str | None = None,
+        id: str | None = None,
+        classes: str | None = None,
+        disabled: bool = False,
+    ) -> None:
+        super().__init__(name=name, id=id, classes=classes, disabled=disabled)
+        self._run: Run | None = None
+        self._shown: tuple[int, int] | None = None  # (id(run), k) last shown
+        self._count = 0  # frontier entries at the position
+        self._added: range = range(0)
+        self._iddfs = False
+        self._coord_w = 5  # width of "(x,y)" for the largest cell of the map
+        self._depth_w = 0  # width of "d=N" (iterative deepening only)
+        self._hint_col = 0  # column where end hints start
+        self._empty_text = ""
+        self.border_title = "Frontier"
+
+    # -- the contract with the app ----------------------------------------------------------
+    @property
+    def run(self) -> Run | None:
+        return self._run
+
+    def show(self, run: Run) -> None:
+        """Show ``run`` at its position: O(1), whatever the frontier's size.
+
+        Keeps the entry expanded next (the first line) in view when the run or the position
+        changed; a repeated call at the same position leaves the scroll where the user put it.
+        """
+        key = (id(run), run.k)
+        moved = key != self._shown
+        self._run, self._shown = run, key
+        lifo = run.algorithm != "bfs"
+        self._iddfs = run.algorithm == "iddfs"
+        n = self._count = run.frontier_len()
+        self._added = run.added_now()
+        grid = run.grid
+        self._coord_w = len(f"({grid.width - 1},{grid.height - 1})")
+        limit = run.depth_limit() if self._iddfs else None
+        self._depth_w = len(f"d={limit}") if limit is not None else 0
+        # marker (3) + coords + " " + direction (2) [+ " " + d=N]; START only ever on its own.
+        entry_w = 3 + self._coord_w + 1 + 2 + (1 + self._depth_w if self._depth_w else 0)
+        self._hint_col = entry_w + HINT_GAP
+        kind = "Stack (LIFO)" if lifo else "Queue (FIFO)"
+        self.border_title = f"{kind} · {_num(n)}"
+        self.border_subtitle = "▶ next out  + just added" if n else ""
+        if n:
+            self._empty_text = ""
+            hint = max(len(self._hints(lifo, 0, n)), len(self._hints(lifo, n - 1, n)))
+            width = self._hint_col + hint
+            height = n
+        else:
+            self._empty_text = self._describe_empty(run)
+            width, height = cell_len(self._empty_text), 1
+        virtual_size = Size(width, height)
+        if virtual_size != self.virtual_size:
+            self.virtual_size = virtual_size
+            self._scroll_update(virtual_size)
+        if moved:
+            self.scroll_to(0, 0, animate=False, immediate=True, force=True)
+        self.refresh()
+
+    # -- text, for tests and for render_line ------------------------------------------------
+    @staticmethod
+    def _hints(lifo: bool, i: int, n: int) -> str:
+        if n == 1:
+            return "← top and bottom" if lifo else "← front and back"
+        if i == 0:
+            return "← top (next out)" if lifo else "← front (next out)"
+        if i == n - 1:
+            return "← bottom (oldest)" if lifo else "← back (newest)"
+        return ""
+
+    @staticmethod
+    def _describe_empty(run: Run) -> str:
+        if run.k < run.recorded or not run.done:
+            if run.algorithm == "iddfs":
+                limit = run.depth_limit()
+                nxt = 1 if limit is None else limit + 1
+                return f"empty — iteration over; next: depth limit {nxt}"
+            return "empty"
+        return "empty" if run.found else "empty — no path"
+
+    def line_parts(self, y: int) -> list[tuple[str, str]]:
+        """Line ``y`` as (text, component class) pieces; ``[]`` past the end."""
+        run = self._run
+        if run is None:
+            return []
+        n = self._count
+        if not n:
+            if y:
+                return []
+            cls = "frontier-panel--no-path" if "no path" in self._empty_text else (
+                "frontier-panel--empty")
+            return [(self._empty_text, cls)]
+        if not 0 <= y < n:
+            return []
+        (g,) = run.frontier(y, y + 1)
+        lifo = run.algorithm != "bfs"
+        x, cy = run.gen_cell(g)
+        main = "frontier-panel--next" if y == 0 else "frontier-panel--entry"
+        added = g in self._added
+        parts = [
+            ("▶" if y == 0 else " ", main),
+            ("+" if added else " ", "frontier-panel--added" if added else main),
+            (" " + f"({x},{cy})".ljust(self._coord_w) + " " + run.gen_dir(g).ljust(2), main),
+        ]
+        used = 3 + self._coord_w + 1 + max(2, len(run.gen_dir(g)))
+        if self._iddfs:
+            depth = f"d={run.gen_depth(g)}"
+            parts.append((" " + depth.ljust(self._depth_w), "frontier-panel--detail"))
+            used += 1 + max(self._depth_w, len(depth))
+        hint = self._hints(lifo, y, n)
+        if hint:
+            parts.append((" " * max(1, self._hint_col - used), "frontier-panel--entry"))
+            parts.append((hint, "frontier-panel--hint"))
+        return parts
+
+    def line_text(self, y: int) -> str:
+        """The plain text of line ``y`` of the whole list (not of the screen)."""
+        return "".join(text for text, _ in self.line_parts(y)).rstrip()
+
+    def lines(self) -> list[str]:
+        """Every line's text (tests and small frontiers only: O(frontier))."""
+        return [self.line_text(y) for y in range(self.virtual_size.height)]
+
+    # -- the line API -----------------------------------------------------------------------
+    def render_line(self, y: int) -> Strip:
+        scroll_x, scroll_y = self.scroll_offset
+        width = self.scrollable_content_region.width
+        base = self.rich_style
+        parts = self.line_parts(scroll_y + y)
+        if not parts:
+            return Strip.blank(width, base)
+        style = self.get_component_rich_style
+        if scroll_y + y == 0 and self._count:
+            # The entry expanded next is highlighted across the whole line, like a cursor.
+            band = Style(bgcolor=style("frontier-panel--next").bgcolor)
+            segments = [Segment(text, style(cls) + band) for text, cls in parts]
+            fill = base + band
+        else:
+            segments = [Segment(text, style(cls)) for text, cls in parts]
+            fill = base
+        return Strip(segments).crop_extend(scroll_x, scroll_x + width, fill)
