@@ -1,0 +1,688 @@
+"""The app driven by Pilot: every key, the mouse, editing then searching, saving, quitting.
+
+Assertions are on the app's state (the run, its position, the grid, the dirty flag) and on
+what is drawn (the map's lines as text, the status lines), so each test fails when the
+behaviour it names breaks.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import functools
+import os
+import re
+import time
+from collections.abc import Callable, Coroutine
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from tui_search.engine.grid import Grid
+from tui_search.engine.mapfile import format_text_map, load_map
+from tui_search.engine.run import Run
+from tui_search.tui import playback
+from tui_search.tui.app import NEEDS_ENDPOINTS, SearchApp
+from tui_search.tui.screens.confirm_quit import ConfirmQuitScreen
+from tui_search.tui.screens.help import HelpScreen
+from tui_search.tui.screens.save_as import SaveAsScreen
+from tui_search.tui.widgets.frontier_panel import FrontierPanel
+from tui_search.tui.widgets.grid_view import GridView
+from tui_search.tui.widgets.search_tree import SearchTreePanel
+from tui_search.tui.widgets.stats import Stats
+
+MAPS = Path(__file__).parents[2] / "maps"
+TUTORIAL = MAPS / "tutorial.txt"
+SIZE = (100, 32)
+
+
+def sync(test: Callable[..., Coroutine[Any, Any, None]]) -> Callable[..., None]:
+    """Run an async test with ``asyncio.run`` (the project pins no async pytest plugin)."""
+
+    @functools.wraps(test)
+    def wrapper(*args: Any, **kwargs: Any) -> None:
+        asyncio.run(test(*args, **kwargs))
+
+    return wrapper
+
+
+def tutorial_app(algorithm: str = "bfs", path: Path | None = TUTORIAL) -> SearchApp:
+    """The app on the tutorial's 6x6 map (start (0,0), goal (5,2))."""
+    return SearchApp(load_map(TUTORIAL), path=path, algorithm=algorithm)
+
+
+def open_grid(width: int, height: int, start=(0, 0), goal=None) -> Grid:
+    """A big obstacle-free map, goal in the far corner unless given."""
+    return Grid(width, height, start=start, goal=goal or (width - 1, height - 1))
+
+
+def map_lines(app: SearchApp) -> list[str]:
+    """The map as drawn: the text of every visible line of the grid view."""
+    view = app.query_one(GridView)
+    return [view.render_line(y).text for y in range(view.scrollable_content_region.height)]
+
+
+def stats(app: SearchApp) -> tuple[str, str]:
+    s = app.query_one(Stats)
+    return s.status_text, s.narration_text
+
+
+def screen_state(app: SearchApp) -> tuple:
+    """Everything a step changes: position, counts, frontier, map, status lines, and the
+    terminal as composited (which shows any line a step forgot to repaint)."""
+    run = app.search_run
+    assert run is not None
+    panel = app.query_one(FrontierPanel)
+    screen = re.sub(r"terminal-\d+-", "terminal-", app.export_screenshot())
+    return (run.k, run.expanded, run.generated, run.frontier(), tuple(map_lines(app)),
+            stats(app), panel.border_title, tuple(panel.lines()),
+            tuple(app.query_one(SearchTreePanel).lines()), screen)
+
+
+async def wait_until(pilot, condition: Callable[[], bool], seconds: float = 20.0) -> None:
+    deadline = time.monotonic() + seconds
+    while not condition():
+        assert time.monotonic() < deadline, "timed out"
+        await pilot.pause(0.02)
+
+
+# -- start-up ----------------------------------------------------------------------------
+
+
+@sync
+async def test_starts_paused_at_step_0_with_the_cursor_on_the_start() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.pause(0.3)
+        assert app.search_run is not None and app.search_run.k == 0
+        assert not app.playing
+        assert app.cursor_cell == (0, 0)
+        assert isinstance(app.focused, GridView)
+        status, narration = stats(app)
+        assert status.startswith("BFS │ step 0/22")
+        assert narration == "START (0,0) is on the queue. Press n to expand it."
+        lines = map_lines(app)
+        row0 = next(line for line in lines if "S " in line)
+        assert row0.strip().startswith("S ██· · · ██")
+
+
+@sync
+async def test_a_map_without_start_and_goal_opens_and_waits_for_them() -> None:
+    grid = Grid(8, 5)
+    app = SearchApp(grid)
+    async with app.run_test(size=SIZE) as pilot:
+        assert app.search_run is None
+        assert stats(app)[1] == NEEDS_ENDPOINTS
+        assert app.check_action("next", ()) is None
+        await pilot.press("n", "space", "end")  # nothing to do: no crash
+        await pilot.press("s", "right", "right", "down", "g")
+        assert app.search_run is not None
+        assert (grid.start, grid.goal) == ((0, 0), (2, 1))
+        await pilot.press("end")
+        await wait_until(pilot, lambda: app.search_run.at_end)
+        assert app.search_run.path() == [(0, 0), (1, 1), (2, 1)]
+
+
+# -- the cursor --------------------------------------------------------------------------
+
+
+@sync
+async def test_arrows_and_hjkl_move_the_cursor_and_stop_at_the_edges() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("right", "right", "down")
+        assert app.cursor_cell == (2, 1)
+        await pilot.press("l", "j", "j", "h", "k")
+        assert app.cursor_cell == (2, 2)
+        await pilot.press(*["up"] * 5, *["left"] * 5)
+        assert app.cursor_cell == (0, 0)
+        await pilot.press(*["l"] * 9, *["j"] * 9)
+        assert app.cursor_cell == (5, 5)
+        assert app.query_one(GridView).cursor == (5, 5)
+
+
+# -- stepping ----------------------------------------------------------------------------
+
+
+@sync
+async def test_n_expands_one_node_and_narrates_it_in_the_tutorials_words() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("n")
+        assert app.search_run.k == 1
+        assert stats(app)[1] == "Expanded START (0,0): added S to the queue"
+        await pilot.press("n", "n", "n")
+        assert app.search_run.k == 4
+        assert stats(app)[1] == "Expanded (1,2): added E, NE to the queue"
+        assert "queue 4 (peak 4)" in stats(app)[0]
+
+
+@sync
+async def test_dfs_narration_says_stack() -> None:
+    app = tutorial_app("dfs")
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("n", "n", "n")
+        assert stats(app)[1] == "Expanded (1,2): added SW, S, E, NE to the stack"
+
+
+@sync
+async def test_p_after_n_restores_exactly_what_was_on_screen() -> None:
+    for algorithm in ("bfs", "dfs", "iddfs"):
+        app = tutorial_app(algorithm)
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.press("n", "n", "n")
+            await pilot.pause()
+            before = screen_state(app)
+            await pilot.press("n")
+            await pilot.pause()
+            assert screen_state(app) != before
+            await pilot.press("p")
+            await pilot.pause()
+            assert screen_state(app) == before, algorithm
+
+
+@sync
+async def test_p_at_step_0_and_n_at_the_end_are_greyed_out_and_do_nothing() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        bindings = app.screen.active_bindings
+        assert bindings["p"].enabled is False and bindings["home"].enabled is False
+        assert bindings["n"].enabled is True
+        assert app.check_action("prev", ()) is None
+        await pilot.press("p")
+        assert app.search_run.k == 0
+        await pilot.press("end")
+        await wait_until(pilot, lambda: app.search_run.at_end)
+        await pilot.pause()
+        bindings = app.screen.active_bindings
+        assert bindings["n"].enabled is False and bindings["end"].enabled is False
+        assert bindings["space"].enabled is False
+        assert bindings["p"].enabled is True
+        total = app.search_run.k
+        await pilot.press("n")
+        assert app.search_run.k == total
+
+
+@sync
+async def test_home_and_end_go_to_the_first_and_last_step() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("end")
+        await wait_until(pilot, lambda: app.search_run.at_end)
+        run = app.search_run
+        assert run.k == 22 and run.found
+        assert stats(app)[1] == (
+            "Goal found at (5,2) when expanding (5,1) · path: 7 moves, cost 8.66")
+        assert any("◆" in line for line in map_lines(app))
+        await pilot.press("home")
+        assert run.k == 0
+        assert not any("◆" in line for line in map_lines(app))
+
+
+@sync
+async def test_no_path_is_reported_when_the_frontier_empties() -> None:
+    app = SearchApp(load_map(MAPS / "no-path.txt"), MAPS / "no-path.txt")
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("end")
+        await wait_until(pilot, lambda: app.search_run.at_end)
+        status, narration = stats(app)
+        assert narration.endswith("Frontier empty: no path")
+        assert status.endswith("│ speed 5/s")
+        assert "path:" not in narration
+
+
+@sync
+async def test_end_on_a_big_map_runs_in_slices_and_keys_are_still_answered(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    slices: list[float] = []
+    record_for = playback.record_for
+
+    def timed(run: Run) -> bool:
+        t = time.perf_counter()
+        try:
+            return record_for(run)
+        finally:
+            slices.append(time.perf_counter() - t)
+
+    monkeypatch.setattr(playback, "record_for", timed)
+    app = SearchApp(open_grid(80, 80), algorithm="iddfs")  # 3.4 M steps: seconds to record
+    seen: list[tuple[bool, str]] = []  # (seeking, narration) when the cursor key was handled
+    move = app.action_move
+
+    def spy(dx: int, dy: int) -> None:
+        seen.append((app.seeking, stats(app)[1]))
+        move(dx, dy)
+
+    app.action_move = spy  # type: ignore[method-assign]
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("end", "right")
+        await wait_until(pilot, lambda: not app.seeking, 60)
+        run = app.search_run
+        assert run.at_end and run.found and run.k == run.total == 3_409_955
+        assert "Computing" not in stats(app)[1]
+        assert stats(app)[1].startswith("Goal found at (79,79) when expanding (78,78) · path")
+        assert app.cursor_cell == (1, 0)
+    assert seen and seen[0][0], "the cursor key waited for the whole seek"
+    assert seen[0][1].startswith("Computing the search…")
+    assert len(slices) > 3 and max(slices) < 0.1
+
+
+@sync
+async def test_a_step_key_during_end_stops_the_seek_where_it_is() -> None:
+    app = SearchApp(open_grid(80, 80), algorithm="iddfs")
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("end")
+        assert app.seeking
+        await pilot.press("n")
+        run = app.search_run
+        assert not app.seeking and not run.at_end and run.k == 1
+        recorded = run.recorded
+        await pilot.pause(0.2)
+        assert run.k == 1 and run.recorded == recorded
+        assert not stats(app)[1].startswith("Computing")
+
+
+@sync
+async def test_a_step_repaints_only_the_lines_it_changed() -> None:
+    app = SearchApp(open_grid(300, 300, start=(5, 5)))
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("n", "n", "n")
+        view = app.query_one(GridView)
+        painted: list[int] = []
+        original = view.refresh_line
+        view.refresh_line = lambda y: (painted.append(y), original(y))  # type: ignore
+        refreshed_all = []
+        original_refresh = view.refresh
+        view.refresh = lambda *a, **k: (refreshed_all.append(a), original_refresh(*a, **k))
+        await pilot.pause()
+        app.action_next()  # what the step itself repaints (not focus or hover events)
+        assert app.search_run.k == 4
+        assert painted and set(painted) <= {4, 5, 6, 7}
+        assert not any(a == () for a in refreshed_all), "a whole-view refresh"
+
+
+@sync
+async def test_space_plays_and_pauses() -> None:
+    app = SearchApp(open_grid(60, 60))
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("plus", "plus", "plus")  # 50 steps/s
+        await pilot.press("space")
+        assert app.playing
+        await pilot.pause(0.4)
+        await pilot.press("space")
+        k = app.search_run.k
+        assert not app.playing and k > 3
+        await pilot.pause(0.3)
+        assert app.search_run.k == k
+
+
+@sync
+async def test_playback_at_top_speed_skips_frames_and_stops_at_the_end() -> None:
+    app = SearchApp(open_grid(300, 300))
+    async with app.run_test(size=SIZE) as pilot:
+        for _ in playback.SPEEDS:
+            await pilot.press("plus")
+        assert playback.SPEEDS[app.speed_index] == playback.SPEEDS[-1]
+        assert app.check_action("faster", ()) is None
+        start = time.monotonic()
+        await pilot.press("space")
+        await wait_until(pilot, lambda: app.search_run.at_end, 60)
+        assert time.monotonic() - start < 30
+        await pilot.pause(0.1)
+        assert not app.playing
+
+
+@sync
+async def test_plus_and_minus_change_the_speed_within_its_bounds() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        i = app.speed_index
+        await pilot.press("plus")
+        assert app.speed_index == i + 1
+        assert "speed 10/s" in stats(app)[0]
+        for _ in range(len(playback.SPEEDS)):
+            await pilot.press("minus")
+        assert app.speed_index == 0
+        assert app.check_action("slower", ()) is None
+        assert "speed 1/s" in stats(app)[0]
+
+
+# -- algorithms and runs -----------------------------------------------------------------
+
+
+@sync
+async def test_1_2_3_switch_algorithm_and_restart_on_the_same_map() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("n", "n")
+        first = app.search_run
+        await pilot.press("2")
+        assert app.algorithm == "dfs" and app.search_run is not first
+        assert app.search_run.k == 0
+        assert app.query_one(FrontierPanel).border_title.startswith("Stack (LIFO)")
+        assert stats(app)[0].startswith("DFS")
+        await pilot.press("3")
+        assert app.search_run.algorithm == "iddfs"
+        assert "depth limit 0" in stats(app)[0]
+        await pilot.press("1")
+        assert app.search_run.algorithm == "bfs"
+        assert app.query_one(FrontierPanel).border_title.startswith("Queue (FIFO)")
+
+
+@sync
+async def test_r_makes_a_fresh_run_at_step_0() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("n", "n", "n")
+        old = app.search_run
+        await pilot.press("r")
+        assert app.search_run is not old and app.search_run.k == 0
+        assert stats(app)[1].startswith("START (0,0) is on the queue")
+
+
+# -- editing -----------------------------------------------------------------------------
+
+
+@sync
+async def test_s_and_g_move_start_and_goal_and_restart_the_search() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("n", "n")
+        await pilot.press("down", "down", "s")
+        assert app.grid.start == (0, 2) and app.dirty
+        assert app.search_run.k == 0 and app.search_run.grid.start == (0, 2)
+        await pilot.press("right", "g")
+        assert app.grid.goal == (1, 2)
+        await pilot.press("end")
+        await wait_until(pilot, lambda: app.search_run.at_end)
+        assert app.search_run.path() == [(0, 2), (1, 2)]
+        assert "modified" in app.query_one(GridView).border_title
+
+
+@sync
+async def test_start_on_an_obstacle_or_on_the_goal_is_refused_with_a_notification() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("right", "s")  # (1,0) is an obstacle
+        assert app.grid.start == (0, 0) and not app.dirty
+        await pilot.pause()
+        assert any("obstacle" in n.message for n in app._notifications)
+        app.cursor_cell = (5, 2)  # the goal
+        await pilot.press("s")
+        assert app.grid.start == (0, 0)
+        assert any("on the goal" in n.message for n in app._notifications)
+        await pilot.press("o")  # an obstacle on the goal
+        assert not app.grid.is_blocked((5, 2))
+
+
+@sync
+async def test_o_toggles_an_obstacle_and_the_new_run_searches_the_edited_map() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("end")
+        await wait_until(pilot, lambda: app.search_run.at_end)
+        assert (1, 2) in app.search_run.path()
+        app.cursor_cell = (1, 2)
+        await pilot.press("o")
+        assert app.grid.is_blocked((1, 2)) and app.dirty
+        assert app.search_run.k == 0 and app.search_run.grid.is_blocked((1, 2))
+        await pilot.press("end")
+        await wait_until(pilot, lambda: app.search_run.at_end)
+        assert (1, 2) not in (app.search_run.path() or [])
+        await pilot.press("o")
+        assert not app.grid.is_blocked((1, 2))
+
+
+@sync
+async def test_clicking_a_cell_moves_the_cursor_and_toggles_an_obstacle() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        view = app.query_one(GridView)
+        pad = view.pad_x
+        # the view has a one-cell border: content (0,0) is the widget's (1,1)
+        await pilot.click(GridView, offset=(1 + pad + 2 * 2, 1 + 3))  # cell (2,3)
+        assert app.cursor_cell == (2, 3)
+        assert app.grid.is_blocked((2, 3)) is False  # (2,3) was an obstacle: erased
+        assert app.dirty and app.search_run.k == 0
+        await pilot.click(GridView, offset=(1 + pad + 2 * 2, 1 + 3))
+        assert app.grid.is_blocked((2, 3)) is True
+        await pilot.click(GridView, offset=(1 + pad, 1))  # the start: cursor only
+        assert app.cursor_cell == (0, 0) and not app.grid.is_blocked((0, 0))
+
+
+@sync
+async def test_right_click_moves_the_cursor_only() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        pad = app.query_one(GridView).pad_x
+        await pilot.click(GridView, offset=(1 + pad + 2 * 3, 1 + 4), button=3)
+        assert app.cursor_cell == (3, 4) and not app.dirty
+
+
+@sync
+async def test_click_and_drag_draws_then_erases_obstacles() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        pad = app.query_one(GridView).pad_x
+
+        def at(x: int, y: int) -> tuple[int, int]:
+            return (1 + pad + 2 * x, 1 + y)
+
+        await pilot.mouse_down(GridView, offset=at(0, 5))
+        for x in range(1, 5):
+            await pilot.hover(GridView, offset=at(x, 5))
+        await pilot.mouse_up(GridView, offset=at(4, 5))
+        assert [app.grid.is_blocked((x, 5)) for x in range(6)] == [True] * 5 + [False]
+        assert app.search_run.grid.is_blocked((4, 5))
+        # starting on an obstacle erases
+        await pilot.mouse_down(GridView, offset=at(1, 5))
+        await pilot.hover(GridView, offset=at(2, 5))
+        await pilot.mouse_up(GridView, offset=at(2, 5))
+        assert [app.grid.is_blocked((x, 5)) for x in range(6)] == [
+            True, False, False, True, True, False]
+        # moving without a button down draws nothing
+        await pilot.hover(GridView, offset=at(5, 5))
+        assert not app.grid.is_blocked((5, 5))
+
+
+# -- the overview ------------------------------------------------------------------------
+
+
+@sync
+async def test_z_switches_to_the_half_block_overview_and_back() -> None:
+    app = SearchApp(open_grid(64, 40))
+    async with app.run_test(size=SIZE) as pilot:
+        view = app.query_one(GridView)
+        assert view.virtual_size == (128, 40)
+        await pilot.press("z")
+        assert view.overview and view.virtual_size == (64, 20)
+        assert set(view.render_line(0).text.strip()) == {"▀"}
+        await pilot.press("z")
+        assert not view.overview and view.virtual_size == (128, 40)
+
+
+@sync
+async def test_the_view_follows_the_cursor_and_the_node_being_expanded() -> None:
+    app = SearchApp(open_grid(200, 200, start=(150, 150), goal=(199, 0)))
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.pause()
+        view = app.query_one(GridView)
+        region = view.scrollable_content_region
+
+        def visible(cell) -> bool:
+            sx, sy = view.scroll_offset
+            return sx <= cell[0] * 2 < sx + region.width and sy <= cell[1] < sy + region.height
+
+        assert visible((150, 150))
+        await pilot.press("n")
+        assert visible(app.search_run.current_node())
+        app.search_run.goto(5000)
+        await pilot.press("n")
+        await pilot.pause()
+        assert visible(app.search_run.current_node())
+        for _ in range(30):
+            await pilot.press("up")
+        await pilot.pause()
+        assert visible(app.cursor_cell)
+
+
+# -- files -------------------------------------------------------------------------------
+
+
+@sync
+async def test_ctrl_s_saves_to_the_maps_file_and_clears_dirty(tmp_path: Path) -> None:
+    path = tmp_path / "tutorial.txt"
+    path.write_text(TUTORIAL.read_text())
+    app = SearchApp(load_map(path), path=path)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("down", "down", "down", "down", "o")
+        assert app.dirty
+        await pilot.press("ctrl+s")
+        assert not app.dirty
+        assert path.read_text() == format_text_map(app.grid)
+        assert load_map(path).is_blocked((0, 4))
+
+
+@sync
+async def test_a_failed_save_leaves_the_old_file_and_says_why(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    path = tmp_path / "tutorial.txt"
+    old = TUTORIAL.read_text()
+    path.write_text(old)
+    app = SearchApp(load_map(path), path=path)
+
+    def refuse(src, dst):
+        raise PermissionError(13, "Permission denied")
+
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("down", "o")
+        monkeypatch.setattr(os, "replace", refuse)
+        await pilot.press("ctrl+s")
+        await pilot.pause()
+        assert path.read_text() == old
+        assert app.dirty
+        assert sorted(p.name for p in tmp_path.iterdir()) == ["tutorial.txt"]
+        errors = [n for n in app._notifications if n.severity == "error"]
+        assert errors and "cannot save: permission denied" in errors[-1].message
+        assert "\n" not in errors[-1].message
+
+
+@sync
+async def test_ctrl_s_without_a_file_asks_for_a_name(tmp_path: Path) -> None:
+    app = tutorial_app(path=None)
+    target = tmp_path / "mine.txt"
+    async with app.run_test(size=SIZE) as pilot:
+        app.cursor_cell = (0, 5)
+        await pilot.press("o")
+        await pilot.press("ctrl+s")
+        assert isinstance(app.screen, SaveAsScreen)
+        app.screen.query_one("Input").value = str(target)
+        await pilot.press("enter")
+        await pilot.pause()
+        assert not isinstance(app.screen, SaveAsScreen)
+        assert target.read_text() == format_text_map(app.grid)
+        assert app.map_path == target and not app.dirty
+
+
+# -- help, quitting, small terminals -----------------------------------------------------
+
+
+@sync
+async def test_question_mark_opens_help_and_escape_closes_it() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("question_mark")
+        assert isinstance(app.screen, HelpScreen)
+        await pilot.press("n")  # keys of the main screen do nothing under help
+        assert app.search_run.k == 0
+        await pilot.press("escape")
+        assert not isinstance(app.screen, HelpScreen)
+
+
+def test_help_lists_every_key_of_the_binding_table() -> None:
+    from textual.binding import Binding
+
+    from tui_search.tui.screens.help import KEYS
+
+    listed = " ".join(key for key, _ in KEYS).split()
+    aliases = {"up": "arrows", "down": "arrows", "left": "arrows", "right": "arrows",
+               "plus": "+", "minus": "-", "question_mark": "?"}
+    for binding in Binding.make_bindings(SearchApp.BINDINGS):
+        assert aliases.get(binding.key, binding.key) in listed, binding.key
+
+
+@sync
+async def test_q_quits_at_once_when_nothing_is_unsaved() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("q")
+        await pilot.pause()
+        assert app.return_code == 0 and not app.is_running
+
+
+@sync
+async def test_q_with_unsaved_edits_asks_first() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("down", "o", "q")
+        assert isinstance(app.screen, ConfirmQuitScreen)
+        await pilot.press("n")  # stay
+        assert not isinstance(app.screen, ConfirmQuitScreen) and app.is_running
+        await pilot.press("q")
+        await pilot.press("y")  # quit without saving
+        await pilot.pause()
+        assert not app.is_running
+
+
+@sync
+async def test_save_and_quit_from_the_question(tmp_path: Path) -> None:
+    path = tmp_path / "t.txt"
+    path.write_text(TUTORIAL.read_text())
+    app = SearchApp(load_map(path), path=path)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("down", "o", "q", "s")
+        await pilot.pause()
+        assert not app.is_running
+    assert load_map(path).is_blocked((0, 1))
+
+
+@sync
+async def test_a_terminal_too_small_shows_a_message_instead_of_the_layout() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=(50, 15)) as pilot:
+        await pilot.pause()
+        message = app.query_one("#too-small")
+        assert message.display and not app.query_one("#body").display
+        assert "need at least 60×20, have 50×15" in str(message.render())
+    app = tutorial_app()
+    async with app.run_test(size=(60, 20)) as pilot:
+        await pilot.pause()
+        assert not app.query_one("#too-small").display
+        await pilot.resize_terminal(59, 30)
+        await pilot.pause()
+        assert app.query_one("#too-small").display
+        await pilot.resize_terminal(80, 24)
+        await pilot.pause()
+        assert not app.query_one("#too-small").display and app.query_one("#body").display
+
+
+# -- the engine contract the app relies on -----------------------------------------------
+
+
+def test_step_changes_names_every_cell_a_step_changes() -> None:
+    """Repainting only step_changes' cells gives the same picture as repainting everything."""
+    for algorithm in ("bfs", "dfs", "iddfs"):
+        run = Run(load_map(TUTORIAL), algorithm)
+        before = [run.row_states(y) for y in range(6)]
+        while True:
+            old_k, was_end = run.k, run.at_end
+            if not run.forward():
+                break
+            after = [run.row_states(y) for y in range(6)]
+            changed = playback.step_changes(run, old_k, was_end)
+            if changed is not None:
+                diff = {(x, y) for y in range(6) for x in range(6) if before[y][x] != after[y][x]}
+                assert diff <= set(changed), (algorithm, run.k)
+            before = after

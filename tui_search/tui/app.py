@@ -1,0 +1,293 @@
+"""The app: owns the map, its file, the algorithm and the current :class:`Run`; the widgets are
+told what to show and post messages back (attributes down, messages up).
+
+A new ``Run`` is made whenever the map is edited, the algorithm changes or ``r`` is pressed, so
+no search state survives from one run to the next.  Playback is a paused interval timer whose
+ticks do what ``n`` does, several steps per tick at high speeds; ``end`` on a big map records and
+moves in time-boxed slices so keys are still answered.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import ClassVar
+
+from textual import events
+from textual.app import App, ComposeResult
+from textual.binding import Binding, BindingType
+from textual.containers import Container, Horizontal, Vertical
+from textual.widgets import Footer, Static
+
+from tui_search.engine.grid import Cell, Grid
+from tui_search.engine.run import Run
+from tui_search.engine.search import SearchOptions
+from tui_search.tui import playback
+from tui_search.tui.editing import EditActions
+from tui_search.tui.files import FileActions
+from tui_search.tui.screens.help import HelpScreen
+from tui_search.tui.widgets.frontier_panel import FrontierPanel
+from tui_search.tui.widgets.grid_view import GridView
+from tui_search.tui.widgets.legend import Legend
+from tui_search.tui.widgets.search_tree import SearchTreePanel
+from tui_search.tui.widgets.stats import Stats
+
+MIN_WIDTH, MIN_HEIGHT = 60, 20
+DEFAULT_OPTIONS = SearchOptions()
+NEEDS_ENDPOINTS = "Place a start (s) and a goal (g) to search"
+STEP = Binding.Group("Step", compact=True)
+ALGO = Binding.Group("BFS/DFS/ID", compact=True)
+
+
+class SearchApp(EditActions, FileActions, App[int]):
+    """Watch BFS, DFS and iterative deepening plan a path on ``grid``."""
+
+    CSS_PATH = "app.tcss"
+    TITLE = "tui-search"
+    ENABLE_COMMAND_PALETTE = False
+    AUTO_FOCUS = "GridView"
+
+    BINDINGS: ClassVar[list[BindingType]] = [
+        Binding("up,k", "move(0,-1)", "Cursor up", show=False),
+        Binding("down,j", "move(0,1)", "Cursor down", show=False),
+        Binding("left,h", "move(-1,0)", "Cursor left", show=False),
+        Binding("right,l", "move(1,0)", "Cursor right", show=False),
+        Binding("n", "next", "Next", group=STEP, tooltip="Next step (one expansion)"),
+        Binding("p", "prev", "Prev", group=STEP, tooltip="Previous step"),
+        Binding("space", "play", "Play", tooltip="Play / pause"),
+        Binding("plus", "faster", "Faster", show=False, key_display="+", tooltip="Faster"),
+        Binding("minus", "slower", "Slower", show=False, key_display="-", tooltip="Slower"),
+        Binding("home", "first", "First", show=False, tooltip="First step"),
+        Binding("end", "last", "Last", show=False, tooltip="Last step: the answer"),
+        Binding("1", "algorithm('bfs')", "BFS", group=ALGO, tooltip="Breadth-first search"),
+        Binding("2", "algorithm('dfs')", "DFS", group=ALGO, tooltip="Depth-first search"),
+        Binding("3", "algorithm('iddfs')", "IDDFS", group=ALGO, tooltip="Iterative deepening"),
+        Binding("s", "place('start')", "Start", show=False, tooltip="Start at the cursor"),
+        Binding("g", "place('goal')", "Goal", show=False, tooltip="Goal at the cursor"),
+        Binding("o", "toggle_wall", "Wall", show=False, tooltip="Obstacle on/off at the cursor"),
+        Binding("r", "reset", "Reset", tooltip="Restart the search at step 0"),
+        Binding("z", "overview", "Zoom", tooltip="Overview: the whole map in half blocks"),
+        Binding("ctrl+s", "save", "Save", tooltip="Save the map"),
+        Binding("question_mark", "help", "Help", key_display="?", tooltip="Help"),
+        Binding("q", "quit", "Quit", tooltip="Quit (asks first when there are unsaved edits)"),
+    ]
+
+    def __init__(
+        self,
+        grid: Grid,
+        path: Path | None = None,
+        algorithm: str = "bfs",
+        options: SearchOptions = DEFAULT_OPTIONS,
+    ) -> None:
+        super().__init__()
+        self.grid = grid
+        self.map_path = Path(path) if path is not None else None
+        self.algorithm = algorithm
+        self.options = options
+        self.dirty = False
+        self.cursor_cell: Cell = grid.start or (0, 0)
+        self.speed_index = playback.DEFAULT_SPEED
+        self.playing = False
+        self.seeking = False
+        self.note = ""
+        self.search_run: Run | None = None
+        self._stroke: bool | None = None  # what a mouse drag paints: True wall, False free
+        self._bindings_key: tuple = ()
+        self._mounted_ok = False  # True once mounted: widgets exist to show the run
+        self._new_run()
+
+    # -- layout -----------------------------------------------------------------------------
+    def compose(self) -> ComposeResult:
+        self.view = view = GridView(self.grid, id="grid")
+        self.frontier_panel = FrontierPanel(id="frontier")
+        self.tree_panel = SearchTreePanel(id="tree")
+        self.stats = Stats(id="stats")
+        with Container(id="body"):
+            with Horizontal(id="main"):
+                with Vertical(id="left"):
+                    yield view
+                    yield Legend(view, id="legend")
+                with Vertical(id="side"):
+                    yield self.frontier_panel
+                    yield self.tree_panel
+                    yield Static(NEEDS_ENDPOINTS, id="side-note")
+            yield self.stats
+            yield Footer()
+        yield Static(id="too-small")
+
+    def on_mount(self) -> None:
+        self._timer = self.set_interval(1.0, self._tick, pause=True)
+        self._set_speed(self.speed_index)
+        self._check_size(self.size.width, self.size.height)
+        self.view.set_cursor(self.cursor_cell)
+        self._mounted_ok = True
+        self._show()
+
+    def on_resize(self, event: events.Resize) -> None:
+        self._check_size(event.size.width, event.size.height)
+
+    def _check_size(self, width: int, height: int) -> None:
+        small = width < MIN_WIDTH or height < MIN_HEIGHT
+        self.screen_stack[0].set_class(small, "-too-small")
+        self.screen_stack[0].query_one("#too-small", Static).update(
+            f"Terminal too small: need at least {MIN_WIDTH}×{MIN_HEIGHT}, have {width}×{height}"
+        )
+
+    # -- the run and what shows it ----------------------------------------------------------
+    def _new_run(self, note: str = "") -> None:
+        """A fresh run at step 0 on the map as it is now (or none without start and goal)."""
+        self._stop()
+        self.note = note
+        grid = self.grid
+        if grid.start is None or grid.goal is None:
+            self.search_run = None
+            self.note = note or NEEDS_ENDPOINTS
+        else:
+            self.search_run = Run(grid, self.algorithm, self.options)
+        if self._mounted_ok:
+            self._show()
+
+    def _show(self, changed: list[Cell] | None = None, follow: bool = True) -> None:
+        """Push the run at its position to every widget; ``changed`` limits the map repaint."""
+        run = self.search_run
+        self.view.show_run(run, changed)
+        self.screen_stack[0].set_class(run is None, "-no-run")
+        if run is not None:
+            self.frontier_panel.show(run)
+            self.tree_panel.show(run)
+            if follow and run.k:
+                self.view.follow(run.current_node())
+        speed = playback.speed_text(playback.SPEEDS[self.speed_index])
+        playing = f"▶ playing {speed}" if self.playing else f"speed {speed}"
+        self.stats.show(run, self.algorithm, playing=playing, note=self.note)
+        name = self.map_path.name if self.map_path else "untitled"
+        title = f"{name} {'· modified' if self.dirty else ''}".strip()
+        if self.view.border_title != title:  # setting it repaints the whole view
+            self.view.border_title = title
+        key = (run is None, run and run.k == 0, run and run.at_end, self.speed_index,
+               self.playing)
+        if key != self._bindings_key:
+            self._bindings_key = key
+            self.refresh_bindings()
+
+    def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
+        """Grey out (None) the keys that cannot act now."""
+        run = self.search_run
+        if action in ("next", "play", "last"):
+            return None if run is None or (run.at_end and not self.playing) else True
+        if action in ("prev", "first"):
+            return None if run is None or run.k == 0 else True
+        if action == "reset":
+            return None if run is None else True
+        if action == "faster":
+            return None if self.speed_index == len(playback.SPEEDS) - 1 else True
+        if action == "slower":
+            return None if self.speed_index == 0 else True
+        return True
+
+    # -- stepping ---------------------------------------------------------------------------
+    def _moved(self, old_k: int, was_at_end: bool) -> None:
+        run = self.search_run
+        self._show(playback.step_changes(run, old_k, was_at_end))
+
+    def action_next(self) -> None:
+        self._step(forward=True)
+
+    def action_prev(self) -> None:
+        self._step(forward=False)
+
+    def _step(self, forward: bool) -> None:
+        run = self.search_run
+        if run is None:
+            return
+        self._stop()
+        old_k, was_at_end = run.k, run.at_end
+        if run.forward() if forward else run.backward():
+            self._moved(old_k, was_at_end)
+
+    def action_first(self) -> None:
+        run = self.search_run
+        if run is not None:
+            self._stop()
+            run.goto(0)
+            self._show()
+
+    def action_reset(self) -> None:
+        self._new_run()
+
+    def action_last(self) -> None:
+        """Go to the end: record the search in slices of at most SLICE_SECONDS (keys are
+        answered in between), then jump there in one bulk rebuild."""
+        if self.search_run is None or self.search_run.at_end:
+            return
+        self._stop()
+        self.seeking = True
+        self._seek_slice(self.search_run)
+
+    def _seek_slice(self, run: Run) -> None:
+        if not self.seeking or run is not self.search_run:
+            return
+        if not playback.record_for(run):
+            self.note = f"Computing the search… {run.recorded:,} steps recorded"
+            self._show(changed=[])
+            self.set_timer(0.01, lambda: self._seek_slice(run))
+            return
+        self.seeking = False
+        self.note = ""
+        old_k, was_at_end = run.k, run.at_end
+        run.goto(run.recorded)
+        self._moved(old_k, was_at_end)
+
+    def action_play(self) -> None:
+        if self.playing:
+            self._stop()
+            self._show()
+        elif self.search_run is not None and not self.search_run.at_end:
+            self._stop()
+            self.playing = True
+            self._timer.resume()
+            self._show()
+
+    def _stop(self) -> None:
+        """Pause playback and abandon a seek (any key that moves the position does this)."""
+        if self.seeking:
+            self.seeking = False
+            self.note = ""
+        if self.playing:
+            self.playing = False
+            self._timer.pause()
+
+    def _tick(self) -> None:
+        run = self.search_run
+        if run is None or not self.playing:
+            return
+        old_k, was_at_end = run.k, run.at_end
+        playback.forward_for(run, playback.steps_per_tick(playback.SPEEDS[self.speed_index]))
+        if run.at_end:
+            self.playing = False
+            self._timer.pause()
+        self._moved(old_k, was_at_end)
+
+    def _set_speed(self, index: int) -> None:
+        self.speed_index = max(0, min(len(playback.SPEEDS) - 1, index))
+        interval = playback.tick_interval(playback.SPEEDS[self.speed_index])
+        self._timer.stop()
+        self._timer = self.set_interval(interval, self._tick, pause=not self.playing)
+
+    def action_faster(self) -> None:
+        self._set_speed(self.speed_index + 1)
+        self._show(changed=[])
+
+    def action_slower(self) -> None:
+        self._set_speed(self.speed_index - 1)
+        self._show(changed=[])
+
+    def action_algorithm(self, algorithm: str) -> None:
+        self.algorithm = algorithm
+        self._new_run()
+
+    # -- the map ----------------------------------------------------------------------------
+    def action_overview(self) -> None:
+        self.view.set_overview(not self.view.overview)
+
+    def action_help(self) -> None:
+        self.push_screen(HelpScreen(self.view))

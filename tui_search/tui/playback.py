@@ -1,0 +1,78 @@
+"""Moving a run's position in time-boxed slices, and what a move changes on screen.
+
+Plain functions over :class:`~tui_search.engine.run.Run` (no Textual), so the app's playback
+timer, its ``end`` key and the tests share them.
+"""
+
+from __future__ import annotations
+
+from time import perf_counter
+
+from tui_search.engine.grid import Cell
+from tui_search.engine.run import Run
+
+#: Playback speeds in expansions per second (``+``/``-`` walk this list).
+SPEEDS: tuple[int, ...] = (1, 2, 5, 10, 20, 50, 100, 300, 1_000, 10_000, 100_000, 1_000_000)
+DEFAULT_SPEED = 2  # index: 5 steps/s, slow enough to follow the tutorial's story
+#: The timer never fires faster than this; faster speeds take several steps per tick.
+MAX_TICKS_PER_SECOND = 30
+#: The longest a tick or a slice of ``end`` may keep the event loop busy.
+SLICE_SECONDS = 0.04
+
+
+def tick_interval(speed: int) -> float:
+    return max(1.0 / speed, 1.0 / MAX_TICKS_PER_SECOND)
+
+
+def steps_per_tick(speed: int) -> int:
+    return max(1, round(speed * tick_interval(speed)))
+
+
+def speed_text(speed: int) -> str:
+    if speed >= 1_000_000:
+        return f"{speed // 1_000_000}M/s"
+    if speed >= 1_000:
+        return f"{speed // 1_000}k/s"
+    return f"{speed}/s"
+
+
+def forward_for(run: Run, steps: int, seconds: float = SLICE_SECONDS) -> int:
+    """Up to ``steps`` steps forwards (recording as needed), stopping early at the end or when
+    ``seconds`` have passed.  Returns the number taken."""
+    deadline = perf_counter() + seconds
+    forward = run.forward
+    taken = 0
+    while taken < steps:
+        if not forward():
+            break
+        taken += 1
+        if not taken & 63 and perf_counter() > deadline:
+            break
+    return taken
+
+
+def record_for(run: Run, seconds: float | None = None) -> bool:
+    """Record more of the search for about ``seconds`` (default SLICE_SECONDS; one chunk at
+    least); True when the whole search is recorded."""
+    deadline = perf_counter() + (SLICE_SECONDS if seconds is None else seconds)
+    while not run.advance_some():
+        if perf_counter() > deadline:
+            return False
+    return True
+
+
+def step_changes(run: Run, old_k: int, was_at_end: bool) -> list[Cell] | None:
+    """The cells whose look differs between position ``old_k`` and the run's position, when
+    they moved by one step within one iteration; ``None`` (redraw everything) otherwise."""
+    k = run.k
+    if k == old_k:
+        return []
+    if abs(k - old_k) != 1 or run.iteration_of(k) != run.iteration_of(old_k):
+        return None
+    step = max(k, old_k)
+    cells = run.changed_cells(step)
+    if step > 1:  # the marker of the node being expanded moves from or to step-1's node
+        cells.append(run.gen_cell(run.rec.exp(step - 1)))
+    if run.found and (was_at_end or run.at_end):
+        cells.extend(run.path() or [])
+    return cells

@@ -1,0 +1,1 @@
+"""Modal screens: help, the file-name prompt, the unsaved-edits question."""

@@ -1,0 +1,101 @@
+"""The help screen (``?``): the keys, the colours and glyphs, and how BFS and DFS work in the
+tutorial's words."""
+
+from __future__ import annotations
+
+from typing import ClassVar
+
+from rich.text import Text
+from textual.app import ComposeResult
+from textual.binding import Binding, BindingType
+from textual.containers import VerticalScroll
+from textual.screen import ModalScreen
+from textual.widgets import Static
+
+from tui_search.tui.widgets.grid_view import GridView
+from tui_search.tui.widgets.legend import Legend
+
+#: The keys, grouped as a learner uses them (a test checks every binding is listed here).
+KEYS = (
+    ("arrows  h j k l", "move the cursor"),
+    ("s  g", "put the start / the goal at the cursor"),
+    ("o", "obstacle on / off at the cursor"),
+    ("click, drag", "draw or erase obstacles (the first cell decides which)"),
+    ("right-click", "move the cursor only"),
+    ("n  p", "next / previous step (one expansion)"),
+    ("space", "play / pause"),
+    ("+  -", "faster / slower"),
+    ("home  end", "first / last step (the answer)"),
+    ("1  2  3", "breadth-first / depth-first / iterative deepening"),
+    ("r", "restart the search at step 0"),
+    ("z", "overview: the whole map in half blocks"),
+    ("ctrl+s", "save the map"),
+    ("?", "this help"),
+    ("q", "quit (asks first when there are unsaved edits)"),
+)
+
+HOW = """\
+[b]Breadth-first search[/b] (BFS) begins at the START node and expands all of its \
+successors: every direction the robot can move in without crashing into an obstacle, \
+leaving the map, or going back to a node already seen. The fringe is a [b]FIFO queue[/b]: \
+the node that has been waiting longest is expanded next. BFS is complete, and optimal when \
+every move costs the same: it finds a path with the fewest moves.
+
+[b]Depth-first search[/b] (DFS) uses a [b]LIFO stack[/b] instead: it always expands the last \
+successor added, going down one branch until it can find no more successors, then back to \
+the newest node that has not been expanded. It usually needs much less memory, but it is not \
+optimal: the path it returns is the one it happened to go down.
+
+[b]Iterative deepening[/b] (IDDFS) runs a depth-limited DFS with limits 0, 1, 2, ... so it \
+finds a path with the fewest moves while keeping DFS's small stack.
+
+Each expanded node turns blue and its successors are generated (dark). When the goal is \
+generated, the path is traced back up the tree from the goal to START (green)."""
+
+
+def keys_text() -> Text:
+    width = max(len(k) for k, _ in KEYS)
+    out = Text()
+    for i, (key, description) in enumerate(KEYS):
+        out.append(f"{key:<{width}}  ", "bold")
+        out.append(description + ("\n" if i < len(KEYS) - 1 else ""))
+    return out
+
+
+class HelpScreen(ModalScreen[None]):
+    """Keys, colours and a few lines on the searches; any of escape, ? or q closes it."""
+
+    BINDINGS: ClassVar[list[BindingType]] = [
+        Binding("escape,question_mark,q", "dismiss", "Close"),
+    ]
+    AUTO_FOCUS = "VerticalScroll"
+
+    DEFAULT_CSS = """
+    HelpScreen {
+        align: center middle;
+        & > VerticalScroll {
+            width: 90%;
+            max-width: 86;
+            height: 90%;
+            border: round $primary;
+            border-title-align: center;
+            background: $surface;
+            padding: 0 1;
+        }
+        & .help-heading { text-style: bold; color: $text-accent; margin-top: 1; }
+    }
+    """
+
+    def __init__(self, view: GridView) -> None:
+        super().__init__()
+        self._view = view
+
+    def compose(self) -> ComposeResult:
+        with VerticalScroll() as scroll:
+            scroll.border_title = "Help · escape to close"
+            yield Static("Keys", classes="help-heading")
+            yield Static(keys_text())
+            yield Static("Colours and glyphs", classes="help-heading")
+            yield Legend(self._view)
+            yield Static("How the searches work", classes="help-heading")
+            yield Static(HOW)

@@ -1,0 +1,77 @@
+"""The legend: every kind of cell drawn exactly as the map draws it (same glyph, same style, read
+from the map's own component classes), so a theme change changes both."""
+
+from __future__ import annotations
+
+from rich.text import Text
+from textual.widget import Widget
+
+from tui_search.tui.widgets.grid_view import (
+    COMPONENTS,
+    CURRENT,
+    EXPANDED,
+    FREE,
+    FRONTIER,
+    GLYPHS,
+    GOAL,
+    PATH,
+    START,
+    WALL,
+    GridView,
+)
+
+ENTRIES = (
+    (START, "start"),
+    (GOAL, "goal"),
+    (WALL, "obstacle"),
+    (FRONTIER, "frontier"),
+    (EXPANDED, "expanded"),
+    (CURRENT, "expanding"),
+    (PATH, "path"),
+)
+
+
+class Legend(Widget):
+    """Glyph-and-colour entries packed into as many lines as the width needs."""
+
+    DEFAULT_CSS = """
+    Legend {
+        height: auto;
+        padding: 0 1;
+        color: $text-muted;
+    }
+    """
+
+    def __init__(self, view: GridView, *, id: str | None = None) -> None:
+        super().__init__(id=id)
+        self.view = view
+
+    def entries(self) -> list[Text]:
+        view = self.view
+        out = []
+        for code, name in ENTRIES:
+            style = view.get_component_rich_style(f"grid-view--{COMPONENTS[code]}")
+            out.append(Text.assemble((GLYPHS[code], style), f" {name}"))
+        cursor = view.get_component_rich_style("grid-view--cursor")
+        free = view.get_component_rich_style(f"grid-view--{COMPONENTS[FREE]}")
+        out.append(Text.assemble((GLYPHS[FREE], free + cursor), " cursor"))
+        return out
+
+    def _lines(self, width: int) -> Text:
+        lines: list[Text] = [Text()]
+        for entry in self.entries():
+            line = lines[-1]
+            need = entry.cell_len + (2 if line.cell_len else 0)
+            if line.cell_len and line.cell_len + need > width:
+                lines.append(Text())
+                line = lines[-1]
+            if line.cell_len:
+                line.append("  ")
+            line.append_text(entry)
+        return Text("\n").join(lines)
+
+    def get_content_height(self, container, viewport, width: int) -> int:
+        return len(self._lines(max(1, width)).plain.split("\n"))
+
+    def render(self) -> Text:
+        return self._lines(max(1, self.content_region.width or self.size.width))
