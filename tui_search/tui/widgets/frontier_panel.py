@@ -23,6 +23,8 @@ from textual.geometry import Size
 from textual.scroll_view import ScrollView
 from textual.strip import Strip
 
+from tui_search.tui.widgets.virtual import set_virtual_size
+
 if TYPE_CHECKING:
     from tui_search.engine.run import Run
 
@@ -140,9 +142,7 @@ class FrontierPanel(ScrollView, can_focus=True):
             self._empty_text = self._describe_empty(run)
             width, height = cell_len(self._empty_text), 1
         virtual_size = Size(width, height)
-        if virtual_size != self.virtual_size:
-            self.virtual_size = virtual_size
-            self._scroll_update(virtual_size)
+        set_virtual_size(self, virtual_size)
         if moved:
             self.scroll_to(0, 0, animate=False, immediate=True, force=True)
         self.refresh()

@@ -44,6 +44,8 @@ from textual.geometry import Region, Size
 from textual.scroll_view import ScrollView
 from textual.strip import Strip
 
+from tui_search.tui.widgets.virtual import set_virtual_size
+
 if TYPE_CHECKING:
     from tui_search.engine.run import Run
 
@@ -221,9 +223,7 @@ class SearchTreePanel(ScrollView, can_focus=True):
         self.border_subtitle = legend
 
         virtual_size = Size(self._content_width(), self._line_count())
-        if virtual_size != self.virtual_size:
-            self.virtual_size = virtual_size
-            self._scroll_update(virtual_size)
+        set_virtual_size(self, virtual_size)
         if moved:
             self._scroll_to_current()
         self.refresh()

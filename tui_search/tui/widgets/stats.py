@@ -25,8 +25,10 @@ class Stats(Static):
 
     DEFAULT_CSS = """
     Stats {
-        height: auto;
+        height: 2;
         padding: 0 1;
+        text-wrap: nowrap;
+        text-overflow: ellipsis;
         background: $panel;
         & > .stats--label { color: $text-muted; }
         & > .stats--value { color: $text; text-style: bold; }
@@ -75,4 +77,4 @@ class Stats(Static):
                 line.append(result_text(run), style("stats--result"))
         self.status_text = status.plain
         self.narration_text = line.plain
-        self.update(Text("\n").join([status, line]))
+        self.update(Text("\n").join([status, line]), layout=False)  # always two lines
