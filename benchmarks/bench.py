@@ -410,17 +410,16 @@ def bench_engine(quick: bool) -> None:
         }, repeats)
         for key, xs in t.items():
             series(f"{name} {key}", xs)
+        # The target: both recorded runs against a bare BFS of the same map.
         for a in ("bfs", "dfs"):
-            run_t, bare_t = t[f"run {a}"], t[f"bare {a}"]
-            ratio = paired(run_t, bare_t)
-            add(Row("engine", f"{name} {a.upper()} recorded run vs bare {a.upper()} "
-                    f"({runs[a].rec.steps:,} expansions)", fmt_time(run_t),
-                    f"bare {fmt_time(bare_t)}", ratio, "≤ 1.30", ratio <= 1.30))
-        if med(t["bare dfs"]) < 0.5 * med(t["bare bfs"]):
-            r = paired(t["run dfs"], t["bare bfs"])
-            add(Row("engine", f"{name} DFS recorded run vs bare BFS (issue's wording)",
-                    fmt_time(t["run dfs"]), f"bare BFS {fmt_time(t['bare bfs'])}", r, "≤ 1.30",
-                    r <= 1.30))
+            r = paired(t[f"run {a}"], t["bare bfs"])
+            add(Row("engine", f"{name} {a.upper()} recorded run vs bare BFS "
+                    f"({runs[a].rec.steps:,} expansions)", fmt_time(t[f"run {a}"]),
+                    f"bare BFS {fmt_time(t['bare bfs'])}", r, "≤ 1.30", r <= 1.30))
+        # Stricter, for us: the DFS recording against a bare DFS (same loop, list as a stack).
+        r = paired(t["run dfs"], t["bare dfs"])
+        add(Row("engine", f"{name} DFS recorded run vs bare DFS (stricter)", fmt_time(t["run dfs"]),
+                f"bare DFS {fmt_time(t['bare dfs'])}", r, "report (≤ 1.30)"))
 
         ours = t["run bfs"]
         pf = pathfinding_bfs(grid)

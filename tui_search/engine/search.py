@@ -23,6 +23,7 @@ from __future__ import annotations
 from array import array
 from collections.abc import Iterator
 from dataclasses import dataclass, field
+from itertools import repeat
 
 from tui_search.engine.grid import DEFAULT_ORDER, DELTAS, DIR_CODE, Grid
 
@@ -183,22 +184,24 @@ def bfs(problem: Problem, rec: Record, chunk: int = CHUNK) -> Iterator[int]:
         return
     head, count, pause = 0, 1, chunk
     while head < count:
-        n = gen_node[head]
-        for off in moves[mask[n]]:
-            m = n + off
-            if closed[m]:
-                continue
-            closed[m] = 1
-            add(m)
-            count += 1
-            if m == goal:
-                add_end(count)
-                rec.goal_gen, rec.done = count - 1, True
-                return
-        head += 1
-        add_end(count)
-        if head == pause:
-            pause += chunk
+        # A chunk of the queue at a time: iterating a slice is cheaper than a counter per step.
+        end = min(count, head + chunk)
+        for n in gen_node[head:end]:
+            for off in moves[mask[n]]:
+                m = n + off
+                if closed[m]:
+                    continue
+                closed[m] = 1
+                add(m)
+                count += 1
+                if m == goal:
+                    add_end(count)
+                    rec.goal_gen, rec.done = count - 1, True
+                    return
+            add_end(count)
+        head = end
+        if head >= pause and head < count:
+            pause = head + chunk
             yield head
     rec.done = True
 
@@ -217,29 +220,31 @@ def dfs(problem: Problem, rec: Record, chunk: int = CHUNK) -> Iterator[int]:
         return
     stack = [0]
     pop, push = stack.pop, stack.append
-    count, steps, pause = 1, 0, chunk
+    count = 1
     while stack:
-        g = pop()
-        n = gen_node[g]
-        for off in moves[mask[n]]:
-            m = n + off
-            if closed[m]:
-                continue
-            closed[m] = 1
-            push(count)
-            add(m)
-            count += 1
-            if m == goal:
-                add_exp(g)
-                add_end(count)
-                rec.goal_gen, rec.done = count - 1, True
-                return
-        add_exp(g)
-        add_end(count)
-        steps += 1
-        if steps == pause:
-            pause += chunk
-            yield steps
+        for _ in repeat(None, chunk):  # a chunk of steps, with no counter per step
+            try:
+                g = pop()
+            except IndexError:  # the stack is empty: the search is over
+                break
+            n = gen_node[g]
+            for off in moves[mask[n]]:
+                m = n + off
+                if closed[m]:
+                    continue
+                closed[m] = 1
+                push(count)
+                add(m)
+                count += 1
+                if m == goal:
+                    add_exp(g)
+                    add_end(count)
+                    rec.goal_gen, rec.done = count - 1, True
+                    return
+            add_exp(g)
+            add_end(count)
+        if stack:
+            yield rec.steps
     rec.done = True
 
 
