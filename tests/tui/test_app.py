@@ -28,6 +28,7 @@ from tui_search.tui.screens.help import HelpScreen
 from tui_search.tui.screens.save_as import SaveAsScreen
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.grid_view import GridView
+from tui_search.tui.widgets.key_bar import KeyBar
 from tui_search.tui.widgets.search_tree import SearchTreePanel
 from tui_search.tui.widgets.stats import Stats
 
@@ -686,3 +687,28 @@ def test_step_changes_names_every_cell_a_step_changes() -> None:
                 diff = {(x, y) for y in range(6) for x in range(6) if before[y][x] != after[y][x]}
                 assert diff <= set(changed), (algorithm, run.k)
             before = after
+
+
+@sync
+async def test_the_key_bar_dims_keys_that_cannot_act_and_a_click_presses_a_key() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        bar = app.query_one(KeyBar)
+
+        def enabled() -> dict[str, bool]:
+            return {key: on for keys, _, _ in bar.hints() for _, key, on in keys}
+
+        hints = bar.hints()
+        assert [desc for _, desc, _ in hints][:3] == ["Step", "Play", "BFS/DFS/ID"]
+        assert [display for display, _, _ in hints[0][0]] == ["n", "p"]
+        assert enabled()["n"] and not enabled()["p"]  # step 0: nothing to go back to
+        await pilot.click(KeyBar, offset=(1, 0))  # the "n" of "np Step" (after the padding)
+        await pilot.pause()
+        assert app.search_run.k == 1 and enabled()["p"]
+        await pilot.click(KeyBar, offset=(2, 0))  # the "p"
+        await pilot.pause()
+        assert app.search_run.k == 0
+        await pilot.press("end")
+        await wait_until(pilot, lambda: app.search_run.at_end)
+        await pilot.pause()
+        assert not enabled()["n"] and enabled()["p"]

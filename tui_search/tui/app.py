@@ -16,7 +16,7 @@ from textual import events
 from textual.app import App, ComposeResult
 from textual.binding import Binding, BindingType
 from textual.containers import Container, Horizontal, Vertical
-from textual.widgets import Footer, Static
+from textual.widgets import Static
 
 from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.run import Run
@@ -24,9 +24,9 @@ from tui_search.engine.search import SearchOptions
 from tui_search.tui import playback
 from tui_search.tui.editing import EditActions
 from tui_search.tui.files import FileActions
-from tui_search.tui.screens.help import HelpScreen
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.grid_view import GridView
+from tui_search.tui.widgets.key_bar import KeyBar
 from tui_search.tui.widgets.legend import Legend
 from tui_search.tui.widgets.search_tree import SearchTreePanel
 from tui_search.tui.widgets.stats import Stats
@@ -111,7 +111,7 @@ class SearchApp(EditActions, FileActions, App[int]):
                     yield self.tree_panel
                     yield Static(NEEDS_ENDPOINTS, id="side-note")
             yield self.stats
-            yield Footer()
+            yield KeyBar()
         yield Static(id="too-small")
 
     def on_mount(self) -> None:
@@ -290,4 +290,6 @@ class SearchApp(EditActions, FileActions, App[int]):
         self.view.set_overview(not self.view.overview)
 
     def action_help(self) -> None:
+        from tui_search.tui.screens.help import HelpScreen  # only when asked: start-up time
+
         self.push_screen(HelpScreen(self.view))

@@ -7,8 +7,9 @@ from pathlib import Path
 
 from tui_search.engine.grid import Grid
 from tui_search.engine.mapfile import MapError, save_text_map
-from tui_search.tui.screens.confirm_quit import QUIT, SAVE, ConfirmQuitScreen
-from tui_search.tui.screens.save_as import SaveAsScreen
+
+# The screens are imported when first needed: their widgets (Input, Button) would add to the
+# app's start-up time for nothing.
 
 
 def needs_a_name(path: Path | None) -> bool:
@@ -26,6 +27,8 @@ class FileActions:
     def action_save(self) -> None:
         path = self.map_path
         if needs_a_name(path):
+            from tui_search.tui.screens.save_as import SaveAsScreen
+
             stem = path.stem if path is not None else "map"
             self.push_screen(SaveAsScreen(f"{stem}.txt"), self._save_chosen)
         else:
@@ -52,10 +55,15 @@ class FileActions:
         if not self.dirty:
             self.exit(0)
             return
+        from tui_search.tui.screens.confirm_quit import ConfirmQuitScreen
+
         name = self.map_path.name if self.map_path else "untitled"
         self.push_screen(ConfirmQuitScreen(name), self._quit_answer)
 
     def _quit_answer(self, answer: str | None) -> None:
+        from tui_search.tui.screens.confirm_quit import QUIT, SAVE
+        from tui_search.tui.screens.save_as import SaveAsScreen
+
         if answer == QUIT:
             self.exit(0)
         elif answer == SAVE:

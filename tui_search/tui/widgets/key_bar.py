@@ -1,0 +1,111 @@
+"""The key hints at the bottom, drawn like Textual's ``Footer`` but as one widget.
+
+The ``Footer`` builds a widget per key and builds them all again whenever a key is enabled or
+disabled -- which happens on many steps (``p`` at step 0, ``n`` at the end): that cost more
+than the step itself, and its sixteen widgets were half the app's start-up.  This bar renders
+the same hints as one line of text: keys that cannot act now are dimmed, bindings of a group
+(``n``/``p``, ``1``/``2``/``3``) share one label, and clicking a hint presses its key.
+"""
+
+from __future__ import annotations
+
+from itertools import groupby
+from typing import ClassVar
+
+from rich.text import Text
+from textual import events
+from textual.binding import ActiveBinding
+from textual.screen import Screen
+from textual.widget import Widget
+
+
+class KeyBar(Widget):
+    """One line of key hints for the active bindings of the screen."""
+
+    COMPONENT_CLASSES: ClassVar[set[str]] = {
+        "key-bar--key",
+        "key-bar--description",
+        "key-bar--disabled",
+    }
+
+    DEFAULT_CSS = """
+    KeyBar {
+        dock: bottom;
+        height: 1;
+        padding: 0 1;
+        background: $footer-background;
+        & > .key-bar--key {
+            color: $footer-key-foreground;
+            background: $footer-key-background;
+            text-style: bold;
+        }
+        & > .key-bar--description {
+            color: $footer-description-foreground;
+        }
+        & > .key-bar--disabled {
+            color: $text-disabled;
+        }
+    }
+    """
+
+    #: ``(start, end, key)`` of each hint drawn, for clicks.
+    _spans: list[tuple[int, int, str]] = []
+
+    def on_mount(self) -> None:
+        self.screen.bindings_updated_signal.subscribe(self, self._bindings_changed)
+
+    def on_unmount(self) -> None:
+        self.screen.bindings_updated_signal.unsubscribe(self)
+
+    def _bindings_changed(self, screen: Screen) -> None:
+        if screen is self.screen:
+            self.refresh()
+
+    def hints(self) -> list[tuple[list[tuple[str, str, bool]], str, bool]]:
+        """The hints in order (also for tests): ``(keys, description, enabled)`` where
+        ``keys`` lists ``(display, key, enabled)``.  One hint per action shown; a group of
+        two or more actions (``n``/``p``) is one hint with the group's description, enabled
+        when any of its keys is."""
+        by_action: dict[str, list[ActiveBinding]] = {}
+        for active in self.screen.active_bindings.values():
+            if active.binding.show:
+                by_action.setdefault(active.binding.action, []).append(active)
+        firsts = [actives[0] for actives in by_action.values()]
+        hints = []
+        for group, members in groupby(firsts, lambda active: active.binding.group):
+            members = list(members)
+            keys = [
+                (self.app.get_key_display(a.binding), a.binding.key, a.enabled) for a in members
+            ]
+            if group is not None and len(members) > 1:
+                hints.append((keys, group.description, any(a.enabled for a in members)))
+            else:
+                hints.extend(([key], a.binding.description, a.enabled) for key, a in zip(keys, members))
+        return hints
+
+    def render(self) -> Text:
+        key_style = self.get_component_rich_style("key-bar--key")
+        description_style = self.get_component_rich_style("key-bar--description")
+        disabled_style = self.get_component_rich_style("key-bar--disabled")
+        text = Text(no_wrap=True, overflow="ellipsis", end="")
+        self._spans = []
+        for n, (keys, description, enabled) in enumerate(self.hints()):
+            if n:
+                text.append("  ")
+            for display, key, key_enabled in keys:
+                self._spans.append((len(text), len(text) + len(display), key))
+                text.append(display, key_style if key_enabled else disabled_style)
+            start = len(text)
+            text.append(f" {description}", description_style if enabled else disabled_style)
+            self._spans.append((start, len(text), keys[0][1]))
+        return text
+
+    def on_click(self, event: events.Click) -> None:
+        """Clicking a hint presses its key (a group's description, its first key)."""
+        offset = event.get_content_offset(self)
+        if offset is None:
+            return
+        for start, end, key in self._spans:
+            if start <= offset.x < end:
+                self.app.simulate_key(key)
+                return
