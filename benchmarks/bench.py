@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import argparse
 import asyncio
+import compileall
 import gc
 import os
 import select
@@ -36,6 +37,7 @@ ROOT = Path(__file__).resolve().parent.parent
 if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))  # run from a checkout without installing
 
+import tui_search
 from tui_search.engine.grid import DEFAULT_ORDER, DELTAS, Grid
 from tui_search.engine.run import Run
 
@@ -764,6 +766,10 @@ def bench_startup(quick: bool) -> None:
     reps = 5 if quick else 11
     py = sys.executable
     cli = cli_argv()
+    # What a user's second start finds: the package's bytecode cached. (An editable install
+    # writes no .pyc until the first import, and with PYTHONDONTWRITEBYTECODE set -- as on
+    # the machines this was written on -- never: every start would compile ~20 ms of source.)
+    compileall.compile_dir(Path(tui_search.__file__).parent, quiet=1)
     # the headless CLI: must not import Textual; compared with python -c pass
     imp = subprocess.run([py, "-X", "importtime", "-m", "tui_search", str(TUTORIAL),
                           "--headless"], capture_output=True, text=True, check=False)

@@ -9,7 +9,6 @@ from __future__ import annotations
 import argparse
 import json
 import sys
-from importlib import resources
 from pathlib import Path
 from typing import IO, NoReturn
 
@@ -88,7 +87,9 @@ def load_problem(args: argparse.Namespace) -> tuple[Grid, Path | None]:
     if args.map is None:
         if args.scen:
             raise UsageError("--scen needs a MAP")
-        text = resources.files("tui_search").joinpath("maps", TUTORIAL_NAME).read_text("utf-8")
+        # The map ships inside the package (a plain file: importlib.resources would cost
+        # ~10 ms of start-up to import).
+        text = (Path(__file__).parent / "maps" / TUTORIAL_NAME).read_text("utf-8")
         return parse_map_text(text, TUTORIAL_NAME, start=start, goal=goal), None
     path = Path(args.map)
     scen = None

@@ -21,7 +21,6 @@ from __future__ import annotations
 import math
 import os
 import re
-import secrets
 import stat
 from dataclasses import dataclass
 
@@ -261,7 +260,7 @@ def save_text_map(grid: Grid, path: str | os.PathLike) -> None:
         # os.open with 0o666 applies the umask like any new file (mkstemp would make it
         # private); O_EXCL so that another writer's temporary file is never reused.
         for _ in range(100):
-            name = os.path.join(folder, f".{os.path.basename(target)}.{secrets.token_hex(4)}.tmp")
+            name = os.path.join(folder, f".{os.path.basename(target)}.{os.urandom(4).hex()}.tmp")
             try:
                 fd = os.open(name, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
             except FileExistsError:
