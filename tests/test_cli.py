@@ -26,7 +26,7 @@ def test_headless_json_on_the_tutorial(capsys) -> None:
     assert code == 0 and err == ""
     result = json.loads(out)
     assert set(result) == {"algorithm", "found", "path", "moves", "steps", "cost", "expanded",
-                           "generated", "max_frontier"}
+                           "generated", "max_frontier", "gave_up"}
     assert result["found"] and result["algorithm"] == "bfs"
     assert result["path"][0] == [0, 0] and result["path"][-1] == [5, 2]
     assert result["moves"] == ["S", "SE", "NE", "NE", "E", "SE", "S"]
@@ -169,3 +169,23 @@ def test_console_script_headless_exit_codes() -> None:
     assert ok.returncode == 0 and "path found" in ok.stdout
     bad = subprocess.run([str(exe), "missing.txt", "--headless"], capture_output=True, text=True)
     assert bad.returncode == 2 and "Traceback" not in bad.stderr
+
+
+def test_max_steps_gives_up_with_exit_code_3(capsys) -> None:
+    """Iterative deepening needs 85 expansions on the tutorial map; with 30 it gives up."""
+    code, out, err = run_cli(capsys, TUTORIAL, "--headless", "-a", "iddfs", "--max-steps", "30",
+                             "--json")
+    result = json.loads(out)
+    assert code == 3 and err == ""
+    assert result["gave_up"] and not result["found"] and result["expanded"] == 30
+    code, out, _ = run_cli(capsys, TUTORIAL, "--headless", "-a", "iddfs", "--max-steps", "30")
+    assert out.splitlines()[0].endswith("gave up after 30 expansions (raise --max-steps)")
+    code, out, _ = run_cli(capsys, TUTORIAL, "--headless", "-a", "iddfs", "--max-steps", "85",
+                           "--json")
+    assert code == 0 and json.loads(out)["found"] and not json.loads(out)["gave_up"]
+
+
+@pytest.mark.parametrize("bad", ["0", "-3", "many"])
+def test_max_steps_must_be_a_positive_number(capsys, bad) -> None:
+    code, _, err = run_cli(capsys, TUTORIAL, "--headless", "--max-steps", bad)
+    assert code == 2 and err.count("\n") == 1 and "--max-steps" in err

@@ -22,10 +22,10 @@ from tui_search.engine.mapfile import (
     parse_cell,
     parse_map_text,
 )
-from tui_search.engine.run import Run
+from tui_search.engine.run import MAX_STEPS, Run
 from tui_search.engine.search import ALGORITHM_NAMES, ALGORITHMS, SearchOptions
 
-EXIT_FOUND, EXIT_NO_PATH, EXIT_BAD_INPUT = 0, 1, 2
+EXIT_FOUND, EXIT_NO_PATH, EXIT_BAD_INPUT, EXIT_GAVE_UP = 0, 1, 2, 3
 TUTORIAL_NAME = "tutorial.txt"
 
 
@@ -43,7 +43,7 @@ def build_parser() -> argparse.ArgumentParser:
         prog="tui-search",
         description="Watch a robot plan a path on a grid with breadth-first, depth-first and "
         "iterative-deepening search. With no MAP, opens the tutorial's 6x6 map.",
-        epilog="Exit codes (headless): 0 path found, 1 no path, 2 bad input.",
+        epilog="Exit codes (headless): 0 path found, 1 no path, 2 bad input, 3 gave up (--max-steps).",
     )
     p.add_argument("map", nargs="?", help="a text map (.txt) or a MovingAI map (.map)")
     p.add_argument("--version", action="version", version=f"tui-search {__version__}")
@@ -59,6 +59,9 @@ def build_parser() -> argparse.ArgumentParser:
                    "(default %(default)s)")
     p.add_argument("--no-corner-cutting", action="store_true",
                    help="forbid a diagonal move when a cell beside it is blocked")
+    p.add_argument("--max-steps", metavar="N", type=_positive, default=MAX_STEPS,
+                   help=f"give up after N expansions (default {MAX_STEPS:,}: iterative "
+                   "deepening on a big map can take billions)")
     p.add_argument("--headless", action="store_true",
                    help="search without the app and print the result")
     p.add_argument("--json", action="store_true",
@@ -67,6 +70,16 @@ def build_parser() -> argparse.ArgumentParser:
                    help="with --headless: write one JSON line per expansion to FILE "
                    "('-' for stdout, without --json)")
     return p
+
+
+def _positive(text: str) -> int:
+    try:
+        n = int(text)
+    except ValueError:
+        n = 0
+    if n < 1:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a positive whole number")
+    return n
 
 
 def _cell_arg(flag: str, text: str | None):
@@ -127,7 +140,10 @@ def write_trace(run: Run, out: IO[str]) -> None:
 
 def human_summary(result: dict, where: str) -> str:
     name = ALGORITHM_NAMES[result["algorithm"]]
-    lines = [f"{name} on {where}: " + ("path found" if result["found"] else "no path")]
+    outcome = "path found" if result["found"] else "no path"
+    if result["gave_up"]:
+        outcome = f"gave up after {result['expanded']:,} expansions (raise --max-steps)"
+    lines = [f"{name} on {where}: {outcome}"]
     if result["found"]:
         moves = ", ".join(result["moves"]) or "(start is the goal)"
         lines.append(f"  moves:        {result['steps']} ({moves})")
@@ -146,7 +162,7 @@ def run_headless(args: argparse.Namespace, grid: Grid, path: Path | None) -> int
     if missing:
         raise MapError(where, f"the map has no {' or '.join(missing)}: give --start X,Y "
                        "--goal X,Y, or --scen FILE --scen-row N")
-    run = Run(grid, args.algorithm, _options(args))
+    run = Run(grid, args.algorithm, _options(args), args.max_steps)
     if args.trace == "-":
         write_trace(run, sys.stdout)
     elif args.trace:
@@ -160,13 +176,16 @@ def run_headless(args: argparse.Namespace, grid: Grid, path: Path | None) -> int
         print(json.dumps(result))
     elif args.trace != "-":
         print(human_summary(result, where))
+    if result["gave_up"]:
+        return EXIT_GAVE_UP
     return EXIT_FOUND if result["found"] else EXIT_NO_PATH
 
 
 def run_app(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
     from tui_search.tui.app import SearchApp  # Textual only when the app is wanted
 
-    app = SearchApp(grid, path=path, algorithm=args.algorithm, options=_options(args))
+    app = SearchApp(grid, path=path, algorithm=args.algorithm, options=_options(args),
+                    max_steps=args.max_steps)
     app.run()
     return app.return_code or 0
 

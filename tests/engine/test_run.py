@@ -5,13 +5,15 @@ from __future__ import annotations
 import subprocess
 import sys
 
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from tests.helpers import TUTORIAL_ROWS, grid_from_rows
 from tests.engine.test_search import random_grids
 from tui_search.engine.grid import Grid
-from tui_search.engine.run import CellState, Run
+from tui_search.engine.run import MAX_STEPS, CellState, Run
+from tui_search.engine.search import CHUNK
 
 
 def snapshot(run: Run) -> tuple:
@@ -125,3 +127,27 @@ def test_engine_imports_without_textual_or_rich() -> None:
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert out.returncode == 0, out.stdout + out.stderr
+
+
+@pytest.mark.parametrize("algorithm", ["bfs", "dfs", "iddfs"])
+def test_a_run_gives_up_exactly_at_its_step_limit(algorithm) -> None:
+    grid = Grid(40, 40, start=(0, 0), goal=(39, 39))
+    full = Run(grid, algorithm)
+    full.advance()
+    limit = min(full.rec.steps // 2, 1000)  # exact for limits up to a chunk (and multiples)
+    run = Run(grid, algorithm, max_steps=limit)
+    run.goto(10**9)
+    assert run.gave_up and run.done and not run.found and run.at_end
+    assert run.k == run.total == limit
+    # what it did record is the same as the full run's first steps
+    assert list(run.rec.step_end) == list(full.rec.step_end[: limit + 1])
+    assert run.summary()["gave_up"] and not full.summary()["gave_up"]
+
+
+def test_iddfs_on_a_big_maze_gives_up_at_the_default_limit_not_the_memory() -> None:
+    """A 512x512 maze takes ~75 million IDDFS steps; the default limit stops it (a smaller
+    limit here, for speed: the mechanism is the same)."""
+    run = Run(Grid(300, 300, start=(0, 0), goal=(299, 299)), "iddfs", max_steps=5 * CHUNK)
+    run.advance()
+    assert run.gave_up and run.rec.steps == 5 * CHUNK
+    assert MAX_STEPS % CHUNK == 0 and MAX_STEPS >= 20_000_000

@@ -712,3 +712,16 @@ async def test_the_key_bar_dims_keys_that_cannot_act_and_a_click_presses_a_key()
         await wait_until(pilot, lambda: app.search_run.at_end)
         await pilot.pause()
         assert not enabled()["n"] and enabled()["p"]
+
+
+@sync
+async def test_a_run_that_reaches_the_step_limit_says_it_gave_up() -> None:
+    app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, algorithm="iddfs", max_steps=30)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("end")
+        await wait_until(pilot, lambda: app.search_run.at_end)
+        await pilot.pause()
+        assert app.search_run.k == 30 and app.search_run.gave_up
+        status, narration = stats(app)
+        assert "step 30/30" in status
+        assert narration.endswith(". Gave up: the step limit (30) is reached")

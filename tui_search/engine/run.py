@@ -26,6 +26,7 @@ from itertools import accumulate
 from tui_search.engine.grid import DIRECTIONS, Cell, Grid, path_cost
 from tui_search.engine.search import (
     ALGORITHMS,
+    CHUNK,
     LOOPS,
     ROOT_DIR,
     Problem,
@@ -58,6 +59,11 @@ class Step:
     found_goal: bool = False
 
 
+#: The default step limit: expansions recorded before a run gives up (iterative deepening
+#: on a 512x512 maze takes ~75 million steps; 20 million take ~400 MB).  A whole number of
+#: chunks, so a run stops exactly there; smaller limits (at most a chunk) are exact too.
+MAX_STEPS = 5000 * CHUNK
+
 class Run:
     """A search on a snapshot of a grid, recorded, with a movable position.
 
@@ -65,7 +71,11 @@ class Run:
     """
 
     def __init__(
-        self, grid: Grid, algorithm: str = "bfs", options: SearchOptions = SearchOptions()
+        self,
+        grid: Grid,
+        algorithm: str = "bfs",
+        options: SearchOptions = SearchOptions(),
+        max_steps: int = MAX_STEPS,
     ) -> None:
         if algorithm not in ALGORITHMS:
             raise ValueError(f"unknown algorithm {algorithm!r} (use {', '.join(ALGORITHMS)})")
@@ -74,7 +84,10 @@ class Run:
         self.options = options
         self.problem = Problem(self.grid, options)
         self.rec = Record()
-        self._loop = LOOPS[algorithm](self.problem, self.rec)
+        if max_steps < 1:
+            raise ValueError("max_steps must be at least 1")
+        self.max_steps = max_steps
+        self._loop = LOOPS[algorithm](self.problem, self.rec, min(CHUNK, max_steps))
         self._lifo = algorithm != "bfs"
         size = len(self.problem.walls)
         # Per-cell counters at the current position: generation events and expansions.
@@ -91,15 +104,20 @@ class Run:
 
     # -- computing the record --------------------------------------------------------------
     def _advance_once(self) -> None:
-        if not self.rec.done:
+        rec = self.rec
+        if not rec.done:
             next(self._loop, None)
+            if not rec.done and rec.steps >= self.max_steps:
+                # Give up: iterative deepening can take billions of steps on a big map.
+                rec.done = rec.gave_up = True
+                self._loop.close()
 
     def advance(self, until_step: int | None = None) -> bool:
         """Record more of the search: at least up to ``until_step`` (all of it when None), in
         chunks.  Returns True once the whole search is recorded."""
         rec = self.rec
         while not rec.done and (until_step is None or rec.steps < until_step):
-            next(self._loop, None)
+            self._advance_once()
         return rec.done
 
     def advance_some(self) -> bool:
@@ -115,6 +133,11 @@ class Run:
     @property
     def found(self) -> bool:
         return self.rec.found
+
+    @property
+    def gave_up(self) -> bool:
+        """True when the search was stopped at ``max_steps`` expansions, unfinished."""
+        return self.rec.gave_up
 
     @property
     def recorded(self) -> int:
@@ -508,6 +531,7 @@ class Run:
             "expanded": self.rec.steps,
             "generated": len(self.rec.gen_node),
             "max_frontier": self.peak_frontier(self.rec.steps),
+            "gave_up": self.rec.gave_up,
         }
 
 

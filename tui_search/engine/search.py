@@ -74,6 +74,7 @@ class Record:
     iter_limit: list[int | None] = field(default_factory=lambda: [None])
     done: bool = False
     goal_gen: int = -1  # the event that generated the goal, once found
+    gave_up: bool = False  # stopped at the run's step limit before the search ended
 
     @property
     def steps(self) -> int:
@@ -185,7 +186,7 @@ def bfs(problem: Problem, rec: Record, chunk: int = CHUNK) -> Iterator[int]:
     head, count, pause = 0, 1, chunk
     while head < count:
         # A chunk of the queue at a time: iterating a slice is cheaper than a counter per step.
-        end = min(count, head + chunk)
+        end = min(count, pause)  # never past the pause: chunks of exactly `chunk` steps
         for n in gen_node[head:end]:
             for off in moves[mask[n]]:
                 m = n + off

@@ -19,7 +19,7 @@ from textual.containers import Container, Horizontal, Vertical
 from textual.widgets import Static
 
 from tui_search.engine.grid import Cell, Grid
-from tui_search.engine.run import Run
+from tui_search.engine.run import MAX_STEPS, Run
 from tui_search.engine.search import SearchOptions
 from tui_search.tui import playback
 from tui_search.tui.editing import EditActions
@@ -77,9 +77,11 @@ class SearchApp(EditActions, FileActions, App[int]):
         path: Path | None = None,
         algorithm: str = "bfs",
         options: SearchOptions = DEFAULT_OPTIONS,
+        max_steps: int = MAX_STEPS,
     ) -> None:
         super().__init__()
         self.grid = grid
+        self.max_steps = max_steps
         self.map_path = Path(path) if path is not None else None
         self.algorithm = algorithm
         self.options = options
@@ -142,7 +144,7 @@ class SearchApp(EditActions, FileActions, App[int]):
             self.search_run = None
             self.note = note or NEEDS_ENDPOINTS
         else:
-            self.search_run = Run(grid, self.algorithm, self.options)
+            self.search_run = Run(grid, self.algorithm, self.options, self.max_steps)
         if self._mounted_ok:
             self._show()
 

@@ -58,6 +58,8 @@ def narrate(run: Run) -> str:
         text = f"{prefix}Expanded {node} at the depth limit {limit}: no successors added"
     else:
         text = f"{prefix}Expanded {node}: no new successors"
+    if run.at_end and run.gave_up:
+        return f"{text}. Gave up: the step limit ({run.max_steps:,}) is reached"
     if run.at_end:  # done, not found
         if limit is not None:
             return f"{text}. Depth limit {limit} cut nothing off: no path"
