@@ -23,7 +23,7 @@ from textual.geometry import Size
 from textual.scroll_view import ScrollView
 from textual.strip import Strip
 
-from tui_search.tui.widgets.virtual import set_virtual_size
+from tui_search.tui.widgets.virtual import CachedStyles, set_virtual_size
 
 if TYPE_CHECKING:
     from tui_search.engine.run import Run
@@ -37,7 +37,7 @@ def _num(n: int) -> str:
     return f"{n:,}".replace(",", " ")
 
 
-class FrontierPanel(ScrollView, can_focus=True):
+class FrontierPanel(CachedStyles, ScrollView, can_focus=True):
     """The frontier of a :class:`Run` at its position, next-to-expand first.
 
     Call :meth:`show` after every change of run or position.
@@ -215,11 +215,11 @@ class FrontierPanel(ScrollView, can_focus=True):
     def render_line(self, y: int) -> Strip:
         scroll_x, scroll_y = self.scroll_offset
         width = self.scrollable_content_region.width
-        base = self.rich_style
+        base = self.cached_style()
         parts = self.line_parts(scroll_y + y)
         if not parts:
             return Strip.blank(width, base)
-        style = self.get_component_rich_style
+        style = self.cached_style
         if scroll_y + y == 0 and self._count:
             # The entry expanded next is highlighted across the whole line, like a cursor.
             band = Style(bgcolor=style("frontier-panel--next").bgcolor)

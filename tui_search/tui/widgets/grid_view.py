@@ -28,6 +28,7 @@ from textual.strip import Strip
 
 from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.run import Run
+from tui_search.tui.widgets.virtual import CachedStyles
 
 # Drawing codes: the search states of a free cell (CellState's values), then what the grid says.
 FREE, FRONTIER, EXPANDED, CURRENT, PATH, WALL, START, GOAL = range(8)
@@ -40,7 +41,7 @@ CELL_WIDTH = 2
 UPPER_HALF = "▀"
 
 
-class GridView(ScrollView, can_focus=True, inherit_bindings=False):
+class GridView(CachedStyles, ScrollView, can_focus=True, inherit_bindings=False):
     """The map and the search state at the run's position, with a cursor.
 
     Bindings are the app's (one table, in the Footer), hence ``inherit_bindings=False``: the
@@ -236,7 +237,7 @@ class GridView(ScrollView, can_focus=True, inherit_bindings=False):
         line = sy + y
         if self.overview:
             return self._overview_line(line, sx, width)
-        background = self.rich_style
+        background = self.cached_style()
         if line >= self.grid.height:
             return Strip.blank(width, background)
         x0 = min(sx // CELL_WIDTH, self.grid.width)
@@ -255,7 +256,7 @@ class GridView(ScrollView, can_focus=True, inherit_bindings=False):
         return strip.crop_extend(skip, skip + width, background).simplify()
 
     def _overview_line(self, line: int, sx: int, width: int) -> Strip:
-        background = self.rich_style
+        background = self.cached_style()
         g = self.grid
         top = line * 2
         if top >= g.height:

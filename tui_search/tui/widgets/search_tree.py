@@ -44,7 +44,7 @@ from textual.geometry import Region, Size
 from textual.scroll_view import ScrollView
 from textual.strip import Strip
 
-from tui_search.tui.widgets.virtual import set_virtual_size
+from tui_search.tui.widgets.virtual import CachedStyles, set_virtual_size
 
 if TYPE_CHECKING:
     from tui_search.engine.run import Run
@@ -80,7 +80,7 @@ def _num(n: int) -> str:
     return f"{n:,}".replace(",", " ")
 
 
-class SearchTreePanel(ScrollView, can_focus=True):
+class SearchTreePanel(CachedStyles, ScrollView, can_focus=True):
     """The search tree of a :class:`Run` at its position.
 
     Call :meth:`show` after every change of run or position.
@@ -547,10 +547,10 @@ class SearchTreePanel(ScrollView, can_focus=True):
     def render_line(self, y: int) -> Strip:
         scroll_x, scroll_y = self.scroll_offset
         width = self.scrollable_content_region.width
-        base = self.rich_style
+        base = self.cached_style()
         parts = self.line_parts(scroll_y + y)
         if not parts:
             return Strip.blank(width, base)
-        style = self.get_component_rich_style
+        style = self.cached_style
         strip = Strip([Segment(text, style(cls)) for text, cls in parts])
         return strip.crop_extend(scroll_x, scroll_x + width, base)
