@@ -652,7 +652,7 @@ def bench_step(quick: bool) -> None:
         results["trivial"].append(asyncio.run(_presses(trivial(), step_keys(n))))
         results["trivial-full"].append(asyncio.run(_presses(trivial(), ["m"] * n)))
         if app_cls is not None:
-            # the tutorial run has 18 steps: go 8 forwards and back again, over and over
+            # the tutorial run has 22 steps: go 8 forwards and back again, over and over
             results["tutorial"].append(asyncio.run(_presses(
                 app_cls(tutorial.copy()), step_keys(16) * (n // 16))))
             if maze is not None:
