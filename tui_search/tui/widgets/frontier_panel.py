@@ -20,10 +20,9 @@ from rich.cells import cell_len
 from rich.segment import Segment
 from rich.style import Style
 from textual.geometry import Size
-from textual.scroll_view import ScrollView
 from textual.strip import Strip
 
-from tui_search.tui.widgets.virtual import CachedStyles, set_virtual_size
+from tui_search.tui.widgets.line_panel import LinePanel, group_digits, set_virtual_size
 
 if TYPE_CHECKING:
     from tui_search.engine.run import Run
@@ -32,12 +31,7 @@ if TYPE_CHECKING:
 HINT_GAP = 2
 
 
-def _num(n: int) -> str:
-    """``100000`` -> ``100 000`` (digit groups a student can read at a glance)."""
-    return f"{n:,}".replace(",", " ")
-
-
-class FrontierPanel(CachedStyles, ScrollView, can_focus=True):
+class FrontierPanel(LinePanel):
     """The frontier of a :class:`Run` at its position, next-to-expand first.
 
     Call :meth:`show` after every change of run or position.
@@ -45,13 +39,6 @@ class FrontierPanel(CachedStyles, ScrollView, can_focus=True):
 
     DEFAULT_CSS = """
     FrontierPanel {
-        border: round $border-blurred;
-        border-title-align: left;
-        border-subtitle-align: right;
-        border-title-color: $foreground;
-        border-subtitle-color: $text-muted;
-        padding: 0 1;
-        &:focus { border: round $border; border-title-color: $text-primary; }
         & > .frontier-panel--entry { color: $foreground; }
         & > .frontier-panel--next {
             color: $text-accent; background: $accent 15%; text-style: bold;
@@ -131,7 +118,7 @@ class FrontierPanel(CachedStyles, ScrollView, can_focus=True):
         entry_w = 3 + self._coord_w + 1 + 2 + (1 + self._depth_w if self._depth_w else 0)
         self._hint_col = entry_w + HINT_GAP
         kind = "Stack (LIFO)" if lifo else "Queue (FIFO)"
-        self.border_title = f"{kind} · {_num(n)}"
+        self.border_title = f"{kind} · {group_digits(n)}"
         self.border_subtitle = "▶ next out  + just added" if n else ""
         if n:
             self._empty_text = ""

@@ -28,7 +28,7 @@ from textual.strip import Strip
 
 from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.run import Run
-from tui_search.tui.widgets.virtual import CachedStyles
+from tui_search.tui.widgets.line_panel import CachedStyles
 
 # Drawing codes: the search states of a free cell (CellState's values), then what the grid says.
 FREE, FRONTIER, EXPANDED, CURRENT, PATH, WALL, START, GOAL = range(8)

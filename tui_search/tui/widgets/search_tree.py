@@ -41,10 +41,9 @@ from typing import TYPE_CHECKING, ClassVar
 
 from rich.segment import Segment
 from textual.geometry import Region, Size
-from textual.scroll_view import ScrollView
 from textual.strip import Strip
 
-from tui_search.tui.widgets.virtual import CachedStyles, set_virtual_size
+from tui_search.tui.widgets.line_panel import LinePanel, group_digits, set_virtual_size
 
 if TYPE_CHECKING:
     from tui_search.engine.run import Run
@@ -75,12 +74,7 @@ SUFFIX_W = max(len(SUFFIX_CURRENT), len(SUFFIX_GOAL), len(SUFFIX_CUTOFF))
 Parts = list[tuple[str, str]]
 
 
-def _num(n: int) -> str:
-    """``1000000`` -> ``1 000 000``."""
-    return f"{n:,}".replace(",", " ")
-
-
-class SearchTreePanel(CachedStyles, ScrollView, can_focus=True):
+class SearchTreePanel(LinePanel):
     """The search tree of a :class:`Run` at its position.
 
     Call :meth:`show` after every change of run or position.
@@ -88,13 +82,6 @@ class SearchTreePanel(CachedStyles, ScrollView, can_focus=True):
 
     DEFAULT_CSS = """
     SearchTreePanel {
-        border: round $border-blurred;
-        border-title-align: left;
-        border-subtitle-align: right;
-        border-title-color: $foreground;
-        border-subtitle-color: $text-muted;
-        padding: 0 1;
-        &:focus { border: round $border; border-title-color: $text-primary; }
         & > .search-tree--guide { color: $foreground-muted; }
         & > .search-tree--expanded { color: $text-primary; }
         & > .search-tree--frontier { color: $foreground; }
@@ -216,7 +203,7 @@ class SearchTreePanel(CachedStyles, ScrollView, can_focus=True):
         title = "Search tree"
         if self._limit is not None:
             title += f" · depth limit {self._limit}"
-        self.border_title = f"{title} · {_num(size)} node{'s' if size != 1 else ''}"
+        self.border_title = f"{title} · {group_digits(size)} node{'s' if size != 1 else ''}"
         legend = f"{GLYPH_EXPANDED} expanded  {GLYPH_FRONTIER} frontier"
         if self._path:
             legend += f"  {GLYPH_GOAL} goal"
@@ -411,7 +398,7 @@ class SearchTreePanel(CachedStyles, ScrollView, can_focus=True):
 
     # -- text -------------------------------------------------------------------------------
     def _note(self) -> str:
-        return (f"({_num(self._tree_size)} nodes; showing the path to the node being "
+        return (f"({group_digits(self._tree_size)} nodes; showing the path to the node being "
                 "expanded)")
 
     def _siblings(self, g: int) -> range:
@@ -490,9 +477,9 @@ class SearchTreePanel(CachedStyles, ScrollView, can_focus=True):
         if not self._elided:
             return ""
         if self._top_depth is None:
-            return f"⋮  more than {_num(WALK_MAX)} levels not shown"
+            return f"⋮  more than {group_digits(WALK_MAX)} levels not shown"
         hidden = self._top_depth - 1
-        return f"⋮  {_num(hidden)} level{'s' if hidden != 1 else ''} not shown"
+        return f"⋮  {group_digits(hidden)} level{'s' if hidden != 1 else ''} not shown"
 
     def _focus_parts(self, y: int) -> Parts:
         chain, kids = self._chain, self._kids

@@ -1,4 +1,5 @@
-"""What the line-API views share: resizing what they scroll over cheaply, and cached styles.
+"""What the line-API views share: resizing what they scroll over cheaply, cached styles, and
+the panels' look.
 
 Resizing:
 
@@ -47,3 +48,24 @@ class CachedStyles:
                 else widget.get_component_rich_style(component)
             )
         return style
+
+
+def group_digits(n: int) -> str:
+    """``1000000`` -> ``1 000 000`` (digit groups a student can read at a glance)."""
+    return f"{n:,}".replace(",", " ")
+
+
+class LinePanel(CachedStyles, ScrollView, can_focus=True):
+    """A bordered, focusable line-API list: the look the frontier and tree panels share."""
+
+    DEFAULT_CSS = """
+    LinePanel {
+        border: round $border-blurred;
+        border-title-align: left;
+        border-subtitle-align: right;
+        border-title-color: $foreground;
+        border-subtitle-color: $text-muted;
+        padding: 0 1;
+        &:focus { border: round $border; border-title-color: $text-primary; }
+    }
+    """
