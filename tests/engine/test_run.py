@@ -151,3 +151,51 @@ def test_iddfs_on_a_big_maze_gives_up_at_the_default_limit_not_the_memory() -> N
     run.advance()
     assert run.gave_up and run.rec.steps == 5 * CHUNK
     assert MAX_STEPS % CHUNK == 0 and MAX_STEPS >= 20_000_000
+
+
+@pytest.mark.parametrize("algorithm", ["bfs", "dfs", "iddfs"])
+@pytest.mark.parametrize("limit", [CHUNK + 1000, 2 * CHUNK + 7])
+def test_a_limit_of_more_than_a_chunk_is_exact_too(algorithm, limit) -> None:
+    """The record of the last chunk is cut back to the limit."""
+    grid = Grid(150, 150, start=(0, 0), goal=(149, 149))
+    for cell in ((148, 149), (148, 148), (149, 148)):  # the goal walled in: a long search
+        grid.set_blocked(cell, True)
+    full = Run(grid, algorithm)
+    full.advance(3 * CHUNK)
+    run = Run(grid, algorithm, max_steps=limit)
+    run.advance()
+    assert run.gave_up and run.rec.steps == limit and not run.found
+    assert list(run.rec.step_end) == list(full.rec.step_end[: limit + 1])
+    assert len(run.rec.gen_node) == run.rec.step_end[limit]
+    run.goto(limit)
+    assert run.at_end and run.frontier_len() > 0
+    assert run.summary()["expanded"] == limit
+
+
+def test_a_goal_found_past_the_limit_is_not_found() -> None:
+    """On a 1-row corridor BFS generates the goal while expanding its neighbour, at step 99
+    (the start's expansion is step 1).  A limit of 98 stops it one step short."""
+    grid = Grid(100, 1, start=(0, 0), goal=(99, 0))
+    assert Run(grid, "bfs").summary()["expanded"] == 99
+    run = Run(grid, "bfs", max_steps=99)  # exactly what the search needs: found
+    assert run.summary()["found"] and not run.gave_up
+    run = Run(grid, "bfs", max_steps=98)
+    assert run.summary()["gave_up"] and not run.found and run.rec.steps == 98
+
+
+def test_iddfs_that_ends_exactly_at_the_limit_has_not_given_up() -> None:
+    """No path, found out on the very step the limit allows: that is "no path", not a give-up."""
+    grid = grid_from_rows(["S#G"])
+    steps = Run(grid, "iddfs").summary()["expanded"]
+    run = Run(grid, "iddfs", max_steps=steps)
+    result = run.summary()
+    assert not result["gave_up"] and not result["found"] and result["expanded"] == steps
+
+
+def test_a_goal_found_in_the_chunk_past_the_limit_is_cut_off_too() -> None:
+    width = CHUNK + 1000  # the goal is generated at step width - 1, in the second chunk
+    grid = Grid(width, 1, start=(0, 0), goal=(width - 1, 0))
+    run = Run(grid, "bfs", max_steps=CHUNK + 500)
+    result = run.summary()
+    assert result["gave_up"] and not result["found"] and result["path"] is None
+    assert result["expanded"] == CHUNK + 500 and result["generated"] == CHUNK + 501  # +start

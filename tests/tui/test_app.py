@@ -728,6 +728,14 @@ async def test_a_run_that_reaches_the_step_limit_says_it_gave_up() -> None:
         status, narration = stats(app)
         assert "step 30/30" in status
         assert narration.endswith(". Gave up: the step limit (30) is reached")
+    # Ending an iteration exactly at the limit: the empty stack does not claim "no path".
+    app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, algorithm="iddfs", max_steps=1)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("end")
+        await wait_until(pilot, lambda: app.search_run.at_end)
+        await pilot.pause()
+        assert app.search_run.gave_up and app.search_run.frontier_len() == 0
+        assert app.query_one(FrontierPanel).lines() == ["empty — gave up at the step limit"]
 
 
 @sync

@@ -107,10 +107,29 @@ class Run:
         rec = self.rec
         if not rec.done:
             next(self._loop, None)
-            if not rec.done and rec.steps >= self.max_steps:
-                # Give up: iterative deepening can take billions of steps on a big map.
-                rec.done = rec.gave_up = True
-                self._loop.close()
+            if rec.steps > self.max_steps or (not rec.done and rec.steps == self.max_steps):
+                self._give_up()
+
+    def _give_up(self) -> None:
+        """Stop at exactly ``max_steps`` expansions (iterative deepening can take billions of
+        steps on a big map): what the last chunk recorded past the limit is cut off, a goal
+        found there included, and the loop is closed."""
+        rec, n = self.rec, self.max_steps
+        if rec.steps > n:
+            events = rec.step_end[n]
+            del rec.step_end[n + 1 :]
+            if isinstance(rec.step_exp, array):
+                del rec.step_exp[n + 1 :]
+            del rec.gen_node[events:]
+            if rec.gen_depth is not None:
+                del rec.gen_depth[events:]
+            while rec.iter_first_step[-1] > n:
+                rec.iter_first_step.pop()
+                rec.iter_root.pop()
+                rec.iter_limit.pop()
+        rec.goal_gen = -1
+        rec.done = rec.gave_up = True
+        self._loop.close()
 
     def advance(self, until_step: int | None = None) -> bool:
         """Record more of the search: at least up to ``until_step`` (all of it when None), in

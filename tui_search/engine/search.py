@@ -308,7 +308,8 @@ def iddfs(problem: Problem, rec: Record, chunk: int = CHUNK) -> Iterator[int]:
             steps += 1
             if steps == pause:
                 pause += chunk
-                yield steps
+                if stack or cut_off:  # not when this step ended the search
+                    yield steps
         if not cut_off:
             rec.done = True
             return

@@ -153,6 +153,8 @@ class FrontierPanel(LinePanel):
                 nxt = 1 if limit is None else limit + 1
                 return f"empty — iteration over; next: depth limit {nxt}"
             return "empty"
+        if run.gave_up:
+            return "empty — gave up at the step limit"
         return "empty" if run.found else "empty — no path"
 
     def line_parts(self, y: int) -> list[tuple[str, str]]:

@@ -70,7 +70,7 @@ class Stats(Static):
         elif run is None:
             line = Text()
         else:
-            failed = run.at_end and not run.found
+            failed = run.at_end and not run.found and not run.gave_up  # "no path", in red
             line = Text(narrate(run), style("stats--no-path" if failed else "stats--narration"))
             if run.at_end and run.found:
                 line.append(" · ", style("stats--label"))
