@@ -12,6 +12,7 @@ from __future__ import annotations
 from itertools import groupby
 from typing import ClassVar
 
+from rich.cells import cell_len
 from rich.text import Text
 from textual import events
 from textual.binding import ActiveBinding
@@ -93,11 +94,11 @@ class KeyBar(Widget):
             if n:
                 text.append("  ")
             for display, key, key_enabled in keys:
-                self._spans.append((len(text), len(text) + len(display), key))
+                self._spans.append((text.cell_len, text.cell_len + cell_len(display), key))
                 text.append(display, key_style if key_enabled else disabled_style)
-            start = len(text)
+            start = text.cell_len
             text.append(f" {description}", description_style if enabled else disabled_style)
-            self._spans.append((start, len(text), keys[0][1]))
+            self._spans.append((start, text.cell_len, keys[0][1]))
         return text
 
     def on_click(self, event: events.Click) -> None:
