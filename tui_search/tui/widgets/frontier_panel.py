@@ -14,7 +14,7 @@ end is which.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, ClassVar
+from typing import TYPE_CHECKING, Any, ClassVar
 
 from rich.cells import cell_len
 from rich.segment import Segment
@@ -72,15 +72,8 @@ class FrontierPanel(LinePanel):
     | `frontier-panel--no-path` | The line shown when the search ended without a path. |
     """
 
-    def __init__(
-        self,
-        *,
-        name: str | None = None,
-        id: str | None = None,
-        classes: str | None = None,
-        disabled: bool = False,
-    ) -> None:
-        super().__init__(name=name, id=id, classes=classes, disabled=disabled)
+    def __init__(self, **widget_args: Any) -> None:  # name, id, classes, disabled
+        super().__init__(**widget_args)
         self._run: Run | None = None
         self._shown: tuple[int, int] | None = None  # (id(run), k) last shown
         self._count = 0  # frontier entries at the position

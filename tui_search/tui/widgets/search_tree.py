@@ -37,7 +37,7 @@ from __future__ import annotations
 
 from array import array
 from bisect import bisect_right
-from typing import TYPE_CHECKING, ClassVar
+from typing import TYPE_CHECKING, Any, ClassVar
 
 from rich.segment import Segment
 from textual.geometry import Region, Size
@@ -119,15 +119,8 @@ class SearchTreePanel(LinePanel):
     | `search-tree--note` | The note above the focused view. |
     """
 
-    def __init__(
-        self,
-        *,
-        name: str | None = None,
-        id: str | None = None,
-        classes: str | None = None,
-        disabled: bool = False,
-    ) -> None:
-        super().__init__(name=name, id=id, classes=classes, disabled=disabled)
+    def __init__(self, **widget_args: Any) -> None:  # name, id, classes, disabled
+        super().__init__(**widget_args)
         self._run: Run | None = None
         self._k = -1
         self._root = -1
