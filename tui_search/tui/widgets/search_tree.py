@@ -54,6 +54,8 @@ SMALL_TREE = 5000
 INCREMENTAL_STEPS = 64
 #: Levels of tree guides drawn in the listing; deeper lines keep the last levels only.
 MAX_LEVELS = 40
+#: Tree guides kept (an event's never change); the cache starts again past this many.
+GUIDES_KEPT = 4 * SMALL_TREE
 #: Levels of indentation in the focused view (its lines also show their depth).
 FOCUS_LEVELS = 8
 #: Deepest part of the ancestor chain the focused view lists (above it: START and a "⋮" line).
@@ -133,6 +135,8 @@ class SearchTreePanel(LinePanel):
         self._order: list[int] = []
         self._depth = array("i")  # depth of event root + i
         self._expanded: set[int] = set()
+        self._guides: dict[int, str] = {}  # event -> its guides, for the run self._guides_run
+        self._guides_run: Run | None = None
         # the focused view
         self._chain: list[int] = []  # the deepest SHOW_LEVELS + 1 ancestors, top to bottom
         self._chain_pos: dict[int, int] = {}
@@ -432,9 +436,19 @@ class SearchTreePanel(LinePanel):
         return parts
 
     def _list_guides(self, g: int, depth: int) -> str:
-        """``│  ├─ `` etc. for a node of the listing: O(min(depth, MAX_LEVELS))."""
+        """``│  ├─ `` etc. for a node of the listing: O(min(depth, MAX_LEVELS)) the first time,
+        then kept (whether each ancestor is a last child is known once it is generated; a step
+        shifts the lines under the node it expands, and they are drawn again)."""
         if depth == 0:
             return ""
+        if self._guides_run is not self._run or len(self._guides) > GUIDES_KEPT:
+            self._guides, self._guides_run = {}, self._run
+        guides = self._guides.get(g)
+        if guides is None:
+            guides = self._guides[g] = self._draw_guides(g, depth)
+        return guides
+
+    def _draw_guides(self, g: int, depth: int) -> str:
         parent = self._run.gen_parent  # type: ignore[union-attr]
         is_last = self._is_last
         pieces = ["└─ " if is_last(g) else "├─ "]
