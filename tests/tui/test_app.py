@@ -161,6 +161,25 @@ async def test_n_expands_one_node_and_narrates_it_in_the_tutorials_words() -> No
 
 
 @sync
+async def test_status_lines_too_wide_for_the_terminal_end_in_an_ellipsis() -> None:
+    """At the end, the narration and the path's moves and cost overflow a 60-column terminal:
+    the line is cut to fit and ends in "…"; a line that fits is drawn whole."""
+    app = tutorial_app()
+    async with app.run_test(size=(60, 24)) as pilot:
+        await pilot.press("end")
+        widget = app.query_one(Stats)
+        width = widget.content_size.width
+        status, narration = stats(app)
+        assert len(narration) > width
+        shown = widget.render_line(1).text
+        assert len(shown) == width and shown == narration[: width - 1] + "…"
+        await pilot.press("home")
+        status, narration = stats(app)
+        assert len(narration) < width
+        assert widget.render_line(1).text == narration.ljust(width)
+
+
+@sync
 async def test_dfs_narration_says_stack() -> None:
     app = tutorial_app("dfs")
     async with app.run_test(size=SIZE) as pilot:

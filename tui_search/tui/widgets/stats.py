@@ -1,34 +1,48 @@
 """The status lines under the map: the counts, and what the search just did in the tutorial's
-words (see :mod:`tui_search.tui.narration`)."""
+words (see :mod:`tui_search.tui.narration`).
+
+Two lines redrawn on every step, so they are drawn with the line API from segments built in
+:meth:`Stats.show`, with styles looked up once per style change (a ``Static`` rebuilt its
+content through Textual's markup and visual pipeline on every step: a tenth of a step).
+"""
 
 from __future__ import annotations
 
 from typing import ClassVar
 
-from rich.text import Text
-from textual.widgets import Static
+from rich.cells import cell_len, set_cell_size
+from rich.segment import Segment
+from textual.strip import Strip
+from textual.widget import Widget
 
 from tui_search.engine.run import Run
 from tui_search.tui.narration import SHORT_NAMES, narrate, result_text, status_parts
+from tui_search.tui.widgets.line_panel import CachedStyles
+
+#: What ends a line too long for the terminal.
+ELLIPSIS = "…"
+
+Parts = list[tuple[str, str]]
 
 
-class Stats(Static):
+class Stats(CachedStyles, Widget):
     """Two lines: ``BFS │ step 4/18 │ expanded 4 │ …`` then the narration, which ends with
     the path's moves and cost once found (or says "no path").
 
     The app calls :meth:`show` after every change; ``note`` replaces the narration (e.g. while
-    computing the end of a big run, or when the map lacks a start or a goal).
+    computing the end of a big run, or when the map lacks a start or a goal).  A line wider than
+    the terminal ends in an ellipsis.
     """
 
-    COMPONENT_CLASSES: ClassVar[set[str]] = {"stats--label", "stats--value", "stats--result", "stats--no-path",
-                         "stats--narration", "stats--note", "stats--play"}
+    COMPONENT_CLASSES: ClassVar[set[str]] = {
+        "stats--label", "stats--value", "stats--result", "stats--no-path", "stats--narration",
+        "stats--note", "stats--play",
+    }
 
     DEFAULT_CSS = """
     Stats {
         height: 2;
         padding: 0 1;
-        text-wrap: nowrap;
-        text-overflow: ellipsis;
         background: $panel;
         & > .stats--label { color: $text-muted; }
         & > .stats--value { color: $text; text-style: bold; }
@@ -41,9 +55,10 @@ class Stats(Static):
     """
 
     def __init__(self, *, id: str | None = None) -> None:
-        super().__init__(id=id, markup=False)
+        super().__init__(id=id)
         self.status_text = ""
         self.narration_text = ""
+        self._lines: tuple[Parts, Parts] = ([], [])
 
     def show(
         self,
@@ -53,28 +68,38 @@ class Stats(Static):
         playing: str = "",
         note: str = "",
     ) -> None:
-        style = self.get_component_rich_style
-        sep = (" │ ", style("stats--label"))
-        status = Text(no_wrap=False, overflow="fold")
-        status.append(SHORT_NAMES[algorithm], style("stats--value"))
+        sep = (" │ ", "stats--label")
+        status: Parts = [(SHORT_NAMES[algorithm], "stats--value")]
         if run is not None:
             for label, value in status_parts(run):
-                status.append(*sep)
-                status.append(f"{label} ", style("stats--label"))
-                status.append(value, style("stats--value"))
+                status += [sep, (f"{label} ", "stats--label"), (value, "stats--value")]
         if playing:
-            status.append(*sep)
-            status.append(playing, style("stats--play"))
+            status += [sep, (playing, "stats--play")]
+        line: Parts
         if note:
-            line = Text(note, style("stats--note"))
+            line = [(note, "stats--note")]
         elif run is None:
-            line = Text()
+            line = []
         else:
             failed = run.at_end and not run.found and not run.gave_up  # "no path", in red
-            line = Text(narrate(run), style("stats--no-path" if failed else "stats--narration"))
+            line = [(narrate(run), "stats--no-path" if failed else "stats--narration")]
             if run.at_end and run.found:
-                line.append(" · ", style("stats--label"))
-                line.append(result_text(run), style("stats--result"))
-        self.status_text = status.plain
-        self.narration_text = line.plain
-        self.update(Text("\n").join([status, line]), layout=False)  # always two lines
+                line += [(" · ", "stats--label"), (result_text(run), "stats--result")]
+        lines = (status, line)
+        if lines != self._lines:
+            self._lines = lines
+            self.status_text = "".join(text for text, _ in status)
+            self.narration_text = "".join(text for text, _ in line)
+            self.refresh()
+
+    def render_line(self, y: int) -> Strip:
+        width = self.content_size.width
+        base = self.cached_style()
+        parts = self._lines[y] if 0 <= y < len(self._lines) else []
+        style = self.cached_style
+        segments = [Segment(text, style(cls)) for text, cls in parts]
+        if sum(cell_len(text) for text, _ in parts) > width > 0:
+            cut = Strip(segments).crop(0, width - 1)
+            last = style(parts[-1][1]) if parts else base
+            segments = [*cut, Segment(set_cell_size(ELLIPSIS, 1), last)]
+        return Strip(segments).crop_extend(0, width, base)
