@@ -326,6 +326,48 @@ async def test_a_step_repaints_only_the_lines_it_changed() -> None:
         assert not any(a == () for a in refreshed_all), "a whole-view refresh"
 
 
+def composited(app: SearchApp) -> list[list[tuple]]:
+    """The terminal as the app has painted it (from the widgets' caches of drawn lines): each
+    line's segments as (text, style)."""
+    strips = app.screen._compositor.render_strips()
+    return [[(segment.text, segment.style) for segment in strip] for strip in strips]
+
+
+async def settle(pilot) -> None:
+    """Let the app handle what is queued and paint now (``pilot.pause()`` without its idle
+    wait, which would make a test of hundreds of steps slow)."""
+    await pilot._wait_for_screen()
+    await pilot._wait_for_screen()
+    pilot.app.screen._on_timer_update()
+
+
+async def repainted(app: SearchApp, pilot) -> list[list[tuple]]:
+    """The terminal with every widget drawn afresh, nothing from a cache."""
+    for widget in app.screen.query("*"):
+        widget.refresh()
+    await settle(pilot)
+    return composited(app)
+
+
+@pytest.mark.parametrize("algorithm", ["bfs", "dfs", "iddfs"])
+@sync
+async def test_a_step_repaints_every_line_it_changes(algorithm: str) -> None:
+    """A step repaints only the lines whose content changed (and a border line only when its
+    title did): whatever it left alone must be what a full repaint draws, at every step of
+    the tutorial (to its end, or 25 steps of iterative deepening) forwards and back, and on a
+    40x40 map where the panels fill and scroll."""
+    for grid, steps in ((load_map(TUTORIAL), 25), (open_grid(40, 40, start=(20, 20)), 12)):
+        app = SearchApp(grid, algorithm=algorithm)
+        async with app.run_test(size=SIZE) as pilot:
+            run = app.search_run
+            run.advance()
+            steps = min(steps, run.recorded)
+            for forward in [True] * steps + [False] * steps:
+                app.action_next() if forward else app.action_prev()
+                await settle(pilot)
+                assert composited(app) == await repainted(app, pilot), (forward, run.k)
+
+
 @sync
 async def test_space_plays_and_pauses() -> None:
     app = SearchApp(open_grid(60, 60))

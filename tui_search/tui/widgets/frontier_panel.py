@@ -111,8 +111,7 @@ class FrontierPanel(LinePanel):
         entry_w = 3 + self._coord_w + 1 + 2 + (1 + self._depth_w if self._depth_w else 0)
         self._hint_col = entry_w + HINT_GAP
         kind = "Stack (LIFO)" if lifo else "Queue (FIFO)"
-        self.border_title = f"{kind} · {group_digits(n)}"
-        self.border_subtitle = "▶ next out  + just added" if n else ""
+        self.show_titles(f"{kind} · {group_digits(n)}", "▶ next out  + just added" if n else "")
         if n:
             self._empty_text = ""
             hint = max(len(self._hints(lifo, 0, n)), len(self._hints(lifo, n - 1, n)))
@@ -125,7 +124,7 @@ class FrontierPanel(LinePanel):
         set_virtual_size(self, virtual_size)
         if moved:
             self.scroll_to(0, 0, animate=False, immediate=True, force=True)
-        self.refresh()
+        self.refresh_changed()
 
     # -- text, for tests and for render_line ------------------------------------------------
     @staticmethod

@@ -21,7 +21,7 @@ from __future__ import annotations
 from math import ceil
 
 from rich.style import Style
-from textual.geometry import Size
+from textual.geometry import Offset, Region, Size
 from textual.scroll_view import ScrollView
 from textual.scrollbar import ScrollBar, ScrollBarRender
 from textual.widget import Widget
@@ -124,8 +124,19 @@ def group_digits(n: int) -> str:
     return f"{n:,}".replace(",", " ")
 
 
+Parts = list[tuple[str, str]]
+
+
 class LinePanel(QuietScrollbars, CachedStyles, ScrollView, can_focus=True):
-    """A bordered, focusable line-API list: the look the frontier and tree panels share."""
+    """A bordered, focusable line-API list: the look the frontier and tree panels share, and
+    their repaint after a step: only the lines that changed.
+
+    A subclass draws line ``y`` of its whole list from :meth:`line_parts` (text and component
+    class pieces), which says everything about how the line looks, and calls
+    :meth:`show_titles` and :meth:`refresh_changed` instead of setting the titles and calling
+    ``refresh()``: those repaint the whole panel (Textual's title setters do, even for the same
+    text), which on a step was most of the lines a step redrew.
+    """
 
     DEFAULT_CSS = """
     LinePanel {
@@ -138,3 +149,39 @@ class LinePanel(QuietScrollbars, CachedStyles, ScrollView, can_focus=True):
         &:focus { border: round $border; border-title-color: $text-primary; }
     }
     """
+
+    _painted: tuple[Offset, Size, list[Parts]] | None = None  # what the visible lines show
+    _titles: tuple[str, str] | None = None
+
+    def line_parts(self, y: int) -> Parts:
+        """Line ``y`` of the whole list as (text, component class) pieces; ``[]`` past it."""
+        raise NotImplementedError
+
+    def show_titles(self, title: str, subtitle: str) -> None:
+        """Set the border title and subtitle, repainting just the border lines whose text
+        changed."""
+        old = self._titles or (None, None)
+        self._titles = (title, subtitle)
+        for row, (text, was, name) in enumerate(((title, old[0], "_border_title"),
+                                                 (subtitle, old[1], "_border_subtitle"))):
+            if text == was:
+                continue
+            # what Widget.border_title's setter stores, without its whole-widget refresh
+            setattr(self, name, self.render_str(text).expand_tabs(4).split()[0])
+            x, y = self.content_offset  # refresh() takes content coordinates
+            width, height = self.outer_size
+            self.refresh(Region(-x, (0 if row == 0 else height - 1) - y, width, 1))
+
+    def refresh_changed(self) -> None:
+        """Repaint the visible lines whose parts differ from what they show (all of them
+        after a scroll or a resize: those repaint everything anyway)."""
+        offset = self.scroll_offset
+        size = self.scrollable_content_region.size
+        rows = [self.line_parts(offset.y + y) for y in range(size.height)]
+        painted, self._painted = self._painted, (offset, size, rows)
+        if painted is None or painted[0] != offset or painted[1] != size:
+            self.refresh()
+            return
+        for y, (new, old) in enumerate(zip(rows, painted[2])):
+            if new != old:
+                self.refresh(Region(0, y, size.width, 1))

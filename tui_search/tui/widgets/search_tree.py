@@ -43,7 +43,7 @@ from rich.segment import Segment
 from textual.geometry import Region, Size
 from textual.strip import Strip
 
-from tui_search.tui.widgets.line_panel import LinePanel, group_digits, set_virtual_size
+from tui_search.tui.widgets.line_panel import LinePanel, Parts, group_digits, set_virtual_size
 
 if TYPE_CHECKING:
     from tui_search.engine.run import Run
@@ -72,8 +72,6 @@ SUFFIX_GOAL = "  ★ goal"
 SUFFIX_CUTOFF = "  ✂ depth limit"
 #: Widest suffix (all single-cell characters).
 SUFFIX_W = max(len(SUFFIX_CURRENT), len(SUFFIX_GOAL), len(SUFFIX_CUTOFF))
-
-Parts = list[tuple[str, str]]
 
 
 class SearchTreePanel(LinePanel):
@@ -200,17 +198,17 @@ class SearchTreePanel(LinePanel):
         title = "Search tree"
         if self._limit is not None:
             title += f" · depth limit {self._limit}"
-        self.border_title = f"{title} · {group_digits(size)} node{'s' if size != 1 else ''}"
+        title = f"{title} · {group_digits(size)} node{'s' if size != 1 else ''}"
         legend = f"{GLYPH_EXPANDED} expanded  {GLYPH_FRONTIER} frontier"
         if self._path:
             legend += f"  {GLYPH_GOAL} goal"
-        self.border_subtitle = legend
+        self.show_titles(title, legend)
 
         virtual_size = Size(self._content_width(), self._line_count())
         set_virtual_size(self, virtual_size)
         if moved:
             self._scroll_to_current()
-        self.refresh()
+        self.refresh_changed()
 
     def current_line(self) -> int:
         """The line of the node being expanded (of the root at step 0)."""
