@@ -26,34 +26,60 @@ from textual.scroll_view import ScrollView
 from textual.scrollbar import ScrollBar, ScrollBarRender
 from textual.widget import Widget
 
-#: Eighths of a cell: the thumb's ends are drawn with these partial blocks.
-_EIGHTHS = len(ScrollBarRender.VERTICAL_BARS)
+#: A scrollbar cell as :meth:`ScrollBarRender.render_bar` draws it: glyph, drawn reversed,
+#: and what a click on it does.
+BarCell = tuple[str, bool, "str | None"]
+_UP: BarCell = (" ", False, "scroll_up")
+_DOWN: BarCell = (" ", False, "scroll_down")
+_THUMB: BarCell = (" ", True, "grab")
+_EMPTY: BarCell = (" ", False, None)
 
 
-def scrollbar_drawing(bar: ScrollBar) -> tuple[int, ...]:
-    """What ``bar`` draws, as :class:`~textual.scrollbar.ScrollBarRender` computes it: its
-    length and its thumb's ends in eighths of a cell (nothing else moves a glyph)."""
+def scrollbar_cells(bar: ScrollBar) -> list[BarCell]:
+    """What each cell along ``bar`` draws, computed as
+    :meth:`~textual.scrollbar.ScrollBarRender.render_bar` computes it (the same steps, on
+    cells instead of segments)."""
     size = bar.size.height if bar.vertical else bar.size.width
     virtual = ceil(bar.window_virtual_size)
     window = ceil(bar.window_size if bar.window_size < bar.window_virtual_size else 0)
     if not (window and size and virtual and size != virtual):
-        return (size, virtual, window)  # no thumb: the bar is blank
+        return [_EMPTY] * size
+    bars = ScrollBarRender.VERTICAL_BARS if bar.vertical else ScrollBarRender.HORIZONTAL_BARS
+    eighths = len(bars)
     thumb = max(1, window / (virtual / size))
     position = (size - thumb) * (bar.position / (virtual - window))
-    start = int(position * _EIGHTHS)
-    return (size, start, start + ceil(thumb * _EIGHTHS))
+    start = int(position * eighths)
+    end = start + ceil(thumb * eighths)
+    start_index, start_bar = divmod(max(0, start), eighths)
+    end_index, end_bar = divmod(max(0, end), eighths)
+    cells = [_UP] * size
+    cells[end_index:] = [_DOWN] * (size - end_index)
+    cells[start_index:end_index] = [_THUMB] * (end_index - start_index)
+    if start_index < len(cells) and bars[eighths - 1 - start_bar] != " ":
+        cells[start_index] = (bars[eighths - 1 - start_bar], not bar.vertical, "grab")
+    if end_index < len(cells) and bars[eighths - 1 - end_bar] != " ":
+        cells[end_index] = (bars[eighths - 1 - end_bar], bar.vertical, "grab")
+    return cells[:size]
 
 
 def update_scrollbar(bar: ScrollBar, **values: float) -> None:
-    """Set ``bar``'s ``window_virtual_size``, ``window_size`` or ``position`` and repaint it
-    only if that changes what it draws."""
-    before = scrollbar_drawing(bar)
+    """Set ``bar``'s ``window_virtual_size``, ``window_size`` or ``position``, and repaint
+    only what that changes: nothing, the rows of a vertical bar whose cells changed (a thumb
+    that moves repaints the rows it leaves and enters), or the whole bar."""
+    before = scrollbar_cells(bar)
     if "position" in values:
         values["position"] = bar.validate_position(values["position"])
     for name, value in values.items():
         bar.set_reactive(getattr(ScrollBar, name), value)
-    if scrollbar_drawing(bar) != before:
+    after = scrollbar_cells(bar)
+    if after == before:
+        return
+    if not bar.vertical or len(after) != len(before):
         bar.refresh()
+        return
+    for y, (new, old) in enumerate(zip(after, before)):
+        if new != old:
+            bar.refresh(Region(0, y, bar.size.width, 1))
 
 
 def set_virtual_size(view: ScrollView, size: Size) -> None:
