@@ -172,6 +172,12 @@ class LinePanel(QuietScrollbars, CachedStyles, ScrollView, can_focus=True):
         border-title-color: $foreground;
         border-subtitle-color: $text-muted;
         padding: 0 1;
+        /* Always there, so that a list growing past the panel does not lay out the screen
+           again (and its lines do not jump sideways when a bar comes or goes); its track is
+           the panel's own background, so a list that fits shows no bar at all. */
+        overflow-y: scroll;
+        scrollbar-background: transparent;
+        scrollbar-corner-color: $background;
         &:focus { border: round $border; border-title-color: $text-primary; }
     }
     """

@@ -82,6 +82,8 @@ class SearchTreePanel(LinePanel):
 
     DEFAULT_CSS = """
     SearchTreePanel {
+        overflow-x: scroll;  /* its width changes with the depth: a bar that came and went
+                                would lay out the screen again */
         & > .search-tree--guide { color: $foreground-muted; }
         & > .search-tree--expanded { color: $text-primary; }
         & > .search-tree--frontier { color: $foreground; }
