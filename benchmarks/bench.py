@@ -585,10 +585,35 @@ def bench_jump(quick: bool) -> None:
 
 
 # -- 3. one step, and playback -----------------------------------------------------------------
-async def _presses(app, keys: list[str], warmup: int = 20) -> tuple[list[float], float, float]:
+class DrawnLines:
+    """Counts the lines Textual draws afresh (each one a widget's line with its border and
+    padding: ``StylesCache.render_line``; a line left unchanged comes from its cache), while
+    in a ``with`` block."""
+
+    def __enter__(self) -> DrawnLines:
+        from textual._styles_cache import StylesCache
+
+        self.count, self._cls = 0, StylesCache
+        self._original = original = StylesCache.render_line
+
+        def counted(*args, **kwargs):
+            self.count += 1
+            return original(*args, **kwargs)
+
+        StylesCache.render_line = counted  # type: ignore[method-assign]
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self._cls.render_line = self._original  # type: ignore[method-assign]
+
+
+async def _presses(app, keys: list[str], warmup: int = 20
+                   ) -> tuple[list[float], float, float, float]:
     """Pressing ``keys`` in turn: the wall time of each press (key to repainted screen), the
-    CPU seconds per press, and the CPU seconds of the same waiting and repainting with no key
-    (the Pilot's own cost, which grows with the number of widgets)."""
+    CPU seconds per press, the CPU seconds of the same waiting and repainting with no key
+    (the Pilot's own cost, which grows with the number of widgets), and the lines drawn per
+    press (counted in a second, untimed pass over the same keys: the keys go forwards and
+    back, so it replays the same steps)."""
     async with app.run_test(size=TERMINAL) as pilot:
         await pilot.pause()
         for i in range(warmup):
@@ -605,7 +630,10 @@ async def _presses(app, keys: list[str], warmup: int = 20) -> tuple[list[float],
         for _ in keys:
             await settle(pilot)
         idle = (time.process_time() - idle) / len(keys)
-        return walls, cpu, idle
+        with DrawnLines() as drawn:
+            for key in keys:
+                await fast_press(pilot, key)
+        return walls, cpu, idle, drawn.count / len(keys)
 
 
 def step_keys(n: int) -> list[str]:
@@ -641,7 +669,7 @@ def bench_step(quick: bool) -> None:
     n = 100 if quick else 200
     reps = 3 if quick else 5
     names = ("trivial", "trivial-full", "tutorial", "maze")
-    results: dict[str, list[tuple[list[float], float, float]]] = {k: [] for k in names}
+    results: dict[str, list[tuple[list[float], float, float, float]]] = {k: [] for k in names}
     tutorial = maze = None
     if app_cls is not None:
         from tui_search.engine.mapfile import load_map
@@ -661,10 +689,14 @@ def bench_step(quick: bool) -> None:
     def per_press(name: str) -> tuple[list[float], list[float], list[float]]:
         """Per repeat: median wall time per press, net CPU per press (minus the Pilot's own
         waiting), gross CPU per press."""
-        wall = series(f"step {name} wall", [med(w) for w, _, _ in results[name]])
-        net = series(f"step {name} cpu", [c - i for _, c, i in results[name]])
-        gross = [c for _, c, _ in results[name]]
+        wall = series(f"step {name} wall", [med(w) for w, _, _, _ in results[name]])
+        net = series(f"step {name} cpu", [c - i for _, c, i, _ in results[name]])
+        gross = [c for _, c, _, _ in results[name]]
         return wall, net, gross
+
+    def drawn(name: str) -> float:
+        """Lines drawn afresh per press (the same in every repeat)."""
+        return med([lines for _, _, _, lines in results[name]])
 
     def cpu_text(net: list[float], gross: list[float]) -> str:
         return f"{fmt_time(net)} (gross {fmt_time(med(gross))})"
@@ -693,6 +725,14 @@ def bench_step(quick: bool) -> None:
                 f"trivial {fmt_time(tw)}", paired(mw, tw), "report (≤ 3)"))
         add(Row("step", "n/p on maze512 vs tutorial 6×6 (median wall per press)", fmt_time(mw),
                 f"tutorial {fmt_time(uw)}", paired(mw, uw), "report (≤ 1.5)"))
+        lines = {name: drawn(name) for name in names}
+        add(Row("step", "lines drawn afresh per press: trivial 1-line / whole screen / tutorial / "
+                "maze512", " / ".join(f"{lines[k]:.1f}" for k in names), "", None, "report"))
+        per_line = [(m / lines["maze"]) / (f / lines["trivial-full"]) for m, f in zip(mc, fc)]
+        add(Row("step", "n/p on maze512: CPU per line drawn vs the trivial app's whole-screen "
+                "redraw", f"{med(mc) / lines['maze'] * 1e6:.0f} µs/line",
+                f"{med(fc) / lines['trivial-full'] * 1e6:.0f} µs/line", med(per_line),
+                "report"))
     grid = open_grid()
     rate, speed = asyncio.run(_playback(app_cls, grid, 1.5 if quick else 3.0))
     add(Row("step", f"playback (space) at the top speed ({speed:,}/s) on open {OPEN_SIZE}², "

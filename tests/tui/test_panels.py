@@ -15,6 +15,7 @@ from typing import Any
 
 import pytest
 from hypothesis import given, settings
+from rich.segment import Segment
 from hypothesis import strategies as st
 from textual.app import App, ComposeResult
 from textual.geometry import Size
@@ -26,7 +27,7 @@ from tui_search.engine.grid import Grid
 from tui_search.engine.run import Run
 from tui_search.tui.widgets import search_tree
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
-from tui_search.tui.widgets.line_panel import scrollbar_cells
+from tui_search.tui.widgets.line_panel import scrollbar_cells, window_strip
 from tui_search.tui.widgets.search_tree import SearchTreePanel
 
 
@@ -409,6 +410,28 @@ async def test_deep_dfs_chain_is_cut_to_its_deepest_levels() -> None:
         assert "⋮" in panel.line_text(2) and "levels not shown" in panel.line_text(2)
         x, y = run.current_node()  # type: ignore[misc]
         assert any("◀ expanding" in line and f"({x},{y})" in line for line in screen_lines(panel))
+
+
+# -- drawing a line's window ---------------------------------------------------------------
+
+texts = st.text(alphabet="ab│├└─●○◀★✂⋮ 漢字", max_size=12)
+
+
+@settings(max_examples=500, deadline=None)
+@given(st.lists(st.tuples(texts, st.sampled_from(["red", "bold", "blue on white"])),
+                max_size=6), st.integers(0, 40), st.integers(1, 40))
+def test_window_strip_draws_what_crop_extend_draws(pieces, x, width) -> None:
+    """The panels' one-Strip window of a line is Textual's crop_extend, cell for cell, wide
+    characters (two cells) cut at either edge included."""
+    from rich.style import Style
+    from textual.strip import Strip
+
+    segments = [Segment(text, Style.parse(style)) for text, style in pieces if text]
+    fill = Style.parse("on black")
+    ours = window_strip(segments, x, width, fill)
+    textual = Strip(segments).crop_extend(x, x + width, fill)
+    assert ours.cell_length == width == textual.cell_length
+    assert Strip.join([ours]).simplify() == Strip.join([textual]).simplify()
 
 
 # -- quiet scrollbars ----------------------------------------------------------------------

@@ -22,7 +22,12 @@ from rich.style import Style
 from textual.geometry import Size
 from textual.strip import Strip
 
-from tui_search.tui.widgets.line_panel import LinePanel, group_digits, set_virtual_size
+from tui_search.tui.widgets.line_panel import (
+    LinePanel,
+    group_digits,
+    set_virtual_size,
+    window_strip,
+)
 
 if TYPE_CHECKING:
     from tui_search.engine.run import Run
@@ -209,4 +214,4 @@ class FrontierPanel(LinePanel):
         else:
             segments = [Segment(text, style(cls)) for text, cls in parts]
             fill = base
-        return Strip(segments).crop_extend(scroll_x, scroll_x + width, fill)
+        return window_strip(segments, scroll_x, width, fill)

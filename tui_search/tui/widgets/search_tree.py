@@ -43,7 +43,13 @@ from rich.segment import Segment
 from textual.geometry import Region, Size
 from textual.strip import Strip
 
-from tui_search.tui.widgets.line_panel import LinePanel, Parts, group_digits, set_virtual_size
+from tui_search.tui.widgets.line_panel import (
+    LinePanel,
+    Parts,
+    group_digits,
+    set_virtual_size,
+    window_strip,
+)
 
 if TYPE_CHECKING:
     from tui_search.engine.run import Run
@@ -546,5 +552,5 @@ class SearchTreePanel(LinePanel):
         if not parts:
             return Strip.blank(width, base)
         style = self.cached_style
-        strip = Strip([Segment(text, style(cls)) for text, cls in parts])
-        return strip.crop_extend(scroll_x, scroll_x + width, base)
+        return window_strip([Segment(text, style(cls)) for text, cls in parts], scroll_x, width,
+                            base)
