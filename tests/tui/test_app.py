@@ -719,7 +719,7 @@ async def test_a_terminal_too_small_shows_a_message_instead_of_the_layout() -> N
     async with app.run_test(size=(50, 15)) as pilot:
         await pilot.pause()
         message = app.query_one("#too-small")
-        assert message.display and not app.query_one("#body").display
+        assert message.display and not app.query_one("#grid").display
         assert "need at least 60×20, have 50×15" in str(message.render())
     app = tutorial_app()
     async with app.run_test(size=(60, 20)) as pilot:
@@ -730,7 +730,7 @@ async def test_a_terminal_too_small_shows_a_message_instead_of_the_layout() -> N
         assert app.query_one("#too-small").display
         await pilot.resize_terminal(80, 24)
         await pilot.pause()
-        assert not app.query_one("#too-small").display and app.query_one("#body").display
+        assert not app.query_one("#too-small").display and app.query_one("#grid").display
 
 
 # -- the engine contract the app relies on -----------------------------------------------

@@ -15,7 +15,7 @@ from typing import ClassVar
 from textual import events
 from textual.app import App, ComposeResult
 from textual.binding import Binding, BindingType
-from textual.containers import Container, Horizontal, Vertical
+from textual.containers import Vertical
 from textual.widgets import Static
 
 from tui_search.engine.grid import Cell, Grid
@@ -103,17 +103,18 @@ class SearchApp(EditActions, FileActions, App[int]):
         self.frontier_panel = FrontierPanel(id="frontier")
         self.tree_panel = SearchTreePanel(id="tree")
         self.stats = Stats(id="stats")
-        with Container(id="body"):
-            with Horizontal(id="main"):
-                with Vertical(id="left"):
-                    yield view
-                    yield Legend(view, id="legend")
-                with Vertical(id="side"):
-                    yield self.frontier_panel
-                    yield self.tree_panel
-                    yield Static(NEEDS_ENDPOINTS, id="side-note")
-            yield self.stats
-            yield KeyBar()
+        # One level: the key bar and the status lines split off the bottom, the side column
+        # the right; the legend docks under the map, which is centred in what is left.
+        # (Containers for the same layout cost every key a few more hops and every repaint
+        # a few more widgets to composite.)
+        yield KeyBar(id="keys")
+        yield self.stats
+        with Vertical(id="side"):
+            yield self.frontier_panel
+            yield self.tree_panel
+            yield Static(NEEDS_ENDPOINTS, id="side-note")
+        yield Legend(view, id="legend")
+        yield view
         yield Static(id="too-small")
 
     def on_mount(self) -> None:
