@@ -728,6 +728,11 @@ def bench_step(quick: bool) -> None:
         lines = {name: drawn(name) for name in names}
         add(Row("step", "lines drawn afresh per press: trivial 1-line / whole screen / tutorial / "
                 "maze512", " / ".join(f"{lines[k]:.1f}" for k in names), "", None, "report"))
+        per_line = [(m / lines["maze"]) / (u / lines["tutorial"]) for m, u in zip(mc, uc)]
+        add(Row("step", "n/p on maze512 vs tutorial 6×6, CPU per line drawn",
+                f"{med(mc) / lines['maze'] * 1e6:.0f} µs/line",
+                f"tutorial {med(uc) / lines['tutorial'] * 1e6:.0f} µs/line", med(per_line),
+                "report (≤ 1.5)"))
         per_line = [(m / lines["maze"]) / (f / lines["trivial-full"]) for m, f in zip(mc, fc)]
         add(Row("step", "n/p on maze512: CPU per line drawn vs the trivial app's whole-screen "
                 "redraw", f"{med(mc) / lines['maze'] * 1e6:.0f} µs/line",
