@@ -481,7 +481,9 @@ class Lines(Widget, can_focus=True):
 
 
 class TrivialApp(App):
-    BINDINGS = [("n", "bump(1)", "Next"), ("p", "bump(-1)", "Prev"), ("m", "all", "All")]
+    BINDINGS = [("n", "bump(1)", "Next"), ("p", "bump(-1)", "Prev"), ("m", "all", "All"),
+                ("f", "first", "First lines")]
+    FIRST = 1  # lines that f redraws
 
     def compose(self):
         yield Lines()
@@ -490,6 +492,11 @@ class TrivialApp(App):
         lines = self.query_one(Lines)
         lines.count += d
         lines.refresh(Region(0, 5, lines.size.width, 1))
+
+    def action_first(self):  # the same change, and the first FIRST lines repainted
+        lines = self.query_one(Lines)
+        lines.count += 1
+        lines.refresh(Region(0, 0, lines.size.width, self.FIRST))
 
     def action_all(self):  # the same change, but the whole widget is repainted
         lines = self.query_one(Lines)
@@ -668,7 +675,7 @@ def bench_step(quick: bool) -> None:
     trivial = trivial_app_class()
     n = 100 if quick else 200
     reps = 3 if quick else 5
-    names = ("trivial", "trivial-full", "tutorial", "maze")
+    names = ("trivial", "trivial-full", "trivial-same", "tutorial", "maze")
     results: dict[str, list[tuple[list[float], float, float, float]]] = {k: [] for k in names}
     tutorial = maze = None
     if app_cls is not None:
@@ -676,9 +683,16 @@ def bench_step(quick: bool) -> None:
 
         tutorial = load_map(TUTORIAL)
         maze = maze_grid()
+    # The trivial app redrawing as many lines as a maze512 step draws: Textual's cost of
+    # drawing that many lines in one plain widget (counted first, in an untimed run of the
+    # same presses).
+    same = trivial_app_class()
+    if maze is not None:
+        same.FIRST = max(1, round(asyncio.run(_presses(app_cls(maze.copy()), step_keys(n)))[3]))
     for _ in range(reps):  # interleave the apps
         results["trivial"].append(asyncio.run(_presses(trivial(), step_keys(n))))
         results["trivial-full"].append(asyncio.run(_presses(trivial(), ["m"] * n)))
+        results["trivial-same"].append(asyncio.run(_presses(same(), ["f"] * n)))
         if app_cls is not None:
             # the tutorial run has 22 steps: go 8 forwards and back again, over and over
             results["tutorial"].append(asyncio.run(_presses(
@@ -705,6 +719,7 @@ def bench_step(quick: bool) -> None:
     add(Row("step", "trivial Textual app: key → 1 line redrawn (CPU per press, net of Pilot)",
             cpu_text(tc, tg), f"wall {fmt_time(tw)}", None, "baseline"))
     _, fc, fg = per_press("trivial-full")
+    _, sc, sg = per_press("trivial-same")
     add(Row("step", f"trivial Textual app: key → whole {TERMINAL[1]}-line screen redrawn",
             cpu_text(fc, fg), f"1 line {fmt_time(tc)}", paired(fc, tc), "report"))
     if app_cls is None:
@@ -726,8 +741,15 @@ def bench_step(quick: bool) -> None:
         add(Row("step", "n/p on maze512 vs tutorial 6×6 (median wall per press)", fmt_time(mw),
                 f"tutorial {fmt_time(uw)}", paired(mw, uw), "report (≤ 1.5)"))
         lines = {name: drawn(name) for name in names}
-        add(Row("step", "lines drawn afresh per press: trivial 1-line / whole screen / tutorial / "
-                "maze512", " / ".join(f"{lines[k]:.1f}" for k in names), "", None, "report"))
+        add(Row("step", f"trivial Textual app: key → {same.FIRST} lines redrawn (as many as a "
+                "maze512 step draws)", cpu_text(sc, sg), f"1 line {fmt_time(tc)}",
+                paired(sc, tc), "report"))
+        r = paired(mc, sc)
+        add(Row("step", f"n/p on maze512 vs trivial app redrawing the same {same.FIRST} lines",
+                cpu_text(mc, mg), f"trivial {fmt_time(sc)}", r, "report"))
+        add(Row("step", "lines drawn afresh per press: trivial 1-line / whole screen / as many as "
+                "maze512 / tutorial / maze512", " / ".join(f"{lines[k]:.1f}" for k in names), "",
+                None, "report"))
         per_line = [(m / lines["maze"]) / (u / lines["tutorial"]) for m, u in zip(mc, uc)]
         add(Row("step", "n/p on maze512 vs tutorial 6×6, CPU per line drawn",
                 f"{med(mc) / lines['maze'] * 1e6:.0f} µs/line",
