@@ -17,6 +17,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from dataclasses import dataclass
+from itertools import groupby
 
 from rich.segment import Segment
 from rich.style import Style
@@ -28,7 +29,7 @@ from textual.strip import Strip
 
 from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.run import Run
-from tui_search.tui.widgets.line_panel import CachedStyles, QuietScrollbars
+from tui_search.tui.widgets.line_panel import CachedStyles, QuietScrollbars, window_strip
 
 # Drawing codes: the search states of a free cell (CellState's values), then what the grid says.
 FREE, FRONTIER, EXPANDED, CURRENT, PATH, WALL, START, GOAL = range(8)
@@ -92,7 +93,7 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         self.overview = False
         self._stroke = False  # the mouse went down on the map and is not up yet
         self._last: Cell | None = None  # the cell the stroke is on
-        self._segments: list[Segment] | None = None  # cells mode, code + 8 * cursor
+        self._looks: list[tuple[str, Style]] | None = None  # cells mode, code + 8 * cursor
         self._swatches: list[Style] | None = None  # overview mode: a colour per code
 
     # -- what to show (attributes pushed down by the app) -----------------------------------
@@ -187,17 +188,19 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
     # -- styles (from DEFAULT_CSS, so a theme or a palette is a CSS change) -----------------
     def notify_style_update(self) -> None:
         super().notify_style_update()
-        self._segments = None
+        self._looks = None
         self._swatches = None
 
-    def _cell_segments(self) -> list[Segment]:
-        if self._segments is None:
+    def _cell_looks(self) -> list[tuple[str, Style]]:
+        """Glyph and style of each drawing code (``code + len(COMPONENTS)``: under the
+        cursor)."""
+        if self._looks is None:
             cursor = self.get_component_rich_style("grid-view--cursor")
             styles = [self.get_component_rich_style(f"grid-view--{n}") for n in COMPONENTS]
-            self._segments = [Segment(GLYPHS[i], styles[i]) for i in range(len(COMPONENTS))] + [
-                Segment(GLYPHS[i], styles[i] + cursor) for i in range(len(COMPONENTS))
+            self._looks = [(GLYPHS[i], styles[i]) for i in range(len(COMPONENTS))] + [
+                (GLYPHS[i], styles[i] + cursor) for i in range(len(COMPONENTS))
             ]
-        return self._segments
+        return self._looks
 
     def swatch(self, code: int) -> Style:
         """The one colour a kind of cell has in the overview (and in the legend)."""
@@ -246,14 +249,13 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         cx, cy = self.cursor
         if cy == line and x0 <= cx < x1:
             codes[cx - x0] += len(COMPONENTS)
-        table = self._cell_segments()
-        segments = [table[c] for c in codes]
-        pad = self.pad_x
-        if pad:
-            segments.insert(0, Segment(" " * pad, background))
-        strip = Strip(segments, pad + (x1 - x0) * CELL_WIDTH)
-        skip = sx - x0 * CELL_WIDTH
-        return strip.crop_extend(skip, skip + width, background).simplify()
+        looks = self._cell_looks()
+        # one segment per run of like cells, the padding that centres the map first
+        segments = [Segment(" " * self.pad_x, background)]
+        for code, run in groupby(codes):
+            glyph, style = looks[code]
+            segments.append(Segment(glyph * len(list(run)), style))
+        return window_strip(segments, sx - x0 * CELL_WIDTH, width, background)
 
     def _overview_line(self, line: int, sx: int, width: int) -> Strip:
         background = self.cached_style()
@@ -269,8 +271,8 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         cursor_colour = self.get_component_rich_style("grid-view--cursor").color or (
             background.color
         )
-        cache: dict[tuple, Segment] = {}
-        segments = []
+        cache: dict[tuple, Style] = {}
+        colours = []
         for i in range(x1 - x0):
             a = self.swatch(upper[i]).color
             b = self.swatch(lower[i]).color if lower is not None else background.bgcolor
@@ -279,16 +281,14 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
                     a = cursor_colour
                 else:
                     b = cursor_colour
-            key = (a, b)
-            seg = cache.get(key)
-            if seg is None:
-                seg = cache[key] = Segment(UPPER_HALF, Style(color=a, bgcolor=b))
-            segments.append(seg)
-        pad = self.pad_x
-        if pad:
-            segments.insert(0, Segment(" " * pad, background))
-        strip = Strip(segments, pad + x1 - x0)
-        return strip.crop_extend(0, width, background).simplify()
+            colours.append((a, b))
+        segments = [Segment(" " * self.pad_x, background)]
+        for (a, b), run in groupby(colours):
+            style = cache.get((a, b))
+            if style is None:
+                style = cache[a, b] = Style(color=a, bgcolor=b)
+            segments.append(Segment(UPPER_HALF * len(list(run)), style))
+        return window_strip(segments, 0, width, background)
 
     # -- the mouse: report, don't edit ------------------------------------------------------
     def _event_cell(self, event: events.MouseEvent, captured: bool = False) -> Cell | None:
