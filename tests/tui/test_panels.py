@@ -18,7 +18,7 @@ from hypothesis import given, settings
 from rich.segment import Segment
 from hypothesis import strategies as st
 from textual.app import App, ComposeResult
-from textual.geometry import Size
+from textual.geometry import Offset, Size
 from textual.scrollbar import ScrollBarRender
 from textual.widget import Widget
 
@@ -469,6 +469,37 @@ def test_scrollbar_cells_are_what_textual_draws(case) -> None:
                           window_virtual_size=virtual, window_size=window, position=position)
     expected = [cell(s) for s in drawn_bar(size, virtual, window, position, vertical=vertical)]
     assert scrollbar_cells(bar) == expected
+
+
+@sync
+async def test_the_row_scrollbar_draws_each_row_as_textual_draws_the_bar() -> None:
+    """The panels' vertical bar draws one row at a time; every row, at every scroll position
+    and in every state (still, hovered, dragged), is the segment Textual's own rendering of the
+    whole bar puts there: same glyphs, same colours, same click actions."""
+    from textual.widget import Widget
+
+    from tui_search.tui.widgets.line_panel import RowScrollBar
+
+    run = Run(walled_goal_grid(400), "bfs")
+    run.goto(300)
+    panel = FrontierPanel()
+    async with PanelApp(panel, run).run_test(size=(50, 20)) as pilot:
+        await pilot.pause()
+        bar = panel.vertical_scrollbar
+        assert isinstance(bar, RowScrollBar)
+        glyphs = set()
+        for state in ("still", "hover", "grabbed"):
+            bar.set_reactive(type(bar).mouse_over, state == "hover")
+            bar.set_reactive(type(bar).grabbed, Offset(0, 0) if state == "grabbed" else None)
+            for y in range(0, panel.max_scroll_y + 1):
+                panel.scroll_to(y=y, animate=False, immediate=True, force=True)
+                await pilot.pause()
+                bar._render_content()  # Textual's picture of the whole bar, for comparison
+                for row in range(bar.size.height):
+                    ours = [(s.text, s.style) for s in bar.render_line(row)]
+                    assert ours == [(s.text, s.style) for s in Widget.render_line(bar, row)]
+                    glyphs.add(ours[0][0])
+        assert len(glyphs) > 1  # a partial block at an end of the thumb was drawn too
 
 
 @sync

@@ -131,9 +131,56 @@ def set_virtual_size(view: ScrollView, size: Size) -> None:
     view.scroll_y = view.validate_scroll_y(view.scroll_y)
 
 
+class RowScrollBar(ScrollBar):
+    """A vertical scrollbar that draws the row asked for: Textual's draws the whole bar through
+    Rich whenever any row of it is repainted, which made a thumb moving by a row cost as much
+    as ten lines of a panel.  The same cells (:func:`scrollbar_cells`) in the same styles as
+    :meth:`~textual.scrollbar.ScrollBarRender.render_bar`, on the widget's base style as
+    Textual's pipeline puts them."""
+
+    _cells_key: tuple | None = None
+    _cells: list[BarCell] = []
+
+    def render_line(self, y: int) -> Strip:
+        bar_render = self.render()
+        if (not self.vertical or self.renderer is not ScrollBarRender
+                or not isinstance(bar_render, ScrollBarRender)
+                or self.screen.styles.scrollbar_color.a == 0):
+            return super().render_line(y)  # the cases Textual draws otherwise
+        key = (self.size, self.window_virtual_size, self.window_size, self.position)
+        if key != self._cells_key:
+            self._cells_key, self._cells = key, scrollbar_cells(self)
+        width = self.size.width
+        if not 0 <= y < len(self._cells):
+            return Strip.blank(width, self.visual_style.rich_style)
+        glyph, reverse, action = self._cells[y]
+        back = bar_render.style.bgcolor  # type: ignore[union-attr]
+        colour = bar_render.style.color  # type: ignore[union-attr]
+        meta = {"@mouse.down": action} if action else None
+        if action in ("scroll_up", "scroll_down") or action is None:
+            style = Style(bgcolor=back, meta=meta)
+        elif glyph == ScrollBarRender.BLANK_GLYPH:  # the thumb's body
+            style = Style(color=colour, reverse=True, meta=meta)
+        else:  # a partial block at one of the thumb's ends
+            style = Style(bgcolor=back, color=colour, meta=meta, reverse=reverse or None)
+        return Strip([Segment(glyph * width, self.visual_style.rich_style + style)], width)
+
+
 class QuietScrollbars:
     """A mixin for :class:`ScrollView` subclasses: scrolling repaints a scrollbar only when its
-    thumb moves on screen (``ScrollView.watch_scroll_x/y``, with :func:`update_scrollbar`)."""
+    thumb moves on screen (``ScrollView.watch_scroll_x/y``, with :func:`update_scrollbar`),
+    and the vertical bar draws only the rows repainted (:class:`RowScrollBar`)."""
+
+    @property
+    def vertical_scrollbar(self) -> ScrollBar:
+        """Textual's property, making a :class:`RowScrollBar`."""
+        view: ScrollView = self  # type: ignore[assignment]
+        if view._vertical_scrollbar is None:
+            bar = view._vertical_scrollbar = RowScrollBar(
+                vertical=True, name="vertical", thickness=view.scrollbar_size_vertical)
+            bar.display = False
+            view.app._start_widget(view, bar)
+        return view._vertical_scrollbar
 
     def watch_scroll_x(self, old_value: float, new_value: float) -> None:
         view: ScrollView = self  # type: ignore[assignment]
