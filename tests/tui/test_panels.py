@@ -471,6 +471,13 @@ def test_scrollbar_cells_are_what_textual_draws(case) -> None:
     assert scrollbar_cells(bar) == expected
 
 
+def queue_panel(k: int) -> tuple[Run, FrontierPanel]:
+    """BFS on an open 400x400 map at step ``k`` (a queue longer than the panel), and a panel."""
+    run = Run(walled_goal_grid(400), "bfs")
+    run.goto(k)
+    return run, FrontierPanel()
+
+
 @sync
 async def test_the_row_scrollbar_draws_each_row_as_textual_draws_the_bar() -> None:
     """The panels' vertical bar draws one row at a time; every row, at every scroll position
@@ -480,9 +487,7 @@ async def test_the_row_scrollbar_draws_each_row_as_textual_draws_the_bar() -> No
 
     from tui_search.tui.widgets.line_panel import RowScrollBar
 
-    run = Run(walled_goal_grid(400), "bfs")
-    run.goto(300)
-    panel = FrontierPanel()
+    run, panel = queue_panel(300)
     async with PanelApp(panel, run).run_test(size=(50, 20)) as pilot:
         await pilot.pause()
         bar = panel.vertical_scrollbar
@@ -507,9 +512,7 @@ async def test_a_step_repaints_a_scrollbar_only_where_its_thumb_moves() -> None:
     """BFS on an open map: the queue's length changes most steps but moves its scrollbar's
     thumb only now and then; the bar repaints exactly then, only the rows whose cells
     changed, and its values and picture are always those of a freshly drawn bar."""
-    run = Run(walled_goal_grid(400), "bfs")
-    run.goto(100)
-    panel = FrontierPanel()
+    run, panel = queue_panel(100)
     async with PanelApp(panel, run).run_test(size=(50, 20)) as pilot:
         await pilot.pause()
         bar = panel.vertical_scrollbar
