@@ -17,16 +17,13 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any, ClassVar
 
 from rich.cells import cell_len
-from rich.segment import Segment
 from rich.style import Style
 from textual.geometry import Size
-from textual.strip import Strip
 
 from tui_search.tui.widgets.line_panel import (
     LinePanel,
     group_digits,
     set_virtual_size,
-    window_strip,
 )
 
 if TYPE_CHECKING:
@@ -189,29 +186,8 @@ class FrontierPanel(LinePanel):
             parts.append((hint, "frontier-panel--hint"))
         return parts
 
-    def line_text(self, y: int) -> str:
-        """The plain text of line ``y`` of the whole list (not of the screen)."""
-        return "".join(text for text, _ in self.line_parts(y)).rstrip()
-
-    def lines(self) -> list[str]:
-        """Every line's text (tests and small frontiers only: O(frontier))."""
-        return [self.line_text(y) for y in range(self.virtual_size.height)]
-
-    # -- the line API -----------------------------------------------------------------------
-    def render_line(self, y: int) -> Strip:
-        scroll_x, scroll_y = self.scroll_offset
-        width = self.scrollable_content_region.width
-        base = self.cached_style()
-        parts = self.line_parts(scroll_y + y)
-        if not parts:
-            return Strip.blank(width, base)
-        style = self.cached_style
-        if scroll_y + y == 0 and self._count:
-            # The entry expanded next is highlighted across the whole line, like a cursor.
-            band = Style(bgcolor=style("frontier-panel--next").bgcolor)
-            segments = [Segment(text, style(cls) + band) for text, cls in parts]
-            fill = base + band
-        else:
-            segments = [Segment(text, style(cls)) for text, cls in parts]
-            fill = base
-        return window_strip(segments, scroll_x, width, fill)
+    def line_band(self, y: int) -> Style | None:
+        """The entry expanded next is highlighted across the whole line, like a cursor."""
+        if y == 0 and self._count:
+            return Style(bgcolor=self.cached_style("frontier-panel--next").bgcolor)
+        return None

@@ -40,8 +40,8 @@ _EMPTY: BarCell = (" ", False, None)
 
 def scrollbar_cells(bar: ScrollBar) -> list[BarCell]:
     """What each cell along ``bar`` draws, computed as
-    :meth:`~textual.scrollbar.ScrollBarRender.render_bar` computes it (the same steps, on
-    cells instead of segments)."""
+    :meth:`~textual.scrollbar.ScrollBarRender.render_bar` computes it in textual 8.2.8 (the
+    same steps, on cells instead of segments; a test holds them equal)."""
     size = bar.size.height if bar.vertical else bar.size.width
     virtual = ceil(bar.window_virtual_size)
     window = ceil(bar.window_size if bar.window_size < bar.window_virtual_size else 0)
@@ -97,7 +97,7 @@ def window_strip(segments: list[Segment], x: int, width: int, fill: Style) -> St
         if at >= end:
             break
         length = cell_len(segment.text)
-        if at + length > x:
+        if length and at + length > x:
             if at < x:
                 segment = segment.split_cells(x - at)[1]
                 length -= x - at
@@ -105,7 +105,8 @@ def window_strip(segments: list[Segment], x: int, width: int, fill: Style) -> St
             if at + length > end:
                 segment = segment.split_cells(end - at)[0]
                 length = end - at
-            out.append(segment)
+            if length:
+                out.append(segment)
         at += length
     shown = max(0, min(at, end) - x)
     if shown < width:
@@ -115,7 +116,8 @@ def window_strip(segments: list[Segment], x: int, width: int, fill: Style) -> St
 
 def set_virtual_size(view: ScrollView, size: Size) -> None:
     """Give ``view`` a new virtual size without a layout pass, and update its scrollbars
-    (what ``Widget._scroll_update`` does, minus the repaints that would change nothing)."""
+    (what ``Widget._scroll_update`` does in textual 8.2.8, minus the repaints that would
+    change nothing: re-check it when the pin moves)."""
     if size == view.virtual_size:
         return
     view.set_reactive(Widget.virtual_size, size)
@@ -147,6 +149,7 @@ class RowScrollBar(ScrollBar):
                 or not isinstance(bar_render, ScrollBarRender)
                 or self.screen.styles.scrollbar_color.a == 0):
             return super().render_line(y)  # the cases Textual draws otherwise
+        self._dirty_regions.clear()  # what Widget.render_line's whole-bar render would clear
         key = (self.size, self.window_virtual_size, self.window_size, self.position)
         if key != self._cells_key:
             self._cells_key, self._cells = key, scrollbar_cells(self)
@@ -173,7 +176,8 @@ class QuietScrollbars:
 
     @property
     def vertical_scrollbar(self) -> ScrollBar:
-        """Textual's property, making a :class:`RowScrollBar`."""
+        """Textual's property (``Widget.vertical_scrollbar``, textual 8.2.8: re-check it when
+        the pin moves), making a :class:`RowScrollBar`."""
         view: ScrollView = self  # type: ignore[assignment]
         if view._vertical_scrollbar is None:
             bar = view._vertical_scrollbar = RowScrollBar(
@@ -266,6 +270,33 @@ class LinePanel(QuietScrollbars, CachedStyles, ScrollView, can_focus=True):
     def line_parts(self, y: int) -> Parts:
         """Line ``y`` of the whole list as (text, component class) pieces; ``[]`` past it."""
         raise NotImplementedError
+
+    def line_band(self, y: int) -> Style | None:
+        """A style laid over the whole of line ``y`` (a highlight), or None."""
+        return None
+
+    def line_text(self, y: int) -> str:
+        """The plain text of line ``y`` of the whole list (not of the screen)."""
+        return "".join(text for text, _ in self.line_parts(y)).rstrip()
+
+    def lines(self) -> list[str]:
+        """Every line's text (tests and small lists only: O(lines))."""
+        return [self.line_text(y) for y in range(self.virtual_size.height)]
+
+    def render_line(self, y: int) -> Strip:
+        scroll_x, scroll_y = self.scroll_offset
+        width = self.scrollable_content_region.width
+        base = self.cached_style()
+        parts = self.line_parts(scroll_y + y)
+        if not parts:
+            return Strip.blank(width, base)
+        style = self.cached_style
+        band = self.line_band(scroll_y + y)
+        if band is None:
+            return window_strip([Segment(text, style(cls)) for text, cls in parts], scroll_x,
+                                width, base)
+        return window_strip([Segment(text, style(cls) + band) for text, cls in parts], scroll_x,
+                            width, base + band)
 
     def show_titles(self, title: str, subtitle: str) -> None:
         """Set the border title and subtitle, repainting just the border lines whose text

@@ -39,16 +39,13 @@ from array import array
 from bisect import bisect_right
 from typing import TYPE_CHECKING, Any, ClassVar
 
-from rich.segment import Segment
 from textual.geometry import Region, Size
-from textual.strip import Strip
 
 from tui_search.tui.widgets.line_panel import (
     LinePanel,
     Parts,
     group_digits,
     set_virtual_size,
-    window_strip,
 )
 
 if TYPE_CHECKING:
@@ -534,23 +531,3 @@ class SearchTreePanel(LinePanel):
         if len(sibs) == 1:
             return "  only child"
         return f"  child {g - sibs.start + 1} of {len(sibs)}"
-
-    def line_text(self, y: int) -> str:
-        """The plain text of line ``y`` of the whole view."""
-        return "".join(text for text, _ in self.line_parts(y)).rstrip()
-
-    def lines(self) -> list[str]:
-        """Every line's text (tests; O(lines))."""
-        return [self.line_text(y) for y in range(self._line_count())]
-
-    # -- the line API -----------------------------------------------------------------------
-    def render_line(self, y: int) -> Strip:
-        scroll_x, scroll_y = self.scroll_offset
-        width = self.scrollable_content_region.width
-        base = self.cached_style()
-        parts = self.line_parts(scroll_y + y)
-        if not parts:
-            return Strip.blank(width, base)
-        style = self.cached_style
-        return window_strip([Segment(text, style(cls)) for text, cls in parts], scroll_x, width,
-                            base)

@@ -10,19 +10,17 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-from rich.cells import cell_len, set_cell_size
+from rich.cells import cell_len
 from rich.segment import Segment
 from textual.strip import Strip
 from textual.widget import Widget
 
 from tui_search.engine.run import Run
 from tui_search.tui.narration import SHORT_NAMES, narrate, result_text, status_parts
-from tui_search.tui.widgets.line_panel import CachedStyles
+from tui_search.tui.widgets.line_panel import CachedStyles, Parts
 
 #: What ends a line too long for the terminal.
 ELLIPSIS = "…"
-
-Parts = list[tuple[str, str]]
 
 
 class Stats(CachedStyles, Widget):
@@ -99,7 +97,6 @@ class Stats(CachedStyles, Widget):
         style = self.cached_style
         segments = [Segment(text, style(cls)) for text, cls in parts]
         if sum(cell_len(text) for text, _ in parts) > width > 0:
-            cut = Strip(segments).crop(0, width - 1)
-            last = style(parts[-1][1]) if parts else base
-            segments = [*cut, Segment(set_cell_size(ELLIPSIS, 1), last)]
+            cut = list(Strip(segments).crop(0, width - 1))
+            segments = [*cut, Segment(ELLIPSIS, cut[-1].style if cut else base)]
         return Strip(segments).crop_extend(0, width, base)
