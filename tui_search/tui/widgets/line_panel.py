@@ -80,9 +80,22 @@ def update_scrollbar(bar: ScrollBar, **values: float) -> None:
     if not bar.vertical or len(after) != len(before):
         bar.refresh()
         return
-    for y, (new, old) in enumerate(zip(after, before)):
-        if new != old:
-            bar.refresh(Region(0, y, bar.size.width, 1))
+    refresh_rows(bar, [new != old for new, old in zip(after, before)], bar.size.width)
+
+
+def refresh_rows(widget: Widget, changed: list[bool], width: int) -> None:
+    """Repaint the rows of ``widget`` flagged in ``changed``: one region a run of them (a
+    refresh costs about as much as drawing a short line)."""
+    y, rows = 0, len(changed)
+    while y < rows:
+        if not changed[y]:
+            y += 1
+            continue
+        end = y + 1
+        while end < rows and changed[end]:
+            end += 1
+        widget.refresh(Region(0, y, width, end - y))
+        y = end
 
 
 def window_strip(segments: list[Segment], x: int, width: int, fill: Style) -> Strip:
@@ -323,6 +336,4 @@ class LinePanel(QuietScrollbars, CachedStyles, ScrollView, can_focus=True):
         if painted is None or painted[0] != offset or painted[1] != size:
             self.refresh()
             return
-        for y, (new, old) in enumerate(zip(rows, painted[2])):
-            if new != old:
-                self.refresh(Region(0, y, size.width, 1))
+        refresh_rows(self, [new != old for new, old in zip(rows, painted[2])], size.width)
