@@ -201,15 +201,19 @@ class QuietScrollbars:
 
     def watch_scroll_x(self, old_value: float, new_value: float) -> None:
         view: ScrollView = self  # type: ignore[assignment]
-        if view.show_horizontal_scrollbar:
-            update_scrollbar(view.horizontal_scrollbar, position=new_value)
-        if round(old_value) != round(new_value):
-            view.refresh(view.size.region)
+        self._scrolled(view.show_horizontal_scrollbar and view.horizontal_scrollbar,
+                       old_value, new_value)
 
     def watch_scroll_y(self, old_value: float, new_value: float) -> None:
         view: ScrollView = self  # type: ignore[assignment]
-        if view.show_vertical_scrollbar:
-            update_scrollbar(view.vertical_scrollbar, position=new_value)
+        self._scrolled(view.show_vertical_scrollbar and view.vertical_scrollbar,
+                       old_value, new_value)
+
+    def _scrolled(self, bar: ScrollBar | bool, old_value: float, new_value: float) -> None:
+        """What ``ScrollView.watch_scroll_x/y`` do, the bar moved by :func:`update_scrollbar`."""
+        view: ScrollView = self  # type: ignore[assignment]
+        if isinstance(bar, ScrollBar):
+            update_scrollbar(bar, position=new_value)
         if round(old_value) != round(new_value):
             view.refresh(view.size.region)
 
