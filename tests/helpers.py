@@ -35,7 +35,9 @@ def grid_from_rows(rows: list[str]) -> Grid:
     return grid
 
 
-def reference_distances(grid: Grid, corner_cutting: bool = True) -> dict[tuple[int, int], int]:
+def reference_distances(
+    grid: Grid, corners: str = "always", order: tuple[str, ...] | None = None
+) -> dict[tuple[int, int], int]:
     """Fewest moves from the start to every reachable cell, by relaxing all edges until
     nothing changes (Bellman-Ford): deliberately not a queue-based search, so it checks
     BFS independently."""
@@ -48,8 +50,17 @@ def reference_distances(grid: Grid, corner_cutting: bool = True) -> dict[tuple[i
         for cell, d in dist.items():
             if d == inf or grid.is_blocked(cell):
                 continue
-            for _, nxt in grid.neighbours(cell, corner_cutting=corner_cutting):
+            moves = grid.neighbours(cell, corners=corners) if order is None else (
+                grid.neighbours(cell, order, corners))
+            for _, nxt in moves:
                 if dist[nxt] > d + 1:
                     dist[nxt] = d + 1
                     changed = True
     return {c: int(d) for c, d in dist.items() if d != inf}
+
+
+def summary(run) -> dict:
+    """A recorded run's whole result as the headless JSON gives it."""
+    from tui_search.cli import json_summary
+
+    return json_summary(run.outcome())

@@ -25,12 +25,12 @@ def test_headless_json_on_the_tutorial(capsys) -> None:
     code, out, err = run_cli(capsys, TUTORIAL, "--headless", "--json")
     assert code == 0 and err == ""
     result = json.loads(out)
-    assert set(result) == {"algorithm", "found", "path", "moves", "steps", "cost", "expanded",
-                           "generated", "max_frontier", "gave_up"}
+    assert set(result) == {"algorithm", "found", "path", "moves", "length", "cost", "expanded",
+                           "discarded", "generated", "max_frontier", "gave_up", "semantics"}
     assert result["found"] and result["algorithm"] == "bfs"
     assert result["path"][0] == [0, 0] and result["path"][-1] == [5, 2]
     assert result["moves"] == ["S", "SE", "NE", "NE", "E", "SE", "S"]
-    assert result["steps"] == 7 and result["expanded"] == 22
+    assert result["length"] == 7 and result["expanded"] == 22
 
 
 def test_headless_human_summary(capsys) -> None:
@@ -103,7 +103,7 @@ def test_bfs_cost_matches_the_scenario_optimum_when_corners_are_respected(capsys
         (["nope.txt", "--headless"], "tui-search: nope.txt: "),
         ([TUTORIAL, "--headless", "--bogus"], "tui-search: error: unrecognized arguments"),
         ([TUTORIAL, "--headless", "-a", "astar"], "tui-search: error: argument -a/--algorithm"),
-        ([TUTORIAL, "--headless", "--order", "N,S"], "tui-search: error: --order 'N,S'"),
+        ([TUTORIAL, "--headless", "--order", "N,UP"], "tui-search: error: --order 'N,UP'"),
         ([TUTORIAL, "--headless", "--start", "x"], "tui-search: error: --start 'x'"),
         ([TUTORIAL, "--headless", "--start", "9,9"], f"tui-search: {TUTORIAL}"),
         ([TUTORIAL, "--headless", "--goal", "1,0"], f"tui-search: {TUTORIAL}"),
@@ -179,7 +179,7 @@ def test_max_steps_gives_up_with_exit_code_3(capsys) -> None:
     assert code == 3 and err == ""
     assert result["gave_up"] and not result["found"] and result["expanded"] == 30
     code, out, _ = run_cli(capsys, TUTORIAL, "--headless", "-a", "iddfs", "--max-steps", "30")
-    assert out.splitlines()[0].endswith("gave up after 30 expansions (raise --max-steps)")
+    assert out.splitlines()[0].endswith("gave up at --max-steps 30 (raise it to search on)")
     code, out, _ = run_cli(capsys, TUTORIAL, "--headless", "-a", "iddfs", "--max-steps", "85",
                            "--json")
     assert code == 0 and json.loads(out)["found"] and not json.loads(out)["gave_up"]

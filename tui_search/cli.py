@@ -13,6 +13,7 @@ from pathlib import Path
 from typing import IO, NoReturn
 
 from tui_search import __version__
+from tui_search.engine.algorithms import ALGORITHMS, DEFAULT_ALGORITHM, get_algorithm
 from tui_search.engine.grid import DEFAULT_ORDER, Grid, parse_order
 from tui_search.engine.mapfile import (
     MapError,
@@ -22,8 +23,10 @@ from tui_search.engine.mapfile import (
     parse_cell,
     parse_map_text,
 )
-from tui_search.engine.run import MAX_STEPS, Run
-from tui_search.engine.search import ALGORITHM_NAMES, ALGORITHMS, SearchOptions
+from tui_search.engine.outcome import Outcome
+from tui_search.engine.reference import Expansion, stream
+from tui_search.engine.run import MAX_STEPS
+from tui_search.engine.semantics import CORNER_RULES, GOAL_TESTS, VISIT_RULES, Semantics
 
 EXIT_FOUND, EXIT_NO_PATH, EXIT_BAD_INPUT, EXIT_GAVE_UP = 0, 1, 2, 3
 TUTORIAL_NAME = "tutorial.txt"
@@ -47,18 +50,28 @@ def build_parser() -> argparse.ArgumentParser:
     )
     p.add_argument("map", nargs="?", help="a text map (.txt) or a MovingAI map (.map)")
     p.add_argument("--version", action="version", version=f"tui-search {__version__}")
-    p.add_argument("-a", "--algorithm", choices=ALGORITHMS, default="bfs",
-                   help="bfs (FIFO queue), dfs (LIFO stack) or iddfs (iterative deepening)")
+    p.add_argument("-a", "--algorithm", choices=list(ALGORITHMS), default=DEFAULT_ALGORITHM,
+                   help="; ".join(f"{a.key}: {a.name.lower()}" for a in ALGORITHMS.values()))
     p.add_argument("--start", metavar="X,Y", help="start cell (overrides the map's S)")
     p.add_argument("--goal", metavar="X,Y", help="goal cell (overrides the map's G)")
     p.add_argument("--scen", metavar="FILE", help="a MovingAI .scen file to take start and goal from")
     p.add_argument("--scen-row", metavar="N", type=int, default=None,
                    help="problem N of --scen, counted from 0 after the version line")
     p.add_argument("--order", metavar="DIRS", default=",".join(DEFAULT_ORDER),
-                   help="neighbour order, a permutation of the 8 directions "
-                   "(default %(default)s)")
+                   help="the moves tried, in order: any of the 8 directions, e.g. N,W,S,E for "
+                   "a 4-connected grid (default %(default)s)")
+    p.add_argument("--corners", choices=CORNER_RULES, default=None,
+                   help="may a diagonal pass blocked corners: always (default); one: not when "
+                   "both side cells are blocked; never: not when either is (MovingAI's rule)")
     p.add_argument("--no-corner-cutting", action="store_true",
-                   help="forbid a diagonal move when a cell beside it is blocked")
+                   help="the same as --corners never")
+    p.add_argument("--visit", choices=VISIT_RULES, default=None,
+                   help="when a cell counts as visited: generate (when pushed, default) or "
+                   "expand (when taken off: a cell may be on the frontier several times)")
+    p.add_argument("--goal-test", choices=GOAL_TESTS, default="generate",
+                   help="stop when the goal is pushed (generate, default) or taken off (expand)")
+    p.add_argument("--tree-search", action="store_true",
+                   help="no visited set: skip only cells on the node's own path")
     p.add_argument("--max-steps", metavar="N", type=_positive, default=MAX_STEPS,
                    help=f"give up after N expansions (default {MAX_STEPS:,}: iterative "
                    "deepening on a big map can take billions)")
@@ -116,41 +129,95 @@ def load_problem(args: argparse.Namespace) -> tuple[Grid, Path | None]:
     return grid, path
 
 
-def _options(args: argparse.Namespace) -> SearchOptions:
+def semantics_from(args: argparse.Namespace) -> Semantics:
+    """The search choices the flags ask for; a combination that makes no sense is a
+    UsageError."""
     try:
         order = parse_order(args.order)
     except ValueError as exc:
         raise UsageError(f"--order {args.order!r}: {exc}") from None
-    return SearchOptions(order=order, corner_cutting=not args.no_corner_cutting)
+    corners = args.corners or ("never" if args.no_corner_cutting else "always")
+    if args.no_corner_cutting and corners != "never":
+        raise UsageError(f"--no-corner-cutting means --corners never, not {corners}")
+    if args.tree_search and args.visit is not None:
+        raise UsageError("--visit does not apply to --tree-search (it has no visited set)")
+    try:
+        sem = Semantics(order=order, corners=corners, visit=args.visit or "generate",
+                        goal_test=args.goal_test, tree_search=args.tree_search)
+        sem.check(get_algorithm(args.algorithm))
+    except ValueError as exc:
+        if args.visit is not None:
+            raise UsageError(f"--visit: {exc}") from None
+        raise UsageError(str(exc)) from None
+    return sem
 
 
-def write_trace(run: Run, out: IO[str]) -> None:
-    """One JSON object per expansion, in order (IDDFS adds the depth limit)."""
-    iddfs = run.algorithm == "iddfs"
-    for step in run.steps():
-        obj: dict = {
-            "step": step.index,
-            "node": list(step.node),
-            "successors": [{"dir": d, "node": list(c)} for d, c in step.successors],
-        }
-        if iddfs:
-            obj["depth_limit"] = step.depth_limit
-        out.write(json.dumps(obj, separators=(", ", ": ")) + "\n")
+def trace_line(step: Expansion) -> str:
+    """One JSON object per step: the node taken off and exactly the successors it added, in
+    order; iterative deepening adds the depth limit, a discarded step says so."""
+    obj: dict = {
+        "step": step.index,
+        "node": list(step.node.cell),
+        "successors": [{"dir": s.move, "node": list(s.cell)} for s in step.successors],
+    }
+    if step.depth_limit is not None:
+        obj["depth_limit"] = step.depth_limit
+    if step.discarded:
+        obj["discarded"] = True
+    return json.dumps(obj, separators=(", ", ": ")) + "\n"
 
 
-def human_summary(result: dict, where: str) -> str:
-    name = ALGORITHM_NAMES[result["algorithm"]]
-    outcome = "path found" if result["found"] else "no path"
-    if result["gave_up"]:
-        outcome = f"gave up after {result['expanded']:,} expansions (raise --max-steps)"
-    lines = [f"{name} on {where}: {outcome}"]
-    if result["found"]:
-        moves = ", ".join(result["moves"]) or "(start is the goal)"
-        lines.append(f"  moves:        {result['steps']} ({moves})")
-        lines.append(f"  cost:         {result['cost']:.3f}")
-    lines.append(f"  expanded:     {result['expanded']}")
-    lines.append(f"  generated:    {result['generated']}")
-    lines.append(f"  max frontier: {result['max_frontier']}")
+def json_summary(outcome: Outcome) -> dict:
+    """The headless JSON object (README: "Headless output")."""
+    path, moves = outcome.path, outcome.moves
+    return {
+        "algorithm": outcome.algorithm,
+        "found": outcome.found,
+        "path": [list(c) for c in path] if path is not None else None,
+        "moves": moves,
+        "length": outcome.length,
+        "cost": round(outcome.cost, 6) if outcome.cost is not None else None,
+        "expanded": outcome.expanded,
+        "discarded": outcome.discarded,
+        "generated": outcome.generated,
+        "max_frontier": outcome.max_frontier,
+        "gave_up": outcome.gave_up,
+        "semantics": outcome.semantics.as_json(),
+    }
+
+
+#: Paths with more moves than this print their first and last few moves and a count.
+SHORT_PATH = 24
+PATH_ENDS = 8
+
+
+def moves_text(moves: list[str]) -> str:
+    if not moves:
+        return "(start is the goal)"
+    if len(moves) <= SHORT_PATH:
+        return ", ".join(moves)
+    hidden = len(moves) - 2 * PATH_ENDS
+    return (", ".join(moves[:PATH_ENDS]) + f", … {hidden:,} more …, "
+            + ", ".join(moves[-PATH_ENDS:]))
+
+
+def human_summary(outcome: Outcome, where: str, max_steps: int) -> str:
+    name = get_algorithm(outcome.algorithm).name
+    result = "path found" if outcome.found else "no path"
+    if outcome.gave_up:
+        result = f"gave up at --max-steps {max_steps:,} (raise it to search on)"
+    lines = [f"{name} on {where}: {result}"]
+    differences = outcome.semantics.differences()
+    if differences:
+        lines.append(f"  semantics:    {' · '.join(differences)}")
+    if outcome.moves is not None:
+        lines.append(f"  moves:        {outcome.length:,} ({moves_text(outcome.moves)})")
+        lines.append(f"  cost:         {outcome.cost:.3f}")
+    lines.append(f"  expanded:     {outcome.expanded:,}")
+    if outcome.discarded:
+        lines.append(f"  discarded:    {outcome.discarded:,}")
+    lines.append(f"  generated:    {outcome.generated:,}")
+    lines.append(f"  max frontier: {outcome.max_frontier:,}")
     return "\n".join(lines)
 
 
@@ -162,29 +229,37 @@ def run_headless(args: argparse.Namespace, grid: Grid, path: Path | None) -> int
     if missing:
         raise MapError(where, f"the map has no {' or '.join(missing)}: give --start X,Y "
                        "--goal X,Y, or --scen FILE --scen-row N")
-    run = Run(grid, args.algorithm, _options(args), args.max_steps)
+    semantics = semantics_from(args)
+    algorithm = get_algorithm(args.algorithm)
+
+    # The search streams: each step is written as it happens and then forgotten.
+    def search(out: IO[str] | None) -> Outcome:
+        write = None if out is None else (lambda step: out.write(trace_line(step)))
+        return stream(grid, algorithm, semantics, args.max_steps, write)
+
     if args.trace == "-":
-        write_trace(run, sys.stdout)
+        outcome = search(sys.stdout)
     elif args.trace:
         try:
             with open(args.trace, "w", encoding="utf-8") as fh:
-                write_trace(run, fh)
+                outcome = search(fh)
         except OSError as exc:
             raise MapError(args.trace, f"cannot write the trace: {exc.strerror}") from None
-    result = run.summary()
+    else:
+        outcome = search(None)
     if args.json:
-        print(json.dumps(result))
+        print(json.dumps(json_summary(outcome)))
     elif args.trace != "-":
-        print(human_summary(result, where))
-    if result["gave_up"]:
+        print(human_summary(outcome, where, args.max_steps))
+    if outcome.gave_up:
         return EXIT_GAVE_UP
-    return EXIT_FOUND if result["found"] else EXIT_NO_PATH
+    return EXIT_FOUND if outcome.found else EXIT_NO_PATH
 
 
 def run_app(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
     from tui_search.tui.app import SearchApp  # Textual only when the app is wanted
 
-    app = SearchApp(grid, path=path, algorithm=args.algorithm, options=_options(args),
+    app = SearchApp(grid, path=path, algorithm=args.algorithm, options=semantics_from(args),
                     max_steps=args.max_steps)
     app.run()
     return app.return_code or 0
@@ -198,7 +273,7 @@ def main(argv: list[str] | None = None) -> int:
         grid, path = load_problem(args)
         if args.headless:
             return run_headless(args, grid, path)
-        _options(args)  # report a bad --order before the screen changes
+        semantics_from(args)  # report bad choices before the screen changes
         return run_app(args, grid, path)
     except UsageError as exc:
         print(f"tui-search: error: {exc}", file=sys.stderr)

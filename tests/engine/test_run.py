@@ -9,7 +9,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from tests.helpers import TUTORIAL_ROWS, grid_from_rows
+from tests.helpers import TUTORIAL_ROWS, grid_from_rows, summary
 from tests.engine.test_search import random_grids
 from tui_search.engine.grid import Grid
 from tui_search.engine.run import MAX_STEPS, CellState, Run
@@ -95,8 +95,8 @@ def test_the_run_owns_a_copy_of_the_grid() -> None:
     grid = grid_from_rows(TUTORIAL_ROWS)
     run = Run(grid, "bfs")
     grid.set_blocked((0, 1), True)  # the app edits its map...
-    assert run.summary()["found"]  # ...and the old run is unaffected
-    assert Run(grid, "bfs").summary()["found"] is False  # a new run sees the edit
+    assert summary(run)["found"]  # ...and the old run is unaffected
+    assert summary(Run(grid, "bfs"))["found"] is False  # a new run sees the edit
 
 
 def test_lazy_recording_advances_in_chunks() -> None:
@@ -141,7 +141,7 @@ def test_a_run_gives_up_exactly_at_its_step_limit(algorithm) -> None:
     assert run.k == run.total == limit
     # what it did record is the same as the full run's first steps
     assert list(run.rec.step_end) == list(full.rec.step_end[: limit + 1])
-    assert run.summary()["gave_up"] and not full.summary()["gave_up"]
+    assert summary(run)["gave_up"] and not summary(full)["gave_up"]
 
 
 def test_iddfs_on_a_big_maze_gives_up_at_the_default_limit_not_the_memory() -> None:
@@ -169,26 +169,26 @@ def test_a_limit_of_more_than_a_chunk_is_exact_too(algorithm, limit) -> None:
     assert len(run.rec.gen_node) == run.rec.step_end[limit]
     run.goto(limit)
     assert run.at_end and run.frontier_len() > 0
-    assert run.summary()["expanded"] == limit
+    assert summary(run)["expanded"] == limit
 
 
 def test_a_goal_found_past_the_limit_is_not_found() -> None:
     """On a 1-row corridor BFS generates the goal while expanding its neighbour, at step 99
     (the start's expansion is step 1).  A limit of 98 stops it one step short."""
     grid = Grid(100, 1, start=(0, 0), goal=(99, 0))
-    assert Run(grid, "bfs").summary()["expanded"] == 99
+    assert summary(Run(grid, "bfs"))["expanded"] == 99
     run = Run(grid, "bfs", max_steps=99)  # exactly what the search needs: found
-    assert run.summary()["found"] and not run.gave_up
+    assert summary(run)["found"] and not run.gave_up
     run = Run(grid, "bfs", max_steps=98)
-    assert run.summary()["gave_up"] and not run.found and run.rec.steps == 98
+    assert summary(run)["gave_up"] and not run.found and run.rec.steps == 98
 
 
 def test_iddfs_that_ends_exactly_at_the_limit_has_not_given_up() -> None:
     """No path, found out on the very step the limit allows: that is "no path", not a give-up."""
     grid = grid_from_rows(["S#G"])
-    steps = Run(grid, "iddfs").summary()["expanded"]
+    steps = summary(Run(grid, "iddfs"))["expanded"]
     run = Run(grid, "iddfs", max_steps=steps)
-    result = run.summary()
+    result = summary(run)
     assert not result["gave_up"] and not result["found"] and result["expanded"] == steps
 
 
@@ -196,6 +196,6 @@ def test_a_goal_found_in_the_chunk_past_the_limit_is_cut_off_too() -> None:
     width = CHUNK + 1000  # the goal is generated at step width - 1, in the second chunk
     grid = Grid(width, 1, start=(0, 0), goal=(width - 1, 0))
     run = Run(grid, "bfs", max_steps=CHUNK + 500)
-    result = run.summary()
+    result = summary(run)
     assert result["gave_up"] and not result["found"] and result["path"] is None
     assert result["expanded"] == CHUNK + 500 and result["generated"] == CHUNK + 501  # +start

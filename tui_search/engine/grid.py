@@ -36,9 +36,10 @@ SQRT2 = math.sqrt(2.0)
 
 
 def parse_order(text: str) -> tuple[str, ...]:
-    """Parse ``"N,NE,E,SE,S,SW,W,NW"`` into a permutation of the eight directions.
+    """Parse ``"N,NE,E,SE,S,SW,W,NW"`` (or any ordered, non-empty subset of the eight
+    directions, e.g. ``"N,W,S,E"`` for the 4-connected grid) into a tuple of names.
 
-    Raises ``ValueError`` with a one-line reason when it is not a permutation.
+    Raises ``ValueError`` with a one-line reason when it is not one.
     """
     names = tuple(part.strip().upper() for part in text.split(",") if part.strip())
     unknown = [n for n in names if n not in DELTAS]
@@ -47,9 +48,8 @@ def parse_order(text: str) -> tuple[str, ...]:
     if len(set(names)) != len(names):
         dup = next(n for n in names if names.count(n) > 1)
         raise ValueError(f"direction {dup} is given twice")
-    if len(names) != 8:
-        missing = [n for n in DIRECTIONS if n not in names]
-        raise ValueError(f"the order must name all eight directions; missing {', '.join(missing)}")
+    if not names:
+        raise ValueError("name at least one direction (N, NE, E, SE, S, SW, W, NW)")
     return names
 
 
@@ -98,10 +98,11 @@ class Grid:
         return bytes(self.blocked[y * w : (y + 1) * w])
 
     def neighbours(
-        self, cell: Cell, order: tuple[str, ...] = DEFAULT_ORDER, corner_cutting: bool = True
+        self, cell: Cell, order: tuple[str, ...] = DEFAULT_ORDER, corners: str = "always"
     ) -> list[tuple[str, Cell]]:
-        """Legal moves from ``cell`` in ``order`` (ignoring visited state): the reference
-        definition that the fast search loops must agree with."""
+        """Legal moves from ``cell`` in ``order`` under the corner rule ``corners``
+        (``always``, ``one`` or ``never``; see :mod:`tui_search.engine.semantics`), ignoring
+        visited state: the reference definition that the fast search loops must agree with."""
         x, y = cell
         out = []
         for name in order:
@@ -109,8 +110,9 @@ class Grid:
             nxt = (x + dx, y + dy)
             if not self.is_free(nxt):
                 continue
-            if dx and dy and not corner_cutting:
-                if not (self.is_free((x + dx, y)) and self.is_free((x, y + dy))):
+            if dx and dy and corners != "always":
+                a, b = self.is_free((x + dx, y)), self.is_free((x, y + dy))
+                if not (a and b if corners == "never" else a or b):
                     continue
             out.append((name, nxt))
         return out

@@ -23,16 +23,11 @@ from dataclasses import dataclass
 from enum import IntEnum
 from itertools import accumulate
 
-from tui_search.engine.grid import DIRECTIONS, Cell, Grid, path_cost
-from tui_search.engine.search import (
-    ALGORITHMS,
-    CHUNK,
-    LOOPS,
-    ROOT_DIR,
-    Problem,
-    Record,
-    SearchOptions,
-)
+from tui_search.engine.algorithms import DEFAULT_ALGORITHM, Frontier, get_algorithm
+from tui_search.engine.grid import DIRECTIONS, Cell, Grid
+from tui_search.engine.outcome import Outcome
+from tui_search.engine.search import CHUNK, ROOT_DIR, Problem, Record, loop_for
+from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
 
 #: Direction names indexed by stored direction code; a root is shown as START.
 DIR_NAMES: tuple[str, ...] = DIRECTIONS + ("START",)
@@ -57,6 +52,7 @@ class Step:
     successors: tuple[tuple[str, Cell], ...]
     depth_limit: int | None = None
     found_goal: bool = False
+    discarded: bool = False
 
 
 #: The default step limit: expansions recorded before a run gives up (iterative deepening
@@ -73,22 +69,22 @@ class Run:
     def __init__(
         self,
         grid: Grid,
-        algorithm: str = "bfs",
-        options: SearchOptions = SearchOptions(),
+        algorithm: str = DEFAULT_ALGORITHM,
+        semantics: Semantics = DEFAULT_SEMANTICS,
         max_steps: int = MAX_STEPS,
     ) -> None:
-        if algorithm not in ALGORITHMS:
-            raise ValueError(f"unknown algorithm {algorithm!r} (use {', '.join(ALGORITHMS)})")
+        self.algo = algo = get_algorithm(algorithm)
+        semantics.check(algo)
         self.grid = grid.copy()
         self.algorithm = algorithm
-        self.options = options
-        self.problem = Problem(self.grid, options)
+        self.semantics = semantics
+        self.problem = Problem(self.grid, semantics)
         self.rec = Record()
         if max_steps < 1:
             raise ValueError("max_steps must be at least 1")
         self.max_steps = max_steps
-        self._loop = LOOPS[algorithm](self.problem, self.rec, min(CHUNK, max_steps))
-        self._lifo = algorithm != "bfs"
+        self._loop = loop_for(algo, semantics)(self.problem, self.rec, min(CHUNK, max_steps))
+        self._lifo = algo.frontier is Frontier.LIFO
         size = len(self.problem.walls)
         # Per-cell counters at the current position: generation events and expansions.
         self._n_gen = array("i", bytes(4 * size))
@@ -121,6 +117,8 @@ class Run:
             if isinstance(rec.step_exp, array):
                 del rec.step_exp[n + 1 :]
             del rec.gen_node[events:]
+            while rec.discarded and rec.discarded[-1] > n:
+                rec.discarded.pop()
             if rec.gen_depth is not None:
                 del rec.gen_depth[events:]
             while rec.iter_first_step[-1] > n:
@@ -454,7 +452,19 @@ class Run:
     # -- counts ----------------------------------------------------------------------------
     @property
     def expanded(self) -> int:
-        return self.k
+        """Steps up to the position that expanded a node (discarded ones do not)."""
+        return self.k - self.discarded
+
+    @property
+    def discarded(self) -> int:
+        """Steps up to the position that took off a cell already expanded (visit on expand)."""
+        return bisect_right(self.rec.discarded, self.k)
+
+    def is_discarded(self, k: int) -> bool:
+        """Did step ``k`` take off a cell already expanded, and so do nothing?"""
+        d = self.rec.discarded
+        i = bisect_right(d, k) - 1
+        return i >= 0 and d[i] == k
 
     @property
     def generated(self) -> int:
@@ -521,6 +531,7 @@ class Run:
             successors=succ,
             depth_limit=self.depth_limit(k),
             found_goal=rec.found and k == rec.steps,
+            discarded=self.is_discarded(k),
         )
 
     def steps(self) -> Iterator[Step]:
@@ -535,23 +546,21 @@ class Run:
             yield self.step(k)
             k += 1
 
-    def summary(self) -> dict:
+    def outcome(self) -> Outcome:
         """The result of the whole search (records it all first)."""
         self.advance()
-        path = self.path()
-        moves = self.moves()
-        return {
-            "algorithm": self.algorithm,
-            "found": self.found,
-            "path": [list(c) for c in path] if path is not None else None,
-            "moves": moves,
-            "steps": len(moves) if moves is not None else None,
-            "cost": round(path_cost(moves), 6) if moves is not None else None,
-            "expanded": self.rec.steps,
-            "generated": len(self.rec.gen_node),
-            "max_frontier": self.peak_frontier(self.rec.steps),
-            "gave_up": self.rec.gave_up,
-        }
+        rec = self.rec
+        return Outcome(
+            algorithm=self.algorithm,
+            semantics=self.semantics,
+            path=self.path(),
+            moves=self.moves(),
+            expanded=rec.steps - len(rec.discarded),
+            discarded=len(rec.discarded),
+            generated=len(rec.gen_node),
+            max_frontier=self.peak_frontier(rec.steps),
+            gave_up=rec.gave_up,
+        )
 
 
 __all__ = ["CellState", "DIR_NAMES", "ROOT_DIR", "Run", "Step"]

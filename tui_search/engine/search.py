@@ -1,50 +1,40 @@
-"""BFS, DFS and iterative deepening, written as generators that record every expansion.
+"""The fast search loops that record every expansion, for the app's runs.
 
-One loop shape, three frontiers: BFS takes the oldest generated node (a FIFO queue), DFS the
-newest (a LIFO stack), iterative deepening runs a depth-limited DFS with limits 0, 1, 2, ...
+The reference -- the definition of every algorithm under every choice -- is the generic loop of
+:mod:`tui_search.engine.reference`; each loop here is held equal to it, array for array, by a
+hypothesis test.  They exist because they pay: the app records a million expansions in about
+the time a bare BFS takes.
+
+* :func:`bfs` and :func:`dfs`: graph search with the tutorial's rules (a cell is visited when
+  generated, the goal tested when generated): the hot paths.
+* :func:`general`: BFS or DFS under any other choice (visit on expand, goal test on expand,
+  tree search).
+* :func:`iddfs`: iterative deepening, under every choice that applies to it.
+
 Each loop appends to a :class:`Record` -- a few flat arrays, 8 to 16 bytes per expansion -- and
-yields after every ``chunk`` expansions so a caller (the app, in a worker or in slices) can stop
-and show what is there.  :class:`tui_search.engine.run.Run` turns the record into "the state at
-step k" and into :class:`~tui_search.engine.run.Step` values, one per expansion.
-
-Semantics (the tutorial's, made exact):
-
-* A node is marked visited when it is *generated* (added to the frontier), so it is never added
-  twice.  The goal test happens when a node is generated: the search stops at once, the rest of
-  that expansion's successors are not generated, and that expansion counts as expanded.
-* Successors are generated in the neighbour order (default N, NW, W, SW, S, SE, E, NE); DFS pushes
-  them in that order, so the last one pushed is expanded next.
-* Cells are stored as indices into a copy of the map padded with a border of walls, so the hot
-  loops need no bounds checks: ``p = (y + 1) * (width + 2) + (x + 1)``.
+yields after every ``chunk`` expansions so a caller (the app, in slices) can stop and show what
+is there.  :class:`tui_search.engine.run.Run` turns the record into "the state at step k".
+The move order and the corner rule live in :class:`Problem`, so no loop tests corners: a cell's
+legal moves are ``moves[mask[p]]``.  Cells are indices into a copy of the map padded with a
+border of walls, so the loops need no bounds checks: ``p = (y + 1) * (width + 2) + (x + 1)``.
 """
 
 from __future__ import annotations
 
 from array import array
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
+from functools import partial
 from itertools import repeat
 
-from tui_search.engine.grid import DEFAULT_ORDER, DELTAS, DIR_CODE, Grid
+from tui_search.engine.algorithms import Algorithm, Frontier
+from tui_search.engine.grid import DELTAS, DIR_CODE, Grid
+from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
 
-ALGORITHMS: tuple[str, ...] = ("bfs", "dfs", "iddfs")
-ALGORITHM_NAMES: dict[str, str] = {
-    "bfs": "Breadth-first search",
-    "dfs": "Depth-first search",
-    "iddfs": "Iterative deepening",
-}
 #: Direction code of a root (the start), which was reached by no move.
 ROOT_DIR = 8
 #: Expansions between two yields of a search generator.
 CHUNK = 4096
-
-
-@dataclass(frozen=True)
-class SearchOptions:
-    """How successors are generated: their order, and whether diagonals may cut corners."""
-
-    order: tuple[str, ...] = DEFAULT_ORDER
-    corner_cutting: bool = True
 
 
 @dataclass
@@ -63,6 +53,9 @@ class Record:
     Iterative deepening restarts from a new root event per iteration:
     ``iter_first_step[i]``, ``iter_root[i]`` and ``iter_limit[i]`` describe iteration ``i``.
     BFS and DFS have one iteration with limit ``None``.
+
+    ``discarded`` lists, in order, the steps that took off a cell already expanded (visit on
+    expand): they expand nothing and generate nothing.
     """
 
     gen_node: array = field(default_factory=lambda: array("i"))
@@ -72,6 +65,7 @@ class Record:
     iter_first_step: list[int] = field(default_factory=lambda: [1])
     iter_root: list[int] = field(default_factory=lambda: [0])
     iter_limit: list[int | None] = field(default_factory=lambda: [None])
+    discarded: array = field(default_factory=lambda: array("i"))
     done: bool = False
     goal_gen: int = -1  # the event that generated the goal, once found
     gave_up: bool = False  # stopped at the run's step limit before the search ended
@@ -91,7 +85,7 @@ class Record:
 
     def nbytes(self) -> int:
         """Bytes held by the arrays (for the memory benchmark)."""
-        arrays = [self.gen_node, self.step_end, self.step_exp, self.gen_depth]
+        arrays = [self.gen_node, self.step_end, self.step_exp, self.gen_depth, self.discarded]
         return sum(a.buffer_info()[1] * a.itemsize for a in arrays if isinstance(a, array))
 
 
@@ -106,12 +100,13 @@ class Problem:
     """A grid prepared for the loops: padded walls, padded start/goal, neighbour offsets.
 
     ``moves[mask[p]]`` is the tuple of offsets to try from padded cell ``p``, in the neighbour
-    order.  With corner cutting (the default) every mask is 0 and ``moves[0]`` holds all eight;
-    without it, ``mask[p]`` has a bit set for each diagonal squeezed by a blocked side, and
-    ``moves[mask]`` leaves those diagonals out -- so the hot loops never test corners.
+    order.  With corners ``always`` (the default) every mask is 0 and ``moves[0]`` holds every
+    move of the order; otherwise ``mask[p]`` has a bit set for each diagonal the corner rule
+    refuses from ``p``, and ``moves[mask]`` leaves those diagonals out -- so the hot loops never
+    test corners.
     """
 
-    def __init__(self, grid: Grid, options: SearchOptions = SearchOptions()) -> None:
+    def __init__(self, grid: Grid, semantics: Semantics = DEFAULT_SEMANTICS) -> None:
         if grid.start is None or grid.goal is None:
             raise ValueError("the map needs a start and a goal")
         for name, cell in (("start", grid.start), ("goal", grid.goal)):
@@ -129,26 +124,30 @@ class Problem:
         self.walls = walls
         self.start = self.pad(grid.start)
         self.goal = self.pad(grid.goal)
-        self.options = options
-        offsets = [DELTAS[name][1] * stride + DELTAS[name][0] for name in options.order]
-        self.dir_of_offset = {off: DIR_CODE[name] for name, off in zip(options.order, offsets)}
-        if options.corner_cutting:
+        self.semantics = semantics
+        order = semantics.order
+        offsets = [DELTAS[name][1] * stride + DELTAS[name][0] for name in order]
+        self.dir_of_offset = {off: DIR_CODE[name] for name, off in zip(order, offsets)}
+        if semantics.corners == "always" or not any(len(name) == 2 for name in order):
             self.mask = bytes(len(walls))
             self.moves = [tuple(offsets)]
         else:
-            self.mask, self.moves = self._corner_masks(options.order, offsets)
+            self.mask, self.moves = self._corner_masks(order, offsets, semantics.corners)
 
-    def _corner_masks(self, order, offsets) -> tuple[bytes, list[tuple[int, ...]]]:
-        """Per cell, a bit per diagonal that would cut a blocked corner (whole-array ops)."""
+    def _corner_masks(
+        self, order: tuple[str, ...], offsets: list[int], corners: str
+    ) -> tuple[bytes, list[tuple[int, ...]]]:
+        """Per cell, a bit per diagonal the corner rule refuses (whole-array operations):
+        ``never`` refuses it when either side cell is blocked, ``one`` when both are."""
         walls, size = bytes(self.walls), len(self.walls)
         mask = 0
         diagonals = [i for i, name in enumerate(order) if len(name) == 2]
         for bit, i in enumerate(diagonals):
             dx, dy = DELTAS[order[i]]
-            side_a = _shifted(walls, dx)
-            side_b = _shifted(walls, dy * self.stride)
-            squeezed = int.from_bytes(side_a, "little") | int.from_bytes(side_b, "little")
-            mask |= squeezed << bit  # each byte is 0 or 1, so bit << bit stays in its byte
+            side_a = int.from_bytes(_shifted(walls, dx), "little")
+            side_b = int.from_bytes(_shifted(walls, dy * self.stride), "little")
+            refused = side_a | side_b if corners == "never" else side_a & side_b
+            mask |= refused << bit  # each byte is 0 or 1, so bit << bit stays in its byte
         table = []
         for m in range(1 << len(diagonals)):
             banned = {diagonals[b] for b in range(len(diagonals)) if m >> b & 1}
@@ -249,6 +248,89 @@ def dfs(problem: Problem, rec: Record, chunk: int = CHUNK) -> Iterator[int]:
     rec.done = True
 
 
+def _on_path(cell: int, g: int, gen_node: array, parent: array) -> bool:
+    """Tree search: is ``cell`` on the path from the root to event ``g`` (``g`` included)?"""
+    while g >= 0:
+        if gen_node[g] == cell:
+            return True
+        g = parent[g]
+    return False
+
+
+def general(
+    problem: Problem, rec: Record, chunk: int = CHUNK, lifo: bool = False
+) -> Iterator[int]:
+    """BFS (``lifo`` False) or DFS under any choice: visit on expand (a cell is closed when
+    taken off, and taking off a closed cell is a discarded step), the goal tested on expand,
+    or tree search (no visited set: a successor on the node's own path is skipped)."""
+    sem = problem.semantics
+    goal, moves, mask, walls = problem.goal, problem.moves, problem.mask, problem.walls
+    tree = sem.tree_search
+    close_on_push = not tree and sem.visit == "generate"
+    close_on_pop = not tree and sem.visit == "expand"
+    test_on_push = sem.goal_test == "generate"
+    closed = bytearray(walls)
+    gen_node = rec.gen_node
+    parent = array("i", [-1])  # tree search walks it to test "on the node's own path"
+    if lifo:
+        rec.step_exp = step_exp = array("i", [-1])
+    add, add_end = gen_node.append, rec.step_end.append
+    add_parent, add_discarded = parent.append, rec.discarded.append
+    start = problem.start
+    add(start)
+    if close_on_push:
+        closed[start] = 1
+    if test_on_push and start == goal:
+        rec.goal_gen, rec.done = 0, True
+        return
+    stack = [0]  # LIFO: the stack of events
+    head, count = 0, 1  # FIFO: events head .. count-1 are the queue, in generation order
+    steps = 0
+    while (stack if lifo else head < count):
+        if lifo:
+            g = stack.pop()
+            step_exp.append(g)
+        else:
+            g = head
+            head += 1
+        n = gen_node[g]
+        steps += 1
+        if close_on_pop:
+            if closed[n]:
+                add_discarded(steps)
+                add_end(count)
+                if steps % chunk == 0 and (stack if lifo else head < count):
+                    yield steps
+                continue
+            closed[n] = 1
+        if not test_on_push and n == goal:
+            add_end(count)
+            rec.goal_gen, rec.done = g, True
+            return
+        for off in moves[mask[n]]:
+            m = n + off
+            if closed[m]:  # a wall, or (graph search) a visited cell
+                continue
+            if tree:
+                if _on_path(m, g, gen_node, parent):
+                    continue
+                add_parent(g)
+            elif close_on_push:
+                closed[m] = 1
+            if lifo:
+                stack.append(count)
+            add(m)
+            count += 1
+            if test_on_push and m == goal:
+                add_end(count)
+                rec.goal_gen, rec.done = count - 1, True
+                return
+        add_end(count)
+        if steps % chunk == 0 and (stack if lifo else head < count):
+            yield steps
+    rec.done = True
+
+
 def iddfs(problem: Problem, rec: Record, chunk: int = CHUNK) -> Iterator[int]:
     """Iterative deepening: depth-limited DFS with limits 0, 1, 2, ...
 
@@ -256,12 +338,17 @@ def iddfs(problem: Problem, rec: Record, chunk: int = CHUNK) -> Iterator[int]:
     than before (it is *re-opened*); a node popped at the depth limit is expanded with no
     successors.  So iteration L reaches every cell within L moves, the goal is first found in
     iteration L = its distance, and the path has the fewest moves -- the same length as BFS.
-    The search stops with no path when an iteration cuts nothing off at its limit.
+    The search stops with no path when an iteration cuts nothing off at its limit.  With tree
+    search a successor is skipped only when it is on the node's own path (depth-limited search
+    with path checking); the goal may be tested when taken off instead of when pushed.
     """
+    sem = problem.semantics
+    tree, test_on_push = sem.tree_search, sem.goal_test == "generate"
     walls, goal, moves, mask = problem.walls, problem.goal, problem.moves, problem.mask
     gen_node = rec.gen_node
     rec.gen_depth = gen_depth = array("i")
     rec.step_exp = array("i", [-1])
+    parent = array("i")  # tree search: event -> the event it was generated from
     add, add_depth = gen_node.append, gen_depth.append
     add_exp, add_end = rec.step_exp.append, rec.step_end.append
     start = problem.start
@@ -276,7 +363,9 @@ def iddfs(problem: Problem, rec: Record, chunk: int = CHUNK) -> Iterator[int]:
             rec.iter_limit[0] = 0
         add(start)
         add_depth(0)
-        if start == goal:
+        if tree:
+            parent.append(-1)
+        if test_on_push and start == goal:
             rec.goal_gen, rec.done = root, True
             return
         best = {start: 0}
@@ -286,19 +375,31 @@ def iddfs(problem: Problem, rec: Record, chunk: int = CHUNK) -> Iterator[int]:
             g = stack.pop()
             n = gen_node[g]
             depth = gen_depth[g]
+            if not test_on_push and n == goal:
+                add_exp(g)
+                add_end(len(gen_node))
+                rec.goal_gen, rec.done = g, True
+                return
             if depth >= limit:
                 cut_off = True
             else:
                 child_depth = depth + 1
                 for off in moves[mask[n]]:
                     m = n + off
-                    if walls[m] or best.get(m, limit + 1) <= child_depth:
+                    if walls[m]:
                         continue
-                    best[m] = child_depth
+                    if tree:
+                        if _on_path(m, g, gen_node, parent):
+                            continue
+                        parent.append(g)
+                    elif best.get(m, limit + 1) <= child_depth:
+                        continue
+                    else:
+                        best[m] = child_depth
                     stack.append(len(gen_node))
                     add(m)
                     add_depth(child_depth)
-                    if m == goal:
+                    if test_on_push and m == goal:
                         add_exp(g)
                         add_end(len(gen_node))
                         rec.goal_gen, rec.done = len(gen_node) - 1, True
@@ -316,4 +417,16 @@ def iddfs(problem: Problem, rec: Record, chunk: int = CHUNK) -> Iterator[int]:
         limit += 1
 
 
-LOOPS = {"bfs": bfs, "dfs": dfs, "iddfs": iddfs}
+Loop = Callable[[Problem, Record, int], Iterator[int]]
+
+
+def loop_for(algorithm: Algorithm, semantics: Semantics) -> Loop:
+    """The fastest loop that implements ``algorithm`` under ``semantics``."""
+    if algorithm.iterative:
+        return iddfs
+    lifo = algorithm.frontier is Frontier.LIFO
+    tutorial_rules = (not semantics.tree_search and semantics.visit == "generate"
+                      and semantics.goal_test == "generate")
+    if tutorial_rules:
+        return dfs if lifo else bfs
+    return partial(general, lifo=lifo)

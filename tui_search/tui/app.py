@@ -20,7 +20,7 @@ from textual.widgets import Static
 
 from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.run import MAX_STEPS, Run
-from tui_search.engine.search import SearchOptions
+from tui_search.engine.semantics import Semantics as SearchOptions
 from tui_search.tui import playback
 from tui_search.tui.editing import EditActions
 from tui_search.tui.files import FileActions

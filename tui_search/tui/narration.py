@@ -8,11 +8,9 @@ the same thing about the step the run is at.
 
 from __future__ import annotations
 
+from tui_search.engine.algorithms import get_algorithm
 from tui_search.engine.grid import Cell, path_cost
 from tui_search.engine.run import Run
-from tui_search.engine.search import ALGORITHM_NAMES
-
-SHORT_NAMES = {"bfs": "BFS", "dfs": "DFS", "iddfs": "IDDFS"}
 
 
 def cell_text(cell: Cell | None) -> str:
@@ -20,8 +18,8 @@ def cell_text(cell: Cell | None) -> str:
 
 
 def frontier_word(run: Run) -> str:
-    """``queue`` for BFS (FIFO), ``stack`` for DFS and iterative deepening (LIFO)."""
-    return "queue" if run.algorithm == "bfs" else "stack"
+    """``queue`` for a FIFO frontier (BFS), ``stack`` for a LIFO one (DFS, IDDFS)."""
+    return run.algo.frontier.noun
 
 
 def _node_text(run: Run, g: int) -> str:
@@ -34,7 +32,7 @@ def narrate(run: Run) -> str:
     """One line about the step just taken (or, at step 0, about what happens next)."""
     word = frontier_word(run)
     k = run.k
-    limit = run.depth_limit() if run.algorithm == "iddfs" else None
+    limit = run.depth_limit() if run.algo.iterative else None
     if k == 0:
         first = f"START {cell_text(run.grid.start)} is on the {word}"
         if limit is not None:
@@ -51,8 +49,12 @@ def narrate(run: Run) -> str:
         prefix = f"Depth limit {limit}, a new iteration from START. "
     if run.at_end and run.found:
         goal = cell_text(run.gen_cell(run.rec.goal_gen))
+        if run.rec.goal_gen == expanded:  # the goal tested when taken off the frontier
+            return f"{prefix}Took the goal {goal} off the {word}: found"
         return f"{prefix}Goal found at {goal} when expanding {node}"
-    if dirs:
+    if run.is_discarded(k):
+        text = f"{prefix}Took {node} off the {word}: already expanded, discarded"
+    elif dirs:
         text = f"{prefix}Expanded {node}: added {', '.join(dirs)} to the {word}"
     elif limit is not None and run.gen_depth(expanded) >= limit:
         text = f"{prefix}Expanded {node} at the depth limit {limit}: no successors added"
@@ -74,10 +76,14 @@ def status_parts(run: Run) -> list[tuple[str, str]]:
     parts = [
         ("step", step),
         ("expanded", f"{run.expanded:,}"),
+    ]
+    if run.semantics.visit == "expand" and not run.semantics.tree_search:
+        parts.append(("discarded", f"{run.discarded:,}"))
+    parts += [
         ("generated", f"{run.generated:,}"),
         (frontier_word(run), f"{run.frontier_len():,} (peak {run.peak_frontier():,})"),
     ]
-    if run.algorithm == "iddfs":
+    if run.algo.iterative:
         parts.append(("depth limit", str(run.depth_limit())))
     return parts
 
@@ -93,4 +99,5 @@ def result_text(run: Run) -> str:
 
 
 def algorithm_title(algorithm: str) -> str:
-    return f"{SHORT_NAMES[algorithm]} · {ALGORITHM_NAMES[algorithm]}"
+    algo = get_algorithm(algorithm)
+    return f"{algo.short} · {algo.name}"

@@ -16,7 +16,8 @@ from textual.strip import Strip
 from textual.widget import Widget
 
 from tui_search.engine.run import Run
-from tui_search.tui.narration import SHORT_NAMES, narrate, result_text, status_parts
+from tui_search.engine.algorithms import get_algorithm
+from tui_search.tui.narration import narrate, result_text, status_parts
 from tui_search.tui.widgets.line_panel import CachedStyles, Parts
 
 #: What ends a line too long for the terminal.
@@ -67,7 +68,7 @@ class Stats(CachedStyles, Widget):
         note: str = "",
     ) -> None:
         sep = (" │ ", "stats--label")
-        status: Parts = [(SHORT_NAMES[algorithm], "stats--value")]
+        status: Parts = [(get_algorithm(algorithm).short, "stats--value")]
         if run is not None:
             for label, value in status_parts(run):
                 status += [sep, (f"{label} ", "stats--label"), (value, "stats--value")]

@@ -1,0 +1,224 @@
+"""One search core: the fast recorded loops equal the reference loop, under every choice.
+
+The reference (:mod:`tui_search.engine.reference`) is the definition; every loop of
+:mod:`tui_search.engine.search` must record exactly what it does -- the same events in the same
+order, the same expansions, the same discarded steps, iterations and goal -- on random maps
+under random algorithms and choices.  Then the properties the choices promise.
+"""
+
+from __future__ import annotations
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from tests.engine.test_search import random_grids
+from tests.helpers import TUTORIAL_ROWS, grid_from_rows, reference_distances
+from tui_search.engine.algorithms import ALGORITHMS, get_algorithm
+from tui_search.engine.grid import DIRECTIONS, Grid
+from tui_search.engine.reference import ReferenceSearch, stream
+from tui_search.engine.run import Run
+from tui_search.engine.search import bfs, dfs, general, iddfs, loop_for
+from tui_search.engine.semantics import CORNER_RULES, GOAL_TESTS, VISIT_RULES, Semantics
+
+#: Tree search is exponential: every comparison stops here (both loops give up alike).
+LIMIT = 1500
+
+
+@st.composite
+def semantics(draw, algorithm: str | None = None) -> tuple[str, Semantics]:
+    key = algorithm or draw(st.sampled_from(sorted(ALGORITHMS)))
+    moves = draw(st.lists(st.sampled_from(DIRECTIONS), min_size=1, max_size=8, unique=True))
+    tree = draw(st.booleans())
+    visit = "generate" if tree or get_algorithm(key).iterative else draw(
+        st.sampled_from(VISIT_RULES))
+    return key, Semantics(
+        order=tuple(moves),
+        corners=draw(st.sampled_from(CORNER_RULES)),
+        visit=visit,
+        goal_test=draw(st.sampled_from(GOAL_TESTS)),
+        tree_search=tree,
+    )
+
+
+def reference_arrays(grid: Grid, key: str, sem: Semantics, limit: int) -> dict:
+    """What the reference did, in the record's terms (cells, not padded indices)."""
+    search = ReferenceSearch(grid, get_algorithm(key), sem)
+    cells, step_end, step_exp, discarded = [grid.start], [1], [], []
+    roots, first_steps = [0], [1]
+    gave_up = False
+    for step in search:
+        if step.index > limit:
+            gave_up = True
+            break
+        if step.new_root is not None:
+            roots.append(step.new_root.event)
+            first_steps.append(step.index)
+            cells.append(step.new_root.cell)
+        assert step.node.event < len(cells) and cells[step.node.event] == step.node.cell
+        step_exp.append(step.node.event)
+        cells.extend(s.cell for s in step.successors)
+        assert [s.event for s in step.successors] == list(
+            range(len(cells) - len(step.successors), len(cells)))
+        step_end.append(len(cells))
+        if step.discarded:
+            discarded.append(step.index)
+    goal = -1 if gave_up or search.goal is None else search.goal.event
+    return {"cells": cells, "step_end": step_end, "step_exp": step_exp,
+            "discarded": discarded, "roots": roots, "first_steps": first_steps, "goal": goal,
+            "gave_up": gave_up}
+
+
+def recorded_arrays(run: Run) -> dict:
+    run.advance()
+    rec = run.rec
+    return {
+        "cells": [run.gen_cell(g) for g in range(len(rec.gen_node))],
+        "step_end": list(rec.step_end),
+        "step_exp": [rec.exp(k) for k in range(1, rec.steps + 1)],
+        "discarded": list(rec.discarded),
+        "roots": list(rec.iter_root),
+        "first_steps": list(rec.iter_first_step),
+        "goal": rec.goal_gen,
+        "gave_up": rec.gave_up,
+    }
+
+
+core = settings(max_examples=400, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+
+
+@core
+@given(random_grids(max_side=8), semantics())
+def test_every_recorded_loop_equals_the_reference(grid: Grid, choice) -> None:
+    key, sem = choice
+    assert recorded_arrays(Run(grid, key, sem, LIMIT)) == reference_arrays(grid, key, sem, LIMIT)
+
+
+@core
+@given(random_grids(max_side=8), semantics())
+def test_the_streamed_outcome_equals_the_recorded_one(grid: Grid, choice) -> None:
+    """The headless command line streams the reference: same path and counts as the app."""
+    key, sem = choice
+    assert stream(grid, get_algorithm(key), sem, LIMIT) == Run(grid, key, sem, LIMIT).outcome()
+
+
+@pytest.mark.parametrize(
+    ("key", "sem", "loop"),
+    [
+        ("bfs", Semantics(), bfs),
+        ("dfs", Semantics(corners="never", order=("N", "W", "S", "E")), dfs),
+        ("bfs", Semantics(visit="expand"), general),
+        ("dfs", Semantics(goal_test="expand"), general),
+        ("dfs", Semantics(tree_search=True), general),
+        ("iddfs", Semantics(tree_search=True, goal_test="expand"), iddfs),
+    ],
+)
+def test_the_tutorial_rules_take_the_fast_loops(key, sem, loop) -> None:
+    """The hot loops serve the tutorial's rules (any order, any corner rule); the general
+    loop every other choice -- the equality test above covers each of them."""
+    chosen = loop_for(get_algorithm(key), sem)
+    assert getattr(chosen, "func", chosen) is loop
+
+
+# -- what the choices promise ------------------------------------------------------------------
+
+
+@core
+@given(random_grids(max_side=8), semantics(algorithm="bfs"))
+def test_bfs_finds_the_fewest_moves_under_every_choice(grid: Grid, choice) -> None:
+    _, sem = choice
+    out = Run(grid, "bfs", sem, LIMIT).outcome()
+    dist = reference_distances(grid, sem.corners, sem.order)
+    if not out.gave_up:
+        assert out.found == (grid.goal in dist)
+    if out.found:
+        assert out.length == dist[grid.goal]
+
+
+@core
+@given(random_grids(max_side=8), semantics())
+def test_every_path_is_legal_under_its_rules(grid: Grid, choice) -> None:
+    """Each move of the path is one of the order's moves, allowed by the corner rule; a
+    tree-search path never repeats a cell (graph searches' paths cannot either)."""
+    key, sem = choice
+    out = Run(grid, key, sem, LIMIT).outcome()
+    if not out.found:
+        return
+    path = out.path
+    assert path[0] == grid.start and path[-1] == grid.goal
+    assert len(set(path)) == len(path)
+    for (a, b), move in zip(zip(path, path[1:]), out.moves):
+        assert (move, b) in grid.neighbours(a, sem.order, sem.corners)
+
+
+@core
+@given(random_grids(max_side=8), semantics())
+def test_a_four_direction_order_never_moves_diagonally(grid: Grid, choice) -> None:
+    key, sem = choice
+    sem = Semantics(("N", "W", "S", "E"), sem.corners, sem.visit, sem.goal_test, sem.tree_search)
+    out = Run(grid, key, sem, LIMIT).outcome()
+    assert all(len(m) == 1 for m in out.moves or [])
+
+
+@pytest.mark.parametrize("corners", ["one", "never"])
+@pytest.mark.parametrize("key", sorted(ALGORITHMS))
+def test_the_tutorial_path_squeezes_between_two_obstacles(corners: str, key: str) -> None:
+    """The tutorial's path passes a diagonal between two blocked cells: under the corner rules
+    ``one`` and ``never`` its map has no path at all."""
+    grid = grid_from_rows(TUTORIAL_ROWS)
+    assert Run(grid, key).outcome().found
+    out = Run(grid, key, Semantics(corners=corners)).outcome()
+    assert not out.found and not out.gave_up
+
+
+def test_visit_on_expand_lists_duplicates_and_discards_them() -> None:
+    """Under visit on expand a cell can be pushed twice; taking off the second copy expands
+    nothing: the step is discarded, counted apart, and generates nothing."""
+    grid = grid_from_rows(TUTORIAL_ROWS)
+    run = Run(grid, "bfs", Semantics(visit="expand"))
+    run.advance()
+    cells = [run.gen_cell(g) for g in range(len(run.rec.gen_node))]
+    assert len(cells) > len(set(cells))
+    out = run.outcome()
+    assert out.discarded > 0 and out.discarded == len(run.rec.discarded)
+    k = run.rec.discarded[0]
+    step = run.step(k)
+    assert step.discarded and step.successors == ()
+    run.goto(k)
+    assert run.expanded == k - 1 - (run.discarded - 1)
+    assert out.found and out.length == 7  # still the fewest moves
+
+
+def test_goal_test_on_expand_stops_when_the_goal_is_taken_off() -> None:
+    grid = grid_from_rows(TUTORIAL_ROWS)
+    on_push = Run(grid, "bfs").outcome()
+    on_pop = Run(grid, "bfs", Semantics(goal_test="expand"))
+    out = on_pop.outcome()
+    assert out.length == on_push.length and out.expanded > on_push.expanded
+    last = on_pop.step(on_pop.rec.steps)
+    assert last.node == grid.goal and last.found_goal and last.successors == ()
+
+
+def test_refused_combinations() -> None:
+    with pytest.raises(ValueError, match="visit"):
+        Semantics(visit="expand", tree_search=True)
+    with pytest.raises(ValueError, match="IDDFS"):
+        Run(grid_from_rows(TUTORIAL_ROWS), "iddfs", Semantics(visit="expand"))
+    with pytest.raises(ValueError):
+        Semantics(order=())
+    with pytest.raises(ValueError):
+        Semantics(corners="sometimes")
+
+
+def test_tree_search_gives_up_at_the_step_limit() -> None:
+    """Tree search is exponential: on an open map without the goal in reach it stops at the
+    limit and says so."""
+    grid = grid_from_rows(["S....", ".....", ".....", "####.", "...#G"])
+    grid.set_blocked((4, 3), True)  # the goal is walled in: no path
+    out = Run(grid, "bfs", Semantics(tree_search=True), max_steps=500).outcome()
+    assert out.gave_up and not out.found and out.steps == 500
+
+
+def test_the_bound_is_the_tutorials() -> None:
+    assert Semantics().bound(7) == 7 ** 8
+    assert Semantics(order=("N", "W", "S", "E")).bound(3) == 3 ** 4

@@ -1,0 +1,78 @@
+"""The algorithm registry: every search the app knows, as data.
+
+An algorithm is its frontier discipline (which generated node is expanded next) and whether it
+iterates (iterative deepening restarts with a growing depth limit).  Everything that names or
+describes an algorithm -- the command line's choices, the app's keys, the help screen, the
+frontier panel's title, the narration -- reads it from here, so adding one is adding an entry,
+and no UI module compares algorithm names.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from enum import Enum
+
+
+class Frontier(Enum):
+    """How the frontier orders its entries (room for a priority queue)."""
+
+    FIFO = "fifo"  # a queue: the oldest entry comes out first
+    LIFO = "lifo"  # a stack: the newest entry comes out first
+
+    @property
+    def title(self) -> str:
+        """The frontier panel's title: "Queue (FIFO)", "Stack (LIFO)"."""
+        return _TITLES[self]
+
+    @property
+    def noun(self) -> str:
+        """What the narration calls it: "queue", "stack"."""
+        return _NOUNS[self]
+
+    @property
+    def next_end(self) -> str:
+        """Where the next entry to come out is: "front", "top"."""
+        return _ENDS[self]
+
+
+_TITLES = {Frontier.FIFO: "Queue (FIFO)", Frontier.LIFO: "Stack (LIFO)"}
+_NOUNS = {Frontier.FIFO: "queue", Frontier.LIFO: "stack"}
+_ENDS = {Frontier.FIFO: "front", Frontier.LIFO: "top"}
+
+
+@dataclass(frozen=True)
+class Algorithm:
+    """One search algorithm, described."""
+
+    key: str  # what the command line and the JSON call it: "bfs"
+    name: str  # "Breadth-first search"
+    short: str  # "BFS"
+    frontier: Frontier
+    app_key: str  # the key that picks it in the app
+    summary: str  # one line for the help screen
+    iterative: bool = False  # restarts with depth limits 0, 1, 2, ...
+
+
+ALGORITHMS: dict[str, Algorithm] = {
+    a.key: a
+    for a in (
+        Algorithm("bfs", "Breadth-first search", "BFS", Frontier.FIFO, "1",
+                  "takes the oldest node from a FIFO queue: the fewest moves, much memory"),
+        Algorithm("dfs", "Depth-first search", "DFS", Frontier.LIFO, "2",
+                  "takes the newest node from a LIFO stack: little memory, any path"),
+        Algorithm("iddfs", "Iterative deepening", "IDDFS", Frontier.LIFO, "3",
+                  "depth-limited DFS with limits 0, 1, 2, ...: the fewest moves, a small stack",
+                  iterative=True),
+    )
+}
+
+#: The algorithm a run uses unless told otherwise.
+DEFAULT_ALGORITHM = "bfs"
+
+
+def get_algorithm(key: str) -> Algorithm:
+    """The registry entry for ``key``; ``ValueError`` with the choices when there is none."""
+    try:
+        return ALGORITHMS[key]
+    except KeyError:
+        raise ValueError(f"unknown algorithm {key!r} (use {', '.join(ALGORITHMS)})") from None

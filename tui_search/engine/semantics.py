@@ -1,0 +1,122 @@
+"""The search choices that textbooks, courses and the peers quietly disagree on, as one value.
+
+* ``order``: the moves tried from a cell, in the order their successors are generated -- any
+  ordered, non-empty subset of the eight directions (``N,W,S,E`` is the 4-connected grid).
+* ``corners``: may a diagonal pass blocked corners?  ``always`` (the tutorial's SE node has an NE
+  successor beside an obstacle); ``one``: refused when *both* side cells are blocked;
+  ``never``: refused when *either* is blocked (MovingAI's rule).
+* ``visit``: when a cell counts as visited.  ``generate``: when it is pushed, so it is never
+  pushed twice; ``expand``: when it is taken off and expanded, so a cell may sit on the frontier
+  several times, and taking off a cell already expanded is a *discarded* step.
+* ``goal_test``: ``generate`` stops as soon as the goal is pushed; ``expand`` when it is taken
+  off the frontier (that step counts as expanded).
+* ``tree_search``: no visited set at all; a successor is skipped only when it lies on the path
+  from the root to the node being expanded.  ``visit`` does not apply.
+
+The defaults are the tutorial's semantics.  A combination that makes no sense is refused by
+:meth:`Semantics.check` with a one-line ``ValueError``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from tui_search.engine.algorithms import Algorithm
+from tui_search.engine.grid import DEFAULT_ORDER, DELTAS
+
+CORNER_RULES: tuple[str, ...] = ("always", "one", "never")
+VISIT_RULES: tuple[str, ...] = ("generate", "expand")
+GOAL_TESTS: tuple[str, ...] = ("generate", "expand")
+
+#: One line per choice, for the settings screen and the help.
+EXPLAIN: dict[str, str] = {
+    "order": "the moves tried from a cell, in the order their successors are added",
+    "corners": "may a diagonal squeeze past blocked cells beside it?",
+    "visit": "when a cell counts as visited: when pushed, or when taken off and expanded",
+    "goal_test": "stop when the goal is pushed, or when it is taken off the frontier",
+    "tree_search": "no visited set: only cells on the node's own path are skipped",
+}
+
+
+@dataclass(frozen=True)
+class Semantics:
+    """Every choice that changes what a search does, with the tutorial's defaults."""
+
+    order: tuple[str, ...] = DEFAULT_ORDER
+    corners: str = "always"
+    visit: str = "generate"
+    goal_test: str = "generate"
+    tree_search: bool = False
+
+    def __post_init__(self) -> None:
+        if not self.order or any(d not in DELTAS for d in self.order) or len(
+            set(self.order)
+        ) != len(self.order):
+            raise ValueError(f"bad move order {self.order!r}")
+        for name, value, allowed in (
+            ("corners", self.corners, CORNER_RULES),
+            ("visit", self.visit, VISIT_RULES),
+            ("goal test", self.goal_test, GOAL_TESTS),
+        ):
+            if value not in allowed:
+                raise ValueError(f"{name} {value!r}: use {', '.join(allowed)}")
+        if self.tree_search and self.visit != "generate":
+            raise ValueError("tree search has no visited set: the visit rule does not apply")
+
+    def check(self, algorithm: Algorithm) -> None:
+        """Refuse the combinations that make no sense for ``algorithm`` (``ValueError``)."""
+        if algorithm.iterative and self.visit != "generate":
+            raise ValueError(
+                f"the visit rule does not apply to {algorithm.short} "
+                "(it re-opens a cell reached at a smaller depth)"
+            )
+
+    @property
+    def is_default(self) -> bool:
+        return self == Semantics()
+
+    def differences(self) -> list[str]:
+        """What differs from the defaults, in a few words each ("visit on expand")."""
+        out = []
+        if self.order != DEFAULT_ORDER:
+            out.append(f"moves {','.join(self.order)}")
+        if self.corners != "always":
+            out.append(f"corners: {self.corners}")
+        if self.tree_search:
+            out.append("tree search")
+        elif self.visit != "generate":
+            out.append(f"visit on {self.visit}")
+        if self.goal_test != "generate":
+            out.append(f"goal test on {self.goal_test}")
+        return out
+
+    @property
+    def branching(self) -> int:
+        """The most successors a node can have: the number of moves."""
+        return len(self.order)
+
+    def bound(self, depth: int) -> int:
+        """The tutorial's bound on nodes generated to reach depth ``d``: ``(b-1)^(d+1)`` with
+        ``b`` moves (``7^(d+1)`` for eight; one move leads back where the node came from)."""
+        return max(1, self.branching - 1) ** (depth + 1)
+
+    def as_json(self) -> dict:
+        return {
+            "order": list(self.order),
+            "corners": self.corners,
+            "visit": None if self.tree_search else self.visit,
+            "goal_test": self.goal_test,
+            "tree_search": self.tree_search,
+        }
+
+
+DEFAULT_SEMANTICS = Semantics()
+
+
+def corner_allowed(corners: str, side_a_free: bool, side_b_free: bool) -> bool:
+    """May a diagonal move pass between two side cells with these states?"""
+    if corners == "always":
+        return True
+    if corners == "one":
+        return side_a_free or side_b_free
+    return side_a_free and side_b_free
