@@ -201,9 +201,13 @@ def moves_text(moves: list[str]) -> str:
             + ", ".join(moves[-PATH_ENDS:]))
 
 
-def human_summary(outcome: Outcome, where: str, max_steps: int) -> str:
+def human_summary(
+    outcome: Outcome, where: str, max_steps: int, blocked_by: str | None = None
+) -> str:
     name = get_algorithm(outcome.algorithm).name
     result = "path found" if outcome.found else "no path"
+    if not outcome.found and not outcome.gave_up and blocked_by:
+        result += f" ({blocked_by})"
     if outcome.gave_up:
         result = f"gave up at --max-steps {max_steps:,} (raise it to search on)"
     lines = [f"{name} on {where}: {result}"]
@@ -250,7 +254,12 @@ def run_headless(args: argparse.Namespace, grid: Grid, path: Path | None) -> int
     if args.json:
         print(json.dumps(json_summary(outcome)))
     elif args.trace != "-":
-        print(human_summary(outcome, where, args.max_steps))
+        blocked_by = None
+        if not outcome.found and not outcome.gave_up and not semantics.is_default:
+            from tui_search.engine.diagnose import blocking_rule
+
+            blocked_by = blocking_rule(grid, semantics)
+        print(human_summary(outcome, where, args.max_steps, blocked_by))
     if outcome.gave_up:
         return EXIT_GAVE_UP
     return EXIT_FOUND if outcome.found else EXIT_NO_PATH
