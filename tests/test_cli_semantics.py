@@ -82,9 +82,9 @@ def test_a_bad_choice_is_refused_before_the_app_starts(capsys) -> None:
 def test_no_path_names_the_rule_that_blocked_it(capsys) -> None:
     code, out, _ = run_cli(capsys, TUTORIAL, "--headless", "--corners", "never")
     assert code == 1
-    assert "no path (the corner rule 'never' blocks it" in out.splitlines()[0]
+    assert "no path — the corner rule 'never' blocks it" in out.splitlines()[0]
     code, out, _ = run_cli(capsys, TUTORIAL, "--headless", "--order", "N,W,S,E")
-    assert "no path (the moves N,W,S,E block it" in out.splitlines()[0]
+    assert "no path — the moves N,W,S,E block it" in out.splitlines()[0]
     code, out, _ = run_cli(capsys, str(MAPS / "no-path.txt"), "--headless", "--corners", "one")
     assert out.splitlines()[0].endswith(": no path")  # walled in: no rule to blame
 

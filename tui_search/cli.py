@@ -207,7 +207,7 @@ def human_summary(
     name = get_algorithm(outcome.algorithm).name
     result = "path found" if outcome.found else "no path"
     if not outcome.found and not outcome.gave_up and blocked_by:
-        result += f" ({blocked_by})"
+        result += f" — {blocked_by}"
     if outcome.gave_up:
         result = f"gave up at --max-steps {max_steps:,} (raise it to search on)"
     lines = [f"{name} on {where}: {result}"]

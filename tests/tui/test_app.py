@@ -676,7 +676,7 @@ def test_help_lists_every_key_of_the_binding_table() -> None:
 
     listed = " ".join(key for key, _ in KEYS).split()
     aliases = {"up": "arrows", "down": "arrows", "left": "arrows", "right": "arrows",
-               "plus": "+", "minus": "-", "question_mark": "?"}
+               "plus": "+", "minus": "-", "question_mark": "?", "comma": ","}
     for binding in Binding.make_bindings(SearchApp.BINDINGS):
         assert aliases.get(binding.key, binding.key) in listed, binding.key
 

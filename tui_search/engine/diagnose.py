@@ -25,13 +25,12 @@ def blocking_rule(grid: Grid, semantics: Semantics) -> str | None:
     there is no path whatever the rules)."""
     moves = ",".join(semantics.order)
     if semantics.corners != "always" and _has_path(grid, replace(semantics, corners="always")):
-        return (f"the corner rule '{semantics.corners}' blocks it: with corners 'always' "
-                "there is a path")
+        return f"the corner rule '{semantics.corners}' blocks it (with 'always' there is a path)"
     if set(semantics.order) != set(DIRECTIONS):
         everything = replace(semantics, order=DEFAULT_ORDER)
         if _has_path(grid, everything):
-            return f"the moves {moves} block it: with all eight moves there is a path"
+            return f"the moves {moves} block it (with all eight there is a path)"
         if _has_path(grid, replace(everything, corners="always")):
-            return (f"the moves {moves} and the corner rule '{semantics.corners}' block it: "
-                    "with all eight moves and corners 'always' there is a path")
+            return (f"the moves {moves} and the corner rule '{semantics.corners}' block it "
+                    "(all eight moves with 'always' find a path)")
     return None

@@ -9,6 +9,7 @@ moves in time-boxed slices so keys are still answered.
 
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 from typing import ClassVar
 
@@ -20,7 +21,8 @@ from textual.widgets import Static
 
 from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.run import MAX_STEPS, Run
-from tui_search.engine.semantics import Semantics as SearchOptions
+from tui_search.engine.algorithms import get_algorithm
+from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
 from tui_search.tui import playback
 from tui_search.tui.editing import EditActions
 from tui_search.tui.files import FileActions
@@ -32,7 +34,6 @@ from tui_search.tui.widgets.search_tree import SearchTreePanel
 from tui_search.tui.widgets.stats import Stats
 
 MIN_WIDTH, MIN_HEIGHT = 60, 20
-DEFAULT_OPTIONS = SearchOptions()
 NEEDS_ENDPOINTS = "Place a start (s) and a goal (g) to search"
 STEP = Binding.Group("Step", compact=True)
 ALGO = Binding.Group("BFS/DFS/ID", compact=True)
@@ -65,6 +66,8 @@ class SearchApp(EditActions, FileActions, App[int]):
         Binding("g", "place('goal')", "Goal", show=False, tooltip="Goal at the cursor"),
         Binding("o", "toggle_wall", "Wall", show=False, tooltip="Obstacle on/off at the cursor"),
         Binding("r", "reset", "Reset", tooltip="Restart the search at step 0"),
+        Binding("comma", "settings", "Settings", key_display=",", show=False,
+                tooltip="Search settings: moves, corners, visited, goal test, tree search"),
         Binding("z", "overview", "Zoom", tooltip="Overview: the whole map in half blocks"),
         Binding("ctrl+s", "save", "Save", tooltip="Save the map"),
         Binding("question_mark", "help", "Help", key_display="?", tooltip="Help"),
@@ -76,7 +79,7 @@ class SearchApp(EditActions, FileActions, App[int]):
         grid: Grid,
         path: Path | None = None,
         algorithm: str = "bfs",
-        options: SearchOptions = DEFAULT_OPTIONS,
+        options: Semantics = DEFAULT_SEMANTICS,
         max_steps: int = MAX_STEPS,
     ) -> None:
         super().__init__()
@@ -286,6 +289,25 @@ class SearchApp(EditActions, FileActions, App[int]):
 
     def action_algorithm(self, algorithm: str) -> None:
         self.algorithm = algorithm
+        note = ""
+        algo = get_algorithm(algorithm)
+        if self.options.visit != "generate" and algo.iterative:
+            # The visit rule does not apply to iterative deepening: back to the default.
+            self.options = replace(self.options, visit="generate")
+            note = f"Visit on expand does not apply to {algo.short}: back to visit on generate"
+        self._new_run(note)
+
+    def action_settings(self) -> None:
+        from tui_search.tui.screens.settings import SettingsScreen  # only when asked
+
+        self._stop()
+        self.push_screen(SettingsScreen(self.options, get_algorithm(self.algorithm)),
+                         self._settings_chosen)
+
+    def _settings_chosen(self, semantics: Semantics | None) -> None:
+        if semantics is None or semantics == self.options:
+            return
+        self.options = semantics
         self._new_run()
 
     # -- the map ----------------------------------------------------------------------------

@@ -8,7 +8,10 @@ the same thing about the step the run is at.
 
 from __future__ import annotations
 
+from weakref import WeakKeyDictionary
+
 from tui_search.engine.algorithms import get_algorithm
+from tui_search.engine.diagnose import blocking_rule
 from tui_search.engine.grid import Cell, path_cost
 from tui_search.engine.run import Run
 
@@ -63,10 +66,24 @@ def narrate(run: Run) -> str:
     if run.at_end and run.gave_up:
         return f"{text}. Gave up: the step limit ({run.max_steps:,}) is reached"
     if run.at_end:  # done, not found
+        why = blocked_by(run)
+        why = f" — {why}" if why else ""
         if limit is not None:
-            return f"{text}. Depth limit {limit} cut nothing off: no path"
-        return f"{text}. Frontier empty: no path"
+            return f"{text}. Depth limit {limit} cut nothing off: no path{why}"
+        return f"{text}. Frontier empty: no path{why}"
     return text
+
+
+_BLOCKED: WeakKeyDictionary[Run, str | None] = WeakKeyDictionary()
+
+
+def blocked_by(run: Run) -> str | None:
+    """The rule that left the map without a path, if one did (searched once per run)."""
+    if run.semantics.is_default:
+        return None
+    if run not in _BLOCKED:
+        _BLOCKED[run] = blocking_rule(run.grid, run.semantics)
+    return _BLOCKED[run]
 
 
 def status_parts(run: Run) -> list[tuple[str, str]]:

@@ -28,6 +28,7 @@ KEYS = (
     ("home  end", "first / last step (the answer)"),
     ("1  2  3", "breadth-first / depth-first / iterative deepening"),
     ("r", "restart the search at step 0"),
+    (",", "search settings: moves, corners, visits, goal test, tree"),
     ("z", "overview: the whole map in half blocks"),
     ("ctrl+s", "save the map"),
     ("?", "this help"),

@@ -69,6 +69,8 @@ class Stats(CachedStyles, Widget):
     ) -> None:
         sep = (" │ ", "stats--label")
         status: Parts = [(get_algorithm(algorithm).short, "stats--value")]
+        if run is not None and not run.semantics.is_default:  # always say what differs
+            status.append((" · " + " · ".join(run.semantics.differences()), "stats--note"))
         if run is not None:
             for label, value in status_parts(run):
                 status += [sep, (f"{label} ", "stats--label"), (value, "stats--value")]

@@ -1,0 +1,125 @@
+"""The search settings screen (``,``) and what the app shows of the choices in force."""
+
+from __future__ import annotations
+
+from tests.tui.test_app import TUTORIAL, stats, sync, tutorial_app
+from tui_search.engine.mapfile import load_map
+from tui_search.engine.semantics import Semantics
+from tui_search.tui.app import SearchApp
+from tui_search.tui.screens.settings import SettingsScreen
+from tui_search.tui.widgets.frontier_panel import FrontierPanel
+
+SIZE = (100, 32)
+
+
+@sync
+async def test_settings_apply_starts_a_new_run_at_step_0() -> None:
+    """Pick corners 'never' with the keyboard, apply: a new run on the same map under the new
+    rule, at step 0, and the status line says what differs from the defaults."""
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("n", "n")
+        first = app.search_run
+        await pilot.press("comma")
+        assert isinstance(app.screen, SettingsScreen)
+        await pilot.press("right", "right", "enter")  # corners has the focus: never
+        await pilot.click("#apply")
+        await pilot.pause()
+        assert not isinstance(app.screen, SettingsScreen)
+        run = app.search_run
+        assert run is not first and run.k == 0
+        assert run.semantics == Semantics(corners="never") == app.options
+        assert "corners: never" in stats(app)[0]
+
+
+@sync
+async def test_cancel_and_escape_change_nothing() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("n")
+        first = app.search_run
+        await pilot.press("comma", "right", "enter", "escape")
+        assert app.search_run is first and first.k == 1 and app.options == Semantics()
+        await pilot.press("comma")
+        await pilot.click("#cancel")
+        await pilot.pause()
+        assert app.search_run is first
+
+
+@sync
+async def test_a_bad_move_order_is_shown_and_not_applied() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("comma")
+        screen = app.screen
+        order = screen.query_one("#order")
+        order.value = "N,UP"
+        await pilot.pause()
+        await pilot.click("#apply")
+        await pilot.pause()
+        assert app.screen is screen  # still open
+        assert "unknown direction 'UP'" in str(screen.query_one("#order-error").render())
+        order.value = "N,W,S,E"
+        order.focus()
+        await pilot.pause()
+        await pilot.press("enter")  # enter in the order applies, as the Apply button does
+        await pilot.pause()
+        assert app.options.order == ("N", "W", "S", "E")
+
+
+@sync
+async def test_tree_search_greys_out_the_visit_rule_and_defaults_restore_all() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("comma")
+        screen = app.screen
+        await pilot.click("#visit-expand")
+        await pilot.click("#tree_search")
+        await pilot.pause()
+        assert screen.query_one("#visit").disabled
+        assert screen.chosen() == Semantics(tree_search=True)  # visit does not apply
+        await pilot.click("#defaults")
+        await pilot.pause()
+        assert screen.chosen() == Semantics() and not screen.query_one("#visit").disabled
+
+
+@sync
+async def test_visit_on_expand_lists_duplicates_and_says_when_a_step_is_discarded() -> None:
+    """Under visit on expand the queue lists a cell as often as it is on it; a discarded
+    step's narration says it threw the copy away."""
+    app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, options=Semantics(visit="expand"))
+    async with app.run_test(size=SIZE) as pilot:
+        run = app.search_run
+        run.advance()
+        k = run.rec.discarded[0]
+        for _ in range(k - 1):
+            await pilot.press("n")
+        cells = [run.gen_cell(g) for g in run.frontier()]
+        assert len(cells) > len(set(cells))  # a cell twice on the queue
+        panel = app.query_one(FrontierPanel)
+        shown = [panel.line_text(y) for y in range(len(cells))]
+        dup = next(c for c in cells if cells.count(c) > 1)
+        assert sum(f"({dup[0]},{dup[1]})" in line for line in shown) == cells.count(dup)
+        await pilot.press("n")
+        status, narration = stats(app)
+        assert "already expanded, discarded" in narration
+        assert "discarded 1" in status and "visit on expand" in status
+
+
+@sync
+async def test_no_path_under_a_corner_rule_says_which_rule_blocked_it() -> None:
+    app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, options=Semantics(corners="one"))
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("end")
+        await pilot.pause()
+        assert app.search_run.at_end and not app.search_run.found
+        assert "the corner rule 'one' blocks it" in stats(app)[1]
+
+
+@sync
+async def test_switching_to_iddfs_drops_visit_on_expand_and_says_so() -> None:
+    app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, options=Semantics(visit="expand"))
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("3")
+        assert app.search_run.algorithm == "iddfs" and app.options.visit == "generate"
+        assert "does not apply to IDDFS" in stats(app)[1]

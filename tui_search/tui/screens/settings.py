@@ -1,0 +1,180 @@
+"""Search settings (``,``): every choice of :mod:`tui_search.engine.semantics`, each with a line
+on what it changes.  Dismisses with the new :class:`Semantics`, or None when cancelled; the app
+then starts a new run at step 0 on the same map.
+"""
+
+from __future__ import annotations
+
+from typing import ClassVar
+
+from textual.app import ComposeResult
+from textual.binding import Binding, BindingType
+from textual.containers import Horizontal, VerticalScroll
+from textual.screen import ModalScreen
+from textual.widgets import Button, Checkbox, Input, Label, RadioButton, RadioSet
+
+from tui_search.engine.algorithms import Algorithm
+from tui_search.engine.grid import DEFAULT_ORDER, parse_order
+from tui_search.engine.semantics import (
+    CORNER_RULES,
+    EXPLAIN,
+    GOAL_TESTS,
+    VISIT_RULES,
+    Semantics,
+)
+
+#: A word on each value, shown beside its radio button.
+VALUE_WORDS: dict[str, str] = {
+    "always": "always",
+    "one": "if a side cell is free",
+    "never": "if both side cells are free",
+    "generate": "when pushed",
+    "expand": "when taken off",
+}
+
+
+class SettingsScreen(ModalScreen["Semantics | None"]):
+    """The choices as radio buttons, a move order and a checkbox; Apply, Defaults, Cancel."""
+
+    BINDINGS: ClassVar[list[BindingType]] = [Binding("escape", "cancel", "Cancel")]
+    AUTO_FOCUS = "#corners"
+
+    DEFAULT_CSS = """
+    SettingsScreen {
+        align: center middle;
+        & > VerticalScroll {
+            width: 76;
+            max-width: 98%;
+            height: auto;
+            max-height: 98%;
+            border: round $primary;
+            background: $surface;
+            padding: 0 1;
+        }
+        & .choice { text-style: bold; margin-top: 1; }
+        & .explain { color: $text-muted; width: 100%; }
+        & .error { color: $text-error; width: 100%; }
+        & RadioSet { layout: horizontal; height: 1; width: 100%; }
+        & RadioSet > RadioButton { width: auto; margin-right: 3; }
+        & Input { width: 100%; }
+        & Horizontal { height: 1; margin-top: 1; }
+        & Button { margin-right: 2; min-width: 10; }
+    }
+    """
+
+    def __init__(self, semantics: Semantics, algorithm: Algorithm) -> None:
+        super().__init__()
+        self.semantics = semantics
+        self.algorithm = algorithm
+
+    # -- layout ------------------------------------------------------------------------------
+    def compose(self) -> ComposeResult:
+        sem = self.semantics
+        with VerticalScroll() as box:
+            box.border_title = f"Search settings · {self.algorithm.short}"
+            yield Label("Moves, in the order tried", classes="choice")
+            yield Label(f"{EXPLAIN['order']} (all eight: {','.join(DEFAULT_ORDER)}; "
+                        "4-connected: N,W,S,E)", classes="explain")
+            yield Input(",".join(sem.order), id="order", compact=True)
+            yield Label("", id="order-error", classes="error")
+            yield Label("Diagonal past corners", classes="choice")
+            yield Label(EXPLAIN["corners"], classes="explain")
+            yield self._radios("corners", CORNER_RULES, sem.corners)
+            yield Label("A cell counts as visited", classes="choice")
+            yield Label("", id="visit-explain", classes="explain")
+            yield self._radios("visit", VISIT_RULES, sem.visit)
+            yield Label("Goal test", classes="choice")
+            yield Label(EXPLAIN["goal_test"], classes="explain")
+            yield self._radios("goal_test", GOAL_TESTS, sem.goal_test)
+            yield Label("Graph or tree search", classes="choice")
+            yield Checkbox("tree search", sem.tree_search, id="tree_search", compact=True)
+            yield Label(EXPLAIN["tree_search"], classes="explain")
+            with Horizontal():
+                yield Button("Apply", id="apply", variant="primary", compact=True)
+                yield Button("Defaults", id="defaults", compact=True)
+                yield Button("Cancel", id="cancel", compact=True)
+            yield Label("tab / shift+tab move · arrows and enter pick · escape cancels",
+                        classes="explain")
+
+    @staticmethod
+    def _radios(name: str, values: tuple[str, ...], chosen: str) -> RadioSet:
+        return RadioSet(
+            *(RadioButton(VALUE_WORDS[v], v == chosen, id=f"{name}-{v}") for v in values),
+            id=name.replace("_", "-"),
+            compact=True,
+        )
+
+    def on_mount(self) -> None:
+        self._sync_visit()
+
+    # -- reading the controls ---------------------------------------------------------------
+    def _choice(self, set_id: str) -> str:
+        button = self.query_one(f"#{set_id}", RadioSet).pressed_button
+        assert button is not None and button.id is not None
+        return button.id.split("-", 1)[1]
+
+    def chosen(self) -> Semantics | None:
+        """The settings as the controls show them (None, with the reason shown, when the move
+        order does not parse)."""
+        error = self.query_one("#order-error", Label)
+        try:
+            order = parse_order(self.query_one("#order", Input).value)
+        except ValueError as exc:
+            error.update(f"Moves: {exc}")
+            return None
+        error.update("")
+        tree = self.query_one("#tree_search", Checkbox).value
+        visit = "generate" if tree or self.algorithm.iterative else self._choice("visit")
+        return Semantics(order=order, corners=self._choice("corners"), visit=visit,
+                         goal_test=self._choice("goal-test"), tree_search=tree)
+
+    def _sync_visit(self) -> None:
+        """The visit rule does not apply to tree search nor to iterative deepening: say so
+        and grey it out."""
+        tree = self.query_one("#tree_search", Checkbox).value
+        radios = self.query_one("#visit", RadioSet)
+        if self.algorithm.iterative:
+            why = f"does not apply to {self.algorithm.short}: it re-opens cells reached shallower"
+        elif tree:
+            why = "does not apply to tree search: it has no visited set"
+        else:
+            why = ""
+        radios.disabled = bool(why)
+        self.query_one("#visit-explain", Label).update(why or EXPLAIN["visit"])
+
+    # -- events ------------------------------------------------------------------------------
+    def on_checkbox_changed(self, event: Checkbox.Changed) -> None:
+        self._sync_visit()
+
+    def on_input_changed(self, event: Input.Changed) -> None:
+        self.chosen()  # shows or clears the error as the order is typed
+
+    def on_input_submitted(self, event: Input.Submitted) -> None:
+        self._apply()
+
+    def on_button_pressed(self, event: Button.Pressed) -> None:
+        if event.button.id == "apply":
+            self._apply()
+        elif event.button.id == "defaults":
+            self._show(Semantics())
+        else:
+            self.dismiss(None)
+
+    def _apply(self) -> None:
+        semantics = self.chosen()
+        if semantics is not None:
+            self.dismiss(semantics)
+
+    def _show(self, sem: Semantics) -> None:
+        self.query_one("#order", Input).value = ",".join(sem.order)
+        for name, value in (("corners", sem.corners), ("visit", sem.visit),
+                            ("goal_test", sem.goal_test)):
+            self.query_one(f"#{name}-{value}", RadioButton).value = True
+        self.query_one("#tree_search", Checkbox).value = sem.tree_search
+        self._sync_visit()
+
+    def action_cancel(self) -> None:
+        self.dismiss(None)
+
+
+__all__ = ["SettingsScreen"]
