@@ -189,3 +189,46 @@ def test_max_steps_gives_up_with_exit_code_3(capsys) -> None:
 def test_max_steps_must_be_a_positive_number(capsys, bad) -> None:
     code, _, err = run_cli(capsys, TUTORIAL, "--headless", "--max-steps", bad)
     assert code == 2 and err.count("\n") == 1 and "--max-steps" in err
+
+
+# -- files of the wrong kind, scenarios for another map, the README's example --------------
+
+DATA = ROOT / "tests" / "data" / "movingai"
+
+
+def test_a_scenario_for_another_map_is_refused_by_name(capsys) -> None:
+    """arena.map.scen row 1 on den201d.map: refused for naming arena.map, before its start
+    (44,30) is tried on den201d's 37x37 grid (which said "outside the map")."""
+    scen = DATA / "arena.map.scen"
+    code, out, err = run_cli(capsys, str(DATA / "den201d.map"), "--headless", "--scen",
+                             str(scen), "--scen-row", "1")
+    assert code == 2 and out == ""
+    assert err == f"tui-search: {scen}:3: arena.map.scen is for arena.map, not den201d.map\n"
+
+
+def test_a_scenario_file_given_as_the_map_says_so(capsys) -> None:
+    scen = DATA / "arena.map.scen"
+    code, _, err = run_cli(capsys, str(scen), "--headless")
+    assert code == 2
+    assert err == f"tui-search: {scen}:1: this is a MovingAI scenario file: pass it with --scen\n"
+
+
+def test_a_movingai_map_without_its_type_line_says_so(capsys, tmp_path: Path) -> None:
+    bad = tmp_path / "den201d.map"
+    bad.write_text((DATA / "den201d.map").read_text().split("\n", 1)[1])
+    code, _, err = run_cli(capsys, str(bad), "--headless")
+    assert code == 2
+    assert err == (
+        f"tui-search: {bad}:1: MovingAI header: expected 'type octile', found 'height 37'\n"
+    )
+
+
+def test_the_readmes_error_example_is_what_the_cli_prints(capsys, monkeypatch) -> None:
+    readme = (ROOT / "README.md").read_text()
+    command = "$ tui-search maps/broken.txt --headless\n"
+    assert command in readme
+    printed = readme.split(command, 1)[1].split("\n", 1)[0]
+    monkeypatch.chdir(ROOT)
+    code, out, err = run_cli(capsys, "maps/broken.txt", "--headless")
+    assert code == 2 and out == "" and err == printed + "\n"
+    assert ":4:7: " in printed  # a line and a column, as the README says

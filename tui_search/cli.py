@@ -17,6 +17,7 @@ from tui_search.engine.algorithms import ALGORITHMS, DEFAULT_ALGORITHM, get_algo
 from tui_search.engine.grid import DEFAULT_ORDER, Grid, parse_order
 from tui_search.engine.mapfile import (
     MapError,
+    check_scenario_map,
     check_scenario_matches,
     load_map,
     load_scenario,
@@ -121,6 +122,9 @@ def load_problem(args: argparse.Namespace) -> tuple[Grid, Path | None]:
     scen = None
     if args.scen:
         scen = load_scenario(args.scen, args.scen_row)
+        # A row for another map is refused by name, before its start and goal are tried on
+        # this map's cells (they would fail there for the wrong reason).
+        check_scenario_map(scen, args.scen, path)
         start = start or scen.start
         goal = goal or scen.goal
     grid = load_map(path, start=start, goal=goal)

@@ -10,6 +10,10 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from tui_search.engine.mapfile import MapSource
 
 Cell = tuple[int, int]
 
@@ -71,6 +75,9 @@ class Grid:
     blocked: bytearray = field(default=None)  # type: ignore[assignment]
     start: Cell | None = None
     goal: Cell | None = None
+    #: The file text the grid was read from (None for a grid built in code): saving writes
+    #: it back with only the edited cells changed.  Not part of the grid's value (``==``).
+    source: MapSource | None = field(default=None, compare=False, repr=False)
 
     def __post_init__(self) -> None:
         if self.width < 1 or self.height < 1:
@@ -123,7 +130,9 @@ class Grid:
         self.blocked[y * self.width + x] = 1 if value else 0
 
     def copy(self) -> Grid:
-        return Grid(self.width, self.height, bytearray(self.blocked), self.start, self.goal)
+        return Grid(
+            self.width, self.height, bytearray(self.blocked), self.start, self.goal, self.source
+        )
 
     def free_count(self) -> int:
         return len(self.blocked) - self.blocked.count(1)

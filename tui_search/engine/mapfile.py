@@ -4,7 +4,11 @@ Every problem with an input file becomes a :class:`MapError` whose ``str`` is on
 ``path:line:col: message``, so the CLI and the app can show it as is instead of a traceback.
 The parsers raise nothing else on any text (the tests check this with hypothesis).
 
-Text format (what the app saves)::
+Saving keeps the file: a map read from a file carries its text (:class:`MapSource`), and
+:func:`save_map` writes that text back with only the characters of edited cells changed, so
+comments, the MovingAI header, CRLF line ends and a missing final newline all survive.
+
+Text format::
 
     ; a comment
     S#...#
@@ -22,16 +26,22 @@ import math
 import os
 import re
 import stat
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from tui_search.engine.grid import Cell, Grid
 
 __all__ = [
     "MAX_MAP_BYTES",
+    "MOVINGAI",
+    "TEXT",
     "MapError",
+    "MapSource",
     "Scenario",
+    "check_scenario_map",
     "check_scenario_matches",
+    "format_map",
     "format_text_map",
+    "kind_for_path",
     "load_map",
     "load_scenario",
     "parse_cell",
@@ -40,6 +50,7 @@ __all__ = [
     "parse_scenarios",
     "parse_text_map",
     "read_scenarios",
+    "save_map",
     "save_text_map",
 ]
 
@@ -77,13 +88,18 @@ class MapError(Exception):
 # -- helpers ------------------------------------------------------------------------------
 
 
+def _split(text: str) -> tuple[bool, list[str]]:
+    """Whether the text starts with a BOM, and its lines split on ``\\n`` only (not
+    ``str.splitlines``, which also splits on form feeds and other separators, so that line
+    numbers match what an editor shows), each as written: a CRLF line keeps its ``\\r``."""
+    bom = text.startswith("\ufeff")
+    return bom, (text[1:] if bom else text).split("\n")
+
+
 def _lines(text: str) -> list[str]:
-    """Split on ``\\n`` only (not ``str.splitlines``, which also splits on form feeds and
-    other separators, so that line numbers match what an editor shows), dropping a BOM
-    and trailing whitespace including the ``\\r`` of CRLF files."""
-    if text.startswith("\ufeff"):
-        text = text[1:]
-    return [line.rstrip() for line in text.split("\n")]
+    """The lines of :func:`_split` without a BOM and trailing whitespace (the ``\\r`` of
+    CRLF files included): what the parsers read."""
+    return [line.rstrip() for line in _split(text)[1]]
 
 
 def _show(text: str, limit: int = 40) -> str:
@@ -174,12 +190,14 @@ def parse_text_map(text: str, path: str = "<map>") -> Grid:
 
 
 def _parse_text(text: str, path: str, *, need_start: bool, need_goal: bool) -> Grid:
+    bom, raw = _split(text)
     rows: list[bytes] = []
+    row_lines: list[int] = []  # index in ``raw`` of each row
     width = 0
     cells: dict[str, Cell] = {}  # "S"/"G" -> (x, y)
     seen_at: dict[str, tuple[int, int]] = {}  # "S"/"G" -> (line, col), for "a second S"
     blank_line: int | None = None  # first blank line after the rows began
-    for number, line in enumerate(_lines(text), start=1):
+    for number, line in enumerate((line.rstrip() for line in raw), start=1):
         if line.lstrip().startswith(";"):
             continue
         if not line:
@@ -190,6 +208,8 @@ def _parse_text(text: str, path: str, *, need_start: bool, need_goal: bool) -> G
             raise MapError(path, "blank line inside the map", blank_line)
         bad = _first_bad(line, _TEXT_BAD)
         if bad >= 0:
+            if not rows:
+                _check_other_format(line, number, path)
             raise MapError(path, f"unknown cell character {line[bad]!r}", number, bad + 1)
         if not rows:
             width = len(line)
@@ -214,6 +234,7 @@ def _parse_text(text: str, path: str, *, need_start: bool, need_goal: bool) -> G
                 x + 1,
             )
         rows.append(line.encode("ascii").translate(_TEXT_BLOCK))
+        row_lines.append(number - 1)
     if not rows:
         raise MapError(path, "the map is empty")
     if "S" not in cells and need_start:
@@ -221,14 +242,31 @@ def _parse_text(text: str, path: str, *, need_start: bool, need_goal: bool) -> G
     if "G" not in cells and need_goal:
         raise MapError(path, "no goal 'G' in the map")
     blocked = bytearray(b"".join(rows))
-    return Grid(width, len(rows), blocked, cells.get("S"), cells.get("G"))
+    source = MapSource(TEXT, tuple(raw), tuple(row_lines), width, bom)
+    return Grid(width, len(rows), blocked, cells.get("S"), cells.get("G"), source)
 
 
-def format_text_map(grid: Grid) -> str:
-    """The text-format file for ``grid``, one line per row, ending with a newline.
+_SCEN_START = re.compile(r"version(?:\s|$)", re.IGNORECASE)
+_HEADER_START = re.compile(r"type|height|width|map", re.IGNORECASE)
 
-    A grid without a start or goal is written without its ``S``/``G``; such a file loads
-    only with ``--start``/``--goal`` overrides.  A start or goal on an obstacle is written as
+
+def _check_other_format(line: str, number: int, path: str) -> None:
+    """Name the real problem when the first row of a "text map" is another format's first
+    line: a scenario file given as the map, or a MovingAI map whose ``type`` line is missing
+    or garbled (no text row starts with a letter other than S or G)."""
+    if _SCEN_START.match(line):
+        raise MapError(path, "this is a MovingAI scenario file: pass it with --scen", number)
+    if _HEADER_START.match(line):
+        raise MapError(
+            path, f"MovingAI header: expected 'type octile', found {_show(line)}", number
+        )
+
+
+def _text_rows(grid: Grid) -> list[str]:
+    """The grid's rows in the text format: ``.`` free, ``#`` obstacle, ``S`` and ``G``.
+
+    A grid without a start or goal has no ``S``/``G``; such a file loads only with
+    ``--start``/``--goal`` overrides.  A start or goal on an obstacle is written as
     ``S``/``G``, so it comes back free.
     """
     w = grid.width
@@ -238,18 +276,120 @@ def format_text_map(grid: Grid) -> str:
         if cell is not None and grid.in_bounds(cell):
             x, y = cell
             rows[y] = rows[y][:x] + letter + rows[y][x + 1 :]
-    return "".join(row + "\n" for row in rows)
+    return rows
+
+
+def _movingai_rows(grid: Grid, old_rows: list[str] | None = None) -> list[str]:
+    """The grid's rows as MovingAI cells.  With the rows of the file it was read from, every
+    cell whose passability did not change keeps its letter (``T`` stays a tree, ``S`` swamp);
+    a newly blocked cell becomes ``@``, a freed one ``.``."""
+    w = grid.width
+    out = []
+    for y in range(grid.height):
+        blocked = grid.row(y)
+        old = old_rows[y] if old_rows is not None else None
+        if old is not None and old.encode("ascii").translate(_MAI_BLOCK) == blocked:
+            out.append(old)
+            continue
+        cells = list(old) if old is not None else ["."] * w
+        for x in range(w):
+            if old is None or _MAI_BLOCK[ord(cells[x])] != blocked[x]:
+                cells[x] = "@" if blocked[x] else "."
+        out.append("".join(cells))
+    return out
+
+
+TEXT, MOVINGAI = "text", "movingai"
+
+
+@dataclass(frozen=True)
+class MapSource:
+    """The text a map file holds, kept with the grid read from it so that saving rewrites
+    only the characters of the cells that were edited.
+
+    ``lines`` are the file split on ``\\n`` only, each exactly as written (a CRLF line keeps
+    its ``\\r``, trailing spaces stay; the last is ``""`` when the file ends in a newline), so
+    ``text()`` gives the file back byte for byte.  Row ``y`` of the grid is the first
+    ``width`` characters of ``lines[rows[y]]`` (a BOM, if any, is kept apart in ``bom``).
+    """
+
+    kind: str  # TEXT or MOVINGAI
+    lines: tuple[str, ...]
+    rows: tuple[int, ...]
+    width: int
+    bom: bool = False
+
+    def text(self) -> str:
+        return ("\ufeff" if self.bom else "") + "\n".join(self.lines)
+
+    def fits(self, grid: Grid) -> bool:
+        return (self.width, len(self.rows)) == (grid.width, grid.height)
+
+    def updated(self, grid: Grid) -> MapSource:
+        """This file with ``grid``'s cells written into its rows (the grid must fit)."""
+        if not self.fits(grid):
+            raise ValueError("the grid is not the size of the map file")
+        w = self.width
+        old = [self.lines[i][:w] for i in self.rows]
+        new = _text_rows(grid) if self.kind == TEXT else _movingai_rows(grid, old)
+        lines = list(self.lines)
+        for i, before, after in zip(self.rows, old, new):
+            if before != after:
+                lines[i] = after + lines[i][w:]
+        return replace(self, lines=tuple(lines))
+
+
+def _fresh_source(grid: Grid, kind: str) -> MapSource:
+    """A new file for ``grid``: its rows, one per line, ending with a newline (a MovingAI one
+    after the ``type octile`` header)."""
+    if kind == TEXT:
+        header: list[str] = []
+        rows = _text_rows(grid)
+    else:
+        header = ["type octile", f"height {grid.height}", f"width {grid.width}", "map"]
+        rows = _movingai_rows(grid)
+    lines = (*header, *rows, "")
+    return MapSource(kind, lines, tuple(range(len(header), len(header) + len(rows))), grid.width)
+
+
+def kind_for_path(path: str | os.PathLike) -> str:
+    """The format a new file of this name gets: MovingAI for ``.map``, else the text format."""
+    return MOVINGAI if os.fsdecode(path).lower().endswith(".map") else TEXT
+
+
+def format_map(grid: Grid, kind: str = TEXT) -> MapSource:
+    """The file for ``grid`` in format ``kind``: the file it was read from with the edited
+    cells rewritten when that file is of this kind, else a fresh one.
+
+    A MovingAI file has no start or goal: they are not written.
+    """
+    source = grid.source
+    if source is not None and source.kind == kind and source.fits(grid):
+        return source.updated(grid)
+    return _fresh_source(grid, kind)
+
+
+def format_text_map(grid: Grid) -> str:
+    """The text-format file for ``grid`` (see :func:`format_map`)."""
+    return format_map(grid, TEXT).text()
 
 
 def save_text_map(grid: Grid, path: str | os.PathLike) -> None:
-    """Write ``grid`` in the text format, atomically: readers (and a crash) see the old file
-    or the new one, never half of one.
+    """:func:`save_map` in the text format."""
+    save_map(grid, path, TEXT)
 
-    Writes a temporary file beside the target, fsyncs it and renames it over the target.  On
-    failure the temporary file is removed, the old file is untouched, and a MapError says why.
+
+def save_map(grid: Grid, path: str | os.PathLike, kind: str = TEXT) -> MapSource:
+    """Write :func:`format_map` of ``grid`` atomically and return what was written (the
+    caller makes it the grid's ``source``, so the next save compares with the file on disk).
+
+    Readers (and a crash) see the old file or the new one, never half of one: a temporary
+    file beside the target is written, fsynced and renamed over the target.  On failure the
+    temporary file is removed, the old file is untouched, and a MapError says why.
     """
     target = os.fsdecode(path)
-    data = format_text_map(grid).encode("ascii")
+    source = format_map(grid, kind)
+    data = source.text().encode("utf-8")
     folder = os.path.dirname(os.path.abspath(target))
     try:
         old_mode: int | None = stat.S_IMODE(os.stat(target).st_mode)
@@ -288,6 +428,7 @@ def save_text_map(grid: Grid, path: str | os.PathLike) -> None:
             except OSError:
                 pass
     _fsync_dir(folder)
+    return source
 
 
 def _fsync_dir(folder: str) -> None:
@@ -316,7 +457,8 @@ def parse_movingai_map(text: str, path: str = "<map>") -> Grid:
 
     MovingAI maps carry no start or goal, so both are None.
     """
-    lines = _lines(text)
+    bom, raw = _split(text)
+    lines = [line.rstrip() for line in raw]
     n = len(lines)
     i = 0
     while i < n and not lines[i]:
@@ -378,7 +520,8 @@ def parse_movingai_map(text: str, path: str = "<map>") -> Grid:
         raise MapError(
             path, f"the header says height {height} but the map has {found}", height_line
         )
-    return Grid(width, height, bytearray(b"".join(rows)))
+    source = MapSource(MOVINGAI, tuple(raw), tuple(range(i, last)), width, bom)
+    return Grid(width, height, bytearray(b"".join(rows)), source=source)
 
 
 # -- dispatch and loading ------------------------------------------------------------------
@@ -545,19 +688,35 @@ def _basename(name: str) -> str:
     return re.split(r"[\\/]", name)[-1]
 
 
-def check_scenario_matches(
-    scen: Scenario, grid: Grid, scen_path: str | os.PathLike, map_path: str | os.PathLike
+def check_scenario_map(
+    scen: Scenario, scen_path: str | os.PathLike, map_path: str | os.PathLike
 ) -> None:
-    """Raise MapError (at the scenario's line) unless ``scen`` is a problem on this map.
+    """Raise MapError (at the scenario's line) unless ``scen`` names the map ``map_path``.
 
-    Maps are matched by basename because older files give a path (``maps/dao/x.map``).
-    The spec's "scale the map to the scenario's size" is not supported: sizes must match.
+    Check this before the scenario's start and goal are put on the grid: on another map they
+    would be refused for the wrong reason ("start is on an obstacle").  Maps are matched by
+    basename because older files give a path (``maps/dao/x.map``).
     """
     where = os.fsdecode(scen_path)
     map_name = _basename(os.fsdecode(map_path))
     wanted = _basename(scen.map_name)
     if wanted != map_name:
-        raise MapError(where, f"scenario is for map {wanted!r}, not {map_name!r}", scen.line)
+        raise MapError(
+            where, f"{_basename(where)} is for {wanted}, not {map_name}", scen.line
+        )
+
+
+def check_scenario_matches(
+    scen: Scenario, grid: Grid, scen_path: str | os.PathLike, map_path: str | os.PathLike
+) -> None:
+    """Raise MapError (at the scenario's line) unless ``scen`` is a problem on this map:
+    its name (:func:`check_scenario_map`), its size, then its start and goal.
+
+    The spec's "scale the map to the scenario's size" is not supported: sizes must match.
+    """
+    check_scenario_map(scen, scen_path, map_path)
+    where = os.fsdecode(scen_path)
+    map_name = _basename(os.fsdecode(map_path))
     if (scen.width, scen.height) != (grid.width, grid.height):
         raise MapError(
             where,

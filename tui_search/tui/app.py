@@ -70,6 +70,8 @@ class SearchApp(EditActions, FileActions, App[int]):
                 tooltip="Search settings: moves, corners, visited, goal test, tree search"),
         Binding("z", "overview", "Zoom", tooltip="Overview: the whole map in half blocks"),
         Binding("ctrl+s", "save", "Save", tooltip="Save the map"),
+        Binding("w", "save_as", "Save as", show=False, tooltip="Save the map as a new file"),
+        Binding("ctrl+o", "open", "Open", show=False, tooltip="Open a map…"),
         Binding("question_mark", "help", "Help", key_display="?", tooltip="Help"),
         Binding("q", "quit", "Quit", tooltip="Quit (asks first when there are unsaved edits)"),
     ]

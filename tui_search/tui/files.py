@@ -1,77 +1,152 @@
-"""Saving the map and quitting with unsaved edits: the app's file actions, kept apart from its
-search actions (a mixin of :class:`~tui_search.tui.app.SearchApp`)."""
+"""The app's file actions, kept apart from its search actions (a mixin of
+:class:`~tui_search.tui.app.SearchApp`): saving, save-as, opening a map, and never losing
+unsaved edits -- quitting or replacing the map asks first.
+
+Saving writes the file the map was read from back with only the edited cells changed (see
+:class:`~tui_search.engine.mapfile.MapSource`), in its own format: ctrl+s on a MovingAI
+``.map`` saves it in place as a ``.map`` (which has no start or goal, and the notification
+says so).  A new name picks the format by its ending: ``.map`` MovingAI, anything else text.
+"""
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-from tui_search.engine.grid import Grid
-from tui_search.engine.mapfile import MapError, save_text_map
+from tui_search.engine.grid import Cell, Grid
+from tui_search.engine.mapfile import MOVINGAI, TEXT, MapError, kind_for_path, save_map
+
+if TYPE_CHECKING:
+    from tui_search.tui.screens.confirm_quit import Leaving
+    from tui_search.tui.widgets.grid_view import GridView
 
 # The screens are imported when first needed: their widgets (Input, Button) would add to the
 # app's start-up time for nothing.
 
-
-def needs_a_name(path: Path | None) -> bool:
-    """No file yet, or a MovingAI ``.map`` (never overwritten with the text format)."""
-    return path is None or path.suffix.lower() == ".map"
+NO_ENDPOINTS_IN_MAP = "MovingAI format: the start and goal are not part of a .map file"
 
 
 class FileActions:
-    """ctrl+s saves (asking for a name when needed); q asks first when there are edits."""
+    """ctrl+s saves, w saves as, ctrl+o opens a map; q and a new map ask first when there
+    are unsaved edits (:meth:`confirm_discard`, :meth:`replace_map`)."""
 
     grid: Grid
     map_path: Path | None
     dirty: bool
+    view: GridView
+    cursor_cell: Cell
 
+    # -- saving ---------------------------------------------------------------------------
     def action_save(self) -> None:
-        path = self.map_path
-        if needs_a_name(path):
-            from tui_search.tui.screens.save_as import SaveAsScreen
-
-            stem = path.stem if path is not None else "map"
-            self.push_screen(SaveAsScreen(f"{stem}.txt"), self._save_chosen)
+        if self.map_path is None:
+            self.ask_save_as()
         else:
-            self.save(path)
+            self.save(self.map_path)
 
-    def _save_chosen(self, path: Path | None) -> None:
-        if path is not None:
-            self.save(path)
+    def action_save_as(self) -> None:
+        self.ask_save_as()
 
-    def save(self, path: Path) -> bool:
-        """Save the map atomically; on failure the old file is untouched and we say why."""
+    def _own_kind(self) -> str:
+        """The format of the map's own file: the one it was read in."""
+        source = self.grid.source
+        if source is not None:
+            return source.kind
+        return kind_for_path(self.map_path) if self.map_path is not None else TEXT
+
+    def write_map(self, path: Path, kind: str) -> str | None:
+        """Save the map to ``path`` in format ``kind``, atomically; None, or the one-line
+        reason it failed (the old file is then untouched)."""
         try:
-            save_text_map(self.grid, path)
+            self.grid.source = save_map(self.grid, path, kind)
         except MapError as exc:
-            self.notify(str(exc), title="Not saved", severity="error", timeout=8)
-            return False
+            return str(exc)
         self.map_path = Path(path)
         self.dirty = False
-        self.notify(f"Saved {path}", timeout=3)
+        note = f" ({NO_ENDPOINTS_IN_MAP})" if kind == MOVINGAI else ""
+        self.notify(f"Saved {path}{note}", timeout=6 if note else 3)
         self._show(changed=[])
-        return True
+        return None
 
-    async def action_quit(self) -> None:
-        if not self.dirty:
-            self.exit(0)
-            return
-        from tui_search.tui.screens.confirm_quit import ConfirmQuitScreen
+    def save(self, path: Path) -> bool:
+        """Save to the map's own file; on failure say why in a notification."""
+        error = self.write_map(path, self._own_kind())
+        if error is not None:
+            self.notify(error, title="Not saved", severity="error", timeout=8)
+        return error is None
 
-        name = self.map_path.name if self.map_path else "untitled"
-        self.push_screen(ConfirmQuitScreen(name), self._quit_answer)
+    def _save_as(self, path: Path) -> str | None:
+        own = self.map_path is not None and path.resolve() == self.map_path.resolve()
+        return self.write_map(path, self._own_kind() if own else kind_for_path(path))
 
-    def _quit_answer(self, answer: str | None) -> None:
-        from tui_search.tui.screens.confirm_quit import QUIT, SAVE
+    def ask_save_as(self, then: Callable[[], None] | None = None) -> None:
+        """The save-as prompt; ``then`` runs once the map is saved (not on cancel)."""
         from tui_search.tui.screens.save_as import SaveAsScreen
 
-        if answer == QUIT:
-            self.exit(0)
-        elif answer == SAVE:
-            if needs_a_name(self.map_path):
-                self.push_screen(SaveAsScreen(), self._save_then_quit)
-            elif self.save(self.map_path):
-                self.exit(0)
+        path = self.map_path
+        suggestion = str(path.with_suffix(".txt")) if path is not None else "map.txt"
 
-    def _save_then_quit(self, path: Path | None) -> None:
-        if path is not None and self.save(path):
-            self.exit(0)
+        def saved(result: Path | None) -> None:
+            if result is not None and then is not None:
+                then()
+
+        self.push_screen(SaveAsScreen(self._save_as, suggestion, own=path), saved)
+
+    # -- leaving a map with edits ---------------------------------------------------------
+    def confirm_discard(self, then: Callable[[], None], leaving: Leaving | None = None) -> None:
+        """Run ``then`` (which leaves the map: quit, or replace it) at once when nothing is
+        unsaved; else ask first: save then go on, go on without saving, or stay.
+
+        ``leaving`` is a :class:`~tui_search.tui.screens.confirm_quit.Leaving` (the words);
+        quitting's by default.
+        """
+        if not self.dirty:
+            then()
+            return
+        from tui_search.tui.screens.confirm_quit import QUIT, QUITTING, SAVE, ConfirmQuitScreen
+
+        def answer(choice: str | None) -> None:
+            if choice == QUIT:
+                then()
+            elif choice == SAVE:
+                if self.map_path is None:
+                    self.ask_save_as(then)
+                elif self.save(self.map_path):
+                    then()
+
+        name = self.map_path.name if self.map_path else "untitled"
+        self.push_screen(ConfirmQuitScreen(name, leaving or QUITTING), answer)
+
+    async def action_quit(self) -> None:
+        self.confirm_discard(lambda: self.exit(0))
+
+    # -- opening a map --------------------------------------------------------------------
+    def action_open(self) -> None:
+        from tui_search.tui.screens.open_map import OpenMapScreen
+
+        folder = self.map_path.parent if self.map_path is not None else Path()
+        suggestion = "" if str(folder) == "." else f"{folder}/"
+
+        def opened(result: tuple[Grid, Path] | None) -> None:
+            if result is not None:
+                self.replace_map(*result)
+
+        self.push_screen(OpenMapScreen(suggestion), opened)
+
+    def replace_map(self, grid: Grid, path: Path | None, name: str | None = None) -> None:
+        """Show ``grid`` (read from ``path``, None for a map made in code) instead of the
+        current map -- asking first when the current one has unsaved edits.  What opens a
+        file or an exercise calls this; ``name`` is what the question calls the new map."""
+        from tui_search.tui.screens.confirm_quit import replacing
+
+        new_name = name or (path.name if path is not None else "the new map")
+        self.confirm_discard(lambda: self._use_map(grid, path), replacing(new_name))
+
+    def _use_map(self, grid: Grid, path: Path | None) -> None:
+        self.grid = grid
+        self.map_path = Path(path) if path is not None else None
+        self.dirty = False
+        self.cursor_cell = grid.start or (0, 0)
+        self.view.set_grid(grid)
+        self.view.set_cursor(self.cursor_cell)
+        self._new_run()

@@ -1,21 +1,42 @@
-"""Quitting with unsaved edits asks first: save, quit anyway, or stay."""
+"""Leaving a map with unsaved edits asks first: save, go on without saving, or stay.
+
+Quitting asks it, and so does anything that replaces the map (opening another file, an
+exercise): :class:`Leaving` holds the words for each.
+"""
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import ClassVar
 
-from textual.app import ComposeResult
 from textual.binding import Binding, BindingType
-from textual.containers import Horizontal, Vertical
-from textual.screen import ModalScreen
-from textual.widgets import Button, Label
+
+from tui_search.tui.screens.question import QuestionScreen
 
 #: What the screen dismisses with.
 SAVE, QUIT, STAY = "save", "quit", "stay"
 
 
-class ConfirmQuitScreen(ModalScreen[str]):
-    """``s`` saves then quits, ``y`` quits without saving, ``n`` or escape stays."""
+@dataclass(frozen=True)
+class Leaving:
+    """The question's last sentence and its three buttons, for one way of leaving a map."""
+
+    question: str
+    save: str
+    discard: str
+    stay: str
+
+
+QUITTING = Leaving("Quit anyway?", "Save and quit", "Quit", "Stay")
+
+
+def replacing(new_name: str) -> Leaving:
+    """The words for replacing the map with ``new_name``."""
+    return Leaving(f"Open {new_name} anyway?", "Save, then open", "Discard edits", "Cancel")
+
+
+class ConfirmQuitScreen(QuestionScreen):
+    """``s`` saves then goes on, ``y`` goes on without saving, ``n`` or escape stays."""
 
     BINDINGS: ClassVar[list[BindingType]] = [
         Binding("s", "choose('save')", "Save and quit"),
@@ -24,38 +45,13 @@ class ConfirmQuitScreen(ModalScreen[str]):
     ]
     AUTO_FOCUS = "#stay"
 
-    DEFAULT_CSS = """
-    ConfirmQuitScreen {
-        align: center middle;
-        & > Vertical {
-            width: 64;
-            max-width: 95%;
-            height: auto;
-            border: round $warning;
-            background: $surface;
-            padding: 0 1;
-        }
-        & Label { width: 100%; }
-        & Horizontal { height: auto; margin-top: 1; }
-        & Button { margin-right: 1; min-width: 10; }
-    }
-    """
-
-    def __init__(self, name: str) -> None:
-        super().__init__()
+    def __init__(self, name: str, leaving: Leaving = QUITTING) -> None:
+        super().__init__(
+            "Unsaved edits",
+            f"The map {name} has edits that are not saved. {leaving.question}",
+            [(SAVE, f"{leaving.save} (s)", "primary"),
+             (QUIT, f"{leaving.discard} (y)", "error"),
+             (STAY, f"{leaving.stay} (n)", "default")],
+        )
         self.map_name = name
-
-    def compose(self) -> ComposeResult:
-        with Vertical() as box:
-            box.border_title = "Unsaved edits"
-            yield Label(f"The map {self.map_name} has edits that are not saved. Quit anyway?")
-            with Horizontal():
-                yield Button("Save and quit (s)", id=SAVE, variant="primary")
-                yield Button("Quit (y)", id=QUIT, variant="error")
-                yield Button("Stay (n)", id=STAY)
-
-    def on_button_pressed(self, event: Button.Pressed) -> None:
-        self.dismiss(event.button.id or STAY)
-
-    def action_choose(self, choice: str) -> None:
-        self.dismiss(choice)
+        self.leaving = leaving

@@ -30,7 +30,9 @@ KEYS = (
     ("r", "restart the search at step 0"),
     (",", "search settings: moves, corners, visits, goal test, tree"),
     ("z", "overview: the whole map in half blocks"),
-    ("ctrl+s", "save the map"),
+    ("ctrl+s", "save the map (to its file, in its format)"),
+    ("w", "save the map as … (asks before replacing a file)"),
+    ("ctrl+o", "open a map … (asks first when there are unsaved edits)"),
     ("?", "this help"),
     ("q", "quit (asks first when there are unsaved edits)"),
 )

@@ -1,54 +1,65 @@
-"""Ask for a file name (ctrl+s on a map that has none): dismisses with a Path, or None."""
+"""Ask for a file name to save the map as: dismisses with the Path it was saved to, or None.
+
+The prompt saves by itself (through the ``save`` it is given) so that a failed save keeps it
+open with the reason and the name typed; a file that exists, other than the map's own, is not
+replaced before the overwrite question says so.
+"""
 
 from __future__ import annotations
 
+import os
+from collections.abc import Callable
 from pathlib import Path
-from typing import ClassVar
 
-from textual.app import ComposeResult
-from textual.binding import Binding, BindingType
-from textual.containers import Vertical
-from textual.screen import ModalScreen
-from textual.widgets import Input, Label
+from tui_search.tui.screens.confirm_overwrite import OVERWRITE, ConfirmOverwriteScreen
+from tui_search.tui.screens.path_prompt import PathPrompt
 
 
-class SaveAsScreen(ModalScreen[Path | None]):
-    """A one-line prompt; enter saves, escape cancels."""
+class SaveAsScreen(PathPrompt[Path | None]):
+    """Enter saves (asking first before replacing another file), escape cancels."""
 
-    BINDINGS: ClassVar[list[BindingType]] = [Binding("escape", "cancel", "Cancel")]
-    AUTO_FOCUS = "Input"
+    TITLE_TEXT = "Save the map as"
+    LABEL_TEXT = "File name (.txt: text map with S and G; .map: MovingAI, no start or goal):"
+    HINT_TEXT = "enter to save · escape to cancel"
 
-    DEFAULT_CSS = """
-    SaveAsScreen {
-        align: center middle;
-        & > Vertical {
-            width: 60;
-            max-width: 95%;
-            height: auto;
-            border: round $primary;
-            background: $surface;
-            padding: 0 1;
-        }
-        & Label { margin-bottom: 1; }
-        & .hint { color: $text-muted; margin: 0; }
-    }
-    """
+    def __init__(
+        self,
+        save: Callable[[Path], str | None],
+        suggestion: str = "map.txt",
+        own: Path | None = None,
+    ) -> None:
+        """``save(path)`` writes the map and returns None, or the one-line reason it could
+        not; ``own`` is the map's own file, saved over without asking."""
+        super().__init__(suggestion)
+        self.save = save
+        self.own = own
 
-    def __init__(self, suggestion: str = "map.txt") -> None:
-        super().__init__()
-        self.suggestion = suggestion
+    def submit(self, path: Path) -> None:
+        if path.is_dir():
+            self.show_error(f"{path} is a folder: type a file name")
+        elif path.exists() and not self._is_own(path):
+            self.app.push_screen(ConfirmOverwriteScreen(path), self._overwrite_answer(path))
+        else:
+            self._save(path)
 
-    def compose(self) -> ComposeResult:
-        with Vertical() as box:
-            box.border_title = "Save the map as"
-            yield Label("File name (text map: # obstacle, S start, G goal):")
-            yield Input(value=self.suggestion, id="filename")
-            yield Label("enter to save · escape to cancel", classes="hint")
+    def _is_own(self, path: Path) -> bool:
+        try:
+            return self.own is not None and os.path.samefile(path, self.own)
+        except OSError:
+            return False
 
-    def on_input_submitted(self, event: Input.Submitted) -> None:
-        name = event.value.strip()
-        if name:
-            self.dismiss(Path(name).expanduser())
+    def _overwrite_answer(self, path: Path) -> Callable[[str | None], None]:
+        def answer(choice: str | None) -> None:
+            if choice == OVERWRITE:
+                self._save(path)
+            else:  # choose another name: the prompt, with the name, is still here
+                self.query_one("Input").focus()
 
-    def action_cancel(self) -> None:
-        self.dismiss(None)
+        return answer
+
+    def _save(self, path: Path) -> None:
+        error = self.save(path)
+        if error is None:
+            self.dismiss(path)
+        else:
+            self.show_error(error)

@@ -1,0 +1,47 @@
+"""Pictures of the file prompts and questions (SVG snapshots); the docstring says what each
+must show."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from tests.tui.test_app import tutorial_app
+
+SIZE = (100, 30)
+
+
+def prompt_with(key: str, name: str):
+    """A ``run_before`` that opens the prompt of ``key`` and types ``name`` into it."""
+
+    async def run_before(pilot) -> None:
+        await pilot.press(key)
+        pilot.app.screen.query_one("Input").value = name
+
+    return run_before
+
+
+def test_save_as_onto_an_existing_file_asks(
+    snap_compare, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The built-in map, ctrl+s, 'old.txt' (which exists), enter: over the save-as prompt,
+    the 'File exists' question, 'old.txt already exists. Replace it with this map?', with
+    Overwrite (y) in red and Choose another name (n) focused."""
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "old.txt").write_text("keep me\n")
+    app = tutorial_app(path=None)
+    assert snap_compare(app, terminal_size=SIZE, run_before=prompt_with("ctrl+s", "old.txt"),
+                        press=["enter"])
+    assert (tmp_path / "old.txt").read_text() == "keep me\n"
+
+
+def test_open_a_broken_map_shows_why_in_the_prompt(
+    snap_compare, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """ctrl+o, 'maps/broken.txt', enter: the 'Open a map' prompt stays open with the name
+    typed and, in red under it, "maps/broken.txt:4:7: unknown cell character 'q'"."""
+    monkeypatch.chdir(Path(__file__).parents[2])
+    app = tutorial_app()
+    assert snap_compare(app, terminal_size=SIZE,
+                        run_before=prompt_with("ctrl+o", "maps/broken.txt"), press=["enter"])
