@@ -236,7 +236,7 @@ async def test_home_and_end_go_to_the_first_and_last_step() -> None:
         run = app.search_run
         assert run.k == 22 and run.found
         assert stats(app)[1] == (
-            "Goal found at (5,2) when expanding (5,1) · path: 7 moves, cost 8.66")
+            "Goal (5,2) found from (5,1) · path: 7 moves, cost 8.66 · generated 24 of at most 7⁸ = 5,764,801")
         assert any("◆" in line for line in map_lines(app))
         await pilot.press("home")
         assert run.k == 0
@@ -285,7 +285,7 @@ async def test_end_on_a_big_map_runs_in_slices_and_keys_are_still_answered(
         run = app.search_run
         assert run.at_end and run.found and run.k == run.total == 3_409_955
         assert "Computing" not in stats(app)[1]
-        assert stats(app)[1].startswith("Goal found at (79,79) when expanding (78,78) · path")
+        assert stats(app)[1].startswith("Goal (79,79) found from (78,78) · path")
         assert app.cursor_cell == (1, 0)
     assert seen and seen[0][0], "the cursor key waited for the whole seek"
     assert seen[0][1].startswith("Computing the search…")

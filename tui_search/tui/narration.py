@@ -54,7 +54,7 @@ def narrate(run: Run) -> str:
         goal = cell_text(run.gen_cell(run.rec.goal_gen))
         if run.rec.goal_gen == expanded:  # the goal tested when taken off the frontier
             return f"{prefix}Took the goal {goal} off the {word}: found"
-        return f"{prefix}Goal found at {goal} when expanding {node}"
+        return f"{prefix}Goal {goal} found from {node}"
     if run.is_discarded(k):
         text = f"{prefix}Took {node} off the {word}: already expanded, discarded"
     elif dirs:
@@ -112,7 +112,27 @@ def result_text(run: Run) -> str:
     if not run.found:
         return "no path"
     moves = run.moves() or []
-    return f"path: {len(moves)} moves, cost {path_cost(moves):.2f}"
+    return f"path: {len(moves)} moves, cost {path_cost(moves):.2f} · {bound_text(run)}"
+
+
+_SUPERSCRIPT = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+def bound_text(run: Run) -> str:
+    """The generated count beside the tutorial's bound: at most ``(b-1)^(d+1)`` nodes, with
+    ``b`` moves and the goal at depth ``d`` ("7^(d+1)" for eight moves) -- the loose bound made
+    something a student can test."""
+    depth = len(run.moves() or [])
+    base = max(1, run.semantics.branching - 1)
+    exponent = str(depth + 1).translate(_SUPERSCRIPT)
+    bound = run.semantics.bound(depth)
+    digits = str(bound)
+    if len(digits) <= 13:
+        value = f"= {bound:,}"
+    else:  # 7^139 has 118 digits: say how big, not every digit
+        power = str(len(digits) - 1).translate(_SUPERSCRIPT)
+        value = f"≈ {digits[0]}.{digits[1]}×10{power}"
+    return f"generated {run.generated:,} of at most {base}{exponent} {value}"
 
 
 def algorithm_title(algorithm: str) -> str:
