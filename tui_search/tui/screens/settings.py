@@ -26,8 +26,8 @@ from tui_search.engine.semantics import (
 #: A word on each value, shown beside its radio button.
 VALUE_WORDS: dict[str, str] = {
     "always": "always",
-    "one": "if a side cell is free",
-    "never": "if both side cells are free",
+    "one": "if one side is free",
+    "never": "if both sides are free",
     "generate": "when pushed",
     "expand": "when taken off",
 }
@@ -53,10 +53,10 @@ class SettingsScreen(ModalScreen["Semantics | None"]):
         }
         & .choice { text-style: bold; margin-top: 1; }
         & .explain { color: $text-muted; width: 100%; }
-        & .error { color: $text-error; width: 100%; }
+        & .problem { color: $text-error; width: 100%; }
         & RadioSet { layout: horizontal; height: 1; width: 100%; }
         & RadioSet > RadioButton { width: auto; margin-right: 3; }
-        & Input { width: 100%; }
+        & Input { width: 100%; background: $boost; }
         & Horizontal { height: 1; margin-top: 1; }
         & Button { margin-right: 2; min-width: 10; }
     }
@@ -76,7 +76,7 @@ class SettingsScreen(ModalScreen["Semantics | None"]):
             yield Label(f"{EXPLAIN['order']} (all eight: {','.join(DEFAULT_ORDER)}; "
                         "4-connected: N,W,S,E)", classes="explain")
             yield Input(",".join(sem.order), id="order", compact=True)
-            yield Label("", id="order-error", classes="error")
+            yield Label("", id="order-error", classes="problem")
             yield Label("Diagonal past corners", classes="choice")
             yield Label(EXPLAIN["corners"], classes="explain")
             yield self._radios("corners", CORNER_RULES, sem.corners)
