@@ -50,6 +50,8 @@ def test_visit_on_expand_counts_discarded_steps_and_the_trace_marks_them(capsys)
 def test_tree_search_json_and_the_corner_synonym(capsys) -> None:
     _, tree = headless_json(capsys, "--tree-search", "-a", "dfs")
     assert tree["semantics"]["tree_search"] and tree["semantics"]["visit"] is None
+    _, iddfs = headless_json(capsys, "-a", "iddfs")
+    assert iddfs["semantics"]["visit"] is None  # does not apply to iterative deepening
     _, never = headless_json(capsys, "--no-corner-cutting")
     _, never2 = headless_json(capsys, "--corners", "never")
     assert never == never2 and not never["found"]
@@ -60,7 +62,8 @@ def test_tree_search_json_and_the_corner_synonym(capsys) -> None:
     [
         (["--tree-search", "--visit", "expand"], "--visit does not apply to --tree-search"),
         (["--tree-search", "--visit", "generate"], "--visit does not apply to --tree-search"),
-        (["-a", "iddfs", "--visit", "expand"], "--visit: the visit rule does not apply to IDDFS"),
+        (["-a", "iddfs", "--visit", "expand"], "--visit does not apply to -a iddfs"),
+        (["-a", "iddfs", "--visit", "generate"], "--visit does not apply to -a iddfs"),
         (["--no-corner-cutting", "--corners", "one"], "--no-corner-cutting means --corners never"),
         (["--corners", "sometimes"], "argument --corners: invalid choice"),
         (["--goal-test", "never"], "argument --goal-test: invalid choice"),
@@ -133,3 +136,24 @@ def test_headless_memory_does_not_grow_with_the_steps(capsys, tmp_path) -> None:
     path.write_text("S.....\n......\n......\n......\n....##\n....#G\n")
     small, big = _peak_bytes(capsys, path, 20_000), _peak_bytes(capsys, path, 200_000)
     assert big < 1.5 * small
+
+
+@pytest.mark.parametrize("argv", [["-a", "iddfs"], ["--tree-search", "-a", "dfs"],
+                                  ["--tree-search", "--goal-test", "expand"]])
+def test_a_streamed_trace_is_the_recorded_runs_trace(capsys, argv) -> None:
+    """Iterative deepening and tree search stream the reference loop; their trace lines are
+    the ones the recorded run (what the app steps through) gives."""
+    from io import StringIO
+
+    from tui_search.cli import semantics_from, trace_line
+    from tui_search.engine.mapfile import load_map
+    from tui_search.engine.run import Run
+
+    args = build_parser().parse_args([TUTORIAL, "--headless", *argv, "--max-steps", "400"])
+    code, out, _ = run_cli(capsys, TUTORIAL, "--headless", "--trace", "-", *argv,
+                           "--max-steps", "400")
+    run = Run(load_map(TUTORIAL), args.algorithm, semantics_from(args), 400)
+    recorded = StringIO()
+    for step in run.steps():
+        recorded.write(trace_line(step))
+    assert out == recorded.getvalue() and out.count("\n") == run.rec.steps

@@ -26,7 +26,7 @@ from tui_search.engine.mapfile import (
 )
 from tui_search.engine.outcome import Outcome
 from tui_search.engine.reference import Expansion, stream
-from tui_search.engine.run import MAX_STEPS
+from tui_search.engine.run import MAX_STEPS, Run, Step
 from tui_search.engine.semantics import CORNER_RULES, GOAL_TESTS, VISIT_RULES, Semantics
 
 EXIT_FOUND, EXIT_NO_PATH, EXIT_BAD_INPUT, EXIT_GAVE_UP = 0, 1, 2, 3
@@ -145,30 +145,55 @@ def semantics_from(args: argparse.Namespace) -> Semantics:
         raise UsageError(f"--no-corner-cutting means --corners never, not {corners}")
     if args.tree_search and args.visit is not None:
         raise UsageError("--visit does not apply to --tree-search (it has no visited set)")
+    algorithm = get_algorithm(args.algorithm)
+    if algorithm.iterative and args.visit is not None:
+        raise UsageError(f"--visit does not apply to -a {args.algorithm} "
+                         "(it re-opens a cell reached at a smaller depth)")
     try:
         sem = Semantics(order=order, corners=corners, visit=args.visit or "generate",
                         goal_test=args.goal_test, tree_search=args.tree_search)
-        sem.check(get_algorithm(args.algorithm))
+        sem.check(algorithm)
     except ValueError as exc:
-        if args.visit is not None:
-            raise UsageError(f"--visit: {exc}") from None
         raise UsageError(str(exc)) from None
     return sem
 
 
-def trace_line(step: Expansion) -> str:
+def trace_line(step: Step) -> str:
     """One JSON object per step: the node taken off and exactly the successors it added, in
     order; iterative deepening adds the depth limit, a discarded step says so."""
     obj: dict = {
         "step": step.index,
-        "node": list(step.node.cell),
-        "successors": [{"dir": s.move, "node": list(s.cell)} for s in step.successors],
+        "node": list(step.node),
+        "successors": [{"dir": d, "node": list(c)} for d, c in step.successors],
     }
     if step.depth_limit is not None:
         obj["depth_limit"] = step.depth_limit
     if step.discarded:
         obj["discarded"] = True
     return json.dumps(obj, separators=(", ", ": ")) + "\n"
+
+
+def _as_step(step: Expansion) -> Step:
+    return Step(step.index, step.node.cell, tuple((s.move, s.cell) for s in step.successors),
+                step.depth_limit, step.found, step.discarded)
+
+
+def search_headless(grid: Grid, key: str, semantics: Semantics, max_steps: int,
+                    out: IO[str] | None) -> Outcome:
+    """The whole search, its steps written to ``out`` as they happen.  Graph BFS and DFS take
+    at most a few steps per cell, so they run on the fast recorded loops (the record is
+    bounded by the map); iterative deepening and tree search can take billions of steps on a
+    small map, so they stream the reference loop, which keeps only the frontier and the
+    parents it points to.  The two are held equal by a property test."""
+    algorithm = get_algorithm(key)
+    if algorithm.iterative or semantics.tree_search:
+        write = None if out is None else (lambda step: out.write(trace_line(_as_step(step))))
+        return stream(grid, algorithm, semantics, max_steps, write)
+    run = Run(grid, key, semantics, max_steps)
+    if out is not None:
+        for step in run.steps():
+            out.write(trace_line(step))
+    return run.outcome()
 
 
 def json_summary(outcome: Outcome) -> dict:
@@ -186,7 +211,7 @@ def json_summary(outcome: Outcome) -> dict:
         "generated": outcome.generated,
         "max_frontier": outcome.max_frontier,
         "gave_up": outcome.gave_up,
-        "semantics": outcome.semantics.as_json(),
+        "semantics": outcome.semantics.as_json(get_algorithm(outcome.algorithm)),
     }
 
 
@@ -197,7 +222,7 @@ PATH_ENDS = 8
 
 def moves_text(moves: list[str]) -> str:
     if not moves:
-        return "(start is the goal)"
+        return "none: the start is the goal"
     if len(moves) <= SHORT_PATH:
         return ", ".join(moves)
     hidden = len(moves) - 2 * PATH_ENDS
@@ -238,12 +263,9 @@ def run_headless(args: argparse.Namespace, grid: Grid, path: Path | None) -> int
         raise MapError(where, f"the map has no {' or '.join(missing)}: give --start X,Y "
                        "--goal X,Y, or --scen FILE --scen-row N")
     semantics = semantics_from(args)
-    algorithm = get_algorithm(args.algorithm)
 
-    # The search streams: each step is written as it happens and then forgotten.
     def search(out: IO[str] | None) -> Outcome:
-        write = None if out is None else (lambda step: out.write(trace_line(step)))
-        return stream(grid, algorithm, semantics, args.max_steps, write)
+        return search_headless(grid, args.algorithm, semantics, args.max_steps, out)
 
     if args.trace == "-":
         outcome = search(sys.stdout)

@@ -26,12 +26,13 @@ with no path when an iteration cuts nothing off at its limit.
 
 from __future__ import annotations
 
+from array import array
 from collections import deque
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
 from tui_search.engine.algorithms import Algorithm, Frontier
-from tui_search.engine.grid import Cell, Grid
+from tui_search.engine.grid import DELTAS, Cell, Grid
 from tui_search.engine.outcome import Outcome
 from tui_search.engine.semantics import Semantics
 
@@ -106,7 +107,10 @@ class ReferenceSearch:
         self.goal: Node | None = None
         self.generated = self.expanded = self.discarded = self.max_frontier = 0
         self.iterations = 0
-        self._moves: dict[Cell, list[tuple[str, Cell]]] = {}
+        # Per cell, a bit per move of the order that is legal from it (-1: not worked out
+        # yet): the moves never change during a search, and two bytes a cell keep it small.
+        self._legal_bits = array("h", [-1]) * (grid.width * grid.height)
+        self._order = [(move, DELTAS[move]) for move in semantics.order]
 
     def __iter__(self) -> Iterator[Expansion]:
         if self.algorithm.iterative:
@@ -115,13 +119,17 @@ class ReferenceSearch:
 
     # -- moves -------------------------------------------------------------------------------
     def _legal(self, cell: Cell) -> list[tuple[str, Cell]]:
-        """The legal moves from ``cell``, in order (they never change during a search, so
-        each cell's are worked out once)."""
-        moves = self._moves.get(cell)
-        if moves is None:
-            moves = self._moves[cell] = self.grid.neighbours(
-                cell, self.semantics.order, self.semantics.corners)
-        return moves
+        """The legal moves from ``cell`` (``Grid.neighbours``), in order, with their cells."""
+        x, y = cell
+        i = y * self.grid.width + x
+        bits = self._legal_bits[i]
+        if bits < 0:
+            legal = {move for move, _ in self.grid.neighbours(
+                cell, self.semantics.order, self.semantics.corners)}
+            bits = sum(1 << j for j, (move, _) in enumerate(self._order) if move in legal)
+            self._legal_bits[i] = bits
+        return [(move, (x + dx, y + dy)) for j, (move, (dx, dy)) in enumerate(self._order)
+                if bits >> j & 1]
 
     def _push(self, frontier: list[Node] | deque[Node], cell: Cell, parent: Node | None,
               move: str | None) -> Node:

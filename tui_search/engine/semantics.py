@@ -100,11 +100,14 @@ class Semantics:
         ``b`` moves (``7^(d+1)`` for eight; one move leads back where the node came from)."""
         return max(1, self.branching - 1) ** (depth + 1)
 
-    def as_json(self) -> dict:
+    def as_json(self, algorithm: Algorithm | None = None) -> dict:
+        """Every choice by name; the visit rule is null where it does not apply (tree search,
+        iterative deepening)."""
+        no_visit = self.tree_search or (algorithm is not None and algorithm.iterative)
         return {
             "order": list(self.order),
             "corners": self.corners,
-            "visit": None if self.tree_search else self.visit,
+            "visit": None if no_visit else self.visit,
             "goal_test": self.goal_test,
             "tree_search": self.tree_search,
         }
