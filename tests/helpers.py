@@ -8,8 +8,9 @@ from tui_search.engine.grid import Grid
 
 ROOT = Path(__file__).resolve().parents[1]
 MAPS = ROOT / "maps"
-#: The MovingAI benchmark maps every developer and CI has beside the repository.
-MOVINGAI = ROOT.parent / "shared" / "maps" / "movingai"
+#: Small real MovingAI benchmark files copied into the repository byte for byte (their origins
+#: are in SOURCES.md there), so a fresh clone and CI run every test that reads one.
+MOVINGAI = ROOT / "tests" / "data" / "movingai"
 
 TUTORIAL_ROWS = [
     "S#...#",

@@ -71,7 +71,6 @@ def test_start_goal_order_and_corner_options(capsys) -> None:
     assert code == 0 and json.loads(out)["moves"] == ["S", "SE", "NE"]
 
 
-@pytest.mark.skipif(not MOVINGAI.is_dir(), reason="shared MovingAI maps not present")
 def test_movingai_map_with_a_scenario_row(capsys) -> None:
     code, out, err = run_cli(capsys, str(MOVINGAI / "arena.map"), "--headless", "--json",
                              "--scen", str(MOVINGAI / "arena.map.scen"), "--scen-row", "5")
@@ -82,7 +81,6 @@ def test_movingai_map_with_a_scenario_row(capsys) -> None:
     assert result["path"][-1] == [int(scen_line[6]), int(scen_line[7])]
 
 
-@pytest.mark.skipif(not MOVINGAI.is_dir(), reason="shared MovingAI maps not present")
 def test_bfs_cost_matches_the_scenario_optimum_when_corners_are_respected(capsys) -> None:
     """MovingAI optimal lengths are octile without corner cutting.  BFS minimises moves, not
     cost, so its cost is at least the optimum -- and equal when every optimal path is
@@ -129,8 +127,6 @@ def test_malformed_map_names_file_line_and_column(capsys, tmp_path: Path) -> Non
 
 
 def test_movingai_map_without_start_says_what_to_give(capsys) -> None:
-    if not MOVINGAI.is_dir():
-        pytest.skip("shared MovingAI maps not present")
     code, _, err = run_cli(capsys, str(MOVINGAI / "arena.map"), "--headless")
     assert code == 2 and "start" in err and err.count("\n") == 1
 

@@ -17,10 +17,12 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+from textual import events
 
 from tui_search.engine.grid import Grid
 from tui_search.engine.mapfile import format_text_map, load_map, load_scenario
 from tui_search.engine.run import Run
+from tui_search.engine.search import CHUNK
 from tui_search.tui import playback
 from tui_search.tui.app import NEEDS_ENDPOINTS, SearchApp
 from tui_search.tui.screens.confirm_quit import ConfirmQuitScreen
@@ -96,8 +98,10 @@ async def wait_until(pilot, condition: Callable[[], bool], seconds: float = 20.0
 async def test_starts_paused_at_step_0_with_the_cursor_on_the_start() -> None:
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
-        await pilot.pause(0.3)
-        assert app.search_run is not None and app.search_run.k == 0
+        await pilot.pause()
+        assert app.search_run is not None
+        app._tick()  # a playback tick: paused, it moves nothing
+        assert app.search_run.k == 0
         assert not app.playing
         assert app.cursor_cell == (0, 0)
         assert isinstance(app.focused, GridView)
@@ -255,22 +259,38 @@ async def test_no_path_is_reported_when_the_frontier_empties() -> None:
         assert "path:" not in narration
 
 
+def post_keys(app: SearchApp, *keys: str) -> None:
+    """Queue key presses all at once, so each key after the first is handled before any timer
+    the first one starts (``pilot.press`` waits for the app to go idle after each key, which
+    lets a seek run slices, or finish, in between)."""
+    for key in keys:
+        app.post_message(events.Key(key, None))
+
+
+def slices_of_one_chunk(monkeypatch: pytest.MonkeyPatch) -> list[int]:
+    """Make every slice of ``end`` record exactly one chunk (a time slice of 0 s), so a small
+    map still takes a known number of slices whatever the machine's speed; returns the list
+    that gets the steps recorded after each slice."""
+    monkeypatch.setattr(playback, "SLICE_SECONDS", 0.0)
+    recorded: list[int] = []
+    record_for = playback.record_for
+
+    def counted(run: Run, seconds: float | None = None) -> bool:
+        try:
+            return record_for(run, seconds)
+        finally:
+            recorded.append(run.recorded)
+
+    monkeypatch.setattr(playback, "record_for", counted)
+    return recorded
+
+
 @sync
 async def test_end_on_a_big_map_runs_in_slices_and_keys_are_still_answered(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
-    slices: list[float] = []
-    record_for = playback.record_for
-
-    def timed(run: Run) -> bool:
-        t = time.perf_counter()
-        try:
-            return record_for(run)
-        finally:
-            slices.append(time.perf_counter() - t)
-
-    monkeypatch.setattr(playback, "record_for", timed)
-    app = SearchApp(open_grid(80, 80), algorithm="iddfs")  # 3.4 M steps: seconds to record
+    recorded = slices_of_one_chunk(monkeypatch)
+    app = SearchApp(open_grid(30, 30), algorithm="iddfs")  # 67,105 steps: 17 chunks
     seen: list[tuple[bool, str]] = []  # (seeking, narration) when the cursor key was handled
     move = app.action_move
 
@@ -280,32 +300,37 @@ async def test_end_on_a_big_map_runs_in_slices_and_keys_are_still_answered(
 
     app.action_move = spy  # type: ignore[method-assign]
     async with app.run_test(size=SIZE) as pilot:
-        await pilot.press("end", "right")
-        await wait_until(pilot, lambda: not app.seeking, 60)
+        first = app.search_run.recorded
+        post_keys(app, "end", "right")
+        await wait_until(pilot, lambda: seen and not app.seeking)
         run = app.search_run
-        assert run.at_end and run.found and run.k == run.total == 3_409_955
+        assert run.at_end and run.found and run.k == run.total == 67_105
         assert "Computing" not in stats(app)[1]
-        assert stats(app)[1].startswith("Goal (79,79) found from (78,78) · path")
+        assert stats(app)[1].startswith("Goal (29,29) found from (28,28) · path")
         assert app.cursor_cell == (1, 0)
     assert seen and seen[0][0], "the cursor key waited for the whole seek"
     assert seen[0][1].startswith("Computing the search…")
-    # Computed in many slices (each time-boxed to playback.SLICE_SECONDS; their durations are
-    # not asserted: this machine is shared and noisy -- the benchmark measures them).
-    assert len(slices) > 3
+    # Several slices, each recording one chunk, the last one the end of the search.
+    gains = [b - a for a, b in zip([first, *recorded], recorded)]
+    assert len(gains) > 3 and all(0 < gain <= CHUNK for gain in gains)
+    assert recorded[-1] == run.total
 
 
 @sync
-async def test_a_step_key_during_end_stops_the_seek_where_it_is() -> None:
-    app = SearchApp(open_grid(80, 80), algorithm="iddfs")
+async def test_a_step_key_during_end_stops_the_seek_where_it_is(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    recorded = slices_of_one_chunk(monkeypatch)
+    app = SearchApp(open_grid(30, 30), algorithm="iddfs")
     async with app.run_test(size=SIZE) as pilot:
-        await pilot.press("end")
-        assert app.seeking
-        await pilot.press("n")
+        post_keys(app, "end", "n")
         run = app.search_run
-        assert not app.seeking and not run.at_end and run.k == 1
-        recorded = run.recorded
-        await pilot.pause(0.2)
-        assert run.k == 1 and run.recorded == recorded
+        await wait_until(pilot, lambda: run.k == 1)
+        assert recorded, "end started a seek"
+        assert not app.seeking and not run.at_end and not run.done
+        slices, steps = len(recorded), run.recorded
+        app._seek_slice(run)  # what the seek's pending timer calls: it records no more
+        assert run.k == 1 and run.recorded == steps and len(recorded) == slices
         assert not stats(app)[1].startswith("Computing")
 
 
@@ -375,15 +400,20 @@ async def test_a_step_repaints_every_line_it_changes(algorithm: str) -> None:
 async def test_space_plays_and_pauses() -> None:
     app = SearchApp(open_grid(60, 60))
     async with app.run_test(size=SIZE) as pilot:
-        await pilot.press("plus", "plus", "plus")  # 50 steps/s
+        await pilot.press("plus", "plus", "plus")  # 50 steps/s: 2 steps a tick
+        assert playback.steps_per_tick(playback.SPEEDS[app.speed_index]) == 2
         await pilot.press("space")
+        run = app.search_run
         assert app.playing
-        await pilot.pause(0.4)
+        k = run.k
+        app._tick()  # what the playback timer calls
+        assert run.k == k + 2
+        await wait_until(pilot, lambda: run.k > k + 2)  # and the timer calls it by itself
         await pilot.press("space")
-        k = app.search_run.k
-        assert not app.playing and k > 3
-        await pilot.pause(0.3)
-        assert app.search_run.k == k
+        k = run.k
+        assert not app.playing
+        app._tick()  # paused: a tick moves nothing
+        assert run.k == k
 
 
 @sync
@@ -396,8 +426,11 @@ async def test_playback_at_top_speed_skips_frames_and_stops_at_the_end() -> None
         assert app.check_action("faster", ()) is None
         assert playback.steps_per_tick(playback.SPEEDS[-1]) > 1000  # frames are skipped
         await pilot.press("space")
-        await wait_until(pilot, lambda: app.search_run.at_end, 60)  # a guard against hanging
-        await pilot.pause(0.1)
+        run = app.search_run
+        k = run.k
+        app._tick()
+        assert run.k - k > 1  # one frame, many steps
+        await wait_until(pilot, lambda: run.at_end, 60)  # a guard against hanging
         assert not app.playing
 
 

@@ -1,0 +1,60 @@
+"""Timing a real process to its first full frame in a pseudo-terminal (POSIX only)."""
+
+from __future__ import annotations
+
+import os
+import select
+import subprocess
+import time
+from pathlib import Path
+
+from benchmarks.apps import TERMINAL
+
+
+def first_frame(argv: list[str], timeout: float = 60.0) -> float:
+    """Seconds from starting ``argv`` in a pseudo-terminal of TERMINAL size to the moment its
+    first full frame has been written: Textual writes a full frame line by line, each after a
+    cursor move, so the move to the last row marks the frame's end.  The process is killed
+    after (it is ours; by its pid)."""
+    import fcntl
+    import struct
+    import termios
+
+    cols, rows = TERMINAL
+    master, slave = os.openpty()
+    fcntl.ioctl(slave, termios.TIOCSWINSZ, struct.pack("HHHH", rows, cols, 0, 0))
+    env = {k: v for k, v in os.environ.items() if not k.startswith("TEXTUAL")}
+    env.update(TERM="xterm-256color", COLORTERM="truecolor", COLUMNS=str(cols), LINES=str(rows))
+    marker = f"\x1b[{rows};1H".encode()
+    t0 = time.perf_counter()
+    proc = subprocess.Popen(argv, stdin=slave, stdout=slave, stderr=slave, env=env,
+                            start_new_session=True, close_fds=True)
+    os.close(slave)
+    buf = b""
+    try:
+        while True:
+            left = timeout - (time.perf_counter() - t0)
+            if left <= 0:
+                raise TimeoutError(f"no frame from {argv} in {timeout} s")
+            ready, _, _ = select.select([master], [], [], left)
+            if not ready:
+                continue
+            try:
+                chunk = os.read(master, 65536)
+            except OSError:  # the child closed the terminal: it died
+                chunk = b""
+            if not chunk:
+                last = buf.decode("utf-8", "replace").strip().splitlines()[-1:] or ["no output"]
+                raise RuntimeError(f"{Path(argv[-1]).name}: exited before a frame: {last[0]}")
+            buf += chunk
+            if marker in buf:
+                return time.perf_counter() - t0
+    finally:
+        proc.kill()
+        try:  # drain so the child is not blocked writing while it dies
+            while select.select([master], [], [], 0.05)[0] and os.read(master, 65536):
+                pass
+        except OSError:
+            pass
+        proc.wait()
+        os.close(master)

@@ -1,0 +1,81 @@
+"""Section "startup": the console script to its first frame (against the trivial app, by
+path) and ``--headless`` (against ``python -c pass``, and importing neither textual nor rich)."""
+
+from __future__ import annotations
+
+import compileall
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import tui_search
+from benchmarks.apps import search_app_class
+from benchmarks.harness import fmt_time, interleaved, paired, series
+from benchmarks.maps import MAPS, MAZE, TUTORIAL, maze_cli_args
+from benchmarks.pty_probe import first_frame
+from benchmarks.table import Row, add
+
+#: The trivial Textual app, run by path as a user runs a script.
+TRIVIAL_APP = Path(__file__).resolve().with_name("trivial_app.py")
+
+
+def wall_of(argv: list[str]) -> float:
+    t = time.perf_counter()
+    subprocess.run(argv, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
+                   stderr=subprocess.DEVNULL, check=False)
+    return time.perf_counter() - t
+
+
+def cli_argv() -> list[str]:
+    script = Path(sys.executable).parent / "tui-search"
+    return [str(script)] if script.exists() else [sys.executable, "-m", "tui_search"]
+
+
+def bench_startup(quick: bool) -> None:
+    print("startup ...", file=sys.stderr, flush=True)
+    reps = 5 if quick else 11
+    py = sys.executable
+    cli = cli_argv()
+    # What a user's second start finds: the package's bytecode cached. (An editable install
+    # writes no .pyc until the first import, and with PYTHONDONTWRITEBYTECODE set -- as on
+    # the machines this was written on -- never: every start would compile ~20 ms of source.)
+    compileall.compile_dir(Path(tui_search.__file__).parent, quiet=1)
+    # the headless CLI: must not import Textual; compared with python -c pass
+    imp = subprocess.run([py, "-X", "importtime", "-m", "tui_search", str(TUTORIAL),
+                          "--headless"], capture_output=True, text=True, check=False)
+    heavy = sorted({ln.split("|")[-1].strip().split(".")[0] for ln in imp.stderr.splitlines()
+                    if ln.split("|")[-1].strip().split(".")[0] in ("textual", "rich")})
+    t = interleaved({"pass": lambda: wall_of([py, "-c", "pass"]),
+                     "headless": lambda: wall_of(cli + [str(TUTORIAL), "--headless"])}, reps)
+    series("python -c pass", t["pass"])
+    series("headless", t["headless"])
+    add(Row("startup", "tui-search tutorial.txt --headless imports textual/rich",
+            ", ".join(heavy) or "neither", "", None, "neither", not heavy))
+    add(Row("startup", "tui-search tutorial.txt --headless (whole process) vs python -c pass",
+            fmt_time(t["headless"]), f"pass {fmt_time(t['pass'])}",
+            paired(t["headless"], t["pass"]), "report"))
+
+    app_cls, why = search_app_class()
+    fns = {"trivial": lambda: first_frame([py, str(TRIVIAL_APP)])}
+    if app_cls is not None:
+        fns["tutorial"] = lambda: first_frame(cli + [str(TUTORIAL)])
+        if (MAPS / MAZE).exists():
+            fns["maze"] = lambda: first_frame(cli + maze_cli_args())
+    first_frame([py, str(TRIVIAL_APP)])  # warm the file cache and the .pyc files
+    t = interleaved(fns, reps)
+    for key, xs in t.items():
+        series(f"first frame {key}", xs)
+    base = t["trivial"]
+    add(Row("startup", "trivial Textual app: process start → first frame (pty)", fmt_time(base),
+            "", None, "report"))
+    if app_cls is None:
+        add(Row("startup", "tui-search first frame", "skipped", why))
+        return
+    r = paired(t["tutorial"], base)
+    add(Row("startup", "tui-search maps/tutorial.txt → first frame vs trivial app",
+            fmt_time(t["tutorial"]), f"trivial {fmt_time(base)}", r, "≤ 1.3", r <= 1.3))
+    if "maze" in t:
+        r = paired(t["maze"], base)
+        add(Row("startup", "tui-search maze512 (+.scen) → first frame vs trivial app",
+                fmt_time(t["maze"]), f"trivial {fmt_time(base)}", r, "≤ 2", r <= 2))

@@ -1,0 +1,75 @@
+"""The benchmark modules import, and their smallest pieces work (nothing here is timed).
+
+The benchmarks run by hand, not in CI, so a split or a rename that breaks one would go unseen
+until someone measures; these checks catch that in the test suite, in well under a second or
+two: every module imports, the entry point knows its sections and refuses a wrong one, the
+trivial Textual app answers its keys, and the press harness counts the lines Textual draws
+(it patches a Textual internal, which an upgrade could move).
+"""
+
+from __future__ import annotations
+
+import asyncio
+import importlib
+import pkgutil
+
+import pytest
+
+import benchmarks
+from benchmarks import bench, harness, step
+from benchmarks.baselines import bare_bfs, bare_dfs, bare_path_len
+from benchmarks.harness import interleaved, paired
+from benchmarks.maps import TUTORIAL
+from benchmarks.table import Row, fmt_ratio, print_table
+from benchmarks.trivial_app import Lines, TrivialApp
+from tui_search.engine.mapfile import load_map
+from tui_search.engine.run import Run
+
+
+def test_every_benchmark_module_imports() -> None:
+    names = sorted(m.name for m in pkgutil.iter_modules(benchmarks.__path__))
+    assert {"bench", "engine", "jump", "step", "startup", "trivial_app"} <= set(names)
+    for name in names:
+        importlib.import_module(f"benchmarks.{name}")
+
+
+def test_the_entry_point_has_the_four_sections_and_refuses_another(capsys) -> None:
+    assert list(bench.SECTIONS) == ["engine", "jump", "step", "startup"]
+    with pytest.raises(SystemExit) as info:
+        bench.main(["--only", "engine,nope"])
+    assert info.value.code == 2 and "unknown section 'nope'" in capsys.readouterr().err
+
+
+def test_the_bare_baselines_find_the_engines_path_lengths() -> None:
+    grid = load_map(TUTORIAL)
+    for algorithm, bare in (("bfs", bare_bfs), ("dfs", bare_dfs)):
+        run = Run(grid, algorithm)
+        run.advance()
+        assert bare_path_len(grid, bare(grid)) == len(run.path()) - 1 == 7
+
+
+def test_the_harness_and_the_table(capsys, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(harness.gc, "collect", lambda: 0)  # ~0.1 s a call, and not tested here
+    samples = interleaved({"a": lambda: None, "b": lambda: sum(range(10))}, repeats=2)
+    assert [len(xs) for xs in samples.values()] == [2, 2]
+    assert paired([2.0, 4.0], [1.0, 1.0]) == 3.0 and fmt_ratio(0.0712) == "0.071"
+    print_table([Row("engine", "what", "1 ms", "base", 0.5, "≤ 1", True)])
+    out = capsys.readouterr().out
+    assert "what" in out and "pass" in out and out.rstrip().endswith("1 pass, 0 fail, 0 reported only")
+
+
+def test_the_trivial_app_answers_n_and_p() -> None:
+    async def press() -> str:
+        app = TrivialApp()
+        async with app.run_test(size=(40, 10)) as pilot:
+            await pilot.press("n", "n", "p", "n")
+            return app.query_one(Lines).render_line(5).text
+
+    assert asyncio.run(press()).rstrip() == "line 5: pressed 2 times"
+
+
+def test_the_press_harness_counts_the_lines_each_press_draws() -> None:
+    """A key that refreshes one line draws one line afresh; ``f`` with ``first=7``, seven."""
+    for app, key, lines in ((TrivialApp(), "n", 1), (TrivialApp(7), "f", 7)):
+        walls, _, _, drawn = asyncio.run(step._presses(app, [key] * 3, warmup=1))
+        assert len(walls) == 3 and drawn == lines
