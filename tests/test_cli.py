@@ -179,7 +179,7 @@ def test_max_steps_gives_up_with_exit_code_3(capsys) -> None:
     assert code == 3 and err == ""
     assert result["gave_up"] and not result["found"] and result["expanded"] == 30
     code, out, _ = run_cli(capsys, TUTORIAL, "--headless", "-a", "iddfs", "--max-steps", "30")
-    assert out.splitlines()[0].endswith("gave up after 30 expansions (raise --max-steps)")
+    assert out.splitlines()[0].endswith("gave up at --max-steps 30 (raise it to search on)")
     code, out, _ = run_cli(capsys, TUTORIAL, "--headless", "-a", "iddfs", "--max-steps", "85",
                            "--json")
     assert code == 0 and json.loads(out)["found"] and not json.loads(out)["gave_up"]

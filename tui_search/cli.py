@@ -27,6 +27,7 @@ from tui_search.engine.search import ALGORITHM_NAMES, ALGORITHMS, SearchOptions
 
 EXIT_FOUND, EXIT_NO_PATH, EXIT_BAD_INPUT, EXIT_GAVE_UP = 0, 1, 2, 3
 TUTORIAL_NAME = "tutorial.txt"
+BUILT_IN_TITLE = "tutorial (built-in)"  # the app's title for the map with no file
 
 
 class UsageError(Exception):
@@ -142,7 +143,7 @@ def human_summary(result: dict, where: str) -> str:
     name = ALGORITHM_NAMES[result["algorithm"]]
     outcome = "path found" if result["found"] else "no path"
     if result["gave_up"]:
-        outcome = f"gave up after {result['expanded']:,} expansions (raise --max-steps)"
+        outcome = f"gave up at --max-steps {result['expanded']:,} (raise it to search on)"
     lines = [f"{name} on {where}: {outcome}"]
     if result["found"]:
         moves = ", ".join(result["moves"]) or "(start is the goal)"
@@ -185,7 +186,7 @@ def run_app(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
     from tui_search.tui.app import SearchApp  # Textual only when the app is wanted
 
     app = SearchApp(grid, path=path, algorithm=args.algorithm, options=_options(args),
-                    max_steps=args.max_steps)
+                    max_steps=args.max_steps, unsaved_name=BUILT_IN_TITLE)
     app.run()
     return app.return_code or 0
 

@@ -22,6 +22,7 @@ class FileActions:
 
     grid: Grid
     map_path: Path | None
+    map_name: str  # what the title calls the map
     dirty: bool
 
     def action_save(self) -> None:
@@ -57,8 +58,7 @@ class FileActions:
             return
         from tui_search.tui.screens.confirm_quit import ConfirmQuitScreen
 
-        name = self.map_path.name if self.map_path else "untitled"
-        self.push_screen(ConfirmQuitScreen(name), self._quit_answer)
+        self.push_screen(ConfirmQuitScreen(self.map_name), self._quit_answer)
 
     def _quit_answer(self, answer: str | None) -> None:
         from tui_search.tui.screens.confirm_quit import QUIT, SAVE
