@@ -126,6 +126,27 @@ async def test_end_left_alone_gets_there_in_many_slices(monkeypatch: pytest.Monk
     assert len(calls) > 10 and calls[-1] is None and all(c is not None for c in calls[:-1])
 
 
+@sync
+async def test_home_from_far_moves_in_slices_too(monkeypatch: pytest.MonkeyPatch) -> None:
+    app = SearchApp(open_grid(120, 120))
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("end")
+        await wait_until(pilot, lambda: not app.seeking, 60)
+        run = app.search_run
+        total = run.k
+        monkeypatch.setattr(Run, "REBUILD_PIECE", 64)
+        monkeypatch.setattr(playback, "SLICE_SECONDS", 0.0)
+        monkeypatch.setattr(playback, "SLICE_PAUSE", 3600.0)
+        await pilot.press("home")
+        assert app.seeking and run.k == total and stats(app)[1].startswith("Moving to step 0… ")
+        await pilot.press("escape")
+        assert not app.seeking and run.k == total and run.at_end
+        monkeypatch.setattr(playback, "SLICE_PAUSE", 0.01)
+        await pilot.press("home")
+        await wait_until(pilot, lambda: not app.seeking, 60)
+        assert run.k == 0 and stats(app)[1].startswith("START (0,0) is on the queue")
+
+
 # -- item 11: behind "terminal too small" only q acts --------------------------------------
 
 

@@ -107,6 +107,7 @@ class SearchApp(EditActions, FileActions, App[int]):
         self.playing = False
         self.seeking = False
         self._moves: Iterator[float] | None = None  # the pieces of a seek's move, once recorded
+        self._seek_to = 0  # the step they move to
         self.note = ""
         self.search_run: Run | None = None
         self._stroke: bool | None = None  # what a mouse drag paints: True wall, False free
@@ -247,10 +248,16 @@ class SearchApp(EditActions, FileActions, App[int]):
 
     def action_first(self) -> None:
         run = self.search_run
-        if run is not None:
-            self._stop()
-            run.goto(0)
-            self._show()
+        if run is None:
+            return
+        self._stop()
+        if run.k > run.REBUILD_AFTER:  # a long way back (a big map): in slices, like end
+            self.seeking = True
+            self._moves, self._seek_to = run.rebuild_pieces(0), 0
+            self._seek_slice(run)
+            return
+        run.goto(0)
+        self._show()
 
     def action_reset(self) -> None:
         self._new_run()
@@ -258,7 +265,7 @@ class SearchApp(EditActions, FileActions, App[int]):
     def action_last(self) -> None:
         """Go to the end: record the search, then move there, in slices of at most
         SLICE_SECONDS of work with the event loop answering keys in between (esc, or any key
-        that moves the position, stops it where it is)."""
+        that moves the position, stops it where it is).  ``home`` from far moves the same way."""
         if self.search_run is None or self.search_run.at_end:
             return
         self._stop()
@@ -271,16 +278,17 @@ class SearchApp(EditActions, FileActions, App[int]):
         deadline = perf_counter() + playback.SLICE_SECONDS
         if self._moves is None:
             if not playback.record_for(run):
-                self._seek_note(f"Computing the search… {group_digits(run.recorded)} steps recorded")
+                recorded = group_digits(run.recorded)
+                self._seek_note(f"Computing the search… {recorded} steps recorded")
                 return
             if run.recorded - run.k <= run.REBUILD_AFTER:  # a few steps: at once
                 self._arrive(run, run.k, run.at_end, lambda: run.goto(run.recorded))
                 return
-            self._moves = run.rebuild_pieces(run.recorded)
+            self._moves, self._seek_to = run.rebuild_pieces(run.recorded), run.recorded
         old_k, was_at_end = run.k, run.at_end
         fraction = playback.rebuild_for(self._moves, max(0.0, deadline - perf_counter()))
         if fraction is not None:
-            self._seek_note(f"Moving to step {group_digits(run.recorded)}… {fraction:.0%}")
+            self._seek_note(f"Moving to step {group_digits(self._seek_to)}… {fraction:.0%}")
             return
         self._arrive(run, old_k, was_at_end)
 

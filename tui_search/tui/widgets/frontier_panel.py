@@ -7,9 +7,9 @@ frontier holds 3 entries or 100 000, and :meth:`FrontierPanel.show` costs O(1).
 
 Each line reads ``▶+ (2,1) NE`` -- a marker column (``▶`` the entry expanded next, ``+`` an entry
 the step just taken added), the cell, and the move that reached it -- with ``d=3`` before the
-move for iterative deepening.  The first and last lines carry a hint (``← front (next out)`` / ``← back (newest)``
-for a queue, ``← top (next out)`` / ``← bottom (oldest)`` for a stack) so a student sees which
-end is which.
+move for iterative deepening.  The first and last lines carry a hint (``← front (next out)`` /
+``← back (newest)`` for a queue, ``← top (next out)`` / ``← bottom (oldest)`` for a stack) so a
+student sees which end is which.
 """
 
 from __future__ import annotations
