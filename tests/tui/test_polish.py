@@ -264,6 +264,19 @@ async def test_space_at_the_last_step_plays_again_from_step_0() -> None:
 
 
 @sync
+async def test_space_at_the_last_step_of_a_big_run_slides_back_then_plays() -> None:
+    app = SearchApp(open_grid(120, 120))
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("end")
+        await wait_until(pilot, lambda: not app.seeking, 60)
+        total = app.search_run.k
+        assert total > app.search_run.REBUILD_AFTER
+        await pilot.press("space")
+        await wait_until(pilot, lambda: not app.seeking, 60)
+        assert app.playing and app.search_run.k < 100 < total
+
+
+@sync
 async def test_stack_columns_stand_in_the_same_place_for_start_and_moves() -> None:
     """``d=0 START`` and ``d=1 S``: one space between columns, the move in the same column
     whatever its label (it comes last, after the depth)."""

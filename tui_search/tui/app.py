@@ -108,6 +108,7 @@ class SearchApp(EditActions, FileActions, App[int]):
         self.seeking = False
         self._moves: Iterator[float] | None = None  # the pieces of a seek's move, once recorded
         self._seek_to = 0  # the step they move to
+        self._play_after = False  # play once the seek is there (space at the last step)
         self.note = ""
         self.search_run: Run | None = None
         self._stroke: bool | None = None  # what a mouse drag paints: True wall, False free
@@ -251,13 +252,21 @@ class SearchApp(EditActions, FileActions, App[int]):
         if run is None:
             return
         self._stop()
-        if run.k > run.REBUILD_AFTER:  # a long way back (a big map): in slices, like end
+        self._to_step_0(run)
+
+    def _to_step_0(self, run: Run, then_play: bool = False) -> None:
+        """Back to step 0: from far (a big map), in slices like end; then play if asked."""
+        if run.k > run.REBUILD_AFTER:
             self.seeking = True
             self._moves, self._seek_to = run.rebuild_pieces(0), 0
+            self._play_after = then_play
             self._seek_slice(run)
             return
         run.goto(0)
-        self._show()
+        if then_play:
+            self._play()
+        else:
+            self._show()
 
     def action_reset(self) -> None:
         self._new_run()
@@ -308,6 +317,10 @@ class SearchApp(EditActions, FileActions, App[int]):
         self.note = ""
         if move is not None:
             move()
+        if self._play_after:
+            self._play_after = False
+            self._play()
+            return
         self._moved(old_k, was_at_end)
 
     def action_stop_seek(self) -> None:
@@ -324,10 +337,14 @@ class SearchApp(EditActions, FileActions, App[int]):
         elif run is not None:
             self._stop()
             if run.at_end:
-                run.goto(0)
-            self.playing = True
-            self._timer.resume()
-            self._show()
+                self._to_step_0(run, then_play=True)
+            else:
+                self._play()
+
+    def _play(self) -> None:
+        self.playing = True
+        self._timer.resume()
+        self._show()
 
     def action_pause(self) -> None:
         if self.playing:
@@ -339,6 +356,7 @@ class SearchApp(EditActions, FileActions, App[int]):
         if self.seeking:
             self.seeking = False
             self._moves = None  # the run is still whole where it was
+            self._play_after = False
             self.note = ""
         if self.playing:
             self.playing = False
