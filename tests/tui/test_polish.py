@@ -293,3 +293,17 @@ async def test_stack_columns_stand_in_the_same_place_for_start_and_moves() -> No
                     labels.add(match.group(2))
             await pilot.press("n")
         assert {"START", "S", "SE"} <= labels and len(columns) == 1, (labels, columns)
+
+
+
+@sync
+async def test_a_slice_of_end_due_after_the_app_closed_does_nothing(one_slice) -> None:
+    """Seen: leaving the app while `end` computed, the next slice came due as it closed and
+    found no screen to show the run on (a traceback on the way out)."""
+    app = SearchApp(open_grid(120, 120))
+    app.search_run.advance()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("end")
+        assert app.seeking
+    app._seek_slice(app.search_run)  # what the pending timer would do
+    assert app.search_run.k == 0

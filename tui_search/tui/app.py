@@ -282,8 +282,8 @@ class SearchApp(EditActions, FileActions, App[int]):
         self._seek_slice(self.search_run)
 
     def _seek_slice(self, run: Run) -> None:
-        if not self.seeking or run is not self.search_run:
-            return
+        if not self.seeking or run is not self.search_run or not self.is_running:
+            return  # stopped, replaced, or the app is closing (its screens are gone)
         deadline = perf_counter() + playback.SLICE_SECONDS
         if self._moves is None:
             if not playback.record_for(run):
