@@ -31,6 +31,7 @@ from tui_search.engine.semantics import CORNER_RULES, GOAL_TESTS, VISIT_RULES, S
 
 EXIT_FOUND, EXIT_NO_PATH, EXIT_BAD_INPUT, EXIT_GAVE_UP = 0, 1, 2, 3
 TUTORIAL_NAME = "tutorial.txt"
+BUILT_IN_TITLE = "tutorial (built-in)"  # the app's title for the map with no file
 
 
 class UsageError(Exception):
@@ -295,7 +296,7 @@ def run_app(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
     from tui_search.tui.app import SearchApp  # Textual only when the app is wanted
 
     app = SearchApp(grid, path=path, algorithm=args.algorithm, options=semantics_from(args),
-                    max_steps=args.max_steps)
+                    max_steps=args.max_steps, unsaved_name=BUILT_IN_TITLE)
     app.run()
     return app.return_code or 0
 

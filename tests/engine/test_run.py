@@ -199,3 +199,61 @@ def test_a_goal_found_in_the_chunk_past_the_limit_is_cut_off_too() -> None:
     result = summary(run)
     assert result["gave_up"] and not result["found"] and result["path"] is None
     assert result["expanded"] == CHUNK + 500 and result["generated"] == CHUNK + 501  # +start
+
+
+@settings(max_examples=120, deadline=None)
+@given(random_grids(max_side=7), st.sampled_from(["bfs", "dfs", "iddfs"]),
+       st.integers(0, 400), st.integers(0, 400), st.sampled_from([1, 2, 5, 1 << 15]),
+       st.sampled_from([7, 1 << 20]))
+def test_a_rebuild_in_pieces_gives_the_state_stepping_gives(grid, algo, a, b, piece,
+                                                            cells) -> None:
+    """The sliced rebuild (``end`` in the app) leaves the run as stepping there would, and
+    until its last piece the run is untouched at its old position."""
+    run = Run(grid, algo)
+    run.REBUILD_PIECE, run.REBUILD_CELLS = piece, cells
+    run.advance()
+    start, target = a % (run.total + 1), b % (run.total + 1)
+    run.goto(start)
+    before = snapshot(run)
+    pieces = run.rebuild_pieces(target)
+    fractions = []
+    for fraction in pieces:
+        assert snapshot(run) == before  # not yet moved: whole at the old position
+        fractions.append(fraction)
+    assert snapshot(run) == fresh_at(grid, algo, target)
+    assert fractions == sorted(fractions) and 0 < fractions[-1] <= 1
+
+
+def test_a_rebuild_in_pieces_does_a_bounded_amount_per_piece_and_can_be_dropped() -> None:
+    grid = Grid(60, 60, start=(0, 0), goal=(59, 59))
+    for algo in ("bfs", "dfs", "iddfs"):
+        run = Run(grid, algo)
+        run.REBUILD_PIECE, run.REBUILD_CELLS = 100, 500
+        run.advance(3000)
+        k = run.recorded
+        events = run.rec.step_end[k] - run.rec.iter_root[run.iteration_of(k)]
+        pieces = run.rebuild_pieces(k)
+        next(pieces)
+        next(pieces)
+        pieces.close()  # dropped half-way (a key pressed during `end`)
+        assert run.k == 0 and run.frontier_len() == 1 and run.cell_state((1, 1)) == 0
+        n = sum(1 for _ in run.rebuild_pieces(k))
+        # No piece handles more than REBUILD_PIECE events or allocates REBUILD_CELLS counters.
+        assert n >= events // 100 + 2 * (62 * 62 // 500)
+        assert run.k == k and snapshot(run) == fresh_at(grid, algo, k)
+
+
+@settings(max_examples=60, deadline=None)
+@given(random_grids(max_side=7), st.sampled_from(["bfs", "dfs", "iddfs"]))
+def test_the_peak_frontier_is_kept_while_recording(grid, algo) -> None:
+    """Recording fills the running maximum (so ``end`` on a big map scans nothing), and it
+    is the largest frontier stepping meets, over every iteration of iterative deepening."""
+    run = Run(grid, algo)
+    run.advance()
+    assert len(run._peak) == run.total + 1
+    stepper = Run(grid, algo)
+    peak = stepper.frontier_len()
+    assert run.peak_frontier(0) == peak
+    while stepper.forward():
+        peak = max(peak, stepper.frontier_len())
+        assert run.peak_frontier(stepper.k) == peak

@@ -224,7 +224,7 @@ async def test_p_at_step_0_and_n_at_the_end_are_greyed_out_and_do_nothing() -> N
         await pilot.pause()
         bindings = app.screen.active_bindings
         assert bindings["n"].enabled is False and bindings["end"].enabled is False
-        assert bindings["space"].enabled is False
+        assert bindings["space"].enabled is True  # space plays again from step 0
         assert bindings["p"].enabled is True
         total = app.search_run.k
         await pilot.press("n")
@@ -709,7 +709,7 @@ def test_help_lists_every_key_of_the_binding_table() -> None:
 
     listed = " ".join(key for key, _ in KEYS).split()
     aliases = {"up": "arrows", "down": "arrows", "left": "arrows", "right": "arrows",
-               "plus": "+", "minus": "-", "question_mark": "?", "comma": ","}
+                "plus": "+", "minus": "-", "question_mark": "?", "comma": ",", "escape": "esc"}
     for binding in Binding.make_bindings(SearchApp.BINDINGS):
         assert aliases.get(binding.key, binding.key) in listed, binding.key
 
@@ -824,7 +824,7 @@ async def test_a_run_that_reaches_the_step_limit_says_it_gave_up() -> None:
         assert app.search_run.k == 30 and app.search_run.gave_up
         status, narration = stats(app)
         assert "step 30/30" in status
-        assert narration.endswith(". Gave up: the step limit (30) is reached")
+        assert narration.endswith(". Gave up at --max-steps 30")
     # Ending an iteration exactly at the limit: the empty stack does not claim "no path".
     app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, algorithm="iddfs", max_steps=1)
     async with app.run_test(size=SIZE) as pilot:
@@ -832,7 +832,7 @@ async def test_a_run_that_reaches_the_step_limit_says_it_gave_up() -> None:
         await wait_until(pilot, lambda: app.search_run.at_end)
         await pilot.pause()
         assert app.search_run.gave_up and app.search_run.frontier_len() == 0
-        assert app.query_one(FrontierPanel).lines() == ["empty — gave up at the step limit"]
+        assert app.query_one(FrontierPanel).lines() == ["empty — gave up at --max-steps 1"]
 
 
 @sync

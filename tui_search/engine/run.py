@@ -21,7 +21,7 @@ from bisect import bisect_right
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 from enum import IntEnum
-from itertools import accumulate
+from itertools import accumulate, compress
 
 from tui_search.engine.algorithms import DEFAULT_ALGORITHM, Frontier, get_algorithm
 from tui_search.engine.grid import DIRECTIONS, Cell, Grid
@@ -105,6 +105,7 @@ class Run:
             next(self._loop, None)
             if rec.steps > self.max_steps or (not rec.done and rec.steps == self.max_steps):
                 self._give_up()
+            self._extend_peak(rec.steps)  # kept as it is recorded: the end costs no scan
 
     def _give_up(self) -> None:
         """Stop at exactly ``max_steps`` expansions (iterative deepening can take billions of
@@ -273,27 +274,71 @@ class Run:
         return exp[first : last + 1] if isinstance(exp, array) else range(first - 1, last)
 
     def _rebuild(self, k: int) -> None:
-        """Set the position to step ``k`` in bulk, in time linear in the iteration's events
-        (a long jump: ``end`` or ``home`` on a big map).  Within an iteration every event is
-        pushed in generation order and only the top is popped, so the stack at ``k`` is
-        simply the events generated and not yet expanded, in generation order."""
+        """Set the position to step ``k`` in bulk (a long jump: ``end`` or ``home``)."""
+        for _ in self.rebuild_pieces(k):
+            pass
+
+    #: Events one piece of :meth:`rebuild_pieces` handles: a few milliseconds of work.
+    REBUILD_PIECE = 1 << 15
+    #: Counters one piece of :meth:`rebuild_pieces` allocates (zeroing 4 MB: a few ms; a
+    #: 4096x4096 map's counters are 67 MB each, which took a tenth of a second in one go).
+    REBUILD_CELLS = 1 << 20
+
+    def rebuild_pieces(self, k: int) -> Iterator[float]:
+        """Move the position to recorded step ``k`` in bulk, one bounded piece of work per
+        ``next()`` (at most :attr:`REBUILD_PIECE` events or :attr:`REBUILD_CELLS` counters),
+        so that a caller with an event loop (the app's ``end`` on a big map) stays responsive.
+        Each piece yields the fraction of the work done.
+
+        The counters are built on the side, from the record alone, and take the run's place
+        after the last piece: until then the run stays whole at its old position (it may be
+        shown, even moved), and dropping the generator leaves it as it was.  The work is
+        linear in the events of ``k``'s iteration.  Within an iteration every event is pushed
+        in generation order and only the top is popped, so the stack at ``k`` is simply the
+        events generated and not yet expanded, in generation order."""
         rec = self.rec
-        self._clear_iteration(self.iteration_of(self.k), self.k)
+        k = max(0, min(k, rec.steps))
         it = self.iteration_of(k)
         root, first = rec.iter_root[it], rec.iter_first_step[it]
         end = rec.step_end[k] if k >= first else root + 1
-        gen_node, n_gen, n_exp = rec.gen_node, self._n_gen, self._n_exp
-        for p in gen_node[root:end]:
-            n_gen[p] += 1
-        expanded = self._expanded_events(first, k)
-        for g in expanded:
-            n_exp[gen_node[g]] += 1
-        if self._lifo:
-            open_ = bytearray(b"\x01") * (end - root)
+        last = max(k, first - 1)  # steps first .. last expanded events of this iteration
+        piece = self.REBUILD_PIECE
+        lifo = self._lifo
+        size, cells = len(self.problem.walls), self.REBUILD_CELLS
+        # Progress in events' worth of work: zeroing a counter costs about 1/32 of an event.
+        total = 2 * size / 32 + (end - root) * (2 if lifo else 1) + (last - first + 1)
+        done = 0.0
+        n_gen, n_exp = array("i"), array("i")
+        for counters in (n_gen, n_exp):
+            for lo in range(0, size, cells):
+                counters.frombytes(bytes(4 * min(cells, size - lo)))
+                done += min(cells, size - lo) / 32
+                yield done / total
+        gen_node = rec.gen_node
+        for lo in range(root, end, piece):
+            for p in gen_node[lo : min(lo + piece, end)]:
+                n_gen[p] += 1
+            done += min(piece, end - lo)
+            yield done / total
+        open_ = bytearray(b"\x01") * (end - root) if lifo else bytearray()
+        for lo in range(first, last + 1, piece):
+            hi = min(lo + piece, last + 1)
+            expanded = self._expanded_events(lo, hi - 1)
             for g in expanded:
-                open_[g - root] = 0
-            self._stack = [g for g in range(root, end) if open_[g - root]]
-        self.k = k
+                n_exp[gen_node[g]] += 1
+            if lifo:
+                for g in expanded:
+                    open_[g - root] = 0
+            done += hi - lo
+            yield done / total
+        stack: list[int] = []
+        if lifo:
+            for lo in range(root, end, piece):
+                hi = min(lo + piece, end)
+                stack.extend(compress(range(lo, hi), open_[lo - root : hi - root]))
+                done += hi - lo
+                yield done / total
+        self._n_gen, self._n_exp, self._stack, self.k = n_gen, n_exp, stack, k
 
     def forward(self) -> bool:
         """One step forwards; False when already at the end."""
@@ -479,19 +524,33 @@ class Run:
         return (rec.step_end[k] - rec.iter_root[it]) - (k - first + 1)
 
     def peak_frontier(self, k: int | None = None) -> int:
-        """The largest frontier size over steps 0..k (default: the position)."""
+        """The largest frontier size over steps 0..k (default: the position): a look-up, the
+        table being kept as the search is recorded."""
         k = self.k if k is None else k
-        peak = self._peak
-        if len(peak) <= k:
-            lo, hi = len(peak), min(k, self.rec.steps) + 1
-            if self.rec.gen_depth is None:  # one iteration: size = generated - expanded
-                sizes = map(operator.sub, self.rec.step_end[lo:hi], range(lo, hi))
+        self._extend_peak(min(k, self.rec.steps))
+        return self._peak[k]
+
+    def _extend_peak(self, k: int) -> None:
+        """Extend the running-maximum table of frontier sizes over steps 0..k.  Within one
+        iteration the frontier size at step j is the events generated in it minus the
+        expansions, ``step_end[j] - j - (root - first + 1)``: one vectorised pass a piece."""
+        peak, rec = self._peak, self.rec
+        lo = len(peak)
+        while lo <= k:
+            it = self.iteration_of(lo)
+            first = rec.iter_first_step[it]
+            if lo < first:  # step 0, before the first expansion: just the start
+                sizes: Iterable[int] = [1]
+                hi = lo + 1
             else:
-                sizes = (self.frontier_size_at(j) for j in range(lo, hi))
+                hi = (min(k + 1, rec.iter_first_step[it + 1])
+                      if it + 1 < len(rec.iter_first_step) else k + 1)
+                c = rec.iter_root[it] - first + 1
+                sizes = map(operator.sub, rec.step_end[lo:hi], range(lo + c, hi + c))
             running = accumulate(sizes, max, initial=peak[-1] if peak else 0)
             next(running)  # the initial value is already in the table
             peak.extend(running)
-        return peak[k]
+            lo = hi
 
     # -- the answer ------------------------------------------------------------------------
     def path_gens(self) -> list[int]:

@@ -9,8 +9,10 @@ moves in time-boxed slices so keys are still answered.
 
 from __future__ import annotations
 
+from collections.abc import Callable, Iterator
 from dataclasses import replace
 from pathlib import Path
+from time import perf_counter
 from typing import ClassVar
 
 from textual import events
@@ -26,6 +28,7 @@ from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
 from tui_search.tui import playback
 from tui_search.tui.editing import EditActions
 from tui_search.tui.files import FileActions
+from tui_search.tui.narration import group_digits
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.key_bar import KeyBar
@@ -35,6 +38,12 @@ from tui_search.tui.widgets.stats import Stats
 
 MIN_WIDTH, MIN_HEIGHT = 60, 20
 NEEDS_ENDPOINTS = "Place a start (s) and a goal (g) to search"
+#: What the key bar keeps when it is too narrow for every hint: the highest; help and quit
+#: always (the bar drops the lowest first).
+KEY_IMPORTANCE = {
+    "help": 10, "quit": 10, "stop_seek": 9, "next": 8, "play": 7, "pause": 7, "algorithm": 6,
+    "reset": 4, "save": 3, "overview": 2,
+}
 STEP = Binding.Group("Step", compact=True)
 ALGO = Binding.Group("BFS/DFS/ID", compact=True)
 
@@ -54,11 +63,16 @@ class SearchApp(EditActions, FileActions, App[int]):
         Binding("right,l", "move(1,0)", "Cursor right", show=False),
         Binding("n", "next", "Next", group=STEP, tooltip="Next step (one expansion)"),
         Binding("p", "prev", "Prev", group=STEP, tooltip="Previous step"),
-        Binding("space", "play", "Play", tooltip="Play / pause"),
+        # One key, two hints: "Play" while paused, "Pause" while playing (check_action hides
+        # the other, and a key runs the first of its bindings that is enabled).
+        Binding("space", "play", "Play", tooltip="Play (at the last step: again from step 0)"),
+        Binding("space", "pause", "Pause", tooltip="Pause"),
         Binding("plus", "faster", "Faster", show=False, key_display="+", tooltip="Faster"),
         Binding("minus", "slower", "Slower", show=False, key_display="-", tooltip="Slower"),
         Binding("home", "first", "First", show=False, tooltip="First step"),
         Binding("end", "last", "Last", show=False, tooltip="Last step: the answer"),
+        Binding("escape", "stop_seek", "Stop", key_display="esc",
+                tooltip="Stop computing the last step"),
         Binding("1", "algorithm('bfs')", "BFS", group=ALGO, tooltip="Breadth-first search"),
         Binding("2", "algorithm('dfs')", "DFS", group=ALGO, tooltip="Depth-first search"),
         Binding("3", "algorithm('iddfs')", "IDDFS", group=ALGO, tooltip="Iterative deepening"),
@@ -83,11 +97,13 @@ class SearchApp(EditActions, FileActions, App[int]):
         algorithm: str = "bfs",
         options: Semantics = DEFAULT_SEMANTICS,
         max_steps: int = MAX_STEPS,
+        unsaved_name: str = "untitled",
     ) -> None:
         super().__init__()
         self.grid = grid
         self.max_steps = max_steps
         self.map_path = Path(path) if path is not None else None
+        self.unsaved_name = unsaved_name  # the title of a map with no file (the built-in one)
         self.algorithm = algorithm
         self.options = options
         self.dirty = False
@@ -95,6 +111,9 @@ class SearchApp(EditActions, FileActions, App[int]):
         self.speed_index = playback.DEFAULT_SPEED
         self.playing = False
         self.seeking = False
+        self._moves: Iterator[float] | None = None  # the pieces of a seek's move, once recorded
+        self._seek_to = 0  # the step they move to
+        self._play_after = False  # play once the seek is there (space at the last step)
         self.note = ""
         self.search_run: Run | None = None
         self._stroke: bool | None = None  # what a mouse drag paints: True wall, False free
@@ -112,7 +131,7 @@ class SearchApp(EditActions, FileActions, App[int]):
         # the right; the legend docks under the map, which is centred in what is left.
         # (Containers for the same layout cost every key a few more hops and every repaint
         # a few more widgets to composite.)
-        yield KeyBar(id="keys")
+        yield KeyBar(KEY_IMPORTANCE, id="keys")
         yield self.stats
         with Vertical(id="side"):
             yield self.frontier_panel
@@ -135,10 +154,22 @@ class SearchApp(EditActions, FileActions, App[int]):
 
     def _check_size(self, width: int, height: int) -> None:
         small = width < MIN_WIDTH or height < MIN_HEIGHT
-        self.screen_stack[0].set_class(small, "-too-small")
+        if small != self.too_small:
+            self.screen_stack[0].set_class(small, "-too-small")
+            self.refresh_bindings()  # behind the message only q acts
         self.screen_stack[0].query_one("#too-small", Static).update(
             f"Terminal too small: need at least {MIN_WIDTH}×{MIN_HEIGHT}, have {width}×{height}"
         )
+
+    @property
+    def too_small(self) -> bool:
+        """True while the terminal is too small and the app shows only a message."""
+        return bool(self.screen_stack) and self.screen_stack[0].has_class("-too-small")
+
+    @property
+    def map_name(self) -> str:
+        """The map as its title names it: its file's name, else ``unsaved_name``."""
+        return self.map_path.name if self.map_path else self.unsaved_name
 
     # -- the run and what shows it ----------------------------------------------------------
     def _new_run(self, note: str = "") -> None:
@@ -167,20 +198,29 @@ class SearchApp(EditActions, FileActions, App[int]):
         speed = playback.speed_text(playback.SPEEDS[self.speed_index])
         playing = f"▶ playing {speed}" if self.playing else f"speed {speed}"
         self.stats.show(run, self.algorithm, playing=playing, note=self.note)
-        name = self.map_path.name if self.map_path else "untitled"
-        title = f"{name} {'· modified' if self.dirty else ''}".strip()
+        title = f"{self.map_name} {'· modified' if self.dirty else ''}".strip()
         if self.view.border_title != title:  # setting it repaints the whole view
             self.view.border_title = title
         key = (run is None, run and run.k == 0, run and run.at_end, self.speed_index,
-               self.playing)
+               self.playing, self.seeking)
         if key != self._bindings_key:
             self._bindings_key = key
             self.refresh_bindings()
 
     def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
-        """Grey out (None) the keys that cannot act now."""
+        """Grey out (None) the keys that cannot act now, hide (False) those that do not apply
+        (Play while playing, Pause while not, esc but while computing the end), and behind
+        the "too small" message let only q act."""
         run = self.search_run
-        if action in ("next", "play", "last"):
+        if self.too_small:
+            return action in ("quit", "help_quit")
+        if action == "play":
+            return False if self.playing else (None if run is None else True)
+        if action == "pause":
+            return self.playing
+        if action == "stop_seek":
+            return self.seeking
+        if action in ("next", "last"):
             return None if run is None or (run.at_end and not self.playing) else True
         if action in ("prev", "first"):
             return None if run is None or run.k == 0 else True
@@ -214,17 +254,32 @@ class SearchApp(EditActions, FileActions, App[int]):
 
     def action_first(self) -> None:
         run = self.search_run
-        if run is not None:
-            self._stop()
-            run.goto(0)
+        if run is None:
+            return
+        self._stop()
+        self._to_step_0(run)
+
+    def _to_step_0(self, run: Run, then_play: bool = False) -> None:
+        """Back to step 0: from far (a big map), in slices like end; then play if asked."""
+        if run.k > run.REBUILD_AFTER:
+            self.seeking = True
+            self._moves, self._seek_to = run.rebuild_pieces(0), 0
+            self._play_after = then_play
+            self._seek_slice(run)
+            return
+        run.goto(0)
+        if then_play:
+            self._play()
+        else:
             self._show()
 
     def action_reset(self) -> None:
         self._new_run()
 
     def action_last(self) -> None:
-        """Go to the end: record the search in slices of at most SLICE_SECONDS (keys are
-        answered in between), then jump there in one bulk rebuild."""
+        """Go to the end: record the search, then move there, in slices of at most
+        SLICE_SECONDS of work with the event loop answering keys in between (esc, or any key
+        that moves the position, stops it where it is).  ``home`` from far moves the same way."""
         if self.search_run is None or self.search_run.at_end:
             return
         self._stop()
@@ -232,33 +287,81 @@ class SearchApp(EditActions, FileActions, App[int]):
         self._seek_slice(self.search_run)
 
     def _seek_slice(self, run: Run) -> None:
-        if not self.seeking or run is not self.search_run:
-            return
-        if not playback.record_for(run):
-            self.note = f"Computing the search… {run.recorded:,} steps recorded"
-            self._show(changed=[])
-            self.set_timer(0.01, lambda: self._seek_slice(run))
-            return
-        self.seeking = False
-        self.note = ""
+        if not self.seeking or run is not self.search_run or not self.is_running:
+            return  # stopped, replaced, or the app is closing (its screens are gone)
+        deadline = perf_counter() + playback.SLICE_SECONDS
+        if self._moves is None:
+            if not playback.record_for(run):
+                recorded = group_digits(run.recorded)
+                self._seek_note(f"Computing the search… {recorded} steps recorded")
+                return
+            if run.recorded - run.k <= run.REBUILD_AFTER:  # a few steps: at once
+                self._arrive(run, run.k, run.at_end, lambda: run.goto(run.recorded))
+                return
+            self._moves, self._seek_to = run.rebuild_pieces(run.recorded), run.recorded
         old_k, was_at_end = run.k, run.at_end
-        run.goto(run.recorded)
+        fraction = playback.rebuild_for(self._moves, max(0.0, deadline - perf_counter()))
+        if fraction is not None:
+            self._seek_note(f"Moving to step {group_digits(self._seek_to)}… {fraction:.0%}")
+            return
+        self._arrive(run, old_k, was_at_end)
+
+    def _seek_note(self, text: str) -> None:
+        """Say how far the seek is (and how to stop it), then carry on after a pause."""
+        run = self.search_run
+        self.note = f"{text} — esc to stop"
+        self._show(changed=[])
+        self.set_timer(playback.SLICE_PAUSE, lambda: self._seek_slice(run))
+
+    def _arrive(
+        self, run: Run, old_k: int, was_at_end: bool, move: Callable[[], None] | None = None
+    ) -> None:
+        """The seek is over: (make the last ``move``, then) show the run at its end."""
+        self.seeking = False
+        self._moves = None
+        self.note = ""
+        if move is not None:
+            move()
+        if self._play_after:
+            self._play_after = False
+            self._play()
+            return
         self._moved(old_k, was_at_end)
 
+    def action_stop_seek(self) -> None:
+        """esc while computing the end: stop where the run is (what was recorded is kept)."""
+        if self.seeking:
+            self._stop()
+            self._show(changed=[])
+
     def action_play(self) -> None:
+        """Play (at the last step: again from step 0); pause when playing."""
+        run = self.search_run
+        if self.playing:
+            self.action_pause()
+        elif run is not None:
+            self._stop()
+            if run.at_end:
+                self._to_step_0(run, then_play=True)
+            else:
+                self._play()
+
+    def _play(self) -> None:
+        self.playing = True
+        self._timer.resume()
+        self._show()
+
+    def action_pause(self) -> None:
         if self.playing:
             self._stop()
-            self._show()
-        elif self.search_run is not None and not self.search_run.at_end:
-            self._stop()
-            self.playing = True
-            self._timer.resume()
             self._show()
 
     def _stop(self) -> None:
         """Pause playback and abandon a seek (any key that moves the position does this)."""
         if self.seeking:
             self.seeking = False
+            self._moves = None  # the run is still whole where it was
+            self._play_after = False
             self.note = ""
         if self.playing:
             self.playing = False

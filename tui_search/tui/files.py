@@ -33,6 +33,7 @@ class FileActions:
 
     grid: Grid
     map_path: Path | None
+    map_name: str  # what the title calls the map
     dirty: bool
     view: GridView
     cursor_cell: Cell
@@ -114,7 +115,7 @@ class FileActions:
                 elif self.save(self.map_path):
                     then()
 
-        name = self.map_path.name if self.map_path else "untitled"
+        name = self.map_name
         self.push_screen(ConfirmQuitScreen(name, leaving or QUITTING), answer)
 
     async def action_quit(self) -> None:

@@ -16,6 +16,17 @@ from tui_search.engine.grid import Cell, path_cost
 from tui_search.engine.run import Run
 
 
+def group_digits(n: int) -> str:
+    """``1234567`` -> ``1,234,567``: the one digit grouping of every count the app shows (the
+    status line, the panels' titles, the README)."""
+    return f"{n:,}"
+
+
+def gave_up_text(run: Run) -> str:
+    """Why a run stopped unfinished, naming the flag that moves the limit."""
+    return f"gave up at --max-steps {group_digits(run.max_steps)}"
+
+
 def cell_text(cell: Cell | None) -> str:
     return "-" if cell is None else f"({cell[0]},{cell[1]})"
 
@@ -64,7 +75,7 @@ def narrate(run: Run) -> str:
     else:
         text = f"{prefix}Expanded {node}: no new successors"
     if run.at_end and run.gave_up:
-        return f"{text}. Gave up: the step limit ({run.max_steps:,}) is reached"
+        return f"{text}. {gave_up_text(run).capitalize()}"
     if run.at_end:  # done, not found
         why = blocked_by(run)
         why = f" — {why}" if why else ""
@@ -89,16 +100,17 @@ def blocked_by(run: Run) -> str | None:
 def status_parts(run: Run) -> list[tuple[str, str]]:
     """The counts as (label, value) pairs, in the order shown."""
     total = run.total
-    step = f"{run.k:,}/{total:,}" if total is not None else f"{run.k:,}/?"
+    digits = group_digits
+    step = f"{digits(run.k)}/{digits(total) if total is not None else '?'}"
     parts = [
         ("step", step),
-        ("expanded", f"{run.expanded:,}"),
+        ("expanded", digits(run.expanded)),
     ]
     if run.semantics.visit == "expand" and not run.semantics.tree_search:
-        parts.append(("discarded", f"{run.discarded:,}"))
+        parts.append(("discarded", digits(run.discarded)))
     parts += [
-        ("generated", f"{run.generated:,}"),
-        (frontier_word(run), f"{run.frontier_len():,} (peak {run.peak_frontier():,})"),
+        ("generated", digits(run.generated)),
+        (frontier_word(run), f"{digits(run.frontier_len())} (peak {digits(run.peak_frontier())})"),
     ]
     if run.algo.iterative:
         parts.append(("depth limit", str(run.depth_limit())))

@@ -6,6 +6,7 @@ timer, its ``end`` key and the tests share them.
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from time import perf_counter
 
 from tui_search.engine.grid import Cell
@@ -18,6 +19,8 @@ DEFAULT_SPEED = 2  # index: 5 steps/s, slow enough to follow the tutorial's stor
 MAX_TICKS_PER_SECOND = 30
 #: The longest a tick or a slice of ``end`` may keep the event loop busy.
 SLICE_SECONDS = 0.04
+#: The pause between two slices of ``end``, in which the event loop answers keys.
+SLICE_PAUSE = 0.01
 
 
 def tick_interval(speed: int) -> float:
@@ -49,6 +52,16 @@ def forward_for(run: Run, steps: int, seconds: float = SLICE_SECONDS) -> int:
         if not taken & 63 and perf_counter() > deadline:
             break
     return taken
+
+
+def rebuild_for(pieces: Iterator[float], seconds: float | None = None) -> float | None:
+    """Run pieces of :meth:`Run.rebuild_pieces` for about ``seconds`` (default SLICE_SECONDS;
+    one piece at least): the fraction done, or None once the run is at its new position."""
+    deadline = perf_counter() + (SLICE_SECONDS if seconds is None else seconds)
+    for fraction in pieces:
+        if perf_counter() > deadline:
+            return fraction
+    return None
 
 
 def record_for(run: Run, seconds: float | None = None) -> bool:

@@ -6,10 +6,10 @@ one entry on that row (``run.frontier(i, i + 1)``), so drawing costs O(rows visi
 frontier holds 3 entries or 100 000, and :meth:`FrontierPanel.show` costs O(1).
 
 Each line reads ``▶+ (2,1) NE`` -- a marker column (``▶`` the entry expanded next, ``+`` an entry
-the step just taken added), the cell, and the move that reached it -- plus ``d=3`` for iterative
-deepening.  The first and last lines carry a hint (``← front (next out)`` / ``← back (newest)``
-for a queue, ``← top (next out)`` / ``← bottom (oldest)`` for a stack) so a student sees which
-end is which.
+the step just taken added), the cell, and the move that reached it -- with ``d=3`` before the
+move for iterative deepening.  The first and last lines carry a hint (``← front (next out)`` /
+``← back (newest)`` for a queue, ``← top (next out)`` / ``← bottom (oldest)`` for a stack) so a
+student sees which end is which.
 """
 
 from __future__ import annotations
@@ -20,17 +20,17 @@ from rich.cells import cell_len
 from rich.style import Style
 from textual.geometry import Size
 
-from tui_search.tui.widgets.line_panel import (
-    LinePanel,
-    group_digits,
-    set_virtual_size,
-)
+from tui_search.tui.narration import gave_up_text, group_digits
+from tui_search.tui.widgets.line_panel import LinePanel, set_virtual_size
 
 if TYPE_CHECKING:
     from tui_search.engine.run import Run
 
-#: Cells between an entry and its end hint.
+#: Cells between an entry and its end hint (at least).
 HINT_GAP = 2
+#: Width of the move column: a direction's name (START, longer, is only ever on its own: the
+#: frontier holds just the root then).
+DIR_W = 2
 
 
 class FrontierPanel(LinePanel):
@@ -109,8 +109,9 @@ class FrontierPanel(LinePanel):
         self._coord_w = len(f"({grid.width - 1},{grid.height - 1})")
         limit = run.depth_limit() if self._iddfs else None
         self._depth_w = len(f"d={limit}") if limit is not None else 0
-        # marker (3) + coords + " " + direction (2) [+ " " + d=N]; START only ever on its own.
-        entry_w = 3 + self._coord_w + 1 + 2 + (1 + self._depth_w if self._depth_w else 0)
+        # marker (3) + coords + " " [+ d=N + " "] + move: the move last, so that every column
+        # stands one space from the next whatever its label (START d=0 / S d=1 alike)
+        entry_w = 3 + self._coord_w + 1 + (self._depth_w + 1 if self._depth_w else 0) + DIR_W
         self._hint_col = entry_w + HINT_GAP
         kind = "Stack (LIFO)" if lifo else "Queue (FIFO)"
         self.show_titles(f"{kind} · {group_digits(n)}", "▶ next out  + just added" if n else "")
@@ -148,7 +149,7 @@ class FrontierPanel(LinePanel):
                 return f"empty — iteration over; next: depth limit {nxt}"
             return "empty"
         if run.gave_up:
-            return "empty — gave up at the step limit"
+            return f"empty — {gave_up_text(run)}"
         return "empty" if run.found else "empty — no path"
 
     def line_parts(self, y: int) -> list[tuple[str, str]]:
@@ -173,16 +174,20 @@ class FrontierPanel(LinePanel):
         parts = [
             ("▶" if y == 0 else " ", main),
             ("+" if added else " ", "frontier-panel--added" if added else main),
-            (" " + f"({x},{cy})".ljust(self._coord_w) + " " + run.gen_dir(g).ljust(2), main),
+            (" " + f"({x},{cy})".ljust(self._coord_w) + " ", main),
         ]
-        used = 3 + self._coord_w + 1 + max(2, len(run.gen_dir(g)))
+        used = 3 + self._coord_w + 1
         if self._iddfs:
-            depth = f"d={run.gen_depth(g)}"
-            parts.append((" " + depth.ljust(self._depth_w), "frontier-panel--detail"))
-            used += 1 + max(self._depth_w, len(depth))
+            depth = f"d={run.gen_depth(g)}".ljust(self._depth_w)
+            parts.append((depth, "frontier-panel--detail"))
+            parts.append((" ", main))
+            used += len(depth) + 1
+        move = run.gen_dir(g).ljust(DIR_W)
+        parts.append((move, main))
+        used += len(move)
         hint = self._hints(lifo, y, n)
         if hint:
-            parts.append((" " * max(1, self._hint_col - used), "frontier-panel--entry"))
+            parts.append((" " * max(HINT_GAP, self._hint_col - used), "frontier-panel--entry"))
             parts.append((hint, "frontier-panel--hint"))
         return parts
 

@@ -4,11 +4,14 @@ The ``Footer`` builds a widget per key and builds them all again whenever a key 
 disabled -- which happens on many steps (``p`` at step 0, ``n`` at the end): that cost more
 than the step itself, and its sixteen widgets were half the app's start-up.  This bar renders
 the same hints as one line of text: keys that cannot act now are dimmed, bindings of a group
-(``n``/``p``, ``1``/``2``/``3``) share one label, and clicking a hint presses its key.
+(``n``/``p``, ``1``/``2``/``3``) share one label, and clicking a hint presses its key.  When
+the bar is too narrow for every hint it leaves out the least important ones first (each action's
+importance is given by the app), so help and quit stay in sight.
 """
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from itertools import groupby
 from typing import ClassVar
 
@@ -18,6 +21,10 @@ from textual import events
 from textual.binding import ActiveBinding
 from textual.screen import Screen
 from textual.widget import Widget
+
+
+#: A hint: its keys as ``(display, key, enabled)``, its description, whether it can act.
+Hint = tuple[list[tuple[str, str, bool]], str, bool]
 
 
 class KeyBar(Widget):
@@ -52,6 +59,14 @@ class KeyBar(Widget):
     #: ``(start, end, key)`` of each hint drawn, for clicks.
     _spans: list[tuple[int, int, str]] = []
 
+    def __init__(
+        self, importance: Mapping[str, int] | None = None, *, id: str | None = None
+    ) -> None:
+        super().__init__(id=id)
+        #: How much each action's hint matters (by action name, without parameters): when
+        #: the bar is too narrow, the lowest go first; an action not listed counts 0.
+        self.importance: Mapping[str, int] = importance or {}
+
     def on_mount(self) -> None:
         self.screen.bindings_updated_signal.subscribe(self, self._bindings_changed)
 
@@ -62,27 +77,49 @@ class KeyBar(Widget):
         if screen is self.screen:
             self.refresh()
 
-    def hints(self) -> list[tuple[list[tuple[str, str, bool]], str, bool]]:
+    def hints(self) -> list[Hint]:
         """The hints in order (also for tests): ``(keys, description, enabled)`` where
         ``keys`` lists ``(display, key, enabled)``.  One hint per action shown; a group of
         two or more actions (``n``/``p``) is one hint with the group's description, enabled
         when any of its keys is."""
+        return [hint for hint, _ in self._hints()]
+
+    def _hints(self) -> list[tuple[Hint, str]]:
+        """The hints, each with the name of its (first) action."""
         by_action: dict[str, list[ActiveBinding]] = {}
         for active in self.screen.active_bindings.values():
             if active.binding.show:
                 by_action.setdefault(active.binding.action, []).append(active)
         firsts = [actives[0] for actives in by_action.values()]
-        hints = []
+        hints: list[tuple[Hint, str]] = []
         for group, members in groupby(firsts, lambda active: active.binding.group):
             members = list(members)
             keys = [
                 (self.app.get_key_display(a.binding), a.binding.key, a.enabled) for a in members
             ]
+            actions = [a.binding.action.split("(")[0] for a in members]
             if group is not None and len(members) > 1:
-                hints.append((keys, group.description, any(a.enabled for a in members)))
+                hint = (keys, group.description, any(a.enabled for a in members))
+                hints.append((hint, actions[0]))
             else:
-                hints.extend(([key], a.binding.description, a.enabled) for key, a in zip(keys, members))
+                hints.extend((([key], a.binding.description, a.enabled), action)
+                             for key, a, action in zip(keys, members, actions))
         return hints
+
+    def shown_hints(self, width: int | None = None) -> list[Hint]:
+        """The hints that fit in ``width`` cells (default: the bar's), in order: while they
+        do not fit, the least important one goes (the rightmost of equals first).  What is
+        left still too wide ends in an ellipsis."""
+        width = self.content_size.width if width is None else width
+        hints = self._hints()
+        sizes = [
+            sum(cell_len(display) for display, _, _ in keys) + 1 + cell_len(description)
+            for (keys, description, _), _ in hints
+        ]
+        kept = list(range(len(hints)))
+        while len(kept) > 1 and sum(sizes[i] for i in kept) + 2 * (len(kept) - 1) > width:
+            kept.remove(min(reversed(kept), key=lambda i: self.importance.get(hints[i][1], 0)))
+        return [hints[i][0] for i in kept]
 
     def render(self) -> Text:
         key_style = self.get_component_rich_style("key-bar--key")
@@ -90,7 +127,7 @@ class KeyBar(Widget):
         disabled_style = self.get_component_rich_style("key-bar--disabled")
         text = Text(no_wrap=True, overflow="ellipsis", end="")
         self._spans = []
-        for n, (keys, description, enabled) in enumerate(self.hints()):
+        for n, (keys, description, enabled) in enumerate(self.shown_hints()):
             if n:
                 text.append("  ")
             for display, key, key_enabled in keys:

@@ -244,11 +244,6 @@ class CachedStyles:
         return style
 
 
-def group_digits(n: int) -> str:
-    """``1000000`` -> ``1 000 000`` (digit groups a student can read at a glance)."""
-    return f"{n:,}".replace(",", " ")
-
-
 Parts = list[tuple[str, str]]
 
 

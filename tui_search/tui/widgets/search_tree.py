@@ -41,12 +41,8 @@ from typing import TYPE_CHECKING, Any, ClassVar
 
 from textual.geometry import Region, Size
 
-from tui_search.tui.widgets.line_panel import (
-    LinePanel,
-    Parts,
-    group_digits,
-    set_virtual_size,
-)
+from tui_search.tui.narration import group_digits
+from tui_search.tui.widgets.line_panel import LinePanel, Parts, set_virtual_size
 
 if TYPE_CHECKING:
     from tui_search.engine.run import Run
