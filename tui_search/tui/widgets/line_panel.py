@@ -1,91 +1,29 @@
-"""What the line-API views share: resizing what they scroll over cheaply, quiet scrollbars,
-cached styles, and the panels' look.
+"""What the line-API views share: repainting only the rows that changed, cached styles, and
+the panels' look.
 
-Resizing:
-
-Setting ``virtual_size`` through its reactive asks Textual for a layout of the whole screen,
-which then re-renders every widget: on a step, that is most of the cost of the step. The
-panels change their length on nearly every step, so they set the size without the layout and
-update only their scrollbars (showing or hiding a scrollbar still asks for a layout, rarely).
-
-Scrollbars:
-
-Textual repaints a scrollbar whenever its length, window or position changes, though a queue
-of 2,000 entries that grows by one moves no glyph of it: on a step, repainting the two
-panels' scrollbars (some 45 lines) was a quarter of the step.  :func:`update_scrollbar` sets
-the same values and repaints only when what the bar draws changes.
+Everything here is Textual's public API.  The panels set ``virtual_size`` through its reactive
+(a layout of the screen, and Textual's own repaint of their scrollbars, whenever the length of
+a list changes: most steps); Textual draws the scrollbars.  Their border titles name what the
+panel shows and change only with it (the algorithm, the iteration); the counts that change on
+every step are in the panel's first line, so a step repaints the lines that changed and not the
+whole panel (setting a border title repaints all of it).
 """
 
 from __future__ import annotations
-
-from math import ceil
 
 from rich.cells import cell_len
 from rich.segment import Segment
 from rich.style import Style
 from textual.geometry import Offset, Region, Size
 from textual.scroll_view import ScrollView
-from textual.scrollbar import ScrollBar, ScrollBarRender
 from textual.strip import Strip
 from textual.widget import Widget
-
-#: A scrollbar cell as :meth:`ScrollBarRender.render_bar` draws it: glyph, drawn reversed,
-#: and what a click on it does.
-BarCell = tuple[str, bool, "str | None"]
-_UP: BarCell = (" ", False, "scroll_up")
-_DOWN: BarCell = (" ", False, "scroll_down")
-_THUMB: BarCell = (" ", True, "grab")
-_EMPTY: BarCell = (" ", False, None)
-
-
-def scrollbar_cells(bar: ScrollBar) -> list[BarCell]:
-    """What each cell along ``bar`` draws, computed as
-    :meth:`~textual.scrollbar.ScrollBarRender.render_bar` computes it in textual 8.2.8 (the
-    same steps, on cells instead of segments; a test holds them equal)."""
-    size = bar.size.height if bar.vertical else bar.size.width
-    virtual = ceil(bar.window_virtual_size)
-    window = ceil(bar.window_size if bar.window_size < bar.window_virtual_size else 0)
-    if not (window and size and virtual and size != virtual):
-        return [_EMPTY] * size
-    bars = ScrollBarRender.VERTICAL_BARS if bar.vertical else ScrollBarRender.HORIZONTAL_BARS
-    eighths = len(bars)
-    thumb = max(1, window / (virtual / size))
-    position = (size - thumb) * (bar.position / (virtual - window))
-    start = int(position * eighths)
-    end = start + ceil(thumb * eighths)
-    start_index, start_bar = divmod(max(0, start), eighths)
-    end_index, end_bar = divmod(max(0, end), eighths)
-    cells = [_UP] * size
-    cells[end_index:] = [_DOWN] * (size - end_index)
-    cells[start_index:end_index] = [_THUMB] * (end_index - start_index)
-    if start_index < len(cells) and bars[eighths - 1 - start_bar] != " ":
-        cells[start_index] = (bars[eighths - 1 - start_bar], not bar.vertical, "grab")
-    if end_index < len(cells) and bars[eighths - 1 - end_bar] != " ":
-        cells[end_index] = (bars[eighths - 1 - end_bar], bar.vertical, "grab")
-    return cells[:size]
-
-
-def update_scrollbar(bar: ScrollBar, **values: float) -> None:
-    """Set ``bar``'s ``window_virtual_size``, ``window_size`` or ``position``, and repaint
-    only what that changes: nothing, the rows of a vertical bar whose cells changed (a thumb
-    that moves repaints the rows it leaves and enters), or the whole bar."""
-    before = scrollbar_cells(bar)
-    if "position" in values:
-        values["position"] = bar.validate_position(values["position"])
-    for name, value in values.items():
-        bar.set_reactive(getattr(ScrollBar, name), value)
-    after = scrollbar_cells(bar)
-    if after == before:
-        return
-    if not bar.vertical or len(after) != len(before):
-        bar.refresh()
-        return
-    refresh_rows(bar, [new != old for new, old in zip(after, before)], bar.size.width)
 
 
 def refresh_rows(widget: Widget, changed: list[bool], width: int) -> None:
     """Repaint the rows of ``widget`` flagged in ``changed``: one region a run of them (a
     refresh costs about as much as drawing a short line)."""
+    regions: list[Region] = []
     y, rows = 0, len(changed)
     while y < rows:
         if not changed[y]:
@@ -94,8 +32,10 @@ def refresh_rows(widget: Widget, changed: list[bool], width: int) -> None:
         end = y + 1
         while end < rows and changed[end]:
             end += 1
-        widget.refresh(Region(0, y, width, end - y))
+        regions.append(Region(0, y, width, end - y))
         y = end
+    if regions:
+        widget.refresh(*regions)
 
 
 def window_strip(segments: list[Segment], x: int, width: int, fill: Style) -> Strip:
@@ -125,97 +65,6 @@ def window_strip(segments: list[Segment], x: int, width: int, fill: Style) -> St
     if shown < width:
         out.append(Segment(" " * (width - shown), fill))
     return Strip(out, width)
-
-
-def set_virtual_size(view: ScrollView, size: Size) -> None:
-    """Give ``view`` a new virtual size without a layout pass, and update its scrollbars
-    (what ``Widget._scroll_update`` does in textual 8.2.8, minus the repaints that would
-    change nothing: re-check it when the pin moves)."""
-    if size == view.virtual_size:
-        return
-    view.set_reactive(Widget.virtual_size, size)
-    view._refresh_scrollbars()  # shows or hides them: a layout, but only then
-    width, height = view.container_size
-    if view.show_vertical_scrollbar and view.styles.scrollbar_size_vertical:
-        update_scrollbar(view.vertical_scrollbar, window_virtual_size=size.height,
-                         window_size=height - view.scrollbar_size_horizontal)
-    if view.show_horizontal_scrollbar and view.styles.scrollbar_size_horizontal:
-        update_scrollbar(view.horizontal_scrollbar, window_virtual_size=size.width,
-                         window_size=width - view.scrollbar_size_vertical)
-    view.scroll_x = view.validate_scroll_x(view.scroll_x)
-    view.scroll_y = view.validate_scroll_y(view.scroll_y)
-
-
-class RowScrollBar(ScrollBar):
-    """A vertical scrollbar that draws the row asked for: Textual's draws the whole bar through
-    Rich whenever any row of it is repainted, which made a thumb moving by a row cost as much
-    as ten lines of a panel.  The same cells (:func:`scrollbar_cells`) in the same styles as
-    :meth:`~textual.scrollbar.ScrollBarRender.render_bar`, on the widget's base style as
-    Textual's pipeline puts them."""
-
-    _cells_key: tuple | None = None
-    _cells: list[BarCell] = []
-
-    def render_line(self, y: int) -> Strip:
-        bar_render = self.render()
-        if (not self.vertical or self.renderer is not ScrollBarRender
-                or not isinstance(bar_render, ScrollBarRender)
-                or self.screen.styles.scrollbar_color.a == 0):
-            return super().render_line(y)  # the cases Textual draws otherwise
-        self._dirty_regions.clear()  # what Widget.render_line's whole-bar render would clear
-        key = (self.size, self.window_virtual_size, self.window_size, self.position)
-        if key != self._cells_key:
-            self._cells_key, self._cells = key, scrollbar_cells(self)
-        width = self.size.width
-        if not 0 <= y < len(self._cells):
-            return Strip.blank(width, self.visual_style.rich_style)
-        glyph, reverse, action = self._cells[y]
-        back = bar_render.style.bgcolor  # type: ignore[union-attr]
-        colour = bar_render.style.color  # type: ignore[union-attr]
-        meta = {"@mouse.down": action} if action else None
-        if action in ("scroll_up", "scroll_down") or action is None:
-            style = Style(bgcolor=back, meta=meta)
-        elif glyph == ScrollBarRender.BLANK_GLYPH:  # the thumb's body
-            style = Style(color=colour, reverse=True, meta=meta)
-        else:  # a partial block at one of the thumb's ends
-            style = Style(bgcolor=back, color=colour, meta=meta, reverse=reverse or None)
-        return Strip([Segment(glyph * width, self.visual_style.rich_style + style)], width)
-
-
-class QuietScrollbars:
-    """A mixin for :class:`ScrollView` subclasses: scrolling repaints a scrollbar only when its
-    thumb moves on screen (``ScrollView.watch_scroll_x/y``, with :func:`update_scrollbar`),
-    and the vertical bar draws only the rows repainted (:class:`RowScrollBar`)."""
-
-    @property
-    def vertical_scrollbar(self) -> ScrollBar:
-        """Textual's property (``Widget.vertical_scrollbar``, textual 8.2.8: re-check it when
-        the pin moves), making a :class:`RowScrollBar`."""
-        view: ScrollView = self  # type: ignore[assignment]
-        if view._vertical_scrollbar is None:
-            bar = view._vertical_scrollbar = RowScrollBar(
-                vertical=True, name="vertical", thickness=view.scrollbar_size_vertical)
-            bar.display = False
-            view.app._start_widget(view, bar)
-        return view._vertical_scrollbar
-
-    def watch_scroll_x(self, old_value: float, new_value: float) -> None:
-        view: ScrollView = self  # type: ignore[assignment]
-        self._scrolled(view.show_horizontal_scrollbar and view.horizontal_scrollbar,
-                       old_value, new_value)
-
-    def watch_scroll_y(self, old_value: float, new_value: float) -> None:
-        view: ScrollView = self  # type: ignore[assignment]
-        self._scrolled(view.show_vertical_scrollbar and view.vertical_scrollbar,
-                       old_value, new_value)
-
-    def _scrolled(self, bar: ScrollBar | bool, old_value: float, new_value: float) -> None:
-        """What ``ScrollView.watch_scroll_x/y`` do, the bar moved by :func:`update_scrollbar`."""
-        view: ScrollView = self  # type: ignore[assignment]
-        if isinstance(bar, ScrollBar):
-            update_scrollbar(bar, position=new_value)
-        if round(old_value) != round(new_value):
-            view.refresh(view.size.region)
 
 
 class CachedStyles:
@@ -252,7 +101,7 @@ def group_digits(n: int) -> str:
 Parts = list[tuple[str, str]]
 
 
-class LinePanel(QuietScrollbars, CachedStyles, ScrollView, can_focus=True):
+class LinePanel(CachedStyles, ScrollView, can_focus=True):
     """A bordered, focusable line-API list: the look the frontier and tree panels share, and
     their repaint after a step: only the lines that changed.
 
@@ -260,7 +109,8 @@ class LinePanel(QuietScrollbars, CachedStyles, ScrollView, can_focus=True):
     class pieces), which says everything about how the line looks, and calls
     :meth:`show_titles` and :meth:`refresh_changed` instead of setting the titles and calling
     ``refresh()``: those repaint the whole panel (Textual's title setters do, even for the same
-    text), which on a step was most of the lines a step redrew.
+    text), which on a step was most of the lines a step redrew.  So the titles say what the
+    panel shows, and what changes on every step (the counts) is in its first line.
     """
 
     DEFAULT_CSS = """
@@ -271,9 +121,9 @@ class LinePanel(QuietScrollbars, CachedStyles, ScrollView, can_focus=True):
         border-title-color: $foreground;
         border-subtitle-color: $text-muted;
         padding: 0 1;
-        /* Always there, so that a list growing past the panel does not lay out the screen
-           again (and its lines do not jump sideways when a bar comes or goes); its track is
-           the panel's own background, so a list that fits shows no bar at all. */
+        /* Always there, so that the lines do not jump sideways when a list grows past the
+           panel; its track is the panel's own background, so a list that fits shows no bar
+           at all. */
         overflow-y: scroll;
         scrollbar-background: transparent;
         scrollbar-corner-color: $background;
@@ -316,19 +166,14 @@ class LinePanel(QuietScrollbars, CachedStyles, ScrollView, can_focus=True):
                             width, base + band)
 
     def show_titles(self, title: str, subtitle: str) -> None:
-        """Set the border title and subtitle, repainting just the border lines whose text
-        changed."""
-        old = self._titles or (None, None)
+        """Set the border title and subtitle, each only when its text changed (the setter
+        repaints the whole panel, even for the same text)."""
+        old_title, old_subtitle = self._titles or (None, None)
         self._titles = (title, subtitle)
-        for row, (text, was, name) in enumerate(((title, old[0], "_border_title"),
-                                                 (subtitle, old[1], "_border_subtitle"))):
-            if text == was:
-                continue
-            # what Widget.border_title's setter stores, without its whole-widget refresh
-            setattr(self, name, self.render_str(text).expand_tabs(4).split()[0])
-            x, y = self.content_offset  # refresh() takes content coordinates
-            width, height = self.outer_size
-            self.refresh(Region(-x, (0 if row == 0 else height - 1) - y, width, 1))
+        if title != old_title:
+            self.border_title = title
+        if subtitle != old_subtitle:
+            self.border_subtitle = subtitle
 
     def refresh_changed(self) -> None:
         """Repaint the visible lines whose parts differ from what they show (all of them
