@@ -9,6 +9,8 @@ from __future__ import annotations
 import asyncio
 import functools
 from collections.abc import Callable, Coroutine
+from math import ceil
+from types import SimpleNamespace
 from typing import Any
 
 import pytest
@@ -16,6 +18,8 @@ from hypothesis import given, settings
 from rich.segment import Segment
 from hypothesis import strategies as st
 from textual.app import App, ComposeResult
+from textual.geometry import Size
+from textual.scrollbar import ScrollBarRender
 from textual.widget import Widget
 
 from tests.helpers import TUTORIAL_ROWS, grid_from_rows
@@ -23,7 +27,7 @@ from tui_search.engine.grid import Grid
 from tui_search.engine.run import Run
 from tui_search.tui.widgets import search_tree
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
-from tui_search.tui.widgets.line_panel import window_strip
+from tui_search.tui.widgets.line_panel import scrollbar_cells, window_strip
 from tui_search.tui.widgets.search_tree import SearchTreePanel
 
 
@@ -444,7 +448,42 @@ def test_window_strip_draws_what_crop_extend_draws(pieces, x, width) -> None:
     assert all(segment.text for segment in ours)  # no empty segments (Textual warns of them)
 
 
-# -- scrollbars ----------------------------------------------------------------------------
+# -- quiet scrollbars ----------------------------------------------------------------------
+
+def drawn_bar(size: int, virtual: int, window: int, position: float, thickness: int = 1,
+              vertical: bool = True) -> list:
+    """The segments Textual draws for a bar (as ``ScrollBar._render_bar`` asks), one a cell
+    along it: a vertical bar's are one a line, a horizontal bar's its first line."""
+    segments = list(ScrollBarRender.render_bar(
+        size=size, virtual_size=ceil(virtual), window_size=ceil(window if window < virtual else 0),
+        position=position, thickness=thickness, vertical=vertical).segments)
+    return segments[:size]
+
+
+def cell(segment) -> tuple:
+    """A scrollbar cell as Textual draws it: glyph, reversed, what a click on it does."""
+    style = segment.style
+    return (segment.text[:1], bool(style and style.reverse),
+            (style.meta.get("@mouse.down") if style and style.meta else None))
+
+
+bars = st.tuples(st.integers(1, 40), st.integers(0, 3000), st.integers(0, 60),
+                 st.integers(0, 3000 * 8).map(lambda p: p / 8), st.booleans())
+
+
+@settings(max_examples=500, deadline=None)
+@given(bars)
+def test_scrollbar_cells_are_what_textual_draws(case) -> None:
+    """What the panels compare before repainting a scrollbar, cell by cell, is exactly what
+    Textual's renderer draws there (so a repaint skipped for an unchanged cell never leaves
+    a stale one), vertical and horizontal, at any length, window and position."""
+    size, virtual, window, position, vertical = case
+    position = min(position, max(0, virtual - window))  # a scroll offset stays in range
+    bar = SimpleNamespace(vertical=vertical, size=Size(1, size) if vertical else Size(size, 1),
+                          window_virtual_size=virtual, window_size=window, position=position)
+    expected = [cell(s) for s in drawn_bar(size, virtual, window, position, vertical=vertical)]
+    assert scrollbar_cells(bar) == expected
+
 
 def queue_panel(k: int) -> tuple[Run, FrontierPanel]:
     """BFS on an open 400x400 map at step ``k`` (a queue longer than the panel), and a panel."""
@@ -454,24 +493,33 @@ def queue_panel(k: int) -> tuple[Run, FrontierPanel]:
 
 
 @sync
-async def test_the_scrollbar_follows_the_queue_at_every_step() -> None:
-    """BFS on an open map: the queue's length changes most steps; its scrollbar (Textual's
-    own) always spans the whole list (the count line and every entry) and the panel's window,
-    and follows a scroll."""
+async def test_a_step_repaints_a_scrollbar_only_where_its_thumb_moves() -> None:
+    """BFS on an open map: the queue's length changes most steps but moves its scrollbar's
+    thumb only now and then; the bar repaints exactly then, only the rows whose cells
+    changed, and its values and picture are always those of a freshly drawn bar (it spans the
+    count line and every entry)."""
     run, panel = queue_panel(100)
     async with PanelApp(panel, run).run_test(size=(50, 20)) as pilot:
         await pilot.pause()
         bar = panel.vertical_scrollbar
-        lengths = set()
+        repaints: list[tuple] = []
+        original = bar.refresh
+        bar.refresh = lambda *a, **k: (repaints.extend(a or [None]), original(*a, **k))  # type: ignore
+        lengths, changed = set(), 0
         for _ in range(150):
+            before = scrollbar_cells(bar)
             run.forward()
             lengths.add(run.frontier_len())
             panel.show(run)
             await pilot.pause()
+            after = scrollbar_cells(bar)
+            changed += sum(a != b for a, b in zip(after, before))
             assert bar.window_virtual_size == panel.virtual_size.height == 1 + run.frontier_len()
             assert bar.window_size == panel.scrollable_content_region.height
-            assert bar.position == panel.scroll_y == 0
+            shown = [cell(s) for strip in bar.render_lines(bar.size.region) for s in strip]
+            expected = [cell(s) for s in drawn_bar(bar.size.height, bar.window_virtual_size,
+                                                   bar.window_size, bar.position)]
+            assert shown == expected
         assert len(lengths) > 5  # the queue's length did change
-        panel.scroll_end(animate=False, immediate=True)
-        await pilot.pause()
-        assert bar.position == panel.scroll_y == panel.max_scroll_y > 0
+        assert None not in repaints  # never the whole bar
+        assert 0 < changed < 150 and sum(region.height for region in repaints) == changed

@@ -22,7 +22,7 @@ from rich.cells import cell_len
 from rich.style import Style
 from textual.geometry import Size
 
-from tui_search.tui.widgets.line_panel import LinePanel, group_digits
+from tui_search.tui.widgets.line_panel import LinePanel, group_digits, set_virtual_size
 
 if TYPE_CHECKING:
     from tui_search.engine.run import Run
@@ -123,7 +123,7 @@ class FrontierPanel(LinePanel):
         else:
             self._empty_text = self._describe_empty(run)
             width, height = cell_len(self._empty_text), 1
-        self.virtual_size = Size(width, height)  # a layout when it changes (see line_panel)
+        set_virtual_size(self, Size(width, height))
         if moved:
             self.scroll_to(0, 0, animate=False, immediate=True, force=True)
         self.refresh_changed()

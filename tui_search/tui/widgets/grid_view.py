@@ -29,7 +29,7 @@ from textual.strip import Strip
 
 from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.run import Run
-from tui_search.tui.widgets.line_panel import CachedStyles, window_strip
+from tui_search.tui.widgets.line_panel import CachedStyles, QuietScrollbars, window_strip
 
 # Drawing codes: the search states of a free cell (CellState's values), then what the grid says.
 FREE, FRONTIER, EXPANDED, CURRENT, PATH, WALL, START, GOAL = range(8)
@@ -42,7 +42,7 @@ CELL_WIDTH = 2
 UPPER_HALF = "▀"
 
 
-class GridView(CachedStyles, ScrollView, can_focus=True, inherit_bindings=False):
+class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inherit_bindings=False):
     """The map and the search state at the run's position, with a cursor.
 
     Bindings are the app's (one table, in the Footer), hence ``inherit_bindings=False``: the

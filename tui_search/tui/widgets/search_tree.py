@@ -43,7 +43,7 @@ from typing import TYPE_CHECKING, Any, ClassVar
 
 from textual.geometry import Region, Size
 
-from tui_search.tui.widgets.line_panel import LinePanel, Parts, group_digits
+from tui_search.tui.widgets.line_panel import LinePanel, Parts, group_digits, set_virtual_size
 
 if TYPE_CHECKING:
     from tui_search.engine.run import Run
@@ -205,7 +205,7 @@ class SearchTreePanel(LinePanel):
             legend += f"  {GLYPH_GOAL} goal"
         self.show_titles(title, legend)
 
-        self.virtual_size = Size(self._content_width(), self._line_count())  # see line_panel
+        set_virtual_size(self, Size(self._content_width(), self._line_count()))
         if moved:
             self._scroll_to_current()
         self.refresh_changed()
