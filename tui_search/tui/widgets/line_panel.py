@@ -141,20 +141,20 @@ def window_strip(segments: list[Segment], x: int, width: int, fill: Style) -> St
 def set_virtual_size(view: ScrollView, size: Size) -> None:
     """Give ``view`` a new virtual size without a layout of the screen, and update its
     scrollbars, repainting only what changes (what the layout would do for it, in public
-    calls).  A scrollbar that must come or go (``overflow: auto``) still takes the reactive,
-    whose layout shows or hides it."""
+    calls).  When a scrollbar may have to come or go (``overflow: auto``: Textual shows one
+    when the size passes the view's, a second look when both are auto), or before the view
+    is laid out, the size goes through the reactive, whose layout decides."""
     if size == view.virtual_size:
         return
     width, height = view.container_size
     styles = view.styles
-    bar_w, bar_h = view.scrollbar_size_vertical, view.scrollbar_size_horizontal
+    wide, tall = size.width > width, size.height > height
     if (not view.container_size
-            or styles.overflow_x == "auto"
-            and view.show_horizontal_scrollbar != (size.width > width - bar_w)
-            or styles.overflow_y == "auto"
-            and view.show_vertical_scrollbar != (size.height > height - bar_h)):
+            or styles.overflow_x == "auto" and view.show_horizontal_scrollbar != wide
+            or styles.overflow_y == "auto" and view.show_vertical_scrollbar != tall):
         view.virtual_size = size
         return
+    bar_w, bar_h = view.scrollbar_size_vertical, view.scrollbar_size_horizontal
     view.set_reactive(Widget.virtual_size, size)
     if view.show_vertical_scrollbar and bar_w:
         update_scrollbar(view.vertical_scrollbar, window_virtual_size=size.height,
