@@ -19,6 +19,7 @@ from typing import Any
 import pytest
 from textual import events
 
+from tests.textual_internals import composited, notifications, repainted, settle
 from tui_search.engine.grid import Grid
 from tui_search.engine.mapfile import format_text_map, load_map, load_scenario
 from tui_search.engine.run import Run
@@ -353,30 +354,6 @@ async def test_a_step_repaints_only_the_lines_it_changed() -> None:
         assert not any(a == () for a in refreshed_all), "a whole-view refresh"
 
 
-def composited(app: SearchApp) -> list[list[tuple]]:
-    """The terminal as the app has painted it (from the widgets' caches of drawn lines): each
-    line's segments as (text, style)."""
-    strips = app.screen._compositor.render_strips()
-    return [[(segment.text, segment.style) for segment in strip] for strip in strips]
-
-
-async def settle(pilot) -> None:
-    """Let the app handle what is queued and paint now (``pilot.pause()`` without its idle
-    wait, which would make a test of hundreds of steps slow)."""
-    await pilot._wait_for_screen()
-    await pilot._wait_for_screen()
-    pilot.app.screen._on_timer_update()
-
-
-async def repainted(app: SearchApp, pilot) -> list[list[tuple]]:
-    """The terminal with every widget drawn afresh, nothing from a cache (scrollbars too:
-    they are not in the DOM, but they are on screen)."""
-    for widget in app.screen._compositor.visible_widgets:
-        widget.refresh()
-    await settle(pilot)
-    return composited(app)
-
-
 @pytest.mark.parametrize("algorithm", ["bfs", "dfs", "iddfs"])
 @sync
 async def test_a_step_repaints_every_line_it_changes(algorithm: str) -> None:
@@ -393,7 +370,7 @@ async def test_a_step_repaints_every_line_it_changes(algorithm: str) -> None:
             for forward in [True] * steps + [False] * steps:
                 app.action_next() if forward else app.action_prev()
                 await settle(pilot)
-                assert composited(app) == await repainted(app, pilot), (forward, run.k)
+                assert composited(app) == await repainted(pilot), (forward, run.k)
 
 
 @sync
@@ -508,11 +485,11 @@ async def test_start_on_an_obstacle_or_on_the_goal_is_refused_with_a_notificatio
         await pilot.press("right", "s")  # (1,0) is an obstacle
         assert app.grid.start == (0, 0) and not app.dirty
         await pilot.pause()
-        assert any("obstacle" in n.message for n in app._notifications)
+        assert any("obstacle" in n.message for n in notifications(app))
         app.cursor_cell = (5, 2)  # the goal
         await pilot.press("s")
         assert app.grid.start == (0, 0)
-        assert any("on the goal" in n.message for n in app._notifications)
+        assert any("on the goal" in n.message for n in notifications(app))
         await pilot.press("o")  # an obstacle on the goal
         assert not app.grid.is_blocked((5, 2))
 
@@ -665,7 +642,7 @@ async def test_a_failed_save_leaves_the_old_file_and_says_why(
         assert path.read_text() == old
         assert app.dirty
         assert sorted(p.name for p in tmp_path.iterdir()) == ["tutorial.txt"]
-        errors = [n for n in app._notifications if n.severity == "error"]
+        errors = [n for n in notifications(app) if n.severity == "error"]
         assert errors and "cannot save: permission denied" in errors[-1].message
         assert "\n" not in errors[-1].message
 

@@ -225,8 +225,8 @@ async def test_counts_are_grouped_with_commas_everywhere() -> None:
         run = app.search_run
         n, size = run.frontier_len(), run.tree_size()
         assert n > 999 and size > 999
-        assert app.query_one(FrontierPanel).border_title == f"Queue (FIFO) · {n:,}"
-        assert app.query_one(SearchTreePanel).border_title == f"Search tree · {size:,} nodes"
+        assert app.query_one(FrontierPanel).line_text(0) == f"{n:,} in the queue"
+        assert f"{size:,} nodes" in app.query_one(SearchTreePanel).line_text(0)
         assert f"generated {run.generated:,}" in stats(app)[0]
         assert f"step 70,000/{run.total:,}" in stats(app)[0]
 
@@ -284,7 +284,7 @@ async def test_stack_columns_stand_in_the_same_place_for_start_and_moves() -> No
     async with app.run_test(size=SIZE) as pilot:
         panel = app.query_one(FrontierPanel)
         entry = re.compile(r"\(\d+,\d+\) (d=\d+) (\S+)")
-        assert "(0,0) d=0 START" in panel.lines()[0]
+        assert "(0,0) d=0 START" in panel.lines()[1]  # under the count line
         columns, labels = set(), set()
         for _ in range(8):
             for line in panel.lines():

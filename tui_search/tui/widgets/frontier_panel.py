@@ -5,7 +5,9 @@ frontier, only the run and the position it was last shown.  ``render_line`` asks
 one entry on that row (``run.frontier(i, i + 1)``), so drawing costs O(rows visible) whether the
 frontier holds 3 entries or 100 000, and :meth:`FrontierPanel.show` costs O(1).
 
-Each line reads ``▶+ (2,1) NE`` -- a marker column (``▶`` the entry expanded next, ``+`` an entry
+The first line counts the entries (``4 in the queue``: the border title says only what the
+frontier is, since setting a title repaints the whole panel); then each line reads
+``▶+ (2,1) NE`` -- a marker column (``▶`` the entry expanded next, ``+`` an entry
 the step just taken added), the cell, and the move that reached it -- with ``d=3`` before the
 move for iterative deepening.  The first and last lines carry a hint (``← front (next out)`` /
 ``← back (newest)`` for a queue, ``← top (next out)`` / ``← bottom (oldest)`` for a stack) so a
@@ -68,7 +70,7 @@ class FrontierPanel(LinePanel):
     | `frontier-panel--entry` | An entry waiting on the frontier. |
     | `frontier-panel--next` | The entry that will be expanded next (the `▶` line). |
     | `frontier-panel--added` | The `+` marker of entries added by the step just taken. |
-    | `frontier-panel--detail` | The `d=` depth of iterative deepening. |
+    | `frontier-panel--detail` | The count above the entries; iterative deepening's `d=`. |
     | `frontier-panel--hint` | The front/back or top/bottom hints. |
     | `frontier-panel--empty` | The line shown for an empty frontier. |
     | `frontier-panel--no-path` | The line shown when the search ended without a path. |
@@ -85,6 +87,7 @@ class FrontierPanel(LinePanel):
         self._depth_w = 0  # width of "d=N" (iterative deepening only)
         self._hint_col = 0  # column where end hints start
         self._empty_text = ""
+        self._count_text = ""  # the first line: "4 in the queue"
         self.border_title = "Frontier"
 
     # -- the contract with the app ----------------------------------------------------------
@@ -95,8 +98,9 @@ class FrontierPanel(LinePanel):
     def show(self, run: Run) -> None:
         """Show ``run`` at its position: O(1), whatever the frontier's size.
 
-        Keeps the entry expanded next (the first line) in view when the run or the position
-        changed; a repeated call at the same position leaves the scroll where the user put it.
+        Keeps the count and the entry expanded next (the first two lines) in view when the run
+        or the position changed; a repeated call at the same position leaves the scroll where
+        the user put it.
         """
         key = (id(run), run.k)
         moved = key != self._shown
@@ -113,18 +117,18 @@ class FrontierPanel(LinePanel):
         # stands one space from the next whatever its label (START d=0 / S d=1 alike)
         entry_w = 3 + self._coord_w + 1 + (self._depth_w + 1 if self._depth_w else 0) + DIR_W
         self._hint_col = entry_w + HINT_GAP
-        kind = "Stack (LIFO)" if lifo else "Queue (FIFO)"
-        self.show_titles(f"{kind} · {group_digits(n)}", "▶ next out  + just added" if n else "")
+        self.show_titles("Stack (LIFO)" if lifo else "Queue (FIFO)",
+                         "▶ next out  + just added" if n else "")
         if n:
             self._empty_text = ""
+            self._count_text = f"{group_digits(n)} {'on the stack' if lifo else 'in the queue'}"
             hint = max(len(self._hints(lifo, 0, n)), len(self._hints(lifo, n - 1, n)))
-            width = self._hint_col + hint
-            height = n
+            width = max(self._hint_col + hint, cell_len(self._count_text))
+            height = 1 + n
         else:
             self._empty_text = self._describe_empty(run)
             width, height = cell_len(self._empty_text), 1
-        virtual_size = Size(width, height)
-        set_virtual_size(self, virtual_size)
+        set_virtual_size(self, Size(width, height))
         if moved:
             self.scroll_to(0, 0, animate=False, immediate=True, force=True)
         self.refresh_changed()
@@ -153,7 +157,8 @@ class FrontierPanel(LinePanel):
         return "empty" if run.found else "empty — no path"
 
     def line_parts(self, y: int) -> list[tuple[str, str]]:
-        """Line ``y`` as (text, component class) pieces; ``[]`` past the end."""
+        """Line ``y`` as (text, component class) pieces: the count, then entry ``y - 1``;
+        ``[]`` past the end."""
         run = self._run
         if run is None:
             return []
@@ -164,6 +169,9 @@ class FrontierPanel(LinePanel):
             cls = "frontier-panel--no-path" if "no path" in self._empty_text else (
                 "frontier-panel--empty")
             return [(self._empty_text, cls)]
+        if y == 0:
+            return [(self._count_text, "frontier-panel--detail")]
+        y -= 1
         if not 0 <= y < n:
             return []
         (g,) = run.frontier(y, y + 1)
@@ -193,6 +201,6 @@ class FrontierPanel(LinePanel):
 
     def line_band(self, y: int) -> Style | None:
         """The entry expanded next is highlighted across the whole line, like a cursor."""
-        if y == 0 and self._count:
+        if y == 1 and self._count:
             return Style(bgcolor=self.cached_style("frontier-panel--next").bgcolor)
         return None

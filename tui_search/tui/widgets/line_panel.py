@@ -1,19 +1,27 @@
 """What the line-API views share: resizing what they scroll over cheaply, quiet scrollbars,
-cached styles, and the panels' look.
+repainting only the rows that changed, cached styles, and the panels' look -- all with Textual's
+public API.
 
 Resizing:
 
 Setting ``virtual_size`` through its reactive asks Textual for a layout of the whole screen,
-which then re-renders every widget: on a step, that is most of the cost of the step. The
-panels change their length on nearly every step, so they set the size without the layout and
-update only their scrollbars (showing or hiding a scrollbar still asks for a layout, rarely).
+and the layout repaints every scrollbar on it: the panels change their length on nearly every
+step, and that was two thirds of a step (measured: 16 ms more a step, on maze512 and on the
+tutorial alike).  So :func:`set_virtual_size` sets the size without the layout and updates the
+panels' scrollbars itself; it asks for the layout only when a scrollbar must come or go.
 
 Scrollbars:
 
 Textual repaints a scrollbar whenever its length, window or position changes, though a queue
 of 2,000 entries that grows by one moves no glyph of it: on a step, repainting the two
 panels' scrollbars (some 45 lines) was a quarter of the step.  :func:`update_scrollbar` sets
-the same values and repaints only when what the bar draws changes.
+the same values and repaints only the rows whose cells change (Textual draws them).
+
+Titles:
+
+Setting a border title repaints the whole panel (even for the same text), so the panels'
+titles say what they show and change only with it (the algorithm, the iteration); the counts
+that change on every step are each panel's first line.
 """
 
 from __future__ import annotations
@@ -86,6 +94,7 @@ def update_scrollbar(bar: ScrollBar, **values: float) -> None:
 def refresh_rows(widget: Widget, changed: list[bool], width: int) -> None:
     """Repaint the rows of ``widget`` flagged in ``changed``: one region a run of them (a
     refresh costs about as much as drawing a short line)."""
+    regions: list[Region] = []
     y, rows = 0, len(changed)
     while y < rows:
         if not changed[y]:
@@ -94,8 +103,10 @@ def refresh_rows(widget: Widget, changed: list[bool], width: int) -> None:
         end = y + 1
         while end < rows and changed[end]:
             end += 1
-        widget.refresh(Region(0, y, width, end - y))
+        regions.append(Region(0, y, width, end - y))
         y = end
+    if regions:
+        widget.refresh(*regions)
 
 
 def window_strip(segments: list[Segment], x: int, width: int, fill: Style) -> Strip:
@@ -128,76 +139,37 @@ def window_strip(segments: list[Segment], x: int, width: int, fill: Style) -> St
 
 
 def set_virtual_size(view: ScrollView, size: Size) -> None:
-    """Give ``view`` a new virtual size without a layout pass, and update its scrollbars
-    (what ``Widget._scroll_update`` does in textual 8.2.8, minus the repaints that would
-    change nothing: re-check it when the pin moves)."""
+    """Give ``view`` a new virtual size without a layout of the screen, and update its
+    scrollbars, repainting only what changes (what the layout would do for it, in public
+    calls).  When a scrollbar may have to come or go (``overflow: auto``: Textual shows one
+    when the size passes the view's, a second look when both are auto), or before the view
+    is laid out, the size goes through the reactive, whose layout decides."""
     if size == view.virtual_size:
         return
-    view.set_reactive(Widget.virtual_size, size)
-    view._refresh_scrollbars()  # shows or hides them: a layout, but only then
     width, height = view.container_size
-    if view.show_vertical_scrollbar and view.styles.scrollbar_size_vertical:
+    styles = view.styles
+    wide, tall = size.width > width, size.height > height
+    if (not view.container_size
+            or styles.overflow_x == "auto" and view.show_horizontal_scrollbar != wide
+            or styles.overflow_y == "auto" and view.show_vertical_scrollbar != tall):
+        view.virtual_size = size
+        return
+    bar_w, bar_h = view.scrollbar_size_vertical, view.scrollbar_size_horizontal
+    view.set_reactive(Widget.virtual_size, size)
+    if view.show_vertical_scrollbar and bar_w:
         update_scrollbar(view.vertical_scrollbar, window_virtual_size=size.height,
-                         window_size=height - view.scrollbar_size_horizontal)
-    if view.show_horizontal_scrollbar and view.styles.scrollbar_size_horizontal:
+                         window_size=height - bar_h)
+    if view.show_horizontal_scrollbar and bar_h:
         update_scrollbar(view.horizontal_scrollbar, window_virtual_size=size.width,
-                         window_size=width - view.scrollbar_size_vertical)
+                         window_size=width - bar_w)
     view.scroll_x = view.validate_scroll_x(view.scroll_x)
     view.scroll_y = view.validate_scroll_y(view.scroll_y)
 
 
-class RowScrollBar(ScrollBar):
-    """A vertical scrollbar that draws the row asked for: Textual's draws the whole bar through
-    Rich whenever any row of it is repainted, which made a thumb moving by a row cost as much
-    as ten lines of a panel.  The same cells (:func:`scrollbar_cells`) in the same styles as
-    :meth:`~textual.scrollbar.ScrollBarRender.render_bar`, on the widget's base style as
-    Textual's pipeline puts them."""
-
-    _cells_key: tuple | None = None
-    _cells: list[BarCell] = []
-
-    def render_line(self, y: int) -> Strip:
-        bar_render = self.render()
-        if (not self.vertical or self.renderer is not ScrollBarRender
-                or not isinstance(bar_render, ScrollBarRender)
-                or self.screen.styles.scrollbar_color.a == 0):
-            return super().render_line(y)  # the cases Textual draws otherwise
-        self._dirty_regions.clear()  # what Widget.render_line's whole-bar render would clear
-        key = (self.size, self.window_virtual_size, self.window_size, self.position)
-        if key != self._cells_key:
-            self._cells_key, self._cells = key, scrollbar_cells(self)
-        width = self.size.width
-        if not 0 <= y < len(self._cells):
-            return Strip.blank(width, self.visual_style.rich_style)
-        glyph, reverse, action = self._cells[y]
-        back = bar_render.style.bgcolor  # type: ignore[union-attr]
-        colour = bar_render.style.color  # type: ignore[union-attr]
-        meta = {"@mouse.down": action} if action else None
-        if action in ("scroll_up", "scroll_down") or action is None:
-            style = Style(bgcolor=back, meta=meta)
-        elif glyph == ScrollBarRender.BLANK_GLYPH:  # the thumb's body
-            style = Style(color=colour, reverse=True, meta=meta)
-        else:  # a partial block at one of the thumb's ends
-            style = Style(bgcolor=back, color=colour, meta=meta, reverse=reverse or None)
-        return Strip([Segment(glyph * width, self.visual_style.rich_style + style)], width)
-
-
 class QuietScrollbars:
-    """A mixin for :class:`ScrollView` subclasses: scrolling repaints a scrollbar only when its
-    thumb moves on screen (``ScrollView.watch_scroll_x/y``, with :func:`update_scrollbar`),
-    and the vertical bar draws only the rows repainted (:class:`RowScrollBar`)."""
-
-    @property
-    def vertical_scrollbar(self) -> ScrollBar:
-        """Textual's property (``Widget.vertical_scrollbar``, textual 8.2.8: re-check it when
-        the pin moves), making a :class:`RowScrollBar`."""
-        view: ScrollView = self  # type: ignore[assignment]
-        if view._vertical_scrollbar is None:
-            bar = view._vertical_scrollbar = RowScrollBar(
-                vertical=True, name="vertical", thickness=view.scrollbar_size_vertical)
-            bar.display = False
-            view.app._start_widget(view, bar)
-        return view._vertical_scrollbar
+    """A mixin for :class:`ScrollView` subclasses: scrolling repaints a scrollbar only where
+    its thumb moves on screen (``ScrollView.watch_scroll_x/y``, with
+    :func:`update_scrollbar`)."""
 
     def watch_scroll_x(self, old_value: float, new_value: float) -> None:
         view: ScrollView = self  # type: ignore[assignment]
@@ -255,7 +227,8 @@ class LinePanel(QuietScrollbars, CachedStyles, ScrollView, can_focus=True):
     class pieces), which says everything about how the line looks, and calls
     :meth:`show_titles` and :meth:`refresh_changed` instead of setting the titles and calling
     ``refresh()``: those repaint the whole panel (Textual's title setters do, even for the same
-    text), which on a step was most of the lines a step redrew.
+    text), which on a step was most of the lines a step redrew.  So the titles say what the
+    panel shows, and what changes on every step (the counts) is in its first line.
     """
 
     DEFAULT_CSS = """
@@ -266,9 +239,9 @@ class LinePanel(QuietScrollbars, CachedStyles, ScrollView, can_focus=True):
         border-title-color: $foreground;
         border-subtitle-color: $text-muted;
         padding: 0 1;
-        /* Always there, so that a list growing past the panel does not lay out the screen
-           again (and its lines do not jump sideways when a bar comes or goes); its track is
-           the panel's own background, so a list that fits shows no bar at all. */
+        /* Always there, so that the lines do not jump sideways when a list grows past the
+           panel; its track is the panel's own background, so a list that fits shows no bar
+           at all. */
         overflow-y: scroll;
         scrollbar-background: transparent;
         scrollbar-corner-color: $background;
@@ -311,19 +284,14 @@ class LinePanel(QuietScrollbars, CachedStyles, ScrollView, can_focus=True):
                             width, base + band)
 
     def show_titles(self, title: str, subtitle: str) -> None:
-        """Set the border title and subtitle, repainting just the border lines whose text
-        changed."""
-        old = self._titles or (None, None)
+        """Set the border title and subtitle, each only when its text changed (the setter
+        repaints the whole panel, even for the same text)."""
+        old_title, old_subtitle = self._titles or (None, None)
         self._titles = (title, subtitle)
-        for row, (text, was, name) in enumerate(((title, old[0], "_border_title"),
-                                                 (subtitle, old[1], "_border_subtitle"))):
-            if text == was:
-                continue
-            # what Widget.border_title's setter stores, without its whole-widget refresh
-            setattr(self, name, self.render_str(text).expand_tabs(4).split()[0])
-            x, y = self.content_offset  # refresh() takes content coordinates
-            width, height = self.outer_size
-            self.refresh(Region(-x, (0 if row == 0 else height - 1) - y, width, 1))
+        if title != old_title:
+            self.border_title = title
+        if subtitle != old_subtitle:
+            self.border_subtitle = subtitle
 
     def refresh_changed(self) -> None:
         """Repaint the visible lines whose parts differ from what they show (all of them

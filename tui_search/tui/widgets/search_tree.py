@@ -16,10 +16,12 @@ the current iteration's tree, and the title gives its depth limit.
 Two views, chosen by the size of the tree at the position, so that :meth:`SearchTreePanel.show`
 stays cheap however big the run grows:
 
-* **listing** (at most :data:`SMALL_TREE` nodes): the whole tree in preorder.  The listing is a
-  list of event ids kept in step with the position: one step forwards inserts the expanded
-  node's children after it, one step back removes them (a C-speed ``list.index`` and a slice
-  assignment); a jump rebuilds it in O(nodes) from the record.  Tree guides (``│ ├─ └─``) are
+* **listing** (at most :data:`SMALL_TREE` nodes): the whole tree in preorder, under a line
+  that counts its nodes (the count is not in the title: setting a title repaints the whole
+  panel).  The listing is a list of event ids kept in step with the position: one step
+  forwards inserts the expanded node's children after it, one step back removes them (a
+  C-speed ``list.index`` and a slice assignment); a jump rebuilds it in O(nodes) from the
+  record.  Tree guides (``│ ├─ └─``) are
   drawn per visible line from the record's parent array (O(depth), capped at
   :data:`MAX_LEVELS`).
 * **focused** (bigger trees): the chain of ancestors from START to the node being expanded --
@@ -82,7 +84,7 @@ class SearchTreePanel(LinePanel):
     DEFAULT_CSS = """
     SearchTreePanel {
         overflow-x: scroll;  /* its width changes with the depth: a bar that came and went
-                                would lay out the screen again */
+                                would make its last line come and go */
         & > .search-tree--guide { color: $foreground-muted; }
         & > .search-tree--expanded { color: $text-primary; }
         & > .search-tree--frontier { color: $foreground; }
@@ -117,7 +119,7 @@ class SearchTreePanel(LinePanel):
     | `search-tree--path` | A node on the path, once the goal is found (at the end). |
     | `search-tree--cutoff` | Iterative deepening: a node cut off at the depth limit. |
     | `search-tree--detail` | Sibling counts and depths of the focused view. |
-    | `search-tree--note` | The note above the focused view. |
+    | `search-tree--note` | The count above the listing, the note above the focused view. |
     """
 
     def __init__(self, **widget_args: Any) -> None:  # name, id, classes, disabled
@@ -199,14 +201,12 @@ class SearchTreePanel(LinePanel):
         title = "Search tree"
         if self._limit is not None:
             title += f" · depth limit {self._limit}"
-        title = f"{title} · {group_digits(size)} node{'s' if size != 1 else ''}"
         legend = f"{GLYPH_EXPANDED} expanded  {GLYPH_FRONTIER} frontier"
         if self._path:
             legend += f"  {GLYPH_GOAL} goal"
         self.show_titles(title, legend)
 
-        virtual_size = Size(self._content_width(), self._line_count())
-        set_virtual_size(self, virtual_size)
+        set_virtual_size(self, Size(self._content_width(), self._line_count()))
         if moved:
             self._scroll_to_current()
         self.refresh_changed()
@@ -216,8 +216,8 @@ class SearchTreePanel(LinePanel):
         if self._mode == "focus":
             return self._head() + len(self._chain) - 1
         if self._current < 0:
-            return 0
-        return self._order.index(self._current)
+            return 1
+        return 1 + self._order.index(self._current)
 
     # -- keeping the listing in step -------------------------------------------------------
     def _rebuild_list(self, run: Run, root: int, k: int) -> None:
@@ -330,10 +330,11 @@ class SearchTreePanel(LinePanel):
     def _line_count(self) -> int:
         if self._mode == "focus":
             return self._head() + len(self._chain) + len(self._kids)
-        return len(self._order)
+        return 1 + len(self._order)
 
     def _head(self) -> int:
-        """Lines above the chain in the focused view: the note (and START, "⋮")."""
+        """Lines above the chain in the focused view: the note (and START, "⋮"); above the
+        listing: the count."""
         return 3 if self._elided else 1
 
     def _depth_width(self) -> int:
@@ -362,8 +363,8 @@ class SearchTreePanel(LinePanel):
         widest = max(widest, 1 + 1 + 5 + 1 + self._coord_w)  # the root, START
         for g in (self._current, self._goal if self._path else -1):
             if g >= 0:
-                widest = max(widest, len(self.line_text(self._order.index(g))))
-        return widest
+                widest = max(widest, len(self.line_text(1 + self._order.index(g))))
+        return max(widest, len(self._count_text()))
 
     def _scroll_to_current(self) -> None:
         """Bring the node being expanded and its children into view (once laid out)."""
@@ -393,6 +394,12 @@ class SearchTreePanel(LinePanel):
         return run.added_now() if run is not None else range(0)
 
     # -- text -------------------------------------------------------------------------------
+    def _count_text(self) -> str:
+        """The listing's first line: ``8 nodes`` (a title with the count would repaint the
+        whole panel on every step)."""
+        size = self._tree_size
+        return f"{group_digits(size)} node{'s' if size != 1 else ''}"
+
     def _note(self) -> str:
         return (f"({group_digits(self._tree_size)} nodes; showing the path to the node being "
                 "expanded)")
@@ -468,6 +475,9 @@ class SearchTreePanel(LinePanel):
             return []
         if self._mode == "focus":
             return self._focus_parts(y)
+        if y == 0:
+            return [(self._count_text(), "search-tree--note")]
+        y -= 1
         if y >= len(self._order):
             return []
         g = self._order[y]

@@ -1,0 +1,45 @@
+"""The few private names of Textual the tests need, gathered here (they follow textual 8.2.8:
+re-check them when the pin moves).  ``tui_search/`` itself uses Textual's public API only.
+
+Textual has no public way to see the terminal as painted (its compositor's cached lines), to
+let an app handle what is queued and paint without Pilot's idle waits (20 ms or more each,
+which would make a test of hundreds of steps slow), or to read the notifications shown.
+"""
+
+from __future__ import annotations
+
+from textual.app import App
+from textual.notifications import Notification
+from textual.pilot import Pilot
+
+
+def composited(app: App) -> list[list[tuple]]:
+    """The terminal as the app has painted it (from the widgets' caches of drawn lines): each
+    line's segments as (text, style)."""
+    strips = app.screen._compositor.render_strips()
+    return [[(segment.text, segment.style) for segment in strip] for strip in strips]
+
+
+async def settle(pilot: Pilot) -> None:
+    """Let the app handle what is queued and paint now (``pilot.pause()`` without its idle
+    wait), twice: a layout that shows or hides a scrollbar asks for another one, which
+    Textual does on its next update (a frame later)."""
+    for _ in range(2):
+        await pilot._wait_for_screen()
+        await pilot._wait_for_screen()
+        pilot.app.screen._on_timer_update()
+
+
+async def repainted(pilot: Pilot) -> list[list[tuple]]:
+    """The terminal with every widget drawn afresh, nothing from a cache (scrollbars too:
+    they are not in the DOM, but they are on screen)."""
+    app = pilot.app
+    for widget in app.screen._compositor.visible_widgets:
+        widget.refresh()
+    await settle(pilot)
+    return composited(app)
+
+
+def notifications(app: App) -> list[Notification]:
+    """The notifications the app has shown and not yet expired."""
+    return list(app._notifications)
