@@ -222,3 +222,39 @@ def test_tree_search_gives_up_at_the_step_limit() -> None:
 def test_the_bound_is_the_tutorials() -> None:
     assert Semantics().bound(7) == 7 ** 8
     assert Semantics(order=("N", "W", "S", "E")).bound(3) == 3 ** 4
+
+
+# -- the position under every choice -----------------------------------------------------------
+
+
+@settings(max_examples=200, deadline=None)
+@given(random_grids(max_side=6), semantics(),
+       st.lists(st.integers(0, 400), min_size=1, max_size=5), st.sampled_from([0, 3, 10**9]))
+def test_moving_to_step_k_works_the_same_for_every_choice(grid, choice, targets, rebuild) -> None:
+    """The run's frontier model and counters: a jump (stepping either way, or a bulk rebuild)
+    lands on exactly the state that stepping forwards from 0 reaches -- duplicates on the
+    frontier, discarded steps and tree search included."""
+    from tests.engine.test_run import snapshot
+
+    key, sem = choice
+    run = Run(grid, key, sem, 400)
+    run.REBUILD_AFTER = rebuild
+    run.advance()
+    for t in targets:
+        k = t % (run.total + 1)
+        run.goto(k)
+        fresh = Run(grid, key, sem, 400)
+        fresh.advance()
+        for _ in range(k):
+            fresh.forward()
+        assert snapshot(run) == snapshot(fresh)
+        assert (run.discarded, run.frontier_len()) == (fresh.discarded, fresh.frontier_len())
+
+
+@core
+@given(random_grids(max_side=7), semantics(), st.integers(1, 12))
+def test_a_small_step_limit_gives_up_alike(grid, choice, limit) -> None:
+    """Tiny limits make tiny chunks (a chunk is at most the limit): the recorded loops still
+    equal the reference, and give up at exactly the limit."""
+    key, sem = choice
+    assert recorded_arrays(Run(grid, key, sem, limit)) == reference_arrays(grid, key, sem, limit)

@@ -16,9 +16,13 @@ runs.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator, Sequence
+from itertools import compress
 
 from tui_search.engine.algorithms import Frontier
+
+#: Events a piece of a bulk rebuild handles (a few milliseconds of work).
+PIECE = 1 << 15
 
 
 class FifoFrontier:
@@ -40,10 +44,19 @@ class FifoFrontier:
         if succ:
             self.tail = succ.start
 
-    def rebuild(self, root: int, end: int, expanded: Iterable[int]) -> None:
-        """After expanding ``expanded`` of the events ``root .. end - 1``."""
-        self.head = root + sum(1 for _ in expanded)
-        self.tail = end
+    @staticmethod
+    def rebuild_work(root: int, end: int, expanded: int) -> int:
+        """Units of work :meth:`rebuild_pieces` takes (for a progress figure)."""
+        return expanded
+
+    def rebuild_pieces(self, root: int, end: int, expanded: Iterable[Sequence[int]]) -> Iterator[int]:
+        """Become the queue after the pieces of ``expanded`` were taken off the events
+        ``root .. end - 1``, yielding the work done by each piece."""
+        n = 0
+        for piece in expanded:
+            n += len(piece)
+            yield len(piece)
+        self.head, self.tail = root + n, end
 
     def __len__(self) -> int:
         return self.tail - self.head
@@ -71,11 +84,25 @@ class LifoFrontier:
         del self.stack[len(self.stack) - len(succ):]
         self.stack.append(g)
 
-    def rebuild(self, root: int, end: int, expanded: Iterable[int]) -> None:
+    @staticmethod
+    def rebuild_work(root: int, end: int, expanded: int) -> int:
+        return expanded + (end - root)
+
+    def rebuild_pieces(self, root: int, end: int, expanded: Iterable[Sequence[int]]) -> Iterator[int]:
+        """Become the stack after the pieces of ``expanded`` were taken off the events
+        ``root .. end - 1``: the events not taken off, in generation order (every event is
+        pushed in that order and only the top is popped)."""
         open_ = bytearray(b"\x01") * (end - root)
-        for g in expanded:
-            open_[g - root] = 0
-        self.stack = [g for g in range(root, end) if open_[g - root]]
+        for piece in expanded:
+            for g in piece:
+                open_[g - root] = 0
+            yield len(piece)
+        stack: list[int] = []
+        for lo in range(root, end, PIECE):
+            hi = min(lo + PIECE, end)
+            stack.extend(compress(range(lo, hi), open_[lo - root : hi - root]))
+            yield hi - lo
+        self.stack = stack
 
     def __len__(self) -> int:
         return len(self.stack)

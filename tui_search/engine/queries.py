@@ -1,0 +1,116 @@
+"""What a record says of its generation events, wherever a run stands: each event's cell,
+parent and move, the chain from the root, the path and the outcome -- the tree's and the
+answer's queries of a recorded run (the second of its three jobs)."""
+
+from __future__ import annotations
+
+from array import array
+from bisect import bisect_right
+
+from tui_search.engine.algorithms import Frontier
+from tui_search.engine.grid import DIRECTIONS, Cell
+from tui_search.engine.outcome import Outcome
+from tui_search.engine.recording import Recording
+from tui_search.engine.search import ROOT_DIR
+
+#: Direction names indexed by stored direction code; a root is shown as START.
+DIR_NAMES: tuple[str, ...] = DIRECTIONS + ("START",)
+
+
+class RecordedTree(Recording):
+    """Queries on the record's events (no position)."""
+
+    def __init__(self, *args, **kwargs) -> None:
+        super().__init__(*args, **kwargs)
+        self._in_order = self.algo.frontier is Frontier.FIFO  # event g expanded at step g+1
+        self._gen_step = array("i")  # event -> step that expanded it (LIFO; lazy)
+        self._gen_step_filled = 0
+        self._path: set[int] | None = None
+
+    def gen_cell(self, g: int) -> Cell:
+        return self.problem.unpad(self.rec.gen_node[g])
+
+    def gen_parent(self, g: int) -> int:
+        """The event expanded to generate ``g`` (-1 for a root): the expansion of the step
+        whose successors include ``g``."""
+        rec = self.rec
+        it = bisect_right(rec.iter_root, g) - 1
+        if rec.iter_root[it] == g:
+            return -1
+        return rec.exp(bisect_right(rec.step_end, g))
+
+    def gen_dir(self, g: int) -> str:
+        parent = self.gen_parent(g)
+        if parent < 0:
+            return DIR_NAMES[ROOT_DIR]
+        node = self.rec.gen_node
+        return DIR_NAMES[self.problem.dir_of_offset[node[g] - node[parent]]]
+
+    def gen_depth(self, g: int) -> int:
+        if self.rec.gen_depth is not None:
+            return self.rec.gen_depth[g]
+        return len(self.ancestors(g)) - 1
+
+    def expanded_at(self, g: int) -> int | None:
+        """The step at which event ``g`` was expanded, if it was (in the whole record)."""
+        if self._in_order:
+            return g + 1 if g + 1 <= self.rec.steps else None
+        table = self._gen_step
+        if len(table) < len(self.rec.gen_node):  # extend it over what was recorded since
+            filled = self._gen_step_filled
+            table.extend(array("i", [-1]) * (len(self.rec.gen_node) - len(table)))
+            for k in range(filled + 1, self.rec.steps + 1):
+                table[self.rec.step_exp[k]] = k
+            self._gen_step_filled = self.rec.steps
+        step = table[g]
+        return step if step > 0 else None
+
+    def ancestors(self, g: int) -> list[int]:
+        """Events from the root down to ``g``."""
+        chain = []
+        while g >= 0:
+            chain.append(g)
+            g = self.gen_parent(g)
+        chain.reverse()
+        return chain
+
+    def path_gens(self) -> list[int]:
+        """Events from the start to the goal (empty when not found or not yet recorded)."""
+        return self.ancestors(self.rec.goal_gen) if self.rec.found else []
+
+    def path(self) -> list[Cell] | None:
+        if not self.rec.found:
+            return None
+        return [self.gen_cell(g) for g in self.path_gens()]
+
+    def path_set(self) -> set[int]:
+        """Padded cells on the path (empty until the goal is found)."""
+        if self._path is None:
+            if not self.rec.found:
+                return set()
+            self._path = {self.rec.gen_node[g] for g in self.path_gens()}
+        return self._path
+
+    def moves(self) -> list[str] | None:
+        if not self.rec.found:
+            return None
+        return [self.gen_dir(g) for g in self.path_gens()[1:]]
+
+    def outcome(self) -> Outcome:
+        """The result of the whole search (records it all first)."""
+        self.advance()
+        rec = self.rec
+        return Outcome(
+            algorithm=self.algorithm,
+            semantics=self.semantics,
+            path=self.path(),
+            moves=self.moves(),
+            expanded=rec.steps - len(rec.discarded),
+            discarded=len(rec.discarded),
+            generated=len(rec.gen_node),
+            max_frontier=self.peak_frontier(rec.steps),
+            gave_up=rec.gave_up,
+        )
+
+
+__all__ = ["DIR_NAMES", "RecordedTree"]

@@ -1,0 +1,234 @@
+"""Recording a search: the fast loop run in chunks, up to a step limit, into a
+:class:`~tui_search.engine.search.Record`, and what the record says of any step.
+
+This is the first of a recorded run's three jobs (:mod:`tui_search.engine.run` is the
+position, :mod:`tui_search.engine.queries` the tree and the path): it knows the steps, never
+where the run is.
+"""
+
+from __future__ import annotations
+
+import operator
+from bisect import bisect_right
+from collections.abc import Iterable, Iterator
+from dataclasses import dataclass
+from itertools import accumulate
+
+from array import array
+
+from tui_search.engine.algorithms import DEFAULT_ALGORITHM, get_algorithm
+from tui_search.engine.grid import Cell, Grid
+from tui_search.engine.search import CHUNK, Problem, Record, loop_for
+from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
+
+
+@dataclass(frozen=True, slots=True)
+class Step:
+    """One step: the node taken off the frontier and the successors it added, in order (none
+    for a discarded step, which took off a cell already expanded)."""
+
+    index: int
+    node: Cell
+    successors: tuple[tuple[str, Cell], ...]
+    depth_limit: int | None = None
+    found_goal: bool = False
+    discarded: bool = False
+
+
+#: The default step limit: expansions recorded before a run gives up (iterative deepening
+#: on a 512x512 maze takes ~75 million steps; 20 million take ~400 MB).  A whole number of
+#: chunks, so a run stops exactly there; smaller limits (at most a chunk) are exact too.
+MAX_STEPS = 5000 * CHUNK
+
+
+class Recording:
+    """A search on a snapshot of a grid, recorded lazily in chunks.
+
+    The grid is copied: editing the original afterwards never changes this run.
+    """
+
+    def __init__(
+        self,
+        grid: Grid,
+        algorithm: str = DEFAULT_ALGORITHM,
+        semantics: Semantics = DEFAULT_SEMANTICS,
+        max_steps: int = MAX_STEPS,
+    ) -> None:
+        self.algo = algo = get_algorithm(algorithm)
+        semantics.check(algo)
+        if max_steps < 1:
+            raise ValueError("max_steps must be at least 1")
+        self.grid = grid.copy()
+        self.algorithm = algorithm
+        self.semantics = semantics
+        self.problem = Problem(self.grid, semantics)
+        self.rec = Record()
+        self.max_steps = max_steps
+        self._loop = loop_for(algo, semantics)(self.problem, self.rec, min(CHUNK, max_steps))
+        self._peak = array("i")
+        self._advance_once()  # records the start (and the answer, when start == goal)
+
+    def _advance_once(self) -> None:
+        rec = self.rec
+        if not rec.done:
+            next(self._loop, None)
+            if rec.steps > self.max_steps or (not rec.done and rec.steps == self.max_steps):
+                self._give_up()
+            self._extend_peak(rec.steps)  # kept as it is recorded: the end costs no scan
+
+    def _give_up(self) -> None:
+        """Stop at exactly ``max_steps`` expansions (iterative deepening can take billions of
+        steps on a big map): what the last chunk recorded past the limit is cut off, a goal
+        found there included, and the loop is closed."""
+        rec, n = self.rec, self.max_steps
+        if rec.steps > n:
+            events = rec.step_end[n]
+            del rec.step_end[n + 1 :]
+            if isinstance(rec.step_exp, array):
+                del rec.step_exp[n + 1 :]
+            del rec.gen_node[events:]
+            while rec.discarded and rec.discarded[-1] > n:
+                rec.discarded.pop()
+            if rec.gen_depth is not None:
+                del rec.gen_depth[events:]
+            while rec.iter_first_step[-1] > n:
+                rec.iter_first_step.pop()
+                rec.iter_root.pop()
+                rec.iter_limit.pop()
+        rec.goal_gen = -1
+        rec.done = rec.gave_up = True
+        self._loop.close()
+
+    def advance(self, until_step: int | None = None) -> bool:
+        """Record more of the search: at least up to ``until_step`` (all of it when None), in
+        chunks.  Returns True once the whole search is recorded."""
+        rec = self.rec
+        while not rec.done and (until_step is None or rec.steps < until_step):
+            self._advance_once()
+        return rec.done
+
+    def advance_some(self) -> bool:
+        """Record one more chunk (for callers that compute in slices); True when done."""
+        self._advance_once()
+        return self.rec.done
+
+    @property
+    def done(self) -> bool:
+        """True when the whole search has been recorded."""
+        return self.rec.done
+
+    @property
+    def found(self) -> bool:
+        return self.rec.found
+
+    @property
+    def gave_up(self) -> bool:
+        """True when the search was stopped at ``max_steps`` expansions, unfinished."""
+        return self.rec.gave_up
+
+    @property
+    def recorded(self) -> int:
+        return self.rec.steps
+
+    @property
+    def total(self) -> int | None:
+        """Number of steps of the whole run, once known."""
+        return self.rec.steps if self.rec.done else None
+
+    def iteration_of(self, k: int) -> int:
+        """Index of the iteration that step ``k`` belongs to (step 0 is in iteration 0)."""
+        return max(0, bisect_right(self.rec.iter_first_step, k) - 1)
+
+    def depth_limit(self, k: int | None = None) -> int | None:
+        return self.rec.iter_limit[self.iteration_of(self.k if k is None else k)]
+
+    def _iter_span(self, it: int) -> tuple[int, int]:
+        """First and last step of iteration ``it`` (as recorded)."""
+        first = self.rec.iter_first_step[it]
+        last = (self.rec.iter_first_step[it + 1] - 1
+                if it + 1 < len(self.rec.iter_first_step) else self.rec.steps)
+        return first, last
+
+    def succ_range(self, k: int) -> range:
+        """Generation events added by step ``k`` (k >= 1), in the order added."""
+        rec = self.rec
+        lo = rec.step_end[k - 1]
+        it = self.iteration_of(k)
+        if it and rec.iter_first_step[it] == k:
+            lo += 1  # skip the new iteration's root, generated before its first expansion
+        return range(lo, rec.step_end[k])
+
+    def frontier_size_at(self, k: int) -> int:
+        rec = self.rec
+        it = self.iteration_of(k)
+        first = rec.iter_first_step[it]
+        if k < first:
+            return 1
+        return (rec.step_end[k] - rec.iter_root[it]) - (k - first + 1)
+
+    def peak_frontier(self, k: int | None = None) -> int:
+        """The largest frontier size over steps 0..k (default: the position): a look-up, the
+        table being kept as the search is recorded."""
+        k = min(self.k if k is None else k, self.rec.steps)  # type: ignore[attr-defined]
+        self._extend_peak(k)
+        return self._peak[k]
+
+    def _extend_peak(self, k: int) -> None:
+        """Extend the running-maximum table of frontier sizes over steps 0..k.  Within one
+        iteration the frontier size at step j is the events generated in it minus the
+        expansions, ``step_end[j] - j - (root - first + 1)``: one vectorised pass a piece."""
+        peak, rec = self._peak, self.rec
+        lo = len(peak)
+        while lo <= k:
+            it = self.iteration_of(lo)
+            first = rec.iter_first_step[it]
+            if lo < first:  # step 0, before the first expansion: just the start
+                sizes: Iterable[int] = [1]
+                hi = lo + 1
+            else:
+                hi = (min(k + 1, rec.iter_first_step[it + 1])
+                      if it + 1 < len(rec.iter_first_step) else k + 1)
+                c = rec.iter_root[it] - first + 1
+                sizes = map(operator.sub, rec.step_end[lo:hi], range(lo + c, hi + c))
+            running = accumulate(sizes, max, initial=peak[-1] if peak else 0)
+            next(running)  # the initial value is already in the table
+            peak.extend(running)
+            lo = hi
+
+    def is_discarded(self, k: int) -> bool:
+        """Did step ``k`` take off a cell already expanded, and so do nothing?"""
+        d = self.rec.discarded
+        i = bisect_right(d, k) - 1
+        return i >= 0 and d[i] == k
+
+    def step(self, k: int) -> Step:
+        """Step ``k`` (1-based) as a value."""
+        if k > self.rec.steps:
+            self.advance(k)
+        if not 1 <= k <= self.rec.steps:
+            raise IndexError(f"step {k} is outside 1..{self.rec.steps}")
+        rec = self.rec
+        succ = tuple((self.gen_dir(h), self.gen_cell(h)) for h in self.succ_range(k))
+        return Step(
+            index=k,
+            node=self.gen_cell(rec.exp(k)),
+            successors=succ,
+            depth_limit=self.depth_limit(k),
+            found_goal=rec.found and k == rec.steps,
+            discarded=self.is_discarded(k),
+        )
+
+    def steps(self) -> Iterator[Step]:
+        """Every step, in order, recording the search as it goes: the search as a generator
+        of steps."""
+        k = 1
+        while True:
+            if k > self.rec.steps:
+                self.advance(k)
+                if k > self.rec.steps:
+                    return
+            yield self.step(k)
+            k += 1
+
+
+__all__ = ["MAX_STEPS", "Recording", "Step"]
