@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from tui_search.engine.grid import DIRECTIONS, DEFAULT_ORDER, Grid
+from tui_search.engine.grid import DEFAULT_ORDER, DIRECTIONS, Grid
 from tui_search.engine.run import Run
 from tui_search.engine.semantics import Semantics
 

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from array import array
 from bisect import bisect_right
+from typing import Any
 
 from tui_search.engine.algorithms import Frontier
 from tui_search.engine.grid import DIRECTIONS, Cell
@@ -20,7 +21,7 @@ DIR_NAMES: tuple[str, ...] = DIRECTIONS + ("START",)
 class RecordedTree(Recording):
     """Queries on the record's events (no position)."""
 
-    def __init__(self, *args, **kwargs) -> None:
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
         super().__init__(*args, **kwargs)
         self._in_order = self.algo.frontier is Frontier.FIFO  # event g expanded at step g+1
         self._gen_step = array("i")  # event -> step that expanded it (LIFO; lazy)

@@ -22,14 +22,13 @@ from array import array
 from bisect import bisect_right
 from collections.abc import Iterator, Sequence
 from enum import IntEnum
+from typing import Any
 
-from tui_search.engine.algorithms import DEFAULT_ALGORITHM
 from tui_search.engine.frontier import frontier_model
-from tui_search.engine.grid import Cell, Grid
+from tui_search.engine.grid import Cell
 from tui_search.engine.queries import DIR_NAMES, RecordedTree
 from tui_search.engine.recording import MAX_STEPS, Step
 from tui_search.engine.search import ROOT_DIR
-from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
 
 
 class CellState(IntEnum):
@@ -45,14 +44,10 @@ class CellState(IntEnum):
 class Run(RecordedTree):
     """A recorded search with a movable position (see the module's docstring)."""
 
-    def __init__(
-        self,
-        grid: Grid,
-        algorithm: str = DEFAULT_ALGORITHM,
-        semantics: Semantics = DEFAULT_SEMANTICS,
-        max_steps: int = MAX_STEPS,
-    ) -> None:
-        super().__init__(grid, algorithm, semantics, max_steps)
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        """The arguments of :class:`~tui_search.engine.recording.Recording`: the grid, the
+        algorithm's key, the semantics and the step limit."""
+        super().__init__(*args, **kwargs)
         size = len(self.problem.walls)
         # Per-cell counters at the current position: generation events and expansions.
         self._n_gen = array("i", bytes(4 * size))
@@ -314,4 +309,4 @@ class Run(RecordedTree):
         return self.rec.step_end[self.k]
 
 
-__all__ = ["CellState", "DIR_NAMES", "MAX_STEPS", "ROOT_DIR", "Run", "Step"]
+__all__ = ["DIR_NAMES", "MAX_STEPS", "ROOT_DIR", "CellState", "Run", "Step"]
