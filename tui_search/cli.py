@@ -295,7 +295,7 @@ def run_headless(args: argparse.Namespace, grid: Grid, path: Path | None) -> int
 def run_app(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
     from tui_search.tui.app import SearchApp  # Textual only when the app is wanted
 
-    app = SearchApp(grid, path=path, algorithm=args.algorithm, options=semantics_from(args),
+    app = SearchApp(grid, path=path, algorithm=args.algorithm, semantics=semantics_from(args),
                     max_steps=args.max_steps, unsaved_name=BUILT_IN_TITLE)
     app.run()
     return app.return_code or 0

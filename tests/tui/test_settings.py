@@ -28,7 +28,7 @@ async def test_settings_apply_starts_a_new_run_at_step_0() -> None:
         assert not isinstance(app.screen, SettingsScreen)
         run = app.search_run
         assert run is not first and run.k == 0
-        assert run.semantics == Semantics(corners="never") == app.options
+        assert run.semantics == Semantics(corners="never") == app.semantics
         assert "corners: never" in stats(app)[0]
 
 
@@ -39,7 +39,7 @@ async def test_cancel_and_escape_change_nothing() -> None:
         await pilot.press("n")
         first = app.search_run
         await pilot.press("comma", "right", "enter", "escape")
-        assert app.search_run is first and first.k == 1 and app.options == Semantics()
+        assert app.search_run is first and first.k == 1 and app.semantics == Semantics()
         await pilot.press("comma")
         await pilot.click("#cancel")
         await pilot.pause()
@@ -64,7 +64,7 @@ async def test_a_bad_move_order_is_shown_and_not_applied() -> None:
         await pilot.pause()
         await pilot.press("enter")  # enter in the order applies, as the Apply button does
         await pilot.pause()
-        assert app.options.order == ("N", "W", "S", "E")
+        assert app.semantics.order == ("N", "W", "S", "E")
 
 
 @sync
@@ -87,7 +87,7 @@ async def test_tree_search_greys_out_the_visit_rule_and_defaults_restore_all() -
 async def test_visit_on_expand_lists_duplicates_and_says_when_a_step_is_discarded() -> None:
     """Under visit on expand the queue lists a cell as often as it is on it; a discarded
     step's narration says it threw the copy away."""
-    app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, options=Semantics(visit="expand"))
+    app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, semantics=Semantics(visit="expand"))
     async with app.run_test(size=SIZE) as pilot:
         run = app.search_run
         run.advance()
@@ -108,7 +108,7 @@ async def test_visit_on_expand_lists_duplicates_and_says_when_a_step_is_discarde
 
 @sync
 async def test_no_path_under_a_corner_rule_says_which_rule_blocked_it() -> None:
-    app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, options=Semantics(corners="one"))
+    app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, semantics=Semantics(corners="one"))
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("end")
         await pilot.pause()
@@ -118,8 +118,8 @@ async def test_no_path_under_a_corner_rule_says_which_rule_blocked_it() -> None:
 
 @sync
 async def test_switching_to_iddfs_drops_visit_on_expand_and_says_so() -> None:
-    app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, options=Semantics(visit="expand"))
+    app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, semantics=Semantics(visit="expand"))
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("3")
-        assert app.search_run.algorithm == "iddfs" and app.options.visit == "generate"
+        assert app.search_run.algorithm == "iddfs" and app.semantics.visit == "generate"
         assert "does not apply to IDDFS" in stats(app)[1]

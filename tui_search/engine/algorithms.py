@@ -34,10 +34,24 @@ class Frontier(Enum):
         """Where the next entry to come out is: "front", "top"."""
         return _ENDS[self]
 
+    def count_text(self, n: str) -> str:
+        """``n`` entries said the tutorial's way: "4 in the queue", "5 on the stack"."""
+        return f"{n} {_PREPOSITIONS[self]} the {self.noun}"
+
+    @property
+    def end_hints(self) -> tuple[str, str, str]:
+        """What the panel writes beside its entries: the only one, the next out, the far end."""
+        return _HINTS[self]
+
 
 _TITLES = {Frontier.FIFO: "Queue (FIFO)", Frontier.LIFO: "Stack (LIFO)"}
 _NOUNS = {Frontier.FIFO: "queue", Frontier.LIFO: "stack"}
 _ENDS = {Frontier.FIFO: "front", Frontier.LIFO: "top"}
+_PREPOSITIONS = {Frontier.FIFO: "in", Frontier.LIFO: "on"}
+_HINTS = {
+    Frontier.FIFO: ("← front and back", "← front (next out)", "← back (newest)"),
+    Frontier.LIFO: ("← top and bottom", "← top (next out)", "← bottom (oldest)"),
+}
 
 
 @dataclass(frozen=True)
@@ -50,6 +64,7 @@ class Algorithm:
     frontier: Frontier
     app_key: str  # the key that picks it in the app
     summary: str  # one line for the help screen
+    tag: str  # the key bar's shortest name: "BFS", "ID"
     iterative: bool = False  # restarts with depth limits 0, 1, 2, ...
 
 
@@ -57,12 +72,13 @@ ALGORITHMS: dict[str, Algorithm] = {
     a.key: a
     for a in (
         Algorithm("bfs", "Breadth-first search", "BFS", Frontier.FIFO, "1",
-                  "takes the oldest node from a FIFO queue: the fewest moves, much memory"),
+                  "takes the oldest node from a FIFO queue: the fewest moves, much memory",
+                  "BFS"),
         Algorithm("dfs", "Depth-first search", "DFS", Frontier.LIFO, "2",
-                  "takes the newest node from a LIFO stack: little memory, any path"),
+                  "takes the newest node from a LIFO stack: little memory, any path", "DFS"),
         Algorithm("iddfs", "Iterative deepening", "IDDFS", Frontier.LIFO, "3",
                   "depth-limited DFS with limits 0, 1, 2, ...: the fewest moves, a small stack",
-                  iterative=True),
+                  "ID", iterative=True),
     )
 }
 

@@ -27,6 +27,7 @@ class RecordedTree(Recording):
         self._gen_step = array("i")  # event -> step that expanded it (LIFO; lazy)
         self._gen_step_filled = 0
         self._path: set[int] | None = None
+        self._levels = array("i", [0])  # FIFO: the first event of each depth
 
     def gen_cell(self, g: int) -> Cell:
         return self.problem.unpad(self.rec.gen_node[g])
@@ -51,6 +52,26 @@ class RecordedTree(Recording):
         if self.rec.gen_depth is not None:
             return self.rec.gen_depth[g]
         return len(self.ancestors(g)) - 1
+
+    def cheap_depth(self, g: int) -> int | None:
+        """Event ``g``'s depth when it costs little to know: recorded (iterative deepening),
+        or from the levels of a FIFO search; None for a stack, where only walking the chain
+        up to the root (as deep as the map is big) would tell."""
+        rec = self.rec
+        if rec.gen_depth is not None:
+            return rec.gen_depth[g]
+        if not self._in_order:
+            return None
+        # A queue expands events in the order generated, so depth L+1 begins at
+        # ``step_end[s]`` where depth L begins at event ``s``: by the end of step ``s`` every
+        # event above has been taken off.  The level starts are kept, O(depth) over a run.
+        levels, step_end = self._levels, rec.step_end
+        while levels[-1] <= g and levels[-1] < len(step_end):
+            nxt = step_end[levels[-1]]
+            if nxt <= levels[-1]:
+                break
+            levels.append(nxt)
+        return bisect_right(levels, g) - 1
 
     def expanded_at(self, g: int) -> int | None:
         """The step at which event ``g`` was expanded, if it was (in the whole record)."""

@@ -23,7 +23,7 @@ from textual.widgets import Static
 
 from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.run import MAX_STEPS, Run
-from tui_search.engine.algorithms import get_algorithm
+from tui_search.engine.algorithms import ALGORITHMS, DEFAULT_ALGORITHM, get_algorithm
 from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
 from tui_search.tui import playback
 from tui_search.tui.editing import EditActions
@@ -45,7 +45,7 @@ KEY_IMPORTANCE = {
     "reset": 4, "save": 3, "overview": 2,
 }
 STEP = Binding.Group("Step", compact=True)
-ALGO = Binding.Group("BFS/DFS/ID", compact=True)
+ALGO = Binding.Group("/".join(a.tag for a in ALGORITHMS.values()), compact=True)
 
 
 class SearchApp(EditActions, FileActions, App[int]):
@@ -73,9 +73,8 @@ class SearchApp(EditActions, FileActions, App[int]):
         Binding("end", "last", "Last", show=False, tooltip="Last step: the answer"),
         Binding("escape", "stop_seek", "Stop", key_display="esc",
                 tooltip="Stop computing the last step"),
-        Binding("1", "algorithm('bfs')", "BFS", group=ALGO, tooltip="Breadth-first search"),
-        Binding("2", "algorithm('dfs')", "DFS", group=ALGO, tooltip="Depth-first search"),
-        Binding("3", "algorithm('iddfs')", "IDDFS", group=ALGO, tooltip="Iterative deepening"),
+        *(Binding(a.app_key, f"algorithm({a.key!r})", a.short, group=ALGO, tooltip=a.name)
+          for a in ALGORITHMS.values()),
         Binding("s", "place('start')", "Start", show=False, tooltip="Start at the cursor"),
         Binding("g", "place('goal')", "Goal", show=False, tooltip="Goal at the cursor"),
         Binding("o", "toggle_wall", "Wall", show=False, tooltip="Obstacle on/off at the cursor"),
@@ -94,8 +93,8 @@ class SearchApp(EditActions, FileActions, App[int]):
         self,
         grid: Grid,
         path: Path | None = None,
-        algorithm: str = "bfs",
-        options: Semantics = DEFAULT_SEMANTICS,
+        algorithm: str = DEFAULT_ALGORITHM,
+        semantics: Semantics = DEFAULT_SEMANTICS,
         max_steps: int = MAX_STEPS,
         unsaved_name: str = "untitled",
     ) -> None:
@@ -105,7 +104,7 @@ class SearchApp(EditActions, FileActions, App[int]):
         self.map_path = Path(path) if path is not None else None
         self.unsaved_name = unsaved_name  # the title of a map with no file (the built-in one)
         self.algorithm = algorithm
-        self.options = options
+        self.semantics = semantics
         self.dirty = False
         self.cursor_cell: Cell = grid.start or (0, 0)
         self.speed_index = playback.DEFAULT_SPEED
@@ -181,7 +180,7 @@ class SearchApp(EditActions, FileActions, App[int]):
             self.search_run = None
             self.note = note or NEEDS_ENDPOINTS
         else:
-            self.search_run = Run(grid, self.algorithm, self.options, self.max_steps)
+            self.search_run = Run(grid, self.algorithm, self.semantics, self.max_steps)
         if self._mounted_ok:
             self._show()
 
@@ -396,9 +395,9 @@ class SearchApp(EditActions, FileActions, App[int]):
         self.algorithm = algorithm
         note = ""
         algo = get_algorithm(algorithm)
-        if self.options.visit != "generate" and algo.iterative:
+        if self.semantics.visit != "generate" and algo.iterative:
             # The visit rule does not apply to iterative deepening: back to the default.
-            self.options = replace(self.options, visit="generate")
+            self.semantics = replace(self.semantics, visit="generate")
             note = f"Visit on expand does not apply to {algo.short}: back to visit on generate"
         self._new_run(note)
 
@@ -406,13 +405,13 @@ class SearchApp(EditActions, FileActions, App[int]):
         from tui_search.tui.screens.settings import SettingsScreen  # only when asked
 
         self._stop()
-        self.push_screen(SettingsScreen(self.options, get_algorithm(self.algorithm)),
+        self.push_screen(SettingsScreen(self.semantics, get_algorithm(self.algorithm)),
                          self._settings_chosen)
 
     def _settings_chosen(self, semantics: Semantics | None) -> None:
-        if semantics is None or semantics == self.options:
+        if semantics is None or semantics == self.semantics:
             return
-        self.options = semantics
+        self.semantics = semantics
         self._new_run()
 
     # -- the map ----------------------------------------------------------------------------

@@ -12,6 +12,8 @@ from textual.containers import VerticalScroll
 from textual.screen import ModalScreen
 from textual.widgets import Static
 
+from tui_search.engine.algorithms import ALGORITHMS
+
 from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.legend import Legend
 
@@ -27,7 +29,8 @@ KEYS = (
     ("+  -", "faster / slower"),
     ("home  end", "first / last step (the answer)"),
     ("esc", "stop computing the last step (on a big map)"),
-    ("1  2  3", "breadth-first / depth-first / iterative deepening"),
+    ("  ".join(a.app_key for a in ALGORITHMS.values()),
+     " / ".join(a.name.removesuffix(" search").lower() for a in ALGORITHMS.values())),
     ("r", "restart the search at step 0"),
     (",", "search settings: moves, corners, visits, goal test, tree"),
     ("z", "overview: the whole map in half blocks"),

@@ -22,6 +22,7 @@ from rich.cells import cell_len
 from rich.style import Style
 from textual.geometry import Size
 
+from tui_search.engine.algorithms import Frontier
 from tui_search.tui.narration import gave_up_text, group_digits
 from tui_search.tui.widgets.line_panel import LinePanel, set_virtual_size
 
@@ -82,6 +83,7 @@ class FrontierPanel(LinePanel):
         self._shown: tuple[int, int] | None = None  # (id(run), k) last shown
         self._count = 0  # frontier entries at the position
         self._added: range = range(0)
+        self._kind = Frontier.FIFO
         self._iddfs = False
         self._coord_w = 5  # width of "(x,y)" for the largest cell of the map
         self._depth_w = 0  # width of "d=N" (iterative deepening only)
@@ -105,8 +107,8 @@ class FrontierPanel(LinePanel):
         key = (id(run), run.k)
         moved = key != self._shown
         self._run, self._shown = run, key
-        lifo = run.algorithm != "bfs"
-        self._iddfs = run.algorithm == "iddfs"
+        kind = self._kind = run.algo.frontier
+        self._iddfs = run.algo.iterative
         n = self._count = run.frontier_len()
         self._added = run.added_now()
         grid = run.grid
@@ -117,12 +119,12 @@ class FrontierPanel(LinePanel):
         # stands one space from the next whatever its label (START d=0 / S d=1 alike)
         entry_w = 3 + self._coord_w + 1 + (self._depth_w + 1 if self._depth_w else 0) + DIR_W
         self._hint_col = entry_w + HINT_GAP
-        self.show_titles("Stack (LIFO)" if lifo else "Queue (FIFO)",
+        self.show_titles(kind.title,
                          "▶ next out  + just added" if n else "")
         if n:
             self._empty_text = ""
-            self._count_text = f"{group_digits(n)} {'on the stack' if lifo else 'in the queue'}"
-            hint = max(len(self._hints(lifo, 0, n)), len(self._hints(lifo, n - 1, n)))
+            self._count_text = kind.count_text(group_digits(n))
+            hint = max(len(self._hints(kind, 0, n)), len(self._hints(kind, n - 1, n)))
             width = max(self._hint_col + hint, cell_len(self._count_text))
             height = 1 + n
         else:
@@ -135,19 +137,20 @@ class FrontierPanel(LinePanel):
 
     # -- text, for tests and for render_line ------------------------------------------------
     @staticmethod
-    def _hints(lifo: bool, i: int, n: int) -> str:
+    def _hints(kind: Frontier, i: int, n: int) -> str:
+        only, next_out, far_end = kind.end_hints
         if n == 1:
-            return "← top and bottom" if lifo else "← front and back"
+            return only
         if i == 0:
-            return "← top (next out)" if lifo else "← front (next out)"
+            return next_out
         if i == n - 1:
-            return "← bottom (oldest)" if lifo else "← back (newest)"
+            return far_end
         return ""
 
     @staticmethod
     def _describe_empty(run: Run) -> str:
         if run.k < run.recorded or not run.done:
-            if run.algorithm == "iddfs":
+            if run.algo.iterative:
                 limit = run.depth_limit()
                 nxt = 1 if limit is None else limit + 1
                 return f"empty — iteration over; next: depth limit {nxt}"
@@ -175,7 +178,6 @@ class FrontierPanel(LinePanel):
         if not 0 <= y < n:
             return []
         (g,) = run.frontier(y, y + 1)
-        lifo = run.algorithm != "bfs"
         x, cy = run.gen_cell(g)
         main = "frontier-panel--next" if y == 0 else "frontier-panel--entry"
         added = g in self._added
@@ -193,7 +195,7 @@ class FrontierPanel(LinePanel):
         move = run.gen_dir(g).ljust(DIR_W)
         parts.append((move, main))
         used += len(move)
-        hint = self._hints(lifo, y, n)
+        hint = self._hints(self._kind, y, n)
         if hint:
             parts.append((" " * max(HINT_GAP, self._hint_col - used), "frontier-panel--entry"))
             parts.append((hint, "frontier-panel--hint"))

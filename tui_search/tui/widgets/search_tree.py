@@ -144,8 +144,6 @@ class SearchTreePanel(LinePanel):
         self._top_depth: int | None = None  # depth of _chain[0], None when not counted
         self._elided = False  # START and a "⋮" line stand above the chain
         self._kids: range = range(0)
-        self._bfs_levels = array("i", [0])  # BFS: first event of each depth (see _bfs_depth)
-        self._bfs_run: Run | None = None
         # the path, computed once per run
         self._path_run: Run | None = None
         self._path_all: frozenset[int] = frozenset()
@@ -193,7 +191,7 @@ class SearchTreePanel(LinePanel):
         self._run, self._k, self._root, self._mode = run, k, root, mode
         self._current = rec.step_exp[k] if k else -1
         self._tree_size = size
-        self._limit = run.depth_limit() if run.algorithm == "iddfs" else None
+        self._limit = run.depth_limit() if run.algo.iterative else None
         grid = run.grid
         self._coord_w = len(f"({grid.width - 1},{grid.height - 1})")
         self._update_path(run)
@@ -297,28 +295,10 @@ class SearchTreePanel(LinePanel):
             if top_depth is not None:
                 top_depth += excess
         if top_depth is None:
-            if run.rec.gen_depth is not None:  # iterative deepening records depths
-                top_depth = run.rec.gen_depth[new[0]]
-            elif run.algorithm == "bfs":
-                top_depth = self._bfs_depth(run, new[0])
+            top_depth = run.cheap_depth(new[0])
         self._chain, self._top_depth = new, top_depth
         self._chain_pos = {g: i for i, g in enumerate(new)}
         self._elided = new[0] != run.tree_root()
-
-    def _bfs_depth(self, run: Run, g: int) -> int:
-        """Depth of event ``g`` of a BFS: events are generated level by level, and level L+1
-        starts at ``step_end[s]`` where level L starts at event ``s`` (by the end of step
-        ``s`` every event of the levels above has been expanded).  The level starts are kept
-        per run, so over a run this costs O(depth) once."""
-        if self._bfs_run is not run:
-            self._bfs_run, self._bfs_levels = run, array("i", [0])
-        levels, step_end = self._bfs_levels, run.rec.step_end
-        while levels[-1] <= g and levels[-1] < len(step_end):
-            nxt = step_end[levels[-1]]
-            if nxt <= levels[-1]:
-                break
-            levels.append(nxt)
-        return bisect_right(levels, g) - 1
 
     def _update_path(self, run: Run) -> None:
         if self._path_run is not run or self._goal != run.rec.goal_gen:

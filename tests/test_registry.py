@@ -1,0 +1,46 @@
+"""The algorithm registry is the one place that names and describes algorithms."""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+from textual.binding import Binding
+
+from tui_search.cli import build_parser
+from tui_search.engine.algorithms import ALGORITHMS, Frontier
+from tui_search.tui.app import SearchApp
+from tui_search.tui.screens.help import KEYS
+
+TUI = Path(__file__).resolve().parents[1] / "tui_search" / "tui"
+
+
+def test_no_ui_module_compares_algorithm_names() -> None:
+    """What a panel shows follows from the registry entry (its frontier, whether it
+    iterates), never from an ``algorithm == "bfs"`` test."""
+    keys = set(ALGORITHMS)
+    found = []
+    for path in TUI.rglob("*.py"):
+        for node in ast.walk(ast.parse(path.read_text("utf-8"))):
+            if isinstance(node, ast.Compare):
+                for operand in [node.left, *node.comparators]:
+                    if isinstance(operand, ast.Constant) and operand.value in keys:
+                        found.append(f"{path.name}:{node.lineno}")
+    assert found == []
+
+
+def test_the_keys_the_cli_and_the_help_come_from_the_registry() -> None:
+    bindings = {b.action: b for b in Binding.make_bindings(SearchApp.BINDINGS)}
+    for algo in ALGORITHMS.values():
+        binding = bindings[f"algorithm({algo.key!r})"]
+        assert binding.key == algo.app_key and binding.description == algo.short
+    choices = next(a for a in build_parser()._actions if a.dest == "algorithm").choices
+    assert list(choices) == list(ALGORITHMS)
+    keys_line = dict(KEYS)["  ".join(a.app_key for a in ALGORITHMS.values())]
+    assert keys_line == "breadth-first / depth-first / iterative deepening"
+
+
+def test_frontier_words() -> None:
+    assert Frontier.FIFO.title == "Queue (FIFO)" and Frontier.LIFO.title == "Stack (LIFO)"
+    assert Frontier.FIFO.count_text("4") == "4 in the queue"
+    assert Frontier.LIFO.count_text("5") == "5 on the stack"
