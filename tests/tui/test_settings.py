@@ -8,6 +8,7 @@ from tui_search.engine.semantics import Semantics
 from tui_search.tui.app import SearchApp
 from tui_search.tui.screens.settings import SettingsScreen
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
+from tui_search.tui.widgets.search_tree import SearchTreePanel
 
 SIZE = (100, 32)
 
@@ -123,3 +124,21 @@ async def test_switching_to_iddfs_drops_visit_on_expand_and_says_so() -> None:
         await pilot.press("3")
         assert app.search_run.algorithm == "iddfs" and app.semantics.visit == "generate"
         assert "does not apply to IDDFS" in stats(app)[1]
+
+
+@sync
+async def test_a_discarded_step_shows_the_entry_it_threw_away() -> None:
+    app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, semantics=Semantics(visit="expand"))
+    async with app.run_test(size=SIZE) as pilot:
+        run = app.search_run
+        run.advance()
+        k = run.rec.discarded[0]
+        for _ in range(k):
+            await pilot.press("n")
+        x, y = run.gen_cell(run.rec.exp(k))
+        first = app.query_one(FrontierPanel).line_text(1)  # under the count
+        assert first.startswith(f"✗  ({x},{y})") and "discarded" in first
+        assert any("◀ discarded" in line for line in app.query_one(SearchTreePanel).lines())
+        await pilot.press("n")  # the next step expands: the mark goes
+        if not run.is_discarded(k + 1):
+            assert "✗" not in " ".join(app.query_one(FrontierPanel).lines())

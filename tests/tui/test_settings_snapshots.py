@@ -23,3 +23,23 @@ def test_tree_search_greys_out_the_visit_rule(snap_compare) -> None:
         await pilot.pause()
 
     assert snap_compare(tutorial_app(), run_before=tick, terminal_size=SIZE)
+
+
+def test_a_discarded_step(snap_compare) -> None:
+    """BFS with visit on expand at its first discarded step: the queue's first line marks
+    under its count the entry thrown away (✗ … discarded, struck through), the tree marks it '◀ discarded';
+    the status line counts
+    'discarded 1' and says 'visit on expand'; the narration says the cell was taken off again
+    and discarded."""
+    from tests.tui.test_app import TUTORIAL
+    from tui_search.engine.mapfile import load_map
+    from tui_search.engine.run import Run
+    from tui_search.engine.semantics import Semantics
+    from tui_search.tui.app import SearchApp
+
+    sem = Semantics(visit="expand")
+    probe = Run(load_map(TUTORIAL), "bfs", sem)
+    probe.advance()
+    k = probe.rec.discarded[0]
+    app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, semantics=sem)
+    assert snap_compare(app, press=["n"] * k, terminal_size=SIZE)

@@ -53,6 +53,7 @@ class FrontierPanel(LinePanel):
         & > .frontier-panel--hint { color: $text-muted; text-style: italic; }
         & > .frontier-panel--empty { color: $text-muted; text-style: italic; }
         & > .frontier-panel--no-path { color: $text-error; text-style: bold; }
+        & > .frontier-panel--discarded { color: $text-error; text-style: strike; }
     }
     """
 
@@ -64,6 +65,7 @@ class FrontierPanel(LinePanel):
         "frontier-panel--hint",
         "frontier-panel--empty",
         "frontier-panel--no-path",
+        "frontier-panel--discarded",
     }
     """
     | Class | Description |
@@ -75,6 +77,7 @@ class FrontierPanel(LinePanel):
     | `frontier-panel--hint` | The front/back or top/bottom hints. |
     | `frontier-panel--empty` | The line shown for an empty frontier. |
     | `frontier-panel--no-path` | The line shown when the search ended without a path. |
+    | `frontier-panel--discarded` | The entry a discarded step threw away (visit on expand). |
     """
 
     def __init__(self, **widget_args: Any) -> None:  # name, id, classes, disabled
@@ -90,6 +93,7 @@ class FrontierPanel(LinePanel):
         self._hint_col = 0  # column where end hints start
         self._empty_text = ""
         self._count_text = ""  # the first line: "4 in the queue"
+        self._discarded_text = ""  # after a discarded step: the entry it threw away
         self.border_title = "Frontier"
 
     # -- the contract with the app ----------------------------------------------------------
@@ -119,14 +123,20 @@ class FrontierPanel(LinePanel):
         # stands one space from the next whatever its label (START d=0 / S d=1 alike)
         entry_w = 3 + self._coord_w + 1 + (self._depth_w + 1 if self._depth_w else 0) + DIR_W
         self._hint_col = entry_w + HINT_GAP
+        self._discarded_text = ""
+        if run.k and run.is_discarded(run.k):
+            g = run.rec.exp(run.k)
+            x, y = run.gen_cell(g)
+            self._discarded_text = f"✗  ({x},{y}) {run.gen_dir(g)}  discarded"
         self.show_titles(kind.title,
                          "▶ next out  + just added" if n else "")
         if n:
             self._empty_text = ""
             self._count_text = kind.count_text(group_digits(n))
             hint = max(len(self._hints(kind, 0, n)), len(self._hints(kind, n - 1, n)))
-            width = max(self._hint_col + hint, cell_len(self._count_text))
-            height = 1 + n
+            width = max(self._hint_col + hint, cell_len(self._count_text),
+                        cell_len(self._discarded_text))
+            height = self._top() + n
         else:
             self._empty_text = self._describe_empty(run)
             width, height = cell_len(self._empty_text), 1
@@ -134,6 +144,10 @@ class FrontierPanel(LinePanel):
         if moved:
             self.scroll_to(0, 0, animate=False, immediate=True, force=True)
         self.refresh_changed()
+
+    def _top(self) -> int:
+        """Lines above the entries: the count, and the entry a discarded step threw away."""
+        return 2 if self._discarded_text else 1
 
     # -- text, for tests and for render_line ------------------------------------------------
     @staticmethod
@@ -160,7 +174,8 @@ class FrontierPanel(LinePanel):
         return "empty" if run.found else "empty — no path"
 
     def line_parts(self, y: int) -> list[tuple[str, str]]:
-        """Line ``y`` as (text, component class) pieces: the count, then entry ``y - 1``;
+        """Line ``y`` as (text, component class) pieces: the count, the entry a discarded step
+        threw away (if it did), then the entries;
         ``[]`` past the end."""
         run = self._run
         if run is None:
@@ -174,7 +189,9 @@ class FrontierPanel(LinePanel):
             return [(self._empty_text, cls)]
         if y == 0:
             return [(self._count_text, "frontier-panel--detail")]
-        y -= 1
+        if y == 1 and self._discarded_text:
+            return [(self._discarded_text, "frontier-panel--discarded")]
+        y -= self._top()
         if not 0 <= y < n:
             return []
         (g,) = run.frontier(y, y + 1)
@@ -203,6 +220,6 @@ class FrontierPanel(LinePanel):
 
     def line_band(self, y: int) -> Style | None:
         """The entry expanded next is highlighted across the whole line, like a cursor."""
-        if y == 1 and self._count:
+        if y == self._top() and self._count:
             return Style(bgcolor=self.cached_style("frontier-panel--next").bgcolor)
         return None

@@ -69,6 +69,7 @@ GLYPH_EXPANDED = "●"
 GLYPH_FRONTIER = "○"
 GLYPH_GOAL = "★"
 SUFFIX_CURRENT = "  ◀ expanding"
+SUFFIX_DISCARDED = "  ◀ discarded"  # taken off again (visit on expand): nothing expanded
 SUFFIX_GOAL = "  ★ goal"
 SUFFIX_CUTOFF = "  ✂ depth limit"
 #: Widest suffix (all single-cell characters).
@@ -129,6 +130,7 @@ class SearchTreePanel(LinePanel):
         self._root = -1
         self._mode = ""  # "list" or "focus"
         self._current = -1  # event expanded at the position (-1 at step 0)
+        self._current_discarded = False  # ...or taken off and discarded
         self._limit: int | None = None
         self._coord_w = 5
         self._tree_size = 0
@@ -190,6 +192,7 @@ class SearchTreePanel(LinePanel):
             self._kids = run.added_now()
         self._run, self._k, self._root, self._mode = run, k, root, mode
         self._current = rec.step_exp[k] if k else -1
+        self._current_discarded = bool(k) and run.is_discarded(k)
         self._tree_size = size
         self._limit = run.depth_limit() if run.algo.iterative else None
         grid = run.grid
@@ -412,7 +415,7 @@ class SearchTreePanel(LinePanel):
         glyph = GLYPH_GOAL if goal else (GLYPH_EXPANDED if expanded else GLYPH_FRONTIER)
         parts = [(f"{glyph} {label}", cls)]
         if g == self._current:
-            parts.append((SUFFIX_CURRENT, cls))
+            parts.append((SUFFIX_DISCARDED if self._current_discarded else SUFFIX_CURRENT, cls))
         elif goal:
             parts.append((SUFFIX_GOAL, cls))
         elif expanded and self._limit is not None and depth >= self._limit:
