@@ -25,7 +25,7 @@ from textual.widget import Widget
 from tests.helpers import TUTORIAL_ROWS, grid_from_rows
 from tui_search.engine.grid import Grid
 from tui_search.engine.run import Run
-from tui_search.tui.widgets import search_tree
+from tui_search.tui import tree_model
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.line_panel import scrollbar_cells, window_strip
 from tui_search.tui.widgets.search_tree import SearchTreePanel
@@ -360,9 +360,9 @@ async def test_big_tree_shows_the_focused_view() -> None:
         chain = run.ancestors(run.rec.step_exp[run.k])
         depth = len(chain) - 1
         kids = list(run.added_now())
-        assert panel.virtual_size.height == 3 + search_tree.SHOW_LEVELS + 1 + len(kids)
+        assert panel.virtual_size.height == 3 + tree_model.SHOW_LEVELS + 1 + len(kids)
         assert panel.line_text(1) == "  0 ● START (0,0)"
-        hidden = depth - search_tree.SHOW_LEVELS - 1
+        hidden = depth - tree_model.SHOW_LEVELS - 1
         assert panel.line_text(2) == f"    ⋮  {hidden} levels not shown"
         visible = screen_lines(panel)
         current = next(line for line in visible if "◀ expanding" in line)
@@ -389,7 +389,7 @@ async def test_big_tree_shows_the_focused_view() -> None:
 async def test_focused_view_on_the_tutorial(monkeypatch: pytest.MonkeyPatch) -> None:
     """The focused view in full on a small tree (forced): START to the expanding node, sibling
     counts, depths, and the goal under it."""
-    monkeypatch.setattr(search_tree, "SMALL_TREE", 3)
+    monkeypatch.setattr(tree_model, "SMALL_TREE", 3)
     run = tutorial_run("dfs")
     panel = SearchTreePanel()
     async with PanelApp(panel, run).run_test(size=(64, 14)):

@@ -35,45 +35,21 @@ stays cheap however big the run grows:
   a jump is shown uncounted.
 """
 
+
 from __future__ import annotations
 
-from array import array
-from bisect import bisect_right
 from typing import TYPE_CHECKING, Any, ClassVar
 
 from textual.geometry import Region, Size
 
-from tui_search.tui.narration import group_digits
+from tui_search.tui.tree_model import GLYPH_EXPANDED, GLYPH_FRONTIER, GLYPH_GOAL, TreeModel
 from tui_search.tui.widgets.line_panel import LinePanel, Parts, set_virtual_size
 
 if TYPE_CHECKING:
     from tui_search.engine.run import Run
 
-#: Largest tree listed in full; bigger trees get the focused view.
-SMALL_TREE = 5000
-#: Position changes applied one step at a time to the listing; bigger jumps rebuild it.
-INCREMENTAL_STEPS = 64
-#: Levels of tree guides drawn in the listing; deeper lines keep the last levels only.
-MAX_LEVELS = 40
-#: Tree guides kept (an event's never change); the cache starts again past this many.
-GUIDES_KEPT = 4 * SMALL_TREE
-#: Levels of indentation in the focused view (its lines also show their depth).
-FOCUS_LEVELS = 8
-#: Deepest part of the ancestor chain the focused view lists (above it: START and a "⋮" line).
-SHOW_LEVELS = 200
-#: Longest walk up the tree a show() makes to find where a new chain meets the old one or
-#: the root (about 0.6 µs a level); past it a deep depth-first chain's depth is left uncounted.
-WALK_MAX = 2000
-
-GLYPH_EXPANDED = "●"
-GLYPH_FRONTIER = "○"
-GLYPH_GOAL = "★"
-SUFFIX_CURRENT = "  ◀ expanding"
-SUFFIX_DISCARDED = "  ◀ discarded"  # taken off again (visit on expand): nothing expanded
-SUFFIX_GOAL = "  ★ goal"
-SUFFIX_CUTOFF = "  ✂ depth limit"
-#: Widest suffix (all single-cell characters).
-SUFFIX_W = max(len(SUFFIX_CURRENT), len(SUFFIX_GOAL), len(SUFFIX_CUTOFF))
+#: The model's roles are these component classes without the prefix.
+PREFIX = "search-tree--"
 
 
 class SearchTreePanel(LinePanel):
@@ -125,229 +101,43 @@ class SearchTreePanel(LinePanel):
 
     def __init__(self, **widget_args: Any) -> None:  # name, id, classes, disabled
         super().__init__(**widget_args)
-        self._run: Run | None = None
-        self._k = -1
-        self._root = -1
-        self._mode = ""  # "list" or "focus"
-        self._current = -1  # event expanded at the position (-1 at step 0)
-        self._current_discarded = False  # ...or taken off and discarded
-        self._limit: int | None = None
-        self._coord_w = 5
-        self._tree_size = 0
-        # the listing
-        self._order: list[int] = []
-        self._depth = array("i")  # depth of event root + i
-        self._expanded: set[int] = set()
-        self._guides: dict[int, str] = {}  # event -> its guides, for the run self._guides_run
-        self._guides_run: Run | None = None
-        # the focused view
-        self._chain: list[int] = []  # the deepest SHOW_LEVELS + 1 ancestors, top to bottom
-        self._chain_pos: dict[int, int] = {}
-        self._top_depth: int | None = None  # depth of _chain[0], None when not counted
-        self._elided = False  # START and a "⋮" line stand above the chain
-        self._kids: range = range(0)
-        # the path, computed once per run
-        self._path_run: Run | None = None
-        self._path_all: frozenset[int] = frozenset()
-        self._path: frozenset[int] = frozenset()
-        self._goal = -1
+        self.model = TreeModel()
         self._pending_scroll = False
         self.border_title = "Search tree"
 
     # -- the contract with the app ----------------------------------------------------------
     @property
     def run(self) -> Run | None:
-        return self._run
+        return self.model.run
 
     @property
     def mode(self) -> str:
         """``"list"`` (the whole tree) or ``"focus"`` (the path to the node being expanded)."""
-        return self._mode
+        return self.model.mode
 
     def show(self, run: Run) -> None:
-        """Show ``run`` at its position and keep the node being expanded in view.
-
-        Cost: the listing, O(steps moved) C-speed list edits (a jump: O(nodes) <= SMALL_TREE);
-        the focused view, O(the part of the ancestor chain that changed) -- never O(tree).
-        """
-        rec = run.rec
-        k = run.k
-        root = run.tree_root()
-        size = run.tree_size()
-        moved = run is not self._run or k != self._k
-        same_tree = run is self._run and root == self._root
-        mode = "list" if size <= SMALL_TREE else "focus"
-        if mode == "list":
-            if not (same_tree and self._mode == "list" and abs(k - self._k) <= INCREMENTAL_STEPS):
-                self._rebuild_list(run, root, k)
-            else:
-                while self._k < k:
-                    self._list_forward(run, root, self._k + 1)
-                while self._k > k:
-                    self._list_backward(run, root, self._k)
-            self._chain, self._chain_pos, self._top_depth = [], {}, None
-        else:
-            self._order, self._depth, self._expanded = [], array("i"), set()
-            self._focus(run, same_tree and self._mode == "focus", rec.step_exp[k])
-            self._kids = run.added_now()
-        self._run, self._k, self._root, self._mode = run, k, root, mode
-        self._current = rec.step_exp[k] if k else -1
-        self._current_discarded = bool(k) and run.is_discarded(k)
-        self._tree_size = size
-        self._limit = run.depth_limit() if run.algo.iterative else None
-        grid = run.grid
-        self._coord_w = len(f"({grid.width - 1},{grid.height - 1})")
-        self._update_path(run)
-
+        """Show ``run`` at its position and keep the node being expanded in view."""
+        model = self.model
+        moved = model.update(run)
         title = "Search tree"
-        if self._limit is not None:
-            title += f" · depth limit {self._limit}"
+        if model.limit is not None:
+            title += f" · depth limit {model.limit}"
         legend = f"{GLYPH_EXPANDED} expanded  {GLYPH_FRONTIER} frontier"
-        if self._path:
+        if model.path_shown:
             legend += f"  {GLYPH_GOAL} goal"
         self.show_titles(title, legend)
-
-        set_virtual_size(self, Size(self._content_width(), self._line_count()))
+        set_virtual_size(self, Size(model.content_width(), model.line_count()))
         if moved:
             self._scroll_to_current()
         self.refresh_changed()
 
     def current_line(self) -> int:
         """The line of the node being expanded (of the root at step 0)."""
-        if self._mode == "focus":
-            return self._head() + len(self._chain) - 1
-        if self._current < 0:
-            return 1
-        return 1 + self._order.index(self._current)
+        return self.model.current_line()
 
-    # -- keeping the listing in step -------------------------------------------------------
-    def _rebuild_list(self, run: Run, root: int, k: int) -> None:
-        """The listing from scratch: O(nodes in the tree), replaying the iteration's steps."""
-        rec = run.rec
-        end = rec.step_end[k]
-        depth = array("i", bytes(4 * (end - root)))
-        it = run.iteration_of(k)
-        first = rec.iter_first_step[it]
-        blocks: dict[int, range] = {}
-        step_exp, step_end = rec.step_exp, rec.step_end
-        expanded = {step_exp[j] for j in range(first, k + 1)}
-        for j in range(first, k + 1):
-            # run.succ_range(j), inlined: a later iteration's root precedes its first step's
-            lo, hi = step_end[j - 1], step_end[j]
-            if j == first and it:
-                lo += 1
-            if hi > lo:
-                g = step_exp[j]
-                blocks[g] = range(lo, hi)
-                depth[lo - root : hi - root] = array("i", [depth[g - root] + 1]) * (hi - lo)
-        order: list[int] = []
-        todo = [root]
-        while todo:
-            g = todo.pop()
-            order.append(g)
-            kids = blocks.get(g)
-            if kids:
-                todo.extend(reversed(kids))
-        self._order, self._depth, self._expanded = order, depth, expanded
-
-    def _list_forward(self, run: Run, root: int, j: int) -> None:
-        """Apply step ``j``: its node's children go right after it (it was a leaf)."""
-        g = run.rec.step_exp[j]
-        kids = run.succ_range(j)
-        if kids:
-            at = self._order.index(g) + 1
-            self._order[at:at] = kids
-            d = self._depth[g - root] + 1
-            self._depth.extend(array("i", [d]) * len(kids))
-        self._expanded.add(g)
-        self._k = j
-
-    def _list_backward(self, run: Run, root: int, j: int) -> None:
-        """Undo step ``j``: its node's children (still leaves) leave the listing."""
-        g = run.rec.step_exp[j]
-        kids = run.succ_range(j)
-        if kids:
-            at = self._order.index(g) + 1
-            del self._order[at : at + len(kids)]
-            del self._depth[len(self._depth) - len(kids) :]
-        self._expanded.discard(g)
-        self._k = j - 1
-
-    # -- keeping the focused chain in step -------------------------------------------------
-    def _focus(self, run: Run, keep: bool, current: int) -> None:
-        """Make the chain of ancestors down to ``current``: walk up only to where it meets the
-        old chain (a step: a level or a few), the root, or WALK_MAX levels (a jump)."""
-        chain, pos = (self._chain, self._chain_pos) if keep else ([], {})
-        top_depth = self._top_depth if keep else None
-        parent = run.gen_parent
-        walk = []
-        a = current
-        while a >= 0 and a not in pos and len(walk) <= WALK_MAX:
-            walk.append(a)
-            a = parent(a)
-        walk.reverse()
-        if a >= 0 and a in pos:  # met the old chain
-            new = chain[: pos[a] + 1]
-            new.extend(walk)
-        else:  # from the root (a < 0), or a chain too deep to follow to the root
-            new = walk
-            top_depth = 0 if a < 0 else None
-        excess = len(new) - (SHOW_LEVELS + 1)
-        if excess > 0:
-            del new[:excess]
-            if top_depth is not None:
-                top_depth += excess
-        if top_depth is None:
-            top_depth = run.cheap_depth(new[0])
-        self._chain, self._top_depth = new, top_depth
-        self._chain_pos = {g: i for i, g in enumerate(new)}
-        self._elided = new[0] != run.tree_root()
-
-    def _update_path(self, run: Run) -> None:
-        if self._path_run is not run or self._goal != run.rec.goal_gen:
-            self._path_run, self._goal = run, run.rec.goal_gen
-            self._path_all = frozenset(run.path_gens())
-        self._path = self._path_all if run.at_end else frozenset()
-
-    # -- geometry ---------------------------------------------------------------------------
-    def _line_count(self) -> int:
-        if self._mode == "focus":
-            return self._head() + len(self._chain) + len(self._kids)
-        return 1 + len(self._order)
-
-    def _head(self) -> int:
-        """Lines above the chain in the focused view: the note (and START, "⋮"); above the
-        listing: the count."""
-        return 3 if self._elided else 1
-
-    def _depth_width(self) -> int:
-        """Width of the focused view's depth column (0 when the depth is not counted)."""
-        if self._top_depth is None:
-            return 0
-        return len(str(self._top_depth + len(self._chain))) + 1
-
-    def _label_width(self) -> int:
-        # glyph, space, direction (START: 5), space, coordinates
-        return 1 + 1 + 5 + 1 + self._coord_w
-
-    def _content_width(self) -> int:
-        """The widest line, near enough (exact for the lines that carry a suffix), without
-        looking at every line."""
-        label = 1 + 1 + 2 + 1 + self._coord_w  # glyph, move, cell of an ordinary node
-        if self._mode == "focus":
-            levels = min(len(self._chain) + self._elided, FOCUS_LEVELS)
-            widest = (self._depth_width() + 3 * levels + label + len(SUFFIX_CURRENT)
-                      + len("  child 8 of 8"))
-            return max(len(self._note()), len(self._elision()), widest)
-        deepest = max(self._depth) if len(self._depth) else 0
-        widest = 3 * min(deepest, MAX_LEVELS) + (2 if deepest > MAX_LEVELS else 0) + label
-        if self._limit and deepest >= self._limit:
-            widest = max(widest, 3 * min(self._limit, MAX_LEVELS) + label + len(SUFFIX_CUTOFF))
-        widest = max(widest, 1 + 1 + 5 + 1 + self._coord_w)  # the root, START
-        for g in (self._current, self._goal if self._path else -1):
-            if g >= 0:
-                widest = max(widest, len(self.line_text(1 + self._order.index(g))))
-        return max(widest, len(self._count_text()))
+    def line_parts(self, y: int) -> Parts:
+        """Line ``y`` as (text, component class) pieces; ``[]`` past the end."""
+        return [(text, PREFIX + role) for text, role in self.model.line(y)]
 
     def _scroll_to_current(self) -> None:
         """Bring the node being expanded and its children into view (once laid out)."""
@@ -356,167 +146,20 @@ class SearchTreePanel(LinePanel):
             self._pending_scroll = True  # done on the first Resize
             return
         self._pending_scroll = False
-        y = self.current_line()
-        height = 1 + len(self._kids if self._mode == "focus" else self._current_kids())
-        parts = self.line_parts(y)
-        x = sum(len(text) for text, cls in parts if cls in ("search-tree--guide",
-                                                           "search-tree--detail"))
+        model = self.model
+        y = model.current_line()
+        height = 1 + len(model.kids)
+        x = sum(len(text) for text, role in model.line(y) if role in ("guide", "detail"))
         self.scroll_to_region(
-            Region(x, y, min(self._label_width(), window.width), min(height, window.height)),
+            Region(x, y, min(model.label_width(), window.width), min(height, window.height)),
             animate=False,
             immediate=True,
             force=True,
         )
 
     def on_resize(self) -> None:
-        if self._pending_scroll and self._run is not None:
+        if self._pending_scroll and self.model.run is not None:
             self._scroll_to_current()
 
-    def _current_kids(self) -> range:
-        run = self._run
-        return run.added_now() if run is not None else range(0)
 
-    # -- text -------------------------------------------------------------------------------
-    def _count_text(self) -> str:
-        """The listing's first line: ``8 nodes`` (a title with the count would repaint the
-        whole panel on every step)."""
-        size = self._tree_size
-        return f"{group_digits(size)} node{'s' if size != 1 else ''}"
-
-    def _note(self) -> str:
-        return (f"({group_digits(self._tree_size)} nodes; showing the path to the node being "
-                "expanded)")
-
-    def _siblings(self, g: int) -> range:
-        """``g`` and its siblings: the events generated by the step that generated ``g``
-        (a parent's children are consecutive events).  O(log steps)."""
-        run = self._run
-        assert run is not None
-        return run.succ_range(bisect_right(run.rec.step_end, g))
-
-    def _is_last(self, g: int) -> bool:
-        """Is ``g`` its parent's last child?"""
-        return g + 1 == self._run.rec.step_end[bisect_right(self._run.rec.step_end, g)]  # type: ignore[union-attr]
-
-    def _node_parts(self, g: int, depth: int, expanded: bool, detail: str = "") -> Parts:
-        """Glyph, move and cell of ``g``, a suffix (being expanded, the goal, cut off at the
-        depth limit), then ``detail`` (sibling counts)."""
-        run = self._run
-        assert run is not None
-        x, y = run.gen_cell(g)
-        label = f"{run.gen_dir(g)} ({x},{y})"
-        goal = g == self._goal and bool(self._path)
-        if g in self._path:  # the answer, at the end, outranks everything (as on the grid)
-            cls = "search-tree--path"
-        elif g == self._current:
-            cls = "search-tree--current"
-        else:
-            cls = "search-tree--expanded" if expanded else "search-tree--frontier"
-        glyph = GLYPH_GOAL if goal else (GLYPH_EXPANDED if expanded else GLYPH_FRONTIER)
-        parts = [(f"{glyph} {label}", cls)]
-        if g == self._current:
-            parts.append((SUFFIX_DISCARDED if self._current_discarded else SUFFIX_CURRENT, cls))
-        elif goal:
-            parts.append((SUFFIX_GOAL, cls))
-        elif expanded and self._limit is not None and depth >= self._limit:
-            parts.append((SUFFIX_CUTOFF, "search-tree--cutoff"))
-        if detail:
-            parts.append((detail, "search-tree--detail"))
-        return parts
-
-    def _list_guides(self, g: int, depth: int) -> str:
-        """``│  ├─ `` etc. for a node of the listing: O(min(depth, MAX_LEVELS)) the first time,
-        then kept (whether each ancestor is a last child is known once it is generated; a step
-        shifts the lines under the node it expands, and they are drawn again)."""
-        if depth == 0:
-            return ""
-        if self._guides_run is not self._run or len(self._guides) > GUIDES_KEPT:
-            self._guides, self._guides_run = {}, self._run
-        guides = self._guides.get(g)
-        if guides is None:
-            guides = self._guides[g] = self._draw_guides(g, depth)
-        return guides
-
-    def _draw_guides(self, g: int, depth: int) -> str:
-        parent = self._run.gen_parent  # type: ignore[union-attr]
-        is_last = self._is_last
-        pieces = ["└─ " if is_last(g) else "├─ "]
-        a = parent(g)
-        levels = depth - 1
-        drawn = min(levels, MAX_LEVELS - 1)
-        for _ in range(drawn):
-            pieces.append("   " if is_last(a) else "│  ")
-            a = parent(a)
-        if levels > drawn:
-            pieces.append("┈ ")
-        pieces.reverse()
-        return "".join(pieces)
-
-    def line_parts(self, y: int) -> Parts:
-        """Line ``y`` of the whole view as (text, component class) pieces; ``[]`` past it."""
-        if self._run is None or y < 0:
-            return []
-        if self._mode == "focus":
-            return self._focus_parts(y)
-        if y == 0:
-            return [(self._count_text(), "search-tree--note")]
-        y -= 1
-        if y >= len(self._order):
-            return []
-        g = self._order[y]
-        depth = self._depth[g - self._root]
-        parts: Parts = []
-        guides = self._list_guides(g, depth)
-        if guides:
-            parts.append((guides, "search-tree--guide"))
-        parts.extend(self._node_parts(g, depth, g in self._expanded))
-        return parts
-
-    def _elision(self) -> str:
-        if not self._elided:
-            return ""
-        if self._top_depth is None:
-            return f"⋮  more than {group_digits(WALK_MAX)} levels not shown"
-        hidden = self._top_depth - 1
-        return f"⋮  {group_digits(hidden)} level{'s' if hidden != 1 else ''} not shown"
-
-    def _focus_parts(self, y: int) -> Parts:
-        chain, kids = self._chain, self._kids
-        if y == 0:
-            return [(self._note(), "search-tree--note")]
-        depth_w = self._depth_width()
-        if self._elided and y <= 2:
-            if y == 1:
-                root = self._run.tree_root()  # type: ignore[union-attr]
-                parts: Parts = [(f"{0:>{depth_w - 1}} " if depth_w else "", "search-tree--detail")]
-                return parts + self._node_parts(root, 0, True)
-            return [(" " * depth_w + self._elision(), "search-tree--detail")]
-        i = y - self._head()
-        if i < len(chain):
-            g, level, expanded = chain[i], i + self._elided, True
-            connector = "└─ "
-        elif i - len(chain) < len(kids):
-            g = kids[i - len(chain)]
-            level, expanded = len(chain) - 1 + self._elided + 1, False
-            connector = "└─ " if g == kids[-1] else "├─ "
-        else:
-            return []
-        depth = None
-        if self._top_depth is not None:
-            depth = self._top_depth + min(i, len(chain))
-        parts = [(f"{depth:>{depth_w - 1}} " if depth is not None else "", "search-tree--detail")]
-        if level:
-            # Indentation stops growing at FOCUS_LEVELS, but children stay under their parent.
-            shown = min(level, FOCUS_LEVELS) if i < len(chain) else (
-                min(level - 1, FOCUS_LEVELS) + 1)
-            parts.append(("   " * (shown - 1) + connector, "search-tree--guide"))
-        detail = self._sibling_text(g) if level and i < len(chain) else ""
-        parts.extend(self._node_parts(g, depth if depth is not None else -1, expanded, detail))
-        return parts
-
-    def _sibling_text(self, g: int) -> str:
-        """``child 2 of 3``: where ``g`` is among its parent's children (at most 8)."""
-        sibs = self._siblings(g)
-        if len(sibs) == 1:
-            return "  only child"
-        return f"  child {g - sibs.start + 1} of {len(sibs)}"
+__all__ = ["PREFIX", "SearchTreePanel"]
