@@ -36,20 +36,24 @@ def test_the_model_imports_without_textual() -> None:
     assert out.stdout.strip() == "False"
 
 
+#: The tutorial's BFS tree after S, S, SE are expanded; SE (1,2) is being expanded.
+BFS_AFTER_FOUR = [
+    "8 nodes",
+    "● START (0,0)",
+    "└─ ● S (0,1)",
+    "   ├─ ● S (0,2)",
+    "   │  ├─ ○ S (0,3)",
+    "   │  └─ ○ SE (1,3)",
+    "   └─ ● SE (1,2)  ◀ expanding",
+    "      ├─ ○ E (2,2)",
+    "      └─ ○ NE (2,1)",
+]
+
+
 def test_the_tutorials_bfs_tree_after_four_steps() -> None:
     _, model = at("bfs", 4)
     assert model.mode == "list"
-    assert lines(model) == [
-        "8 nodes",
-        "● START (0,0)",
-        "└─ ● S (0,1)",
-        "   ├─ ● S (0,2)",
-        "   │  ├─ ○ S (0,3)",
-        "   │  └─ ○ SE (1,3)",
-        "   └─ ● SE (1,2)  ◀ expanding",
-        "      ├─ ○ E (2,2)",
-        "      └─ ○ NE (2,1)",
-    ]
+    assert lines(model) == BFS_AFTER_FOUR
     assert model.current_line() == 6
     roles = {role for y in range(model.line_count()) for _, role in model.line(y)}
     assert roles == {"note", "guide", "expanded", "frontier", "current"}

@@ -1,4 +1,4 @@
-"""The search tree at the position: every generated node under START, edges labelled by moves.
+"""The search tree panel: every generated node under START, edges labelled by moves.
 
 ::
 
@@ -9,30 +9,10 @@
           ├─ ○ E (2,2)
           └─ ○ NE (2,1)
 
-``●`` an expanded node (blue), ``○`` a node waiting on the frontier, the node being expanded
-highlighted and kept in view, the path green once the goal is found.  Iterative deepening shows
-the current iteration's tree, and the title gives its depth limit.
-
-Two views, chosen by the size of the tree at the position, so that :meth:`SearchTreePanel.show`
-stays cheap however big the run grows:
-
-* **listing** (at most :data:`SMALL_TREE` nodes): the whole tree in preorder, under a line
-  that counts its nodes (the count is not in the title: setting a title repaints the whole
-  panel).  The listing is a list of event ids kept in step with the position: one step
-  forwards inserts the expanded node's children after it, one step back removes them (a
-  C-speed ``list.index`` and a slice assignment); a jump rebuilds it in O(nodes) from the
-  record.  Tree guides (``│ ├─ └─``) are
-  drawn per visible line from the record's parent array (O(depth), capped at
-  :data:`MAX_LEVELS`).
-* **focused** (bigger trees): the chain of ancestors from START to the node being expanded --
-  one line per edge, each saying which of its parent's children it is -- then that node's
-  children.  Only the deepest :data:`SHOW_LEVELS` edges are listed (START and a "⋮ N levels
-  not shown" line stand above them).  The chain is kept from one call to the next: a step
-  walks up from the new node only to where it meets the old chain, the root, or
-  :data:`WALK_MAX` levels, so a step costs O(the part of the chain that changed) and a jump
-  O(min(depth, WALK_MAX)).  The depths come from the walk, from the record (iterative
-  deepening), or from BFS's level starts; a depth-first chain deeper than WALK_MAX reached by
-  a jump is shown uncounted.
+What it lists, in which view (the whole tree, or focused on the path to the node being
+expanded), is :mod:`tui_search.tui.tree_model`'s; this widget gives each of the model's roles
+its component class (so a theme colours them), keeps the node being expanded in view and
+repaints only the lines that changed.
 """
 
 
