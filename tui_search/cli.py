@@ -175,7 +175,7 @@ def trace_line(step: Step) -> str:
 
 
 def _as_step(step: Expansion) -> Step:
-    return Step(step.index, step.node.cell, tuple((s.move, s.cell) for s in step.successors),
+    return Step(step.index, step.node.cell, tuple((s.move or "", s.cell) for s in step.successors),
                 step.depth_limit, step.found, step.discarded)
 
 

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from itertools import pairwise
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
@@ -141,7 +142,7 @@ class Grid:
 def path_moves(path: list[Cell]) -> list[str]:
     """Direction names of the moves along ``path``."""
     by_delta = {v: k for k, v in DELTAS.items()}
-    return [by_delta[(b[0] - a[0], b[1] - a[1])] for a, b in zip(path, path[1:])]
+    return [by_delta[(b[0] - a[0], b[1] - a[1])] for a, b in pairwise(path)]
 
 
 def path_cost(moves: list[str]) -> float:

@@ -6,12 +6,13 @@ from __future__ import annotations
 
 from array import array
 from bisect import bisect_right
+from collections.abc import Iterator
 from typing import Any
 
 from tui_search.engine.algorithms import Frontier
 from tui_search.engine.grid import DIRECTIONS, Cell
 from tui_search.engine.outcome import Outcome
-from tui_search.engine.recording import Recording
+from tui_search.engine.recording import Recording, Step
 from tui_search.engine.search import ROOT_DIR
 
 #: Direction names indexed by stored direction code; a root is shown as START.
@@ -133,6 +134,35 @@ class RecordedTree(Recording):
             max_frontier=self.peak_frontier(rec.steps),
             gave_up=rec.gave_up,
         )
+
+    def step(self, k: int) -> Step:
+        """Step ``k`` (1-based) as a value."""
+        if k > self.rec.steps:
+            self.advance(k)
+        if not 1 <= k <= self.rec.steps:
+            raise IndexError(f"step {k} is outside 1..{self.rec.steps}")
+        rec = self.rec
+        succ = tuple((self.gen_dir(h), self.gen_cell(h)) for h in self.succ_range(k))
+        return Step(
+            index=k,
+            node=self.gen_cell(rec.exp(k)),
+            successors=succ,
+            depth_limit=self.depth_limit(k),
+            found_goal=rec.found and k == rec.steps,
+            discarded=self.is_discarded(k),
+        )
+
+    def steps(self) -> Iterator[Step]:
+        """Every step, in order, recording the search as it goes: the search as a generator
+        of steps."""
+        k = 1
+        while True:
+            if k > self.rec.steps:
+                self.advance(k)
+                if k > self.rec.steps:
+                    return
+            yield self.step(k)
+            k += 1
 
 
 __all__ = ["DIR_NAMES", "RecordedTree"]

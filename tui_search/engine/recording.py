@@ -11,9 +11,10 @@ from __future__ import annotations
 import operator
 from array import array
 from bisect import bisect_right
-from collections.abc import Iterable, Iterator
+from collections.abc import Generator, Iterable
 from dataclasses import dataclass
 from itertools import accumulate
+from typing import cast
 
 from tui_search.engine.algorithms import DEFAULT_ALGORITHM, get_algorithm
 from tui_search.engine.grid import Cell, Grid
@@ -63,7 +64,9 @@ class Recording:
         self.problem = Problem(self.grid, semantics)
         self.rec = Record()
         self.max_steps = max_steps
-        self._loop = loop_for(algo, semantics)(self.problem, self.rec, min(CHUNK, max_steps))
+        # The loops are generator functions: close() ends one that gives up.
+        self._loop = cast(Generator[int, None, None],
+                          loop_for(algo, semantics)(self.problem, self.rec, min(CHUNK, max_steps)))
         self._peak = array("i")
         self._advance_once()  # records the start (and the answer, when start == goal)
 
@@ -138,8 +141,9 @@ class Recording:
         """Index of the iteration that step ``k`` belongs to (step 0 is in iteration 0)."""
         return max(0, bisect_right(self.rec.iter_first_step, k) - 1)
 
-    def depth_limit(self, k: int | None = None) -> int | None:
-        return self.rec.iter_limit[self.iteration_of(self.k if k is None else k)]
+    def depth_limit(self, k: int) -> int | None:
+        """Iterative deepening's depth limit at step ``k`` (None for other searches)."""
+        return self.rec.iter_limit[self.iteration_of(k)]
 
     def _iter_span(self, it: int) -> tuple[int, int]:
         """First and last step of iteration ``it`` (as recorded)."""
@@ -165,10 +169,10 @@ class Recording:
             return 1
         return (rec.step_end[k] - rec.iter_root[it]) - (k - first + 1)
 
-    def peak_frontier(self, k: int | None = None) -> int:
+    def peak_frontier(self, k: int) -> int:
         """The largest frontier size over steps 0..k (default: the position): a look-up, the
         table being kept as the search is recorded."""
-        k = min(self.k if k is None else k, self.rec.steps)  # type: ignore[attr-defined]
+        k = min(k, self.rec.steps)
         self._extend_peak(k)
         return self._peak[k]
 
@@ -199,35 +203,6 @@ class Recording:
         d = self.rec.discarded
         i = bisect_right(d, k) - 1
         return i >= 0 and d[i] == k
-
-    def step(self, k: int) -> Step:
-        """Step ``k`` (1-based) as a value."""
-        if k > self.rec.steps:
-            self.advance(k)
-        if not 1 <= k <= self.rec.steps:
-            raise IndexError(f"step {k} is outside 1..{self.rec.steps}")
-        rec = self.rec
-        succ = tuple((self.gen_dir(h), self.gen_cell(h)) for h in self.succ_range(k))
-        return Step(
-            index=k,
-            node=self.gen_cell(rec.exp(k)),
-            successors=succ,
-            depth_limit=self.depth_limit(k),
-            found_goal=rec.found and k == rec.steps,
-            discarded=self.is_discarded(k),
-        )
-
-    def steps(self) -> Iterator[Step]:
-        """Every step, in order, recording the search as it goes: the search as a generator
-        of steps."""
-        k = 1
-        while True:
-            if k > self.rec.steps:
-                self.advance(k)
-                if k > self.rec.steps:
-                    return
-            yield self.step(k)
-            k += 1
 
 
 __all__ = ["MAX_STEPS", "Recording", "Step"]

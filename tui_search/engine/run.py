@@ -265,6 +265,14 @@ class Run(RecordedTree):
         cells.extend(rec.gen_node[h] for h in self.succ_range(k))
         return [self.problem.unpad(p) for p in cells]
 
+    def depth_limit(self, k: int | None = None) -> int | None:
+        """Iterative deepening's depth limit at step ``k`` (default: the position)."""
+        return super().depth_limit(self.k if k is None else k)
+
+    def peak_frontier(self, k: int | None = None) -> int:
+        """The largest frontier size over steps 0..k (default: the position)."""
+        return super().peak_frontier(self.k if k is None else k)
+
     def frontier_len(self) -> int:
         return len(self._frontier)
 

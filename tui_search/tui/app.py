@@ -21,9 +21,9 @@ from textual.binding import Binding, BindingType
 from textual.containers import Vertical
 from textual.widgets import Static
 
+from tui_search.engine.algorithms import ALGORITHMS, DEFAULT_ALGORITHM, get_algorithm
 from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.run import MAX_STEPS, Run
-from tui_search.engine.algorithms import ALGORITHMS, DEFAULT_ALGORITHM, get_algorithm
 from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
 from tui_search.tui import playback
 from tui_search.tui.editing import EditActions
@@ -192,8 +192,9 @@ class SearchApp(EditActions, FileActions, App[int]):
         if run is not None:
             self.frontier_panel.show(run)
             self.tree_panel.show(run)
-            if follow and run.k:
-                self.view.follow(run.current_node())
+            node = run.current_node()
+            if follow and node is not None:
+                self.view.follow(node)
         speed = playback.speed_text(playback.SPEEDS[self.speed_index])
         playing = f"▶ playing {speed}" if self.playing else f"speed {speed}"
         self.stats.show(run, self.algorithm, playing=playing, note=self.note)
@@ -234,6 +235,7 @@ class SearchApp(EditActions, FileActions, App[int]):
     # -- stepping ---------------------------------------------------------------------------
     def _moved(self, old_k: int, was_at_end: bool) -> None:
         run = self.search_run
+        assert run is not None, "only a run moves"
         self._show(playback.step_changes(run, old_k, was_at_end))
 
     def action_next(self) -> None:
@@ -308,6 +310,7 @@ class SearchApp(EditActions, FileActions, App[int]):
     def _seek_note(self, text: str) -> None:
         """Say how far the seek is (and how to stop it), then carry on after a pause."""
         run = self.search_run
+        assert run is not None, "only a run seeks"
         self.note = f"{text} — esc to stop"
         self._show(changed=[])
         self.set_timer(playback.SLICE_PAUSE, lambda: self._seek_slice(run))

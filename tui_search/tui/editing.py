@@ -11,6 +11,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from tui_search.engine.grid import Cell, Grid
+from tui_search.tui.mixin import AppMixinBase
 
 if TYPE_CHECKING:
     from tui_search.tui.widgets.grid_view import GridView
@@ -50,16 +51,11 @@ def set_wall(grid: Grid, cell: Cell, blocked: bool) -> str | None:
     return None
 
 
-class EditActions:
+class EditActions(AppMixinBase):
     """Keys s, g, o and the arrows, and the grid view's mouse messages.  A left-button stroke
     paints what its first cell became (an obstacle, or free); start and goal are never
     painted over; the right button only moves the cursor."""
 
-    grid: Grid
-    view: GridView
-    cursor_cell: Cell
-    dirty: bool
-    _stroke: bool | None
 
     def action_move(self, dx: int, dy: int) -> None:
         x, y = self.cursor_cell

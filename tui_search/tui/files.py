@@ -14,12 +14,12 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from tui_search.engine.grid import Cell, Grid
+from tui_search.engine.grid import Grid
 from tui_search.engine.mapfile import MOVINGAI, TEXT, MapError, kind_for_path, save_map
+from tui_search.tui.mixin import AppMixinBase
 
 if TYPE_CHECKING:
     from tui_search.tui.screens.confirm_quit import Leaving
-    from tui_search.tui.widgets.grid_view import GridView
 
 # The screens are imported when first needed: their widgets (Input, Button) would add to the
 # app's start-up time for nothing.
@@ -27,16 +27,10 @@ if TYPE_CHECKING:
 NO_ENDPOINTS_IN_MAP = "MovingAI format: the start and goal are not part of a .map file"
 
 
-class FileActions:
+class FileActions(AppMixinBase):
     """ctrl+s saves, w saves as, ctrl+o opens a map; q and a new map ask first when there
     are unsaved edits (:meth:`confirm_discard`, :meth:`replace_map`)."""
 
-    grid: Grid
-    map_path: Path | None
-    map_name: str  # what the title calls the map
-    dirty: bool
-    view: GridView
-    cursor_cell: Cell
 
     # -- saving ---------------------------------------------------------------------------
     def action_save(self) -> None:

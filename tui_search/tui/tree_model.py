@@ -253,7 +253,7 @@ class TreeModel:
         chain, pos = (self._chain, self._chain_pos) if keep else ([], {})
         top_depth = self._top_depth if keep else None
         parent = run.gen_parent
-        walk = []
+        walk: list[int] = []
         a = current
         while a >= 0 and a not in pos and len(walk) <= WALK_MAX:
             walk.append(a)

@@ -13,7 +13,6 @@ from textual.screen import ModalScreen
 from textual.widgets import Static
 
 from tui_search.engine.algorithms import ALGORITHMS
-
 from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.legend import Legend
 

@@ -22,7 +22,6 @@ from textual.binding import ActiveBinding
 from textual.screen import Screen
 from textual.widget import Widget
 
-
 #: A hint: its keys as ``(display, key, enabled)``, its description, whether it can act.
 Hint = tuple[list[tuple[str, str, bool]], str, bool]
 
@@ -56,9 +55,6 @@ class KeyBar(Widget):
     }
     """
 
-    #: ``(start, end, key)`` of each hint drawn, for clicks.
-    _spans: list[tuple[int, int, str]] = []
-
     def __init__(
         self, importance: Mapping[str, int] | None = None, *, id: str | None = None
     ) -> None:
@@ -66,6 +62,7 @@ class KeyBar(Widget):
         #: How much each action's hint matters (by action name, without parameters): when
         #: the bar is too narrow, the lowest go first; an action not listed counts 0.
         self.importance: Mapping[str, int] = importance or {}
+        self._spans: list[tuple[int, int, str]] = []  # (start, end, key) of each hint drawn
 
     def on_mount(self) -> None:
         self.screen.bindings_updated_signal.subscribe(self, self._bindings_changed)
@@ -92,8 +89,8 @@ class KeyBar(Widget):
                 by_action.setdefault(active.binding.action, []).append(active)
         firsts = [actives[0] for actives in by_action.values()]
         hints: list[tuple[Hint, str]] = []
-        for group, members in groupby(firsts, lambda active: active.binding.group):
-            members = list(members)
+        for group, grouped in groupby(firsts, lambda active: active.binding.group):
+            members = list(grouped)
             keys = [
                 (self.app.get_key_display(a.binding), a.binding.key, a.enabled) for a in members
             ]

@@ -15,8 +15,8 @@ from rich.segment import Segment
 from textual.strip import Strip
 from textual.widget import Widget
 
-from tui_search.engine.run import Run
 from tui_search.engine.algorithms import get_algorithm
+from tui_search.engine.run import Run
 from tui_search.tui.narration import narrate, result_text, status_parts
 from tui_search.tui.widgets.line_panel import CachedStyles, Parts
 
