@@ -7,6 +7,8 @@ import os
 import pickle
 import random
 import stat
+import threading
+import tracemalloc
 from pathlib import Path
 
 import pytest
@@ -326,6 +328,64 @@ def test_load_map_just_under_the_limit_is_read(
     assert load_map(write(tmp_path, "t.txt", TUTORIAL)).width == 6
     path = write(tmp_path, "u.txt", TUTORIAL + "\n")
     assert "a map may be at most" in error_of(load_map, path)
+
+
+def test_loading_a_small_map_allocates_little() -> None:
+    """A read capped at 64 MB must not ask for 64 MB: ``read(n)`` allocates ``n`` bytes first,
+    which made loading the six-line tutorial map peak at 67 MB."""
+    load_map(MAPS / "tutorial.txt")  # once first, so one-off caches do not count
+    tracemalloc.start()
+    try:
+        grid = load_map(MAPS / "tutorial.txt")
+        _, peak = tracemalloc.get_traced_memory()
+    finally:
+        tracemalloc.stop()
+    assert (grid.width, grid.height) == (6, 6)
+    assert peak < 256 * 1024
+
+
+def fifo_fed(path: Path, data: bytes) -> tuple[Path, threading.Thread]:
+    """A named pipe at ``path`` (``os.stat`` says 0 bytes) that a thread fills with ``data``."""
+    os.mkfifo(path)
+
+    def feed() -> None:
+        with open(path, "wb") as pipe:
+            try:
+                pipe.write(data)
+            except BrokenPipeError:  # the reader stopped at the cap
+                pass
+
+    thread = threading.Thread(target=feed, daemon=True)
+    thread.start()
+    return path, thread
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="no named pipes on this system")
+def test_a_map_longer_than_stat_said_is_read_in_chunks_up_to_the_cap(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A pipe or a growing file holds more than ``os.stat`` said: the rest is read in bounded
+    chunks, and never more than the cap plus one byte."""
+    monkeypatch.setattr(mapfile, "_READ_CHUNK", 5)
+    path, thread = fifo_fed(tmp_path / "pipe.txt", TUTORIAL.encode())
+    assert load_map(path) == parse_text_map(TUTORIAL)
+    thread.join(10)
+    monkeypatch.setattr(mapfile, "MAX_MAP_BYTES", 1024 * 1024)
+    reads: list[int] = []
+    real_open = open
+
+    def spying_open(*args: object, **kwargs: object):  # type: ignore[no-untyped-def]
+        handle = real_open(*args, **kwargs)  # type: ignore[call-overload]
+        read = handle.read
+        handle.read = lambda n=-1: reads.append(n) or read(n)  # type: ignore[method-assign]
+        return handle
+
+    monkeypatch.setattr(mapfile, "open", spying_open, raising=False)
+    monkeypatch.setattr(mapfile, "_READ_CHUNK", 64 * 1024)
+    path, thread = fifo_fed(tmp_path / "big.txt", b"." * (3 * 1024 * 1024))
+    assert error_of(load_map, path) == f"{path}: file is 1.1 MB; a map may be at most 1 MB"
+    assert max(reads) <= 64 * 1024 and sum(reads) == 1024 * 1024 + 1
+    thread.join(10)
 
 
 @pytest.mark.parametrize(
