@@ -5,13 +5,17 @@ from __future__ import annotations
 
 import os
 import pickle
+import random
 import stat
+import threading
+import tracemalloc
 from pathlib import Path
 
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from tests.helpers import MAPS, MOVINGAI
 from tui_search.engine import mapfile
 from tui_search.engine.grid import Grid
 from tui_search.engine.mapfile import (
@@ -36,35 +40,19 @@ from tui_search.engine.mapfile import (
 from tui_search.engine.mapfile import MOVINGAI as MAI_KIND
 from tui_search.engine.mapfile import TEXT as TEXT_KIND
 
-#: The MovingAI benchmark files kept beside the repository (/work/shared/maps/movingai).
-MOVINGAI = Path(__file__).resolve().parents[3] / "shared" / "maps" / "movingai"
-
-needs_movingai = pytest.mark.skipif(
-    not MOVINGAI.is_dir(), reason=f"MovingAI benchmark folder {MOVINGAI} is absent"
-)
-
-#: (width, height) and scenario row counts, from SOURCES.md in that folder.
+#: (width, height) and scenario row counts of the real MovingAI files copied into
+#: tests/data/movingai (their SOURCES.md names where each came from).
 MAP_SIZES = {
     "room-32-32-4.map": (32, 32),
     "den201d.map": (37, 37),
     "arena.map": (49, 49),
     "den312d.map": (65, 81),
-    "lak303d.map": (194, 194),
-    "Berlin_0_256.map": (256, 256),
-    "64room_005.map": (512, 512),
-    "maze512-1-0.map": (512, 512),
-    "random512-40-5.map": (512, 512),
 }
 SCEN_ROWS = {
     "room-32-32-4-random-1.scen": 341,
     "den201d.map.scen": 100,
     "arena.map.scen": 130,
     "den312d.map.scen": 290,
-    "lak303d.map.scen": 1060,
-    "Berlin_0_256.map.scen": 930,
-    "64room_005.map.scen": 2320,
-    "maze512-1-0.map.scen": 12120,
-    "random512-40-5.map.scen": 5240,
 }
 
 TUTORIAL = "S#...#\n.#.##.\n...##G\n..#.#.\n....##\n......\n"
@@ -342,6 +330,64 @@ def test_load_map_just_under_the_limit_is_read(
     assert "a map may be at most" in error_of(load_map, path)
 
 
+def test_loading_a_small_map_allocates_little() -> None:
+    """A read capped at 64 MB must not ask for 64 MB: ``read(n)`` allocates ``n`` bytes first,
+    which made loading the six-line tutorial map peak at 67 MB."""
+    load_map(MAPS / "tutorial.txt")  # once first, so one-off caches do not count
+    tracemalloc.start()
+    try:
+        grid = load_map(MAPS / "tutorial.txt")
+        _, peak = tracemalloc.get_traced_memory()
+    finally:
+        tracemalloc.stop()
+    assert (grid.width, grid.height) == (6, 6)
+    assert peak < 256 * 1024
+
+
+def fifo_fed(path: Path, data: bytes) -> tuple[Path, threading.Thread]:
+    """A named pipe at ``path`` (``os.stat`` says 0 bytes) that a thread fills with ``data``."""
+    os.mkfifo(path)
+
+    def feed() -> None:
+        with open(path, "wb") as pipe:
+            try:
+                pipe.write(data)
+            except BrokenPipeError:  # the reader stopped at the cap
+                pass
+
+    thread = threading.Thread(target=feed, daemon=True)
+    thread.start()
+    return path, thread
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="no named pipes on this system")
+def test_a_map_longer_than_stat_said_is_read_in_chunks_up_to_the_cap(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A pipe or a growing file holds more than ``os.stat`` said: the rest is read in bounded
+    chunks, and never more than the cap plus one byte."""
+    monkeypatch.setattr(mapfile, "_READ_CHUNK", 5)
+    path, thread = fifo_fed(tmp_path / "pipe.txt", TUTORIAL.encode())
+    assert load_map(path) == parse_text_map(TUTORIAL)
+    thread.join(10)
+    monkeypatch.setattr(mapfile, "MAX_MAP_BYTES", 1024 * 1024)
+    reads: list[int] = []
+    real_open = open
+
+    def spying_open(*args: object, **kwargs: object):  # type: ignore[no-untyped-def]
+        handle = real_open(*args, **kwargs)  # type: ignore[call-overload]
+        read = handle.read
+        handle.read = lambda n=-1: reads.append(n) or read(n)  # type: ignore[method-assign]
+        return handle
+
+    monkeypatch.setattr(mapfile, "open", spying_open, raising=False)
+    monkeypatch.setattr(mapfile, "_READ_CHUNK", 64 * 1024)
+    path, thread = fifo_fed(tmp_path / "big.txt", b"." * (3 * 1024 * 1024))
+    assert error_of(load_map, path) == f"{path}: file is 1.1 MB; a map may be at most 1 MB"
+    assert max(reads) <= 64 * 1024 and sum(reads) == 1024 * 1024 + 1
+    thread.join(10)
+
+
 @pytest.mark.parametrize(
     "content",
     [b"S.\n.G\x00\n", b"\x89PNG\r\n\x1a\n", "S.\n.G\n".encode("utf-16"), b"S.\n\xff\xfe\n"],
@@ -600,7 +646,6 @@ def naive_blocked(path: Path) -> tuple[int, int, bytearray]:
     return width, height, bytearray(int(ch in "@OTW") for row in rows for ch in row)
 
 
-@needs_movingai
 @pytest.mark.parametrize("name", sorted(MAP_SIZES))
 def test_real_maps_parse(name: str) -> None:
     path = MOVINGAI / name
@@ -610,15 +655,60 @@ def test_real_maps_parse(name: str) -> None:
     assert (grid.width, grid.height, grid.blocked) == naive_blocked(path)
 
 
-@needs_movingai
-def test_berlin_has_crlf_and_no_final_newline() -> None:
-    """Guards the test itself: the quirk the parser must cope with is really in the file."""
-    data = (MOVINGAI / "Berlin_0_256.map").read_bytes()
-    assert data.count(b"\r\n") == 256 + 4 - 1 and not data.endswith(b"\n")
-    assert (load_map(MOVINGAI / "Berlin_0_256.map").width, 256) == (256, 256)
+def test_a_crlf_map_without_a_final_newline_reads_as_its_lf_original(tmp_path: Path) -> None:
+    """Berlin_0_256.map (a street map, too big to copy here) has CRLF line ends and no newline
+    after its last row: a real map written that way reads exactly as the original."""
+    original = MOVINGAI / "arena.map"
+    data = original.read_bytes().rstrip(b"\n").replace(b"\n", b"\r\n")
+    path = write(tmp_path, "arena.map", data)
+    assert data.count(b"\r\n") == 49 + 4 - 1 and not data.endswith(b"\n")  # guards the test
+    grid = load_map(path)
+    assert grid == load_map(original) and (grid.width, grid.height) == (49, 49)
+    assert (grid.width, grid.height, grid.blocked) == naive_blocked(path)
 
 
-@needs_movingai
+def write_512_map(tmp_path: Path) -> tuple[Path, list[str]]:
+    """A seeded random 512x512 MovingAI map (the size of maze512-1-0, random512-40-5 and
+    64room_005, too big to copy here) of every MovingAI letter, and its rows."""
+    rng = random.Random(512)
+    rows = ["".join(rng.choices(".G@OTSW", k=512)) for _ in range(512)]
+    path = write(tmp_path, "big512.map",
+                 "type octile\nheight 512\nwidth 512\nmap\n" + "\n".join(rows) + "\n")
+    return path, rows
+
+
+def test_a_512x512_map_parses(tmp_path: Path) -> None:
+    path, _ = write_512_map(tmp_path)
+    grid = load_map(path)
+    assert (grid.width, grid.height) == (512, 512)
+    assert (grid.start, grid.goal) == (None, None)
+    assert (grid.width, grid.height, grid.blocked) == naive_blocked(path)
+
+
+def test_a_big_scenario_file_out_of_bucket_order_with_a_blank_last_line(tmp_path: Path) -> None:
+    """maze512-1-0.map.scen (12,120 rows, too big to copy here) starts with its last bucket and
+    ends with a blank line: thousands of such rows on a 512x512 map parse, in file order, and
+    match the map."""
+    map_path, rows = write_512_map(tmp_path)
+    free = [(x, y) for y, row in enumerate(rows) for x, ch in enumerate(row) if ch in ".GS"]
+    rng = random.Random(12120)
+    buckets = [1211, *range(1211)] * 2
+    lines = ["version 1"]
+    for bucket in buckets:
+        (sx, sy), (gx, gy) = rng.sample(free, 2)
+        lines.append(f"{bucket}\tbig512.map\t512\t512\t{sx}\t{sy}\t{gx}\t{gy}\t{bucket * 4}.5")
+    scen_path = write(tmp_path, "big512.map.scen", "\n".join(lines) + "\n\n")
+    scens = read_scenarios(scen_path)
+    assert [s.bucket for s in scens] == buckets and len(scens) == 2424
+    assert scens[-1].line == 2425 and scens[0].optimal_length == 4844.5
+    grid = load_map(map_path)
+    for scen in (scens[0], scens[-1], load_scenario(scen_path, len(scens) // 2)):
+        check_scenario_matches(scen, grid, scen_path, map_path)
+    assert error_of(load_scenario, scen_path, len(scens)).endswith(
+        "the file has 2424 rows (0 to 2423)"
+    )
+
+
 @pytest.mark.parametrize("name", sorted(SCEN_ROWS))
 def test_real_scenarios_parse_and_match_their_maps(name: str) -> None:
     scen_path = MOVINGAI / name
@@ -636,7 +726,6 @@ def test_real_scenarios_parse_and_match_their_maps(name: str) -> None:
     )
 
 
-@needs_movingai
 def test_real_scenario_values() -> None:
     first = load_scenario(MOVINGAI / "den312d.map.scen", 0)
     assert first == Scenario(0, "den312d.map", 65, 81, (61, 72), (60, 72), 1.0, 2)
@@ -644,19 +733,32 @@ def test_real_scenario_values() -> None:
     assert last == Scenario(12, "arena.map", 49, 49, (4, 32), (47, 19), 48.38477631, 131)
 
 
-@needs_movingai
-def test_lak303d_2011_scenario_names_a_path_and_matches_by_basename() -> None:
-    scen_path = MOVINGAI / "lak303d.map.scen"
+def test_a_2011_scenario_file_names_a_path_and_matches_by_basename(tmp_path: Path) -> None:
+    """lak303d.map.scen (too big to copy here) is the older 2011 HOG2 kind: its map field is a
+    path (`maps/dao/lak303d.map`) and its lengths have 6 significant digits (`1.41421`, `3`).
+    The real arena.map.scen written that way parses and matches arena.map by its basename."""
+    real = (MOVINGAI / "arena.map.scen").read_text().split("\n")
+    lines = [real[0]]
+    for line in filter(None, real[1:]):
+        fields = line.split("\t")
+        fields[1] = "maps/dao/" + fields[1]
+        fields[8] = f"{float(fields[8]):.6g}"
+        lines.append("\t".join(fields))
+    scen_path = write(tmp_path, "arena.map.scen", "\n".join(lines) + "\n")
+    assert "\t3\n" in scen_path.read_text() and "\t1.41421\n" in scen_path.read_text()
     rows = read_scenarios(scen_path)
-    assert {scen.map_name for scen in rows} == {"maps/dao/lak303d.map"}
-    assert rows[0].optimal_length == 1.41421
-    grid = load_map(MOVINGAI / "lak303d.map")
+    assert {scen.map_name for scen in rows} == {"maps/dao/arena.map"}
+    assert [s.optimal_length for s in rows] == [
+        float(f"{s.optimal_length:.6g}") for s in read_scenarios(MOVINGAI / "arena.map.scen")
+    ]
+    assert rows[0].optimal_length == 3.0 and 1.41421 in {s.optimal_length for s in rows}
+    grid = load_map(MOVINGAI / "arena.map")
     for scen in rows:
-        check_scenario_matches(scen, grid, scen_path, MOVINGAI / "lak303d.map")
+        check_scenario_matches(scen, grid, scen_path, MOVINGAI / "arena.map")
     with pytest.raises(MapError) as info:
-        check_scenario_matches(rows[0], grid, scen_path, MOVINGAI / "arena.map")
+        check_scenario_matches(rows[0], grid, scen_path, MOVINGAI / "den201d.map")
     assert str(info.value) == (
-        f"{scen_path}:2: lak303d.map.scen is for lak303d.map, not arena.map"
+        f"{scen_path}:2: arena.map.scen is for arena.map, not den201d.map"
     )
 
 
@@ -752,9 +854,6 @@ def test_saved_grids_load_back(tmp_path: Path, grid: Grid) -> None:
 # -- saving keeps the file: MapSource -------------------------------------------------------
 
 #: The repository's own copies of MovingAI files (see tests/data/movingai/SOURCES.md).
-DATA = Path(__file__).resolve().parents[1] / "data" / "movingai"
-MAPS = Path(__file__).resolve().parents[2] / "maps"
-
 TEXT_LETTERS = {"S", "G", "#", "."}
 
 
@@ -887,7 +986,7 @@ def test_saving_the_tutorial_keeps_its_comments_byte_for_byte(tmp_path: Path) ->
 
 def test_saving_a_real_movingai_map_in_place(tmp_path: Path) -> None:
     path = tmp_path / "arena.map"
-    original = (DATA / "arena.map").read_bytes()
+    original = (MOVINGAI / "arena.map").read_bytes()
     path.write_bytes(original)
     grid = load_map(path)
     assert save_map(grid, path, MAI_KIND).text().encode() == original
@@ -951,14 +1050,14 @@ def test_another_kind_of_file_given_as_the_map_is_named(text: str, expected: str
 
 
 def test_the_real_scenario_file_given_as_the_map() -> None:
-    path = DATA / "arena.map.scen"
+    path = MOVINGAI / "arena.map.scen"
     assert error_of(load_map, path) == (
         f"{path}:1: this is a MovingAI scenario file: pass it with --scen"
     )
 
 
 def test_the_real_map_without_its_type_line(tmp_path: Path) -> None:
-    text = (DATA / "arena.map").read_text()
+    text = (MOVINGAI / "arena.map").read_text()
     path = write(tmp_path, "arena.map", text.split("\n", 1)[1])
     assert error_of(load_map, path) == (
         f"{path}:1: MovingAI header: expected 'type octile', found 'height 49'"

@@ -23,6 +23,7 @@ from textual.scrollbar import ScrollBarRender
 from textual.widget import Widget
 
 from tests.helpers import TUTORIAL_ROWS, grid_from_rows
+from tests.textual_internals import settle
 from tui_search.engine.grid import Grid
 from tui_search.engine.run import Run
 from tests.tui.test_tree_model import BFS_AFTER_FOUR
@@ -417,7 +418,7 @@ async def test_deep_dfs_chain_is_cut_to_its_deepest_levels() -> None:
 texts = st.text(alphabet="ab│├└─●○◀★✂⋮ 漢字", max_size=12)
 
 
-@settings(max_examples=500, deadline=None)
+@settings(max_examples=250, deadline=None)
 @given(st.lists(st.tuples(texts, st.sampled_from(["red", "bold", "blue on white"])),
                 max_size=6), st.integers(0, 40), st.integers(0, 40))
 def test_window_strip_draws_what_crop_extend_draws(pieces, x, width) -> None:
@@ -501,7 +502,7 @@ async def test_a_step_repaints_a_scrollbar_only_where_its_thumb_moves() -> None:
             run.forward()
             lengths.add(run.frontier_len())
             panel.show(run)
-            await pilot.pause()
+            await settle(pilot)  # handled and painted, without pilot.pause()'s idle wait
             after = scrollbar_cells(bar)
             changed += sum(a != b for a, b in zip(after, before))
             assert bar.window_virtual_size == panel.virtual_size.height == 1 + run.frontier_len()

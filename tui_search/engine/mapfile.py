@@ -27,6 +27,7 @@ import os
 import re
 import stat
 from dataclasses import dataclass, replace
+from typing import BinaryIO
 
 from tui_search.engine.grid import Cell, Grid
 
@@ -57,6 +58,8 @@ __all__ = [
 #: Bigger files are refused before reading: a 512x512 MovingAI map is 257 KB, so anything
 #: near this is a mistake (a wrong file), not a map, and would only hang the app.
 MAX_MAP_BYTES = 64 * 1024 * 1024
+#: How much more a read asks for at a time when a file holds more than ``os.stat`` said.
+_READ_CHUNK = 1024 * 1024
 
 #: Header numbers longer than this are refused: no map is that big, and Python refuses to
 #: convert very long digit strings (ValueError) anyway.
@@ -127,7 +130,7 @@ def _read_text(path: str) -> str:
     """The file's text, or a MapError saying why it cannot be a map.
 
     The size is checked with ``os.stat`` before anything is read, and the read itself is
-    capped too, for pipes and files that grow while we look.
+    capped too, for pipes and files that grow while we look (:func:`_read_capped`).
     """
     try:
         st = os.stat(path)
@@ -143,7 +146,7 @@ def _read_text(path: str) -> str:
         raise MapError(path, _too_big(st.st_size))
     try:
         with open(path, "rb") as handle:
-            data = handle.read(MAX_MAP_BYTES + 1)
+            data = _read_capped(handle, st.st_size)
     except IsADirectoryError:
         raise MapError(path, "is a directory, not a map file") from None
     except OSError as err:
@@ -156,6 +159,29 @@ def _read_text(path: str) -> str:
         return data.decode("utf-8")
     except UnicodeDecodeError:
         raise MapError(path, "binary file, not a text map") from None
+
+
+def _read_capped(handle: BinaryIO, expected: int) -> bytes:
+    """At most ``MAX_MAP_BYTES + 1`` bytes of ``handle`` (one more than a map may have, so a
+    file over the limit is seen as one).
+
+    ``handle.read(n)`` allocates ``n`` bytes before it reads, so asking for the cap at once
+    costs 64 MB for a six-line map.  Instead ask for what ``os.stat`` said plus one byte (which
+    sees a file that grew), then, only while every read is filled (a pipe, a growing file), for
+    bounded chunks up to the cap.  A buffered read returns less than asked only at the end.
+    """
+    limit = MAX_MAP_BYTES + 1
+    chunks: list[bytes] = []
+    total = 0
+    want = min(expected + 1, limit)
+    while want > 0:
+        chunk = handle.read(want)
+        chunks.append(chunk)
+        total += len(chunk)
+        if len(chunk) < want:
+            break
+        want = min(_READ_CHUNK, limit - total)
+    return b"".join(chunks)
 
 
 def _too_big(size: int) -> str:
