@@ -42,7 +42,7 @@ NEEDS_ENDPOINTS = "Place a start (s) and a goal (g) to search"
 #: always (the bar drops the lowest first).
 KEY_IMPORTANCE = {
     "help": 10, "quit": 10, "stop_seek": 9, "next": 8, "play": 7, "pause": 7, "algorithm": 6,
-    "reset": 4, "save": 3, "overview": 2,
+    "settings": 5, "reset": 4, "save": 3, "overview": 2,
 }
 STEP = Binding.Group("Step", compact=True)
 ALGO = Binding.Group("/".join(a.tag for a in ALGORITHMS.values()), compact=True)
@@ -79,7 +79,7 @@ class SearchApp(EditActions, FileActions, App[int]):
         Binding("g", "place('goal')", "Goal", show=False, tooltip="Goal at the cursor"),
         Binding("o", "toggle_wall", "Wall", show=False, tooltip="Obstacle on/off at the cursor"),
         Binding("r", "reset", "Reset", tooltip="Restart the search at step 0"),
-        Binding("comma", "settings", "Settings", key_display=",", show=False,
+        Binding("comma", "settings", "Settings", key_display=",",
                 tooltip="Search settings: moves, corners, visited, goal test, tree search"),
         Binding("z", "overview", "Zoom", tooltip="Overview: the whole map in half blocks"),
         Binding("ctrl+s", "save", "Save", tooltip="Save the map"),
