@@ -36,7 +36,7 @@ class Step:
 
 
 #: The default step limit: expansions recorded before a run gives up (iterative deepening
-#: on a 512x512 maze takes ~75 million steps; 20 million take ~400 MB).  A whole number of
+#: on a 512x512 maze takes ~102 million steps; 20 million take ~400 MB).  A whole number of
 #: chunks, so a run stops exactly there; smaller limits (at most a chunk) are exact too.
 MAX_STEPS = 5000 * CHUNK
 
