@@ -86,7 +86,7 @@ def test_bfs_cost_matches_the_scenario_optimum_when_corners_are_respected(capsys
     cost, so its cost is at least the optimum -- and equal when every optimal path is
     straight (bucket 0 rows are short)."""
     scen = MOVINGAI / "den312d.map.scen"
-    for row in range(0, 10):
+    for row in range(10):
         fields = scen.read_text().splitlines()[row + 1].split("\t")
         code, out, _ = run_cli(capsys, str(MOVINGAI / "den312d.map"), "--headless", "--json",
                                "--scen", str(scen), "--scen-row", str(row),
@@ -134,7 +134,7 @@ def test_movingai_map_without_start_says_what_to_give(capsys) -> None:
 def test_version_and_help() -> None:
     for flag, needle in (("--version", "tui-search 0."), ("--help", "--headless")):
         out = subprocess.run([sys.executable, "-m", "tui_search", flag], capture_output=True,
-                             text=True, cwd=ROOT)
+                             text=True, cwd=ROOT, check=False)
         assert out.returncode == 0 and needle in out.stdout
 
 
@@ -153,7 +153,7 @@ def test_headless_does_not_import_textual(tmp_path: Path) -> None:
             f"{TUTORIAL!r}, '--headless', '--json']); "
             "bad = [m for m in sys.modules if m.split('.')[0] in ('textual', 'rich')]; "
             "sys.exit(10 if bad else rc)")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=False)
     assert out.returncode == 0, out.stderr
 
 
@@ -161,9 +161,9 @@ def test_console_script_headless_exit_codes() -> None:
     exe = Path(sys.executable).with_name("tui-search")
     if not exe.exists():
         pytest.skip("console script not installed in this environment")
-    ok = subprocess.run([str(exe), TUTORIAL, "--headless"], capture_output=True, text=True)
+    ok = subprocess.run([str(exe), TUTORIAL, "--headless"], capture_output=True, text=True, check=False)
     assert ok.returncode == 0 and "path found" in ok.stdout
-    bad = subprocess.run([str(exe), "missing.txt", "--headless"], capture_output=True, text=True)
+    bad = subprocess.run([str(exe), "missing.txt", "--headless"], capture_output=True, text=True, check=False)
     assert bad.returncode == 2 and "Traceback" not in bad.stderr
 
 

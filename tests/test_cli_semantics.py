@@ -19,7 +19,7 @@ def headless_json(capsys, *argv: str) -> tuple[int, dict]:
 
 
 def test_the_json_names_every_choice_in_force(capsys) -> None:
-    code, result = headless_json(capsys, "--corners", "one", "--goal-test", "expand",
+    _code, result = headless_json(capsys, "--corners", "one", "--goal-test", "expand",
                                  "--order", "N,E,S,W,NE,SE,SW,NW", "-a", "dfs")
     assert result["semantics"] == {
         "order": ["N", "E", "S", "W", "NE", "SE", "SW", "NW"], "corners": "one",
@@ -150,7 +150,7 @@ def test_a_streamed_trace_is_the_recorded_runs_trace(capsys, argv) -> None:
     from tui_search.engine.run import Run
 
     args = build_parser().parse_args([TUTORIAL, "--headless", *argv, "--max-steps", "400"])
-    code, out, _ = run_cli(capsys, TUTORIAL, "--headless", "--trace", "-", *argv,
+    _code, out, _ = run_cli(capsys, TUTORIAL, "--headless", "--trace", "-", *argv,
                            "--max-steps", "400")
     run = Run(load_map(TUTORIAL), args.algorithm, semantics_from(args), 400)
     recorded = StringIO()

@@ -8,6 +8,8 @@ under random algorithms and choices.  Then the properties the choices promise.
 
 from __future__ import annotations
 
+import itertools
+
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
@@ -149,7 +151,7 @@ def test_every_path_is_legal_under_its_rules(grid: Grid, choice) -> None:
     path = out.path
     assert path[0] == grid.start and path[-1] == grid.goal
     assert len(set(path)) == len(path)
-    for (a, b), move in zip(zip(path, path[1:]), out.moves):
+    for (a, b), move in zip(itertools.pairwise(path), out.moves):
         assert (move, b) in grid.neighbours(a, sem.order, sem.corners)
 
 

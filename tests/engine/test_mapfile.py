@@ -234,8 +234,8 @@ def mai(height: int, width: int) -> str:
         (mai(0, 3), "m.map:2: height must be at least 1"),
         ("type octile\nheight 1\nheight 1\n", "m.map:3: height is given twice"),
         (mai(1, int("9" * 50)), "m.map:3: width is too large: '999999999999...'"),
-        (mai(1, 3).replace("map\n", "...\n"), "m.map:4: expected 'height', 'width' or 'map', "
-                                                "found '...'"),
+        (mai(1, 3).replace("map\n", "...\n"),
+         ("m.map:4: expected 'height', 'width' or 'map', found '...'")),
         ("type octile\nheight 1\nwidth 3\n", "m.map:3: the header has no 'map' line"),
         ("type octile\n", "m.map:1: the header has no 'map' line"),
     ],
@@ -555,8 +555,8 @@ def test_scenario_variants(text: str) -> None:
         ("version one\n", "s.scen:1: expected 'version 1' on the first line, found 'version one'"),
         (
             "version 1\n\n0\ta.map\t6\t6\t0\t0\t5\n",
-            "s.scen:3: expected 9 fields (bucket, map, map width, map height, start x, start y, "
-            "goal x, goal y, optimal length), found 7",
+            ("s.scen:3: expected 9 fields (bucket, map, map width, map height, start x, "
+             "start y, goal x, goal y, optimal length), found 7"),
         ),
         (
             "version 1\n0\ta.map\t6\tsix\t0\t0\t5\t2\t3\n",
@@ -938,7 +938,7 @@ def movingai_files(draw: st.DrawFn) -> str:
     ending = draw(st.sampled_from(["\n", "\r\n"]))
     rows = ["".join(draw(st.lists(st.sampled_from(".GS@OTW"), min_size=width, max_size=width)))
             for _ in range(height)]
-    text = ending.join([f"type octile", f"height {height}", f"width {width}", "map", *rows])
+    text = ending.join(["type octile", f"height {height}", f"width {width}", "map", *rows])
     return text + (ending if draw(st.booleans()) else "")
 
 

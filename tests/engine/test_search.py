@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import itertools
 import math
 
 import pytest
@@ -141,7 +142,7 @@ def test_iddfs_steps_carry_the_depth_limit_and_restart_from_the_root() -> None:
     limits = [s.depth_limit for s in steps]
     assert limits[0] == 0 and limits == sorted(limits)
     assert limits[-1] == summary(run)["length"]
-    firsts = [s for prev, s in zip(steps, steps[1:]) if s.depth_limit != prev.depth_limit]
+    firsts = [s for prev, s in itertools.pairwise(steps) if s.depth_limit != prev.depth_limit]
     assert all(s.node == (0, 0) for s in firsts)
 
 
@@ -166,8 +167,8 @@ def assert_valid_path(grid: Grid, result: dict, corners: str = "always") -> None
     path = [tuple(c) for c in result["path"]]
     assert path[0] == grid.start and path[-1] == grid.goal
     assert len(set(path)) == len(path), "a cell twice on the path"
-    for (a, b), move in zip(zip(path, path[1:]), result["moves"]):
-        legal = dict((c, d) for d, c in grid.neighbours(a, corners=corners))
+    for (a, b), move in zip(itertools.pairwise(path), result["moves"]):
+        legal = {c: d for d, c in grid.neighbours(a, corners=corners)}
         assert legal.get(b) == move
     assert result["length"] == len(path) - 1
 

@@ -174,14 +174,14 @@ async def test_status_lines_too_wide_for_the_terminal_end_in_an_ellipsis() -> No
         await pilot.press("end")
         widget = app.query_one(Stats)
         width = widget.content_size.width
-        status, narration = stats(app)
+        _, narration = stats(app)
         assert len(narration) > width
         strip = widget.render_line(1)
         assert len(strip.text) == width and strip.text == narration[: width - 1] + "…"
         *_, before, ellipsis = list(strip)  # the "…" goes on in the style it cut
         assert ellipsis.text == "…" and ellipsis.style == before.style
         await pilot.press("home")
-        status, narration = stats(app)
+        _status, narration = stats(app)
         assert len(narration) < width
         assert widget.render_line(1).text == narration.ljust(width)
 

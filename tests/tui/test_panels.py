@@ -15,8 +15,8 @@ from typing import Any
 
 import pytest
 from hypothesis import given, settings
-from rich.segment import Segment
 from hypothesis import strategies as st
+from rich.segment import Segment
 from textual.app import App, ComposeResult
 from textual.geometry import Size
 from textual.scrollbar import ScrollBarRender
@@ -24,9 +24,9 @@ from textual.widget import Widget
 
 from tests.helpers import TUTORIAL_ROWS, grid_from_rows
 from tests.textual_internals import settle
+from tests.tui.test_tree_model import BFS_AFTER_FOUR
 from tui_search.engine.grid import Grid
 from tui_search.engine.run import Run
-from tests.tui.test_tree_model import BFS_AFTER_FOUR
 from tui_search.tui import tree_model
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.line_panel import scrollbar_cells, window_strip

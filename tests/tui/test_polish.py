@@ -9,6 +9,7 @@ import re
 
 import pytest
 
+from tests.tui.test_app import SIZE, TUTORIAL, open_grid, stats, sync, tutorial_app, wait_until
 from tui_search import cli
 from tui_search.engine.grid import Grid
 from tui_search.engine.run import Run
@@ -18,7 +19,6 @@ from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.key_bar import KeyBar
 from tui_search.tui.widgets.search_tree import SearchTreePanel
-from tests.tui.test_app import SIZE, TUTORIAL, open_grid, stats, sync, tutorial_app, wait_until
 
 
 def walled_goal(side: int) -> Grid:

@@ -70,7 +70,7 @@ def test_the_path_is_its_own_role_at_the_end() -> None:
 
 def test_a_big_tree_is_focused_on_the_node_being_expanded(monkeypatch) -> None:
     monkeypatch.setattr(tree_model, "SMALL_TREE", 3)
-    run, model = at("bfs", 6)
+    _run, model = at("bfs", 6)
     assert model.mode == "focus"
     text = lines(model)
     assert text[0].startswith("(") and "showing the path to the node being expanded" in text[0]
