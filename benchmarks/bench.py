@@ -2,7 +2,7 @@
 """tui-search against its targets (GitHub issues 4 and 9), as ratios measured in one process.
 
     python benchmarks/bench.py            # the full run (a few minutes)
-    python benchmarks/bench.py --quick    # about a minute: fewer repeats, no networkx
+    python benchmarks/bench.py --quick    # a few minutes: fewer repeats, no networkx
     python benchmarks/bench.py --only engine,step
 
 Every figure is compared with a baseline measured in the same run (a bare Python BFS, the
@@ -48,7 +48,7 @@ SECTIONS = {"engine": bench_engine, "choices": bench_choices, "jump": bench_jump
 
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--quick", action="store_true", help="about a minute: fewer repeats")
+    ap.add_argument("--quick", action="store_true", help="fewer repeats, networkx skipped")
     ap.add_argument("--only", default=",".join(SECTIONS),
                     help=f"comma-separated sections (default: {','.join(SECTIONS)})")
     args = ap.parse_args(argv)
