@@ -177,14 +177,16 @@ def bfs(problem: Problem, rec: Record, chunk: int = CHUNK) -> Iterator[int]:
     goal, moves, mask = problem.goal, problem.moves, problem.mask
     closed = bytearray(problem.walls)
     gen_node = rec.gen_node
-    add, add_end = gen_node.append, rec.step_end.append
-    add(problem.start)
+    gen_node.append(problem.start)
     closed[problem.start] = 1
     if problem.start == goal:
         rec.goal_gen, rec.done = 0, True
         return
+    buf = _Buffers(rec)  # the new events and ends, written to the record before each slice
+    add, add_end = buf.nodes.append, buf.ends.append
     head, count, pause = 0, 1, chunk
     while head < count:
+        buf.flush()  # the slice below must see every event generated so far
         # A chunk of the queue at a time: iterating a slice is cheaper than a counter per step.
         end = min(count, pause)  # never past the pause: chunks of exactly `chunk` steps
         for n in gen_node[head:end]:
@@ -197,13 +199,16 @@ def bfs(problem: Problem, rec: Record, chunk: int = CHUNK) -> Iterator[int]:
                 count += 1
                 if m == goal:
                     add_end(count)
+                    buf.flush()
                     rec.goal_gen, rec.done = count - 1, True
                     return
             add_end(count)
         head = end
         if head >= pause and head < count:
+            buf.flush()
             pause = head + chunk
             yield head
+    buf.flush()
     rec.done = True
 
 
@@ -262,18 +267,21 @@ def _flush(arr: array, buf: list[int]) -> None:
 
 
 class _Buffers:
-    """A chunk's new events, step ends and expanded events, as lists (see :func:`_flush`)."""
+    """A chunk's new events, step ends, expanded events and discarded steps, as lists (see
+    :func:`_flush`)."""
 
     def __init__(self, rec: Record) -> None:
         self.rec = rec
         self.nodes: list[int] = []
         self.ends: list[int] = []
         self.exps: list[int] = []
+        self.discarded: list[int] = []
 
     def flush(self) -> None:
         rec = self.rec
         _flush(rec.gen_node, self.nodes)
         _flush(rec.step_end, self.ends)
+        _flush(rec.discarded, self.discarded)
         if isinstance(rec.step_exp, array):
             _flush(rec.step_exp, self.exps)
         else:  # FIFO: step k expands event k-1, nothing to store
@@ -307,8 +315,9 @@ def general(
 # events in the order generated, so it walks the record like `bfs` (no queue, no counter); LIFO
 # keeps a stack like `dfs`.  Their successor loops are alike (and `_general_lifo` is `dfs` plus
 # the visit and goal tests, which `dfs`, the default's hot path, does without), but the split
-# pays: visit on expand on open 1024^2 went from 3.3x a bare BFS (one deque serving both
-# frontiers) to 2.9x (CPU time, the loop alone; 4.4x before the chunk buffers).
+# pays: BFS visit on expand on open 1024^2 went from 3.3x a bare BFS (one deque serving both
+# frontiers) to 2.9x (CPU time, the loop alone; 4.4x before the chunk buffers; 2.0-2.3x with
+# the discarded steps buffered too).
 
 
 def _general_fifo(problem: Problem, rec: Record, chunk: int, closed: bytearray,
@@ -316,7 +325,7 @@ def _general_fifo(problem: Problem, rec: Record, chunk: int, closed: bytearray,
     """`general` with a FIFO queue: events ``head .. count-1`` of the record, as in `bfs`."""
     moves, mask, gen_node = problem.moves, problem.mask, rec.gen_node
     buf = _Buffers(rec)
-    add, add_end, add_discarded = buf.nodes.append, buf.ends.append, rec.discarded.append
+    add, add_end, add_discarded = buf.nodes.append, buf.ends.append, buf.discarded.append
     head, count, pause = 0, 1, chunk
     while head < count:
         buf.flush()  # the slice below must see every event generated so far
@@ -365,7 +374,7 @@ def _general_lifo(problem: Problem, rec: Record, chunk: int, closed: bytearray,
     pop_cell, push_cell, pop_event, push_event = cells.pop, cells.append, events.pop, events.append
     buf = _Buffers(rec)
     add, add_end, add_exp = buf.nodes.append, buf.ends.append, buf.exps.append
-    add_discarded = rec.discarded.append
+    add_discarded = buf.discarded.append
     count, steps = 1, 0
     while cells:
         for _ in repeat(None, chunk):
