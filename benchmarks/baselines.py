@@ -49,6 +49,48 @@ def bare_search(grid: Grid, lifo: bool = False) -> list[int]:
     return parent
 
 
+def bare_search_visit_on_expand(grid: Grid, lifo: bool = False) -> list[int]:
+    """The floor of "visit on expand": the same bare loop, but a cell is closed when popped,
+    so it is pushed once per neighbour that reaches it first (several times the work of
+    :func:`bare_search`); popping a closed cell is skipped.  The parent is the entry popped
+    first: for FIFO the first push of the cell (kept), for LIFO its last (overwritten).  The
+    goal is tested when pushed, as in the engine's loop for this choice."""
+    closed, _, start, goal, offs = pad(grid)
+    parent = [-1] * len(closed)
+    if start == goal:
+        return parent
+    q = deque([start])
+    pop, push = (q.pop if lifo else q.popleft), q.append
+    while q:
+        n = pop()
+        if closed[n]:
+            continue
+        closed[n] = 1
+        for off in offs:
+            m = n + off
+            if closed[m]:
+                continue
+            if lifo or parent[m] < 0:
+                parent[m] = n
+            if m == goal:
+                return parent
+            push(m)
+    return parent
+
+
+def walled_in(grid: Grid) -> Grid:
+    """A copy with every free neighbour of the goal blocked: no search finds the goal, so a
+    BFS or DFS traverses everything it can reach (the "full traversal" rows)."""
+    out = grid.copy()
+    gx, gy = out.goal
+    for dx in (-1, 0, 1):
+        for dy in (-1, 0, 1):
+            cell = (gx + dx, gy + dy)
+            if (dx or dy) and out.is_free(cell) and cell != out.start:
+                out.set_blocked(cell, True)
+    return out
+
+
 def bare_bfs(grid: Grid) -> list[int]:
     return bare_search(grid)
 

@@ -1,8 +1,8 @@
 #!/usr/bin/env python
-"""tui-search against its targets (GitHub issue 4), as ratios measured in one process.
+"""tui-search against its targets (GitHub issues 4 and 9), as ratios measured in one process.
 
     python benchmarks/bench.py            # the full run (a few minutes)
-    python benchmarks/bench.py --quick    # about a minute: fewer repeats, no networkx
+    python benchmarks/bench.py --quick    # a few minutes: fewer repeats, no networkx
     python benchmarks/bench.py --only engine,step
 
 Every figure is compared with a baseline measured in the same run (a bare Python BFS, the
@@ -14,7 +14,7 @@ The peers (``pip install -e .[bench]``: pathfinding, networkx, scipy) are option
 gives a "not installed" row.  See benchmarks/README.md for what each row means.
 
 This file is the entry point only: each section lives in its own module of this package
-(engine.py, jump.py, step.py, startup.py), on the shared table.py, harness.py and maps.py.
+(engine.py, choices.py, jump.py, step.py, startup.py), on the shared table.py, harness.py and maps.py.
 """
 
 from __future__ import annotations
@@ -33,6 +33,7 @@ ROOT = HERE.parent
 sys.path[:] = [p for p in sys.path if Path(p or ".").resolve() != HERE]
 sys.path.insert(0, str(ROOT))
 
+from benchmarks.choices import bench_choices
 from benchmarks.engine import bench_engine
 from benchmarks.harness import NOISE, med
 from benchmarks.jump import bench_jump
@@ -41,13 +42,13 @@ from benchmarks.step import bench_step
 from benchmarks.table import ROWS, Row, add, print_table
 
 #: The sections, in the order they run and print.
-SECTIONS = {"engine": bench_engine, "jump": bench_jump, "step": bench_step,
-            "startup": bench_startup}
+SECTIONS = {"engine": bench_engine, "choices": bench_choices, "jump": bench_jump,
+            "step": bench_step, "startup": bench_startup}
 
 
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--quick", action="store_true", help="about a minute: fewer repeats")
+    ap.add_argument("--quick", action="store_true", help="fewer repeats, networkx skipped")
     ap.add_argument("--only", default=",".join(SECTIONS),
                     help=f"comma-separated sections (default: {','.join(SECTIONS)})")
     args = ap.parse_args(argv)

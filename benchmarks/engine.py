@@ -10,7 +10,7 @@ from collections.abc import Callable
 
 from benchmarks.baselines import bare_bfs, bare_dfs, bare_path_len
 from benchmarks.harness import fmt_time, interleaved, med, paired, series, timed
-from benchmarks.maps import MAPS, MAZE, OPEN_SIZE, maze_grid, open_grid
+from benchmarks.maps import big_maps
 from benchmarks.peers import networkx_bfs, pathfinding_bfs, scipy_bfs
 from benchmarks.table import Row, add
 from tui_search.engine.grid import Grid
@@ -58,12 +58,7 @@ def bench_memory(name: str, grid: Grid, algorithm: str, run: Run) -> None:
 
 def bench_engine(quick: bool) -> None:
     print("engine ...", file=sys.stderr, flush=True)
-    maps = [(f"open {OPEN_SIZE}²", open_grid())]
-    maze = maze_grid()
-    if maze is None:
-        add(Row("engine", f"{MAZE}", "skipped", f"not found in {MAPS}"))
-    else:
-        maps.append(("maze512", maze))
+    maps = big_maps("engine")
     repeats = 3 if quick else 7
     for name, grid in maps:
         runs = {a: recorded(grid, a) for a in ("bfs", "dfs")}  # warm-up, and the answers

@@ -41,6 +41,20 @@ def maze_grid() -> Grid | None:
         return Grid(w, h, blocked, (int(f[4]), int(f[5])), (int(f[6]), int(f[7])))
 
 
+def big_maps(section: str) -> list[tuple[str, Grid]]:
+    """The maps the engine and choices rows run on, by the names the rows print: open 1024²
+    and maze512 -- or a "skipped" row of ``section`` when maze512 is not in MAPS."""
+    from benchmarks.table import Row, add
+
+    maps = [(f"open {OPEN_SIZE}²", open_grid())]
+    maze = maze_grid()
+    if maze is None:
+        add(Row(section, MAZE, "skipped", f"not found in {MAPS}"))
+    else:
+        maps.append(("maze512", maze))
+    return maps
+
+
 def maze_cli_args() -> list[str]:
     rows = [ln for ln in (MAPS / MAZE_SCEN).read_text().splitlines()[1:] if ln.strip()]
     return [str(MAPS / MAZE), "--scen", str(MAPS / MAZE_SCEN), "--scen-row", str(len(rows) - 1)]

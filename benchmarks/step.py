@@ -98,7 +98,7 @@ def bench_step(quick: bool) -> None:
     app_cls, why = search_app_class()
     n = 100 if quick else 200
     reps = 3 if quick else 5
-    names = ("trivial", "trivial-full", "trivial-same", "tutorial", "maze")
+    names = ("trivial", "trivial-full", "trivial-same", "trivial-tut", "tutorial", "maze")
     results: dict[str, list[tuple[list[float], float, float, float]]] = {k: [] for k in names}
     tutorial = maze = None
     if app_cls is not None:
@@ -109,13 +109,17 @@ def bench_step(quick: bool) -> None:
     # The trivial app redrawing as many lines as a maze512 step draws: Textual's cost of
     # drawing that many lines in one plain widget (counted first, in an untimed run of the
     # same presses).
-    first = 1
+    first = first_tut = 1
     if maze is not None:
         first = max(1, round(asyncio.run(_presses(app_cls(maze.copy()), step_keys(n)))[3]))
+    if tutorial is not None:
+        first_tut = max(1, round(asyncio.run(_presses(
+            app_cls(tutorial.copy()), step_keys(16) * (n // 16)))[3]))
     for _ in range(reps):  # interleave the apps
         results["trivial"].append(asyncio.run(_presses(TrivialApp(), step_keys(n))))
         results["trivial-full"].append(asyncio.run(_presses(TrivialApp(), ["m"] * n)))
         results["trivial-same"].append(asyncio.run(_presses(TrivialApp(first), ["f"] * n)))
+        results["trivial-tut"].append(asyncio.run(_presses(TrivialApp(first_tut), ["f"] * n)))
         if app_cls is not None:
             # the tutorial run has 22 steps: go 8 forwards and back again, over and over
             results["tutorial"].append(asyncio.run(_presses(
@@ -151,14 +155,21 @@ def bench_step(quick: bool) -> None:
     uw, uc, ug = per_press("tutorial")
     add(Row("step", "n/p on tutorial 6×6 vs trivial app (CPU per press, net of Pilot)",
             cpu_text(uc, ug), f"trivial {fmt_time(tc)}", paired(uc, tc), "report"))
+    # Issue 9's target: the trivial app redrawing as many lines as the step draws.
+    _, stc, _ = per_press("trivial-tut")
+    r = paired(uc, stc)
+    add(Row("step", f"n/p on tutorial 6×6 vs trivial app redrawing the same {first_tut} lines",
+            cpu_text(uc, ug), f"trivial {fmt_time(stc)}", r, "≤ 5", r <= 5))
     if maze is not None:
         mw, mc, mg = per_press("maze")
-        r = paired(mc, tc)
+        # Issue 4's targets, replaced by issue 9's below (≤ 3 was below its floor, measured):
+        # reported beside them.
         add(Row("step", "n/p on maze512 vs trivial app (CPU per press, net of Pilot)",
-                cpu_text(mc, mg), f"trivial {fmt_time(tc)}", r, "≤ 3", r <= 3))
-        r = paired(mc, uc)
+                cpu_text(mc, mg), f"trivial {fmt_time(tc)}", paired(mc, tc),
+                "report (issue 4: ≤ 3)"))
         add(Row("step", "n/p on maze512 vs tutorial 6×6 (CPU per press, net of Pilot)",
-                cpu_text(mc, mg), f"tutorial {fmt_time(uc)}", r, "≤ 1.5", r <= 1.5))
+                cpu_text(mc, mg), f"tutorial {fmt_time(uc)}", paired(mc, uc),
+                "report (issue 4: ≤ 1.5)"))
         add(Row("step", "n/p on maze512 vs trivial app (median wall per press)", fmt_time(mw),
                 f"trivial {fmt_time(tw)}", paired(mw, tw), "report (≤ 3)"))
         add(Row("step", "n/p on maze512 vs tutorial 6×6 (median wall per press)", fmt_time(mw),
@@ -169,15 +180,16 @@ def bench_step(quick: bool) -> None:
                 paired(sc, tc), "report"))
         r = paired(mc, sc)
         add(Row("step", f"n/p on maze512 vs trivial app redrawing the same {first} lines",
-                cpu_text(mc, mg), f"trivial {fmt_time(sc)}", r, "report"))
+                cpu_text(mc, mg), f"trivial {fmt_time(sc)}", r, "≤ 5", r <= 5))
         add(Row("step", "lines drawn afresh per press: trivial 1-line / whole screen / as many as "
-                "maze512 / tutorial / maze512", " / ".join(f"{lines[k]:.1f}" for k in names), "",
+                "maze512 / as many as the tutorial / tutorial / maze512", " / ".join(f"{lines[k]:.1f}" for k in names), "",
                 None, "report"))
         per_line = [(m / lines["maze"]) / (u / lines["tutorial"]) for m, u in zip(mc, uc)]
+        r = med(per_line)
         add(Row("step", "n/p on maze512 vs tutorial 6×6, CPU per line drawn",
                 f"{med(mc) / lines['maze'] * 1e6:.0f} µs/line",
-                f"tutorial {med(uc) / lines['tutorial'] * 1e6:.0f} µs/line", med(per_line),
-                "report (≤ 1.5)"))
+                f"tutorial {med(uc) / lines['tutorial'] * 1e6:.0f} µs/line", r, "≤ 1.3",
+                r <= 1.3))
         per_line = [(m / lines["maze"]) / (f / lines["trivial-full"]) for m, f in zip(mc, fc)]
         add(Row("step", "n/p on maze512: CPU per line drawn vs the trivial app's whole-screen "
                 "redraw", f"{med(mc) / lines['maze'] * 1e6:.0f} µs/line",

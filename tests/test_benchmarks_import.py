@@ -16,25 +16,32 @@ import pkgutil
 import pytest
 
 import benchmarks
-from benchmarks import bench, harness, step
-from benchmarks.baselines import bare_bfs, bare_dfs, bare_path_len
+from benchmarks import bench, choices, harness, step
+from benchmarks.baselines import (
+    bare_bfs,
+    bare_dfs,
+    bare_path_len,
+    bare_search_visit_on_expand,
+    walled_in,
+)
 from benchmarks.harness import interleaved, paired
 from benchmarks.maps import TUTORIAL
 from benchmarks.table import Row, fmt_ratio, print_table
 from benchmarks.trivial_app import Lines, TrivialApp
 from tui_search.engine.mapfile import load_map
 from tui_search.engine.run import Run
+from tui_search.engine.semantics import Semantics
 
 
 def test_every_benchmark_module_imports() -> None:
     names = sorted(m.name for m in pkgutil.iter_modules(benchmarks.__path__))
-    assert {"bench", "engine", "jump", "step", "startup", "trivial_app"} <= set(names)
+    assert {"bench", "choices", "engine", "jump", "step", "startup", "trivial_app"} <= set(names)
     for name in names:
         importlib.import_module(f"benchmarks.{name}")
 
 
-def test_the_entry_point_has_the_four_sections_and_refuses_another(capsys) -> None:
-    assert list(bench.SECTIONS) == ["engine", "jump", "step", "startup"]
+def test_the_entry_point_has_the_five_sections_and_refuses_another(capsys) -> None:
+    assert list(bench.SECTIONS) == ["engine", "choices", "jump", "step", "startup"]
     with pytest.raises(SystemExit) as info:
         bench.main(["--only", "engine,nope"])
     assert info.value.code == 2 and "unknown section 'nope'" in capsys.readouterr().err
@@ -46,6 +53,39 @@ def test_the_bare_baselines_find_the_engines_path_lengths() -> None:
         run = Run(grid, algorithm)
         run.advance()
         assert bare_path_len(grid, bare(grid)) == len(run.path()) - 1 == 7
+
+
+def test_the_visit_on_expand_floor_finds_the_engines_paths_and_pushes_more() -> None:
+    grid = load_map(TUTORIAL)
+    for algorithm, lifo in (("bfs", False), ("dfs", True)):
+        run = Run(grid, algorithm, Semantics(visit="expand"))
+        run.advance()
+        parent = bare_search_visit_on_expand(grid, lifo)
+        assert bare_path_len(grid, parent) == len(run.path()) - 1
+        nodes = list(run.rec.gen_node)
+        assert len(nodes) > len(set(nodes))  # what the floor stands for: cells pushed again
+
+
+def test_walled_in_leaves_no_path_and_the_full_traversal_reaches_every_cell() -> None:
+    grid = load_map(TUTORIAL)
+    walled = walled_in(grid)
+    assert walled.goal == grid.goal and walled.is_free(walled.goal)
+    for bare in (bare_bfs, bare_dfs):
+        assert bare_path_len(walled, bare(walled)) == -1
+    run = Run(walled, "dfs")
+    run.advance()
+    assert not run.found and len(run.rec.gen_node) == walled.free_count() - 1  # not the goal
+
+
+def test_the_choices_section_times_every_combination_on_both_frontiers() -> None:
+    """Each contender runs once on the tutorial map (untimed): the rows' callables work."""
+    grid = load_map(TUTORIAL)
+    fns = choices.contenders(grid, walled_in(grid))
+    assert {f"run {a} {c}{w}" for a, w in (("bfs", ""), ("dfs", " walled"))
+            for c in choices.COMBINATIONS} <= set(fns)
+    for fn in fns.values():
+        fn()
+    choices.check_answers("tutorial", grid, walled_in(grid))
 
 
 def test_the_harness_and_the_table(capsys, monkeypatch: pytest.MonkeyPatch) -> None:

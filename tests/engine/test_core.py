@@ -9,9 +9,10 @@ under random algorithms and choices.  Then the properties the choices promise.
 from __future__ import annotations
 
 import itertools
+from array import array
 
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 from tests.engine.test_search import random_grids
@@ -20,7 +21,16 @@ from tui_search.engine.algorithms import ALGORITHMS, get_algorithm
 from tui_search.engine.grid import DIRECTIONS, Grid
 from tui_search.engine.reference import ReferenceSearch, stream
 from tui_search.engine.run import Run
-from tui_search.engine.search import bfs, dfs, general, iddfs, loop_for
+from tui_search.engine.search import (
+    Problem,
+    Record,
+    bfs,
+    dfs,
+    general,
+    iddfs,
+    loop_for,
+    tree,
+)
 from tui_search.engine.semantics import CORNER_RULES, GOAL_TESTS, VISIT_RULES, Semantics
 
 #: Tree search is exponential: every comparison stops here (both loops give up alike).
@@ -106,6 +116,28 @@ def test_the_streamed_outcome_equals_the_recorded_one(grid: Grid, choice) -> Non
     assert stream(grid, get_algorithm(key), sem, LIMIT) == Run(grid, key, sem, LIMIT).outcome()
 
 
+def _record(grid: Grid, key: str, sem: Semantics, chunk: int) -> tuple:
+    rec = Record()
+    loop = loop_for(get_algorithm(key), sem)(Problem(grid, sem), rec, chunk)
+    for pause, steps in enumerate(loop, 1):
+        # the loop pauses every `chunk` steps, and the record is whole up to there
+        assert rec.steps == steps == pause * chunk and len(rec.gen_node) == rec.step_end[-1]
+        assert not isinstance(rec.step_exp, array) or len(rec.step_exp) == steps + 1
+    return (list(rec.gen_node), list(rec.step_end), [rec.exp(k) for k in range(1, rec.steps + 1)],
+            list(rec.discarded), rec.goal_gen, rec.done)
+
+
+@core
+@given(random_grids(max_side=8), semantics(), st.integers(1, 4))
+def test_the_loops_record_the_same_in_chunks_of_any_size(grid: Grid, choice, chunk: int) -> None:
+    """The loops keep a chunk's events in lists and write them to the record at each pause:
+    the record is whole at every pause, and tiny chunks (a pause every step or few) record
+    exactly what one long chunk does."""
+    key, sem = choice
+    assume(not sem.tree_search)  # exponential: compared with the reference under a limit above
+    assert _record(grid, key, sem, chunk) == _record(grid, key, sem, 10_000)
+
+
 @pytest.mark.parametrize(
     ("key", "sem", "loop"),
     [
@@ -113,7 +145,7 @@ def test_the_streamed_outcome_equals_the_recorded_one(grid: Grid, choice) -> Non
         ("dfs", Semantics(corners="never", order=("N", "W", "S", "E")), dfs),
         ("bfs", Semantics(visit="expand"), general),
         ("dfs", Semantics(goal_test="expand"), general),
-        ("dfs", Semantics(tree_search=True), general),
+        ("dfs", Semantics(tree_search=True), tree),
         ("iddfs", Semantics(tree_search=True, goal_test="expand"), iddfs),
     ],
 )
