@@ -3,6 +3,7 @@ measure, and a key press that waits for no idle-detection sleeps."""
 
 from __future__ import annotations
 
+from tests.textual_internals import settle
 from tui_search.engine.run import Run
 
 TERMINAL = (160, 50)  # columns, rows of the headless and pty runs
@@ -26,13 +27,6 @@ def app_run(app) -> Run | None:
     return run
 
 
-async def settle(pilot) -> None:
-    """Let every queued message be handled (twice: a handler may post more), then repaint
-    now -- what ``pilot.pause()`` does, without its idle-detection sleeps (>= 20 ms each),
-    which would swamp a millisecond step."""
-    await pilot._wait_for_screen()
-    await pilot._wait_for_screen()
-    pilot.app.screen._on_timer_update()
 
 
 async def fast_press(pilot, key: str) -> None:

@@ -32,7 +32,7 @@ from benchmarks.maps import big_maps
 from benchmarks.table import Row, add
 from tui_search.engine.grid import Grid
 from tui_search.engine.run import Run
-from tui_search.engine.semantics import Semantics
+from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
 
 #: The non-default combinations timed, by the name their rows print.
 COMBINATIONS: dict[str, Semantics] = {
@@ -45,7 +45,7 @@ COMBINATIONS: dict[str, Semantics] = {
 TREE_LIMIT = 100_000
 
 
-def recorded(grid: Grid, algorithm: str, semantics: Semantics = Semantics(),
+def recorded(grid: Grid, algorithm: str, semantics: Semantics = DEFAULT_SEMANTICS,
              max_steps: int | None = None) -> Run:
     run = Run(grid, algorithm, semantics) if max_steps is None else Run(
         grid, algorithm, semantics, max_steps)
@@ -134,8 +134,8 @@ def bench_tree(maps: list[tuple[str, Grid]]) -> None:
     steps) -- so a smaller limit."""
     for name, grid in ((name, walled_in(grid)) for name, grid in maps):
         for algorithm, limit in (("bfs", TREE_LIMIT), ("dfs", TREE_LIMIT // 100)):
-            dt, run = timed(lambda a=algorithm, n=limit: recorded(
-                grid, a, Semantics(tree_search=True), n), CPU)
+            dt, run = timed(lambda a=algorithm, n=limit, g=grid: recorded(
+                g, a, Semantics(tree_search=True), n), CPU)
             ok = run.gave_up and run.rec.steps == limit
             add(Row("choices", f"{name} walled in, {algorithm.upper()} tree search, max_steps "
                     f"{limit:,}: "

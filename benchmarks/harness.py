@@ -11,7 +11,6 @@ import statistics
 import time
 from collections.abc import Callable
 
-
 #: A clock: seconds as a float.  ``time.perf_counter`` (wall) by default; the choices section
 #: uses ``time.process_time`` (see ``CPU``).
 Clock = Callable[[], float]

@@ -13,29 +13,8 @@ from benchmarks.harness import fmt_time, med, paired, series
 from benchmarks.maps import OPEN_SIZE, TUTORIAL, maze_grid, open_grid
 from benchmarks.table import Row, add
 from benchmarks.trivial_app import TrivialApp
+from tests.textual_internals import DrawnLines
 from tui_search.engine.grid import Grid
-
-
-class DrawnLines:
-    """Counts the lines Textual draws afresh (each one a widget's line with its border and
-    padding: ``StylesCache.render_line``; a line left unchanged comes from its cache), while
-    in a ``with`` block."""
-
-    def __enter__(self) -> DrawnLines:
-        from textual._styles_cache import StylesCache
-
-        self.count, self._cls = 0, StylesCache
-        self._original = original = StylesCache.render_line
-
-        def counted(*args, **kwargs):
-            self.count += 1
-            return original(*args, **kwargs)
-
-        StylesCache.render_line = counted  # type: ignore[method-assign]
-        return self
-
-    def __exit__(self, *exc) -> None:
-        self._cls.render_line = self._original  # type: ignore[method-assign]
 
 
 async def _presses(app, keys: list[str], warmup: int = 20

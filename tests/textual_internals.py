@@ -3,7 +3,8 @@ re-check them when the pin moves).  ``tui_search/`` itself uses Textual's public
 
 Textual has no public way to see the terminal as painted (its compositor's cached lines), to
 let an app handle what is queued and paint without Pilot's idle waits (20 ms or more each,
-which would make a test of hundreds of steps slow), or to read the notifications shown.
+which would make a test of hundreds of steps slow), to read the notifications shown, or (for the benchmarks) to count the lines it draws afresh.
+The benchmarks import these too: one module holds every private name outside ``tui_search``.
 """
 
 from __future__ import annotations
@@ -38,6 +39,28 @@ async def repainted(pilot: Pilot) -> list[list[tuple]]:
         widget.refresh()
     await settle(pilot)
     return composited(app)
+
+
+class DrawnLines:
+    """Counts the lines Textual draws afresh (each one a widget's line with its border and
+    padding: ``StylesCache.render_line``; a line left unchanged comes from its cache), while
+    in a ``with`` block."""
+
+    def __enter__(self) -> DrawnLines:  # noqa: PYI034 -- returns self, as written
+        from textual._styles_cache import StylesCache
+
+        self.count, self._cls = 0, StylesCache
+        self._original = original = StylesCache.render_line
+
+        def counted(*args, **kwargs):
+            self.count += 1
+            return original(*args, **kwargs)
+
+        StylesCache.render_line = counted  # type: ignore[method-assign]
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self._cls.render_line = self._original  # type: ignore[method-assign]
 
 
 def notifications(app: App) -> list[Notification]:

@@ -9,6 +9,7 @@ from pathlib import Path
 
 import pytest
 
+from tests.textual_internals import notifications
 from tests.tui.test_app import MAPS, SIZE, sync
 from tui_search.engine.mapfile import format_text_map, load_map
 from tui_search.tui.app import SearchApp
@@ -55,7 +56,7 @@ async def save_as(pilot, name: str) -> None:
 
 
 def messages(app: SearchApp) -> list[str]:
-    return [n.message for n in app._notifications]
+    return [n.message for n in notifications(app)]
 
 
 # -- saving keeps the file --------------------------------------------------------------

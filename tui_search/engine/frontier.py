@@ -22,7 +22,7 @@ from itertools import compress
 from tui_search.engine.algorithms import Frontier
 
 #: Events a piece of a bulk rebuild handles (a few milliseconds of work).
-PIECE = 1 << 15
+PIECE = 1 << 14
 
 
 class FifoFrontier:

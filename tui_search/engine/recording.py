@@ -11,9 +11,8 @@ from __future__ import annotations
 import operator
 from array import array
 from bisect import bisect_right
-from collections.abc import Generator, Iterable
+from collections.abc import Generator, Iterator
 from dataclasses import dataclass
-from itertools import accumulate
 from typing import cast
 
 from tui_search.engine.algorithms import DEFAULT_ALGORITHM, get_algorithm
@@ -169,34 +168,46 @@ class Recording:
             return 1
         return (rec.step_end[k] - rec.iter_root[it]) - (k - first + 1)
 
+    #: Steps per block of the peak table: a query scans at most one block.
+    PEAK_BLOCK = 4096
+
     def peak_frontier(self, k: int) -> int:
-        """The largest frontier size over steps 0..k (default: the position): a look-up, the
-        table being kept as the search is recorded."""
+        """The largest frontier size over steps 0..k: the running maximum of whole blocks,
+        kept as the search is recorded (so the end costs no scan of the run), and at most
+        one block's sizes scanned."""
         k = min(k, self.rec.steps)
-        self._extend_peak(k)
-        return self._peak[k]
+        b = k // self.PEAK_BLOCK
+        self._extend_peak(b * self.PEAK_BLOCK)
+        before = self._peak[b - 1] if b else 0
+        return max(before, max(self._sizes(b * self.PEAK_BLOCK, k + 1)))
 
     def _extend_peak(self, k: int) -> None:
-        """Extend the running-maximum table of frontier sizes over steps 0..k.  Within one
-        iteration the frontier size at step j is the events generated in it minus the
-        expansions, ``step_end[j] - j - (root - first + 1)``: one vectorised pass a piece."""
-        peak, rec = self._peak, self.rec
-        lo = len(peak)
-        while lo <= k:
+        """Extend the table of block maxima over the whole blocks before step ``k``:
+        ``_peak[b]`` is the largest frontier size over steps ``0 .. (b + 1) * PEAK_BLOCK - 1``
+        (one C-speed ``max`` a block)."""
+        peak, block = self._peak, self.PEAK_BLOCK
+        while (len(peak) + 1) * block <= k:
+            lo = len(peak) * block
+            prev = peak[-1] if peak else 0
+            peak.append(max(prev, max(self._sizes(lo, lo + block))))
+
+    def _sizes(self, lo: int, hi: int) -> Iterator[int]:
+        """Frontier sizes at steps ``lo .. hi - 1``.  Within one iteration the size at step
+        ``j`` is the events generated in it minus the steps taken:
+        ``step_end[j] - j - (root - first + 1)`` (step 0, before any, is the start alone)."""
+        rec = self.rec
+        while lo < hi:
             it = self.iteration_of(lo)
             first = rec.iter_first_step[it]
-            if lo < first:  # step 0, before the first expansion: just the start
-                sizes: Iterable[int] = [1]
-                hi = lo + 1
-            else:
-                hi = (min(k + 1, rec.iter_first_step[it + 1])
-                      if it + 1 < len(rec.iter_first_step) else k + 1)
-                c = rec.iter_root[it] - first + 1
-                sizes = map(operator.sub, rec.step_end[lo:hi], range(lo + c, hi + c))
-            running = accumulate(sizes, max, initial=peak[-1] if peak else 0)
-            next(running)  # the initial value is already in the table
-            peak.extend(running)
-            lo = hi
+            if lo < first:
+                yield 1
+                lo += 1
+                continue
+            end = (min(hi, rec.iter_first_step[it + 1])
+                   if it + 1 < len(rec.iter_first_step) else hi)
+            c = rec.iter_root[it] - first + 1
+            yield from map(operator.sub, rec.step_end[lo:end], range(lo + c, end + c))
+            lo = end
 
     def is_discarded(self, k: int) -> bool:
         """Did step ``k`` take off a cell already expanded, and so do nothing?"""

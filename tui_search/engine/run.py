@@ -138,11 +138,11 @@ class Run(RecordedTree):
             pass
 
     #: Events one piece of :meth:`rebuild_pieces` handles: a few milliseconds of work.
-    REBUILD_PIECE = 1 << 15
+    REBUILD_PIECE = 1 << 14
 
-    #: Counters one piece of :meth:`rebuild_pieces` allocates (zeroing 4 MB: a few ms; a
+    #: Counters one piece of :meth:`rebuild_pieces` allocates (zeroing 2 MB: a millisecond or two; a
     #: 4096x4096 map's counters are 67 MB each, which took a tenth of a second in one go).
-    REBUILD_CELLS = 1 << 20
+    REBUILD_CELLS = 1 << 19
 
     def rebuild_pieces(self, k: int) -> Iterator[float]:
         """Move the position to recorded step ``k`` in bulk, one bounded piece of work per

@@ -18,7 +18,7 @@ DEFAULT_SPEED = 2  # index: 5 steps/s, slow enough to follow the tutorial's stor
 #: The timer never fires faster than this; faster speeds take several steps per tick.
 MAX_TICKS_PER_SECOND = 30
 #: The longest a tick or a slice of ``end`` may keep the event loop busy.
-SLICE_SECONDS = 0.04
+SLICE_SECONDS = 0.03
 #: The pause between two slices of ``end``, in which the event loop answers keys.
 SLICE_PAUSE = 0.01
 
