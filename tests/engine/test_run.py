@@ -262,3 +262,18 @@ def test_the_peak_frontier_is_kept_while_recording(grid, algo) -> None:
         while stepper.forward():
             peak = max(peak, stepper.frontier_len())
             assert run.peak_frontier(stepper.k) == peak
+
+
+@settings(max_examples=80, deadline=None)
+@given(random_grids(max_side=7), st.sampled_from(["bfs", "dfs", "iddfs"]),
+       st.lists(st.integers(0, 400), min_size=1, max_size=12))
+def test_the_peak_frontier_in_any_order_of_asking(grid, algo, asks) -> None:
+    """The last answer is remembered to make a step forwards cheap; asked backwards, across
+    blocks or again, the peak is still the largest frontier over steps 0..k."""
+    with patch.object(Run, "PEAK_BLOCK", 3):
+        run = Run(grid, algo)
+        run.advance()
+        sizes = [run.frontier_size_at(j) for j in range(run.total + 1)]
+        for a in asks:
+            k = a % (run.total + 1)
+            assert run.peak_frontier(k) == max(sizes[: k + 1]), k

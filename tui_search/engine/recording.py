@@ -67,6 +67,7 @@ class Recording:
         self._loop = cast(Generator[int, None, None],
                           loop_for(algo, semantics)(self.problem, self.rec, min(CHUNK, max_steps)))
         self._peak = array("i")
+        self._peak_memo: tuple[int, int] | None = None  # the last (k, peak) asked for
         self._advance_once()  # records the start (and the answer, when start == goal)
 
     def _advance_once(self) -> None:
@@ -177,9 +178,16 @@ class Recording:
         one block's sizes scanned."""
         k = min(k, self.rec.steps)
         b = k // self.PEAK_BLOCK
-        self._extend_peak(b * self.PEAK_BLOCK)
-        before = self._peak[b - 1] if b else 0
-        return max(before, max(self._sizes(b * self.PEAK_BLOCK, k + 1)))
+        memo = self._peak_memo
+        if memo is not None and memo[0] // self.PEAK_BLOCK == b and memo[0] <= k:
+            # A step forwards (the app asks once a step): only the new steps are scanned.
+            value = max(memo[1], max(self._sizes(memo[0], k + 1)))
+        else:
+            self._extend_peak(b * self.PEAK_BLOCK)
+            before = self._peak[b - 1] if b else 0
+            value = max(before, max(self._sizes(b * self.PEAK_BLOCK, k + 1)))
+        self._peak_memo = (k, value)
+        return value
 
     def _extend_peak(self, k: int) -> None:
         """Extend the table of block maxima over the whole blocks before step ``k``:
