@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
 
 from tui_search.engine.grid import Grid
@@ -42,6 +43,24 @@ def reference_distances(
     """Fewest moves from the start to every reachable cell, by relaxing all edges until
     nothing changes (Bellman-Ford): deliberately not a queue-based search, so it checks
     BFS independently."""
+    return {c: int(d) for c, d in _relaxed(grid, corners, order, lambda move: 1).items()}
+
+
+def reference_costs(
+    grid: Grid, corners: str = "always", order: tuple[str, ...] | None = None
+) -> dict[tuple[int, int], float]:
+    """The cheapest cost (1 a straight move, sqrt(2) a diagonal) from the start to every
+    reachable cell, the same way: no priority queue, so it checks uniform-cost search and A*
+    independently."""
+    from tui_search.engine.grid import move_cost
+
+    return _relaxed(grid, corners, order, move_cost)
+
+
+def _relaxed(grid: Grid, corners: str, order: tuple[str, ...] | None,
+             cost_of: Callable[[str], float]) -> dict[tuple[int, int], float]:
+    """Bellman-Ford from the start: each move costs ``cost_of(move)``; unreachable cells are
+    left out."""
     inf = float("inf")
     dist = {(x, y): inf for y in range(grid.height) for x in range(grid.width)}
     dist[grid.start] = 0
@@ -53,11 +72,11 @@ def reference_distances(
                 continue
             moves = grid.neighbours(cell, corners=corners) if order is None else (
                 grid.neighbours(cell, order, corners))
-            for _, nxt in moves:
-                if dist[nxt] > d + 1:
-                    dist[nxt] = d + 1
+            for move, nxt in moves:
+                if dist[nxt] > d + cost_of(move) + 1e-12:
+                    dist[nxt] = d + cost_of(move)
                     changed = True
-    return {c: int(d) for c, d in dist.items() if d != inf}
+    return {c: d for c, d in dist.items() if d != inf}
 
 
 def summary(run) -> dict:

@@ -100,7 +100,7 @@ def test_bfs_cost_matches_the_scenario_optimum_when_corners_are_respected(capsys
     [
         (["nope.txt", "--headless"], "tui-search: nope.txt: "),
         ([TUTORIAL, "--headless", "--bogus"], "tui-search: error: unrecognized arguments"),
-        ([TUTORIAL, "--headless", "-a", "astar"], "tui-search: error: argument -a/--algorithm"),
+        ([TUTORIAL, "--headless", "-a", "dijkstra"], "tui-search: error: argument -a/--algorithm"),
         ([TUTORIAL, "--headless", "--order", "N,UP"], "tui-search: error: --order 'N,UP'"),
         ([TUTORIAL, "--headless", "--start", "x"], "tui-search: error: --start 'x'"),
         ([TUTORIAL, "--headless", "--start", "9,9"], f"tui-search: {TUTORIAL}"),

@@ -23,7 +23,7 @@ def test_the_json_names_every_choice_in_force(capsys) -> None:
                                  "--order", "N,E,S,W,NE,SE,SW,NW", "-a", "dfs")
     assert result["semantics"] == {
         "order": ["N", "E", "S", "W", "NE", "SE", "SW", "NW"], "corners": "one",
-        "visit": "generate", "goal_test": "expand", "tree_search": False,
+        "visit": "generate", "goal_test": "expand", "tree_search": False, "heuristic": None,
     }
     _, default = headless_json(capsys)
     assert default["semantics"]["corners"] == "always" and default["discarded"] == 0

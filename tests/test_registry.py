@@ -36,8 +36,18 @@ def test_the_keys_the_cli_and_the_help_come_from_the_registry() -> None:
         assert binding.key == algo.app_key and binding.description == algo.short
     choices = next(a for a in build_parser()._actions if a.dest == "algorithm").choices
     assert list(choices) == list(ALGORITHMS)
-    keys_line = dict(KEYS)["  ".join(a.app_key for a in ALGORITHMS.values())]
-    assert keys_line == "breadth-first / depth-first / iterative deepening"
+    keys_line = dict(KEYS)[" ".join(a.app_key for a in ALGORITHMS.values())]
+    assert keys_line == "BFS / DFS / IDDFS / UCS / Greedy / A* (a new search, same map)"
+
+
+def test_a_priority_queue_is_titled_by_its_order() -> None:
+    titles = {a.key: a.frontier_title for a in ALGORITHMS.values()}
+    assert titles["astar"] == "Priority queue (A*: f = g + h)"
+    assert titles["ucs"] == "Priority queue (UCS: g)"
+    assert titles["greedy"] == "Priority queue (Greedy: h)"
+    assert titles["bfs"] == "Queue (FIFO)"
+    assert [a.key for a in ALGORITHMS.values() if a.informed] == ["greedy", "astar"]
+    assert all(a.goal_test == "expand" for a in ALGORITHMS.values() if a.weighted)
 
 
 def test_frontier_words() -> None:

@@ -15,8 +15,10 @@ from typing import IO, NoReturn
 from tui_search import __version__
 from tui_search.engine.algorithms import ALGORITHMS, DEFAULT_ALGORITHM, get_algorithm
 from tui_search.engine.grid import DEFAULT_ORDER, Grid, parse_order
+from tui_search.engine.heuristics import DEFAULT_HEURISTIC, HEURISTICS, INADMISSIBLE, admissible
 from tui_search.engine.mapfile import (
     MapError,
+    Scenario,
     check_scenario_map,
     check_scenario_matches,
     load_map,
@@ -46,8 +48,9 @@ class _Parser(argparse.ArgumentParser):
 def build_parser() -> argparse.ArgumentParser:
     p = _Parser(
         prog="tui-search",
-        description="Watch a robot plan a path on a grid with breadth-first, depth-first and "
-        "iterative-deepening search. With no MAP, opens the tutorial's 6x6 map.",
+        description="Watch a robot plan a path on a grid with breadth-first, depth-first, "
+        "iterative-deepening, uniform-cost, greedy best-first and A* search. With no MAP, opens "
+        "the tutorial's 6x6 map.",
         epilog="Exit codes (headless): 0 path found, 1 no path, 2 bad input, 3 gave up (--max-steps).",
     )
     p.add_argument("map", nargs="?", help="a text map (.txt) or a MovingAI map (.map)")
@@ -70,8 +73,12 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--visit", choices=VISIT_RULES, default=None,
                    help="when a cell counts as visited: generate (when pushed, default) or "
                    "expand (when taken off: a cell may be on the frontier several times)")
-    p.add_argument("--goal-test", choices=GOAL_TESTS, default="generate",
-                   help="stop when the goal is pushed (generate, default) or taken off (expand)")
+    p.add_argument("--goal-test", choices=GOAL_TESTS, default=None,
+                   help="stop when the goal is pushed (generate: the default of bfs, dfs and "
+                   "iddfs) or taken off (expand: the default of ucs, greedy and astar)")
+    p.add_argument("--heuristic", choices=list(HEURISTICS), default=None,
+                   help="greedy's and A*'s estimate of the cost to the goal (default "
+                   f"{DEFAULT_HEURISTIC}; manhattan is not admissible with diagonal moves)")
     p.add_argument("--tree-search", action="store_true",
                    help="no visited set: skip only cells on the node's own path")
     p.add_argument("--max-steps", metavar="N", type=_positive, default=MAX_STEPS,
@@ -121,6 +128,7 @@ def load_problem(args: argparse.Namespace) -> tuple[Grid, Path | None]:
         return parse_map_text(text, TUTORIAL_NAME, start=start, goal=goal), None
     path = Path(args.map)
     scen = None
+    args.scenario = None
     if args.scen:
         scen = load_scenario(args.scen, args.scen_row)
         # A row for another map is refused by name, before its start and goal are tried on
@@ -131,6 +139,7 @@ def load_problem(args: argparse.Namespace) -> tuple[Grid, Path | None]:
     grid = load_map(path, start=start, goal=goal)
     if scen is not None:
         check_scenario_matches(scen, grid, args.scen, str(path))
+        args.scenario = scen  # its optimal length, for the summary
     return grid, path
 
 
@@ -150,9 +159,16 @@ def semantics_from(args: argparse.Namespace) -> Semantics:
     if algorithm.iterative and args.visit is not None:
         raise UsageError(f"--visit does not apply to -a {args.algorithm} "
                          "(it re-opens a cell reached at a smaller depth)")
+    if algorithm.weighted and args.visit is not None:
+        raise UsageError(f"--visit does not apply to -a {args.algorithm} "
+                         "(it re-opens a cell reached with a lower g)")
+    if args.heuristic is not None and not algorithm.informed:
+        informed = ", ".join(a.key for a in ALGORITHMS.values() if a.informed)
+        raise UsageError(f"--heuristic applies to -a {informed} only, not {args.algorithm}")
     try:
         sem = Semantics(order=order, corners=corners, visit=args.visit or "generate",
-                        goal_test=args.goal_test, tree_search=args.tree_search)
+                        goal_test=args.goal_test, tree_search=args.tree_search,
+                        heuristic=args.heuristic or DEFAULT_HEURISTIC)
         sem.check(algorithm)
     except ValueError as exc:
         raise UsageError(str(exc)) from None
@@ -197,9 +213,32 @@ def search_headless(grid: Grid, key: str, semantics: Semantics, max_steps: int,
     return run.outcome()
 
 
-def json_summary(outcome: Outcome) -> dict:
+def optimal(outcome: Outcome, scenario: Scenario | None) -> bool | None:
+    """Does the path meet the benchmark's optimal length (to 1e-4, relative)?  None when no
+    scenario is given or no path was found."""
+    if scenario is None or outcome.cost is None:
+        return None
+    return outcome.cost <= scenario.optimal_length * (1 + 1e-4)
+
+
+def benchmark_text(outcome: Outcome, scenario: Scenario) -> str:
+    """The benchmark's lowest cost beside the path's: "lowest cost 2.000: met"."""
+    text = f"lowest cost {scenario.optimal_length:.3f}"
+    if outcome.semantics.corners != "never":
+        text += " (with --corners never)"
+    verdict = optimal(outcome, scenario)
+    if verdict is None:
+        return text
+    return text + (": this path is optimal" if verdict else ": this path costs more")
+
+
+def json_summary(outcome: Outcome, scenario: Scenario | None = None) -> dict:
     """The headless JSON object (README: "Headless output")."""
     path, moves = outcome.path, outcome.moves
+    extra = {} if scenario is None else {
+        "optimal_length": round(scenario.optimal_length, 6),
+        "optimal": optimal(outcome, scenario),
+    }
     return {
         "algorithm": outcome.algorithm,
         "found": outcome.found,
@@ -213,6 +252,7 @@ def json_summary(outcome: Outcome) -> dict:
         "max_frontier": outcome.max_frontier,
         "gave_up": outcome.gave_up,
         "semantics": outcome.semantics.as_json(get_algorithm(outcome.algorithm)),
+        **extra,
     }
 
 
@@ -232,21 +272,28 @@ def moves_text(moves: list[str]) -> str:
 
 
 def human_summary(
-    outcome: Outcome, where: str, max_steps: int, blocked_by: str | None = None
+    outcome: Outcome, where: str, max_steps: int, blocked_by: str | None = None,
+    scenario: Scenario | None = None,
 ) -> str:
-    name = get_algorithm(outcome.algorithm).name
+    algorithm = get_algorithm(outcome.algorithm)
+    name = algorithm.name
     result = "path found" if outcome.found else "no path"
     if not outcome.found and not outcome.gave_up and blocked_by:
         result += f" — {blocked_by}"
     if outcome.gave_up:
         result = f"gave up at --max-steps {max_steps:,} (raise it to search on)"
     lines = [f"{name} on {where}: {result}"]
-    differences = outcome.semantics.differences()
+    differences = outcome.semantics.differences(algorithm)
     if differences:
         lines.append(f"  semantics:    {' · '.join(differences)}")
+    if algorithm.informed and not admissible(outcome.semantics.heuristic,
+                                             outcome.semantics.order):
+        lines.append(f"  warning:      {INADMISSIBLE}")
     if outcome.moves is not None:
         lines.append(f"  moves:        {outcome.length:,} ({moves_text(outcome.moves)})")
         lines.append(f"  cost:         {outcome.cost:.3f}")
+    if scenario is not None:
+        lines.append(f"  benchmark:    {benchmark_text(outcome, scenario)}")
     lines.append(f"  expanded:     {outcome.expanded:,}")
     if outcome.discarded:
         lines.append(f"  discarded:    {outcome.discarded:,}")
@@ -278,15 +325,16 @@ def run_headless(args: argparse.Namespace, grid: Grid, path: Path | None) -> int
             raise MapError(args.trace, f"cannot write the trace: {exc.strerror}") from None
     else:
         outcome = search(None)
+    scenario = getattr(args, "scenario", None)
     if args.json:
-        print(json.dumps(json_summary(outcome)))
+        print(json.dumps(json_summary(outcome, scenario)))
     elif args.trace != "-":
         blocked_by = None
         if not outcome.found and not outcome.gave_up and not semantics.is_default:
             from tui_search.engine.diagnose import blocking_rule
 
             blocked_by = blocking_rule(grid, semantics)
-        print(human_summary(outcome, where, args.max_steps, blocked_by))
+        print(human_summary(outcome, where, args.max_steps, blocked_by, scenario))
     if outcome.gave_up:
         return EXIT_GAVE_UP
     return EXIT_FOUND if outcome.found else EXIT_NO_PATH
@@ -295,8 +343,10 @@ def run_headless(args: argparse.Namespace, grid: Grid, path: Path | None) -> int
 def run_app(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
     from tui_search.tui.app import SearchApp  # Textual only when the app is wanted
 
+    scenario = getattr(args, "scenario", None)
     app = SearchApp(grid, path=path, algorithm=args.algorithm, semantics=semantics_from(args),
-                    max_steps=args.max_steps, unsaved_name=BUILT_IN_TITLE)
+                    max_steps=args.max_steps, unsaved_name=BUILT_IN_TITLE,
+                    optimal_cost=scenario.optimal_length if scenario is not None else None)
     app.run()
     return app.return_code or 0
 

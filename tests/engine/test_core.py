@@ -10,15 +10,18 @@ from __future__ import annotations
 
 import itertools
 from array import array
+from dataclasses import replace
 
 import pytest
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
+from tests.engine.test_run import snapshot
 from tests.engine.test_search import random_grids
 from tests.helpers import TUTORIAL_ROWS, grid_from_rows, reference_distances
 from tui_search.engine.algorithms import ALGORITHMS, get_algorithm
 from tui_search.engine.grid import DIRECTIONS, Grid
+from tui_search.engine.heuristics import HEURISTICS
 from tui_search.engine.reference import ReferenceSearch, stream
 from tui_search.engine.run import Run
 from tui_search.engine.search import (
@@ -42,21 +45,23 @@ def semantics(draw, algorithm: str | None = None) -> tuple[str, Semantics]:
     key = algorithm or draw(st.sampled_from(sorted(ALGORITHMS)))
     moves = draw(st.lists(st.sampled_from(DIRECTIONS), min_size=1, max_size=8, unique=True))
     tree = draw(st.booleans())
-    visit = "generate" if tree or get_algorithm(key).iterative else draw(
+    algo = get_algorithm(key)
+    visit = "generate" if tree or algo.iterative or algo.weighted else draw(
         st.sampled_from(VISIT_RULES))
     return key, Semantics(
         order=tuple(moves),
         corners=draw(st.sampled_from(CORNER_RULES)),
         visit=visit,
-        goal_test=draw(st.sampled_from(GOAL_TESTS)),
+        goal_test=draw(st.sampled_from((None, *GOAL_TESTS))),
         tree_search=tree,
+        heuristic=draw(st.sampled_from(sorted(HEURISTICS))),
     )
 
 
 def reference_arrays(grid: Grid, key: str, sem: Semantics, limit: int) -> dict:
     """What the reference did, in the record's terms (cells, not padded indices)."""
     search = ReferenceSearch(grid, get_algorithm(key), sem)
-    cells, step_end, step_exp, discarded = [grid.start], [1], [], []
+    cells, step_end, step_exp, discarded, costs = [grid.start], [1], [], [], [0.0]
     roots, first_steps = [0], [1]
     gave_up = False
     for step in search:
@@ -70,6 +75,7 @@ def reference_arrays(grid: Grid, key: str, sem: Semantics, limit: int) -> dict:
         assert step.node.event < len(cells) and cells[step.node.event] == step.node.cell
         step_exp.append(step.node.event)
         cells.extend(s.cell for s in step.successors)
+        costs.extend(s.g for s in step.successors)
         assert [s.event for s in step.successors] == list(
             range(len(cells) - len(step.successors), len(cells)))
         step_end.append(len(cells))
@@ -78,7 +84,8 @@ def reference_arrays(grid: Grid, key: str, sem: Semantics, limit: int) -> dict:
     goal = -1 if gave_up or search.goal is None else search.goal.event
     return {"cells": cells, "step_end": step_end, "step_exp": step_exp,
             "discarded": discarded, "roots": roots, "first_steps": first_steps, "goal": goal,
-            "gave_up": gave_up}
+            "gave_up": gave_up,
+            "costs": costs if search.algorithm.weighted else None}
 
 
 def recorded_arrays(run: Run) -> dict:
@@ -93,6 +100,7 @@ def recorded_arrays(run: Run) -> dict:
         "first_steps": list(rec.iter_first_step),
         "goal": rec.goal_gen,
         "gave_up": rec.gave_up,
+        "costs": None if rec.gen_g is None else list(rec.gen_g),
     }
 
 
@@ -118,7 +126,8 @@ def test_the_streamed_outcome_equals_the_recorded_one(grid: Grid, choice) -> Non
 
 def _record(grid: Grid, key: str, sem: Semantics, chunk: int) -> tuple:
     rec = Record()
-    loop = loop_for(get_algorithm(key), sem)(Problem(grid, sem), rec, chunk)
+    algorithm = get_algorithm(key)
+    loop = loop_for(algorithm, sem)(Problem(grid, sem, sem.goal_test_for(algorithm)), rec, chunk)
     for pause, steps in enumerate(loop, 1):
         # the loop pauses every `chunk` steps, and the record is whole up to there
         assert rec.steps == steps == pause * chunk and len(rec.gen_node) == rec.step_end[-1]
@@ -191,7 +200,7 @@ def test_every_path_is_legal_under_its_rules(grid: Grid, choice) -> None:
 @given(random_grids(max_side=8), semantics())
 def test_a_four_direction_order_never_moves_diagonally(grid: Grid, choice) -> None:
     key, sem = choice
-    sem = Semantics(("N", "W", "S", "E"), sem.corners, sem.visit, sem.goal_test, sem.tree_search)
+    sem = replace(sem, order=("N", "W", "S", "E"))
     out = Run(grid, key, sem, LIMIT).outcome()
     assert all(len(m) == 1 for m in out.moves or [])
 
@@ -270,8 +279,6 @@ def test_moving_to_step_k_works_the_same_for_every_choice(grid, choice, targets,
     """The run's frontier model and counters: a jump (stepping either way, or a bulk rebuild)
     lands on exactly the state that stepping forwards from 0 reaches -- duplicates on the
     frontier, discarded steps and tree search included."""
-    from tests.engine.test_run import snapshot
-
     key, sem = choice
     run = Run(grid, key, sem, 400)
     run.REBUILD_AFTER = rebuild

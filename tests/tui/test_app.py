@@ -241,7 +241,8 @@ async def test_home_and_end_go_to_the_first_and_last_step() -> None:
         run = app.search_run
         assert run.k == 22 and run.found
         assert stats(app)[1] == (
-            "Goal (5,2) found from (5,1) · path: 7 moves, cost 8.66 · generated 24 of at most 7⁸ = 5,764,801")
+            "Goal (5,2) found from (5,1) · path: 7 moves, cost 8.66 (the lowest) · generated 24 of "
+            "at most 7⁸ = 5,764,801")
         assert any("◆" in line for line in map_lines(app))
         await pilot.press("home")
         assert run.k == 0
@@ -776,7 +777,7 @@ async def test_the_key_bar_dims_keys_that_cannot_act_and_a_click_presses_a_key()
             return {key: on for keys, _, _ in bar.hints() for _, key, on in keys}
 
         hints = bar.hints()
-        assert [desc for _, desc, _ in hints][:3] == ["Step", "Play", "BFS/DFS/ID"]
+        assert [desc for _, desc, _ in hints][:3] == ["Step", "Play", "BFS/DFS/ID/UCS/GBF/A*"]
         assert [display for display, _, _ in hints[0][0]] == ["n", "p"]
         assert enabled()["n"] and not enabled()["p"]  # step 0: nothing to go back to
         await pilot.click(KeyBar, offset=(1, 0))  # the "n" of "np Step" (after the padding)

@@ -18,6 +18,7 @@ class Frontier(Enum):
 
     FIFO = "fifo"  # a queue: the oldest entry comes out first
     LIFO = "lifo"  # a stack: the newest entry comes out first
+    PRIORITY = "priority"  # a priority queue: the lowest priority first, ties oldest first
 
     @property
     def title(self) -> str:
@@ -44,14 +45,21 @@ class Frontier(Enum):
         return _HINTS[self]
 
 
-_TITLES = {Frontier.FIFO: "Queue (FIFO)", Frontier.LIFO: "Stack (LIFO)"}
-_NOUNS = {Frontier.FIFO: "queue", Frontier.LIFO: "stack"}
-_ENDS = {Frontier.FIFO: "front", Frontier.LIFO: "top"}
-_PREPOSITIONS = {Frontier.FIFO: "in", Frontier.LIFO: "on"}
+_TITLES = {Frontier.FIFO: "Queue (FIFO)", Frontier.LIFO: "Stack (LIFO)",
+           Frontier.PRIORITY: "Priority queue"}
+_NOUNS = {Frontier.FIFO: "queue", Frontier.LIFO: "stack", Frontier.PRIORITY: "priority queue"}
+_ENDS = {Frontier.FIFO: "front", Frontier.LIFO: "top", Frontier.PRIORITY: "front"}
+_PREPOSITIONS = {Frontier.FIFO: "in", Frontier.LIFO: "on", Frontier.PRIORITY: "in"}
 _HINTS = {
     Frontier.FIFO: ("← front and back", "← front (next out)", "← back (newest)"),
     Frontier.LIFO: ("← top and bottom", "← top (next out)", "← bottom (oldest)"),
+    # none: the order is the priorities', shown on every line (and ▶ marks the next out)
+    Frontier.PRIORITY: ("", "", ""),
 }
+
+#: How an informed search orders its priority queue: what the panel's title and the narration
+#: call the priority, and what it adds up.
+PRIORITIES: dict[str, str] = {"g": "g", "h": "h", "g+h": "f = g + h"}
 
 
 @dataclass(frozen=True)
@@ -66,6 +74,35 @@ class Algorithm:
     summary: str  # one line for the help screen
     tag: str  # the key bar's shortest name: "BFS", "ID"
     iterative: bool = False  # restarts with depth limits 0, 1, 2, ...
+    #: A priority queue's order: "g" (the path's cost so far), "h" (the heuristic's estimate
+    #: of the cost to the goal) or "g+h"; None for a queue or a stack.
+    priority: str | None = None
+    #: When the goal is tested unless the semantics say otherwise: "generate" for the
+    #: tutorial's searches, "expand" for the cost-ordered ones (testing on generation would
+    #: stop before a cheaper path to the goal comes off the queue).
+    goal_test: str = "generate"
+
+    @property
+    def informed(self) -> bool:
+        """Does its order use a heuristic (so ``--heuristic`` applies)?"""
+        return self.priority is not None and "h" in self.priority
+
+    @property
+    def weighted(self) -> bool:
+        """Does it order by cost (a priority queue, moves costing 1 and sqrt(2))?"""
+        return self.priority is not None
+
+    @property
+    def frontier_title(self) -> str:
+        """The frontier panel's title: "Queue (FIFO)", "Priority queue (A*: f = g + h)"."""
+        if self.priority is None:
+            return self.frontier.title
+        return f"{self.frontier.title} ({self.short}: {PRIORITIES[self.priority]})"
+
+    @property
+    def priority_name(self) -> str:
+        """What the priority is called: "g", "h" or "f"."""
+        return {"g": "g", "h": "h", "g+h": "f"}[self.priority or "g"]
 
 
 ALGORITHMS: dict[str, Algorithm] = {
@@ -79,6 +116,15 @@ ALGORITHMS: dict[str, Algorithm] = {
         Algorithm("iddfs", "Iterative deepening", "IDDFS", Frontier.LIFO, "3",
                   "depth-limited DFS with limits 0, 1, 2, ...: the fewest moves, a small stack",
                   "ID", iterative=True),
+        Algorithm("ucs", "Uniform-cost search", "UCS", Frontier.PRIORITY, "4",
+                  "takes the cheapest path so far (g) from a priority queue: the cheapest path",
+                  "UCS", priority="g", goal_test="expand"),
+        Algorithm("greedy", "Greedy best-first search", "Greedy", Frontier.PRIORITY, "5",
+                  "takes the node that looks closest to the goal (h): fast, any path",
+                  "GBF", priority="h", goal_test="expand"),
+        Algorithm("astar", "A* search", "A*", Frontier.PRIORITY, "6",
+                  "takes the lowest f = g + h: the cheapest path, fewer nodes than UCS",
+                  "A*", priority="g+h", goal_test="expand"),
     )
 }
 

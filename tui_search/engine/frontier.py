@@ -9,6 +9,9 @@ time proportional to the step, and to rebuild itself in bulk for a long jump:
   is always the run of events between the next one out and the newest -- two counters.
 * :class:`LifoFrontier` (a stack): pushed in generation order, popped at the top, so after any
   steps it is the events generated and not yet taken off, in generation order.
+* :class:`PriorityFrontier` (a priority queue): the events generated and not yet taken off,
+  kept sorted by ``(priority, event)`` in a :class:`sortedcontainers.SortedList`, so a step
+  costs O(log n) in the frontier's size and the panel reads any window without sorting.
 
 The run is the same for every discipline: it asks its frontier model, never which algorithm it
 runs.
@@ -16,8 +19,10 @@ runs.
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from itertools import compress
+
+from sortedcontainers import SortedList
 
 from tui_search.engine.algorithms import Frontier
 
@@ -92,16 +97,8 @@ class LifoFrontier:
         """Become the stack after the pieces of ``expanded`` were taken off the events
         ``root .. end - 1``: the events not taken off, in generation order (every event is
         pushed in that order and only the top is popped)."""
-        open_ = bytearray(b"\x01") * (end - root)
-        for piece in expanded:
-            for g in piece:
-                open_[g - root] = 0
-            yield len(piece)
         stack: list[int] = []
-        for lo in range(root, end, PIECE):
-            hi = min(lo + PIECE, end)
-            stack.extend(compress(range(lo, hi), open_[lo - root : hi - root]))
-            yield hi - lo
+        yield from _open_events(root, end, expanded, stack.extend)
         self.stack = stack
 
     def __len__(self) -> int:
@@ -112,8 +109,78 @@ class LifoFrontier:
         return [s[n - 1 - i] for i in range(start, min(stop, n))]
 
 
-FrontierModel = FifoFrontier | LifoFrontier
+def _open_events(root: int, end: int, expanded: Iterable[Sequence[int]],
+                 take: Callable[[Iterator[int]], object]) -> Iterator[int]:
+    """Hand ``take`` the events ``root .. end - 1`` not in the pieces of ``expanded``, in
+    generation order, a piece at a time, yielding the work done by each piece."""
+    open_ = bytearray(b"\x01") * (end - root)
+    for piece in expanded:
+        for g in piece:
+            open_[g - root] = 0
+        yield len(piece)
+    for lo in range(root, end, PIECE):
+        hi = min(lo + PIECE, end)
+        take(compress(range(lo, hi), open_[lo - root : hi - root]))
+        yield hi - lo
 
 
-def frontier_model(kind: Frontier) -> FrontierModel:
-    return FifoFrontier() if kind is Frontier.FIFO else LifoFrontier()
+class PriorityFrontier:
+    """The priority queue as a sorted list of ``(priority, event)``: the next out first (the
+    lowest priority; the oldest event among equals, as the heap of the loops takes them).
+    ``key`` gives an event's priority, the same float the loop pushed it with."""
+
+    def __init__(self, key: Callable[[int], float]) -> None:
+        self.key = key
+        self.queue: SortedList = SortedList()
+
+    def reset(self, root: int) -> None:
+        self.queue = SortedList([(self.key(root), root)])
+
+    def forward(self, g: int, succ: range) -> None:
+        _, first = self.queue.pop(0)
+        assert first == g, "the recorded step does not match the priority queue"
+        key = self.key
+        self.queue.update([(key(h), h) for h in succ])
+
+    def backward(self, g: int, succ: range) -> None:
+        key, queue = self.key, self.queue
+        for h in succ:
+            queue.remove((key(h), h))
+        queue.add((key(g), g))
+
+    @staticmethod
+    def rebuild_work(root: int, end: int, expanded: int) -> int:
+        return expanded + 2 * (end - root)
+
+    def rebuild_pieces(self, root: int, end: int, expanded: Iterable[Sequence[int]]) -> Iterator[int]:
+        """Become the queue after the pieces of ``expanded`` were taken off the events
+        ``root .. end - 1``: the events not taken off, sorted by priority."""
+        key = self.key
+        entries: list[tuple[float, int]] = []
+        yield from _open_events(root, end, expanded,
+                                lambda events: entries.extend((key(h), h) for h in events))
+        self.queue = SortedList(entries)
+        yield end - root
+
+    def __len__(self) -> int:
+        return len(self.queue)
+
+    def entries(self, start: int, stop: int) -> list[int]:
+        return [h for _, h in self.queue.islice(start, stop)]
+
+    def position(self, g: int) -> int:
+        """Where event ``g`` (on the frontier) stands in the order: 0 is the next out."""
+        return self.queue.index((self.key(g), g))
+
+
+FrontierModel = FifoFrontier | LifoFrontier | PriorityFrontier
+
+
+def frontier_model(kind: Frontier, key: Callable[[int], float] | None = None) -> FrontierModel:
+    """The model of ``kind``; a priority queue needs ``key``, an event's priority."""
+    if kind is Frontier.FIFO:
+        return FifoFrontier()
+    if kind is Frontier.LIFO:
+        return LifoFrontier()
+    assert key is not None, "a priority queue needs its events' priorities"
+    return PriorityFrontier(key)

@@ -11,6 +11,7 @@ from typing import Any
 
 from tui_search.engine.algorithms import Frontier
 from tui_search.engine.grid import DIRECTIONS, Cell
+from tui_search.engine.heuristics import HEURISTICS, admissible, priority_of
 from tui_search.engine.outcome import Outcome
 from tui_search.engine.recording import Recording, Step
 from tui_search.engine.search import ROOT_DIR
@@ -29,6 +30,56 @@ class RecordedTree(Recording):
         self._gen_step_filled = 0
         self._path: set[int] | None = None
         self._levels = array("i", [0])  # FIFO: the first event of each depth
+        self._next_same = array("i")  # event -> the next event of the same cell (-1: none)
+        self._last_of_cell: dict[int, int] = {}
+        goal = self.grid.goal
+        assert goal is not None  # the problem checked it
+        self._heuristic = HEURISTICS[self.semantics.heuristic]
+        self._priority = priority_of(self.algo.priority or "g", self._heuristic, goal)
+
+    # -- costs (the cost-ordered searches) ----------------------------------------------------
+    def gen_costs(self, g: int) -> tuple[float, float, float] | None:
+        """Event ``g``'s cost so far, the heuristic's estimate from its cell and its priority
+        (``g``, ``h`` and the priority the queue orders by); None for a queue or a stack."""
+        costs = self.rec.gen_g
+        if costs is None:
+            return None
+        cost = costs[g]
+        x, y = self.gen_cell(g)
+        goal = self.grid.goal
+        assert goal is not None
+        h = self._heuristic(abs(x - goal[0]), abs(y - goal[1])) if self.algo.informed else 0.0
+        return cost, h, self._priority(cost, x, y)
+
+    def priority_key(self, g: int) -> float:
+        """The priority event ``g`` was pushed with (the frontier model's order)."""
+        x, y = self.gen_cell(g)
+        return self._priority(self.rec.gen_g[g], x, y)  # type: ignore[index]
+
+    def pushed_again(self, g: int) -> int:
+        """The next event of event ``g``'s cell, -1 when none was recorded.  A cost-ordered
+        search pushes a cell again only with a lower g, so once that event is generated ``g``
+        is *stale*: it will be discarded when it comes off.  (Kept as recorded, extended
+        lazily: one dictionary look-up per event, paid only by those who ask.)"""
+        nxt, gen_node = self._next_same, self.rec.gen_node
+        if len(nxt) < len(gen_node):  # extend it over what was recorded since
+            last = self._last_of_cell
+            start = len(nxt)
+            nxt.extend(array("i", [-1]) * (len(gen_node) - start))
+            for e in range(start, len(gen_node)):
+                p = gen_node[e]
+                before = last.get(p)
+                if before is not None:
+                    nxt[before] = e
+                last[p] = e
+        return nxt[g]
+
+    @property
+    def admissible(self) -> bool:
+        """Can the run's heuristic be trusted to find the cheapest path (True when none is
+        used)?"""
+        return not self.algo.informed or admissible(self.semantics.heuristic,
+                                                    self.semantics.order)
 
     def gen_cell(self, g: int) -> Cell:
         return self.problem.unpad(self.rec.gen_node[g])

@@ -59,10 +59,13 @@ class Recording:
             raise ValueError("max_steps must be at least 1")
         self.grid = grid.copy()
         self.algorithm = algorithm
-        self.semantics = semantics
-        self.problem = Problem(self.grid, semantics)
+        self.semantics = semantics.for_algorithm(algo)
+        self.problem = Problem(self.grid, semantics, semantics.goal_test_for(algo))
         self.rec = Record()
         self.max_steps = max_steps
+        #: The cheapest path's cost when known from elsewhere (a benchmark's optimum for this
+        #: map, start, goal and rules), for the app to show beside the path's.
+        self.known_lowest: float | None = None
         # The loops are generator functions: close() ends one that gives up.
         self._loop = cast(Generator[int, None, None],
                           loop_for(algo, semantics)(self.problem, self.rec, min(CHUNK, max_steps)))
@@ -93,6 +96,8 @@ class Recording:
                 rec.discarded.pop()
             if rec.gen_depth is not None:
                 del rec.gen_depth[events:]
+            if rec.gen_g is not None:
+                del rec.gen_g[events:]
             while rec.iter_first_step[-1] > n:
                 rec.iter_first_step.pop()
                 rec.iter_root.pop()

@@ -18,6 +18,14 @@ The loop, as in AIMA's ``best_first_search`` with the frontier as a parameter::
             (tree search: on the path from the root to this node)
             push the child; if goal test on generate and it is the goal: found
 
+Uniform-cost, greedy best-first and A* take the entry of lowest priority (g, h or g + h; ties
+in the order pushed) from a priority queue.  A move costs 1 straight and sqrt(2) diagonally; a
+cell is pushed again whenever it is reached with a lower g than its best so far (lower by
+more than ``CHEAPER_BY``, 1e-9: the floats' rounding is no cheaper path) (even after it
+was expanded: it is *re-opened*), and an entry taken off with a g above its cell's best is
+*stale*: a discarded step.  Tree search keeps no best g: a successor is skipped only when it is
+on the node's own path.  The goal is tested on expansion unless told otherwise.
+
 Iterative deepening runs a depth-limited DFS with limits 0, 1, 2, ...: a node taken off at the
 limit is expanded with no successors, and within an iteration a cell is pushed again only when
 reached at a smaller depth than before (tree search: when not on the node's own path).  It stops
@@ -26,13 +34,15 @@ with no path when an iteration cuts nothing off at its limit.
 
 from __future__ import annotations
 
+import heapq
 from array import array
 from collections import deque
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
 from tui_search.engine.algorithms import Algorithm, Frontier
-from tui_search.engine.grid import DELTAS, Cell, Grid
+from tui_search.engine.grid import DELTAS, Cell, Grid, move_cost
+from tui_search.engine.heuristics import CHEAPER_BY, HEURISTICS, priority_of
 from tui_search.engine.outcome import Outcome
 from tui_search.engine.semantics import Semantics
 
@@ -46,6 +56,7 @@ class Node:
     parent: Node | None
     move: str | None  # the direction it was reached by (None for a root)
     depth: int
+    g: float = 0.0  # the path's cost from the root: 1 a straight move, sqrt(2) a diagonal
 
     def path(self) -> list[Cell]:
         """Cells from the root down to this node."""
@@ -90,6 +101,9 @@ class Expansion:
     new_root: Node | None = None  # iterative deepening: this step began a new iteration
 
 
+INF = float("inf")
+
+
 class ReferenceSearch:
     """Iterate over it for the steps; afterwards ``goal`` is the goal's node or None.
 
@@ -104,6 +118,7 @@ class ReferenceSearch:
             raise ValueError("the map needs a start and a goal")
         semantics.check(algorithm)
         self.grid, self.algorithm, self.semantics = grid, algorithm, semantics
+        self.goal_test = semantics.goal_test_for(algorithm)
         self.goal: Node | None = None
         self.generated = self.expanded = self.discarded = self.max_frontier = 0
         self.iterations = 0
@@ -115,6 +130,8 @@ class ReferenceSearch:
     def __iter__(self) -> Iterator[Expansion]:
         if self.algorithm.iterative:
             return self._deepening()
+        if self.algorithm.priority is not None:
+            return self._best_first(self.algorithm.priority)
         return self._search()
 
     # -- moves -------------------------------------------------------------------------------
@@ -140,7 +157,7 @@ class ReferenceSearch:
         return node
 
     def _is_goal_pushed(self, node: Node) -> bool:
-        if self.semantics.goal_test == "generate" and node.cell == self.grid.goal:
+        if self.goal_test == "generate" and node.cell == self.grid.goal:
             self.goal = node
             return True
         return False
@@ -169,7 +186,7 @@ class ReferenceSearch:
                     continue
                 visited.add(node.cell)
             self.expanded += 1
-            if sem.goal_test == "expand" and node.cell == self.grid.goal:
+            if self.goal_test == "expand" and node.cell == self.grid.goal:
                 self.goal = node
                 yield Expansion(k, node, (), False, True, len(frontier))
                 return
@@ -192,6 +209,57 @@ class ReferenceSearch:
             if found:
                 return
 
+    # -- uniform-cost, greedy best-first and A* ----------------------------------------------
+    def _best_first(self, order: str) -> Iterator[Expansion]:
+        graph = not self.semantics.tree_search
+        goal = self.grid.goal
+        assert goal is not None  # checked in __init__
+        priority = priority_of(order, HEURISTICS[self.semantics.heuristic], goal)
+        queue: list[tuple[float, int, Node]] = []  # (priority, event, node): ties oldest first
+        best: dict[Cell, float] = {}  # graph search: the lowest g each cell was reached with
+
+        def push(cell: Cell, parent: Node | None, move: str | None, g: float) -> Node:
+            node = Node(self.generated, cell, parent, move, parent.depth + 1 if parent else 0, g)
+            self.generated += 1
+            heapq.heappush(queue, (priority(g, *cell), node.event, node))
+            self.max_frontier = max(self.max_frontier, len(queue))
+            best[cell] = g
+            return node
+
+        root = push(self.grid.start, None, None, 0.0)  # type: ignore[arg-type]
+        if self._is_goal_pushed(root):
+            return
+        k = 0
+        while queue:
+            node = heapq.heappop(queue)[2]
+            k += 1
+            if graph and node.g > best[node.cell]:  # stale: its cell was reached cheaper since
+                self.discarded += 1
+                yield Expansion(k, node, (), True, False, len(queue))
+                continue
+            self.expanded += 1
+            if self.goal_test == "expand" and node.cell == self.grid.goal:
+                self.goal = node
+                yield Expansion(k, node, (), False, True, len(queue))
+                return
+            added = []
+            found = False
+            for move, cell in self._legal(node.cell):
+                g = node.g + move_cost(move)
+                if graph:
+                    if g + CHEAPER_BY >= best.get(cell, INF):
+                        continue
+                elif node.on_path(cell):
+                    continue
+                child = push(cell, node, move, g)
+                added.append(child)
+                if self._is_goal_pushed(child):
+                    found = True
+                    break
+            yield Expansion(k, node, tuple(added), False, found, len(queue))
+            if found:
+                return
+
     # -- iterative deepening -------------------------------------------------------------------
     def _deepening(self) -> Iterator[Expansion]:
         sem = self.semantics
@@ -209,7 +277,7 @@ class ReferenceSearch:
                 node = stack.pop()
                 k += 1
                 self.expanded += 1
-                if sem.goal_test == "expand" and node.cell == self.grid.goal:
+                if self.goal_test == "expand" and node.cell == self.grid.goal:
                     self.goal = node
                     yield Expansion(k, node, (), False, True, len(stack), limit, new_root)
                     return
@@ -272,7 +340,7 @@ def stream(
     goal = None if gave_up else search.goal
     return Outcome(
         algorithm=algorithm.key,
-        semantics=semantics,
+        semantics=semantics.for_algorithm(algorithm),
         path=goal.path() if goal else None,
         moves=goal.moves() if goal else None,
         expanded=expanded,

@@ -24,7 +24,7 @@ from collections.abc import Iterator, Sequence
 from enum import IntEnum
 from typing import Any
 
-from tui_search.engine.frontier import frontier_model
+from tui_search.engine.frontier import FrontierModel, frontier_model
 from tui_search.engine.grid import Cell
 from tui_search.engine.queries import DIR_NAMES, RecordedTree
 from tui_search.engine.recording import MAX_STEPS, Step
@@ -52,9 +52,12 @@ class Run(RecordedTree):
         # Per-cell counters at the current position: generation events and expansions.
         self._n_gen = array("i", bytes(4 * size))
         self._n_exp = array("i", bytes(4 * size))
-        self._frontier = frontier_model(self.algo.frontier)
+        self._frontier = self._new_frontier()
         self.k = 0
         self._enter_iteration(0)
+
+    def _new_frontier(self) -> FrontierModel:
+        return frontier_model(self.algo.frontier, self.priority_key)
 
     def _enter_iteration(self, it: int) -> None:
         """Set the position to the start of iteration ``it``: only its root is generated."""
@@ -162,7 +165,7 @@ class Run(RecordedTree):
         end = rec.step_end[k] if k >= first else root + 1
         last = max(k, first - 1)  # steps first .. last expanded events of this iteration
         piece = self.REBUILD_PIECE
-        frontier = frontier_model(self.algo.frontier)
+        frontier = self._new_frontier()
         size, cells = len(self.problem.walls), self.REBUILD_CELLS
         # Progress in events' worth of work: zeroing a counter costs about 1/32 of an event.
         n_exp_events = last - first + 1
@@ -272,6 +275,17 @@ class Run(RecordedTree):
     def peak_frontier(self, k: int | None = None) -> int:
         """The largest frontier size over steps 0..k (default: the position)."""
         return super().peak_frontier(self.k if k is None else k)
+
+    def times_reached(self, cell: Cell) -> tuple[int, int]:
+        """How often ``cell`` was generated and taken off the frontier, up to the position."""
+        p = self.problem.pad(cell)
+        return self._n_gen[p], self._n_exp[p]
+
+    def is_stale(self, g: int) -> bool:
+        """Is event ``g`` (of a cost-ordered search) superseded at the position: its cell
+        pushed again since, with a lower g?"""
+        nxt = self.pushed_again(g)
+        return 0 <= nxt < self.generated
 
     def frontier_len(self) -> int:
         return len(self._frontier)

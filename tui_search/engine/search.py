@@ -63,6 +63,7 @@ class Record:
     step_end: array = field(default_factory=lambda: array("i", [1]))
     step_exp: array | _InOrder = field(default_factory=lambda: _InOrder())
     gen_depth: array | None = None  # iterative deepening only
+    gen_g: array | None = None  # the cost-ordered searches only: each event's g
     iter_first_step: list[int] = field(default_factory=lambda: [1])
     iter_root: list[int] = field(default_factory=lambda: [0])
     iter_limit: list[int | None] = field(default_factory=lambda: [None])
@@ -86,7 +87,8 @@ class Record:
 
     def nbytes(self) -> int:
         """Bytes held by the arrays (for the memory benchmark)."""
-        arrays = [self.gen_node, self.step_end, self.step_exp, self.gen_depth, self.discarded]
+        arrays = [self.gen_node, self.step_end, self.step_exp, self.gen_depth, self.discarded,
+                  self.gen_g]
         return sum(a.buffer_info()[1] * a.itemsize for a in arrays if isinstance(a, array))
 
 
@@ -107,7 +109,10 @@ class Problem:
     test corners.
     """
 
-    def __init__(self, grid: Grid, semantics: Semantics = DEFAULT_SEMANTICS) -> None:
+    def __init__(self, grid: Grid, semantics: Semantics = DEFAULT_SEMANTICS,
+                 goal_test: str | None = None) -> None:
+        """``goal_test`` is the one in force (the algorithm's own when the semantics leave it
+        open: :meth:`~tui_search.engine.semantics.Semantics.goal_test_for`)."""
         if grid.start is None or grid.goal is None:
             raise ValueError("the map needs a start and a goal")
         for name, cell in (("start", grid.start), ("goal", grid.goal)):
@@ -126,6 +131,7 @@ class Problem:
         self.start = self.pad(grid.start)
         self.goal = self.pad(grid.goal)
         self.semantics = semantics
+        self.goal_test = goal_test or semantics.goal_test or "generate"
         order = semantics.order
         offsets = [DELTAS[name][1] * stride + DELTAS[name][0] for name in order]
         self.dir_of_offset = {off: DIR_CODE[name] for name, off in zip(order, offsets)}
@@ -298,8 +304,8 @@ def general(
     sem = problem.semantics
     closed = bytearray(problem.walls)
     close_on_push = sem.visit == "generate"
-    goal_on_push = problem.goal if sem.goal_test == "generate" else -1
-    goal_on_pop = -1 if sem.goal_test == "generate" else problem.goal
+    goal_on_push = problem.goal if problem.goal_test == "generate" else -1
+    goal_on_pop = -1 if problem.goal_test == "generate" else problem.goal
     start = problem.start
     rec.gen_node.append(start)
     if close_on_push:
@@ -433,7 +439,7 @@ def tree(problem: Problem, rec: Record, chunk: int = CHUNK, lifo: bool = False
     own path is skipped; the goal tested on generate or on expand.  Exponential by nature (a
     run stops at its step limit), so written plainly."""
     goal, moves, mask, walls = problem.goal, problem.moves, problem.mask, problem.walls
-    test_on_push = problem.semantics.goal_test == "generate"
+    test_on_push = problem.goal_test == "generate"
     gen_node = rec.gen_node
     parent = array("i", [-1])  # walked to test "on the node's own path"
     if lifo:
@@ -491,7 +497,7 @@ def iddfs(problem: Problem, rec: Record, chunk: int = CHUNK) -> Iterator[int]:
     with path checking); the goal may be tested when taken off instead of when pushed.
     """
     sem = problem.semantics
-    tree, test_on_push = sem.tree_search, sem.goal_test == "generate"
+    tree, test_on_push = sem.tree_search, problem.goal_test == "generate"
     walls, goal, moves, mask = problem.walls, problem.goal, problem.moves, problem.mask
     gen_node = rec.gen_node
     rec.gen_depth = gen_depth = array("i")
@@ -570,11 +576,15 @@ Loop = Callable[[Problem, Record, int], Iterator[int]]
 
 def loop_for(algorithm: Algorithm, semantics: Semantics) -> Loop:
     """The fastest loop that implements ``algorithm`` under ``semantics``."""
+    if algorithm.priority is not None:
+        from tui_search.engine.best_first import best_first_loop  # it builds on this module
+
+        return best_first_loop(algorithm.priority, semantics.tree_search)
     if algorithm.iterative:
         return iddfs
     lifo = algorithm.frontier is Frontier.LIFO
     tutorial_rules = (not semantics.tree_search and semantics.visit == "generate"
-                      and semantics.goal_test == "generate")
+                      and semantics.goal_test_for(algorithm) == "generate")
     if tutorial_rules:
         return dfs if lifo else bfs
     return partial(tree if semantics.tree_search else general, lifo=lifo)

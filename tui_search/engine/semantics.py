@@ -9,9 +9,13 @@
   pushed twice; ``expand``: when it is taken off and expanded, so a cell may sit on the frontier
   several times, and taking off a cell already expanded is a *discarded* step.
 * ``goal_test``: ``generate`` stops as soon as the goal is pushed; ``expand`` when it is taken
-  off the frontier (that step counts as expanded).
+  off the frontier (that step counts as expanded).  ``None`` is the algorithm's own
+  (:attr:`~tui_search.engine.algorithms.Algorithm.goal_test`): on generation for BFS, DFS and
+  iterative deepening, on expansion for the cost-ordered searches.
 * ``tree_search``: no visited set at all; a successor is skipped only when it lies on the path
   from the root to the node being expanded.  ``visit`` does not apply.
+* ``heuristic``: greedy best-first's and A*'s estimate of the cost to the goal
+  (:mod:`tui_search.engine.heuristics`); the other searches use none.
 
 The defaults are the tutorial's semantics.  A combination that makes no sense is refused by
 :meth:`Semantics.check` with a one-line ``ValueError``.
@@ -19,10 +23,11 @@ The defaults are the tutorial's semantics.  A combination that makes no sense is
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from tui_search.engine.algorithms import Algorithm
 from tui_search.engine.grid import DEFAULT_ORDER, DELTAS
+from tui_search.engine.heuristics import DEFAULT_HEURISTIC, HEURISTICS
 
 CORNER_RULES: tuple[str, ...] = ("always", "one", "never")
 VISIT_RULES: tuple[str, ...] = ("generate", "expand")
@@ -35,6 +40,7 @@ EXPLAIN: dict[str, str] = {
     "visit": "when a cell counts as visited: when pushed, or when taken off and expanded",
     "goal_test": "stop when the goal is pushed, or when it is taken off the frontier",
     "tree_search": "no visited set: only cells on the node's own path are skipped",
+    "heuristic": "greedy's and A*'s estimate of the cost from a cell to the goal",
 }
 
 
@@ -45,8 +51,9 @@ class Semantics:
     order: tuple[str, ...] = DEFAULT_ORDER
     corners: str = "always"
     visit: str = "generate"
-    goal_test: str = "generate"
+    goal_test: str | None = None  # None: the algorithm's own
     tree_search: bool = False
+    heuristic: str = DEFAULT_HEURISTIC
 
     def __post_init__(self) -> None:
         if not self.order or any(d not in DELTAS for d in self.order) or len(
@@ -56,7 +63,8 @@ class Semantics:
         for name, value, allowed in (
             ("corners", self.corners, CORNER_RULES),
             ("visit", self.visit, VISIT_RULES),
-            ("goal test", self.goal_test, GOAL_TESTS),
+            ("goal test", self.goal_test or GOAL_TESTS[0], GOAL_TESTS),
+            ("heuristic", self.heuristic, tuple(HEURISTICS)),
         ):
             if value not in allowed:
                 raise ValueError(f"{name} {value!r}: use {', '.join(allowed)}")
@@ -70,13 +78,30 @@ class Semantics:
                 f"the visit rule does not apply to {algorithm.short} "
                 "(it re-opens a cell reached at a smaller depth)"
             )
+        if algorithm.weighted and self.visit != "generate":
+            raise ValueError(
+                f"the visit rule does not apply to {algorithm.short} "
+                "(it re-opens a cell reached with a lower g)"
+            )
+
+    def goal_test_for(self, algorithm: Algorithm) -> str:
+        """The goal test in force for ``algorithm``: the one chosen, or the algorithm's own."""
+        return self.goal_test or algorithm.goal_test
+
+    def for_algorithm(self, algorithm: Algorithm) -> Semantics:
+        """The same choices with a goal test equal to ``algorithm``'s own written as None, so
+        that what differs from its defaults is what :meth:`differences` names."""
+        if self.goal_test == algorithm.goal_test:
+            return replace(self, goal_test=None)
+        return self
 
     @property
     def is_default(self) -> bool:
         return self == Semantics()
 
-    def differences(self) -> list[str]:
-        """What differs from the defaults, in a few words each ("visit on expand")."""
+    def differences(self, algorithm: Algorithm | None = None) -> list[str]:
+        """What differs from the defaults (``algorithm``'s, when given), in a few words each
+        ("visit on expand")."""
         out = []
         if self.order != DEFAULT_ORDER:
             out.append(f"moves {','.join(self.order)}")
@@ -86,8 +111,12 @@ class Semantics:
             out.append("tree search")
         elif self.visit != "generate":
             out.append(f"visit on {self.visit}")
-        if self.goal_test != "generate":
+        if self.goal_test is not None and (
+            algorithm is None or self.goal_test != algorithm.goal_test
+        ):
             out.append(f"goal test on {self.goal_test}")
+        if self.heuristic != DEFAULT_HEURISTIC and (algorithm is None or algorithm.informed):
+            out.append(f"heuristic {self.heuristic}")
         return out
 
     @property
@@ -102,14 +131,17 @@ class Semantics:
 
     def as_json(self, algorithm: Algorithm | None = None) -> dict:
         """Every choice by name; the visit rule is null where it does not apply (tree search,
-        iterative deepening)."""
-        no_visit = self.tree_search or (algorithm is not None and algorithm.iterative)
+        iterative deepening, the cost-ordered searches), the heuristic where none is used."""
+        no_visit = self.tree_search or (
+            algorithm is not None and (algorithm.iterative or algorithm.weighted))
+        goal_test = self.goal_test_for(algorithm) if algorithm else self.goal_test or "generate"
         return {
             "order": list(self.order),
             "corners": self.corners,
             "visit": None if no_visit else self.visit,
-            "goal_test": self.goal_test,
+            "goal_test": goal_test,
             "tree_search": self.tree_search,
+            "heuristic": self.heuristic if algorithm is None or algorithm.informed else None,
         }
 
 

@@ -97,8 +97,14 @@ class SearchApp(EditActions, FileActions, App[int]):
         semantics: Semantics = DEFAULT_SEMANTICS,
         max_steps: int = MAX_STEPS,
         unsaved_name: str = "untitled",
+        optimal_cost: float | None = None,
     ) -> None:
+        """``optimal_cost`` is a benchmark's lowest cost for this map, start and goal (a
+        MovingAI ``.scen`` row: 8 moves, no corner cutting), shown beside a path's cost while
+        the map, its ends and those rules stay as they are."""
         super().__init__()
+        self._benchmark = None if optimal_cost is None else (
+            bytes(grid.blocked), grid.start, grid.goal, optimal_cost)
         self.grid = grid
         self.max_steps = max_steps
         self.map_path = Path(path) if path is not None else None
@@ -181,8 +187,19 @@ class SearchApp(EditActions, FileActions, App[int]):
             self.note = note or NEEDS_ENDPOINTS
         else:
             self.search_run = Run(grid, self.algorithm, self.semantics, self.max_steps)
+            self.search_run.known_lowest = self._benchmark_cost()
         if self._mounted_ok:
             self._show()
+
+    def _benchmark_cost(self) -> float | None:
+        """The benchmark's lowest cost, if it applies to the map and the rules as they are."""
+        if self._benchmark is None:
+            return None
+        blocked, start, goal, cost = self._benchmark
+        grid, sem = self.grid, self.semantics
+        same_map = (grid.start, grid.goal) == (start, goal) and bytes(grid.blocked) == blocked
+        rules = sem.corners == "never" and len(sem.order) == 8
+        return cost if same_map and rules else None
 
     def _show(self, changed: list[Cell] | None = None, follow: bool = True) -> None:
         """Push the run at its position to every widget; ``changed`` limits the map repaint."""
@@ -398,7 +415,7 @@ class SearchApp(EditActions, FileActions, App[int]):
         self.algorithm = algorithm
         note = ""
         algo = get_algorithm(algorithm)
-        if self.semantics.visit != "generate" and algo.iterative:
+        if self.semantics.visit != "generate" and (algo.iterative or algo.weighted):
             # The visit rule does not apply to iterative deepening: back to the default.
             self.semantics = replace(self.semantics, visit="generate")
             note = f"Visit on expand does not apply to {algo.short}: back to visit on generate"

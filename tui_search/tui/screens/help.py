@@ -28,10 +28,10 @@ KEYS = (
     ("+  -", "faster / slower"),
     ("home  end", "first / last step (the answer)"),
     ("esc", "stop computing the last step (on a big map)"),
-    ("  ".join(a.app_key for a in ALGORITHMS.values()),
-     " / ".join(a.name.removesuffix(" search").lower() for a in ALGORITHMS.values())),
+    (" ".join(a.app_key for a in ALGORITHMS.values()),
+     " / ".join(a.short for a in ALGORITHMS.values()) + " (a new search, same map)"),
     ("r", "restart the search at step 0"),
-    (",", "search settings: moves, corners, visits, goal test, tree"),
+    (",", "settings: moves, corners, visit, goal test, tree, heuristic"),
     ("z", "overview: the whole map in half blocks"),
     ("ctrl+s", "save the map (to its file, in its format)"),
     ("w", "save the map as … (asks before replacing a file)"),
@@ -54,6 +54,8 @@ optimal: the path it returns is the one it happened to go down.
 
 [b]Iterative deepening[/b] (IDDFS) runs a depth-limited DFS with limits 0, 1, 2, ... so it \
 finds a path with the fewest moves while keeping DFS's small stack.
+
+The fewest moves is not the cheapest path when a diagonal costs √2. [b]Uniform-cost search[/b] (UCS) takes from a [b]priority queue[/b] the node whose path so far is cheapest (its cost [b]g[/b]): it finds the cheapest path. [b]A*[/b] adds [b]h[/b], an estimate of the cost still to go, and takes the lowest [b]f = g + h[/b]: the same cheapest path, expanding far fewer nodes, as long as h never overestimates (manhattan does, with diagonal moves). [b]Greedy best-first[/b] takes the lowest h alone: fast, and often wrong. A cell reached again more cheaply is pushed again; its older entry is [i]stale[/i] and is discarded when it comes off.
 
 Each expanded node turns blue and its successors are generated (dark). When the goal is \
 generated, the path is traced back up the tree from the goal to START (green)."""

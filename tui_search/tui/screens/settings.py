@@ -15,6 +15,7 @@ from textual.widgets import Button, Checkbox, Input, Label, RadioButton, RadioSe
 
 from tui_search.engine.algorithms import Algorithm
 from tui_search.engine.grid import DEFAULT_ORDER, parse_order
+from tui_search.engine.heuristics import HEURISTICS, INADMISSIBLE, admissible
 from tui_search.engine.semantics import (
     CORNER_RULES,
     EXPLAIN,
@@ -30,6 +31,7 @@ VALUE_WORDS: dict[str, str] = {
     "never": "if both sides are free",
     "generate": "when pushed",
     "expand": "when taken off",
+    **{name: name for name in HEURISTICS},
 }
 
 
@@ -56,6 +58,7 @@ class SettingsScreen(ModalScreen["Semantics | None"]):
         & .problem { color: $text-error; width: 100%; }
         & RadioSet { layout: horizontal; height: 1; width: 100%; }
         & RadioSet > RadioButton { width: auto; margin-right: 3; }
+        & #heuristic > RadioButton { margin-right: 1; }  /* five in a row */
         & Input { width: 100%; background: $boost; }
         & Horizontal { height: 1; margin-top: 1; }
         & Button { margin-right: 2; min-width: 10; }
@@ -85,10 +88,13 @@ class SettingsScreen(ModalScreen["Semantics | None"]):
             yield self._radios("visit", VISIT_RULES, sem.visit)
             yield Label("Goal test", classes="choice")
             yield Label(EXPLAIN["goal_test"], classes="explain")
-            yield self._radios("goal_test", GOAL_TESTS, sem.goal_test)
+            yield self._radios("goal_test", GOAL_TESTS, sem.goal_test_for(self.algorithm))
             yield Label("Graph or tree search", classes="choice")
             yield Checkbox("tree search", sem.tree_search, id="tree_search", compact=True)
             yield Label(EXPLAIN["tree_search"], classes="explain")
+            yield Label("Heuristic", classes="choice")
+            yield Label("", id="heuristic-explain", classes="explain")
+            yield self._radios("heuristic", tuple(HEURISTICS), sem.heuristic)
             with Horizontal():
                 yield Button("Apply", id="apply", variant="primary", compact=True)
                 yield Button("Defaults", id="defaults", compact=True)
@@ -106,6 +112,7 @@ class SettingsScreen(ModalScreen["Semantics | None"]):
 
     def on_mount(self) -> None:
         self._sync_visit()
+        self._sync_heuristic()
 
     # -- reading the controls ---------------------------------------------------------------
     def _choice(self, set_id: str) -> str:
@@ -124,9 +131,13 @@ class SettingsScreen(ModalScreen["Semantics | None"]):
             return None
         error.update("")
         tree = self.query_one("#tree_search", Checkbox).value
-        visit = "generate" if tree or self.algorithm.iterative else self._choice("visit")
+        algo = self.algorithm
+        visit = ("generate" if tree or algo.iterative or algo.weighted
+                 else self._choice("visit"))
+        goal_test = self._choice("goal-test")
         return Semantics(order=order, corners=self._choice("corners"), visit=visit,
-                         goal_test=self._choice("goal-test"), tree_search=tree)
+                         goal_test=None if goal_test == algo.goal_test else goal_test,
+                         tree_search=tree, heuristic=self._choice("heuristic"))
 
     def _sync_visit(self) -> None:
         """The visit rule does not apply to tree search nor to iterative deepening: say so
@@ -135,6 +146,9 @@ class SettingsScreen(ModalScreen["Semantics | None"]):
         radios = self.query_one("#visit", RadioSet)
         if self.algorithm.iterative:
             why = f"does not apply to {self.algorithm.short}: it re-opens cells reached shallower"
+        elif self.algorithm.weighted:
+            why = (f"does not apply to {self.algorithm.short}: it re-opens cells reached "
+                   "with a lower g")
         elif tree:
             why = "does not apply to tree search: it has no visited set"
         else:
@@ -142,12 +156,32 @@ class SettingsScreen(ModalScreen["Semantics | None"]):
         radios.disabled = bool(why)
         self.query_one("#visit-explain", Label).update(why or EXPLAIN["visit"])
 
+    def _sync_heuristic(self) -> None:
+        """The heuristic applies to greedy and A* only; an inadmissible one is named."""
+        radios = self.query_one("#heuristic", RadioSet)
+        radios.disabled = not self.algorithm.informed
+        if radios.disabled:
+            text = f"does not apply to {self.algorithm.short}: it uses no estimate"
+        else:
+            name = self._choice("heuristic")
+            order = self.query_one("#order", Input).value
+            try:
+                moves = parse_order(order)
+            except ValueError:
+                moves = DEFAULT_ORDER
+            text = INADMISSIBLE if not admissible(name, moves) else EXPLAIN["heuristic"]
+        self.query_one("#heuristic-explain", Label).update(text)
+
     # -- events ------------------------------------------------------------------------------
+    def on_radio_set_changed(self, event: RadioSet.Changed) -> None:
+        self._sync_heuristic()
+
     def on_checkbox_changed(self, event: Checkbox.Changed) -> None:
         self._sync_visit()
 
     def on_input_changed(self, event: Input.Changed) -> None:
         self.chosen()  # shows or clears the error as the order is typed
+        self._sync_heuristic()
 
     def on_input_submitted(self, event: Input.Submitted) -> None:
         self._apply()
@@ -168,10 +202,12 @@ class SettingsScreen(ModalScreen["Semantics | None"]):
     def _show(self, sem: Semantics) -> None:
         self.query_one("#order", Input).value = ",".join(sem.order)
         for name, value in (("corners", sem.corners), ("visit", sem.visit),
-                            ("goal_test", sem.goal_test)):
+                            ("goal_test", sem.goal_test_for(self.algorithm)),
+                            ("heuristic", sem.heuristic)):
             self.query_one(f"#{name}-{value}", RadioButton).value = True
         self.query_one("#tree_search", Checkbox).value = sem.tree_search
         self._sync_visit()
+        self._sync_heuristic()
 
     def action_cancel(self) -> None:
         self.dismiss(None)

@@ -1,4 +1,5 @@
-"""The frontier: BFS's FIFO queue or DFS's / iterative deepening's LIFO stack, one entry a line.
+"""The frontier: BFS's FIFO queue, DFS's / iterative deepening's LIFO stack, or the priority
+queue of uniform-cost, greedy best-first and A* search, one entry a line.
 
 The panel is a line-API :class:`~textual.scroll_view.ScrollView`: it holds no copy of the
 frontier, only the run and the position it was last shown.  ``render_line`` asks the run for the
@@ -9,7 +10,9 @@ The first line counts the entries (``4 in the queue``: the border title says onl
 frontier is, since setting a title repaints the whole panel); then each line reads
 ``▶+ (2,1) NE`` -- a marker column (``▶`` the entry expanded next, ``+`` an entry
 the step just taken added), the cell, and the move that reached it -- with ``d=3`` before the
-move for iterative deepening.  The first and last lines carry a hint (``← front (next out)`` /
+move for iterative deepening, and the priority with what it adds up after the move for a
+priority queue (``f 6.41  g 2.41  h 4.00``; an entry whose cell was pushed again with a lower g
+is struck out as *stale*).  The first and last lines carry a hint (``← front (next out)`` /
 ``← back (newest)`` for a queue, ``← top (next out)`` / ``← bottom (oldest)`` for a stack) so a
 student sees which end is which.
 """
@@ -23,6 +26,7 @@ from rich.style import Style
 from textual.geometry import Size
 
 from tui_search.engine.algorithms import Frontier
+from tui_search.engine.heuristics import octile
 from tui_search.tui.narration import gave_up_text, group_digits
 from tui_search.tui.widgets.line_panel import LinePanel, set_virtual_size
 
@@ -54,6 +58,7 @@ class FrontierPanel(LinePanel):
         & > .frontier-panel--empty { color: $text-muted; text-style: italic; }
         & > .frontier-panel--no-path { color: $text-error; text-style: bold; }
         & > .frontier-panel--discarded { color: $text-error; text-style: strike; }
+        & > .frontier-panel--stale { color: $text-muted; text-style: strike; }
     }
     """
 
@@ -66,6 +71,7 @@ class FrontierPanel(LinePanel):
         "frontier-panel--empty",
         "frontier-panel--no-path",
         "frontier-panel--discarded",
+        "frontier-panel--stale",
     }
     """
     | Class | Description |
@@ -78,6 +84,7 @@ class FrontierPanel(LinePanel):
     | `frontier-panel--empty` | The line shown for an empty frontier. |
     | `frontier-panel--no-path` | The line shown when the search ended without a path. |
     | `frontier-panel--discarded` | The entry a discarded step threw away (visit on expand). |
+    | `frontier-panel--stale` | A priority-queue entry whose cell was pushed again cheaper. |
     """
 
     def __init__(self, **widget_args: Any) -> None:  # name, id, classes, disabled
@@ -90,6 +97,7 @@ class FrontierPanel(LinePanel):
         self._iddfs = False
         self._coord_w = 5  # width of "(x,y)" for the largest cell of the map
         self._depth_w = 0  # width of "d=N" (iterative deepening only)
+        self._cost_w = 0  # width of one cost figure (a priority queue only)
         self._hint_col = 0  # column where end hints start
         self._empty_text = ""
         self._count_text = ""  # the first line: "4 in the queue"
@@ -119,27 +127,37 @@ class FrontierPanel(LinePanel):
         self._coord_w = len(f"({grid.width - 1},{grid.height - 1})")
         limit = run.depth_limit() if self._iddfs else None
         self._depth_w = len(f"d={limit}") if limit is not None else 0
-        # marker (3) + coords + " " [+ d=N + " "] + move: the move last, so that every column
-        # stands one space from the next whatever its label (START d=0 / S d=1 alike)
-        entry_w = 3 + self._coord_w + 1 + (self._depth_w + 1 if self._depth_w else 0) + DIR_W
+        # The longest straight-line cost across the map: most figures fit, a longer one
+        # pushes the rest of its line along.
+        self._cost_w = (len(f"{octile(grid.width - 1, grid.height - 1):.2f}")
+                        if run.algo.weighted else 0)
+        # marker (3) + coords + " " [+ d=N + " "] + move [+ costs]: the move after the depth,
+        # so that every column stands one space from the next whatever its label (START d=0 /
+        # S d=1 alike)
+        entry_w = (3 + self._coord_w + 1 + (self._depth_w + 1 if self._depth_w else 0) + DIR_W
+                   + (len(self._costs(run, 0)) if self._cost_w else 0))
         self._hint_col = entry_w + HINT_GAP
         self._discarded_text = ""
         if run.k and run.is_discarded(run.k):
             g = run.rec.exp(run.k)
             x, y = run.gen_cell(g)
-            self._discarded_text = f"✗  ({x},{y}) {run.gen_dir(g)}  discarded"
-        self.show_titles(kind.title,
+            why = "stale, discarded" if run.algo.weighted else "discarded"
+            self._discarded_text = (f"✗  ({x},{y}) {run.gen_dir(g).ljust(DIR_W)}"
+                                    f"{self._costs(run, g)}  {why}")
+        self.show_titles(run.algo.frontier_title,
                          "▶ next out  + just added" if n else "")
         if n:
             self._empty_text = ""
             self._count_text = kind.count_text(group_digits(n))
             hint = max(len(self._hints(kind, 0, n)), len(self._hints(kind, n - 1, n)))
-            width = max(self._hint_col + hint, cell_len(self._count_text),
+            stale = len("stale") if self._cost_w else 0
+            width = max(self._hint_col + stale + hint, cell_len(self._count_text),
                         cell_len(self._discarded_text))
             height = self._top() + n
         else:
             self._empty_text = self._describe_empty(run)
-            width, height = cell_len(self._empty_text), 1
+            width = max(cell_len(self._empty_text), cell_len(self._discarded_text))
+            height = 2 if self._discarded_text else 1
         set_virtual_size(self, Size(width, height))
         if moved:
             self.scroll_to(0, 0, animate=False, immediate=True, force=True)
@@ -150,6 +168,18 @@ class FrontierPanel(LinePanel):
         return 2 if self._discarded_text else 1
 
     # -- text, for tests and for render_line ------------------------------------------------
+    def _costs(self, run: Run, g: int) -> str:
+        """A priority queue's figures for event ``g``, the priority first: "  f 6.41 g 2.41
+        h 4.00" (A*), "  g 2.41" (UCS), "  h 4.00 g 2.41" (greedy); empty otherwise."""
+        costs = run.gen_costs(g)
+        if costs is None:
+            return ""
+        cost, h, f = costs
+        w = self._cost_w
+        figures = {"g": [("g", cost)], "h": [("h", h), ("g", cost)],
+                   "g+h": [("f", f), ("g", cost), ("h", h)]}[run.algo.priority or "g"]
+        return " " + "".join(f" {name} {value:>{w}.2f}" for name, value in figures)
+
     @staticmethod
     def _hints(kind: Frontier, i: int, n: int) -> str:
         only, next_out, far_end = kind.end_hints
@@ -182,6 +212,8 @@ class FrontierPanel(LinePanel):
             return []
         n = self._count
         if not n:
+            if y == 1 and self._discarded_text:  # the entry the step threw away
+                return [(self._discarded_text, "frontier-panel--discarded")]
             if y:
                 return []
             cls = "frontier-panel--no-path" if "no path" in self._empty_text else (
@@ -212,6 +244,14 @@ class FrontierPanel(LinePanel):
         move = run.gen_dir(g).ljust(DIR_W)
         parts.append((move, main))
         used += len(move)
+        if self._cost_w:
+            costs = self._costs(run, g)
+            stale = run.is_stale(g)
+            parts.append((costs, "frontier-panel--stale" if stale else main))
+            used += len(costs)
+            if stale:  # in the hint column (a priority queue has no end hints)
+                parts.append((" " * max(HINT_GAP, self._hint_col - used), main))
+                parts.append(("stale", "frontier-panel--stale"))
         hint = self._hints(self._kind, y, n)
         if hint:
             parts.append((" " * max(HINT_GAP, self._hint_col - used), "frontier-panel--entry"))

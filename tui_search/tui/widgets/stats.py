@@ -16,6 +16,7 @@ from textual.strip import Strip
 from textual.widget import Widget
 
 from tui_search.engine.algorithms import get_algorithm
+from tui_search.engine.heuristics import INADMISSIBLE
 from tui_search.engine.run import Run
 from tui_search.tui.narration import narrate, result_text, status_parts
 from tui_search.tui.widgets.line_panel import CachedStyles, Parts
@@ -69,8 +70,11 @@ class Stats(CachedStyles, Widget):
     ) -> None:
         sep = (" │ ", "stats--label")
         status: Parts = [(get_algorithm(algorithm).short, "stats--value")]
-        if run is not None and not run.semantics.is_default:  # always say what differs
-            status.append((" · " + " · ".join(run.semantics.differences()), "stats--note"))
+        differences = run.semantics.differences(run.algo) if run is not None else []
+        if run is not None and not run.admissible:
+            differences.append(INADMISSIBLE)
+        if differences:  # always say what differs
+            status.append((" · " + " · ".join(differences), "stats--note"))
         if run is not None:
             for label, value in status_parts(run):
                 status += [sep, (f"{label} ", "stats--label"), (value, "stats--value")]

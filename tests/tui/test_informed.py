@@ -1,0 +1,151 @@
+"""Uniform-cost, greedy best-first and A* in the app: the keys, the priority queue panel, the
+status line's g, h and f, the narration, the lowest cost beside the path's, the heuristic in
+the settings and the inadmissible warning."""
+
+from __future__ import annotations
+
+from tests.tui.test_app import ARENA, MAPS, stats, sync, tutorial_app, wait_until
+from tui_search.engine.grid import Grid
+from tui_search.engine.heuristics import INADMISSIBLE
+from tui_search.engine.mapfile import load_map, load_scenario
+from tui_search.engine.semantics import Semantics
+from tui_search.tui.app import SearchApp
+from tui_search.tui.screens.settings import SettingsScreen
+from tui_search.tui.widgets.frontier_panel import FrontierPanel
+
+SIZE = (120, 36)
+
+
+def panel_lines(app: SearchApp) -> list[str]:
+    panel = app.query_one(FrontierPanel)
+    return [panel.line_text(y) for y in range(12)]
+
+
+@sync
+async def test_the_keys_pick_the_informed_searches_from_the_registry() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        for key, algorithm, title in (("4", "ucs", "Priority queue (UCS: g)"),
+                                      ("5", "greedy", "Priority queue (Greedy: h)"),
+                                      ("6", "astar", "Priority queue (A*: f = g + h)")):
+            await pilot.press(key)
+            assert app.search_run.algorithm == algorithm and app.search_run.k == 0
+            assert app.query_one(FrontierPanel).border_title == title
+
+
+@sync
+async def test_a_star_shows_its_queue_in_order_with_g_h_f_and_stale_entries() -> None:
+    """The tutorial under A* after five steps (the README's example): (0,3) was pushed at
+    g 3.83, then reached at g 3.00 -- its first entry is struck out as stale."""
+    app = tutorial_app("astar")
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press(*"nnnnn")
+        lines = panel_lines(app)
+        assert lines[0] == "5 in the priority queue"
+        assert lines[1] == "▶  (2,1) NE  f 7.24 g 3.83 h 3.41"
+        assert lines[4] == " + (0,3) S   f 8.41 g 3.00 h 5.41"
+        assert lines[5].startswith("   (0,3) SW  f 9.24 g 3.83 h 5.41") and "stale" in lines[5]
+        status, narration = stats(app)
+        assert "f 7.00 (g 2.00 + h 5.00)" in status
+        assert narration == ("Expanded (0,2) f = 7.00 (g 2.00 + h 5.00): added S; (0,3) reached "
+                             "with a lower g")
+        # back one step: the second (0,3) is not pushed yet, so the first is not stale
+        await pilot.press("p")
+        assert not any("stale" in line for line in panel_lines(app))
+        await pilot.press("n")
+        assert lines == panel_lines(app)
+
+
+@sync
+async def test_uniform_cost_shows_g_only_and_ends_on_the_lowest_cost() -> None:
+    app = tutorial_app("ucs")
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("n", "n")
+        assert panel_lines(app)[1].endswith("g 2.00") or " g " in panel_lines(app)[1]
+        assert " h " not in panel_lines(app)[1]
+        await pilot.press("end")
+        await wait_until(pilot, lambda: app.search_run.at_end)
+        assert "cost 8.66 (the lowest)" in stats(app)[1]
+        assert stats(app)[1].startswith("Took the goal (5,2) off the priority queue: found")
+
+
+@sync
+async def test_bfs_on_exercise_one_is_shown_the_cheaper_path() -> None:
+    """The fewest moves is not the cheapest: BFS's path costs 2.83 where 2.00 exists."""
+    grid = load_map(MAPS / "exercise1-bfs-wins.txt")
+    app = SearchApp(grid)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("end")
+        await wait_until(pilot, lambda: app.search_run.at_end)
+        assert "cost 2.83 (lowest 2.00)" in stats(app)[1]
+
+
+@sync
+async def test_a_stale_step_is_discarded_and_says_why() -> None:
+    rows = ["S..#.", "...#G"]
+    grid = Grid(5, 2, bytearray(1 if c == "#" else 0 for row in rows for c in row),
+                start=(0, 0), goal=(4, 1))
+    app = SearchApp(grid, algorithm="astar")
+    async with app.run_test(size=SIZE) as pilot:
+        run = app.search_run
+        run.advance()
+        k = run.rec.discarded[0]
+        for _ in range(k):
+            await pilot.press("n")
+        assert run.is_discarded(run.k)
+        narration = stats(app)[1]
+        assert "stale (its cell was reached with a lower g since), discarded" in narration
+        assert panel_lines(app)[1].startswith("✗ ") and "stale, discarded" in panel_lines(app)[1]
+
+
+@sync
+async def test_the_heuristic_is_a_setting_and_an_inadmissible_one_is_named() -> None:
+    app = tutorial_app("astar")
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("comma")
+        screen = app.screen
+        assert isinstance(screen, SettingsScreen)
+        await pilot.click("#heuristic-manhattan")
+        await pilot.pause()
+        assert "inadmissible" in str(screen.query_one("#heuristic-explain").render())
+        await pilot.click("#apply")
+        await pilot.pause()
+        assert app.search_run.semantics.heuristic == "manhattan"
+        status = stats(app)[0]
+        assert "heuristic manhattan" in status and INADMISSIBLE in status
+        # the heuristic does not apply to BFS: its settings grey it out, its status says nothing
+        await pilot.press("1")
+        assert "manhattan" not in stats(app)[0]
+        await pilot.press("comma")
+        assert app.screen.query_one("#heuristic").disabled
+
+
+@sync
+async def test_switching_to_a_star_keeps_its_own_goal_test() -> None:
+    """The settings keep "the algorithm's own" goal test: BFS tests on generation, A* on
+    expansion, and neither is shown as a difference."""
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("comma")
+        await pilot.click("#apply")
+        await pilot.press("6")
+        run = app.search_run
+        assert run.problem.goal_test == "expand" and "goal test" not in stats(app)[0]
+        await pilot.press("comma")
+        assert app.screen.query_one("#goal_test-expand").value
+
+
+@sync
+async def test_the_benchmark_optimum_is_shown_while_the_map_is_unchanged() -> None:
+    scen = load_scenario(ARENA.with_suffix(".map.scen"), 5)
+    grid = load_map(ARENA, start=scen.start, goal=scen.goal)
+    app = SearchApp(grid, path=ARENA, algorithm="ucs", semantics=Semantics(corners="never"),
+                    optimal_cost=scen.optimal_length)
+    async with app.run_test(size=SIZE) as pilot:
+        assert app.search_run.known_lowest == scen.optimal_length
+        await pilot.press("end")
+        await wait_until(pilot, lambda: app.search_run.at_end)
+        assert "cost 2.00 (the lowest)" in stats(app)[1]
+        app.cursor_cell = (0, 0)
+        await pilot.press("o")  # an edit: the benchmark's figure no longer applies
+        assert app.search_run.known_lowest is None

@@ -1,0 +1,193 @@
+"""The recorded loops of uniform-cost search, greedy best-first search and A*.
+
+One loop serves the three: they differ only in the priority an entry is pushed with (``g``,
+``h`` or ``g + h``; :func:`~tui_search.engine.heuristics.priority_of`).  The definition is the
+reference loop (:meth:`tui_search.engine.reference.ReferenceSearch._best_first`), and a
+hypothesis test holds these equal to it, array for array.
+
+The queue is a binary heap of ``(priority, event, cell, g)``: the event number breaks ties, so
+equal priorities come out in the order they were pushed (as in the frontier model the app
+shows, :class:`~tui_search.engine.frontier.PriorityFrontier`).  A cell is pushed again when
+reached with a lower g than its best so far (by more than
+:data:`~tui_search.engine.heuristics.CHEAPER_BY`: float noise), and an entry taken off with a g above its cell's
+best is stale: a discarded step ("lazy deletion": nothing is removed from the heap early).
+
+Besides the arrays every loop records, these record ``gen_g``: each event's g, from which the
+app shows g, h and f and orders its frontier.
+"""
+
+from __future__ import annotations
+
+import heapq
+from array import array
+from collections.abc import Iterator
+from functools import partial
+from itertools import repeat
+from struct import pack
+
+from tui_search.engine.grid import DIRECTIONS, SQRT2
+from tui_search.engine.heuristics import CHEAPER_BY, HEURISTICS
+from tui_search.engine.search import CHUNK, Loop, Problem, Record, _on_path
+
+INF = float("inf")
+
+
+def _costed_moves(problem: Problem) -> list[tuple[tuple[int, float], ...]]:
+    """``problem.moves`` with each offset's cost: 1 straight, sqrt(2) diagonally."""
+    def cost(off: int) -> float:
+        return SQRT2 if len(DIRECTIONS[problem.dir_of_offset[off]]) == 2 else 1.0
+
+    return [tuple((off, cost(off)) for off in moves) for moves in problem.moves]
+
+
+def best_first(problem: Problem, rec: Record, chunk: int = CHUNK, priority: str = "g+h"
+               ) -> Iterator[int]:
+    """Graph search in order of ``priority`` (the algorithm's: "g", "h" or "g+h")."""
+    moves, mask, walls, stride = _costed_moves(problem), problem.mask, problem.walls, problem.stride
+    goal, start = problem.goal, problem.start
+    goal_on_push = goal if problem.goal_test == "generate" else -1
+    goal_on_pop = -1 if problem.goal_test == "generate" else goal
+    heuristic = HEURISTICS[problem.semantics.heuristic]
+    gy, gx = divmod(goal, stride)
+    use_h, use_g = "h" in priority, "g" in priority
+    best = array("d", [INF]) * len(walls)  # the lowest g each cell was pushed with
+    rec.step_exp = step_exp = array("i", [-1])
+    rec.gen_g = gen_g = array("d")
+    rec.gen_node.append(start)
+    gen_g.append(0.0)
+    best[start] = 0.0
+    if start == goal_on_push:
+        rec.goal_gen, rec.done = 0, True
+        return
+    if use_h:
+        sy, sx = divmod(start, stride)
+        h0 = heuristic(abs(sx - gx), abs(sy - gy))
+        f0 = 0.0 + h0 if use_g else h0
+    else:
+        f0 = 0.0
+    heap = [(f0, 0, start, 0.0)]
+    pop, push = heapq.heappop, heapq.heappush
+    nodes: list[int] = []
+    gs: list[float] = []
+    ends: list[int] = []
+    exps: list[int] = []
+    discarded: list[int] = []
+    add, add_g, add_end, add_exp = nodes.append, gs.append, ends.append, exps.append
+
+    def flush() -> None:
+        for arr, buf, code in ((rec.gen_node, nodes, "i"), (gen_g, gs, "d"),
+                               (rec.step_end, ends, "i"), (step_exp, exps, "i"),
+                               (rec.discarded, discarded, "i")):
+            if buf:
+                arr.frombytes(pack(f"{len(buf)}{code}", *buf))
+                buf.clear()
+
+    count, steps = 1, 0
+    while heap:
+        for _ in repeat(None, chunk):
+            try:
+                _, e, n, g = pop(heap)
+            except IndexError:
+                break
+            add_exp(e)
+            steps += 1
+            if g > best[n]:  # stale: the cell was pushed with a lower g since
+                discarded.append(steps)
+                add_end(count)
+                continue
+            if n == goal_on_pop:
+                add_end(count)
+                flush()
+                rec.goal_gen, rec.done = e, True
+                return
+            for off, cost in moves[mask[n]]:
+                m = n + off
+                if walls[m]:
+                    continue
+                ng = g + cost
+                if ng + CHEAPER_BY >= best[m]:
+                    continue
+                best[m] = ng
+                if use_h:
+                    y, x = divmod(m, stride)
+                    h = heuristic(abs(x - gx), abs(y - gy))
+                    push(heap, (ng + h if use_g else h, count, m, ng))
+                else:
+                    push(heap, (ng, count, m, ng))
+                add(m)
+                add_g(ng)
+                count += 1
+                if m == goal_on_push:
+                    add_end(count)
+                    flush()
+                    rec.goal_gen, rec.done = count - 1, True
+                    return
+            add_end(count)
+        flush()
+        if heap:
+            yield steps
+    rec.done = True
+
+
+def best_first_tree(problem: Problem, rec: Record, chunk: int = CHUNK, priority: str = "g+h"
+                    ) -> Iterator[int]:
+    """Tree search in order of ``priority``: no best g, a successor on the node's own path is
+    skipped, nothing is stale.  Exponential by nature (a run stops at its step limit), so
+    written plainly, as :func:`~tui_search.engine.search.tree` is."""
+    moves, mask, walls, stride = _costed_moves(problem), problem.mask, problem.walls, problem.stride
+    goal, start = problem.goal, problem.start
+    test_on_push = problem.goal_test == "generate"
+    heuristic = HEURISTICS[problem.semantics.heuristic]
+    gy, gx = divmod(goal, stride)
+    use_h, use_g = "h" in priority, "g" in priority
+
+    def key(g: float, p: int) -> float:
+        if not use_h:
+            return g
+        y, x = divmod(p, stride)
+        h = heuristic(abs(x - gx), abs(y - gy))
+        return g + h if use_g else h
+
+    gen_node, step_end = rec.gen_node, rec.step_end
+    rec.step_exp = step_exp = array("i", [-1])
+    rec.gen_g = gen_g = array("d", [0.0])
+    parent = array("i", [-1])
+    gen_node.append(start)
+    if test_on_push and start == goal:
+        rec.goal_gen, rec.done = 0, True
+        return
+    heap = [(key(0.0, start), 0, start, 0.0)]
+    steps = 0
+    while heap:
+        _, e, n, g = heapq.heappop(heap)
+        step_exp.append(e)
+        steps += 1
+        if not test_on_push and n == goal:
+            step_end.append(len(gen_node))
+            rec.goal_gen, rec.done = e, True
+            return
+        for off, cost in moves[mask[n]]:
+            m = n + off
+            if walls[m] or _on_path(m, e, gen_node, parent):
+                continue
+            ng = g + cost
+            heapq.heappush(heap, (key(ng, m), len(gen_node), m, ng))
+            gen_node.append(m)
+            gen_g.append(ng)
+            parent.append(e)
+            if test_on_push and m == goal:
+                step_end.append(len(gen_node))
+                rec.goal_gen, rec.done = len(gen_node) - 1, True
+                return
+        step_end.append(len(gen_node))
+        if steps % chunk == 0 and heap:
+            yield steps
+    rec.done = True
+
+
+def best_first_loop(priority: str, tree_search: bool) -> Loop:
+    """The loop for a priority queue ordered by ``priority``."""
+    return partial(best_first_tree if tree_search else best_first, priority=priority)
+
+
+__all__ = ["best_first", "best_first_loop", "best_first_tree"]
