@@ -13,6 +13,7 @@ from textual.screen import ModalScreen
 from textual.widgets import Static
 
 from tui_search.engine.algorithms import ALGORITHMS
+from tui_search.tui.themes import THEMES
 from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.legend import Legend
 
@@ -33,9 +34,11 @@ KEYS = (
     ("r", "restart the search at step 0"),
     (",", "search settings: moves, corners, visits, goal test, tree"),
     ("z", "overview: the whole map in half blocks"),
+    ("t", "next colour theme: " + ", ".join(t.title.lower() for t in THEMES.values())),
     ("ctrl+s", "save the map (to its file, in its format)"),
     ("w", "save the map as … (asks before replacing a file)"),
     ("ctrl+o", "open a map … (asks first when there are unsaved edits)"),
+    ("ctrl+p", "command palette: every command by name (algorithms, themes, …)"),
     ("?", "this help"),
     ("q", "quit (asks first when there are unsaved edits)"),
 )
