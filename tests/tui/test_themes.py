@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 from rich.color import Color
-from textual.command import CommandPalette
+from textual.command import CommandList, CommandPalette
 
 from tests.textual_internals import notifications, repainted
 from tests.tui.test_app import SIZE, TUTORIAL, sync, tutorial_app
@@ -37,14 +37,27 @@ def config_notes(app: SearchApp) -> list[str]:
     return [n.message for n in notifications(app) if n.title == "Config file"]
 
 
+async def hits(pilot) -> CommandList:
+    """The palette's list once its search (in a worker) has answered."""
+    found = pilot.app.screen.query_one(CommandList)
+    for _ in range(200):
+        await pilot.pause(0.02)
+        if found.option_count and found.highlighted is not None:
+            break
+    await pilot.pause()
+    return found
+
+
 async def palette_run(pilot, query: str) -> None:
-    """Open the palette, type ``query``, take the first command found."""
+    """Open the palette, type ``query`` (which names one command), take what it found."""
     await pilot.press("ctrl+p")
     await pilot.pause()
-    assert isinstance(pilot.app.screen, CommandPalette)
+    palette = pilot.app.screen
+    assert isinstance(palette, CommandPalette)
     await pilot.press(*query)
-    await pilot.pause(0.3)  # the palette searches in a worker
-    await pilot.press("down", "enter")
+    found = await hits(pilot)
+    assert found.option_count == 1, [str(o.prompt) for o in found.options]
+    await pilot.press("enter")
     await pilot.pause()
 
 
@@ -85,14 +98,34 @@ async def test_a_theme_command_in_the_palette_switches_and_is_remembered() -> No
 
 
 @sync
-async def test_switching_draws_what_starting_in_the_theme_draws() -> None:
-    """Nothing keeps the old theme's colours (the map and the panels cache their styles)."""
+async def test_textuals_theme_picker_offers_the_apps_themes_and_remembers_too() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        app.action_change_theme()  # what the palette's own "Theme" command does
+        await pilot.pause()
+        await pilot.press(*"colour")
+        found = await hits(pilot)
+        assert [str(o.prompt) for o in found.options] == ["colour-blind"]
+        await pilot.press("enter")
+        await pilot.pause()
+        assert app.theme == "colour-blind"
+    assert json.loads(config_file().read_text("utf-8")) == {"theme": "colour-blind"}
+
+
+@pytest.mark.parametrize("name", [n for n in THEMES if n != DEFAULT_THEME])
+@sync
+async def test_switching_draws_what_starting_in_the_theme_draws(name) -> None:
+    """Nothing keeps the old theme's colours (the map and the panels cache their styles), and
+    an app started in a theme is styled by it from the first frame."""
     drawn = []
-    for app, keys in ((tutorial_app(), ["n", "n", "t"]),
-                      (SearchApp(load_map(TUTORIAL), path=TUTORIAL, theme="light"), ["n", "n"])):
+    for app, switch in ((tutorial_app(), True),
+                        (SearchApp(load_map(TUTORIAL), path=TUTORIAL, theme=name), False)):
         async with app.run_test(size=SIZE) as pilot:
-            await pilot.press(*keys)
+            await pilot.press("n", "n")
+            if switch:
+                app.set_theme(name)
             await pilot.pause()
+            assert app.theme == name
             drawn.append(await repainted(pilot))
     assert drawn[0] == drawn[1]
 
@@ -238,7 +271,7 @@ async def test_the_palette_runs_the_apps_actions() -> None:
         await palette_run(pilot, "search settings")
         assert type(app.screen).__name__ == "SettingsScreen"
         await pilot.press("escape")
-        await palette_run(pilot, "help: keys")
+        await palette_run(pilot, "help: keys, colours")
         assert type(app.screen).__name__ == "HelpScreen"
 
 

@@ -120,7 +120,17 @@ class SearchApp(EditActions, FileActions, App[int]):
         self._config_noted = False  # a config problem is said once a run
         for own in textual_themes():
             self.register_theme(own)
-        self.theme = theme or self.config.theme or DEFAULT_THEME
+        chosen = self.get_theme(theme or self.config.theme or DEFAULT_THEME)
+        assert chosen is not None, "the command line and the config offer only the app's themes"
+        if chosen.dark == self.current_theme.dark:
+            # What Textual set up for its default (the ANSI palette, -dark-mode) holds: set the
+            # name and the stylesheet's variables without the watcher, whose restyle of a
+            # stylesheet not read yet would cost the first frame ~10 ms.  (A light theme takes
+            # the watcher: it changes those.)
+            self.set_reactive(App.theme, chosen.name)
+            self.stylesheet.set_variables(self.get_css_variables())
+        else:
+            self.theme = chosen.name
         for name in list(self.available_themes):  # only the app's: their map colours are set
             if name not in THEMES:
                 self.unregister_theme(name)

@@ -48,7 +48,7 @@ class SearchCommands(Provider):
         for spec in THEMES.values():
             now = " · the theme now" if app.theme == spec.name else ""
             found.append((f"Theme: {spec.title}", partial(app.set_theme, spec.name),
-                          f"{spec.description} (key t cycles){now}"))
+                          f"{spec.description} · t cycles the themes{now}"))
         bindings = {b.action: b for b in Binding.make_bindings(app.BINDINGS)}
         for action, name in ACTIONS.items():
             binding = bindings[action]
