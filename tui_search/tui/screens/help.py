@@ -59,7 +59,8 @@ optimal: the path it returns is the one it happened to go down.
 finds a path with the fewest moves while keeping DFS's small stack.
 
 Each expanded node turns blue and its successors are generated (dark). When the goal is \
-generated, the path is traced back up the tree from the goal to START (green)."""
+generated, the path is traced back up the tree from the goal to START (green). (These are the \
+dark theme's colours: the legend above shows the colours of the theme in use, t changes it.)"""
 
 
 def keys_text() -> Text:
