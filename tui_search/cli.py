@@ -30,6 +30,7 @@ from tui_search.engine.outcome import Outcome
 from tui_search.engine.reference import Expansion, stream
 from tui_search.engine.run import MAX_STEPS, Run, Step
 from tui_search.engine.semantics import CORNER_RULES, GOAL_TESTS, VISIT_RULES, Semantics
+from tui_search.tui.themes import THEMES  # plain data: no Textual
 
 EXIT_FOUND, EXIT_NO_PATH, EXIT_BAD_INPUT, EXIT_GAVE_UP = 0, 1, 2, 3
 TUTORIAL_NAME = "tutorial.txt"
@@ -84,6 +85,10 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--max-steps", metavar="N", type=_positive, default=MAX_STEPS,
                    help=f"give up after N expansions (default {MAX_STEPS:,}: iterative "
                    "deepening on a big map can take billions)")
+    p.add_argument("--theme", choices=list(THEMES), default=None,
+                   help="the app's colours for this run (the app remembers a theme chosen in "
+                   "it with t or ctrl+p): " + "; ".join(f"{t.name}: {t.description}"
+                                                         for t in THEMES.values()))
     p.add_argument("--headless", action="store_true",
                    help="search without the app and print the result")
     p.add_argument("--json", action="store_true",
@@ -345,7 +350,7 @@ def run_app(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
 
     scenario = getattr(args, "scenario", None)
     app = SearchApp(grid, path=path, algorithm=args.algorithm, semantics=semantics_from(args),
-                    max_steps=args.max_steps, unsaved_name=BUILT_IN_TITLE,
+                    max_steps=args.max_steps, unsaved_name=BUILT_IN_TITLE, theme=args.theme,
                     optimal_cost=scenario.optimal_length if scenario is not None else None)
     app.run()
     return app.return_code or 0
@@ -356,6 +361,8 @@ def main(argv: list[str] | None = None) -> int:
         args = build_parser().parse_args(argv)
         if (args.json or args.trace) and not args.headless:
             raise UsageError("--json and --trace go with --headless")
+        if args.theme and args.headless:
+            raise UsageError("--theme is for the app, not --headless")
         grid, path = load_problem(args)
         if args.headless:
             return run_headless(args, grid, path)

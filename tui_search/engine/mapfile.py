@@ -112,8 +112,8 @@ def _show(text: str, limit: int = 40) -> str:
     return repr(text)
 
 
-def _os_reason(err: OSError) -> str:
-    """A short lower-case reason for an OS error, without the path (the MapError has it)."""
+def os_reason(err: OSError) -> str:
+    """A short lower-case reason for an OS error, without the path (the message names it)."""
     if isinstance(err, FileNotFoundError):
         return "no such file"
     if isinstance(err, PermissionError):
@@ -137,7 +137,7 @@ def _read_text(path: str) -> str:
     except (FileNotFoundError, NotADirectoryError):
         raise MapError(path, "no such file") from None
     except OSError as err:
-        raise MapError(path, _os_reason(err)) from None
+        raise MapError(path, os_reason(err)) from None
     except ValueError:  # e.g. an embedded NUL in the path
         raise MapError(path, "not a valid file name") from None
     if stat.S_ISDIR(st.st_mode):
@@ -150,7 +150,7 @@ def _read_text(path: str) -> str:
     except IsADirectoryError:
         raise MapError(path, "is a directory, not a map file") from None
     except OSError as err:
-        raise MapError(path, _os_reason(err)) from None
+        raise MapError(path, os_reason(err)) from None
     if len(data) > MAX_MAP_BYTES:
         raise MapError(path, _too_big(len(data)))
     if b"\x00" in data:
@@ -406,16 +406,25 @@ def save_text_map(grid: Grid, path: str | os.PathLike) -> None:
 
 
 def save_map(grid: Grid, path: str | os.PathLike, kind: str = TEXT) -> MapSource:
-    """Write :func:`format_map` of ``grid`` atomically and return what was written (the
-    caller makes it the grid's ``source``, so the next save compares with the file on disk).
-
-    Readers (and a crash) see the old file or the new one, never half of one: a temporary
-    file beside the target is written, fsynced and renamed over the target.  On failure the
-    temporary file is removed, the old file is untouched, and a MapError says why.
-    """
+    """Write :func:`format_map` of ``grid`` atomically (:func:`write_atomically`) and return
+    what was written (the caller makes it the grid's ``source``, so the next save compares with
+    the file on disk).  On failure the old file is untouched and a MapError says why."""
     target = os.fsdecode(path)
     source = format_map(grid, kind)
-    data = source.text().encode("utf-8")
+    try:
+        write_atomically(target, source.text().encode("utf-8"))
+    except FileNotFoundError:
+        raise MapError(target, "cannot save: the folder does not exist") from None
+    except OSError as err:
+        raise MapError(target, f"cannot save: {os_reason(err)}") from None
+    return source
+
+
+def write_atomically(target: str, data: bytes) -> None:
+    """Replace ``target`` by ``data``: readers (and a crash) see the old file or the new one,
+    never half of one.  A temporary file beside the target is written, fsynced and renamed
+    over the target (keeping the target's permissions).  On failure the temporary file is
+    removed, the old file is untouched, and the OSError propagates."""
     folder = os.path.dirname(os.path.abspath(target))
     try:
         old_mode: int | None = stat.S_IMODE(os.stat(target).st_mode)
@@ -443,10 +452,6 @@ def save_map(grid: Grid, path: str | os.PathLike, kind: str = TEXT) -> MapSource
             os.fsync(handle.fileno())
         os.replace(tmp, target)
         tmp = ""
-    except FileNotFoundError:
-        raise MapError(target, "cannot save: the folder does not exist") from None
-    except OSError as err:
-        raise MapError(target, f"cannot save: {_os_reason(err)}") from None
     finally:
         if tmp:
             try:
@@ -454,7 +459,6 @@ def save_map(grid: Grid, path: str | os.PathLike, kind: str = TEXT) -> MapSource
             except OSError:
                 pass
     _fsync_dir(folder)
-    return source
 
 
 def _fsync_dir(folder: str) -> None:

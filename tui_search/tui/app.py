@@ -18,6 +18,7 @@ from typing import ClassVar
 from textual import events
 from textual.app import App, ComposeResult
 from textual.binding import Binding, BindingType
+from textual.command import Provider
 from textual.containers import Vertical
 from textual.widgets import Static
 
@@ -26,9 +27,11 @@ from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.run import MAX_STEPS, Run
 from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
 from tui_search.tui import playback
+from tui_search.tui.config import Config
 from tui_search.tui.editing import EditActions
 from tui_search.tui.files import FileActions
 from tui_search.tui.narration import group_digits
+from tui_search.tui.themes import DEFAULT_THEME, THEMES, map_defaults, textual_themes
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.key_bar import KeyBar
@@ -48,12 +51,19 @@ STEP = Binding.Group("Step", compact=True)
 ALGO = Binding.Group("/".join(a.tag for a in ALGORITHMS.values()), compact=True)
 
 
+def _search_commands() -> type[Provider]:
+    """The palette's app commands, imported when the palette first opens (start-up time)."""
+    from tui_search.tui.commands import SearchCommands
+
+    return SearchCommands
+
+
 class SearchApp(EditActions, FileActions, App[int]):
     """Watch BFS, DFS and iterative deepening plan a path on ``grid``."""
 
     CSS_PATH = "app.tcss"
     TITLE = "tui-search"
-    ENABLE_COMMAND_PALETTE = False
+    COMMANDS = App.COMMANDS | {_search_commands}  # ctrl+p: Textual's commands and the app's
     AUTO_FOCUS = "GridView"
 
     BINDINGS: ClassVar[list[BindingType]] = [
@@ -82,6 +92,8 @@ class SearchApp(EditActions, FileActions, App[int]):
         Binding("comma", "settings", "Settings", key_display=",",
                 tooltip="Search settings: moves, corners, visited, goal test, tree search"),
         Binding("z", "overview", "Zoom", tooltip="Overview: the whole map in half blocks"),
+        Binding("t", "next_theme", "Theme", show=False,
+                tooltip="Next colour theme: " + ", ".join(t.title.lower() for t in THEMES.values())),
         Binding("ctrl+s", "save", "Save", tooltip="Save the map"),
         Binding("w", "save_as", "Save as", show=False, tooltip="Save the map as a new file"),
         Binding("ctrl+o", "open", "Open", show=False, tooltip="Open a map…"),
@@ -97,14 +109,37 @@ class SearchApp(EditActions, FileActions, App[int]):
         semantics: Semantics = DEFAULT_SEMANTICS,
         max_steps: int = MAX_STEPS,
         unsaved_name: str = "untitled",
+        theme: str | None = None,
+        config: Config | None = None,
         optimal_cost: float | None = None,
     ) -> None:
-        """``optimal_cost`` is a benchmark's lowest cost for this map, start and goal (a
-        MovingAI ``.scen`` row: 8 moves, no corner cutting), shown beside a path's cost while
-        the map, its ends and those rules stay as they are."""
+        """``theme`` is for this run only (``--theme``); without it, the one the config file
+        remembers.  ``config`` defaults to the user's file (:func:`~tui_search.tui.config.
+        config_path`).  ``optimal_cost`` is a benchmark's lowest cost for this map, start and
+        goal (a MovingAI ``.scen`` row: 8 moves, no corner cutting), shown beside a path's cost
+        while the map, its ends and those rules stay as they are."""
         super().__init__()
         self._benchmark = None if optimal_cost is None else (
             bytes(grid.blocked), grid.start, grid.goal, optimal_cost)
+        self.config = Config.load() if config is None else config
+        self._config_noted = False  # a config problem is said once a run
+        for own in textual_themes():
+            self.register_theme(own)
+        chosen = self.get_theme(theme or self.config.theme or DEFAULT_THEME)
+        assert chosen is not None, "the command line and the config offer only the app's themes"
+        if chosen.dark == self.current_theme.dark:
+            # What Textual set up for its default (the ANSI palette, -dark-mode) holds: set the
+            # name and the stylesheet's variables without the watcher, whose restyle of a
+            # stylesheet not read yet would cost the first frame ~10 ms.  (A light theme takes
+            # the watcher: it changes those.)
+            self.set_reactive(App.theme, chosen.name)
+            self.stylesheet.set_variables(self.get_css_variables())
+        else:
+            self.theme = chosen.name
+        for name in list(self.available_themes):  # only the app's: their map colours are set
+            if name not in THEMES:
+                self.unregister_theme(name)
+        self._remember_theme = True  # from now on a theme chosen in the app is saved
         self.grid = grid
         self.max_steps = max_steps
         self.map_path = Path(path) if path is not None else None
@@ -147,6 +182,8 @@ class SearchApp(EditActions, FileActions, App[int]):
         yield Static(id="too-small")
 
     def on_mount(self) -> None:
+        if self.config.problem:
+            self._config_note(self.config.problem)
         self._timer = self.set_interval(1.0, self._tick, pause=True)
         self._set_speed(self.speed_index)
         self._check_size(self.size.width, self.size.height)
@@ -175,6 +212,36 @@ class SearchApp(EditActions, FileActions, App[int]):
     def map_name(self) -> str:
         """The map as its title names it: its file's name, else ``unsaved_name``."""
         return self.map_path.name if self.map_path else self.unsaved_name
+
+    # -- themes ---------------------------------------------------------------------------
+    def get_css_variables(self) -> dict[str, str]:
+        """Textual's variables for the theme, and the map's own ones it does not set."""
+        variables = super().get_css_variables()
+        for name, value in map_defaults(variables).items():
+            variables.setdefault(name, value)
+        self.theme_variables = variables
+        return variables
+
+    def set_theme(self, name: str) -> None:
+        """Switch to theme ``name`` (the palette's theme commands)."""
+        self.theme = name
+
+    def action_next_theme(self) -> None:
+        names = list(THEMES)
+        self.theme = names[(names.index(self.theme) + 1) % len(names)]
+
+    def watch_theme(self, name: str) -> None:
+        """A theme chosen in the app (key, palette, Textual's theme picker) is remembered."""
+        if getattr(self, "_remember_theme", False):
+            problem = self.config.save_theme(name)
+            if problem:
+                self._config_note(problem)
+
+    def _config_note(self, text: str) -> None:
+        """Say what is wrong with the config file, once a run (it never stops the app)."""
+        if not self._config_noted:
+            self._config_noted = True
+            self.notify(text, title="Config file", severity="warning", timeout=10)
 
     # -- the run and what shows it ----------------------------------------------------------
     def _new_run(self, note: str = "") -> None:

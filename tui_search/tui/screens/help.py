@@ -13,6 +13,7 @@ from textual.screen import ModalScreen
 from textual.widgets import Static
 
 from tui_search.engine.algorithms import ALGORITHMS
+from tui_search.tui.themes import THEMES
 from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.legend import Legend
 
@@ -33,9 +34,11 @@ KEYS = (
     ("r", "restart the search at step 0"),
     (",", "settings: moves, corners, visit, goal test, tree, heuristic"),
     ("z", "overview: the whole map in half blocks"),
+    ("t", "next colour theme: " + ", ".join(t.title.lower() for t in THEMES.values())),
     ("ctrl+s", "save the map (to its file, in its format)"),
     ("w", "save the map as … (asks before replacing a file)"),
     ("ctrl+o", "open a map … (asks first when there are unsaved edits)"),
+    ("ctrl+p", "command palette: every command by name (algorithms, themes, …)"),
     ("?", "this help"),
     ("q", "quit (asks first when there are unsaved edits)"),
 )
@@ -58,7 +61,8 @@ finds a path with the fewest moves while keeping DFS's small stack.
 The fewest moves is not the cheapest path when a diagonal costs √2. [b]Uniform-cost search[/b] (UCS) takes from a [b]priority queue[/b] the node whose path so far is cheapest (its cost [b]g[/b]): it finds the cheapest path. [b]A*[/b] adds [b]h[/b], an estimate of the cost still to go, and takes the lowest [b]f = g + h[/b]: the same cheapest path, expanding far fewer nodes, as long as h never overestimates (manhattan does, with diagonal moves). [b]Greedy best-first[/b] takes the lowest h alone: fast, and often wrong. A cell reached again more cheaply is pushed again; its older entry is [i]stale[/i] and is discarded when it comes off.
 
 Each expanded node turns blue and its successors are generated (dark). When the goal is \
-generated, the path is traced back up the tree from the goal to START (green)."""
+generated, the path is traced back up the tree from the goal to START (green). (These are the \
+dark theme's colours: the legend above shows the colours of the theme in use, t changes it.)"""
 
 
 def keys_text() -> Text:

@@ -72,15 +72,16 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
     GridView {
         background: $surface;
         color: $foreground;
-        & > .grid-view--free { color: $foreground 30%; }
-        & > .grid-view--wall { color: $error; }
-        & > .grid-view--start { background: $success; color: $background; text-style: bold; }
-        & > .grid-view--goal { background: #f0d000; color: #000000; text-style: bold; }
-        & > .grid-view--frontier { background: #000000; color: $foreground; }
-        & > .grid-view--expanded { background: $primary-darken-2; color: $foreground 70%; }
-        & > .grid-view--current { background: $primary-lighten-1; color: $text; text-style: bold; }
-        & > .grid-view--path { background: $success-darken-2; color: $success-lighten-2;
-                               text-style: bold; }
+        /* The app's theme variables (tui_search/tui/themes.py): a theme recolours the map. */
+        & > .grid-view--free { color: $map-free; }
+        & > .grid-view--wall { color: $map-wall; }
+        & > .grid-view--start { background: $map-start; color: $map-start-text; text-style: bold; }
+        & > .grid-view--goal { background: $map-goal; color: $map-goal-text; text-style: bold; }
+        & > .grid-view--frontier { background: $map-frontier; color: $map-frontier-text; }
+        & > .grid-view--expanded { background: $map-expanded; color: $map-expanded-text; }
+        & > .grid-view--current { background: $map-current; color: $map-current-text;
+                                  text-style: bold; }
+        & > .grid-view--path { background: $map-path; color: $map-path-text; text-style: bold; }
         & > .grid-view--cursor { text-style: reverse; }
     }
     """

@@ -1,0 +1,15 @@
+"""Every test runs with its own empty config directory (``TUI_SEARCH_CONFIG_DIR``), so no test
+reads or writes the user's real config file, and a theme remembered there cannot change a
+snapshot."""
+
+from __future__ import annotations
+
+import pytest
+
+from tui_search.tui.config import CONFIG_DIR_ENV
+
+
+@pytest.fixture(autouse=True)
+def _own_config_dir(tmp_path_factory: pytest.TempPathFactory,
+                    monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setenv(CONFIG_DIR_ENV, str(tmp_path_factory.mktemp("config")))

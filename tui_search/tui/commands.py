@@ -1,0 +1,69 @@
+"""The app's own commands in Textual's command palette (``ctrl+p``), beside Textual's: each
+algorithm of the registry, each theme, and the actions a key does (settings, save, save as,
+open, overview, help).
+
+A command runs the same action as its key (``app.run_action``), so the palette can never do
+something the keys do not; its help line is the key's tooltip and the key, so the palette also
+teaches the keys.  The app imports this module only when the palette first opens.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from functools import partial
+from typing import TYPE_CHECKING
+
+from textual.binding import Binding
+from textual.command import DiscoveryHit, Hit, Hits, Provider
+
+from tui_search.engine.algorithms import ALGORITHMS
+from tui_search.tui.themes import THEMES
+
+if TYPE_CHECKING:
+    from tui_search.tui.app import SearchApp
+
+#: The actions of the app's key table offered by name, with the palette's name for each.
+ACTIONS = {
+    "settings": "Search settings",
+    "save": "Save the map",
+    "save_as": "Save the map as…",
+    "open": "Open a map…",
+    "overview": "Overview: the whole map",
+    "help": "Help: keys, colours, how the searches work",
+}
+
+Command = tuple[str, Callable[[], object], str]  # name, what it does, help line
+
+
+class SearchCommands(Provider):
+    """Algorithms, themes and the app's actions, found by name."""
+
+    def commands(self) -> list[Command]:
+        app: SearchApp = self.app  # type: ignore[assignment]
+        found: list[Command] = [
+            (f"Algorithm: {a.name}", partial(app.run_action, f"algorithm({a.key!r})"),
+             f"{a.summary} (key {a.app_key})")
+            for a in ALGORITHMS.values()
+        ]
+        for spec in THEMES.values():
+            now = " · the theme now" if app.theme == spec.name else ""
+            found.append((f"Theme: {spec.title}", partial(app.set_theme, spec.name),
+                          f"{spec.description} · t cycles the themes{now}"))
+        bindings = {b.action: b for b in Binding.make_bindings(app.BINDINGS)}
+        for action, name in ACTIONS.items():
+            binding = bindings[action]
+            found.append((name, partial(app.run_action, action),
+                          f"{binding.tooltip} (key {app.get_key_display(binding)})"))
+        return found
+
+    async def discover(self) -> Hits:
+        for name, command, help_text in self.commands():
+            yield DiscoveryHit(name, command, help=help_text)
+
+    async def search(self, query: str) -> Hits:
+        matcher = self.matcher(query)
+        for name, command, help_text in self.commands():
+            score = matcher.match(name)
+            if score > 0:
+                yield Hit(score, matcher.highlight(name), command, help=help_text)
+
