@@ -1,5 +1,5 @@
 #!/usr/bin/env python
-"""tui-search against its targets (GitHub issues 4 and 9), as ratios measured in one process.
+"""tui-search against its targets (GitHub issues 4, 9 and 10), as ratios measured in one process.
 
     python benchmarks/bench.py            # the full run (a few minutes)
     python benchmarks/bench.py --quick    # a few minutes: fewer repeats, no networkx
@@ -14,7 +14,7 @@ The peers (``pip install -e .[bench]``: pathfinding, networkx, scipy) are option
 gives a "not installed" row.  See benchmarks/README.md for what each row means.
 
 This file is the entry point only: each section lives in its own module of this package
-(engine.py, choices.py, jump.py, step.py, startup.py), on the shared table.py, harness.py and maps.py.
+(engine.py, choices.py, informed.py, jump.py, step.py, startup.py), on the shared table.py, harness.py and maps.py.
 """
 
 from __future__ import annotations
@@ -36,14 +36,15 @@ sys.path.insert(0, str(ROOT))
 from benchmarks.choices import bench_choices
 from benchmarks.engine import bench_engine
 from benchmarks.harness import NOISE, med
+from benchmarks.informed import bench_informed
 from benchmarks.jump import bench_jump
 from benchmarks.startup import bench_startup
 from benchmarks.step import bench_step
 from benchmarks.table import ROWS, Row, add, print_table
 
 #: The sections, in the order they run and print.
-SECTIONS = {"engine": bench_engine, "choices": bench_choices, "jump": bench_jump,
-            "step": bench_step, "startup": bench_startup}
+SECTIONS = {"engine": bench_engine, "choices": bench_choices, "informed": bench_informed,
+            "jump": bench_jump, "step": bench_step, "startup": bench_startup}
 
 
 def main(argv: list[str] | None = None) -> int:

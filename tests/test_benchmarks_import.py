@@ -28,9 +28,12 @@ from benchmarks.harness import interleaved, paired
 from benchmarks.maps import TUTORIAL
 from benchmarks.table import Row, fmt_ratio, print_table
 from benchmarks.trivial_app import Lines, TrivialApp
-from tui_search.engine.mapfile import load_map
+from tests.helpers import MOVINGAI
+from tui_search.engine.mapfile import load_map, load_scenario
 from tui_search.engine.run import Run
 from tui_search.engine.semantics import Semantics
+
+ARENA_MAP = MOVINGAI / "arena.map"
 
 
 def test_every_benchmark_module_imports() -> None:
@@ -40,8 +43,8 @@ def test_every_benchmark_module_imports() -> None:
         importlib.import_module(f"benchmarks.{name}")
 
 
-def test_the_entry_point_has_the_five_sections_and_refuses_another(capsys) -> None:
-    assert list(bench.SECTIONS) == ["engine", "choices", "jump", "step", "startup"]
+def test_the_entry_point_has_the_six_sections_and_refuses_another(capsys) -> None:
+    assert list(bench.SECTIONS) == ["engine", "choices", "informed", "jump", "step", "startup"]
     with pytest.raises(SystemExit) as info:
         bench.main(["--only", "engine,nope"])
     assert info.value.code == 2 and "unknown section 'nope'" in capsys.readouterr().err
@@ -113,3 +116,28 @@ def test_the_press_harness_counts_the_lines_each_press_draws() -> None:
     for app, key, lines in ((TrivialApp(), "n", 1), (TrivialApp(7), "f", 7)):
         walls, _, _, drawn = asyncio.run(step._presses(app, [key] * 3, warmup=1))
         assert len(walls) == 3 and drawn == lines
+
+
+def test_the_bare_heapq_searches_find_the_engines_cheapest_costs() -> None:
+    """The informed section's floor: the bare A* and Dijkstra find what the recorded runs
+    find, under no corner cutting."""
+    from benchmarks.informed import NEVER, bare_best_first
+
+    grid = load_map(ARENA_MAP)
+    for row in (5, 60, 129):
+        scen = load_scenario(ARENA_MAP.with_suffix(".map.scen"), row)
+        grid.start, grid.goal = scen.start, scen.goal
+        for key, astar in (("astar", True), ("ucs", False)):
+            cost = Run(grid, key, NEVER).outcome().cost
+            assert abs(bare_best_first(grid, astar) - cost) < 1e-9
+            assert abs(cost - scen.optimal_length) < 1e-4 * cost
+
+
+def test_the_optima_command_checks_rows_and_counts_them(capsys) -> None:
+    from benchmarks import optima
+
+    code = optima.main(["--maps", str(ARENA_MAP.parent), "--only", "arena", "--every", "40",
+                        "--jobs", "1", "--searches", "ucs,astar:octile"])
+    out = capsys.readouterr().out
+    assert code == 0
+    assert "arena.map.scen: 4 of 130 rows x 2 searches: 8 optimal, 0 missed" in out

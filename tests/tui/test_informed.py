@@ -149,3 +149,29 @@ async def test_the_benchmark_optimum_is_shown_while_the_map_is_unchanged() -> No
         app.cursor_cell = (0, 0)
         await pilot.press("o")  # an edit: the benchmark's figure no longer applies
         assert app.search_run.known_lowest is None
+
+
+@sync
+async def test_a_priority_queue_of_100000_entries_is_drawn_line_by_line() -> None:
+    """Uniform-cost tree search keeps every successor: ~100,000 entries after 20,000 steps.
+    The panel is one line-API widget (no widget per entry): its height is the queue's, its
+    last line is the queue's last entry, and a step either way keeps it in priority order."""
+    grid = Grid(400, 400, start=(200, 200), goal=(0, 0))
+    app = SearchApp(grid, algorithm="ucs", semantics=Semantics(tree_search=True),
+                    max_steps=30_000)
+    async with app.run_test(size=SIZE) as pilot:
+        run = app.search_run
+        run.goto(20_000)
+        app._show()  # the app's own refresh, after moving its run directly
+        await pilot.pause()
+        panel = app.query_one(FrontierPanel)
+        n = run.frontier_len()
+        assert n > 100_000
+        assert panel.line_text(0) == f"{n:,} in the priority queue"
+        assert panel.virtual_size.height == n + 1 and not panel.children
+        (last,) = run.frontier(n - 1, n)
+        x, y = run.gen_cell(last)
+        assert panel.line_text(n)[3:].startswith(f"({x},{y})")
+        await pilot.press("n", "p")
+        keys = [run.priority_key(g) for g in run.frontier(0, 200)]
+        assert keys == sorted(keys) and run.k == 20_000

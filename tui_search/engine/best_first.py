@@ -25,25 +25,39 @@ from functools import partial
 from itertools import repeat
 from struct import pack
 
-from tui_search.engine.grid import DIRECTIONS, SQRT2
+from tui_search.engine.grid import DELTAS, SQRT2
 from tui_search.engine.heuristics import CHEAPER_BY, HEURISTICS
 from tui_search.engine.search import CHUNK, Loop, Problem, Record, _on_path
 
 INF = float("inf")
 
 
-def _costed_moves(problem: Problem) -> list[tuple[tuple[int, float], ...]]:
-    """``problem.moves`` with each offset's cost: 1 straight, sqrt(2) diagonally."""
-    def cost(off: int) -> float:
-        return SQRT2 if len(DIRECTIONS[problem.dir_of_offset[off]]) == 2 else 1.0
+def _costed_moves(problem: Problem) -> tuple[tuple[int, float, int, int], ...]:
+    """The order's moves as ``(offset, cost, side_a, side_b)``: the cost 1 straight and
+    sqrt(2) diagonally; for a diagonal under a corner rule the offsets of its two side cells
+    (0 otherwise).  The loops test the corner rule themselves, on the few cells they expand,
+    rather than ask for the problem's corner masks (a pass over the whole map)."""
+    rule = problem.semantics.corners
+    out = []
+    for name, off in zip(problem.semantics.order, problem.offsets):
+        dx, dy = DELTAS[name]
+        diagonal = bool(dx and dy)
+        sides = (dx, dy * problem.stride) if diagonal and rule != "always" else (0, 0)
+        out.append((off, SQRT2 if diagonal else 1.0, *sides))
+    return tuple(out)
 
-    return [tuple((off, cost(off)) for off in moves) for moves in problem.moves]
+
+def _blocked_sides_refused(problem: Problem) -> int:
+    """How many blocked side cells refuse a diagonal: 1 under ``never`` (either), 2 under
+    ``one`` (both); the loops test ``walls[n + a] + walls[n + b] >= this``."""
+    return 1 if problem.semantics.corners == "never" else 2
 
 
 def best_first(problem: Problem, rec: Record, chunk: int = CHUNK, priority: str = "g+h"
                ) -> Iterator[int]:
     """Graph search in order of ``priority`` (the algorithm's: "g", "h" or "g+h")."""
-    moves, mask, walls, stride = _costed_moves(problem), problem.mask, problem.walls, problem.stride
+    moves, walls, stride = _costed_moves(problem), problem.walls, problem.stride
+    refused = _blocked_sides_refused(problem)
     goal, start = problem.goal, problem.start
     goal_on_push = goal if problem.goal_test == "generate" else -1
     goal_on_pop = -1 if problem.goal_test == "generate" else goal
@@ -100,9 +114,9 @@ def best_first(problem: Problem, rec: Record, chunk: int = CHUNK, priority: str 
                 flush()
                 rec.goal_gen, rec.done = e, True
                 return
-            for off, cost in moves[mask[n]]:
+            for off, cost, side_a, side_b in moves:
                 m = n + off
-                if walls[m]:
+                if walls[m] or side_a and walls[n + side_a] + walls[n + side_b] >= refused:
                     continue
                 ng = g + cost
                 if ng + CHEAPER_BY >= best[m]:
@@ -134,7 +148,8 @@ def best_first_tree(problem: Problem, rec: Record, chunk: int = CHUNK, priority:
     """Tree search in order of ``priority``: no best g, a successor on the node's own path is
     skipped, nothing is stale.  Exponential by nature (a run stops at its step limit), so
     written plainly, as :func:`~tui_search.engine.search.tree` is."""
-    moves, mask, walls, stride = _costed_moves(problem), problem.mask, problem.walls, problem.stride
+    moves, walls, stride = _costed_moves(problem), problem.walls, problem.stride
+    refused = _blocked_sides_refused(problem)
     goal, start = problem.goal, problem.start
     test_on_push = problem.goal_test == "generate"
     heuristic = HEURISTICS[problem.semantics.heuristic]
@@ -166,9 +181,11 @@ def best_first_tree(problem: Problem, rec: Record, chunk: int = CHUNK, priority:
             step_end.append(len(gen_node))
             rec.goal_gen, rec.done = e, True
             return
-        for off, cost in moves[mask[n]]:
+        for off, cost, side_a, side_b in moves:
             m = n + off
-            if walls[m] or _on_path(m, e, gen_node, parent):
+            if walls[m] or side_a and walls[n + side_a] + walls[n + side_b] >= refused:
+                continue
+            if _on_path(m, e, gen_node, parent):
                 continue
             ng = g + cost
             heapq.heappush(heap, (key(ng, m), len(gen_node), m, ng))

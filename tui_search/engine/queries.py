@@ -53,8 +53,12 @@ class RecordedTree(Recording):
 
     def priority_key(self, g: int) -> float:
         """The priority event ``g`` was pushed with (the frontier model's order)."""
+        costs = self.rec.gen_g
+        assert costs is not None, "only a priority queue has priorities"
+        if self.algo.priority == "g":  # uniform-cost: the cost itself, no cell needed
+            return costs[g]
         x, y = self.gen_cell(g)
-        return self._priority(self.rec.gen_g[g], x, y)  # type: ignore[index]
+        return self._priority(costs[g], x, y)
 
     def pushed_again(self, g: int) -> int:
         """The next event of event ``g``'s cell, -1 when none was recorded.  A cost-ordered

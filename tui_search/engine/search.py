@@ -24,7 +24,7 @@ from __future__ import annotations
 from array import array
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
-from functools import partial
+from functools import cached_property, partial
 from itertools import repeat
 from struct import pack
 
@@ -135,11 +135,25 @@ class Problem:
         order = semantics.order
         offsets = [DELTAS[name][1] * stride + DELTAS[name][0] for name in order]
         self.dir_of_offset = {off: DIR_CODE[name] for name, off in zip(order, offsets)}
-        if semantics.corners == "always" or not any(len(name) == 2 for name in order):
-            self.mask = bytes(len(walls))
-            self.moves = [tuple(offsets)]
-        else:
-            self.mask, self.moves = self._corner_masks(order, offsets, semantics.corners)
+        self.offsets = offsets
+
+    @cached_property
+    def _masks(self) -> tuple[bytes, list[tuple[int, ...]]]:
+        """``mask`` and ``moves``, worked out when a loop first asks: the corner masks cost
+        a pass over the whole map (~20 ms on 1024x1024), which a loop that checks corners
+        itself (the priority queue's, which may expand a handful of cells) never pays."""
+        order, offsets = self.semantics.order, self.offsets
+        if self.semantics.corners == "always" or not any(len(name) == 2 for name in order):
+            return bytes(len(self.walls)), [tuple(offsets)]
+        return self._corner_masks(order, offsets, self.semantics.corners)
+
+    @property
+    def mask(self) -> bytes:
+        return self._masks[0]
+
+    @property
+    def moves(self) -> list[tuple[int, ...]]:
+        return self._masks[1]
 
     def _corner_masks(
         self, order: tuple[str, ...], offsets: list[int], corners: str

@@ -1,0 +1,109 @@
+#!/usr/bin/env python
+"""Every row of every MovingAI ``.scen``: uniform-cost search and A* (octile, euclidean,
+chebyshev, zero) under no corner cutting must find the row's optimal length (to 1e-4,
+relative).  Prints a line per file and the count; exit 1 when any row misses.
+
+    python benchmarks/optima.py                     # every row of every .scen in the maps folder
+    python benchmarks/optima.py --every 50          # one row in 50 (a quick look)
+    python benchmarks/optima.py --only arena,den312d --searches astar:octile
+
+The maps folder is ``TUI_SEARCH_MAPS`` (default ``/work/shared/maps/movingai``; the test suite
+checks a spread of rows on the copies in ``tests/data/movingai``).  The rows run on every CPU
+(one process each), each search on the recorded loop the app uses.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import os
+import sys
+import time
+from concurrent.futures import ProcessPoolExecutor
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+sys.path[:] = [p for p in sys.path if Path(p or ".").resolve() != HERE]
+sys.path.insert(0, str(HERE.parent))
+
+from benchmarks.maps import MAPS
+from tui_search.engine.mapfile import load_map, read_scenarios
+from tui_search.engine.run import Run
+from tui_search.engine.semantics import Semantics
+
+SEARCHES = ("ucs", "astar:octile", "astar:euclidean", "astar:chebyshev", "astar:zero")
+
+
+def scen_files(folder: Path, only: list[str] | None) -> list[tuple[Path, Path]]:
+    """(map, scen) pairs: each .scen with the map its rows name, in the same folder."""
+    pairs = []
+    for scen in sorted(folder.glob("*.scen")):
+        rows = read_scenarios(scen)
+        if not rows:
+            continue
+        map_path = folder / Path(rows[0].map_name).name
+        if only and not any(name in scen.name for name in only):
+            continue
+        pairs.append((map_path, scen))
+    return pairs
+
+
+def check_rows(map_path: str, scen_path: str, indices: list[int], searches: tuple[str, ...]
+               ) -> list[tuple[int, str, float, float | None]]:
+    """The misses among ``indices``: (row, search, optimal, found cost or None)."""
+    base = load_map(Path(map_path))
+    rows = read_scenarios(scen_path)
+    misses = []
+    for i in indices:
+        scen = rows[i]
+        grid = base.copy()
+        grid.start, grid.goal = scen.start, scen.goal
+        for search in searches:
+            key, _, heuristic = search.partition(":")
+            sem = Semantics(corners="never", heuristic=heuristic or "octile")
+            cost = Run(grid, key, sem).outcome().cost
+            if cost is None or not math.isclose(cost, scen.optimal_length, rel_tol=1e-4):
+                misses.append((i, search, scen.optimal_length, cost))
+    return misses
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--maps", type=Path, default=MAPS, help=f"the folder (default {MAPS})")
+    ap.add_argument("--every", type=int, default=1, help="check one row in N (default: all)")
+    ap.add_argument("--only", help="comma-separated parts of .scen names")
+    ap.add_argument("--searches", default=",".join(SEARCHES),
+                    help=f"comma-separated (default {','.join(SEARCHES)})")
+    ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
+    args = ap.parse_args(argv)
+    searches = tuple(s.strip() for s in args.searches.split(",") if s.strip())
+    pairs = scen_files(args.maps, args.only.split(",") if args.only else None)
+    if not pairs:
+        print(f"no .scen files in {args.maps}", file=sys.stderr)
+        return 2
+    t0 = time.perf_counter()
+    total = missed = 0
+    with ProcessPoolExecutor(max_workers=args.jobs) as pool:
+        for map_path, scen in pairs:
+            n = len(read_scenarios(scen))
+            picked = list(range(0, n, max(1, args.every)))
+            t = time.perf_counter()
+            chunks = [picked[i::args.jobs * 4] for i in range(args.jobs * 4)]
+            futures = [pool.submit(check_rows, str(map_path), str(scen), c, searches)
+                       for c in chunks if c]
+            misses = [m for f in futures for m in f.result()]
+            checked = len(picked) * len(searches)
+            total += checked
+            missed += len(misses)
+            print(f"{scen.name}: {len(picked):,} of {n:,} rows x {len(searches)} searches: "
+                  f"{checked - len(misses):,} optimal, {len(misses)} missed "
+                  f"({time.perf_counter() - t:.0f} s)", flush=True)
+            for row, search, want, got in misses[:10]:
+                print(f"  row {row} {search}: optimal {want}, found {got}")
+    print(f"{total - missed:,} of {total:,} searches met the optimal length "
+          f"({time.perf_counter() - t0:.0f} s)")
+    return 1 if missed else 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
