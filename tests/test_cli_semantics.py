@@ -152,7 +152,8 @@ def test_a_streamed_trace_is_the_recorded_runs_trace(capsys, argv) -> None:
     args = build_parser().parse_args([TUTORIAL, "--headless", *argv, "--max-steps", "400"])
     _code, out, _ = run_cli(capsys, TUTORIAL, "--headless", "--trace", "-", *argv,
                            "--max-steps", "400")
-    run = Run(load_map(TUTORIAL), args.algorithm, semantics_from(args), 400)
+    semantics = semantics_from(args)  # resolves -a's default too
+    run = Run(load_map(TUTORIAL), args.algorithm, semantics, 400)
     recorded = StringIO()
     for step in run.steps():
         recorded.write(trace_line(step))

