@@ -26,6 +26,7 @@ from itertools import repeat
 from struct import pack
 
 from tui_search.engine.grid import DELTAS, SQRT2
+from tui_search.engine import heuristics
 from tui_search.engine.heuristics import CHEAPER_BY, HEURISTICS
 from tui_search.engine.search import CHUNK, Loop, Problem, Record, _on_path
 
@@ -56,14 +57,17 @@ def _blocked_sides_refused(problem: Problem) -> int:
 def best_first(problem: Problem, rec: Record, chunk: int = CHUNK, priority: str = "g+h"
                ) -> Iterator[int]:
     """Graph search in order of ``priority`` (the algorithm's: "g", "h" or "g+h")."""
-    moves, walls, stride = _costed_moves(problem), problem.walls, problem.stride
+    moves = [(off, cost, cost + CHEAPER_BY, a, b) for off, cost, a, b in _costed_moves(problem)]
+    walls, stride = problem.walls, problem.stride
     refused = _blocked_sides_refused(problem)
     goal, start = problem.goal, problem.start
     goal_on_push = goal if problem.goal_test == "generate" else -1
     goal_on_pop = -1 if problem.goal_test == "generate" else goal
     heuristic = HEURISTICS[problem.semantics.heuristic]
+    octile, extra = heuristic is heuristics.octile, heuristics.DIAGONAL_EXTRA
     gy, gx = divmod(goal, stride)
     use_h, use_g = "h" in priority, "g" in priority
+    astar_octile = use_g and use_h and octile  # the default, with its heuristic inlined
     best = array("d", [INF]) * len(walls)  # the lowest g each cell was pushed with
     rec.step_exp = step_exp = array("i", [-1])
     rec.gen_g = gen_g = array("d")
@@ -96,7 +100,8 @@ def best_first(problem: Problem, rec: Record, chunk: int = CHUNK, priority: str 
                 arr.frombytes(pack(f"{len(buf)}{code}", *buf))
                 buf.clear()
 
-    count, steps = 1, 0
+    count = 1
+    recorded = rec.step_end
     while heap:
         for _ in repeat(None, chunk):
             try:
@@ -104,25 +109,30 @@ def best_first(problem: Problem, rec: Record, chunk: int = CHUNK, priority: str 
             except IndexError:
                 break
             add_exp(e)
-            steps += 1
             if g > best[n]:  # stale: the cell was pushed with a lower g since
-                discarded.append(steps)
                 add_end(count)
+                discarded.append(len(recorded) - 1 + len(ends))  # this step's number
                 continue
             if n == goal_on_pop:
                 add_end(count)
                 flush()
                 rec.goal_gen, rec.done = e, True
                 return
-            for off, cost, side_a, side_b in moves:
+            for off, cost, margin, side_a, side_b in moves:
                 m = n + off
-                if walls[m] or side_a and walls[n + side_a] + walls[n + side_b] >= refused:
+                # cheapest test first: most neighbours are walls or reached already
+                if walls[m] or g + margin >= best[m]:
+                    continue
+                if side_a and walls[n + side_a] + walls[n + side_b] >= refused:
                     continue
                 ng = g + cost
-                if ng + CHEAPER_BY >= best[m]:
-                    continue
                 best[m] = ng
-                if use_h:
+                if astar_octile:  # inlined: the same float as ng + heuristics.octile(dx, dy)
+                    y, x = divmod(m, stride)
+                    dx, dy = abs(x - gx), abs(y - gy)
+                    push(heap, (ng + (dx + extra * dy if dx >= dy else dy + extra * dx),
+                                count, m, ng))
+                elif use_h:
                     y, x = divmod(m, stride)
                     h = heuristic(abs(x - gx), abs(y - gy))
                     push(heap, (ng + h if use_g else h, count, m, ng))
@@ -139,7 +149,7 @@ def best_first(problem: Problem, rec: Record, chunk: int = CHUNK, priority: str 
             add_end(count)
         flush()
         if heap:
-            yield steps
+            yield rec.steps
     rec.done = True
 
 

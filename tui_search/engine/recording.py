@@ -186,11 +186,11 @@ class Recording:
         memo = self._peak_memo
         if memo is not None and memo[0] // self.PEAK_BLOCK == b and memo[0] <= k:
             # A step forwards (the app asks once a step): only the new steps are scanned.
-            value = max(memo[1], max(self._sizes(memo[0], k + 1)))
+            value = max(memo[1], self._max_size(memo[0], k + 1))
         else:
             self._extend_peak(b * self.PEAK_BLOCK)
             before = self._peak[b - 1] if b else 0
-            value = max(before, max(self._sizes(b * self.PEAK_BLOCK, k + 1)))
+            value = max(before, self._max_size(b * self.PEAK_BLOCK, k + 1))
         self._peak_memo = (k, value)
         return value
 
@@ -202,7 +202,19 @@ class Recording:
         while (len(peak) + 1) * block <= k:
             lo = len(peak) * block
             prev = peak[-1] if peak else 0
-            peak.append(max(prev, max(self._sizes(lo, lo + block))))
+            peak.append(max(prev, self._max_size(lo, lo + block)))
+
+    def _max_size(self, lo: int, hi: int) -> int:
+        """The largest frontier size over steps ``lo .. hi - 1``: in C when they lie in one
+        iteration (always, but for iterative deepening), which spares each step a pass
+        through the generator of :meth:`_sizes` (a tenth of a priority-queue run's time)."""
+        rec = self.rec
+        it = self.iteration_of(lo)
+        first = rec.iter_first_step[it]
+        if lo >= first and self.iteration_of(hi - 1) == it:
+            c = rec.iter_root[it] - first + 1
+            return max(map(operator.sub, rec.step_end[lo:hi], range(lo + c, hi + c)))
+        return max(self._sizes(lo, hi))
 
     def _sizes(self, lo: int, hi: int) -> Iterator[int]:
         """Frontier sizes at steps ``lo .. hi - 1``.  Within one iteration the size at step
