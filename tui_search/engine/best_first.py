@@ -25,8 +25,8 @@ from functools import partial
 from itertools import repeat
 from struct import pack
 
-from tui_search.engine.grid import DELTAS, SQRT2
 from tui_search.engine import heuristics
+from tui_search.engine.grid import DELTAS, SQRT2
 from tui_search.engine.heuristics import CHEAPER_BY, HEURISTICS
 from tui_search.engine.search import CHUNK, Loop, Problem, Record, _on_path
 
