@@ -22,6 +22,7 @@ from tui_search.engine.exercises import (
     comparison,
     parse_compare,
     summary_sentence,
+    tutorial_grid,
 )
 from tui_search.engine.grid import DEFAULT_ORDER, Grid, parse_order
 from tui_search.engine.heuristics import DEFAULT_HEURISTIC, HEURISTICS, INADMISSIBLE, admissible
@@ -96,7 +97,8 @@ def build_parser() -> argparse.ArgumentParser:
                    "table (e.g. bfs,dfs or astar:manhattan,ucs: an informed search may name "
                    "its heuristic)")
     p.add_argument("--exercise", metavar="N", type=int, choices=sorted(QUOTES),
-                   help="with --headless: grade the map on the tutorial's exercise N (1: BFS "
+                   help="the tutorial's exercise N as a live challenge in the app; with "
+                   "--headless, grade the map on it (1: BFS "
                    "expands fewer nodes than DFS; 2: DFS's path has more moves than BFS's): "
                    "exit 0 solved, 1 not solved, 2 a bad map")
     p.add_argument("--max-steps", metavar="N", type=_positive, default=MAX_STEPS,
@@ -420,12 +422,6 @@ def run_compare(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
     return EXIT_FOUND if all(o.found for o in outcomes) else EXIT_NO_PATH
 
 
-def tutorial_grid() -> Grid:
-    """The tutorial's map, shipped in the package."""
-    text = (Path(__file__).parent / "maps" / TUTORIAL_NAME).read_text("utf-8")
-    return parse_map_text(text, TUTORIAL_NAME)
-
-
 def run_exercise(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
     """Grade the map on an exercise: ``solved`` or ``not solved`` with the figures."""
     where = str(path or TUTORIAL_NAME)
@@ -454,7 +450,8 @@ def run_app(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
     scenario = getattr(args, "scenario", None)
     app = SearchApp(grid, path=path, algorithm=args.algorithm, semantics=semantics_from(args),
                     max_steps=args.max_steps, unsaved_name=BUILT_IN_TITLE, theme=args.theme,
-                    optimal_cost=scenario.optimal_length if scenario is not None else None)
+                    optimal_cost=scenario.optimal_length if scenario is not None else None,
+                    exercise=args.exercise)
     app.run()
     return app.return_code or 0
 
@@ -478,9 +475,9 @@ def check_modes(args: argparse.Namespace) -> None:
             raise UsageError(f"{flag} chooses the searches: leave out -a")
         if args.trace:
             raise UsageError(f"--trace is for one search, not {flag}")
-        if not args.headless:
-            raise UsageError(f"{flag} runs with --headless (the app's compare view and "
-                             "challenge panel are not built yet)")
+        if not args.headless and mode == "compare":
+            raise UsageError("--compare runs with --headless (the app's side-by-side view is "
+                             "not built yet)")
     if args.exercise is not None:
         changed = [f"--{f.replace('_', '-')}" for f in _SEARCH_FLAGS
                    if getattr(args, f) is not None]

@@ -17,6 +17,7 @@ challenge panel shows the same figures live.
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from pathlib import Path
 
 from tui_search.engine.algorithms import get_algorithm
 from tui_search.engine.grid import Grid
@@ -31,6 +32,19 @@ QUOTES = {
     2: "Change the orientation of the obstacles, start, and goal such that the results "
        "provide non-optimal solutions.",
 }
+
+
+#: The tutorial's map, shipped in the package: where the exercises start.
+TUTORIAL_MAP = Path(__file__).resolve().parents[1] / "maps" / "tutorial.txt"
+#: Maps bigger than this are not checked live by the app (two whole searches an edit).
+LIVE_CELLS = 40_000
+
+
+def tutorial_grid() -> Grid:
+    """The tutorial's 6x6 map."""
+    from tui_search.engine.mapfile import parse_map_text
+
+    return parse_map_text(TUTORIAL_MAP.read_text("utf-8"), TUTORIAL_MAP.name)
 
 
 @dataclass(frozen=True)
@@ -163,5 +177,16 @@ def summary_sentence(rows: list[TableRow]) -> str:
     return f"{expanded}; {paths}"
 
 
-__all__ = ["QUOTES", "Contender", "TableRow", "Verdict", "check", "comparison",
-           "parse_compare", "summary_sentence"]
+__all__ = [
+    "LIVE_CELLS",
+    "QUOTES",
+    "TUTORIAL_MAP",
+    "Contender",
+    "TableRow",
+    "Verdict",
+    "check",
+    "comparison",
+    "parse_compare",
+    "summary_sentence",
+    "tutorial_grid",
+]

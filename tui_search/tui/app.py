@@ -23,6 +23,7 @@ from textual.containers import Vertical
 from textual.widgets import Static
 
 from tui_search.engine.algorithms import ALGORITHMS, DEFAULT_ALGORITHM, get_algorithm
+from tui_search.engine.exercises import LIVE_CELLS, check, tutorial_grid
 from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.run import MAX_STEPS, Run
 from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
@@ -32,6 +33,7 @@ from tui_search.tui.editing import EditActions
 from tui_search.tui.files import FileActions
 from tui_search.tui.narration import group_digits
 from tui_search.tui.themes import DEFAULT_THEME, THEMES, map_defaults, textual_themes
+from tui_search.tui.widgets.challenge import ChallengePanel
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.key_bar import KeyBar
@@ -92,6 +94,8 @@ class SearchApp(EditActions, FileActions, App[int]):
         Binding("comma", "settings", "Settings", key_display=",",
                 tooltip="Search settings: moves, corners, visited, goal test, tree search"),
         Binding("z", "overview", "Zoom", tooltip="Overview: the whole map in half blocks"),
+        Binding("x", "exercise", "Exercise", show=False,
+                tooltip="The tutorial's exercises as live challenges: 1, 2, off"),
         Binding("t", "next_theme", "Theme", show=False,
                 tooltip="Next colour theme: " + ", ".join(t.title.lower() for t in THEMES.values())),
         Binding("ctrl+s", "save", "Save", tooltip="Save the map"),
@@ -112,13 +116,16 @@ class SearchApp(EditActions, FileActions, App[int]):
         theme: str | None = None,
         config: Config | None = None,
         optimal_cost: float | None = None,
+        exercise: int | None = None,
     ) -> None:
         """``theme`` is for this run only (``--theme``); without it, the one the config file
         remembers.  ``config`` defaults to the user's file (:func:`~tui_search.tui.config.
         config_path`).  ``optimal_cost`` is a benchmark's lowest cost for this map, start and
         goal (a MovingAI ``.scen`` row: 8 moves, no corner cutting), shown beside a path's cost
-        while the map, its ends and those rules stay as they are."""
+        while the map, its ends and those rules stay as they are.  ``exercise`` opens the
+        tutorial's exercise 1 or 2 as a live challenge (``x`` cycles them)."""
         super().__init__()
+        self.exercise = exercise
         self._benchmark = None if optimal_cost is None else (
             bytes(grid.blocked), grid.start, grid.goal, optimal_cost)
         self.config = Config.load() if config is None else config
@@ -174,6 +181,7 @@ class SearchApp(EditActions, FileActions, App[int]):
         yield KeyBar(KEY_IMPORTANCE, id="keys")
         yield self.stats
         with Vertical(id="side"):
+            yield ChallengePanel(id="challenge")
             yield self.frontier_panel
             yield self.tree_panel
             yield Static(NEEDS_ENDPOINTS, id="side-note")
@@ -189,6 +197,7 @@ class SearchApp(EditActions, FileActions, App[int]):
         self._check_size(self.size.width, self.size.height)
         self.view.set_cursor(self.cursor_cell)
         self._mounted_ok = True
+        self._check_exercise()
         self._show()
 
     def on_resize(self, event: events.Resize) -> None:
@@ -256,7 +265,35 @@ class SearchApp(EditActions, FileActions, App[int]):
             self.search_run = Run(grid, self.algorithm, self.semantics, self.max_steps)
             self.search_run.known_lowest = self._benchmark_cost()
         if self._mounted_ok:
+            self._check_exercise()
             self._show()
+
+    def action_exercise(self) -> None:
+        """Cycle the challenge: exercise 1, exercise 2, none."""
+        self.action_show_exercise({None: 1, 1: 2, 2: 0}[self.exercise])
+
+    def action_show_exercise(self, exercise: int) -> None:
+        """Show exercise 1 or 2 as a live challenge on the map (0: none)."""
+        self.exercise = exercise or None
+        self._check_exercise()
+
+    def _check_exercise(self) -> None:
+        """The challenge panel's verdict on the map as it is now (two whole searches, so only
+        on maps of at most ``LIVE_CELLS`` cells)."""
+        screen = self.screen_stack[0]
+        screen.set_class(self.exercise is not None, "-challenge")
+        if self.exercise is None:
+            return
+        panel = screen.query_one(ChallengePanel)
+        grid = self.grid
+        if grid.start is None or grid.goal is None:
+            panel.show(self.exercise, None, "Place a start (s) and a goal (g) to check it.")
+        elif grid.width * grid.height > LIVE_CELLS:
+            panel.show(self.exercise, None, f"Checked on maps of up to {LIVE_CELLS:,} cells: "
+                       "grade this one with --headless --exercise.")
+        else:
+            panel.show(self.exercise, check(self.exercise, grid, tutorial_grid(),
+                                            self.max_steps))
 
     def _benchmark_cost(self) -> float | None:
         """The benchmark's lowest cost, if it applies to the map and the rules as they are."""

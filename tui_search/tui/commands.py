@@ -17,6 +17,7 @@ from textual.binding import Binding
 from textual.command import DiscoveryHit, Hit, Hits, Provider
 
 from tui_search.engine.algorithms import ALGORITHMS
+from tui_search.engine.exercises import QUOTES
 from tui_search.tui.themes import THEMES
 
 if TYPE_CHECKING:
@@ -49,6 +50,11 @@ class SearchCommands(Provider):
             now = " · the theme now" if app.theme == spec.name else ""
             found.append((f"Theme: {spec.title}", partial(app.set_theme, spec.name),
                           f"{spec.description} · t cycles the themes{now}"))
+        for n, quote in QUOTES.items():
+            found.append((f"Exercise {n}: {quote}", partial(app.run_action, f"show_exercise({n})"),
+                          "the tutorial's exercise, checked live as you edit (key x cycles)"))
+        found.append(("Exercise: off", partial(app.run_action, "show_exercise(0)"),
+                      "hide the challenge panel (key x)"))
         bindings = {b.action: b for b in Binding.make_bindings(app.BINDINGS)}
         for action, name in ACTIONS.items():
             binding = bindings[action]

@@ -1,0 +1,80 @@
+"""The tutorial's exercises as live challenges in the app (--exercise N, x, the palette)."""
+
+from __future__ import annotations
+
+from tests.tui.test_app import MAPS, TUTORIAL, sync, tutorial_app
+from tui_search.cli import main
+from tui_search.engine.grid import Grid
+from tui_search.engine.mapfile import load_map
+from tui_search.tui.app import SearchApp
+from tui_search.tui.widgets.challenge import ChallengePanel
+
+SIZE = (120, 36)
+
+
+def challenge(app: SearchApp) -> ChallengePanel:
+    return app.query_one(ChallengePanel)
+
+
+@sync
+async def test_moving_the_goal_solves_exercise_one_the_moment_it_does() -> None:
+    app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, exercise=1)
+    async with app.run_test(size=SIZE) as pilot:
+        panel = challenge(app)
+        assert panel.display and panel.border_title == "Exercise 1"
+        assert "Not solved yet: BFS expanded 22 nodes, DFS 7" in panel.text
+        app.view.set_cursor((0, 4))
+        app.cursor_cell = (0, 4)
+        await pilot.press("g")
+        assert panel.verdict.solved and "Solved ✓ BFS expanded 5 nodes, DFS 18" in panel.text
+        assert "Hint" not in panel.text  # only the goal moved
+        # an edit that unsolves it says so
+        app.cursor_cell = (2, 0)
+        app.view.set_cursor((2, 0))
+        await pilot.press("g")
+        assert not panel.verdict.solved and "Not solved any more" in panel.text
+
+
+@sync
+async def test_exercise_one_hints_when_more_than_the_goal_changed() -> None:
+    app = SearchApp(load_map(MAPS / "exercise1-bfs-wins.txt"), exercise=1)
+    async with app.run_test(size=SIZE):
+        assert challenge(app).verdict.solved
+        assert "Hint: the exercise moves only the target" in challenge(app).text
+
+
+@sync
+async def test_x_cycles_the_exercises_and_hides_the_panel() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        assert not challenge(app).display
+        await pilot.press("x")
+        assert app.exercise == 1 and challenge(app).display
+        await pilot.press("x")
+        assert app.exercise == 2 and "Exercise 2" == challenge(app).border_title
+        assert "Not solved yet: both paths have 7 moves" in challenge(app).text
+        await pilot.press("x")
+        assert app.exercise is None and not challenge(app).display
+
+
+@sync
+async def test_exercise_two_on_its_shipped_solution_and_a_big_map() -> None:
+    app = SearchApp(load_map(MAPS / "exercise2-dfs-longer.txt"), exercise=2)
+    async with app.run_test(size=SIZE):
+        assert challenge(app).verdict.solved
+        assert "BFS's path has 5 moves, DFS's 8" in challenge(app).text
+    big = SearchApp(Grid(300, 300, start=(0, 0), goal=(299, 299)), exercise=1)
+    async with big.run_test(size=SIZE):
+        assert challenge(big).verdict is None and "--headless --exercise" in challenge(big).text
+
+
+def test_exercise_without_headless_opens_the_app(monkeypatch) -> None:
+    seen = {}
+
+    def fake_run(self, *args, **kwargs):
+        seen["exercise"] = self.exercise
+        seen["title"] = self.map_name
+
+    monkeypatch.setattr(SearchApp, "run", fake_run)
+    assert main(["--exercise", "2"]) == 0
+    assert seen == {"exercise": 2, "title": "tutorial (built-in)"}

@@ -1,0 +1,73 @@
+"""The challenge panel: one of the tutorial's exercises, checked live on the map being edited.
+
+It quotes the exercise, shows BFS's and DFS's figures on the map as it is now, and says
+**Solved** the moment an edit satisfies the exercise -- or that an edit unsolved it.  What the
+figures are and whether they solve it comes from :mod:`tui_search.engine.exercises`; the app
+pushes each new verdict with :meth:`ChallengePanel.show`.
+"""
+
+from __future__ import annotations
+
+from typing import ClassVar
+
+from rich.text import Text
+from textual.widgets import Static
+
+from tui_search.engine.exercises import QUOTES, Verdict
+
+
+class ChallengePanel(Static):
+    """The exercise, the figures, and solved / not solved."""
+
+    COMPONENT_CLASSES: ClassVar[set[str]] = {
+        "challenge--quote", "challenge--solved", "challenge--unsolved", "challenge--hint",
+    }
+
+    DEFAULT_CSS = """
+    ChallengePanel {
+        height: auto;
+        max-height: 12;
+        padding: 0 1;
+        border: round $accent;
+        border-title-align: left;
+        border-title-color: $text-accent;
+        & > .challenge--quote { color: $text-muted; text-style: italic; }
+        & > .challenge--solved { color: $text-success; text-style: bold; }
+        & > .challenge--unsolved { color: $text-warning; text-style: bold; }
+        & > .challenge--hint { color: $text-muted; }
+    }
+    """
+
+    def __init__(self, *, id: str | None = None) -> None:
+        super().__init__(id=id)
+        self.verdict: Verdict | None = None
+        self.was_solved = False  # the verdict before the last edit
+        self.text = ""  # what it says, as plain text (for tests)
+
+    def show(self, exercise: int, verdict: Verdict | None, note: str = "") -> None:
+        """The exercise's verdict on the map as it is now (None, with ``note`` saying why,
+        when it cannot be checked)."""
+        before = self.verdict.solved if self.verdict is not None else None
+        self.was_solved = bool(before)
+        self.verdict = verdict
+        self.border_title = f"Exercise {exercise}"
+        style = self.get_component_rich_style
+        out = Text()
+        out.append(QUOTES[exercise] + "\n", style("challenge--quote"))
+        if verdict is None:
+            out.append(note, style("challenge--hint"))
+        else:
+            if verdict.solved:
+                out.append("Solved ✓ ", style("challenge--solved"))
+            elif before:
+                out.append("Not solved any more: ", style("challenge--unsolved"))
+            else:
+                out.append("Not solved yet: ", style("challenge--unsolved"))
+            out.append(verdict.reason)
+            if verdict.hint:
+                out.append(f"\nHint: {verdict.hint}", style("challenge--hint"))
+        self.text = out.plain
+        self.update(out)
+
+
+__all__ = ["ChallengePanel"]
