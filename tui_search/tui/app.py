@@ -32,6 +32,7 @@ from tui_search.tui.config import Config
 from tui_search.tui.editing import EditActions
 from tui_search.tui.files import FileActions
 from tui_search.tui.narration import group_digits
+from tui_search.tui.quiz import QuizActions
 from tui_search.tui.themes import DEFAULT_THEME, THEMES, map_defaults, textual_themes
 from tui_search.tui.widgets.challenge import ChallengePanel
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
@@ -47,7 +48,7 @@ NEEDS_ENDPOINTS = "Place a start (s) and a goal (g) to search"
 #: always (the bar drops the lowest first).
 KEY_IMPORTANCE = {
     "help": 10, "quit": 10, "stop_seek": 9, "next": 8, "play": 7, "pause": 7, "algorithm": 6,
-    "settings": 5, "reset": 4, "save": 3, "overview": 2,
+    "settings": 5, "reset": 4, "save": 3, "quiz": 2, "overview": 2,
 }
 STEP = Binding.Group("Step", compact=True)
 ALGO = Binding.Group("/".join(a.tag for a in ALGORITHMS.values()), compact=True)
@@ -60,7 +61,7 @@ def _search_commands() -> type[Provider]:
     return SearchCommands
 
 
-class SearchApp(EditActions, FileActions, App[int]):
+class SearchApp(EditActions, FileActions, QuizActions, App[int]):
     """Watch BFS, DFS and iterative deepening plan a path on ``grid``."""
 
     CSS_PATH = "app.tcss"
@@ -94,6 +95,9 @@ class SearchApp(EditActions, FileActions, App[int]):
         Binding("comma", "settings", "Settings", key_display=",",
                 tooltip="Search settings: moves, corners, visited, goal test, tree search"),
         Binding("z", "overview", "Zoom", tooltip="Overview: the whole map in half blocks"),
+        Binding("i", "quiz", "Quiz", tooltip="Predict the next node: a quiz (again to stop)"),
+        Binding("enter", "answer", "Answer", show=False,
+                tooltip="Quiz: the node under the cursor comes off next"),
         Binding("x", "exercise", "Exercise", show=False,
                 tooltip="The tutorial's exercises as live challenges: 1, 2, off"),
         Binding("t", "next_theme", "Theme", show=False,
@@ -264,6 +268,8 @@ class SearchApp(EditActions, FileActions, App[int]):
         else:
             self.search_run = Run(grid, self.algorithm, self.semantics, self.max_steps)
             self.search_run.known_lowest = self._benchmark_cost()
+            if self.quiz and not self.note:
+                self.note = self._quiz_question()
         if self._mounted_ok:
             self._check_exercise()
             self._show()
@@ -311,7 +317,7 @@ class SearchApp(EditActions, FileActions, App[int]):
         self.view.show_run(run, changed)
         self.screen_stack[0].set_class(run is None, "-no-run")
         if run is not None:
-            self.frontier_panel.show(run)
+            self.frontier_panel.show(run, hide_order=self.quiz)
             self.tree_panel.show(run)
             node = run.current_node()
             if follow and node is not None:
@@ -347,6 +353,8 @@ class SearchApp(EditActions, FileActions, App[int]):
             return None if run is None or run.k == 0 else True
         if action == "reset":
             return None if run is None else True
+        if action == "answer":
+            return self.quiz and run is not None
         if action == "faster":
             return None if self.speed_index == len(playback.SPEEDS) - 1 else True
         if action == "slower":

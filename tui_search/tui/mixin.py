@@ -22,6 +22,7 @@ if TYPE_CHECKING:
         view: GridView
         cursor_cell: Cell
         search_run: Run | None
+        note: str
         _stroke: bool | None
 
         @property
@@ -30,6 +31,8 @@ if TYPE_CHECKING:
         def _show(self, changed: list[Cell] | None = None, follow: bool = True) -> None: ...
 
         def _new_run(self, note: str = "") -> None: ...
+
+        def _moved(self, old_k: int, was_at_end: bool) -> None: ...
 else:
     AppMixinBase = object
 

@@ -34,6 +34,7 @@ KEYS = (
     ("r", "restart the search at step 0"),
     (",", "settings: moves, corners, visit, goal test, tree, heuristic"),
     ("z", "overview: the whole map in half blocks"),
+    ("i  enter", "quiz: predict the node that comes off next (cursor, enter)"),
     ("x", "the tutorial's exercises as live challenges: 1, 2, off"),
     ("t", "next colour theme: " + ", ".join(t.title.lower() for t in THEMES.values())),
     ("ctrl+s", "save the map (to its file, in its format)"),

@@ -90,7 +90,7 @@ class FrontierPanel(LinePanel):
     def __init__(self, **widget_args: Any) -> None:  # name, id, classes, disabled
         super().__init__(**widget_args)
         self._run: Run | None = None
-        self._shown: tuple[int, int] | None = None  # (id(run), k) last shown
+        self._shown: tuple[int, int, bool] | None = None  # (id(run), k, quiz) last shown
         self._count = 0  # frontier entries at the position
         self._added: range = range(0)
         self._kind = Frontier.FIFO
@@ -102,6 +102,7 @@ class FrontierPanel(LinePanel):
         self._empty_text = ""
         self._count_text = ""  # the first line: "4 in the queue"
         self._discarded_text = ""  # after a discarded step: the entry it threw away
+        self._by_cell: list[int] | None = None  # the quiz: the entries sorted by cell
         self.border_title = "Frontier"
 
     # -- the contract with the app ----------------------------------------------------------
@@ -109,15 +110,20 @@ class FrontierPanel(LinePanel):
     def run(self) -> Run | None:
         return self._run
 
-    def show(self, run: Run) -> None:
-        """Show ``run`` at its position: O(1), whatever the frontier's size.
+    #: The quiz lists at most this many entries (sorted by cell, each step).
+    QUIZ_ENTRIES = 2000
+
+    def show(self, run: Run, hide_order: bool = False) -> None:
+        """Show ``run`` at its position: O(1), whatever the frontier's size.  ``hide_order``
+        (the quiz) lists the entries by cell instead, without the next-out marks, so that the
+        panel does not give the answer away.
 
         Keeps the count and the entry expanded next (the first two lines) in view when the run
         or the position changed; a repeated call at the same position leaves the scroll where
         the user put it.
         """
-        key = (id(run), run.k)
-        moved = key != self._shown
+        key = (id(run), run.k, hide_order)
+        moved = key[:2] != (self._shown or (None, None))[:2]
         self._run, self._shown = run, key
         kind = self._kind = run.algo.frontier
         self._iddfs = run.algo.iterative
@@ -144,8 +150,13 @@ class FrontierPanel(LinePanel):
             why = "stale, discarded" if run.algo.weighted else "discarded"
             self._discarded_text = (f"✗  ({x},{y}) {run.gen_dir(g).ljust(DIR_W)}"
                                     f"{self._costs(run, g)}  {why}")
-        self.show_titles(run.algo.frontier_title,
-                         "▶ next out  + just added" if n else "")
+        self._by_cell = None
+        if hide_order:
+            events = run.frontier(0, self.QUIZ_ENTRIES)
+            self._by_cell = sorted(events, key=lambda g: run.gen_cell(g)[::-1])
+        title = run.algo.frontier_title + (" · order hidden" if hide_order else "")
+        self.show_titles(title, ("+ just added" if hide_order else "▶ next out  + just added")
+                         if n else "")
         if n:
             self._empty_text = ""
             self._count_text = kind.count_text(group_digits(n))
@@ -153,7 +164,9 @@ class FrontierPanel(LinePanel):
             stale = len("stale") if self._cost_w else 0
             width = max(self._hint_col + stale + hint, cell_len(self._count_text),
                         cell_len(self._discarded_text))
-            height = self._top() + n
+            listed = n if self._by_cell is None or n <= len(self._by_cell) else (
+                len(self._by_cell) + 1)  # the quiz: "… N more"
+            height = self._top() + listed
         else:
             self._empty_text = self._describe_empty(run)
             width = max(cell_len(self._empty_text), cell_len(self._discarded_text))
@@ -226,12 +239,18 @@ class FrontierPanel(LinePanel):
         y -= self._top()
         if not 0 <= y < n:
             return []
-        (g,) = run.frontier(y, y + 1)
+        if self._by_cell is not None:  # the quiz: by cell, no next-out mark
+            if y >= len(self._by_cell):
+                return [(f"   … {n - len(self._by_cell):,} more", "frontier-panel--detail")]
+            g = self._by_cell[y]
+        else:
+            (g,) = run.frontier(y, y + 1)
         x, cy = run.gen_cell(g)
-        main = "frontier-panel--next" if y == 0 else "frontier-panel--entry"
+        first = y == 0 and self._by_cell is None
+        main = "frontier-panel--next" if first else "frontier-panel--entry"
         added = g in self._added
         parts = [
-            ("▶" if y == 0 else " ", main),
+            ("▶" if first else " ", main),
             ("+" if added else " ", "frontier-panel--added" if added else main),
             (" " + f"({x},{cy})".ljust(self._coord_w) + " ", main),
         ]
@@ -252,7 +271,7 @@ class FrontierPanel(LinePanel):
             if stale:  # in the hint column (a priority queue has no end hints)
                 parts.append((" " * max(HINT_GAP, self._hint_col - used), main))
                 parts.append(("stale", "frontier-panel--stale"))
-        hint = self._hints(self._kind, y, n)
+        hint = self._hints(self._kind, y, n) if self._by_cell is None else ""
         if hint:
             parts.append((" " * max(HINT_GAP, self._hint_col - used), "frontier-panel--entry"))
             parts.append((hint, "frontier-panel--hint"))
@@ -260,6 +279,6 @@ class FrontierPanel(LinePanel):
 
     def line_band(self, y: int) -> Style | None:
         """The entry expanded next is highlighted across the whole line, like a cursor."""
-        if y == self._top() and self._count:
+        if y == self._top() and self._count and self._by_cell is None:
             return Style(bgcolor=self.cached_style("frontier-panel--next").bgcolor)
         return None

@@ -1,0 +1,75 @@
+"""Predict the next node: a quiz mode of the app (a mixin of
+:class:`~tui_search.tui.app.SearchApp`).
+
+While it is on, the frontier panel lists its entries by cell, without the next-out mark, so it
+does not give the answer away; the student moves the cursor to the cell that will come off the
+frontier next and presses ``enter``; the app takes the step, says right or wrong, and keeps a
+score.  Under BFS the answer is the queue's front, under DFS the stack's top, under A* the
+lowest f -- the whole lesson in one habit.
+"""
+
+from __future__ import annotations
+
+from tui_search.engine.grid import Cell
+from tui_search.tui.mixin import AppMixinBase
+
+
+def cell_text(cell: Cell) -> str:
+    return f"({cell[0]},{cell[1]})"
+
+
+class QuizActions(AppMixinBase):
+    """``i`` toggles the quiz; ``enter`` answers with the cell under the cursor."""
+
+    quiz = False
+    quiz_right = 0
+    quiz_asked = 0
+
+    def _quiz_question(self) -> str:
+        run = self.search_run
+        if run is None:
+            return "Quiz: place a start and a goal first"
+        frontier = run.algo.frontier
+        where = f"the {frontier.noun}'s {frontier.next_end}"
+        if run.algo.weighted:
+            where += f" (the lowest {run.algo.priority_name})"
+        return (f"Quiz: which node comes off the {frontier.noun} next? Put the cursor on it "
+                f"and press enter (it is {where}) · {self._quiz_score()}")
+
+    def _quiz_score(self) -> str:
+        return f"{self.quiz_right} of {self.quiz_asked}"
+
+    def action_quiz(self) -> None:
+        self.quiz = not self.quiz
+        self.quiz_right = self.quiz_asked = 0
+        self.note = self._quiz_question() if self.quiz else ""
+        self._show(changed=[])
+
+    def action_answer(self) -> None:
+        """Take the step and mark the guess: the cell under the cursor."""
+        run = self.search_run
+        if not self.quiz or run is None:
+            return
+        if run.at_end:
+            self.note = f"Quiz over: the search is done · {self._quiz_score()} (r restarts)"
+            self._show(changed=[])
+            return
+        guess = self.cursor_cell
+        old_k, was_at_end = run.k, run.at_end
+        if not run.forward():
+            return
+        node = run.current_node()
+        assert node is not None
+        self.quiz_asked += 1
+        frontier = run.algo.frontier
+        where = f"the {frontier.noun}'s {frontier.next_end}"
+        if node == guess:
+            self.quiz_right += 1
+            verdict = f"Right: {cell_text(node)} was {where}"
+        else:
+            verdict = f"Not quite: {cell_text(node)} came off {where}, not {cell_text(guess)}"
+        self.note = f"{verdict} · {self._quiz_score()} · next: cursor and enter"
+        self._moved(old_k, was_at_end)
+
+
+__all__ = ["QuizActions"]
