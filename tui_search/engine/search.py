@@ -216,7 +216,8 @@ def dfs(problem: Problem, rec: Record, chunk: int = CHUNK) -> Iterator[int]:
     """Depth-first search: the same loop with a LIFO stack.  The stack holds each entry's cell
     beside its event, so a step reads no array; the chunk's new events, ends and expansions go
     to lists first (:func:`_flush`).  Both cut a full traversal of maze512 from 1.45x a bare
-    BFS to about 1.25x (the bare DFS of the same traversal is ~1.0x)."""
+    BFS to about 1.25x (the bare DFS of the same traversal is ~1.0x); on open 1024^2 the loop
+    alone is ~1.27x (instructions counted; the run ~1.6x, the peak-frontier table ~0.14x)."""
     goal, moves, mask = problem.goal, problem.moves, problem.mask
     closed = bytearray(problem.walls)
     rec.step_exp = array("i", [-1])
@@ -317,7 +318,10 @@ def general(
 # like `dfs`; and each is written once for each visit rule, so that no step tests the rule.
 # Their successor loops are alike, but the split pays: BFS visit on expand on open 1024^2 went
 # from 3.3x a bare BFS (one deque serving both frontiers) to 2.9x (CPU time, the loop alone;
-# 4.4x before the chunk buffers; 2.0-2.3x with the discarded steps buffered too).
+# 4.4x before the chunk buffers; 2.0-2.3x with the discarded steps buffered too), and the
+# recorded run from 3.5x to 3.1x with one loop a visit rule (DFS: 4.6x to 4.2x).  What is left
+# over the bare floors (1.9x): the record (an append or two a step, the events stack of LIFO)
+# and, outside the loop, the run's peak-frontier table (~0.6x a bare BFS for 4.2 M steps).
 
 
 def _general_fifo(problem: Problem, rec: Record, chunk: int, closed: bytearray,
