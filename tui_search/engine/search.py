@@ -236,7 +236,8 @@ def dfs(problem: Problem, rec: Record, chunk: int = CHUNK) -> Iterator[int]:
     """Depth-first search: the same loop with a LIFO stack.  The stack holds each entry's cell
     beside its event, so a step reads no array; the chunk's new events, ends and expansions go
     to lists first (:func:`_flush`).  Both cut a full traversal of maze512 from 1.45x a bare
-    BFS to about 1.25x (the bare DFS of the same traversal is ~1.0x)."""
+    BFS to about 1.25x (the bare DFS of the same traversal is ~1.0x); on open 1024^2 the loop
+    alone is ~1.27x (instructions counted; the run ~1.6x, the peak-frontier table ~0.14x)."""
     goal, moves, mask = problem.goal, problem.moves, problem.mask
     closed = bytearray(problem.walls)
     rec.step_exp = array("i", [-1])
@@ -314,49 +315,47 @@ def general(
     """BFS (``lifo`` False) or DFS, graph search, under any visit rule and goal test: visit on
     expand (a cell is closed when taken off, and taking off a closed cell is a discarded step)
     or the goal tested on expand.  The goal tests compare with -1 (no cell) where they do not
-    apply, so a step tests no choice but the visit rule."""
+    apply, so a step tests no choice."""
     sem = problem.semantics
     closed = bytearray(problem.walls)
-    close_on_push = sem.visit == "generate"
     goal_on_push = problem.goal if problem.goal_test == "generate" else -1
     goal_on_pop = -1 if problem.goal_test == "generate" else problem.goal
     start = problem.start
     rec.gen_node.append(start)
-    if close_on_push:
-        closed[start] = 1
     if start == goal_on_push:
         rec.goal_gen, rec.done = 0, True
         return
-    loop = _general_lifo if lifo else _general_fifo
-    yield from loop(problem, rec, chunk, closed, close_on_push, goal_on_push, goal_on_pop)
+    if sem.visit == "generate":
+        closed[start] = 1
+        loop = _general_lifo if lifo else _general_fifo
+    else:
+        loop = _expand_lifo if lifo else _expand_fifo
+    yield from loop(problem, rec, chunk, closed, goal_on_push, goal_on_pop)
 
 
-# The two frontiers of `general` are two loops, not one with a branch a step: FIFO takes the
-# events in the order generated, so it walks the record like `bfs` (no queue, no counter); LIFO
-# keeps a stack like `dfs`.  Their successor loops are alike (and `_general_lifo` is `dfs` plus
-# the visit and goal tests, which `dfs`, the default's hot path, does without), but the split
-# pays: BFS visit on expand on open 1024^2 went from 3.3x a bare BFS (one deque serving both
-# frontiers) to 2.9x (CPU time, the loop alone; 4.4x before the chunk buffers; 2.0-2.3x with
-# the discarded steps buffered too).
+# The loops of `general` are four, not one with a branch a step: FIFO takes the events in the
+# order generated, so it walks the record like `bfs` (no queue, no counter); LIFO keeps a stack
+# like `dfs`; and each is written once for each visit rule, so that no step tests the rule.
+# Their successor loops are alike, but the split pays: BFS visit on expand on open 1024^2 went
+# from 3.3x a bare BFS (one deque serving both frontiers) to 2.9x (CPU time, the loop alone;
+# 4.4x before the chunk buffers; 2.0-2.3x with the discarded steps buffered too), and the
+# recorded run from 3.5x to 3.1x with one loop a visit rule (DFS: 4.6x to 4.2x).  What is left
+# over the bare floors (1.9x): the record (an append or two a step, the events stack of LIFO)
+# and, outside the loop, the run's peak-frontier table (~0.6x a bare BFS for 4.2 M steps).
 
 
 def _general_fifo(problem: Problem, rec: Record, chunk: int, closed: bytearray,
-                  close_on_push: bool, goal_on_push: int, goal_on_pop: int) -> Iterator[int]:
-    """`general` with a FIFO queue: events ``head .. count-1`` of the record, as in `bfs`."""
+                  goal_on_push: int, goal_on_pop: int) -> Iterator[int]:
+    """`general` with a FIFO queue, visit on generate: events ``head .. count-1`` of the
+    record, as in `bfs`."""
     moves, mask, gen_node = problem.moves, problem.mask, rec.gen_node
     buf = _Buffers(rec)
-    add, add_end, add_discarded = buf.nodes.append, buf.ends.append, buf.discarded.append
+    add, add_end = buf.nodes.append, buf.ends.append
     head, count, pause = 0, 1, chunk
     while head < count:
         buf.flush()  # the slice below must see every event generated so far
         end = min(count, pause)  # never past the pause: chunks of exactly `chunk` steps
         for step, n in enumerate(gen_node[head:end], head + 1):  # step k expands event k-1
-            if not close_on_push:
-                if closed[n]:
-                    add_discarded(step)
-                    add_end(count)
-                    continue
-                closed[n] = 1
             if n == goal_on_pop:
                 add_end(count)
                 buf.flush()
@@ -366,8 +365,50 @@ def _general_fifo(problem: Problem, rec: Record, chunk: int, closed: bytearray,
                 m = n + off
                 if closed[m]:
                     continue
-                if close_on_push:
-                    closed[m] = 1
+                closed[m] = 1
+                add(m)
+                count += 1
+                if m == goal_on_push:
+                    add_end(count)
+                    buf.flush()
+                    rec.goal_gen, rec.done = count - 1, True
+                    return
+            add_end(count)
+        head = end
+        if head >= pause and head < count:
+            buf.flush()
+            pause = head + chunk
+            yield head
+    buf.flush()
+    rec.done = True
+
+
+def _expand_fifo(problem: Problem, rec: Record, chunk: int, closed: bytearray,
+                 goal_on_push: int, goal_on_pop: int) -> Iterator[int]:
+    """`general` with a FIFO queue, visit on expand: a cell is closed when taken off; taking
+    off a closed cell is a discarded step."""
+    moves, mask, gen_node = problem.moves, problem.mask, rec.gen_node
+    buf = _Buffers(rec)
+    add, add_end, add_discarded = buf.nodes.append, buf.ends.append, buf.discarded.append
+    head, count, pause = 0, 1, chunk
+    while head < count:
+        buf.flush()  # the slice below must see every event generated so far
+        end = min(count, pause)  # never past the pause: chunks of exactly `chunk` steps
+        for step, n in enumerate(gen_node[head:end], head + 1):  # step k expands event k-1
+            if closed[n]:
+                add_discarded(step)
+                add_end(count)
+                continue
+            closed[n] = 1
+            if n == goal_on_pop:
+                add_end(count)
+                buf.flush()
+                rec.goal_gen, rec.done = step - 1, True
+                return
+            for off in moves[mask[n]]:
+                m = n + off
+                if closed[m]:
+                    continue
                 add(m)
                 count += 1
                 if m == goal_on_push:
@@ -386,8 +427,53 @@ def _general_fifo(problem: Problem, rec: Record, chunk: int, closed: bytearray,
 
 
 def _general_lifo(problem: Problem, rec: Record, chunk: int, closed: bytearray,
-                  close_on_push: bool, goal_on_push: int, goal_on_pop: int) -> Iterator[int]:
-    """`general` with a LIFO stack of cells beside their events, as in `dfs`."""
+                  goal_on_push: int, goal_on_pop: int) -> Iterator[int]:
+    """`general` with a LIFO stack of cells beside their events, as in `dfs`, visit on
+    generate."""
+    moves, mask = problem.moves, problem.mask
+    rec.step_exp = array("i", [-1])
+    cells, events = [problem.start], [0]
+    pop_cell, push_cell, pop_event, push_event = cells.pop, cells.append, events.pop, events.append
+    buf = _Buffers(rec)
+    add, add_end, add_exp = buf.nodes.append, buf.ends.append, buf.exps.append
+    count = 1
+    while cells:
+        for _ in repeat(None, chunk):
+            try:
+                n = pop_cell()
+            except IndexError:
+                break
+            g = pop_event()
+            add_exp(g)
+            if n == goal_on_pop:
+                add_end(count)
+                buf.flush()
+                rec.goal_gen, rec.done = g, True
+                return
+            for off in moves[mask[n]]:
+                m = n + off
+                if closed[m]:
+                    continue
+                closed[m] = 1
+                push_cell(m)
+                push_event(count)
+                add(m)
+                count += 1
+                if m == goal_on_push:
+                    add_end(count)
+                    buf.flush()
+                    rec.goal_gen, rec.done = count - 1, True
+                    return
+            add_end(count)
+        buf.flush()
+        if cells:
+            yield rec.steps
+    rec.done = True
+
+
+def _expand_lifo(problem: Problem, rec: Record, chunk: int, closed: bytearray,
+                 goal_on_push: int, goal_on_pop: int) -> Iterator[int]:
+    """`general` with a LIFO stack, visit on expand."""
     moves, mask = problem.moves, problem.mask
     rec.step_exp = array("i", [-1])
     cells, events = [problem.start], [0]
@@ -405,12 +491,11 @@ def _general_lifo(problem: Problem, rec: Record, chunk: int, closed: bytearray,
             g = pop_event()
             add_exp(g)
             steps += 1
-            if not close_on_push:
-                if closed[n]:
-                    add_discarded(steps)
-                    add_end(count)
-                    continue
-                closed[n] = 1
+            if closed[n]:
+                add_discarded(steps)
+                add_end(count)
+                continue
+            closed[n] = 1
             if n == goal_on_pop:
                 add_end(count)
                 buf.flush()
@@ -420,8 +505,6 @@ def _general_lifo(problem: Problem, rec: Record, chunk: int, closed: bytearray,
                 m = n + off
                 if closed[m]:
                     continue
-                if close_on_push:
-                    closed[m] = 1
                 push_cell(m)
                 push_event(count)
                 add(m)
