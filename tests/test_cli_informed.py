@@ -38,12 +38,25 @@ def test_the_cheapest_path_beats_the_fewest_moves_on_exercise_one(capsys) -> Non
 def test_scen_gives_the_optimal_length_and_whether_it_was_met(capsys) -> None:
     """arena row 5: BFS (corner cutting allowed) takes SE, NE for 2.83; the benchmark's lowest
     under no corner cutting is 2.00, and UCS with --corners never meets it."""
-    bfs = headless_json(capsys, *ARENA, "--scen-row", "5")
-    assert bfs["optimal_length"] == 2.0 and bfs["optimal"] is False
+    bfs = headless_json(capsys, *ARENA, "--scen-row", "5", "--corners", "never")
+    assert bfs["optimal_length"] == 2.0 and bfs["optimal"] is False  # 2 moves, one diagonal
+    cutting = headless_json(capsys, *ARENA, "--scen-row", "5")
+    assert cutting["optimal_length"] == 2.0 and cutting["optimal"] is None  # not its rules
+    four = headless_json(capsys, *ARENA, "--scen-row", "5", "--corners", "never",
+                         "--order", "N,W,S,E")
+    assert four["optimal"] is None
     ucs = headless_json(capsys, *ARENA, "--scen-row", "5", "-a", "ucs", "--corners", "never")
     assert ucs["optimal"] is True and abs(ucs["cost"] - ucs["optimal_length"]) < 1e-4
     plain = headless_json(capsys, TUTORIAL)
     assert "optimal" not in plain and "optimal_length" not in plain
+
+
+def test_a_moved_start_or_goal_drops_the_rows_optimum(capsys) -> None:
+    """The row's optimum is for its own start and goal: --goal moves one, and the output says
+    nothing of the benchmark."""
+    moved = headless_json(capsys, *ARENA, "--scen-row", "100", "--goal", "30,30",
+                          "--corners", "never")
+    assert "optimal" not in moved and "optimal_length" not in moved
 
 
 def test_the_text_output_names_the_benchmark_and_an_inadmissible_heuristic(capsys) -> None:
