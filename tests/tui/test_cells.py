@@ -5,6 +5,8 @@ what a cell is (the cursor's, the mouse's), with the keys that move the cursor f
 from __future__ import annotations
 
 import asyncio
+import contextlib
+from collections.abc import AsyncIterator
 
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
@@ -25,6 +27,15 @@ def in_view(view: GridView, cell) -> bool:
     return sx <= x and x + w <= sx + width and sy <= y and y + h <= sy + height
 
 
+@contextlib.asynccontextmanager
+async def tutorial_in_big_cells(algorithm: str = "bfs") -> AsyncIterator[tuple]:
+    """The tutorial at 160x48 (cells of 12x6), laid out: the app, its pilot, its map."""
+    app = tutorial_app(algorithm)
+    async with app.run_test(size=(160, 48)) as pilot:
+        await pilot.pause()
+        yield app, pilot, app.query_one(GridView)
+
+
 def readout(app: SearchApp) -> str:
     r = app.query_one(CellReadout)
     return f"{r.label} {r.text}"
@@ -32,10 +43,7 @@ def readout(app: SearchApp) -> str:
 
 @sync
 async def test_the_tutorial_fills_the_map_area_with_the_largest_cells_that_fit() -> None:
-    app = tutorial_app()
-    async with app.run_test(size=(160, 48)) as pilot:
-        await pilot.pause()
-        view = app.query_one(GridView)
+    async with tutorial_in_big_cells() as (app, _pilot, view):
         g = view.geometry
         width, height = view.scrollable_content_region.size
         assert g.level == 6 and (g.cell_width, g.cell_height) == (12, 6)
@@ -179,10 +187,8 @@ async def test_a_block_of_the_overview_shows_its_most_important_state() -> None:
 
 @sync
 async def test_labels_show_arrows_and_depths_and_cycle() -> None:
-    app = tutorial_app()
-    async with app.run_test(size=(160, 48)) as pilot:
+    async with tutorial_in_big_cells() as (_app, pilot, view):
         await pilot.press(*["n"] * 4)
-        view = app.query_one(GridView)
         g = view.geometry
         # (0,1) reached from the start by S: ↓ in its middle line, depth 1 top right
         _, y, _, h = g.cell_region((0, 1))
@@ -202,10 +208,8 @@ async def test_labels_show_arrows_and_depths_and_cycle() -> None:
 
 @sync
 async def test_an_informed_search_labels_cells_with_g_and_f() -> None:
-    app = tutorial_app("astar")
-    async with app.run_test(size=(160, 48)) as pilot:
+    async with tutorial_in_big_cells("astar") as (app, pilot, view):
         await pilot.press(*["n"] * 3)
-        view = app.query_one(GridView)
         g = view.geometry
         run = app.search_run
         e = run.last_event((0, 1))
@@ -218,10 +222,8 @@ async def test_an_informed_search_labels_cells_with_g_and_f() -> None:
 
 @sync
 async def test_a_step_in_big_cells_repaints_only_the_lines_of_the_cells_it_changed() -> None:
-    app = tutorial_app()
-    async with app.run_test(size=(160, 48)) as pilot:
+    async with tutorial_in_big_cells() as (app, pilot, view):
         await pilot.press("n", "n")
-        view = app.query_one(GridView)
         painted, whole = watch_repaints(view)
         await pilot.pause()
         run = app.search_run
@@ -355,3 +357,30 @@ async def test_a_readout_too_long_for_its_line_ends_in_an_ellipsis() -> None:
         await pilot.pause()
         line = app.query_one(CellReadout).render_line(0).text
         assert line.rstrip().endswith("…") and line.startswith("Cursor (0,0): the start")
+
+
+@sync
+async def test_the_palette_zooms_and_cycles_the_labels() -> None:
+    from tests.tui.test_themes import palette_run
+
+    async with tutorial_in_big_cells() as (_app, pilot, view):
+        level = view.geometry.level
+        await palette_run(pilot, "zoom out")
+        assert view.geometry.level == level - 1
+        await palette_run(pilot, "zoom in")
+        assert view.geometry.level == level
+        await palette_run(pilot, "cell labels")
+        assert view.labels == "depth/cost"
+
+
+@sync
+async def test_a_new_map_is_fitted_again_even_after_a_zoom() -> None:
+    async with tutorial_in_big_cells() as (app, pilot, view):
+        await pilot.press("left_square_bracket", "left_square_bracket")
+        assert view.geometry.level == 4 and not view.fitted
+        app._use_map(open_grid(60, 60), None)  # what opening a map does
+        await pilot.pause()
+        assert view.fitted and view.geometry == Geometry(60, 60, 1)
+        app._use_map(open_grid(3, 3), None)
+        await pilot.pause()
+        assert view.geometry.level == 12  # the largest: 3 cells of 24x12 fit easily

@@ -9,7 +9,7 @@ from tui_search.tui.app import SearchApp
 
 
 def test_the_tutorial_in_big_cells_with_arrows(snap_compare) -> None:
-    """The tutorial's 6x6 map at 160x48, BFS after 6 steps: cells 10x5 characters filling the
+    """The tutorial's 6x6 map at 160x48, BFS after 6 steps: cells 12x6 characters filling the
     map area; each reached cell has its glyph top left, its depth top right and the arrow of
     the move that reached it in the middle (↓ under the start, ↗ and → further on); obstacles
     solid; the line under the map: 'Cursor (0,0): the start, expanded at step 1, depth 0'."""
