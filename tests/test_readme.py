@@ -109,7 +109,8 @@ def test_the_text_map_example_is_the_tutorial_map() -> None:
 #: How the README's keys table names the keys Textual calls otherwise.
 README_NAMES = {"up": "arrows", "down": "arrows", "left": "arrows", "right": "arrows",
                 "plus": "+", "minus": "-", "question_mark": "?", "comma": ",",
-                "escape": "esc"}
+                "escape": "esc", "right_square_bracket": "]", "left_square_bracket": "[",
+                "pageup": "pgup", "pagedown": "pgdn", "S": "shift+s", "G": "shift+g"}
 
 
 def readme_keys() -> set[str]:

@@ -111,7 +111,8 @@ async def test_starts_paused_at_step_0_with_the_cursor_on_the_start() -> None:
         assert narration == "START (0,0) is on the queue. Press n to expand it."
         lines = map_lines(app)
         row0 = next(line for line in lines if "S " in line)
-        assert row0.strip().startswith("S ██· · · ██")
+        # the 6x6 map fills the room it has: cells of 8x4 characters, the start's depth 0
+        assert row0.strip().startswith("S      0" + "█" * 8 + "·       " * 3 + "█" * 8)
 
 
 @sync
@@ -336,18 +337,24 @@ async def test_a_step_key_during_end_stops_the_seek_where_it_is(
         assert not stats(app)[1].startswith("Computing")
 
 
+def watch_repaints(view: GridView) -> tuple[list[int], list[tuple]]:
+    """From now on, the lines ``view`` is asked to repaint one by one, and the arguments of
+    each ``refresh`` (``()``: the whole view)."""
+    painted: list[int] = []
+    original = view.refresh_line
+    view.refresh_line = lambda y: (painted.append(y), original(y))  # type: ignore
+    refreshed: list[tuple] = []
+    original_refresh = view.refresh
+    view.refresh = lambda *a, **k: (refreshed.append(a), original_refresh(*a, **k))  # type: ignore
+    return painted, refreshed
+
+
 @sync
 async def test_a_step_repaints_only_the_lines_it_changed() -> None:
     app = SearchApp(open_grid(300, 300, start=(5, 5)))
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("n", "n", "n")
-        view = app.query_one(GridView)
-        painted: list[int] = []
-        original = view.refresh_line
-        view.refresh_line = lambda y: (painted.append(y), original(y))  # type: ignore
-        refreshed_all = []
-        original_refresh = view.refresh
-        view.refresh = lambda *a, **k: (refreshed_all.append(a), original_refresh(*a, **k))
+        painted, refreshed_all = watch_repaints(app.query_one(GridView))
         await pilot.pause()
         app.action_next()  # what the step itself repaints (not focus or hover events)
         assert app.search_run.k == 4
@@ -513,20 +520,26 @@ async def test_o_toggles_an_obstacle_and_the_new_run_searches_the_edited_map() -
         assert not app.grid.is_blocked((1, 2))
 
 
+def at(view: GridView, x: int, y: int) -> tuple[int, int]:
+    """Where to click cell ``(x, y)``: the view has a one-cell border, so content (0,0) is
+    the widget's (1,1)."""
+    cx, cy = view.screen_offset((x, y))
+    return 1 + cx, 1 + cy
+
+
 @sync
 async def test_clicking_a_cell_moves_the_cursor_and_toggles_an_obstacle() -> None:
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
+        await pilot.pause()  # laid out: the cells have their size
         view = app.query_one(GridView)
-        pad = view.pad_x
-        # the view has a one-cell border: content (0,0) is the widget's (1,1)
-        await pilot.click(GridView, offset=(1 + pad + 2 * 2, 1 + 3))  # cell (2,3)
+        await pilot.click(GridView, offset=at(view, 2, 3))
         assert app.cursor_cell == (2, 3)
         assert app.grid.is_blocked((2, 3)) is False  # (2,3) was an obstacle: erased
         assert app.dirty and app.search_run.k == 0
-        await pilot.click(GridView, offset=(1 + pad + 2 * 2, 1 + 3))
+        await pilot.click(GridView, offset=at(view, 2, 3))
         assert app.grid.is_blocked((2, 3)) is True
-        await pilot.click(GridView, offset=(1 + pad, 1))  # the start: cursor only
+        await pilot.click(GridView, offset=at(view, 0, 0))  # the start: cursor only
         assert app.cursor_cell == (0, 0) and not app.grid.is_blocked((0, 0))
 
 
@@ -534,8 +547,8 @@ async def test_clicking_a_cell_moves_the_cursor_and_toggles_an_obstacle() -> Non
 async def test_right_click_moves_the_cursor_only() -> None:
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
-        pad = app.query_one(GridView).pad_x
-        await pilot.click(GridView, offset=(1 + pad + 2 * 3, 1 + 4), button=3)
+        await pilot.pause()  # laid out: the cells have their size
+        await pilot.click(GridView, offset=at(app.query_one(GridView), 3, 4), button=3)
         assert app.cursor_cell == (3, 4) and not app.dirty
 
 
@@ -543,25 +556,22 @@ async def test_right_click_moves_the_cursor_only() -> None:
 async def test_click_and_drag_draws_then_erases_obstacles() -> None:
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
-        pad = app.query_one(GridView).pad_x
-
-        def at(x: int, y: int) -> tuple[int, int]:
-            return (1 + pad + 2 * x, 1 + y)
-
-        await pilot.mouse_down(GridView, offset=at(0, 5))
+        await pilot.pause()  # laid out: the cells have their size
+        view = app.query_one(GridView)
+        await pilot.mouse_down(GridView, offset=at(view, 0, 5))
         for x in range(1, 5):
-            await pilot.hover(GridView, offset=at(x, 5))
-        await pilot.mouse_up(GridView, offset=at(4, 5))
+            await pilot.hover(GridView, offset=at(view, x, 5))
+        await pilot.mouse_up(GridView, offset=at(view, 4, 5))
         assert [app.grid.is_blocked((x, 5)) for x in range(6)] == [True] * 5 + [False]
         assert app.search_run.grid.is_blocked((4, 5))
         # starting on an obstacle erases
-        await pilot.mouse_down(GridView, offset=at(1, 5))
-        await pilot.hover(GridView, offset=at(2, 5))
-        await pilot.mouse_up(GridView, offset=at(2, 5))
+        await pilot.mouse_down(GridView, offset=at(view, 1, 5))
+        await pilot.hover(GridView, offset=at(view, 2, 5))
+        await pilot.mouse_up(GridView, offset=at(view, 2, 5))
         assert [app.grid.is_blocked((x, 5)) for x in range(6)] == [
             True, False, False, True, True, False]
         # moving without a button down draws nothing
-        await pilot.hover(GridView, offset=at(5, 5))
+        await pilot.hover(GridView, offset=at(view, 5, 5))
         assert not app.grid.is_blocked((5, 5))
 
 
@@ -573,12 +583,13 @@ async def test_z_switches_to_the_half_block_overview_and_back() -> None:
     app = SearchApp(open_grid(64, 40))
     async with app.run_test(size=SIZE) as pilot:
         view = app.query_one(GridView)
-        assert view.virtual_size == (128, 40)
+        assert view.geometry.size == (128, 40)
         await pilot.press("z")
-        assert view.overview and view.virtual_size == (64, 20)
+        # 64 columns do not fit the 58 the side column leaves: a character is 2x2 cells
+        assert view.overview and view.geometry.block == 2 and view.geometry.size == (32, 10)
         assert set(view.render_line(0).text.strip()) == {"▀"}
         await pilot.press("z")
-        assert not view.overview and view.virtual_size == (128, 40)
+        assert not view.overview and view.geometry.size == (128, 40)
 
 
 @sync
@@ -687,7 +698,9 @@ def test_help_lists_every_key_of_the_binding_table() -> None:
 
     listed = " ".join(key for key, _ in KEYS).split()
     aliases = {"up": "arrows", "down": "arrows", "left": "arrows", "right": "arrows",
-                "plus": "+", "minus": "-", "question_mark": "?", "comma": ",", "escape": "esc"}
+                "plus": "+", "minus": "-", "question_mark": "?", "comma": ",", "escape": "esc",
+                "right_square_bracket": "]", "left_square_bracket": "[", "pageup": "pgup",
+                "pagedown": "pgdn"}
     for binding in Binding.make_bindings(SearchApp.BINDINGS):
         assert aliases.get(binding.key, binding.key) in listed, binding.key
 

@@ -205,9 +205,9 @@ async def test_a_narrow_key_bar_drops_the_least_important_hints_never_help_and_q
         await pilot.press("space")
         await pilot.pause()
         assert "Pause" in shown(app) and shown(app)[-2:] == ["Help", "Quit"]
-    # Wide enough (120 columns), nothing is dropped.
+    # Wide enough (150 columns), nothing is dropped.
     app = tutorial_app()
-    async with app.run_test(size=(120, 32)):
+    async with app.run_test(size=(150, 32)):
         assert shown(app) == [desc for _, desc, _ in app.query_one(KeyBar).hints()]
 
 

@@ -90,8 +90,10 @@ def test_too_small(snap_compare) -> None:
 
 
 def test_overview(snap_compare) -> None:
-    """Overview (z) of a 160x100 map: half blocks, two map rows per line, the BFS search at
-    its end painted blue with the green path and the red walls, the whole map visible."""
+    """Overview (z) of a 160x100 map: the whole map visible in half blocks of 2x2 cells (160
+    columns do not fit the 144 the side column leaves), the BFS search at its end painted blue
+    with the green path; a block shows its most important state, so the thin walls' blocks,
+    all searched, are blue; the frontier left at the end along the left edge is black."""
     grid = patterned_grid(160, 100, start=(140, 80), goal=(2, 2))
     assert snap_compare(SearchApp(grid), press=["end", "z"], terminal_size=(200, 60))
 

@@ -31,6 +31,8 @@ class RecordedTree(Recording):
         self._path: set[int] | None = None
         self._levels = array("i", [0])  # FIFO: the first event of each depth
         self._next_same = array("i")  # event -> the next event of the same cell (-1: none)
+        self._prev_same = array("i")  # event -> the previous event of the same cell (-1: none)
+        self._depths: dict[int, int] = {}  # gen_depth's answers where a chain was walked
         self._last_of_cell: dict[int, int] = {}
         goal = self.grid.goal
         assert goal is not None  # the problem checked it
@@ -65,18 +67,32 @@ class RecordedTree(Recording):
         search pushes a cell again only with a lower g, so once that event is generated ``g``
         is *stale*: it will be discarded when it comes off.  (Kept as recorded, extended
         lazily: one dictionary look-up per event, paid only by those who ask.)"""
-        nxt, gen_node = self._next_same, self.rec.gen_node
-        if len(nxt) < len(gen_node):  # extend it over what was recorded since
+        self._index_same_cell()
+        return self._next_same[g]
+
+    def previous_same(self, g: int) -> int:
+        """The event before ``g`` of ``g``'s cell, -1 when ``g`` is its first (what the cell's
+        latest event is again once a step back undoes ``g``)."""
+        if g >= len(self._prev_same):
+            self._index_same_cell()
+        return self._prev_same[g]
+
+    def _index_same_cell(self) -> None:
+        """Extend the next- and previous-event-of-the-same-cell tables over what was recorded
+        since they were last extended."""
+        nxt, prev, gen_node = self._next_same, self._prev_same, self.rec.gen_node
+        if len(nxt) < len(gen_node):
             last = self._last_of_cell
             start = len(nxt)
             nxt.extend(array("i", [-1]) * (len(gen_node) - start))
+            prev.extend(array("i", [-1]) * (len(gen_node) - start))
             for e in range(start, len(gen_node)):
                 p = gen_node[e]
                 before = last.get(p)
                 if before is not None:
                     nxt[before] = e
+                    prev[e] = before
                 last[p] = e
-        return nxt[g]
 
     @property
     def admissible(self) -> bool:
@@ -105,9 +121,22 @@ class RecordedTree(Recording):
         return DIR_NAMES[self.problem.dir_of_offset[node[g] - node[parent]]]
 
     def gen_depth(self, g: int) -> int:
-        if self.rec.gen_depth is not None:
-            return self.rec.gen_depth[g]
-        return len(self.ancestors(g)) - 1
+        """Event ``g``'s depth (moves from the root).  Where it is not recorded, the chain up
+        to the root is walked once: what it met is remembered, so asking for every cell on
+        screen costs each event once."""
+        cheap = self.cheap_depth(g)
+        if cheap is not None:
+            return cheap
+        depths = self._depths
+        chain = []
+        while g >= 0 and g not in depths:
+            chain.append(g)
+            g = self.gen_parent(g)
+        depth = depths[g] if g >= 0 else -1
+        for e in reversed(chain):
+            depth += 1
+            depths[e] = depth
+        return depth
 
     def cheap_depth(self, g: int) -> int | None:
         """Event ``g``'s depth when it costs little to know: recorded (iterative deepening),

@@ -13,7 +13,7 @@ Moving one step either way costs time proportional to that step's successors -- 
 map or the run -- because the position is kept as counters per cell that a step increments and
 its reversal decrements.  The only exception is crossing an iteration boundary of iterative
 deepening backwards, which replays the previous iteration.  Memory grows with the steps (the
-record) plus two counters per cell of the map.
+record) plus three counters per cell of the map.
 """
 
 from __future__ import annotations
@@ -53,6 +53,8 @@ class Run(RecordedTree):
         # (``array * n`` fills in C: a third of the time of copying ``bytes(4 * n)`` in)
         self._n_gen = array("i", [0]) * size
         self._n_exp = array("i", [0]) * size
+        # Per cell: the latest event of it at the position, in the current iteration (-1: none).
+        self._last = array("i", [-1]) * size
         self._frontier = self._new_frontier()
         self.k = 0
         self._enter_iteration(0)
@@ -65,17 +67,19 @@ class Run(RecordedTree):
         root = self.rec.iter_root[it]
         node = self.rec.gen_node[root]
         self._n_gen[node] += 1
+        self._last[node] = root
         self._frontier.reset(root)
 
     def _clear_iteration(self, it: int, upto_step: int) -> None:
         """Undo iteration ``it`` as it stands after ``upto_step``: zero its cells' counters."""
         rec = self.rec
         end = rec.step_end[upto_step]
-        n_gen, n_exp = self._n_gen, self._n_exp
+        n_gen, n_exp, last = self._n_gen, self._n_exp, self._last
         for g in range(rec.iter_root[it], end):
             node = rec.gen_node[g]
             n_gen[node] = 0
             n_exp[node] = 0
+            last[node] = -1
 
     def _forward(self) -> None:
         rec = self.rec
@@ -86,20 +90,26 @@ class Run(RecordedTree):
             self._enter_iteration(it)
         g = rec.exp(k)
         self._n_exp[rec.gen_node[g]] += 1
-        n_gen, gen_node = self._n_gen, rec.gen_node
+        n_gen, gen_node, last = self._n_gen, rec.gen_node, self._last
         succ = self.succ_range(k)
         for h in succ:
-            n_gen[gen_node[h]] += 1
+            p = gen_node[h]
+            n_gen[p] += 1
+            last[p] = h
         self._frontier.forward(g, succ)
         self.k = k
 
     def _backward(self) -> None:
         rec = self.rec
         k = self.k
-        n_gen, gen_node = self._n_gen, rec.gen_node
+        n_gen, gen_node, latest = self._n_gen, rec.gen_node, self._last
         succ = self.succ_range(k)
-        for h in succ:
-            n_gen[gen_node[h]] -= 1
+        root = rec.iter_root[self.iteration_of(k)]
+        for h in reversed(succ):  # the newest first: each cell back to its event before
+            p = gen_node[h]
+            n_gen[p] -= 1
+            before = self.previous_same(h)
+            latest[p] = before if before >= root else -1
         g = rec.exp(k)
         self._n_exp[gen_node[g]] -= 1
         self._frontier.backward(g, succ)
@@ -109,6 +119,7 @@ class Run(RecordedTree):
             # Back across an iteration boundary: show the previous iteration's final state.
             # (Only this iteration's root is generated now.)
             self._n_gen[gen_node[rec.iter_root[it]]] = 0
+            latest[gen_node[rec.iter_root[it]]] = -1
             first, last = self._iter_span(it - 1)
             self.k = first - 1
             self._enter_iteration(it - 1)
@@ -170,20 +181,22 @@ class Run(RecordedTree):
         size, cells = len(self.problem.walls), self.REBUILD_CELLS
         # Progress in events' worth of work: zeroing a counter costs about 1/32 of an event.
         n_exp_events = last - first + 1
-        total = (2 * size / 32 + (end - root) + n_exp_events
+        total = (3 * size / 32 + 2 * (end - root) + n_exp_events
                  + frontier.rebuild_work(root, end, n_exp_events))
         done = 0.0
-        n_gen, n_exp = array("i"), array("i")
-        for counters in (n_gen, n_exp):
+        n_gen, n_exp, latest = array("i"), array("i"), array("i")
+        for counters, fill in ((n_gen, 0), (n_exp, 0), (latest, -1)):
             for lo in range(0, size, cells):
-                counters.frombytes(bytes(4 * min(cells, size - lo)))
+                counters.extend(array("i", [fill]) * min(cells, size - lo))
                 done += min(cells, size - lo) / 32
                 yield done / total
         gen_node = rec.gen_node
         for lo in range(root, end, piece):
             for p in gen_node[lo : min(lo + piece, end)]:
                 n_gen[p] += 1
-            done += min(piece, end - lo)
+            for g in range(lo, min(lo + piece, end)):
+                latest[gen_node[g]] = g
+            done += 2 * min(piece, end - lo)
             yield done / total
 
         def expanded() -> Iterator[Sequence[int]]:
@@ -198,7 +211,8 @@ class Run(RecordedTree):
         for work in frontier.rebuild_pieces(root, end, expanded()):
             done += work
             yield done / total
-        self._n_gen, self._n_exp, self._frontier, self.k = n_gen, n_exp, frontier, k
+        self._n_gen, self._n_exp, self._last = n_gen, n_exp, latest
+        self._frontier, self.k = frontier, k
 
     def forward(self) -> bool:
         """One step forwards; False when already at the end."""
@@ -281,6 +295,12 @@ class Run(RecordedTree):
         """How often ``cell`` was generated and taken off the frontier, up to the position."""
         p = self.problem.pad(cell)
         return self._n_gen[p], self._n_exp[p]
+
+    def last_event(self, cell: Cell) -> int | None:
+        """The latest generation event of ``cell`` at the position, in the iteration shown
+        (None: not reached): the event that decides its came-from arrow and its depth."""
+        g = self._last[self.problem.pad(cell)]
+        return g if g >= 0 else None
 
     def is_stale(self, g: int) -> bool:
         """Is event ``g`` (of a cost-ordered search) superseded at the position: its cell

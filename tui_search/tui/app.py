@@ -33,7 +33,9 @@ from tui_search.tui.editing import EditActions
 from tui_search.tui.files import FileActions
 from tui_search.tui.narration import group_digits
 from tui_search.tui.quiz import QuizActions
+from tui_search.tui.readout import describe
 from tui_search.tui.themes import DEFAULT_THEME, THEMES, map_defaults, textual_themes
+from tui_search.tui.widgets.cell_readout import CellReadout
 from tui_search.tui.widgets.challenge import ChallengePanel
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.grid_view import GridView
@@ -48,9 +50,10 @@ NEEDS_ENDPOINTS = "Place a start (s) and a goal (g) to search"
 #: always (the bar drops the lowest first).
 KEY_IMPORTANCE = {
     "help": 10, "quit": 10, "stop_seek": 9, "next": 8, "play": 7, "pause": 7, "algorithm": 6,
-    "settings": 5, "reset": 4, "save": 3, "quiz": 2, "overview": 2,
+    "settings": 5, "reset": 4, "save": 3, "quiz": 2, "overview": 2, "zoom": 1,
 }
 STEP = Binding.Group("Step", compact=True)
+ZOOM = Binding.Group("Zoom", compact=True)
 ALGO = Binding.Group("/".join(a.tag for a in ALGORITHMS.values()), compact=True)
 
 
@@ -94,7 +97,22 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
         Binding("r", "reset", "Reset", tooltip="Restart the search at step 0"),
         Binding("comma", "settings", "Settings", key_display=",",
                 tooltip="Search settings: moves, corners, visited, goal test, tree search"),
-        Binding("z", "overview", "Zoom", tooltip="Overview: the whole map in half blocks"),
+        Binding("z", "overview", "Whole map",
+                tooltip="Overview: the whole map at once, a character a block of cells"),
+        Binding("right_square_bracket", "zoom(1)", "Zoom in", group=ZOOM, key_display="]",
+                tooltip="Bigger cells (the cursor's cell stays in view)"),
+        Binding("left_square_bracket", "zoom(-1)", "Zoom out", group=ZOOM, key_display="[",
+                tooltip="Smaller cells (out of the smallest: the whole map)"),
+        Binding("a", "labels", "Labels", show=False,
+                tooltip="Cell labels: arrows and depth/cost, depth/cost only, none"),
+        Binding("pageup", "page(-1)", "Page up", show=False, key_display="pgup",
+                tooltip="Cursor a page up"),
+        Binding("pagedown", "page(1)", "Page down", show=False, key_display="pgdn",
+                tooltip="Cursor a page down"),
+        Binding("S", "jump('start')", "To start", show=False, tooltip="Cursor to the start"),
+        Binding("G", "jump('goal')", "To goal", show=False, tooltip="Cursor to the goal"),
+        Binding("e", "jump('current')", "To node", show=False,
+                tooltip="Cursor to the node being expanded"),
         Binding("i", "quiz", "Quiz", tooltip="Predict the next node: a quiz (again to stop)"),
         Binding("enter", "answer", "Answer", show=False,
                 tooltip="Quiz: the node under the cursor comes off next"),
@@ -178,6 +196,7 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
         self.frontier_panel = FrontierPanel(id="frontier")
         self.tree_panel = SearchTreePanel(id="tree")
         self.stats = Stats(id="stats")
+        self.readout = CellReadout(id="readout")
         # One level: the key bar and the status lines split off the bottom, the side column
         # the right; the legend docks under the map, which is centred in what is left.
         # (Containers for the same layout cost every key a few more hops and every repaint
@@ -189,6 +208,7 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
             yield self.frontier_panel
             yield self.tree_panel
             yield Static(NEEDS_ENDPOINTS, id="side-note")
+        yield self.readout
         yield Legend(view, id="legend")
         yield view
         yield Static(id="too-small")
@@ -325,6 +345,7 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
         speed = playback.speed_text(playback.SPEEDS[self.speed_index])
         playing = f"▶ playing {speed}" if self.playing else f"speed {speed}"
         self.stats.show(run, self.algorithm, playing=playing, note=self.note)
+        self.show_readout()
         title = f"{self.map_name} {'· modified' if self.dirty else ''}".strip()
         if self.view.border_title != title:  # setting it repaints the whole view
             self.view.border_title = title
@@ -549,6 +570,45 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
     # -- the map ----------------------------------------------------------------------------
     def action_overview(self) -> None:
         self.view.set_overview(not self.view.overview)
+
+    def action_zoom(self, steps: int) -> None:
+        self.view.zoom(steps)
+
+    def action_labels(self) -> None:
+        mode = self.view.cycle_labels()
+        self.notify(f"Cell labels: {mode}", timeout=2)
+
+    def action_page(self, pages: int) -> None:
+        """The cursor a screenful of cells up or down (at least one cell)."""
+        rows = self.view.scrollable_content_region.height // self.view.geometry.cell_height
+        if self.view.overview:
+            rows = self.view.scrollable_content_region.height * 2 * self.view.geometry.block
+        x, y = self.cursor_cell
+        y = max(0, min(self.grid.height - 1, y + pages * max(1, rows - 1)))
+        self._move_cursor((x, y))
+
+    def action_jump(self, where: str) -> None:
+        """The cursor to the start, the goal or the node being expanded (when there is one)."""
+        run = self.search_run
+        cell = {"start": self.grid.start, "goal": self.grid.goal,
+                "current": run.current_node() if run is not None else None}[where]
+        if cell is None:
+            self.notify({"start": "No start on the map", "goal": "No goal on the map",
+                         "current": "No node is being expanded (step 0)"}[where],
+                        severity="warning", timeout=3)
+            return
+        self._move_cursor(cell)
+
+    def show_readout(self) -> None:
+        """What the run knows of the cell under the mouse, else of the cursor's."""
+        hover = self.view.hover
+        cell, label = (hover, "Mouse") if hover is not None else (self.cursor_cell, "Cursor")
+        if not self.grid.in_bounds(cell):
+            cell, label = self.cursor_cell, "Cursor"
+        self.readout.show(label, describe(self.search_run, self.grid, cell))
+
+    def on_grid_view_cell_hovered(self, message: GridView.CellHovered) -> None:
+        self.show_readout()
 
     def action_help(self) -> None:
         from tui_search.tui.screens.help import HelpScreen  # only when asked: start-up time

@@ -1,6 +1,6 @@
 """The app's own commands in Textual's command palette (``ctrl+p``), beside Textual's: each
 algorithm of the registry, each theme, and the actions a key does (settings, save, save as,
-open, overview, help).
+open, overview, zoom, cell labels, help).
 
 A command runs the same action as its key (``app.run_action``), so the palette can never do
 something the keys do not; its help line is the key's tooltip and the key, so the palette also
@@ -30,6 +30,9 @@ ACTIONS = {
     "save_as": "Save the map as…",
     "open": "Open a map…",
     "overview": "Overview: the whole map",
+    "zoom(1)": "Zoom in: bigger cells",
+    "zoom(-1)": "Zoom out: smaller cells",
+    "labels": "Cell labels: arrows, depth/cost, none",
     "help": "Help: keys, colours, how the searches work",
 }
 

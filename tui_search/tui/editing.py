@@ -66,6 +66,7 @@ class EditActions(AppMixinBase):
     def _move_cursor(self, cell: Cell) -> None:
         self.cursor_cell = cell
         self.view.set_cursor(cell)
+        self.show_readout()
 
     def _edited(self, refusal: str | None) -> bool:
         if refusal is not None:

@@ -1,16 +1,21 @@
 """The map, drawn with Textual's line API: one ``render_line`` per terminal row, never a widget
 per cell, so a 512x512 map costs what the visible part costs.
 
-Two modes:
+Where each cell goes is one :class:`~tui_search.tui.geometry.Geometry`, which the drawing, the
+mouse, the scrolling and the overview share:
 
-* **cells** -- each map cell is two columns wide and carries a glyph as well as a colour, so the
-  picture reads without colour too (see :data:`GLYPHS`, which the legend shows);
-* **overview** -- half blocks (``▀`` with a foreground and a background colour): two map rows per
-  terminal row and one column per map column, so a whole 512x512 map fits a large terminal.
+* **cells** -- each map cell is 2x1, 4x2, 6x3 ... characters (by default the largest at which the
+  whole map fits; ``zoom`` changes it) and carries a glyph as well as a colour, so the picture
+  reads without colour too (see :data:`GLYPHS`, which the legend shows).  Cells at least 4 wide
+  also carry a label (:mod:`~tui_search.tui.cell_labels`): the arrow of the move that reached
+  the cell and, where there is room, its depth or its costs;
+* **overview** -- half blocks (``▀`` with a foreground and a background colour), each half
+  standing for a block of cells drawn by the state that matters most in it (see :data:`RANK`), so
+  every row and column of a 512x512 map shows in a 140x45 terminal.
 
 The widget only draws.  It is told what to show (``show_run``, ``set_cursor``, ``set_grid``) and
-reports what the mouse did with messages (``CellClicked``, ``CellDragged``, ``StrokeEnded``);
-the app decides what an edit means.
+reports what the mouse did with messages (``CellClicked``, ``CellDragged``, ``StrokeEnded``,
+``CellHovered``); the app decides what an edit means.
 """
 
 from __future__ import annotations
@@ -18,17 +23,20 @@ from __future__ import annotations
 from collections.abc import Iterable
 from dataclasses import dataclass
 from itertools import groupby
+from math import ceil, floor
 
 from rich.segment import Segment
 from rich.style import Style
 from textual import events
-from textual.geometry import Region, Size
+from textual.geometry import Size
 from textual.message import Message
 from textual.scroll_view import ScrollView
 from textual.strip import Strip
 
 from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.run import Run
+from tui_search.tui.cell_labels import LABEL_MODES, cell_line
+from tui_search.tui.geometry import Geometry
 from tui_search.tui.widgets.line_panel import CachedStyles, QuietScrollbars, window_strip
 
 # Drawing codes: the search states of a free cell (CellState's values), then what the grid says.
@@ -38,8 +46,21 @@ COMPONENTS = ("free", "frontier", "expanded", "current", "path", "wall", "start"
 GLYPHS = ("· ", "○ ", "● ", "◉ ", "◆ ", "██", "S ", "G ")
 NAMES = ("free", "frontier (generated)", "expanded", "being expanded", "path", "obstacle",
          "start", "goal")
-CELL_WIDTH = 2
 UPPER_HALF = "▀"
+#: What draws a block of the overview: the code of highest rank in it.  Start and goal first
+#: (one cell each, they would vanish in a block otherwise), then path > node being expanded >
+#: frontier > expanded > obstacle > free.
+RANK = {START: 7, GOAL: 6, PATH: 5, CURRENT: 4, FRONTIER: 3, EXPANDED: 2, WALL: 1, FREE: 0}
+BY_RANK = sorted(RANK, key=RANK.__getitem__)
+
+
+def _snapped(value: float, old: float, step: int, maximum: float) -> float:
+    """``value`` moved to a whole ``step`` in the direction it moves from ``old`` (so a wheel
+    turn of one line still moves a tall cell), within ``maximum``."""
+    if step == 1 or value == old:
+        return value
+    whole = ceil(value / step) if value > old else floor(value / step)
+    return min(float(whole * step), maximum)
 
 
 class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inherit_bindings=False):
@@ -66,6 +87,12 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
     class StrokeEnded(Message):
         """The mouse button went up after a click or a drag."""
 
+    @dataclass
+    class CellHovered(Message):
+        """The mouse, no button down, moved onto another cell (None: off the map)."""
+
+        cell: Cell | None
+
     COMPONENT_CLASSES = {f"grid-view--{name}" for name in COMPONENTS} | {"grid-view--cursor"}
 
     DEFAULT_CSS = """
@@ -91,7 +118,14 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         self.grid = grid
         self.run: Run | None = None
         self.cursor: Cell = grid.start or (0, 0)
-        self.overview = False
+        self.hover: Cell | None = None  # the cell under the mouse, no button down
+        #: Where every cell is on screen; until the user zooms, the largest size that fits.
+        self.geometry = Geometry(grid.width, grid.height)
+        self.fitted = True  # False once zoomed: the size stays what the user chose
+        self._level = 1  # the cell size to come back to from the overview
+        self._overview = False
+        self._area: tuple[int, int] | None = None  # the room the layout offers the map
+        self.labels = LABEL_MODES[0]
         self._stroke = False  # the mouse went down on the map and is not up yet
         self._last: Cell | None = None  # the cell the stroke is on
         self._looks: list[tuple[str, Style]] | None = None  # cells mode, code + 8 * cursor
@@ -100,8 +134,8 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
     # -- what to show (attributes pushed down by the app) -----------------------------------
     def set_grid(self, grid: Grid) -> None:
         self.grid = grid
-        self._update_virtual_size()
-        self.refresh()
+        self.fitted = True
+        self._refit()
 
     def show_run(self, run: Run | None, changed: Iterable[Cell] | None = None) -> None:
         """Draw ``run`` at its position.  ``changed`` names the cells that differ from what is
@@ -117,74 +151,134 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         self.refresh_cells((old, cell))
         self.follow(cell)
 
+    @property
+    def overview(self) -> bool:
+        """True while the whole map shows at once, in blocks of cells."""
+        return self._overview
+
     def set_overview(self, on: bool) -> None:
-        self.overview = on
-        self._update_virtual_size()
+        self._overview = on
+        self._refit()
+
+    def zoom(self, steps: int) -> None:
+        """Cells ``steps`` sizes bigger (smaller when negative); out of the smallest is the
+        overview, in from the overview the smallest cells.  The cursor's cell stays in view."""
+        if self._overview:
+            if steps > 0:
+                self._overview = False
+                self._level = 1
+                self.fitted = False
+        elif steps < 0 and self.geometry.level == 1:
+            self._overview = True
+        else:
+            self._level = self.geometry.zoomed(steps).level
+            self.fitted = False
+        self._refit()
+
+    def cycle_labels(self) -> str:
+        """The next label mode (arrows, depth/cost, none); returns it."""
+        self.labels = LABEL_MODES[(LABEL_MODES.index(self.labels) + 1) % len(LABEL_MODES)]
         self.refresh()
-        self.call_after_refresh(self.follow, self.cursor)
+        return self.labels
 
     def refresh_cells(self, cells: Iterable[Cell]) -> None:
         """Repaint only the terminal lines holding ``cells``."""
-        lines = {self._line_of(cell) for cell in cells}
+        lines_of = self.geometry.lines_of
+        lines = {line for cell in cells for line in lines_of(cell)}
         for line in lines:
             self.refresh_line(line)
 
     def follow(self, cell: Cell) -> None:
-        """Scroll (without animation) so ``cell`` is in view with a little room around it."""
+        """Scroll (without animation, by whole cells) so ``cell`` is in view with a little room
+        around it."""
         if not self.size.area:
             return
-        x0, y0, w, h = self._cell_region(cell)
-        width, height = self.scrollable_content_region.size
-        sx, sy = self.scroll_offset
-        margin_x = min(4, max(0, (width - w) // 2))
-        margin_y = min(2, max(0, (height - h) // 2))
-        new_x, new_y = sx, sy
-        if x0 - margin_x < sx or x0 + w + margin_x > sx + width:
-            new_x = x0 - (width - w) // 2  # out of view: centre it
-        if y0 - margin_y < sy or y0 + h + margin_y > sy + height:
-            new_y = y0 - (height - h) // 2
-        if (new_x, new_y) != (sx, sy):
-            self.scroll_to(max(0, new_x), max(0, new_y), animate=False, immediate=True)
+        view = self.scrollable_content_region.size
+        x, y = self.geometry.follow(cell, (int(self.scroll_x), int(self.scroll_y)), view)
+        if (x, y) != self.scroll_offset:
+            self.scroll_to(x, y, animate=False, immediate=True)
 
     # -- geometry ---------------------------------------------------------------------------
     def on_mount(self) -> None:
-        self._update_virtual_size()
+        self._refit()
 
     def on_resize(self) -> None:
+        self._update_virtual_size()
         self.follow(self.cursor)
 
-    def _update_virtual_size(self) -> None:
+    def get_content_width(self, container: Size, viewport: Size) -> int:
+        """The layout offers the map ``container`` (the room the other widgets leave, less
+        the border): fit the cells to it, then ask for the map's width."""
+        area = (container.width, container.height)
+        if area != self._area:
+            self._area = area
+            if self._fit():
+                self._update_virtual_size(layout=False)
+                self.refresh()
+                self.call_after_refresh(self.follow, self.cursor)
+        return self.virtual_size.width
+
+    def get_content_height(self, container: Size, viewport: Size, width: int) -> int:
+        return self.virtual_size.height
+
+    def _fit(self) -> bool:
+        """Choose the geometry for the room there is; True when it changed."""
         g = self.grid
-        if self.overview:
-            self.virtual_size = Size(g.width, (g.height + 1) // 2)
+        width, height = self._area or (g.width * 2, g.height)
+        if self._overview:
+            new = Geometry.overview_fit(g.width, g.height, width, height)
+        elif self.fitted:
+            new = Geometry.fit(g.width, g.height, width, height)
+            self._level = new.level
         else:
-            self.virtual_size = Size(g.width * CELL_WIDTH, g.height)
+            new = Geometry(g.width, g.height, self._level)
+        old, self.geometry = self.geometry, new
+        return new != old
 
-    def _line_of(self, cell: Cell) -> int:
-        return cell[1] // 2 if self.overview else cell[1]
+    def _refit(self) -> None:
+        """A new map, mode or size: the geometry again, a layout and a full repaint, the
+        cursor's cell brought into view."""
+        self._fit()
+        self._update_virtual_size()
+        self.refresh(layout=True)
+        self.call_after_refresh(self.follow, self.cursor)
 
-    def _cell_region(self, cell: Cell) -> Region:
-        x, y = cell
-        if self.overview:
-            return Region(x, y // 2, 1, 1)
-        return Region(x * CELL_WIDTH, y, CELL_WIDTH, 1)
+    def _update_virtual_size(self, layout: bool = True) -> None:
+        """The map's drawing, grown so that the last scroll offset starts at a whole cell."""
+        view = self.scrollable_content_region.size if self.size.area else Size(0, 0)
+        if view.area:
+            size = Size(*self.geometry.scroll_room(view.width, view.height))
+        else:
+            size = Size(*self.geometry.size)
+        if layout:
+            self.virtual_size = size
+        else:  # inside a layout: no second one
+            self.set_reactive(ScrollView.virtual_size, size)
+
+    def validate_scroll_x(self, value: float) -> float:
+        value = super().validate_scroll_x(value)
+        return _snapped(value, self.scroll_x, self.geometry.cell_width, self.max_scroll_x)
+
+    def validate_scroll_y(self, value: float) -> float:
+        value = super().validate_scroll_y(value)
+        return _snapped(value, self.scroll_y, self.geometry.cell_height, self.max_scroll_y)
 
     @property
     def pad_x(self) -> int:
         """Blank columns left of the map, which is centred when narrower than the view."""
-        return max(0, (self.scrollable_content_region.width - self.virtual_size.width) // 2)
+        return max(0, (self.scrollable_content_region.width - self.geometry.size[0]) // 2)
 
     def cell_at(self, offset_x: int, offset_y: int) -> Cell | None:
         """The map cell under a point of the content area (None when off the map)."""
         sx, sy = self.scroll_offset
-        vx, vy = offset_x + sx - self.pad_x, offset_y + sy
-        if vx < 0:
-            return None
-        if self.overview:
-            x, y = vx, vy * 2
-        else:
-            x, y = vx // CELL_WIDTH, vy
-        return (x, y) if self.grid.in_bounds((x, y)) else None
+        return self.geometry.cell_at(offset_x + sx - self.pad_x, offset_y + sy)
+
+    def screen_offset(self, cell: Cell) -> tuple[int, int]:
+        """Where ``cell`` begins in the content area at the scroll offset (tests click
+        there; the inverse of :meth:`cell_at`)."""
+        x, y, _, _ = self.geometry.cell_region(cell)
+        sx, sy = self.scroll_offset
+        return x - sx + self.pad_x, y - sy
 
     # -- styles (from DEFAULT_CSS, so a theme or a palette is a CSS change) -----------------
     def notify_style_update(self) -> None:
@@ -239,56 +333,83 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         sx, sy = self.scroll_offset
         width = self.scrollable_content_region.width
         line = sy + y
-        if self.overview:
+        geo = self.geometry
+        if geo.overview:
             return self._overview_line(line, sx, width)
         background = self.cached_style()
-        if line >= self.grid.height:
+        rows, _ = geo.line_rows(line)
+        if not rows:
             return Strip.blank(width, background)
-        x0 = min(sx // CELL_WIDTH, self.grid.width)
-        x1 = min(self.grid.width, (sx + width) // CELL_WIDTH + 1)
-        codes = self._codes(line, x0, x1)
+        row = rows[0]
+        columns = geo.visible_columns(sx, width)
+        x0, x1 = columns.start, columns.stop
+        codes = self._codes(row, x0, x1)
         cx, cy = self.cursor
-        if cy == line and x0 <= cx < x1:
+        if cy == row and x0 <= cx < x1:
             codes[cx - x0] += len(COMPONENTS)
         looks = self._cell_looks()
-        # one segment per run of like cells, the padding that centres the map first
-        segments = [Segment(" " * self.pad_x, background)]
-        for code, run in groupby(codes):
-            glyph, style = looks[code]
-            segments.append(Segment(glyph * len(list(run)), style))
-        return window_strip(segments, sx - x0 * CELL_WIDTH, width, background)
+        segments = [Segment(" " * self.pad_x, background)]  # the padding that centres the map
+        if geo.cell_width == 2:  # one segment per run of like cells
+            for code, like in groupby(codes):
+                glyph, style = looks[code]
+                segments.append(Segment(glyph * len(list(like)), style))
+        else:
+            sub = line - row * geo.cell_height
+            run = self.run
+            for x, code in zip(columns, codes):
+                base = code % len(COMPONENTS)
+                text = cell_line(run, (x, row), geo.cell_width, geo.cell_height, sub,
+                                 self.labels, GLYPHS[base][0], base == WALL)
+                segments.append(Segment(text, looks[code][1]))
+        return window_strip(segments, sx - x0 * geo.cell_width, width, background)
+
+    def _block_codes(self, rows: range, x0: int, x1: int) -> list[int] | None:
+        """For each block of the overview's columns ``x0 .. x1-1`` over map rows ``rows``:
+        the code of highest rank in it (None for no rows: a half below the map)."""
+        if not rows:
+            return None
+        b = self.geometry.block
+        best: list[int] | None = None
+        for y in rows:
+            ranks = [RANK[code] for code in self._codes(y, x0, x1)]
+            if b > 1:
+                ranks = [max(ranks[i : i + b]) for i in range(0, len(ranks), b)]
+            best = ranks if best is None else list(map(max, best, ranks))
+        assert best is not None
+        return [BY_RANK[rank] for rank in best]
 
     def _overview_line(self, line: int, sx: int, width: int) -> Strip:
         background = self.cached_style()
-        g = self.grid
-        top = line * 2
-        if top >= g.height:
+        geo = self.geometry
+        upper_rows, lower_rows = geo.line_rows(line)
+        if not upper_rows:
             return Strip.blank(width, background)
-        x0 = min(sx, g.width)
-        x1 = min(g.width, sx + width)
-        upper = self._codes(top, x0, x1)
-        lower = self._codes(top + 1, x0, x1) if top + 1 < g.height else None
-        cursor_x = self.cursor[0] - x0 if self.cursor[1] // 2 == line else -1
+        columns = geo.visible_columns(sx, width)
+        upper = self._block_codes(upper_rows, columns.start, columns.stop)
+        assert upper is not None
+        lower = self._block_codes(lower_rows, columns.start, columns.stop)
+        cx, cy = self.cursor
+        cursor_x = cx // geo.block - sx if cy in upper_rows or cy in lower_rows else -1
         cursor_colour = self.get_component_rich_style("grid-view--cursor").color or (
             background.color
         )
         cache: dict[tuple, Style] = {}
         colours = []
-        for i in range(x1 - x0):
+        for i in range(len(upper)):
             a = self.swatch(upper[i]).color
             b = self.swatch(lower[i]).color if lower is not None else background.bgcolor
             if i == cursor_x:
-                if self.cursor[1] == top:
+                if cy in upper_rows:
                     a = cursor_colour
                 else:
                     b = cursor_colour
             colours.append((a, b))
         segments = [Segment(" " * self.pad_x, background)]
-        for (a, b), run in groupby(colours):
+        for (a, b), like in groupby(colours):
             style = cache.get((a, b))
             if style is None:
                 style = cache[a, b] = Style(color=a, bgcolor=b)
-            segments.append(Segment(UPPER_HALF * len(list(run)), style))
+            segments.append(Segment(UPPER_HALF * len(list(like)), style))
         return window_strip(segments, 0, width, background)
 
     # -- the mouse: report, don't edit ------------------------------------------------------
@@ -312,11 +433,20 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
 
     def on_mouse_move(self, event: events.MouseMove) -> None:
         if not self._stroke:
+            self._hovered(self._event_cell(event))
             return
         cell = self._event_cell(event, captured=True)
         if cell is not None and cell != self._last:
             self._last = cell
             self.post_message(self.CellDragged(cell))
+
+    def on_leave(self, event: events.Leave) -> None:
+        self._hovered(None)
+
+    def _hovered(self, cell: Cell | None) -> None:
+        if cell != self.hover:
+            self.hover = cell
+            self.post_message(self.CellHovered(cell))
 
     def on_mouse_up(self, event: events.MouseUp) -> None:
         if self._stroke:

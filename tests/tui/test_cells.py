@@ -1,0 +1,386 @@
+"""The classroom view (issue 12), driven by Pilot: cells that fill the space, zooming, the
+overview that shows all of a big map, labels, scrolling by whole cells, and asking the map
+what a cell is (the cursor's, the mouse's), with the keys that move the cursor far."""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+from collections.abc import AsyncIterator
+
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from tests.tui.test_app import SIZE, open_grid, sync, tutorial_app, wait_until, watch_repaints
+from tests.tui.test_snapshots import patterned_grid
+from tui_search.tui.app import SearchApp
+from tui_search.tui.geometry import Geometry
+from tui_search.tui.widgets.cell_readout import CellReadout
+from tui_search.tui.widgets.grid_view import EXPANDED, FRONTIER, RANK, START, WALL, GridView
+
+
+def in_view(view: GridView, cell) -> bool:
+    """Is all of ``cell`` on screen?"""
+    x, y, w, h = view.geometry.cell_region(cell)
+    sx, sy = view.scroll_offset
+    width, height = view.scrollable_content_region.size
+    return sx <= x and x + w <= sx + width and sy <= y and y + h <= sy + height
+
+
+@contextlib.asynccontextmanager
+async def tutorial_in_big_cells(algorithm: str = "bfs") -> AsyncIterator[tuple]:
+    """The tutorial at 160x48 (cells of 12x6), laid out: the app, its pilot, its map."""
+    app = tutorial_app(algorithm)
+    async with app.run_test(size=(160, 48)) as pilot:
+        await pilot.pause()
+        yield app, pilot, app.query_one(GridView)
+
+
+def readout(app: SearchApp) -> str:
+    r = app.query_one(CellReadout)
+    return f"{r.label} {r.text}"
+
+
+@sync
+async def test_the_tutorial_fills_the_map_area_with_the_largest_cells_that_fit() -> None:
+    async with tutorial_in_big_cells() as (app, _pilot, view):
+        g = view.geometry
+        width, height = view.scrollable_content_region.size
+        assert g.level == 6 and (g.cell_width, g.cell_height) == (12, 6)
+        assert g.size == (width, height) == (72, 36)  # the view hugs the map
+        # one size bigger would not fit the room the side column and the lines below leave
+        assert view.geometry.zoomed(1).size[1] > app.screen.size.height - 12
+        assert not view.show_vertical_scrollbar and not view.show_horizontal_scrollbar
+
+
+@sync
+async def test_a_resize_fits_the_cells_again_until_the_user_zooms() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.pause()
+        view = app.query_one(GridView)
+        small = view.geometry.level
+        await pilot.resize_terminal(160, 48)
+        await pilot.pause()
+        assert view.geometry.level > small
+        await pilot.press("left_square_bracket")
+        chosen = view.geometry.level
+        await pilot.resize_terminal(*SIZE)
+        await pilot.pause()
+        assert view.geometry.level == chosen  # zoomed: the user's size stays
+
+
+@sync
+async def test_zoom_in_and_out_changes_the_cell_size_and_keeps_the_cursor_cell_on_screen() -> None:
+    app = SearchApp(open_grid(120, 90, start=(100, 70)))
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.pause()
+        view = app.query_one(GridView)
+        assert view.geometry.level == 1 and in_view(view, (100, 70))
+        sizes = []
+        for _ in range(5):
+            await pilot.press("right_square_bracket")
+            await pilot.pause()
+            sizes.append((view.geometry.cell_width, view.geometry.cell_height))
+            assert in_view(view, app.cursor_cell)
+        assert sizes == [(4, 2), (6, 3), (8, 4), (10, 5), (12, 6)]
+        await pilot.press("left", "left", "up")  # the cursor moves; the view follows it
+        for _ in range(5):
+            await pilot.press("left_square_bracket")
+            await pilot.pause()
+            assert in_view(view, app.cursor_cell)
+        assert view.geometry.level == 1 and not view.overview
+        await pilot.press("left_square_bracket")  # out of the smallest: the whole map
+        await pilot.pause()
+        assert view.overview and view.scroll_offset == (0, 0)
+        await pilot.press("right_square_bracket")
+        await pilot.pause()
+        assert not view.overview and view.geometry.level == 1
+        assert in_view(view, app.cursor_cell)
+
+
+@settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.integers(0, 6), st.integers(0, 400), st.integers(0, 400), st.data())
+def test_a_click_hits_the_cell_drawn_there_at_every_size_and_offset(zoom, sx, sy,
+                                                                    data) -> None:
+    """Zoom 0 is the overview; then cells 2x1 .. 12x6, scrolled anywhere; a right-click (it
+    only moves the cursor) anywhere in the map's content moves the cursor to the cell drawn
+    under it: for the overview, the block's first cell."""
+
+    async def check() -> None:
+        app = SearchApp(open_grid(150, 110, start=(3, 3)))
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.pause()
+            view = app.query_one(GridView)
+            if zoom == 0:
+                view.set_overview(True)
+            else:
+                for _ in range(zoom - 1):
+                    view.zoom(1)
+            await pilot.pause()
+            view.scroll_to(sx, sy, animate=False, immediate=True)
+            await pilot.pause()
+            g = view.geometry
+            ox, oy = view.scroll_offset
+            assert ox % g.cell_width == 0 and oy % g.cell_height == 0  # whole cells
+            width, height = view.scrollable_content_region.size
+            x = data.draw(st.integers(0, min(width, g.size[0] - ox) - 1))
+            y = data.draw(st.integers(0, min(height, g.size[1] - oy) - 1))
+            expected = g.cell_at(x + ox - view.pad_x, y + oy)
+            assert expected is not None
+            cx, cy, w, h = g.cell_region(expected)
+            assert cx <= x + ox - view.pad_x < cx + w and cy <= y + oy < cy + h
+            await pilot.click(GridView, offset=(1 + x, 1 + y), button=3)
+            assert app.cursor_cell == expected
+
+    asyncio.run(check())
+
+
+@sync
+async def test_the_overview_of_a_512_map_shows_every_row_and_column() -> None:
+    app = SearchApp(patterned_grid(512, 512, start=(256, 256), goal=(2, 2)))
+    async with app.run_test(size=(140, 45)) as pilot:
+        await pilot.press("z")
+        await pilot.pause()
+        view = app.query_one(GridView)
+        g = view.geometry
+        assert g.overview and g.block == 7
+        width, height = view.scrollable_content_region.size
+        assert g.size[0] <= width and g.size[1] <= height and view.scroll_offset == (0, 0)
+        assert not view.show_vertical_scrollbar and not view.show_horizontal_scrollbar
+        # the drawing covers columns 0..511 and rows 0..511
+        assert g.cell_at(g.size[0] - 1, g.size[1] - 1) is not None
+        assert g.visible_columns(0, width) == range(512)
+        assert view.render_line(g.size[1] - 1).text.strip()
+
+
+@sync
+async def test_a_block_of_the_overview_shows_its_most_important_state() -> None:
+    """A 20x20 map in blocks of 5: one frontier cell among expanded ones draws its block as
+    frontier; the start's block as the start; a wall among free cells as a wall."""
+    app = SearchApp(open_grid(20, 20, start=(2, 2), goal=(19, 19)))
+    app.grid.set_blocked((12, 2), True)
+    app._new_run()
+    async with app.run_test(size=SIZE) as pilot:
+        view = app.query_one(GridView)
+        view.set_overview(True)
+        await pilot.pause()
+        view.geometry = Geometry(20, 20, 1, 5)  # the fit would choose 1; blocks of 5 here
+        codes = view._block_codes(range(5), 0, 20)
+        assert codes == [6, 0, 5, 0]  # START, FREE, WALL, FREE
+        run = app.search_run
+        for k in (3, 9, 20, 40):
+            run.goto(k)
+            expected = []
+            for bx in range(4):  # the block's most important cell, asked cell by cell
+                looks = []
+                for x in range(5 * bx, 5 * bx + 5):
+                    for y in range(5):
+                        cell = (x, y)
+                        looks.append(START if cell == app.grid.start
+                                     else WALL if app.grid.is_blocked(cell)
+                                     else int(run.cell_state(cell)))
+                expected.append(max(looks, key=RANK.__getitem__))
+            assert view._block_codes(range(5), 0, 20) == expected
+        assert FRONTIER in expected and EXPANDED not in expected  # the frontier hides it
+
+
+@sync
+async def test_labels_show_arrows_and_depths_and_cycle() -> None:
+    async with tutorial_in_big_cells() as (_app, pilot, view):
+        await pilot.press(*["n"] * 4)
+        g = view.geometry
+        # (0,1) reached from the start by S: ↓ in its middle line, depth 1 top right
+        _, y, _, h = g.cell_region((0, 1))
+        top, middle = view.render_line(y).text, view.render_line(y + h // 2).text
+        assert top[: g.cell_width] == "●" + " " * (g.cell_width - 2) + "1"
+        assert "↓" in middle[: g.cell_width]
+        _, y2, _, _ = g.cell_region((2, 1))  # (2,1) reached NE from (1,2)
+        assert "↗" in view.render_line(y2 + h // 2).text[2 * g.cell_width : 3 * g.cell_width]
+        await pilot.press("a")  # depth only: no arrows
+        assert "↓" not in view.render_line(y + h // 2).text
+        assert view.render_line(y).text[: g.cell_width].endswith("1")
+        await pilot.press("a")  # none
+        assert view.render_line(y).text[: g.cell_width].strip() == "●"
+        await pilot.press("a")
+        assert view.labels == "arrows"
+
+
+@sync
+async def test_an_informed_search_labels_cells_with_g_and_f() -> None:
+    async with tutorial_in_big_cells("astar") as (app, pilot, view):
+        await pilot.press(*["n"] * 3)
+        g = view.geometry
+        run = app.search_run
+        e = run.last_event((0, 1))
+        cost, _, f = run.gen_costs(e)
+        _, y, _, h = g.cell_region((0, 1))
+        assert view.render_line(y).text[: g.cell_width].endswith(f"{cost:.0f}")
+        last = view.render_line(y + h - 1).text[: g.cell_width]
+        assert last.endswith(f"{f:.1f}")
+
+
+@sync
+async def test_a_step_in_big_cells_repaints_only_the_lines_of_the_cells_it_changed() -> None:
+    async with tutorial_in_big_cells() as (app, pilot, view):
+        await pilot.press("n", "n")
+        painted, whole = watch_repaints(view)
+        await pilot.pause()
+        run = app.search_run
+        app.action_next()
+        changed = run.changed_cells(run.k) + [run.gen_cell(run.rec.exp(run.k - 1))]
+        lines = {line for cell in changed for line in view.geometry.lines_of(cell)}
+        assert painted and set(painted) == lines
+        assert not any(a == () for a in whole), "a whole-view refresh"
+
+
+@sync
+async def test_the_wheel_scrolls_by_whole_cells() -> None:
+    app = SearchApp(open_grid(200, 200))
+    async with app.run_test(size=SIZE) as pilot:
+        view = app.query_one(GridView)
+        view.zoom(2)  # 6x3 cells
+        await pilot.pause()
+        for _ in range(3):
+            view.scroll_relative(y=1, animate=False)  # a wheel turn: one line
+            await pilot.pause()
+            assert view.scroll_y % 3 == 0
+        assert view.scroll_y > 0
+        view.scroll_to(x=7, y=None, animate=False, immediate=True)
+        await pilot.pause()
+        assert view.scroll_x % 6 == 0 and view.scroll_x > 0
+
+
+# -- ask the map ----------------------------------------------------------------------------
+
+
+@sync
+async def test_the_readout_says_what_the_cursor_cell_is() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.pause()
+        assert readout(app) == "Cursor (0,0): the start, on the frontier since step 0, depth 0"
+        await pilot.press(*["n"] * 5, "down", "down")
+        assert readout(app) == (
+            "Cursor (0,2): expanded at step 3, depth 2, reached by S from (0,1)")
+        await pilot.press("down")
+        assert readout(app) == (
+            "Cursor (0,3): being expanded (step 5), depth 3, reached by S from (0,2)")
+        await pilot.press("down")
+        assert readout(app) == (
+            "Cursor (0,4): on the frontier since step 5, depth 4, reached by S from (0,3)")
+        await pilot.press("right")
+        assert readout(app).startswith("Cursor (1,4): on the frontier since step 5")
+        await pilot.press("up")
+        assert readout(app) == "Cursor (1,3): on the frontier since step 3, depth 3, " \
+            "reached by SE from (0,2)"
+        await pilot.press("right")
+        assert readout(app) == "Cursor (2,3): obstacle"
+        app.cursor_cell = (4, 5)
+        await pilot.press("right")
+        assert readout(app) == "Cursor (5,5): never reached"
+        await pilot.press("n")  # the cursor's cell does not change: the readout follows
+        await pilot.press("end")
+        await wait_until(pilot, lambda: app.search_run.at_end)
+        assert (0, 1) in app.search_run.path()
+        app.cursor_cell = (0, 0)
+        await pilot.press("down")
+        assert readout(app).startswith("Cursor (0,1): on the path, expanded at step 2")
+
+
+@sync
+async def test_the_readout_follows_the_mouse_and_gives_back_to_the_cursor() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("n", "n")
+        view = app.query_one(GridView)
+        x, y = view.screen_offset((0, 1))
+        await pilot.hover(GridView, offset=(1 + x, 1 + y))
+        await pilot.pause()
+        assert readout(app) == (
+            "Mouse (0,1): being expanded (step 2), depth 1, reached by S from (0,0)")
+        await pilot.hover("#stats")
+        await pilot.pause()
+        assert readout(app).startswith("Cursor (0,0): the start")
+
+
+@sync
+async def test_the_readout_of_a_cost_ordered_search_gives_g_h_and_f() -> None:
+    app = tutorial_app("astar")
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("n", "down")
+        text = readout(app)
+        run = app.search_run
+        cost, _, _ = run.gen_costs(run.last_event((0, 1)))
+        assert text.startswith("Cursor (0,1): on the frontier since step 1, depth 1, ")
+        assert f"g {cost:g}, h " in text and "f " in text and "reached by S from (0,0)" in text
+
+
+@sync
+async def test_keys_jump_the_cursor_to_start_goal_and_the_node_being_expanded() -> None:
+    app = SearchApp(open_grid(150, 150, start=(100, 120), goal=(5, 5)))
+    async with app.run_test(size=SIZE) as pilot:
+        view = app.query_one(GridView)
+        await pilot.pause()
+        await pilot.press("G")
+        assert app.cursor_cell == (5, 5) and in_view(view, (5, 5))
+        await pilot.press("e")  # step 0: none yet
+        assert app.cursor_cell == (5, 5)
+        await pilot.press("n", "n", "n", "e")
+        assert app.cursor_cell == app.search_run.current_node()
+        await pilot.press("S")
+        await pilot.pause()
+        assert app.cursor_cell == (100, 120) and in_view(view, (100, 120))
+        assert readout(app).startswith("Cursor (100,120): the start")
+
+
+@sync
+async def test_page_keys_move_the_cursor_a_screenful() -> None:
+    app = SearchApp(open_grid(60, 200))
+    async with app.run_test(size=SIZE) as pilot:
+        view = app.query_one(GridView)
+        await pilot.pause()
+        rows = view.scrollable_content_region.height
+        await pilot.press("pagedown")
+        assert app.cursor_cell == (0, rows - 1) and in_view(view, app.cursor_cell)
+        await pilot.press("pagedown", "pagedown", "pagedown", "pagedown", "pagedown",
+                          "pagedown", "pagedown", "pagedown", "pagedown")
+        assert app.cursor_cell == (0, 199)
+        await pilot.press("pageup")
+        assert app.cursor_cell == (0, 199 - (rows - 1))
+
+
+@sync
+async def test_a_readout_too_long_for_its_line_ends_in_an_ellipsis() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await pilot.pause()
+        line = app.query_one(CellReadout).render_line(0).text
+        assert line.rstrip().endswith("…") and line.startswith("Cursor (0,0): the start")
+
+
+@sync
+async def test_the_palette_zooms_and_cycles_the_labels() -> None:
+    from tests.tui.test_themes import palette_run
+
+    async with tutorial_in_big_cells() as (_app, pilot, view):
+        level = view.geometry.level
+        await palette_run(pilot, "zoom out")
+        assert view.geometry.level == level - 1
+        await palette_run(pilot, "zoom in")
+        assert view.geometry.level == level
+        await palette_run(pilot, "cell labels")
+        assert view.labels == "depth/cost"
+
+
+@sync
+async def test_a_new_map_is_fitted_again_even_after_a_zoom() -> None:
+    async with tutorial_in_big_cells() as (app, pilot, view):
+        await pilot.press("left_square_bracket", "left_square_bracket")
+        assert view.geometry.level == 4 and not view.fitted
+        app._use_map(open_grid(60, 60), None)  # what opening a map does
+        await pilot.pause()
+        assert view.fitted and view.geometry == Geometry(60, 60, 1)
+        app._use_map(open_grid(3, 3), None)
+        await pilot.pause()
+        assert view.geometry.level == 12  # the largest: 3 cells of 24x12 fit easily

@@ -1,0 +1,169 @@
+"""Where each map cell is on screen: the one geometry the map's drawing, its mouse hit-testing,
+its scrolling and its overview share (no Textual here, so it is tested on its own).
+
+Two kinds of layout, one object:
+
+* **cells** -- a cell is ``width`` x ``height`` characters, kept roughly square on screen
+  (a character is about twice as tall as wide): 2x1, 4x2, 6x3 ... (:data:`MAX_LEVEL` levels);
+* **overview** -- ``block`` > 0: a character column stands for ``block`` map columns and a
+  character row for ``2 * block`` map rows, drawn as two half blocks (``▀``) of ``block`` x
+  ``block`` cells each, so a 512x512 map fits a 140x45 terminal.
+
+All positions are *virtual*: in the map's whole drawing, before scrolling.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from tui_search.engine.grid import Cell
+
+#: The largest cell: 2 * MAX_LEVEL characters wide, MAX_LEVEL lines tall.
+MAX_LEVEL = 12
+
+
+@dataclass(frozen=True)
+class Geometry:
+    """A ``columns`` x ``rows`` map laid out at cell size ``level`` (``2 * level`` x ``level``
+    characters), or, with ``block`` > 0, as an overview of blocks of cells."""
+
+    columns: int
+    rows: int
+    level: int = 1
+    block: int = 0
+
+    # -- construction --------------------------------------------------------------------
+    @classmethod
+    def fit(cls, columns: int, rows: int, width: int, height: int) -> Geometry:
+        """The largest cell size at which the whole map fits ``width`` x ``height``
+        characters (2x1 when even that does not fit: the map scrolls)."""
+        level = min(width // (2 * max(1, columns)), height // max(1, rows), MAX_LEVEL)
+        return cls(columns, rows, max(1, level))
+
+    @classmethod
+    def overview_fit(cls, columns: int, rows: int, width: int, height: int) -> Geometry:
+        """The smallest block at which every column and row of the map shows in ``width`` x
+        ``height`` characters (a block of 1: a character per column, two rows per line)."""
+        width, height = max(1, width), max(1, height)
+        block = max(1, -(-columns // width), -(-rows // (2 * height)))
+        return cls(columns, rows, 1, block)
+
+    def zoomed(self, steps: int) -> Geometry:
+        """The cell size ``steps`` levels bigger (smaller when negative), within 1..MAX_LEVEL;
+        from the overview, cells of the smallest size."""
+        if self.overview:
+            return Geometry(self.columns, self.rows, 1)
+        level = max(1, min(MAX_LEVEL, self.level + steps))
+        return Geometry(self.columns, self.rows, level)
+
+    # -- sizes ---------------------------------------------------------------------------
+    @property
+    def overview(self) -> bool:
+        return self.block > 0
+
+    @property
+    def cell_width(self) -> int:
+        """Characters per cell across (1 in the overview: a character per block)."""
+        return 1 if self.overview else 2 * self.level
+
+    @property
+    def cell_height(self) -> int:
+        """Lines per cell (1 in the overview: a line per two blocks)."""
+        return 1 if self.overview else self.level
+
+    @property
+    def size(self) -> tuple[int, int]:
+        """The whole map's drawing, in characters and lines."""
+        if self.overview:
+            b = self.block
+            return -(-self.columns // b), -(-self.rows // (2 * b))
+        return self.columns * self.cell_width, self.rows * self.cell_height
+
+    # -- cell <-> screen -----------------------------------------------------------------
+    def cell_region(self, cell: Cell) -> tuple[int, int, int, int]:
+        """``(x, y, width, height)`` of the characters that draw ``cell``."""
+        x, y = cell
+        if self.overview:
+            return x // self.block, y // (2 * self.block), 1, 1
+        w, h = self.cell_width, self.cell_height
+        return x * w, y * h, w, h
+
+    def lines_of(self, cell: Cell) -> range:
+        """The lines that draw ``cell`` (what a change of the cell repaints)."""
+        _, y, _, h = self.cell_region(cell)
+        return range(y, y + h)
+
+    def cell_at(self, x: int, y: int) -> Cell | None:
+        """The cell drawn at character ``x`` of line ``y`` (in the overview, the top-left cell
+        of the block there); None off the map."""
+        if x < 0 or y < 0:
+            return None
+        if self.overview:
+            cell = (x * self.block, y * 2 * self.block)
+        else:
+            cell = (x // self.cell_width, y // self.cell_height)
+        return cell if cell[0] < self.columns and cell[1] < self.rows else None
+
+    def line_rows(self, line: int) -> tuple[range, range]:
+        """The map rows line ``line`` draws: cells mode, one row (and an empty range); the
+        overview, the rows of its upper and of its lower half block."""
+        if self.overview:
+            b = self.block
+            top = line * 2 * b
+            return (range(top, min(top + b, self.rows)),
+                    range(min(top + b, self.rows), min(top + 2 * b, self.rows)))
+        row = line // self.cell_height
+        return range(row, row + 1) if 0 <= row < self.rows else range(0), range(0)
+
+    def visible_columns(self, scroll_x: int, width: int) -> range:
+        """The map columns with at least one character in ``width`` characters from
+        ``scroll_x`` (in the overview, every column of the blocks shown)."""
+        if self.overview:
+            b = self.block
+            return range(min(scroll_x * b, self.columns),
+                         min(self.columns, (scroll_x + width) * b))
+        w = self.cell_width
+        return range(min(scroll_x // w, self.columns),
+                     min(self.columns, -(-(scroll_x + width) // w)))
+
+    # -- scrolling -----------------------------------------------------------------------
+    def snap(self, x: int, y: int) -> tuple[int, int]:
+        """The scroll offset at or before ``(x, y)`` that starts at a whole cell."""
+        w, h = self.cell_width, self.cell_height
+        return max(0, x) // w * w, max(0, y) // h * h
+
+    def scroll_room(self, view_width: int, view_height: int) -> tuple[int, int]:
+        """How far the drawing must reach so that the last scroll offset also starts at a
+        whole cell: the map's size, grown by the part of a cell the view leaves over."""
+        width, height = self.size
+        w, h = self.cell_width, self.cell_height
+        if width > view_width:
+            width += (-(width - view_width)) % w
+        if height > view_height:
+            height += (-(height - view_height)) % h
+        return width, height
+
+    def follow(self, cell: Cell, scroll: tuple[int, int], view: tuple[int, int],
+               margin: tuple[int, int] = (2, 1)) -> tuple[int, int]:
+        """The scroll offset that shows ``cell`` in a ``view``-sized window: ``scroll`` when it
+        is already in view with ``margin`` cells around it, else one that centres it (whole
+        cells either way)."""
+        x0, y0, w, h = self.cell_region(cell)
+        sx, sy = scroll
+        width, height = view
+        mx = min(margin[0] * w, max(0, (width - w) // 2))
+        my = min(margin[1] * h, max(0, (height - h) // 2))
+        if x0 - mx < sx or x0 + w + mx > sx + width:
+            sx = x0 - (width - w) // 2
+        if y0 - my < sy or y0 + h + my > sy + height:
+            sy = y0 - (height - h) // 2
+        sx, sy = self.snap(sx, sy)
+        # rounded down to a whole cell, the cell may end past the view: a cell further on
+        if x0 + w > sx + width:
+            sx += self.cell_width
+        if y0 + h > sy + height:
+            sy += self.cell_height
+        return sx, sy
+
+
+__all__ = ["MAX_LEVEL", "Geometry"]

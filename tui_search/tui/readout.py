@@ -1,0 +1,67 @@
+"""Ask the map: what the run knows of one cell, in a line -- "(12,40): expanded at step 345,
+depth 17, reached by NE from (11,41)" (no Textual: the readout widget shows the string)."""
+
+from __future__ import annotations
+
+from bisect import bisect_right
+
+from tui_search.engine.grid import Cell, Grid
+from tui_search.engine.run import CellState, Run
+from tui_search.tui.editing import cell_text
+
+
+def _number(value: float) -> str:
+    return f"{value:.2f}".rstrip("0").rstrip(".")
+
+
+def describe(run: Run | None, grid: Grid, cell: Cell) -> str:
+    """``cell``'s coordinates and what it is: an obstacle, never reached, on the frontier
+    since a step, expanded at a step, with its depth, costs and the move that reached it
+    (of its latest event at the run's position)."""
+    head = cell_text(cell)
+    if grid.is_blocked(cell):
+        return f"{head}: obstacle"
+    parts = []
+    if cell == grid.start:
+        parts.append("the start")
+    elif cell == grid.goal:
+        parts.append("the goal")
+    g = run.last_event(cell) if run is not None else None
+    if run is None or g is None:
+        if run is not None:
+            parts.append("not reached in this iteration" if run.iteration_of(run.k)
+                         else "never reached")
+        return f"{head}: {', '.join(parts) or 'free'}"
+    state = run.cell_state(cell)
+    if state == CellState.PATH:
+        parts.append("on the path")
+    step = run.expanded_at(g)
+    if step is not None and step <= run.k:
+        if run.is_discarded(step):
+            parts.append(f"taken off at step {step} and discarded (expanded before)")
+        elif step == run.k:
+            parts.append(f"being expanded (step {step})")
+        else:
+            parts.append(f"expanded at step {step}")
+    else:
+        since = bisect_right(run.rec.step_end, g)
+        parts.append(f"on the frontier since step {since}")
+    parts.append(f"depth {run.gen_depth(g)}")
+    costs = run.gen_costs(g)
+    if costs is not None:
+        cost, h, priority = costs
+        parts.append(f"g {_number(cost)}")
+        if run.algo.informed:
+            parts.append(f"h {_number(h)}")
+            if priority not in (cost, h):
+                parts.append(f"f {_number(priority)}")
+    parent = run.gen_parent(g)
+    if parent >= 0:
+        parts.append(f"reached by {run.gen_dir(g)} from {cell_text(run.gen_cell(parent))}")
+    times = run.times_reached(cell)[0]
+    if times > 1:
+        parts.append(f"reached {times} times")
+    return f"{head}: {', '.join(parts)}"
+
+
+__all__ = ["describe"]
