@@ -15,10 +15,11 @@ from benchmarks.peers import networkx_bfs, pathfinding_bfs, scipy_bfs
 from benchmarks.table import Row, add
 from tui_search.engine.grid import Grid
 from tui_search.engine.run import Run
+from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
 
 
-def recorded(grid: Grid, algorithm: str) -> Run:
-    run = Run(grid, algorithm)
+def recorded(grid: Grid, algorithm: str, semantics: Semantics = DEFAULT_SEMANTICS) -> Run:
+    run = Run(grid, algorithm, semantics)
     run.advance()
     return run
 
@@ -36,7 +37,8 @@ def traced(fn: Callable[[], object]) -> tuple[int, int]:
     return peak, retained
 
 
-def bench_memory(name: str, grid: Grid, algorithm: str, run: Run) -> None:
+def bench_memory(name: str, grid: Grid, algorithm: str, run: Run, section: str = "engine"
+                 ) -> None:
     """Bytes per expansion three ways: the record's arrays (``rec.nbytes``); what the recorded
     Run keeps; and its peak while recording.  The last two are tracemalloc figures minus the
     same for a Run on the same map with the goal on the start (no expansions), which holds
@@ -47,10 +49,11 @@ def bench_memory(name: str, grid: Grid, algorithm: str, run: Run) -> None:
     rec_b = run.rec.nbytes() / steps
     trivial = grid.copy()
     trivial.goal = trivial.start
-    map_peak, map_kept = traced(lambda: recorded(trivial, algorithm))
-    peak, kept = traced(lambda: recorded(grid, algorithm))
+    sem = run.semantics
+    map_peak, map_kept = traced(lambda: recorded(trivial, algorithm, sem))
+    peak, kept = traced(lambda: recorded(grid, algorithm, sem))
     kept_b, peak_b = (kept - map_kept) / steps, (peak - map_peak) / steps
-    add(Row("engine", f"{name} {algorithm.upper()} memory per expansion (rec.nbytes | kept | "
+    add(Row(section, f"{name} {run.algo.short} memory per expansion (rec.nbytes | kept | "
             "peak, above the map)", f"{rec_b:.1f} | {kept_b:.1f} | {peak_b:.1f} B",
             f"map-only Run {map_peak / 1e6:.1f} MB", None, "≤ 64 B",
             max(rec_b, kept_b, peak_b) <= 64))

@@ -16,7 +16,7 @@ import time
 from collections.abc import Callable
 
 from benchmarks.baselines import pad
-from benchmarks.engine import traced
+from benchmarks.engine import bench_memory
 from benchmarks.harness import CPU, fmt_time, interleaved, med, paired, series, timed
 from benchmarks.maps import MAPS, MAZE, MAZE_SCEN, open_grid
 from benchmarks.table import Row, add
@@ -114,24 +114,6 @@ def recorded(grid: Grid, algorithm: str) -> Run:
     return run
 
 
-def bench_memory(name: str, grid: Grid, key: str, run: Run) -> None:
-    """Bytes per expansion above the map, as the engine section measures BFS's: the record's
-    arrays, what the finished run keeps and its peak while recording, each minus the same for
-    a run whose goal is its start."""
-    steps = run.rec.steps
-    trivial = grid.copy()
-    trivial.goal = trivial.start
-    map_peak, map_kept = traced(lambda: recorded(trivial, key))
-    peak, kept = traced(lambda: recorded(grid, key))
-    rec_b, kept_b, peak_b = (run.rec.nbytes() / steps, (kept - map_kept) / steps,
-                             (peak - map_peak) / steps)
-    label = "A*" if key == "astar" else "UCS"
-    add(Row("informed", f"{name} {label} memory per expansion (rec.nbytes | kept | peak, "
-            "above the map)", f"{rec_b:.0f} | {kept_b:.0f} | {peak_b:.0f} B",
-            f"{len(run.rec.gen_node) / steps:.1f} events a step", None, "≤ 64 B",
-            max(rec_b, kept_b, peak_b) <= 64))
-
-
 def bench_informed(quick: bool) -> None:
     print("informed ...", file=sys.stderr, flush=True)
     repeats = 3 if quick else 5
@@ -164,7 +146,7 @@ def bench_informed(quick: bool) -> None:
                     add(Row("informed", f"{name} A* recorded run vs pathfinding 1.0.23 A* "
                             "(+grid)", fmt_time(t["run"]), f"pathfinding {fmt_time(pf_t)}", r,
                             "≤ 0.125 (8× less)", r <= 0.125))
-            bench_memory(name, grid, key, run)
+            bench_memory(name, grid, key, run, "informed")
             del run
     bench_big_queue(quick)
 

@@ -8,6 +8,7 @@ the same thing about the step the run is at.
 
 from __future__ import annotations
 
+from dataclasses import replace
 from weakref import WeakKeyDictionary
 
 from tui_search.engine.algorithms import get_algorithm
@@ -200,8 +201,6 @@ def lowest_cost(run: Run) -> float | None:
     if run.grid.width * run.grid.height > LOWEST_COST_CELLS:
         return None
     if run not in _LOWEST:
-        from dataclasses import replace
-
         sem = replace(run.semantics, goal_test=None, tree_search=False, visit="generate")
         _LOWEST[run] = Run(run.grid, "ucs", sem).outcome().cost
     return _LOWEST[run]
