@@ -34,6 +34,7 @@ sys.path[:] = [p for p in sys.path if Path(p or ".").resolve() != HERE]
 sys.path.insert(0, str(ROOT))
 
 from benchmarks.choices import bench_choices
+from benchmarks.compare import bench_compare
 from benchmarks.engine import bench_engine
 from benchmarks.harness import NOISE, med
 from benchmarks.informed import bench_informed
@@ -44,7 +45,8 @@ from benchmarks.table import ROWS, Row, add, print_table
 
 #: The sections, in the order they run and print.
 SECTIONS = {"engine": bench_engine, "choices": bench_choices, "informed": bench_informed,
-            "jump": bench_jump, "step": bench_step, "startup": bench_startup}
+            "jump": bench_jump, "step": bench_step, "compare": bench_compare,
+            "startup": bench_startup}
 
 
 def main(argv: list[str] | None = None) -> int:

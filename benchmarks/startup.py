@@ -60,6 +60,7 @@ def bench_startup(quick: bool) -> None:
     fns = {"trivial": lambda: first_frame([py, str(TRIVIAL_APP)])}
     if app_cls is not None:
         fns["tutorial"] = lambda: first_frame(cli + [str(TUTORIAL)])
+        fns["compare"] = lambda: first_frame(cli + [str(TUTORIAL), "--compare", "bfs,dfs"])
         if (MAPS / MAZE).exists():
             fns["maze"] = lambda: first_frame(cli + maze_cli_args())
     first_frame([py, str(TRIVIAL_APP)])  # warm the file cache and the .pyc files
@@ -75,6 +76,9 @@ def bench_startup(quick: bool) -> None:
     r = paired(t["tutorial"], base)
     add(Row("startup", "tui-search maps/tutorial.txt → first frame vs trivial app",
             fmt_time(t["tutorial"]), f"trivial {fmt_time(base)}", r, "≤ 1.3", r <= 1.3))
+    r = paired(t["compare"], base)
+    add(Row("startup", "tui-search maps/tutorial.txt --compare bfs,dfs → first frame vs trivial",
+            fmt_time(t["compare"]), f"trivial {fmt_time(base)}", r, "≤ 1.6", r <= 1.6))
     if "maze" in t:
         r = paired(t["maze"], base)
         add(Row("startup", "tui-search maze512 (+.scen) → first frame vs trivial app",

@@ -16,7 +16,7 @@ import pkgutil
 import pytest
 
 import benchmarks
-from benchmarks import bench, choices, harness, step
+from benchmarks import bench, choices, compare, harness, step
 from benchmarks.baselines import (
     bare_bfs,
     bare_dfs,
@@ -43,11 +43,20 @@ def test_every_benchmark_module_imports() -> None:
         importlib.import_module(f"benchmarks.{name}")
 
 
-def test_the_entry_point_has_the_six_sections_and_refuses_another(capsys) -> None:
-    assert list(bench.SECTIONS) == ["engine", "choices", "informed", "jump", "step", "startup"]
+def test_the_entry_point_has_the_seven_sections_and_refuses_another(capsys) -> None:
+    assert list(bench.SECTIONS) == ["engine", "choices", "informed", "jump", "step", "compare",
+                                    "startup"]
     with pytest.raises(SystemExit) as info:
         bench.main(["--only", "engine,nope"])
     assert info.value.code == 2 and "unknown section 'nope'" in capsys.readouterr().err
+
+
+def test_the_compare_section_drives_compare_mode_to_the_end() -> None:
+    """The compare section's ``end`` on the tutorial (untimed): both runs at their ends."""
+    from tui_search.tui.app import SearchApp
+
+    _, steps = asyncio.run(compare._end_once(SearchApp, load_map(TUTORIAL)))
+    assert steps == [22, 7]
 
 
 def test_the_bare_baselines_find_the_engines_path_lengths() -> None:

@@ -74,9 +74,9 @@ def test_refused_combinations(capsys, argv, expected) -> None:
     assert expected in err and err.count("\n") == 1
 
 
-def test_compare_and_exercise_say_they_need_headless(capsys) -> None:
-    code, _, err = run_cli(capsys, TUTORIAL, "--compare", "bfs,dfs")
-    assert code == 2 and "--compare runs with --headless" in err
+def test_compare_without_headless_refuses_bad_searches_before_the_app_starts(capsys) -> None:
+    code, _, err = run_cli(capsys, TUTORIAL, "--compare", "bfs,nope")
+    assert code == 2 and "--compare 'bfs,nope'" in err and err.count("\n") == 1
 
 
 @pytest.mark.parametrize("exercise", [1, 2])

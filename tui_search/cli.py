@@ -15,6 +15,7 @@ from typing import IO, NoReturn
 from tui_search import __version__
 from tui_search.engine.algorithms import ALGORITHMS, DEFAULT_ALGORITHM, get_algorithm
 from tui_search.engine.exercises import (
+    MARKS_KEY,
     QUOTES,
     Contender,
     Verdict,
@@ -22,6 +23,8 @@ from tui_search.engine.exercises import (
     comparison,
     parse_compare,
     summary_sentence,
+    table_cells,
+    table_lines,
     tutorial_grid,
 )
 from tui_search.engine.grid import DEFAULT_ORDER, Grid, parse_order
@@ -393,25 +396,8 @@ def compare_table(labels: list[str], outcomes: list[Outcome]) -> str:
     """The comparison as text: a row a search, marks on the fewest expanded and the
     cheapest path, and the tutorial's sentence."""
     rows = comparison(labels, outcomes)
-    head = ("search", "found", "moves", "cost", "expanded", "generated", "max frontier")
-    cells = [head]
-    for r in rows:
-        o = r.outcome
-        cells.append((
-            r.label,
-            "gave up" if o.gave_up else ("yes" if o.found else "no"),
-            f"{o.length:,}" if o.length is not None else "-",
-            (f"{o.cost:.3f}" + (" *" if r.cheapest else "  ")) if o.cost is not None else "-",
-            f"{o.expanded:,}" + (" *" if r.fewest_expanded else "  "),
-            f"{o.generated:,}",
-            f"{o.max_frontier:,}",
-        ))
-    widths = [max(len(c[i]) for c in cells) for i in range(len(head))]
-    lines = ["  " + "  ".join(c.ljust(w) for c, w in zip(row, widths)).rstrip()
-             for row in cells]
-    lines.append("  * the fewest expanded, the cheapest path")
-    lines.append("  " + summary_sentence(rows))
-    return "\n".join(lines)
+    lines = table_lines(table_cells(rows)) + [MARKS_KEY, summary_sentence(rows)]
+    return "\n".join("  " + line for line in lines)
 
 
 def run_compare(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
@@ -460,7 +446,7 @@ def run_app(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
     app = SearchApp(grid, path=path, algorithm=args.algorithm, semantics=semantics_from(args),
                     max_steps=args.max_steps, unsaved_name=BUILT_IN_TITLE, theme=args.theme,
                     optimal_cost=scenario.optimal_length if scenario is not None else None,
-                    exercise=args.exercise)
+                    exercise=args.exercise, compare=args.compare)
     app.run()
     return app.return_code or 0
 
@@ -484,9 +470,6 @@ def check_modes(args: argparse.Namespace) -> None:
             raise UsageError(f"{flag} chooses the searches: leave out -a")
         if args.trace:
             raise UsageError(f"--trace is for one search, not {flag}")
-        if not args.headless and mode == "compare":
-            raise UsageError("--compare runs with --headless (the app's side-by-side view is "
-                             "not built yet)")
     if args.exercise is not None:
         changed = [f"--{f.replace('_', '-')}" for f in _SEARCH_FLAGS
                    if getattr(args, f) is not None]
@@ -515,6 +498,8 @@ def main(argv: list[str] | None = None) -> int:
         if args.headless:
             return run_headless(args, grid, path)
         semantics_from(args)  # report bad choices before the screen changes
+        if args.compare:
+            contenders_from(args)
         return run_app(args, grid, path)
     except UsageError as exc:
         print(f"tui-search: error: {exc}", file=sys.stderr)

@@ -16,6 +16,7 @@ challenge panel shows the same figures live.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, replace
 from pathlib import Path
 
@@ -149,15 +150,51 @@ class TableRow:
     cheapest: bool
 
 
-def comparison(labels: list[str], outcomes: list[Outcome]) -> list[TableRow]:
+def comparison(labels: list[str], outcomes: list[Outcome], marks: bool = True) -> list[TableRow]:
     """The table's rows: each run with a mark on the fewest expanded and the cheapest path
-    (ties marked alike)."""
+    (ties marked alike); no marks with ``marks=False`` (runs still going)."""
     fewest = min(o.expanded for o in outcomes)
     costs = [o.cost for o in outcomes if o.cost is not None]
     cheapest = min(costs) if costs else None
-    return [TableRow(label, o, o.expanded == fewest,
-                     o.cost is not None and cheapest is not None and o.cost <= cheapest + 1e-9)
+    return [TableRow(label, o, marks and o.expanded == fewest, marks and o.cost is not None
+                     and cheapest is not None and o.cost <= cheapest + 1e-9)
             for label, o in zip(labels, outcomes)]
+
+
+#: The comparison table's columns.
+TABLE_HEAD = ("search", "found", "moves", "cost", "expanded", "generated", "max frontier")
+#: The line under the table that says what the marks mean.
+MARKS_KEY = "* the fewest expanded, the cheapest path"
+
+
+def table_cells(rows: list[TableRow], steps: Sequence[int | None] | None = None
+                ) -> list[tuple[str, ...]]:
+    """The table as text cells, the head first.  ``steps``: for each row, the step a run that
+    is still going is at (its "found" says so), or None for a finished run."""
+    out: list[tuple[str, ...]] = [TABLE_HEAD]
+    for i, r in enumerate(rows):
+        o = r.outcome
+        step = steps[i] if steps is not None else None
+        if step is not None:
+            found = f"… step {step:,}"
+        else:
+            found = "gave up" if o.gave_up else ("yes" if o.found else "no")
+        out.append((
+            r.label,
+            found,
+            f"{o.length:,}" if o.length is not None else "-",
+            (f"{o.cost:.3f}" + (" *" if r.cheapest else "  ")) if o.cost is not None else "-",
+            f"{o.expanded:,}" + (" *" if r.fewest_expanded else "  "),
+            f"{o.generated:,}",
+            f"{o.max_frontier:,}",
+        ))
+    return out
+
+
+def table_lines(cells: list[tuple[str, ...]]) -> list[str]:
+    """The cells in aligned columns, a line a row."""
+    widths = [max(len(c[i]) for c in cells) for i in range(len(cells[0]))]
+    return ["  ".join(c.ljust(w) for c, w in zip(row, widths)).rstrip() for row in cells]
 
 
 def summary_sentence(rows: list[TableRow]) -> str:
@@ -180,7 +217,9 @@ def summary_sentence(rows: list[TableRow]) -> str:
 
 __all__ = [
     "LIVE_CELLS",
+    "MARKS_KEY",
     "QUOTES",
+    "TABLE_HEAD",
     "TUTORIAL_MAP",
     "Contender",
     "TableRow",
@@ -189,5 +228,7 @@ __all__ = [
     "comparison",
     "parse_compare",
     "summary_sentence",
+    "table_cells",
+    "table_lines",
     "tutorial_grid",
 ]

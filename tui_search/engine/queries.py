@@ -219,6 +219,24 @@ class RecordedTree(Recording):
             gave_up=rec.gave_up,
         )
 
+    def outcome_so_far(self, k: int) -> Outcome:
+        """The figures after step ``k`` (recorded): the counts up to it, and the path only
+        when ``k`` is the last step (at the last step, :meth:`outcome`)."""
+        rec = self.rec
+        discarded = bisect_right(rec.discarded, k)
+        last = rec.done and k == rec.steps
+        return Outcome(
+            algorithm=self.algorithm,
+            semantics=self.semantics,
+            path=self.path() if last else None,
+            moves=self.moves() if last else None,
+            expanded=k - discarded,
+            discarded=discarded,
+            generated=rec.step_end[k],
+            max_frontier=self.peak_frontier(k),
+            gave_up=last and rec.gave_up,
+        )
+
     def step(self, k: int) -> Step:
         """Step ``k`` (1-based) as a value."""
         if k > self.rec.steps:

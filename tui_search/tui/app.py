@@ -9,7 +9,7 @@ moves in time-boxed slices so keys are still answered.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator
+from collections.abc import Iterator
 from dataclasses import replace
 from pathlib import Path
 from time import perf_counter
@@ -19,11 +19,12 @@ from textual import events
 from textual.app import App, ComposeResult
 from textual.binding import Binding, BindingType
 from textual.command import Provider
+from textual.containers import Grid as GridBox
 from textual.containers import Vertical
 from textual.widgets import Static
 
 from tui_search.engine.algorithms import ALGORITHMS, DEFAULT_ALGORITHM, get_algorithm
-from tui_search.engine.exercises import LIVE_CELLS, check, tutorial_grid
+from tui_search.engine.exercises import LIVE_CELLS, Contender, check, parse_compare, tutorial_grid
 from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.run import MAX_STEPS, Run
 from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
@@ -33,24 +34,35 @@ from tui_search.tui.editing import EditActions
 from tui_search.tui.files import FileActions
 from tui_search.tui.narration import group_digits
 from tui_search.tui.quiz import QuizActions
-from tui_search.tui.readout import describe
+from tui_search.tui.readout import describe, describe_each
+from tui_search.tui.screens.settings_choice import SettingsChoice
 from tui_search.tui.themes import DEFAULT_THEME, THEMES, map_defaults, textual_themes
 from tui_search.tui.widgets.cell_readout import CellReadout
 from tui_search.tui.widgets.challenge import ChallengePanel
+from tui_search.tui.widgets.compare_table import CompareTable
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.key_bar import KeyBar
 from tui_search.tui.widgets.legend import Legend
+from tui_search.tui.widgets.run_pane import RunPane, show_run
 from tui_search.tui.widgets.search_tree import SearchTreePanel
 from tui_search.tui.widgets.stats import Stats
 
 MIN_WIDTH, MIN_HEIGHT = 60, 20
+#: Compare mode: the searches ``c`` compares until the settings pick others.
+DEFAULT_COMPARE = "bfs,dfs"
+#: Compare mode's panes stand side by side while each is at least this wide (else in a grid
+#: of fewer columns, one above the other at the narrowest), and fold their search trees away
+#: when shorter than PANE_TREE_HEIGHT lines.
+PANE_MIN_WIDTH, PANE_TREE_HEIGHT = 50, 24
+LOCKSTEP = ("Lockstep: n steps every search not done yet, p steps back the latest, "
+            "end runs them all to the end · 1-6 add or take out a search · c one search")
 NEEDS_ENDPOINTS = "Place a start (s) and a goal (g) to search"
 #: What the key bar keeps when it is too narrow for every hint: the highest; help and quit
 #: always (the bar drops the lowest first).
 KEY_IMPORTANCE = {
     "help": 10, "quit": 10, "stop_seek": 9, "next": 8, "play": 7, "pause": 7, "algorithm": 6,
-    "settings": 5, "reset": 4, "save": 3, "quiz": 2, "overview": 2, "zoom": 1,
+    "compare": 6, "settings": 5, "reset": 4, "save": 3, "quiz": 2, "overview": 2, "zoom": 1,
 }
 STEP = Binding.Group("Step", compact=True)
 ZOOM = Binding.Group("Zoom", compact=True)
@@ -94,6 +106,10 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
         Binding("s", "place('start')", "Start", show=False, tooltip="Start at the cursor"),
         Binding("g", "place('goal')", "Goal", show=False, tooltip="Goal at the cursor"),
         Binding("o", "toggle_wall", "Wall", show=False, tooltip="Obstacle on/off at the cursor"),
+        Binding("c", "compare", "Compare",
+                tooltip="Compare searches side by side in lockstep (again: one search)"),
+        Binding("f", "fold_trees", "Trees", show=False,
+                tooltip="Compare mode: fold the search trees away (again: show them)"),
         Binding("r", "reset", "Reset", tooltip="Restart the search at step 0"),
         Binding("comma", "settings", "Settings", key_display=",",
                 tooltip="Search settings: moves, corners, visited, goal test, tree search"),
@@ -139,14 +155,22 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
         config: Config | None = None,
         optimal_cost: float | None = None,
         exercise: int | None = None,
+        compare: str | None = None,
     ) -> None:
         """``theme`` is for this run only (``--theme``); without it, the one the config file
         remembers.  ``config`` defaults to the user's file (:func:`~tui_search.tui.config.
         config_path`).  ``optimal_cost`` is a benchmark's lowest cost for this map, start and
         goal (a MovingAI ``.scen`` row: 8 moves, no corner cutting), shown beside a path's cost
         while the map, its ends and those rules stay as they are.  ``exercise`` opens the
-        tutorial's exercise 1 or 2 as a live challenge (``x`` cycles them)."""
+        tutorial's exercise 1 or 2 as a live challenge (``x`` cycles them).  ``compare`` opens
+        compare mode with those searches (``bfs,dfs``: :func:`~tui_search.engine.exercises.
+        parse_compare`'s form)."""
         super().__init__()
+        self.compare = compare  # None: one search; else the searches side by side
+        self.compare_pick = compare or DEFAULT_COMPARE  # what c compares
+        self.contenders: list[Contender] = []
+        self.runs: list[Run] = []  # every search shown: one, or one a pane
+        self.fold_trees = False  # compare mode: the trees folded away by the user
         self.exercise = exercise
         self._benchmark = None if optimal_cost is None else (
             bytes(grid.blocked), grid.start, grid.goal, optimal_cost)
@@ -182,6 +206,9 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
         self.seeking = False
         self._moves: Iterator[float] | None = None  # the pieces of a seek's move, once recorded
         self._seek_to = 0  # the step they move to
+        self._seek_queue: list[tuple[Run, int | None]] = []  # runs to move: to 0, None the end
+        self._seek_from: list[tuple[int, bool]] = []  # where the runs were when it started
+        self._seek_noted = False  # the note says how far the seek is
         self._play_after = False  # play once the seek is there (space at the last step)
         self.note = ""
         self.search_run: Run | None = None
@@ -203,6 +230,8 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
         # a few more widgets to composite.)
         yield KeyBar(KEY_IMPORTANCE, id="keys")
         yield self.stats
+        self.compare_table = CompareTable(id="compare-table")
+        yield self.compare_table
         with Vertical(id="side"):
             yield ChallengePanel(id="challenge")
             yield self.frontier_panel
@@ -210,8 +239,23 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
             yield Static(NEEDS_ENDPOINTS, id="side-note")
         yield self.readout
         yield Legend(view, id="legend")
+        self.compare_box = GridBox(*self._new_panes(), id="compare")
+        yield self.compare_box
         yield view
         yield Static(id="too-small")
+
+    def _new_panes(self) -> list[RunPane]:
+        """A pane for each search compared (none in single mode)."""
+        return [RunPane(self.grid, c.label) for c in self.contenders] if self.compare else []
+
+    @property
+    def panes(self) -> list[RunPane]:
+        return list(self.compare_box.query_children(RunPane)) if self.compare else []
+
+    @property
+    def views(self) -> list[GridView]:
+        """The map views on screen: one a pane in compare mode, else the one."""
+        return [pane.view for pane in self.panes] or [self.view]
 
     def on_mount(self) -> None:
         if self.config.problem:
@@ -219,13 +263,35 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
         self._timer = self.set_interval(1.0, self._tick, pause=True)
         self._set_speed(self.speed_index)
         self._check_size(self.size.width, self.size.height)
-        self.view.set_cursor(self.cursor_cell)
+        self.screen_stack[0].set_class(self.compare is not None, "-compare")
+        self._arrange_panes(self.size.width, self.size.height)
+        for view in self.views:
+            view.set_cursor(self.cursor_cell)
+        if self.compare:
+            self.views[0].focus()
         self._mounted_ok = True
         self._check_exercise()
         self._show()
 
     def on_resize(self, event: events.Resize) -> None:
         self._check_size(event.size.width, event.size.height)
+        self._arrange_panes(event.size.width, event.size.height)
+
+    def _arrange_panes(self, width: int, height: int) -> None:
+        """Compare mode's panes side by side while each is wide enough, else in fewer
+        columns; their trees folded away when the panes are short (or when asked)."""
+        n = len(self.contenders) if self.compare else 0
+        if not n:
+            return
+        columns = max(1, min(n, width // PANE_MIN_WIDTH))
+        rows = -(-n // columns)
+        box = self.compare_box
+        box.styles.grid_size_columns = columns
+        box.styles.grid_size_rows = rows
+        # What the bottom takes: the table (a line a search, head, two more, its border),
+        # the status lines, the readout, the key bar and the legend.
+        room = height - (n + 5) - 2 - 1 - 1 - 2
+        box.set_class(self.fold_trees or room // rows < PANE_TREE_HEIGHT, "-no-trees")
 
     def _check_size(self, width: int, height: int) -> None:
         small = width < MIN_WIDTH or height < MIN_HEIGHT
@@ -282,14 +348,22 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
         self._stop()
         self.note = note
         grid = self.grid
+        if self.compare:
+            self.contenders, why = self._compare_contenders(self.compare)
+            self.note = self.note or why
         if grid.start is None or grid.goal is None:
-            self.search_run = None
+            self.runs = []
             self.note = note or NEEDS_ENDPOINTS
         else:
-            self.search_run = Run(grid, self.algorithm, self.semantics, self.max_steps)
-            self.search_run.known_lowest = self._benchmark_cost()
-            if self.quiz and not self.note:
-                self.note = self._quiz_question()
+            searches = ([(c.algorithm, c.semantics) for c in self.contenders] if self.compare
+                        else [(self.algorithm, self.semantics)])
+            self.runs = [Run(grid, algorithm, semantics, self.max_steps)
+                         for algorithm, semantics in searches]
+            for run in self.runs:
+                run.known_lowest = self._benchmark_cost()
+        self.search_run = self.runs[0] if self.runs else None
+        if self.search_run is not None and self.quiz and not self.note:
+            self.note = self._quiz_question()
         if self._mounted_ok:
             self._check_exercise()
             self._show()
@@ -331,26 +405,49 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
         rules = sem.corners == "never" and len(sem.order) == 8
         return cost if same_map and rules else None
 
-    def _show(self, changed: list[Cell] | None = None, follow: bool = True) -> None:
-        """Push the run at its position to every widget; ``changed`` limits the map repaint."""
+    def _compare_contenders(self, spec: str) -> tuple[list[Contender], str]:
+        """The searches of ``spec`` under the settings in force, and a note when a setting
+        does not apply to one of them (the visit rule: that one visits on generate)."""
+        try:
+            return parse_compare(spec, self.semantics), ""
+        except ValueError:
+            fitted = replace(self.semantics, visit="generate")
+            return parse_compare(spec, fitted), ("Visit on expand applies to BFS and DFS "
+                                                 "only: the others visit on generate")
+
+    def _show(self, changed: list[Cell] | None = None, follow: bool = True,
+              per_run: list[list[Cell] | None] | None = None) -> None:
+        """Push the runs at their positions to every widget; ``changed`` limits the map
+        repaint (``per_run``: a list of changed cells for each run)."""
         run = self.search_run
-        self.view.show_run(run, changed)
         self.screen_stack[0].set_class(run is None, "-no-run")
-        if run is not None:
-            self.frontier_panel.show(run, hide_order=self.quiz)
-            self.tree_panel.show(run)
-            node = run.current_node()
-            if follow and node is not None:
-                self.view.follow(node)
         speed = playback.speed_text(playback.SPEEDS[self.speed_index])
         playing = f"▶ playing {speed}" if self.playing else f"speed {speed}"
-        self.stats.show(run, self.algorithm, playing=playing, note=self.note)
-        self.show_readout()
         title = f"{self.map_name} {'· modified' if self.dirty else ''}".strip()
-        if self.view.border_title != title:  # setting it repaints the whole view
-            self.view.border_title = title
-        key = (run is None, run and run.k == 0, run and run.at_end, self.speed_index,
-               self.playing, self.seeking)
+        if self.compare:
+            runs = self.runs
+            last = max((r.k for r in runs), default=0)
+            for i, pane in enumerate(self.panes):
+                r = runs[i] if runs else None
+                pane.show(r, self.contenders[i].algorithm,
+                          per_run[i] if per_run is not None else changed, follow=follow,
+                          hide_order=self.quiz and i == 0,
+                          done=r is not None and r.at_end and r.k < last)
+                if pane.view.border_title != title:
+                    pane.view.border_title = title
+            labels = [c.label for c in self.contenders]
+            self.compare_table.show(labels, runs)
+            self.stats.show_compare(labels, playing=playing, note=self.note, sentence=LOCKSTEP)
+        else:
+            show_run(self.view, self.frontier_panel, self.tree_panel, run,
+                     per_run[0] if per_run is not None else changed, follow, self.quiz)
+            self.stats.show(run, self.algorithm, playing=playing, note=self.note)
+            if self.view.border_title != title:  # setting it repaints the whole view
+                self.view.border_title = title
+        self.show_readout()
+        runs = self.runs
+        key = (not runs, all(r.k == 0 for r in runs), all(r.at_end for r in runs),
+               self.speed_index, self.playing, self.seeking, self.compare)
         if key != self._bindings_key:
             self._bindings_key = key
             self.refresh_bindings()
@@ -359,34 +456,38 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
         """Grey out (None) the keys that cannot act now, hide (False) those that do not apply
         (Play while playing, Pause while not, esc but while computing the end), and behind
         the "too small" message let only q act."""
-        run = self.search_run
+        runs = self.runs
         if self.too_small:
             return action in ("quit", "help_quit")
         if action == "play":
-            return False if self.playing else (None if run is None else True)
+            return False if self.playing else (None if not runs else True)
         if action == "pause":
             return self.playing
         if action == "stop_seek":
             return self.seeking
         if action in ("next", "last"):
-            return None if run is None or (run.at_end and not self.playing) else True
+            return None if not runs or (all(r.at_end for r in runs) and not self.playing) \
+                else True
         if action in ("prev", "first"):
-            return None if run is None or run.k == 0 else True
+            return None if not runs or all(r.k == 0 for r in runs) else True
         if action == "reset":
-            return None if run is None else True
+            return None if not runs else True
         if action == "answer":
-            return self.quiz and run is not None
+            return self.quiz and bool(runs)
+        if action == "fold_trees":
+            return self.compare is not None
         if action == "faster":
             return None if self.speed_index == len(playback.SPEEDS) - 1 else True
         if action == "slower":
             return None if self.speed_index == 0 else True
         return True
 
-    # -- stepping ---------------------------------------------------------------------------
-    def _moved(self, old_k: int, was_at_end: bool) -> None:
-        run = self.search_run
-        assert run is not None, "only a run moves"
-        self._show(playback.step_changes(run, old_k, was_at_end))
+    # -- stepping: every run in lockstep ------------------------------------------------------
+    def _moved(self, before: list[tuple[int, bool]]) -> None:
+        """Show the runs after a move from ``before`` (each run's step and whether it was at
+        its end): only the cells a one-step move changed."""
+        self._show(per_run=[playback.step_changes(run, k, was_at_end)
+                            for run, (k, was_at_end) in zip(self.runs, before)])
 
     def action_next(self) -> None:
         self._step(forward=True)
@@ -394,107 +495,133 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
     def action_prev(self) -> None:
         self._step(forward=False)
 
+    def _advance(self, forward: bool) -> list[tuple[int, bool]] | None:
+        """One step of the lockstep: forwards, every run not at its end; backwards, the runs
+        at the latest step (one that ended earlier stays on its last screen).  Where they
+        were before, or None when none moved."""
+        runs = self.runs
+        if not runs:
+            return None
+        before = [(r.k, r.at_end) for r in runs]
+        if forward:
+            moved = [r.forward() for r in runs]
+        else:
+            latest = max(r.k for r in runs)
+            moved = [r.k == latest and r.backward() for r in runs]
+        return before if any(moved) else None
+
     def _step(self, forward: bool) -> None:
-        run = self.search_run
-        if run is None:
-            return
         self._stop()
-        old_k, was_at_end = run.k, run.at_end
-        if run.forward() if forward else run.backward():
-            self._moved(old_k, was_at_end)
+        before = self._advance(forward)
+        if before is not None:
+            self._moved(before)
 
     def action_first(self) -> None:
-        run = self.search_run
-        if run is None:
-            return
-        self._stop()
-        self._to_step_0(run)
-
-    def _to_step_0(self, run: Run, then_play: bool = False) -> None:
-        """Back to step 0: from far (a big map), in slices like end; then play if asked."""
-        if run.k > run.REBUILD_AFTER:
-            self.seeking = True
-            self._moves, self._seek_to = run.rebuild_pieces(0), 0
-            self._play_after = then_play
-            self._seek_slice(run)
-            return
-        run.goto(0)
-        if then_play:
-            self._play()
-        else:
-            self._show()
+        if self.runs:
+            self._stop()
+            self._seek([(run, 0) for run in self.runs])
 
     def action_reset(self) -> None:
         self._new_run()
 
     def action_last(self) -> None:
-        """Go to the end: record the search, then move there, in slices of at most
+        """Go to the end: record each search, then move there, in slices of at most
         SLICE_SECONDS of work with the event loop answering keys in between (esc, or any key
         that moves the position, stops it where it is).  ``home`` from far moves the same way."""
-        if self.search_run is None or self.search_run.at_end:
+        if not self.runs or all(r.at_end for r in self.runs):
             return
         self._stop()
+        self._seek([(run, None) for run in self.runs])
+
+    def _seek(self, targets: list[tuple[Run, int | None]], then_play: bool = False) -> None:
+        """Move each run to its target (step 0, or None: its end), one run after another;
+        then show them all (and play if asked)."""
         self.seeking = True
-        self._seek_slice(self.search_run)
+        self._seek_queue = targets
+        self._seek_from = [(r.k, r.at_end) for r in self.runs]
+        self._play_after = then_play
+        self._moves = None
+        self._seek_next()
+
+    def _seek_next(self) -> None:
+        """Start the next run's move; a run a few steps from its target moves at once."""
+        queue = self._seek_queue
+        while queue:
+            run, target = queue[0]
+            if target is None and run.at_end or target == 0 and run.k == 0:
+                queue.pop(0)
+            elif target == 0 and run.k <= run.REBUILD_AFTER:
+                run.goto(0)
+                queue.pop(0)
+            else:
+                if target == 0:
+                    self._moves, self._seek_to = run.rebuild_pieces(0), 0
+                self._seek_slice(run)
+                return
+        self._seek_done()
 
     def _seek_slice(self, run: Run) -> None:
-        if not self.seeking or run is not self.search_run or not self.is_running:
+        if not self.seeking or run not in self.runs or not self.is_running:
             return  # stopped, replaced, or the app is closing (its screens are gone)
         deadline = perf_counter() + playback.SLICE_SECONDS
         if self._moves is None:
             if not playback.record_for(run):
                 recorded = group_digits(run.recorded)
-                self._seek_note(f"Computing the search… {recorded} steps recorded")
+                self._seek_note(run, f"Computing the search… {recorded} steps recorded")
                 return
             if run.recorded - run.k <= run.REBUILD_AFTER:  # a few steps: at once
-                self._arrive(run, run.k, run.at_end, lambda: run.goto(run.recorded))
+                run.goto(run.recorded)
+                self._seek_arrived()
                 return
             self._moves, self._seek_to = run.rebuild_pieces(run.recorded), run.recorded
-        old_k, was_at_end = run.k, run.at_end
         fraction = playback.rebuild_for(self._moves, max(0.0, deadline - perf_counter()))
         if fraction is not None:
-            self._seek_note(f"Moving to step {group_digits(self._seek_to)}… {fraction:.0%}")
+            self._seek_note(run, f"Moving to step {group_digits(self._seek_to)}… {fraction:.0%}")
             return
-        self._arrive(run, old_k, was_at_end)
+        self._seek_arrived()
 
-    def _seek_note(self, text: str) -> None:
+    def _seek_note(self, run: Run, text: str) -> None:
         """Say how far the seek is (and how to stop it), then carry on after a pause."""
-        run = self.search_run
-        assert run is not None, "only a run seeks"
+        if self.compare:
+            text = f"{run.algo.short}: {text[0].lower()}{text[1:]}"
         self.note = f"{text} — esc to stop"
+        self._seek_noted = True
         self._show(changed=[])
         self.set_timer(playback.SLICE_PAUSE, lambda: self._seek_slice(run))
 
-    def _arrive(
-        self, run: Run, old_k: int, was_at_end: bool, move: Callable[[], None] | None = None
-    ) -> None:
-        """The seek is over: (make the last ``move``, then) show the run at its end."""
-        self.seeking = False
+    def _seek_arrived(self) -> None:
+        """One run is where it was going: on to the next."""
         self._moves = None
-        self.note = ""
-        if move is not None:
-            move()
+        self._seek_queue.pop(0)
+        self._seek_next()
+
+    def _seek_done(self) -> None:
+        """Every run is there: show them (or play, when asked)."""
+        self.seeking = False
+        if self._seek_noted:
+            self._seek_noted = False
+            self.note = ""
         if self._play_after:
             self._play_after = False
             self._play()
             return
-        self._moved(old_k, was_at_end)
+        self._moved(self._seek_from)
 
     def action_stop_seek(self) -> None:
-        """esc while computing the end: stop where the run is (what was recorded is kept)."""
+        """esc while computing the end: stop where the runs are (what was recorded is kept)."""
         if self.seeking:
             self._stop()
             self._show(changed=[])
 
     def action_play(self) -> None:
         """Play (at the last step: again from step 0); pause when playing."""
-        run = self.search_run
+        runs = self.runs
         if self.playing:
             self.action_pause()
-        elif run is not None:
+        elif runs:
             self._stop()
-            if run.at_end:
-                self._to_step_0(run, then_play=True)
+            if all(r.at_end for r in runs):
+                self._seek([(run, 0) for run in runs], then_play=True)
             else:
                 self._play()
 
@@ -512,23 +639,27 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
         """Pause playback and abandon a seek (any key that moves the position does this)."""
         if self.seeking:
             self.seeking = False
-            self._moves = None  # the run is still whole where it was
+            self._moves = None  # the runs are still whole where they were
+            self._seek_queue = []
             self._play_after = False
-            self.note = ""
+            if self._seek_noted:
+                self._seek_noted = False
+                self.note = ""
         if self.playing:
             self.playing = False
             self._timer.pause()
 
     def _tick(self) -> None:
-        run = self.search_run
-        if run is None or not self.playing:
+        runs = self.runs
+        if not runs or not self.playing:
             return
-        old_k, was_at_end = run.k, run.at_end
-        playback.forward_for(run, playback.steps_per_tick(playback.SPEEDS[self.speed_index]))
-        if run.at_end:
+        before = [(r.k, r.at_end) for r in runs]
+        steps = playback.steps_per_tick(playback.SPEEDS[self.speed_index])
+        playback.forward_for(runs, steps)
+        if all(r.at_end for r in runs):
             self.playing = False
             self._timer.pause()
-        self._moved(old_k, was_at_end)
+        self._moved(before)
 
     def _set_speed(self, index: int) -> None:
         self.speed_index = max(0, min(len(playback.SPEEDS) - 1, index))
@@ -545,6 +676,26 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
         self._show(changed=[])
 
     def action_algorithm(self, algorithm: str) -> None:
+        """One search: run ``algorithm``.  Compare mode: add it to the searches compared, or
+        take it out (two to four stay)."""
+        if self.compare:
+            parts = self.compare.split(",")
+            keys = [p.partition(":")[0] for p in parts]
+            name = get_algorithm(algorithm).short
+            if algorithm in keys:
+                if len(parts) == 2:
+                    self.notify(f"Compare keeps two searches at least: {name} stays "
+                                "(c for one search)", severity="warning", timeout=4)
+                    return
+                del parts[keys.index(algorithm)]
+            elif len(parts) == 4:
+                self.notify(f"Compare shows four searches at most: take one out to add {name}"
+                            " (its key again)", severity="warning", timeout=4)
+                return
+            else:
+                parts.append(algorithm)
+            self.run_worker(self._set_compare(",".join(parts)), exclusive=True)
+            return
         self.algorithm = algorithm
         note = ""
         algo = get_algorithm(algorithm)
@@ -558,31 +709,82 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
         from tui_search.tui.screens.settings import SettingsScreen  # only when asked
 
         self._stop()
-        self.push_screen(SettingsScreen(self.semantics, get_algorithm(self.algorithm)),
+        self.push_screen(SettingsScreen(self.semantics, get_algorithm(self.algorithm),
+                                        self.compare or self.compare_pick),
                          self._settings_chosen)
 
-    def _settings_chosen(self, semantics: Semantics | None) -> None:
-        if semantics is None or semantics == self.semantics:
+    def _settings_chosen(self, chosen: SettingsChoice | None) -> None:
+        if chosen is None:
             return
-        self.semantics = semantics
+        pick_changed = chosen.compare != (self.compare or self.compare_pick)
+        self.compare_pick = chosen.compare
+        if chosen.semantics == self.semantics and not (pick_changed and self.compare):
+            return
+        self.semantics = chosen.semantics
+        if self.compare and pick_changed:
+            self.run_worker(self._set_compare(chosen.compare), exclusive=True)
+        else:
+            self._new_run()
+
+    # -- compare mode -------------------------------------------------------------------------
+    def action_compare(self) -> None:
+        """Compare mode on (the searches last picked) or off (one search again)."""
+        self._stop()
+        self.run_worker(self._set_compare(None if self.compare else self.compare_pick),
+                        exclusive=True)
+
+    def action_show_compare(self, spec: str) -> None:
+        """Compare the searches of ``spec`` (the palette's comparisons)."""
+        self.run_worker(self._set_compare(spec), exclusive=True)
+
+    async def _set_compare(self, spec: str | None) -> None:
+        """Show the searches of ``spec`` side by side, a pane each (None: one search), and
+        start them all at step 0 on the map as it is."""
+        self._stop()
+        if spec is not None:
+            self.compare_pick = spec
+        self.compare = spec
+        self.contenders = self._compare_contenders(spec)[0] if spec else []
+        box = self.compare_box
+        await box.remove_children()
+        if spec:
+            await box.mount_all(self._new_panes())
+        self.screen_stack[0].set_class(spec is not None, "-compare")
+        if self.view.grid is not self.grid:  # the one view again, after a new map
+            self.view.set_grid(self.grid)
+        self._arrange_panes(self.size.width, self.size.height)
+        for view in self.views:
+            view.set_cursor(self.cursor_cell)
+        if self.screen is self.screen_stack[0]:
+            self.views[0].focus()
         self._new_run()
+
+    def action_fold_trees(self) -> None:
+        """Compare mode: fold the panes' search trees away, or show them again."""
+        self.fold_trees = not self.fold_trees
+        self._arrange_panes(self.size.width, self.size.height)
 
     # -- the map ----------------------------------------------------------------------------
     def action_overview(self) -> None:
-        self.view.set_overview(not self.view.overview)
+        on = not self.views[0].overview
+        for view in self.views:
+            view.set_overview(on)
 
     def action_zoom(self, steps: int) -> None:
-        self.view.zoom(steps)
+        for view in self.views:
+            view.zoom(steps)
 
     def action_labels(self) -> None:
-        mode = self.view.cycle_labels()
+        for view in self.views:
+            mode = view.cycle_labels()
         self.notify(f"Cell labels: {mode}", timeout=2)
 
     def action_page(self, pages: int) -> None:
         """The cursor a screenful of cells up or down (at least one cell)."""
-        rows = self.view.scrollable_content_region.height // self.view.geometry.cell_height
-        if self.view.overview:
-            rows = self.view.scrollable_content_region.height * 2 * self.view.geometry.block
+        view = self.views[0]
+        rows = view.scrollable_content_region.height // view.geometry.cell_height
+        if view.overview:
+            rows = view.scrollable_content_region.height * 2 * view.geometry.block
         x, y = self.cursor_cell
         y = max(0, min(self.grid.height - 1, y + pages * max(1, rows - 1)))
         self._move_cursor((x, y))
@@ -601,11 +803,15 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
 
     def show_readout(self) -> None:
         """What the run knows of the cell under the mouse, else of the cursor's."""
-        hover = self.view.hover
+        hover = next((v.hover for v in self.views if v.hover is not None), None)
         cell, label = (hover, "Mouse") if hover is not None else (self.cursor_cell, "Cursor")
         if not self.grid.in_bounds(cell):
             cell, label = self.cursor_cell, "Cursor"
-        self.readout.show(label, describe(self.search_run, self.grid, cell))
+        if not self.compare:
+            self.readout.show(label, describe(self.search_run, self.grid, cell))
+            return
+        self.readout.show(label, describe_each(self.runs, [c.label for c in self.contenders],
+                                               self.grid, cell))
 
     def on_grid_view_cell_hovered(self, message: GridView.CellHovered) -> None:
         self.show_readout()

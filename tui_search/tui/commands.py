@@ -17,14 +17,23 @@ from textual.binding import Binding
 from textual.command import DiscoveryHit, Hit, Hits, Provider
 
 from tui_search.engine.algorithms import ALGORITHMS
-from tui_search.engine.exercises import QUOTES
+from tui_search.engine.exercises import QUOTES, parse_compare
 from tui_search.tui.themes import THEMES
 
 if TYPE_CHECKING:
     from tui_search.tui.app import SearchApp
 
+#: Comparisons offered by name: the tutorial's, the next lesson's, and A*'s heuristics.
+COMPARISONS = {
+    "bfs,dfs": "the tutorial's demo: a queue against a stack",
+    "bfs,ucs,astar": "fewest moves, the cheapest path, and the cheapest with fewer expansions",
+    "astar,astar:manhattan": "an admissible heuristic against an inadmissible one",
+    "ucs,greedy,astar": "g, h and g + h: what each priority buys",
+}
+
 #: The actions of the app's key table offered by name, with the palette's name for each.
 ACTIONS = {
+    "compare": "Compare searches side by side (on / off)",
     "settings": "Search settings",
     "save": "Save the map",
     "save_as": "Save the map as…",
@@ -58,6 +67,11 @@ class SearchCommands(Provider):
                           "the tutorial's exercise, checked live as you edit (key x cycles)"))
         found.append(("Exercise: off", partial(app.run_action, "show_exercise(0)"),
                       "hide the challenge panel (key x)"))
+        for spec_text, why in COMPARISONS.items():
+            labels = [c.label for c in parse_compare(spec_text)]
+            found.append((f"Compare: {' · '.join(labels)}",
+                          partial(app.run_action, f"show_compare({spec_text!r})"),
+                          f"{why} (side by side, in lockstep; key c toggles)"))
         bindings = {b.action: b for b in Binding.make_bindings(app.BINDINGS)}
         for action, name in ACTIONS.items():
             binding = bindings[action]

@@ -65,7 +65,8 @@ class EditActions(AppMixinBase):
 
     def _move_cursor(self, cell: Cell) -> None:
         self.cursor_cell = cell
-        self.view.set_cursor(cell)
+        for view in self.views:  # compare mode: one cursor, on every pane's map
+            view.set_cursor(cell)
         self.show_readout()
 
     def _edited(self, refusal: str | None) -> bool:
@@ -87,7 +88,7 @@ class EditActions(AppMixinBase):
         self._move_cursor(message.cell)
         self._stroke = None
         cell = message.cell
-        if message.button == 1 and not self.view.overview and cell not in (
+        if message.button == 1 and not self.views[0].overview and cell not in (
             self.grid.start, self.grid.goal
         ):
             self._stroke = not self.grid.is_blocked(cell)

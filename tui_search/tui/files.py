@@ -142,6 +142,7 @@ class FileActions(AppMixinBase):
         self.map_path = Path(path) if path is not None else None
         self.dirty = False
         self.cursor_cell = grid.start or (0, 0)
-        self.view.set_grid(grid)
-        self.view.set_cursor(self.cursor_cell)
+        for view in self.views:
+            view.set_grid(grid)
+            view.set_cursor(self.cursor_cell)
         self._new_run()

@@ -39,14 +39,19 @@ def speed_text(speed: int) -> str:
     return f"{speed}/s"
 
 
-def forward_for(run: Run, steps: int, seconds: float = SLICE_SECONDS) -> int:
-    """Up to ``steps`` steps forwards (recording as needed), stopping early at the end or when
-    ``seconds`` have passed.  Returns the number taken."""
+def forward_for(runs: list[Run], steps: int, seconds: float = SLICE_SECONDS) -> int:
+    """Up to ``steps`` steps forwards of every run in lockstep (each recording as needed and
+    staying at its end once there), stopping early when all are at their ends or when
+    ``seconds`` have passed.  Returns the number of lockstep steps taken."""
     deadline = perf_counter() + seconds
-    forward = run.forward
+    forwards = [run.forward for run in runs]
     taken = 0
     while taken < steps:
-        if not forward():
+        moved = False
+        for forward in forwards:
+            if forward():
+                moved = True
+        if not moved:
             break
         taken += 1
         if not taken & 63 and perf_counter() > deadline:

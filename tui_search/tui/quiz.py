@@ -54,12 +54,15 @@ class QuizActions(AppMixinBase):
             self.note = f"Quiz over: the search is done · {self._quiz_score()} (r restarts)"
             self._show(changed=[])
             return
+        self._stop()
         guess = self.cursor_cell
-        old_k, was_at_end = run.k, run.at_end
-        if not run.forward():
+        before = self._advance(forward=True)  # in compare mode every pane steps
+        if before is None:
             return
         node = run.current_node()
-        assert node is not None
+        if node is None or run.k == before[0][0]:  # the left pane did not move
+            self._moved(before)
+            return
         self.quiz_asked += 1
         frontier = run.algo.frontier
         where = f"the {frontier.noun}'s {frontier.next_end}"
@@ -69,7 +72,7 @@ class QuizActions(AppMixinBase):
         else:
             verdict = f"Not quite: {cell_text(node)} came off {where}, not {cell_text(guess)}"
         self.note = f"{verdict} · {self._quiz_score()} · next: cursor and enter"
-        self._moved(old_k, was_at_end)
+        self._moved(before)
 
 
 __all__ = ["QuizActions"]

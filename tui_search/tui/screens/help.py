@@ -30,7 +30,10 @@ KEYS = (
     ("home  end", "first / last step (the answer)"),
     ("esc", "stop computing the last step (on a big map)"),
     (" ".join(a.app_key for a in ALGORITHMS.values()),
-     " / ".join(a.short for a in ALGORITHMS.values()) + " (a new search, same map)"),
+     " / ".join(a.short for a in ALGORITHMS.values())
+     + " (a new search, same map; compare mode: add / take out)"),
+    ("c", "compare searches side by side, in lockstep (again: one search)"),
+    ("f", "compare mode: fold the search trees away / show them"),
     ("r", "restart the search at step 0"),
     (",", "settings: moves, corners, visit, goal test, tree, heuristic"),
     ("z", "the whole map at once: a character a block of cells"),

@@ -1,6 +1,7 @@
 """Search settings (``,``): every choice of :mod:`tui_search.engine.semantics`, each with a line
-on what it changes.  Dismisses with the new :class:`Semantics`, or None when cancelled; the app
-then starts a new run at step 0 on the same map.
+on what it changes, and the searches compare mode compares.  Dismisses with a
+:class:`SettingsChoice`, or None when cancelled; the app then starts a new run at step 0 on the
+same map.
 """
 
 from __future__ import annotations
@@ -13,7 +14,7 @@ from textual.containers import Horizontal, VerticalScroll
 from textual.screen import ModalScreen
 from textual.widgets import Button, Checkbox, Input, Label, RadioButton, RadioSet
 
-from tui_search.engine.algorithms import Algorithm
+from tui_search.engine.algorithms import ALGORITHMS, Algorithm
 from tui_search.engine.grid import DEFAULT_ORDER, parse_order
 from tui_search.engine.heuristics import HEURISTICS, INADMISSIBLE, admissible
 from tui_search.engine.semantics import (
@@ -23,6 +24,7 @@ from tui_search.engine.semantics import (
     VISIT_RULES,
     Semantics,
 )
+from tui_search.tui.screens.settings_choice import SettingsChoice
 
 #: A word on each value, shown beside its radio button.
 VALUE_WORDS: dict[str, str] = {
@@ -35,7 +37,7 @@ VALUE_WORDS: dict[str, str] = {
 }
 
 
-class SettingsScreen(ModalScreen["Semantics | None"]):
+class SettingsScreen(ModalScreen["SettingsChoice | None"]):
     """The choices as radio buttons, a move order and a checkbox; Apply, Defaults, Cancel."""
 
     BINDINGS: ClassVar[list[BindingType]] = [Binding("escape", "cancel", "Cancel")]
@@ -59,16 +61,21 @@ class SettingsScreen(ModalScreen["Semantics | None"]):
         & RadioSet { layout: horizontal; height: 1; width: 100%; }
         & RadioSet > RadioButton { width: auto; margin-right: 3; }
         & #heuristic > RadioButton { margin-right: 1; }  /* five in a row */
+        & #compare-picks { height: 1; width: 100%; margin-top: 0; }
+        & #compare-picks > Checkbox { width: auto; margin-right: 2; }
         & Input { width: 100%; background: $boost; }
         & Horizontal { height: 1; margin-top: 1; }
         & Button { margin-right: 2; min-width: 10; }
     }
     """
 
-    def __init__(self, semantics: Semantics, algorithm: Algorithm) -> None:
+    def __init__(self, semantics: Semantics, algorithm: Algorithm,
+                 compare: str = "bfs,dfs") -> None:
+        """``compare``: the searches compare mode compares, as ``--compare`` spells them."""
         super().__init__()
         self.semantics = semantics
         self.algorithm = algorithm
+        self.compare = compare
 
     # -- layout ------------------------------------------------------------------------------
     def compose(self) -> ComposeResult:
@@ -95,6 +102,14 @@ class SettingsScreen(ModalScreen["Semantics | None"]):
             yield Label("Heuristic", classes="choice")
             yield Label("", id="heuristic-explain", classes="explain")
             yield self._radios("heuristic", tuple(HEURISTICS), sem.heuristic)
+            yield Label("Compare (c)", classes="choice")
+            picked = {part.partition(":")[0] for part in self.compare.split(",")}
+            with Horizontal(id="compare-picks"):
+                for algo in ALGORITHMS.values():
+                    yield Checkbox(algo.short, algo.key in picked, id=f"compare-{algo.key}",
+                                   compact=True)
+            yield Label("two to four searches side by side, in lockstep on the same map",
+                        id="compare-explain", classes="explain")
             with Horizontal():
                 yield Button("Apply", id="apply", variant="primary", compact=True)
                 yield Button("Defaults", id="defaults", compact=True)
@@ -119,6 +134,21 @@ class SettingsScreen(ModalScreen["Semantics | None"]):
         button = self.query_one(f"#{set_id}", RadioSet).pressed_button
         assert button is not None and button.id is not None
         return button.id.split("-", 1)[1]
+
+    def picked(self) -> str | None:
+        """The searches ticked for compare mode (``bfs,dfs``; a heuristic given on the
+        command line kept), or None when fewer than two or more than four are."""
+        kept = {part.partition(":")[0]: part for part in self.compare.split(",")}
+        keys = [key for key in ALGORITHMS
+                if self.query_one(f"#compare-{key}", Checkbox).value]
+        explain = self.query_one("#compare-explain", Label)
+        if not 2 <= len(keys) <= 4:
+            explain.set_class(True, "problem")
+            explain.update(f"Compare: tick two to four searches ({len(keys)} ticked)")
+            return None
+        explain.set_class(False, "problem")
+        explain.update("two to four searches side by side, in lockstep on the same map")
+        return ",".join(kept.get(key, key) for key in keys)
 
     def chosen(self) -> Semantics | None:
         """The settings as the controls show them (None, with the reason shown, when the move
@@ -178,6 +208,7 @@ class SettingsScreen(ModalScreen["Semantics | None"]):
 
     def on_checkbox_changed(self, event: Checkbox.Changed) -> None:
         self._sync_visit()
+        self.picked()  # shows or clears the problem as boxes are ticked
 
     def on_input_changed(self, event: Input.Changed) -> None:
         self.chosen()  # shows or clears the error as the order is typed
@@ -195,9 +226,9 @@ class SettingsScreen(ModalScreen["Semantics | None"]):
             self.dismiss(None)
 
     def _apply(self) -> None:
-        semantics = self.chosen()
-        if semantics is not None:
-            self.dismiss(semantics)
+        semantics, compare = self.chosen(), self.picked()
+        if semantics is not None and compare is not None:
+            self.dismiss(SettingsChoice(semantics, compare))
 
     def _show(self, sem: Semantics) -> None:
         self.query_one("#order", Input).value = ",".join(sem.order)

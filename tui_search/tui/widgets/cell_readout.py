@@ -11,8 +11,7 @@ from rich.segment import Segment
 from textual.strip import Strip
 from textual.widget import Widget
 
-from tui_search.tui.widgets.line_panel import CachedStyles
-from tui_search.tui.widgets.stats import ELLIPSIS
+from tui_search.tui.widgets.line_panel import ELLIPSIS, CachedStyles
 
 
 class CellReadout(CachedStyles, Widget):

@@ -217,6 +217,40 @@ class CachedStyles:
 
 
 Parts = list[tuple[str, str]]
+#: What ends a line too long for its widget.
+ELLIPSIS = "…"
+
+
+class PartsLines(CachedStyles, Widget):
+    """A few lines of (text, component class) pieces drawn with the line API, a line wider
+    than the widget cut with an ellipsis: the status lines and the comparison table, redrawn
+    on every step (a ``Static`` rebuilt through Textual's markup and visual pipeline cost a
+    tenth of a step)."""
+
+    _lines: list[Parts] | None = None
+
+    def set_lines(self, lines: list[Parts]) -> bool:
+        """Show ``lines``; True (and a repaint) when they differ from what is shown."""
+        if lines == self._lines:
+            return False
+        old, self._lines = self._lines, lines
+        if old is not None and len(old) != len(lines):
+            self.refresh(layout=True)
+        else:
+            self.refresh()
+        return True
+
+    def render_line(self, y: int) -> Strip:
+        width = self.content_size.width
+        base = self.cached_style()
+        lines = self._lines or []
+        parts = lines[y] if 0 <= y < len(lines) else []
+        style = self.cached_style
+        segments = [Segment(text, style(cls)) for text, cls in parts]
+        if sum(cell_len(text) for text, _ in parts) > width > 0:
+            cut = list(Strip(segments).crop(0, width - 1))
+            segments = [*cut, Segment(ELLIPSIS, cut[-1].style if cut else base)]
+        return Strip(segments).crop_extend(0, width, base)
 
 
 class LinePanel(QuietScrollbars, CachedStyles, ScrollView, can_focus=True):

@@ -10,22 +10,14 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-from rich.cells import cell_len
-from rich.segment import Segment
-from textual.strip import Strip
-from textual.widget import Widget
-
 from tui_search.engine.algorithms import get_algorithm
 from tui_search.engine.heuristics import INADMISSIBLE
 from tui_search.engine.run import Run
 from tui_search.tui.narration import narrate, result_text, status_parts
-from tui_search.tui.widgets.line_panel import CachedStyles, Parts
-
-#: What ends a line too long for the terminal.
-ELLIPSIS = "…"
+from tui_search.tui.widgets.line_panel import Parts, PartsLines
 
 
-class Stats(CachedStyles, Widget):
+class Stats(PartsLines):
     """Two lines: ``BFS │ step 4/18 │ expanded 4 │ …`` then the narration, which ends with
     the path's moves and cost once found (or says "no path").
 
@@ -54,11 +46,10 @@ class Stats(CachedStyles, Widget):
     }
     """
 
-    def __init__(self, *, id: str | None = None) -> None:
-        super().__init__(id=id)
+    def __init__(self, *, id: str | None = None, classes: str | None = None) -> None:
+        super().__init__(id=id, classes=classes)
         self.status_text = ""
         self.narration_text = ""
-        self._lines: tuple[Parts, Parts] = ([], [])
 
     def show(
         self,
@@ -67,17 +58,23 @@ class Stats(CachedStyles, Widget):
         *,
         playing: str = "",
         note: str = "",
+        label: str = "",
+        done: bool = False,
     ) -> None:
+        """``label`` names the search (default: the algorithm's short name); ``done`` adds
+        "done at step k" (a compare pane whose run ended before the others)."""
         sep = (" │ ", "stats--label")
-        status: Parts = [(get_algorithm(algorithm).short, "stats--value")]
+        status: Parts = [(label or get_algorithm(algorithm).short, "stats--value")]
+        if done and run is not None:
+            status += [sep, (f"done at step {run.k:,}", "stats--result")]
         differences = run.semantics.differences(run.algo) if run is not None else []
         if run is not None and not run.admissible:
             differences.append(INADMISSIBLE)
         if differences:  # always say what differs
             status.append((" · " + " · ".join(differences), "stats--note"))
         if run is not None:
-            for label, value in status_parts(run):
-                status += [sep, (f"{label} ", "stats--label"), (value, "stats--value")]
+            for name, value in status_parts(run):
+                status += [sep, (f"{name} ", "stats--label"), (value, "stats--value")]
         if playing:
             status += [sep, (playing, "stats--play")]
         line: Parts
@@ -90,20 +87,21 @@ class Stats(CachedStyles, Widget):
             line = [(narrate(run), "stats--no-path" if failed else "stats--narration")]
             if run.at_end and run.found:
                 line += [(" · ", "stats--label"), (result_text(run), "stats--result")]
-        lines = (status, line)
-        if lines != self._lines:
-            self._lines = lines
+        self._put_lines(status, line)
+
+    def show_compare(self, labels: list[str], *, playing: str = "", note: str = "",
+                     sentence: str = "") -> None:
+        """Compare mode's lines: the searches and the playback, then a note or ``sentence``
+        (how the lockstep goes)."""
+        sep = (" │ ", "stats--label")
+        status: Parts = [("compare ", "stats--label"), (" · ".join(labels), "stats--value")]
+        if playing:
+            status += [sep, (playing, "stats--play")]
+        line: Parts = [(note, "stats--note")] if note else [(sentence, "stats--narration")]
+        self._put_lines(status, line)
+
+    def _put_lines(self, status: Parts, line: Parts) -> None:
+        if self.set_lines([status, line]):
             self.status_text = "".join(text for text, _ in status)
             self.narration_text = "".join(text for text, _ in line)
-            self.refresh()
 
-    def render_line(self, y: int) -> Strip:
-        width = self.content_size.width
-        base = self.cached_style()
-        parts = self._lines[y] if 0 <= y < len(self._lines) else []
-        style = self.cached_style
-        segments = [Segment(text, style(cls)) for text, cls in parts]
-        if sum(cell_len(text) for text, _ in parts) > width > 0:
-            cut = list(Strip(segments).crop(0, width - 1))
-            segments = [*cut, Segment(ELLIPSIS, cut[-1].style if cut else base)]
-        return Strip(segments).crop_extend(0, width, base)

@@ -1,0 +1,66 @@
+"""Section "compare" (issue 11): compare mode's lockstep step against a single pane's, and
+``end`` in compare mode, on maze512.  (Its start-up row is in the startup section.)"""
+
+from __future__ import annotations
+
+import asyncio
+import gc
+import sys
+import time
+
+from benchmarks.apps import TERMINAL, fast_press, search_app_class, settle
+from benchmarks.harness import fmt_time, med, paired, series
+from benchmarks.maps import maze_grid
+from benchmarks.step import _presses, step_keys
+from benchmarks.table import Row, add
+from tui_search.engine.grid import Grid
+
+COMPARED = "bfs,dfs"
+
+
+async def _end_once(app_cls, grid: Grid) -> tuple[float, list[int]]:
+    """``end`` in compare mode: from the key to the final screen of every pane."""
+    app = app_cls(grid.copy(), compare=COMPARED)
+    async with app.run_test(size=TERMINAL) as pilot:
+        await pilot.pause()
+        gc.collect()
+        t0 = time.perf_counter()
+        await fast_press(pilot, "end")
+        while app.seeking or not all(r.at_end for r in app.runs):
+            await asyncio.sleep(0.01)  # no forced repaints: the app paints as in a terminal
+            if time.perf_counter() - t0 > 120:
+                raise TimeoutError("end did not reach the end in 120 s")
+        await settle(pilot)
+        return time.perf_counter() - t0, [r.k for r in app.runs]
+
+
+def bench_compare(quick: bool) -> None:
+    print("compare ...", file=sys.stderr, flush=True)
+    app_cls, why = search_app_class()
+    maze = maze_grid()
+    if app_cls is None or maze is None:
+        add(Row("compare", "compare mode on maze512", "skipped", why or "maze512 missing"))
+        return
+    n = 100 if quick else 200
+    reps = 3 if quick else 5
+    single, pair = [], []
+    for _ in range(reps):  # interleaved
+        single.append(asyncio.run(_presses(app_cls(maze.copy()), step_keys(n))))
+        pair.append(asyncio.run(_presses(app_cls(maze.copy(), compare=COMPARED),
+                                         step_keys(n))))
+    one = series("compare single cpu", [c - i for _, c, i, _ in single])
+    two = series("compare pair cpu", [c - i for _, c, i, _ in pair])
+    r = paired(two, one)
+    add(Row("compare", f"n/p on maze512: two panes ({COMPARED}) vs one (CPU per press, net of "
+            "Pilot)", fmt_time(two), f"one pane {fmt_time(one)}", r, "≤ 2.2", r <= 2.2))
+    lines = (med([d for *_, d in single]), med([d for *_, d in pair]))
+    add(Row("compare", "lines drawn afresh per press: one pane / two panes",
+            f"{lines[0]:.1f} / {lines[1]:.1f}", "", None, "report"))
+    times, ks = [], []
+    for _ in range(2 if quick else 3):
+        dt, ks = asyncio.run(_end_once(app_cls, maze))
+        times.append(dt)
+    series("compare end", times)
+    steps = " and ".join(f"{k:,}" for k in ks)
+    add(Row("compare", f"maze512 {COMPARED}: press end → final screen ({steps} steps)",
+            fmt_time(times), "limit 0.6 s", med(times) / 0.6, "≤ 0.6 s", med(times) <= 0.6))

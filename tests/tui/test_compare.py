@@ -1,0 +1,235 @@
+"""Compare mode in the app: a pane a search, in lockstep on one map (issue 11)."""
+
+from __future__ import annotations
+
+import json
+
+from tests.tui.test_app import (
+    MAPS,
+    TUTORIAL,
+    open_grid,
+    post_keys,
+    slices_of_one_chunk,
+    sync,
+    tutorial_app,
+    wait_until,
+)
+from tui_search.cli import main
+from tui_search.engine.mapfile import load_map
+from tui_search.tui.app import SearchApp
+from tui_search.tui.screens.settings import SettingsScreen
+from tui_search.tui.widgets.run_pane import RunPane
+
+SIZE = (160, 48)
+
+
+def compare_app(spec: str = "bfs,dfs", path=TUTORIAL) -> SearchApp:
+    return SearchApp(load_map(path), path=path, compare=spec)
+
+
+def steps(app: SearchApp) -> list[int]:
+    return [run.k for run in app.runs]
+
+
+@sync
+async def test_c_shows_two_panes_and_c_again_one_search() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        assert app.compare is None and not app.query(RunPane)
+        await pilot.press("c")
+        await pilot.pause()
+        panes = app.query(RunPane)
+        assert [p.label for p in panes] == ["BFS", "DFS"]
+        assert all(p.display for p in panes) and not app.view.display
+        titles = [p.frontier.border_title for p in panes]
+        assert titles == ["Queue (FIFO)", "Stack (LIFO)"]
+        assert app.focused is panes[0].view
+        await pilot.press("c")
+        await pilot.pause()
+        assert app.compare is None and not app.query(RunPane) and app.view.display
+        assert len(app.runs) == 1 and app.focused is app.view
+
+
+@sync
+async def test_n_advances_every_run_and_end_then_p_leaves_the_finished_one() -> None:
+    app = compare_app()
+    async with app.run_test(size=SIZE) as pilot:
+        for _ in range(3):
+            await pilot.press("n")
+        assert steps(app) == [3, 3]
+        await pilot.press("end")
+        await pilot.pause()
+        assert steps(app) == [22, 7] and all(r.at_end for r in app.runs)
+        dfs_pane = app.panes[1]
+        assert "done at step 7" in dfs_pane.stats.status_text
+        await pilot.press("p")
+        assert steps(app) == [21, 7]  # DFS ended earlier: it stays on its last screen
+        assert "done at step 7" in dfs_pane.stats.status_text
+        # back to where the other ended, then both step back together
+        for _ in range(14):
+            await pilot.press("p")
+        assert steps(app) == [7, 7]
+        await pilot.press("p")
+        assert steps(app) == [6, 6]
+        await pilot.press("n")
+        assert steps(app) == [7, 7]
+        await pilot.press("n")
+        assert steps(app) == [8, 7]  # DFS is done: n leaves it where it is
+        await pilot.press("home")
+        await pilot.pause()
+        assert steps(app) == [0, 0]
+
+
+@sync
+async def test_the_table_equals_the_headless_comparison(capsys) -> None:
+    assert main([str(TUTORIAL), "--headless", "--json", "--compare", "bfs,dfs,astar"]) == 0
+    headless = json.loads(capsys.readouterr().out)["runs"]
+    app = compare_app("bfs,dfs,astar")
+    async with app.run_test(size=SIZE) as pilot:
+        table = app.compare_table
+        assert table.text_lines[1].split()[:2] == ["BFS", "…"]  # going: no figures yet
+        await pilot.press("end")
+        await pilot.pause()
+        rows = [line.replace(" *", "").split() for line in table.text_lines[1:4]]
+        for row, run in zip(rows, headless):
+            _label, found, moves, cost, expanded, generated, peak = row
+            assert found == "yes" and int(moves) == run["length"]
+            assert float(cost) == round(run["cost"], 3)
+            assert int(expanded) == run["expanded"] and int(generated) == run["generated"]
+            assert int(peak) == run["max_frontier"]
+        assert table.text_lines[-1].startswith("BFS expanded 22 nodes, DFS 7, A* ")
+
+
+@sync
+async def test_an_edit_restarts_every_run_on_the_one_map() -> None:
+    app = compare_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("n", "n")
+        old = list(app.runs)
+        await pilot.press("down", "down", "right", "o")  # an obstacle at (1,2)
+        assert app.grid.is_blocked((1, 2)) and app.dirty
+        assert steps(app) == [0, 0] and not set(app.runs) & set(old)
+        assert all(p.view.grid is app.grid for p in app.panes)
+        assert all(p.view.cursor == (1, 2) for p in app.panes)  # one cursor
+        # a click on the second pane's map edits the same map
+        view = app.panes[1].view
+        x, y = view.screen_offset((3, 3))
+        await pilot.click(view, offset=(x, y))
+        assert app.grid.is_blocked((3, 3)) is False  # (3,3) was an obstacle: now free
+        assert all(r.k == 0 for r in app.runs)
+
+
+@sync
+async def test_algorithm_keys_add_and_take_out_searches() -> None:
+    app = compare_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("6")
+        await pilot.pause()
+        assert app.compare == "bfs,dfs,astar" and [p.label for p in app.panes] == [
+            "BFS", "DFS", "A*"]
+        await pilot.press("1")
+        await pilot.pause()
+        assert app.compare == "dfs,astar"
+        await pilot.press("2")  # two stay at least
+        await pilot.pause()
+        assert app.compare == "dfs,astar"
+        await pilot.press("1", "3")
+        await pilot.pause()
+        await pilot.press("4")  # four at most
+        await pilot.pause()
+        assert app.compare == "dfs,astar,bfs,iddfs"
+
+
+@sync
+async def test_the_settings_pick_what_c_compares() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("comma")
+        screen = app.screen
+        assert isinstance(screen, SettingsScreen)
+        screen.query_one("#compare-dfs").value = False
+        await pilot.pause()
+        screen.query_one("#apply").press()  # one ticked: refused, said why
+        await pilot.pause()
+        assert app.screen is screen and "tick two to four" in str(
+            screen.query_one("#compare-explain").render())
+        screen.query_one("#compare-ucs").value = True
+        screen.query_one("#compare-astar").value = True
+        await pilot.pause()
+        screen.query_one("#apply").press()
+        await pilot.pause()
+        assert app.screen is not screen and app.compare is None
+        await pilot.press("c")
+        await pilot.pause()
+        assert [p.label for p in app.panes] == ["BFS", "UCS", "A*"]
+
+
+@sync
+async def test_narrow_terminals_stack_the_panes_and_short_ones_fold_the_trees() -> None:
+    app = compare_app()
+    async with app.run_test(size=(90, 40)) as pilot:
+        await pilot.pause()
+        a, b = (p.region for p in app.panes)
+        assert a.x == b.x and b.y > a.y  # one above the other
+        assert not app.panes[0].tree_panel.display  # too short for trees
+    app = compare_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.pause()
+        a, b = (p.region for p in app.panes)
+        assert a.y == b.y and b.x > a.x  # side by side
+        assert app.panes[0].tree_panel.display
+        await pilot.press("f")
+        await pilot.pause()
+        assert not app.panes[0].tree_panel.display
+        await pilot.press("f")
+        await pilot.pause()
+        assert app.panes[0].tree_panel.display
+
+
+@sync
+async def test_end_on_a_big_map_computes_each_run_in_slices_and_esc_stops(monkeypatch) -> None:
+    recorded = slices_of_one_chunk(monkeypatch)
+    app = SearchApp(open_grid(30, 30), compare="iddfs,bfs")  # iddfs: 67,105 steps, 17 chunks
+    async with app.run_test(size=SIZE) as pilot:
+        post_keys(app, "end", "escape")
+        await wait_until(pilot, lambda: recorded and not app.seeking)
+        await pilot.pause(0.1)
+        assert len(recorded) == 1 and not app.runs[0].at_end and "esc" not in app.note
+        post_keys(app, "end")
+        await wait_until(pilot, lambda: app.seeking and "IDDFS: computing" in app.note)
+        await wait_until(pilot, lambda: not app.seeking, seconds=60)
+        assert all(r.at_end and r.found for r in app.runs) and app.note == ""
+        assert len(set(recorded)) > 3  # in slices
+
+
+@sync
+async def test_play_runs_all_in_lockstep_to_the_end() -> None:
+    app = compare_app()
+    async with app.run_test(size=SIZE) as pilot:
+        for _ in range(7):  # the fastest speed
+            await pilot.press("plus")
+        await pilot.press("space")
+        for _ in range(100):
+            await pilot.pause(0.02)
+            if not app.playing:
+                break
+        assert steps(app) == [22, 7]
+
+
+@sync
+async def test_quiz_in_compare_mode_asks_of_the_left_pane_and_steps_all() -> None:
+    app = compare_app("dfs,bfs")
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("i", "enter")  # the cursor is on the start: it comes off first
+        assert app.quiz_asked == 1 and app.quiz_right == 1 and steps(app) == [1, 1]
+        assert "stack's top" in app.note
+
+
+def test_the_command_line_opens_compare_mode_and_refuses_bad_searches(capsys,
+                                                                       monkeypatch) -> None:
+    seen = {}
+    monkeypatch.setattr(SearchApp, "run", lambda self: seen.setdefault("compare", self.compare))
+    assert main([str(MAPS / "tutorial.txt"), "--compare", "bfs,dfs"]) == 0
+    assert seen["compare"] == "bfs,dfs"
+    assert main([str(TUTORIAL), "--compare", "bfs"]) == 2
+    assert "compare two to four searches" in capsys.readouterr().err
