@@ -56,11 +56,19 @@ def bench_compare(quick: bool) -> None:
     lines = (med([d for *_, d in single]), med([d for *_, d in pair]))
     add(Row("compare", "lines drawn afresh per press: one pane / two panes",
             f"{lines[0]:.1f} / {lines[1]:.1f}", "", None, "report"))
-    times, ks = [], []
-    for _ in range(2 if quick else 3):
+    from benchmarks.jump import _jump_once
+
+    times, singles, ks = [], [], []
+    for _ in range(3 if quick else 5):  # interleaved with the single runs' end, the floor
         dt, ks = asyncio.run(_end_once(app_cls, maze))
         times.append(dt)
+        singles.append(sum(asyncio.run(_jump_once(app_cls, maze, algo))[0]
+                           for algo in COMPARED.split(",")))
     series("compare end", times)
+    series("compare end, single runs", singles)
     steps = " and ".join(f"{k:,}" for k in ks)
     add(Row("compare", f"maze512 {COMPARED}: press end → final screen ({steps} steps)",
             fmt_time(times), "limit 0.6 s", med(times) / 0.6, "≤ 0.6 s", med(times) <= 0.6))
+    add(Row("compare", f"maze512 {COMPARED}: end in compare mode vs end in each single run, "
+            "summed", fmt_time(times), f"summed {fmt_time(singles)}", paired(times, singles),
+            "report"))

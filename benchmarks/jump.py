@@ -14,8 +14,8 @@ from benchmarks.table import Row, add
 from tui_search.engine.grid import Grid
 
 
-async def _jump_once(app_cls, grid: Grid) -> tuple[float, int]:
-    app = app_cls(grid.copy(), algorithm="bfs")
+async def _jump_once(app_cls, grid: Grid, algorithm: str = "bfs") -> tuple[float, int]:
+    app = app_cls(grid.copy(), algorithm=algorithm)
     async with app.run_test(size=TERMINAL) as pilot:
         await pilot.pause()
         gc.collect()

@@ -29,6 +29,7 @@ class RecordedTree(Recording):
         self._gen_step = array("i")  # event -> step that expanded it (LIFO; lazy)
         self._gen_step_filled = 0
         self._path: set[int] | None = None
+        self._path_gens: list[int] | None = None  # once found: the goal's chain never changes
         self._levels = array("i", [0])  # FIFO: the first event of each depth
         self._next_same = array("i")  # event -> the next event of the same cell (-1: none)
         self._prev_same = array("i")  # event -> the previous event of the same cell (-1: none)
@@ -183,7 +184,11 @@ class RecordedTree(Recording):
 
     def path_gens(self) -> list[int]:
         """Events from the start to the goal (empty when not found or not yet recorded)."""
-        return self.ancestors(self.rec.goal_gen) if self.rec.found else []
+        if not self.rec.found:
+            return []
+        if self._path_gens is None:
+            self._path_gens = self.ancestors(self.rec.goal_gen)
+        return list(self._path_gens)
 
     def path(self) -> list[Cell] | None:
         if not self.rec.found:

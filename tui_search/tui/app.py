@@ -445,12 +445,27 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
             if self.view.border_title != title:  # setting it repaints the whole view
                 self.view.border_title = title
         self.show_readout()
+        self._refresh_keys()
+
+    def _refresh_keys(self) -> None:
+        """Refresh the key bar when what greys out or hides its keys changed."""
         runs = self.runs
         key = (not runs, all(r.k == 0 for r in runs), all(r.at_end for r in runs),
                self.speed_index, self.playing, self.seeking, self.compare)
         if key != self._bindings_key:
             self._bindings_key = key
             self.refresh_bindings()
+
+    def _show_status(self) -> None:
+        """Only the status lines (the note, the speed): what a seek's progress changes."""
+        speed = playback.speed_text(playback.SPEEDS[self.speed_index])
+        playing = f"▶ playing {speed}" if self.playing else f"speed {speed}"
+        if self.compare:
+            self.stats.show_compare([c.label for c in self.contenders], playing=playing,
+                                    note=self.note, sentence=LOCKSTEP)
+        else:
+            self.stats.show(self.search_run, self.algorithm, playing=playing, note=self.note)
+        self._refresh_keys()  # esc appears
 
     def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
         """Grey out (None) the keys that cannot act now, hide (False) those that do not apply
@@ -586,7 +601,7 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
             text = f"{run.algo.short}: {text[0].lower()}{text[1:]}"
         self.note = f"{text} — esc to stop"
         self._seek_noted = True
-        self._show(changed=[])
+        self._show_status()  # only the note: the panes show where the runs were till the end
         self.set_timer(playback.SLICE_PAUSE, lambda: self._seek_slice(run))
 
     def _seek_arrived(self) -> None:
