@@ -57,7 +57,9 @@ def bench_startup(quick: bool) -> None:
             paired(t["headless"], t["pass"]), "report"))
 
     app_cls, why = search_app_class()
-    fns = {"trivial": lambda: first_frame([py, str(TRIVIAL_APP)])}
+    fns = {"trivial": lambda: first_frame([py, str(TRIVIAL_APP)]),
+           # a floor for compare mode's first frame: as many bordered widgets as its screen
+           "trivial-28": lambda: first_frame([py, str(TRIVIAL_APP), "28"])}
     if app_cls is not None:
         fns["tutorial"] = lambda: first_frame(cli + [str(TUTORIAL)])
         fns["compare"] = lambda: first_frame(cli + [str(TUTORIAL), "--compare", "bfs,dfs"])
@@ -76,6 +78,12 @@ def bench_startup(quick: bool) -> None:
     r = paired(t["tutorial"], base)
     add(Row("startup", "tui-search maps/tutorial.txt → first frame vs trivial app",
             fmt_time(t["tutorial"]), f"trivial {fmt_time(base)}", r, "≤ 1.3", r <= 1.3))
+    r = paired(t["trivial-28"], base)
+    add(Row("startup", "trivial Textual app with 28 bordered widgets (compare mode's count) → "
+            "first frame", fmt_time(t["trivial-28"]), f"trivial {fmt_time(base)}", r, "report"))
+    r = paired(t["compare"], t["tutorial"])
+    add(Row("startup", "tui-search --compare bfs,dfs vs tui-search (one search) → first frame",
+            fmt_time(t["compare"]), f"one search {fmt_time(t['tutorial'])}", r, "report"))
     r = paired(t["compare"], base)
     add(Row("startup", "tui-search maps/tutorial.txt --compare bfs,dfs → first frame vs trivial",
             fmt_time(t["compare"]), f"trivial {fmt_time(base)}", r, "≤ 1.6", r <= 1.6))

@@ -37,28 +37,41 @@ class TrivialApp(App):
         ("f", "first", "First lines"),
     ]
 
-    def __init__(self, first: int = 1) -> None:
+    def __init__(self, first: int = 1, widgets: int = 1) -> None:
         super().__init__()
         self.first = first  # lines that f redraws
+        self.widgets = widgets  # a start-up floor: that many bordered widgets in a grid
 
     def compose(self) -> ComposeResult:
-        yield Lines()
+        if self.widgets == 1:
+            yield Lines()
+            return
+        from textual.containers import Grid
+
+        with Grid() as grid:  # as many widgets as a screen of the real app, tiled
+            grid.styles.grid_size_columns = 4
+            for _ in range(self.widgets):
+                lines = Lines()
+                lines.styles.border = ("round", "white")
+                yield lines
 
     def action_bump(self, d: int) -> None:
-        lines = self.query_one(Lines)
+        lines = self.query(Lines).first()
         lines.count += d
         lines.refresh(Region(0, 5, lines.size.width, 1))
 
     def action_first(self) -> None:  # the same change, and the first lines repainted
-        lines = self.query_one(Lines)
+        lines = self.query(Lines).first()
         lines.count += 1
         lines.refresh(Region(0, 0, lines.size.width, self.first))
 
     def action_all(self) -> None:  # the same change, but the whole widget is repainted
-        lines = self.query_one(Lines)
+        lines = self.query(Lines).first()
         lines.count += 1
         lines.refresh()
 
 
 if __name__ == "__main__":
-    TrivialApp().run()
+    import sys
+
+    TrivialApp(widgets=int(sys.argv[1]) if len(sys.argv) > 1 else 1).run()

@@ -118,9 +118,12 @@ class Contender:
         return algo.short
 
 
-def parse_compare(text: str, semantics: Semantics = DEFAULT_SEMANTICS) -> list[Contender]:
+def parse_compare(text: str, semantics: Semantics = DEFAULT_SEMANTICS,
+                  fit: bool = False) -> list[Contender]:
     """``bfs,dfs`` or ``astar:manhattan,ucs``: two to four registry keys, each informed one
-    with an optional heuristic.  ``ValueError`` (one line) for anything else."""
+    with an optional heuristic.  ``ValueError`` (one line) for anything else -- or, with
+    ``fit``, for a choice that does not apply to one of them, that one visits on generate
+    (the app's settings apply to every pane where they can)."""
     from tui_search.engine.heuristics import HEURISTICS
 
     parts = [p.strip() for p in text.split(",") if p.strip()]
@@ -137,7 +140,12 @@ def parse_compare(text: str, semantics: Semantics = DEFAULT_SEMANTICS) -> list[C
             if heuristic not in HEURISTICS:
                 raise ValueError(f"{part!r}: unknown heuristic (use {', '.join(HEURISTICS)})")
             sem = replace(sem, heuristic=heuristic)
-        sem.check(algo)
+        try:
+            sem.check(algo)
+        except ValueError:
+            if not fit:
+                raise
+            sem = replace(sem, visit="generate")
         out.append(Contender(key, sem))
     return out
 

@@ -408,12 +408,11 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
     def _compare_contenders(self, spec: str) -> tuple[list[Contender], str]:
         """The searches of ``spec`` under the settings in force, and a note when a setting
         does not apply to one of them (the visit rule: that one visits on generate)."""
-        try:
-            return parse_compare(spec, self.semantics), ""
-        except ValueError:
-            fitted = replace(self.semantics, visit="generate")
-            return parse_compare(spec, fitted), ("Visit on expand applies to BFS and DFS "
-                                                 "only: the others visit on generate")
+        contenders = parse_compare(spec, self.semantics, fit=True)
+        fitted = [c.label for c in contenders if c.semantics.visit != self.semantics.visit]
+        note = (f"Visit on expand does not apply to {', '.join(fitted)}: visit on generate "
+                "there" if fitted else "")
+        return contenders, note
 
     def _show(self, changed: list[Cell] | None = None, follow: bool = True,
               per_run: list[list[Cell] | None] | None = None) -> None:
