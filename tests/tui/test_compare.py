@@ -233,3 +233,16 @@ def test_the_command_line_opens_compare_mode_and_refuses_bad_searches(capsys,
     assert seen["compare"] == "bfs,dfs"
     assert main([str(TUTORIAL), "--compare", "bfs"]) == 2
     assert "compare two to four searches" in capsys.readouterr().err
+
+
+@sync
+async def test_a_setting_that_does_not_apply_to_one_pane_applies_to_the_others() -> None:
+    app = compare_app("bfs,astar")
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("comma")
+        app.screen.query_one("#visit-expand").value = True
+        app.screen.query_one("#apply").press()
+        await pilot.pause()
+        assert [c.semantics.visit for c in app.contenders] == ["expand", "generate"]
+        assert "does not apply to A*" in app.note
+        assert "visit on expand" in app.panes[0].stats.status_text
