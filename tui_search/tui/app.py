@@ -30,6 +30,7 @@ from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
 from tui_search.tui import playback
 from tui_search.tui.config import Config
 from tui_search.tui.editing import EditActions
+from tui_search.tui.file_access import FileAccess
 from tui_search.tui.files import FileActions
 from tui_search.tui.narration import group_digits
 from tui_search.tui.quiz import QuizActions
@@ -139,14 +140,18 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
         config: Config | None = None,
         optimal_cost: float | None = None,
         exercise: int | None = None,
+        file_access: FileAccess | None = None,
     ) -> None:
         """``theme`` is for this run only (``--theme``); without it, the one the config file
         remembers.  ``config`` defaults to the user's file (:func:`~tui_search.tui.config.
         config_path`).  ``optimal_cost`` is a benchmark's lowest cost for this map, start and
         goal (a MovingAI ``.scen`` row: 8 moves, no corner cutting), shown beside a path's cost
         while the map, its ends and those rules stay as they are.  ``exercise`` opens the
-        tutorial's exercise 1 or 2 as a live challenge (``x`` cycles them)."""
+        tutorial's exercise 1 or 2 as a live challenge (``x`` cycles them).  ``file_access``
+        is where saving and opening may go (:class:`~tui_search.tui.file_access.FileAccess`:
+        anywhere by default; the served app's is narrower)."""
         super().__init__()
+        self.file_access = file_access or FileAccess()
         self.exercise = exercise
         self._benchmark = None if optimal_cost is None else (
             bytes(grid.blocked), grid.start, grid.goal, optimal_cost)
