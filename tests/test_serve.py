@@ -6,7 +6,6 @@ from __future__ import annotations
 
 import argparse
 import asyncio
-import os
 import shlex
 import sys
 from pathlib import Path
@@ -58,8 +57,9 @@ def parse(*argv: str) -> argparse.Namespace:
     return build_parser().parse_args(list(argv))
 
 
-def test_the_served_command_carries_the_apps_flags_and_none_of_the_servers(tmp_path) -> None:
-    os.chdir(tmp_path)  # a relative map becomes an absolute path
+def test_the_served_command_carries_the_apps_flags_and_none_of_the_servers(
+        tmp_path, monkeypatch) -> None:
+    monkeypatch.chdir(tmp_path)  # a relative map becomes an absolute path
     (tmp_path / "my map's copy.txt").write_text(Path(TUTORIAL).read_text())
     (tmp_path / "saves").mkdir()
     args = parse("my map's copy.txt", "-a", "astar", "--heuristic", "octile", "--theme",
