@@ -48,7 +48,7 @@ def test_nonsense_with_serve_is_one_line_and_exit_2(capsys, argv: list[str], say
 def test_without_the_web_extra_serve_says_how_to_get_it(capsys, monkeypatch) -> None:
     import tui_search.serve
 
-    monkeypatch.setattr(tui_search.serve, "find_spec", lambda name: None)
+    monkeypatch.setattr(tui_search.serve, "web_extra_installed", lambda: False)
     code, out, err = run_cli(capsys, "--serve")
     assert (code, out, err) == (EXIT_BAD_INPUT, "", f"tui-search: error: {NEEDS_EXTRA}\n")
 
@@ -76,6 +76,12 @@ def test_the_served_command_carries_the_apps_flags_and_none_of_the_servers(
             continue
         assert getattr(served_args, dest) == value, dest
     assert not served_args.serve and served_args.host is None and served_args.port is None
+
+
+def test_the_web_extra_is_found_without_importing_it() -> None:
+    from tui_search.serve import web_extra_installed
+
+    assert web_extra_installed()  # the test extra brings it
 
 
 def test_the_served_command_without_a_save_dir_or_map() -> None:

@@ -20,10 +20,7 @@ from __future__ import annotations
 import argparse
 import os
 import re
-import shlex
-import subprocess
 import sys
-from importlib.util import find_spec
 from typing import TYPE_CHECKING, Any
 
 from tui_search.cli import UsageError
@@ -86,8 +83,15 @@ def check_args(args: argparse.Namespace) -> None:
             raise UsageError(f"--serve serves the app: {flag} is for a search without it")
     if args.served:
         raise UsageError("--served is what --serve gives the visitors' apps: leave it out")
-    if find_spec("textual_serve") is None:
+    if not web_extra_installed():
         raise UsageError(NEEDS_EXTRA)
+
+
+def web_extra_installed() -> bool:
+    """Is textual-serve there (``pip install 'tui-search[web]'``)?  Found, not imported."""
+    from importlib.util import find_spec  # (this module is imported by every run: lazily)
+
+    return find_spec("textual_serve") is not None
 
 
 def file_access(args: argparse.Namespace):  # -> FileAccess (no Textual import here either)
@@ -134,7 +138,11 @@ def served_command(parser: argparse.ArgumentParser, args: argparse.Namespace,
     if positional:
         words += ["--", *positional]
     if os.name == "nt":  # textual-serve runs it in cmd.exe there, which has its own quoting
+        import subprocess
+
         return subprocess.list2cmdline(words)
+    import shlex
+
     return shlex.join(words)
 
 
