@@ -269,3 +269,20 @@ def test_the_browser_check_tells_the_app_from_a_blank_or_starting_page() -> None
     shot = png(40, 20, app)
     assert png_pixels(shot)[2][:5] == [WALL] * 4 + [BACKGROUND]
     assert judge(shot) is None
+
+
+def test_past_the_visitor_limit_the_next_visitor_is_told_to_try_later() -> None:
+    """In process (the limit is not a flag): with room for none, the websocket gets 503."""
+    import aiohttp
+    from aiohttp.test_utils import TestClient, TestServer
+
+    from tui_search.serve import make_server
+
+    async def visit() -> int:
+        server = make_server("true", "127.0.0.1", 8000, "t", max_visitors=0)
+        async with TestClient(TestServer(await server._make_app())) as client:
+            with pytest.raises(aiohttp.WSServerHandshakeError) as refused:
+                await client.ws_connect("/ws")
+            return refused.value.status
+
+    assert asyncio.run(visit()) == 503
