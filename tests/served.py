@@ -86,6 +86,15 @@ async def first_screen(url: str, want: str, width: int = 120, height: int = 36,
                        timeout: float = 30.0, origin: str | None = None) -> tuple[str, str]:
     """The page at ``url`` and the app's output text once it shows ``want`` (or AssertionError
     with what arrived by ``timeout``)."""
+    page, screens = await visit(url, [("", want)], width, height, timeout, origin)
+    return page, screens[0]
+
+
+async def visit(url: str, steps: list[tuple[str, str]], width: int = 120, height: int = 36,
+                timeout: float = 30.0, origin: str | None = None) -> tuple[str, list[str]]:
+    """Open the page's app and, for each step, type its keys (what the page sends as
+    ``["stdin", keys]``: "\x13" is ctrl+s) and read the output until it shows the step's
+    text; the page and each step's output.  Then ``q`` quits the app."""
     import aiohttp
 
     async with aiohttp.ClientSession() as session:
@@ -96,25 +105,31 @@ async def first_screen(url: str, want: str, width: int = 120, height: int = 36,
         assert match, "the page names no websocket"
         ws_url = f"{html.unescape(match.group(1))}?width={width}&height={height}"
         headers = {"Origin": origin} if origin else None
+        screens = []
         async with session.ws_connect(ws_url, headers=headers) as ws:
             await ws.send_str(json.dumps(["resize", {"width": width, "height": height}]))
             await ws.send_str(json.dumps(["ping", "1"]))
-            received = bytearray()
             loop = asyncio.get_running_loop()
-            deadline = loop.time() + timeout
-            while want not in screen_text(bytes(received)):
-                left = deadline - loop.time()
-                if left <= 0:
-                    raise AssertionError(f"no {want!r} in the app's output: "
-                                         f"{screen_text(bytes(received))[-600:]!r}")
-                try:
-                    message = await ws.receive(timeout=left)
-                except asyncio.TimeoutError:
-                    continue
-                if message.type == aiohttp.WSMsgType.BINARY:
-                    received += message.data
-                elif message.type in (aiohttp.WSMsgType.CLOSE, aiohttp.WSMsgType.CLOSED,
-                                      aiohttp.WSMsgType.ERROR):
-                    raise AssertionError(f"the websocket closed: {screen_text(bytes(received))!r}")
+            for keys, want in steps:
+                if keys:
+                    await ws.send_str(json.dumps(["stdin", keys]))
+                received = bytearray()
+                deadline = loop.time() + timeout
+                while want not in screen_text(bytes(received)):
+                    left = deadline - loop.time()
+                    if left <= 0:
+                        raise AssertionError(f"no {want!r} in the app's output: "
+                                             f"{screen_text(bytes(received))[-600:]!r}")
+                    try:
+                        message = await ws.receive(timeout=left)
+                    except asyncio.TimeoutError:
+                        continue
+                    if message.type == aiohttp.WSMsgType.BINARY:
+                        received += message.data
+                    elif message.type in (aiohttp.WSMsgType.CLOSE, aiohttp.WSMsgType.CLOSED,
+                                          aiohttp.WSMsgType.ERROR):
+                        raise AssertionError("the websocket closed: "
+                                             f"{screen_text(bytes(received))!r}")
+                screens.append(screen_text(bytes(received)))
             await ws.send_str(json.dumps(["stdin", "q"]))  # quit the visitor's app
-        return page, screen_text(bytes(received))
+        return page, screens

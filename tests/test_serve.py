@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 from tests.helpers import MAPS
-from tests.served import first_screen, served
+from tests.served import first_screen, served, visit
 from tests.test_cli import run_cli
 from tui_search.cli import EXIT_BAD_INPUT, build_parser
 from tui_search.serve import NEEDS_EXTRA, SERVER_FLAGS, served_command
@@ -175,6 +175,14 @@ def test_the_page_and_its_websocket_deliver_the_apps_first_screen() -> None:
         _, again = asyncio.run(first_screen(server.url, "Quit"))
         assert "(0,0) START" in again
     assert server.process.wait() == 0  # Ctrl+C stops it cleanly
+
+
+def test_keys_typed_in_the_page_reach_the_served_app_which_will_not_save() -> None:
+    """ctrl+s, as the page sends it, in the served app: "Not available" (its one line)."""
+    with served(TUTORIAL) as server:
+        _, (_, saved) = asyncio.run(visit(server.url, [("", "Quit"),
+                                                       ("\x13", "Not available")]))
+        assert "Saving and opening" in saved
 
 
 def test_the_page_sends_its_websocket_to_the_address_the_browser_used() -> None:
