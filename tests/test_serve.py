@@ -6,6 +6,8 @@ from __future__ import annotations
 
 import argparse
 import asyncio
+import os
+import re
 import shlex
 import sys
 from pathlib import Path
@@ -67,9 +69,9 @@ def test_the_served_command_carries_the_apps_flags_and_none_of_the_servers(
                  "--serve", "--host", "0.0.0.0", "--port", "9999", "--save-dir", "saves")
     command = served_command(build_parser(), args, python="/opt/py thon/bin/python")
     words = shlex.split(command)
-    assert words[:3] == ["/opt/py thon/bin/python", "-m", "tui_search"]
+    assert words[:4] == ["exec", "/opt/py thon/bin/python", "-m", "tui_search"]
     assert words[-2:] == ["--", str(tmp_path / "my map's copy.txt")]
-    served_args = parse(*words[3:])
+    served_args = parse(*words[4:])
     assert served_args.served and served_args.save_dir == str((tmp_path / "saves").resolve())
     for dest, value in vars(args).items():
         if dest in ("map", "served", *SERVER_FLAGS):
@@ -86,7 +88,7 @@ def test_the_web_extra_is_found_without_importing_it() -> None:
 
 def test_the_served_command_without_a_save_dir_or_map() -> None:
     words = shlex.split(served_command(build_parser(), parse("--serve"), python="python"))
-    assert words == ["python", "-m", "tui_search", "--served"]
+    assert words == ["exec", "python", "-m", "tui_search", "--served"]
 
 
 def test_a_shell_cannot_be_smuggled_in_through_a_name(tmp_path) -> None:
@@ -294,3 +296,49 @@ def test_past_the_visitor_limit_the_next_visitor_is_told_to_try_later() -> None:
             return refused.value.status
 
     assert asyncio.run(visit()) == 503
+
+
+def running(pid: int) -> bool:
+    """Is ``pid`` a live process (not gone, not a zombie waiting for a parent to reap it)?"""
+    try:
+        state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
+    except (FileNotFoundError, ProcessLookupError):
+        return False
+    return state not in ("Z", "X")
+
+
+@pytest.mark.skipif(not Path("/proc/self/task").is_dir(), reason="reads /proc (Linux)")
+def test_a_visitors_app_ends_when_the_server_is_killed() -> None:
+    """A server that dies without stopping its apps (SIGKILL, a crash) leaves none running:
+    each app is the server's own child (``exec``) and exits once it is re-parented."""
+    import signal
+    import time
+
+    with served(TUTORIAL) as server:
+        async def open_app_then_kill_the_server() -> list[int]:
+            import aiohttp
+
+            async with aiohttp.ClientSession() as session:
+                async with session.get(server.url) as response:
+                    page = await response.text()
+                ws_url = re.search(r'data-session-websocket-url="([^"]+)"', page).group(1)
+                async with session.ws_connect(ws_url + "?width=100&height=32") as ws:
+                    await ws.receive(timeout=30)  # the app is up
+                    pid = server.process.pid
+                    apps = [int(p) for p in Path(f"/proc/{pid}/task/{pid}/children")
+                            .read_text().split()]
+                    server.process.send_signal(signal.SIGKILL)
+                    server.process.wait()
+                    return apps
+
+        apps = asyncio.run(open_app_then_kill_the_server())
+    try:
+        assert len(apps) == 1 and "tui_search" in Path(f"/proc/{apps[0]}/cmdline").read_text()
+        deadline = time.monotonic() + 15
+        while running(apps[0]) and time.monotonic() < deadline:
+            time.sleep(0.1)
+        assert not running(apps[0])
+    finally:  # a failure leaves nothing behind
+        for pid in apps:
+            if running(pid):
+                os.kill(pid, signal.SIGKILL)

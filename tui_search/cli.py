@@ -457,7 +457,7 @@ def _need_endpoints(grid: Grid, where: str) -> None:
 
 
 def run_app(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
-    from tui_search.serve import file_access
+    from tui_search.serve import exit_with_server, file_access
     from tui_search.tui.app import SearchApp  # Textual only when the app is wanted
     from tui_search.tui.config import Config
 
@@ -467,6 +467,8 @@ def run_app(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
                     optimal_cost=scenario.optimal_length if scenario is not None else None,
                     exercise=args.exercise, file_access=file_access(args),
                     config=Config.in_memory() if args.served else None)
+    if args.served:
+        exit_with_server(app)
     app.run()
     return app.return_code or 0
 

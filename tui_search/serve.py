@@ -143,7 +143,34 @@ def served_command(parser: argparse.ArgumentParser, args: argparse.Namespace,
         return subprocess.list2cmdline(words)
     import shlex
 
-    return shlex.join(words)
+    # exec: the app replaces the shell, so it is the server's own child (exit_with_server).
+    return "exec " + shlex.join(words)
+
+
+#: How often a served app checks that its server is still there (seconds).
+WATCH_EVERY = 0.5
+#: How long it then has to exit by itself before it is ended.
+GRACE = 3.0
+
+
+def exit_with_server(app: Any, every: float = WATCH_EVERY) -> None:
+    """End the served ``app`` when the server that started it is gone (killed, crashed):
+    else it would run on with no visitor, and a Textual app whose output pipe is gone can
+    spin on a core (seen: 37 % of one for 40 minutes).  A daemon thread watches the parent
+    process; once this process is re-parented it asks the app to exit and, should it not
+    within :data:`GRACE` seconds, ends the process."""
+    import threading
+    import time
+
+    parent = os.getppid()
+
+    def watch() -> None:
+        while os.getppid() == parent:
+            time.sleep(every)
+        threading.Timer(GRACE, os._exit, (0,)).start()
+        app.call_from_thread(app.exit)
+
+    threading.Thread(target=watch, name="exit-with-server", daemon=True).start()
 
 
 def serve(parser: argparse.ArgumentParser, args: argparse.Namespace, title: str) -> int:
