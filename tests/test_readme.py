@@ -94,9 +94,11 @@ def test_quick_start_is_two_commands_and_the_second_is_what_ci_runs() -> None:
     assert (ROOT / "maps" / "tutorial.txt").is_file()
     ci = (ROOT / ".ci" / "run").read_text(encoding="utf-8").splitlines()
     steps = [line.strip() for line in ci if line.strip() and not line.lstrip().startswith("#")]
-    assert tests in steps  # exactly the README's command, then the linters
-    linters = steps[steps.index(tests) + 1 :]
-    assert [step.split()[0] for step in linters] == [".venv/bin/ruff", ".venv/bin/mypy"]
+    assert tests in steps  # exactly the README's command, then the linters, then Chromium
+    after = steps[steps.index(tests) + 1 :]
+    assert [step.split()[0] for step in after[:2]] == [".venv/bin/ruff", ".venv/bin/mypy"]
+    assert after[-1] == ".venv/bin/python -m tests.browser_check"
+    assert after[-1] in section("Command line")  # the README says how to run it
 
 
 def test_the_text_map_example_is_the_tutorial_map() -> None:

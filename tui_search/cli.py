@@ -118,6 +118,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--trace", metavar="FILE",
                    help="with --headless: write one JSON line per expansion to FILE "
                    "('-' for stdout, without --json)")
+    from tui_search import serve  # the flags of --serve (textual-serve only when serving)
+
+    serve.add_arguments(p)
     return p
 
 
@@ -440,13 +443,19 @@ def _need_endpoints(grid: Grid, where: str) -> None:
 
 
 def run_app(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
+    from tui_search.serve import exit_with_server, file_access
     from tui_search.tui.app import SearchApp  # Textual only when the app is wanted
+    from tui_search.tui.config import Config
 
     scenario = getattr(args, "scenario", None)
     app = SearchApp(grid, path=path, algorithm=args.algorithm, semantics=semantics_from(args),
                     max_steps=args.max_steps, unsaved_name=BUILT_IN_TITLE, theme=args.theme,
                     optimal_cost=scenario.optimal_length if scenario is not None else None,
-                    exercise=args.exercise, compare=args.compare)
+                    exercise=args.exercise, compare=args.compare,
+                    file_access=file_access(args),
+                    config=Config.in_memory() if args.served else None)
+    if args.served:
+        exit_with_server(app)
     app.run()
     return app.return_code or 0
 
@@ -484,7 +493,11 @@ def check_modes(args: argparse.Namespace) -> None:
 
 def main(argv: list[str] | None = None) -> int:
     try:
-        args = build_parser().parse_args(argv)
+        parser = build_parser()
+        args = parser.parse_args(argv)
+        from tui_search import serve
+
+        serve.check_args(args)
         if (args.json or args.trace) and not args.headless:
             raise UsageError("--json and --trace go with --headless")
         if args.theme and args.headless:
@@ -500,6 +513,8 @@ def main(argv: list[str] | None = None) -> int:
         semantics_from(args)  # report bad choices before the screen changes
         if args.compare:
             contenders_from(args)
+        if args.serve:
+            return serve.serve(parser, args, title=path.name if path else BUILT_IN_TITLE)
         return run_app(args, grid, path)
     except UsageError as exc:
         print(f"tui-search: error: {exc}", file=sys.stderr)

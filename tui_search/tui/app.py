@@ -31,6 +31,7 @@ from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
 from tui_search.tui import playback
 from tui_search.tui.config import Config
 from tui_search.tui.editing import EditActions
+from tui_search.tui.file_access import FileAccess
 from tui_search.tui.files import FileActions
 from tui_search.tui.narration import group_digits
 from tui_search.tui.quiz import QuizActions
@@ -156,6 +157,7 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
         optimal_cost: float | None = None,
         exercise: int | None = None,
         compare: str | None = None,
+        file_access: FileAccess | None = None,
     ) -> None:
         """``theme`` is for this run only (``--theme``); without it, the one the config file
         remembers.  ``config`` defaults to the user's file (:func:`~tui_search.tui.config.
@@ -164,8 +166,11 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
         while the map, its ends and those rules stay as they are.  ``exercise`` opens the
         tutorial's exercise 1 or 2 as a live challenge (``x`` cycles them).  ``compare`` opens
         compare mode with those searches (``bfs,dfs``: :func:`~tui_search.engine.exercises.
-        parse_compare`'s form)."""
+        parse_compare`'s form).  ``file_access`` is where saving and opening may go
+        (:class:`~tui_search.tui.file_access.FileAccess`: anywhere by default; the served
+        app's is narrower)."""
         super().__init__()
+        self.file_access = file_access or FileAccess()
         self.compare = compare  # None: one search; else the searches side by side
         self.compare_pick = compare or DEFAULT_COMPARE  # what c compares
         self.contenders: list[Contender] = []

@@ -7,6 +7,12 @@ one-line problem (file, line and column where JSON says) that the app shows once
 defaults; such a file is never written over (it may hold what its owner wants back).  A file
 that reads but names an unknown theme gives a problem too, and is updated by the next choice,
 keeping every other key.  No Textual here: the command line may read it.
+
+The app served to browsers (``tui-search --serve``) neither reads nor writes the file
+(:meth:`Config.in_memory`): its visitors are not the file's owner, and thirty of them choosing
+themes at once would each overwrite the teacher's choice.  The server passes the theme the
+file remembers (or ``--theme``) to every visitor's app; a theme a visitor picks lasts for
+their session.
 """
 
 from __future__ import annotations
@@ -43,6 +49,12 @@ class Config:
     data: dict[str, Any] = field(default_factory=dict)
     problem: str | None = None  # one line for the user, or None when all is well
     keep: bool = False  # the file could not be read as a config: never write over it
+    writable: bool = True  # False: choices are kept in memory only (the served app)
+
+    @classmethod
+    def in_memory(cls) -> Config:
+        """A config that starts with the defaults and never touches a file."""
+        return cls(config_path(), writable=False)
 
     @classmethod
     def load(cls, path: Path | None = None) -> Config:
@@ -82,6 +94,9 @@ class Config:
         if self.keep or self.data.get("theme") == name:
             return None
         data = {**self.data, "theme": name}
+        if not self.writable:
+            self.data = data
+            return None
         try:
             self.path.parent.mkdir(parents=True, exist_ok=True)
             write_atomically(str(self.path),

@@ -6,6 +6,10 @@ Saving writes the file the map was read from back with only the edited cells cha
 :class:`~tui_search.engine.mapfile.MapSource`), in its own format: ctrl+s on a MovingAI
 ``.map`` saves it in place as a ``.map`` (which has no start or goal, and the notification
 says so).  A new name picks the format by its ending: ``.map`` MovingAI, anything else text.
+
+Where files may be read and written is the app's ``file_access``
+(:class:`~tui_search.tui.file_access.FileAccess`): anywhere in a terminal; served to browsers,
+nowhere (each action says so in one line) or names in one folder.
 """
 
 from __future__ import annotations
@@ -16,6 +20,7 @@ from typing import TYPE_CHECKING
 
 from tui_search.engine.grid import Grid
 from tui_search.engine.mapfile import MOVINGAI, TEXT, MapError, kind_for_path, save_map
+from tui_search.tui.file_access import FileAccess
 from tui_search.tui.mixin import AppMixinBase
 
 if TYPE_CHECKING:
@@ -31,13 +36,22 @@ class FileActions(AppMixinBase):
     """ctrl+s saves, w saves as, ctrl+o opens a map; q and a new map ask first when there
     are unsaved edits (:meth:`confirm_discard`, :meth:`replace_map`)."""
 
+    file_access: FileAccess = FileAccess()  # the app sets its own
+
+    def _files_off(self) -> bool:
+        """When the served app may not touch files: say so (one line) and return True."""
+        off = self.file_access.off
+        if off is not None:
+            self.notify(off, title="Not available", severity="warning", timeout=8)
+        return off is not None
 
     # -- saving ---------------------------------------------------------------------------
     def action_save(self) -> None:
-        if self.map_path is None:
+        own = self.map_path
+        if own is None or not self.file_access.may_save_over(own):
             self.ask_save_as()
         else:
-            self.save(self.map_path)
+            self.save(own)
 
     def action_save_as(self) -> None:
         self.ask_save_as()
@@ -76,16 +90,20 @@ class FileActions(AppMixinBase):
 
     def ask_save_as(self, then: Callable[[], None] | None = None) -> None:
         """The save-as prompt; ``then`` runs once the map is saved (not on cancel)."""
+        if self._files_off():
+            return
         from tui_search.tui.screens.save_as import SaveAsScreen
 
         path = self.map_path
-        suggestion = str(path.with_suffix(".txt")) if path is not None else "map.txt"
+        access = self.file_access
+        suggestion = access.suggestion(path)
 
         def saved(result: Path | None) -> None:
             if result is not None and then is not None:
                 then()
 
-        self.push_screen(SaveAsScreen(self._save_as, suggestion, own=path), saved)
+        self.push_screen(SaveAsScreen(self._save_as, suggestion, own=path,
+                                      to_path=access.path_for), saved)
 
     # -- leaving a map with edits ---------------------------------------------------------
     def confirm_discard(self, then: Callable[[], None], leaving: Leaving | None = None) -> None:
@@ -104,9 +122,10 @@ class FileActions(AppMixinBase):
             if choice == QUIT:
                 then()
             elif choice == SAVE:
-                if self.map_path is None:
+                own = self.map_path
+                if own is None or not self.file_access.may_save_over(own):
                     self.ask_save_as(then)
-                elif self.save(self.map_path):
+                elif self.save(own):
                     then()
 
         name = self.map_name
@@ -117,16 +136,18 @@ class FileActions(AppMixinBase):
 
     # -- opening a map --------------------------------------------------------------------
     def action_open(self) -> None:
+        if self._files_off():
+            return
         from tui_search.tui.screens.open_map import OpenMapScreen
 
-        folder = self.map_path.parent if self.map_path is not None else Path()
-        suggestion = "" if str(folder) == "." else f"{folder}/"
+        access = self.file_access
+        suggestion = access.open_suggestion(self.map_path)
 
         def opened(result: tuple[Grid, Path] | None) -> None:
             if result is not None:
                 self.replace_map(*result)
 
-        self.push_screen(OpenMapScreen(suggestion), opened)
+        self.push_screen(OpenMapScreen(suggestion, access.path_for), opened)
 
     def replace_map(self, grid: Grid, path: Path | None, name: str | None = None) -> None:
         """Show ``grid`` (read from ``path``, None for a map made in code) instead of the

@@ -7,6 +7,7 @@ one line, and the name typed stays there to be corrected; escape cancels.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
 from typing import ClassVar, TypeVar
 
@@ -47,9 +48,14 @@ class PathPrompt(ModalScreen[T]):
     LABEL_TEXT = ""
     HINT_TEXT = "enter to confirm · escape to cancel"
 
-    def __init__(self, suggestion: str = "") -> None:
+    def __init__(self, suggestion: str = "", to_path: Callable[[str], Path] | None = None) -> None:
+        """``to_path`` turns the name typed into the file it stands for, or raises ValueError
+        with the one-line reason it is refused (the served app's
+        :meth:`~tui_search.tui.file_access.FileAccess.path_for`); by default any path, ``~``
+        expanded."""
         super().__init__()
         self.suggestion = suggestion
+        self.to_path = to_path or (lambda name: Path(name).expanduser())
 
     def compose(self) -> ComposeResult:
         with Vertical() as box:
@@ -74,7 +80,12 @@ class PathPrompt(ModalScreen[T]):
         name = event.value.strip()
         if name:
             self.show_error("")
-            self.submit(Path(name).expanduser())
+            try:
+                path = self.to_path(name)
+            except ValueError as exc:
+                self.show_error(str(exc))
+                return
+            self.submit(path)
 
     def on_input_changed(self, event: Input.Changed) -> None:
         self.show_error("")  # the error was about the name as it was

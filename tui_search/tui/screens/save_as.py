@@ -27,10 +27,12 @@ class SaveAsScreen(PathPrompt[Path | None]):
         save: Callable[[Path], str | None],
         suggestion: str = "map.txt",
         own: Path | None = None,
+        to_path: Callable[[str], Path] | None = None,
     ) -> None:
         """``save(path)`` writes the map and returns None, or the one-line reason it could
-        not; ``own`` is the map's own file, saved over without asking."""
-        super().__init__(suggestion)
+        not; ``own`` is the map's own file, saved over without asking; ``to_path`` as
+        :class:`PathPrompt`'s."""
+        super().__init__(suggestion, to_path)
         self.save = save
         self.own = own
 

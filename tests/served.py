@@ -1,0 +1,135 @@
+"""A real ``tui-search --serve`` in a subprocess on a free local port, and a client that talks
+to it as textual-serve's page does (its ``static/js/textual.js``): fetch the page, read the
+websocket address from the terminal element's ``data-session-websocket-url``, connect with
+``?width=W&height=H``, send ``["resize", {"width": W, "height": H}]``, and read the app's
+output -- terminal escape sequences -- from the binary messages.
+
+Used by tests/test_serve.py and by the Chromium check (tests/browser_check.py)."""
+
+from __future__ import annotations
+
+import asyncio
+import html
+import json
+import os
+import re
+import signal
+import socket
+import subprocess
+import sys
+import time
+from collections.abc import Iterator
+from contextlib import contextmanager
+from dataclasses import dataclass
+
+from tests.helpers import ROOT
+
+WS_URL = re.compile(r'data-session-websocket-url="([^"]+)"')
+ESCAPES = re.compile(r"\x1b\[[0-9;?<>=]*[ -/]*[@-~]|\x1b[PX^_\]].*?(?:\x1b\\|\x07)|\x1b.")
+
+
+def free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+@dataclass
+class Served:
+    process: subprocess.Popen[str]
+    url: str
+    banner: str
+
+
+@contextmanager
+def served(*args: str, timeout: float = 30.0) -> Iterator[Served]:
+    """``tui-search --serve --port P ARGS`` until the block ends (then stopped with SIGINT,
+    as Ctrl+C does, and waited for)."""
+    port = free_port()
+    process = subprocess.Popen(
+        [sys.executable, "-m", "tui_search", "--serve", "--port", str(port), *args],
+        cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+        env={**os.environ, "PYTHONUNBUFFERED": "1"},
+    )
+    try:
+        assert process.stdout is not None
+        banner = process.stdout.readline()  # "Serving tui-search (...) on http://...": listening
+        if not banner.startswith("Serving"):
+            raise AssertionError(f"the server did not start: {banner}{process.stdout.read()}")
+        # Listening starts right after on_startup prints; wait until it accepts.
+        deadline = time.monotonic() + timeout
+        while True:
+            try:
+                socket.create_connection(("127.0.0.1", port), timeout=1).close()
+                break
+            except OSError:
+                if time.monotonic() > deadline:
+                    raise
+                time.sleep(0.05)
+        yield Served(process, f"http://127.0.0.1:{port}/", banner)
+    finally:
+        if process.poll() is None:
+            process.send_signal(signal.SIGINT)
+            try:
+                process.wait(timeout=10)
+            except subprocess.TimeoutExpired:
+                process.kill()
+                process.wait()
+
+
+def screen_text(data: bytes) -> str:
+    """The characters of the app's output, escape sequences removed."""
+    return ESCAPES.sub("", data.decode("utf-8", "replace"))
+
+
+async def first_screen(url: str, want: str, width: int = 120, height: int = 36,
+                       timeout: float = 30.0, origin: str | None = None) -> tuple[str, str]:
+    """The page at ``url`` and the app's output text once it shows ``want`` (or AssertionError
+    with what arrived by ``timeout``)."""
+    page, screens = await visit(url, [("", want)], width, height, timeout, origin)
+    return page, screens[0]
+
+
+async def visit(url: str, steps: list[tuple[str, str]], width: int = 120, height: int = 36,
+                timeout: float = 30.0, origin: str | None = None) -> tuple[str, list[str]]:
+    """Open the page's app and, for each step, type its keys (what the page sends as
+    ``["stdin", keys]``: "\x13" is ctrl+s) and read the output until it shows the step's
+    text; the page and each step's output.  Then ``q`` quits the app."""
+    import aiohttp
+
+    async with aiohttp.ClientSession() as session:
+        async with session.get(url) as response:
+            assert response.status == 200, response.status
+            page = await response.text()
+        match = WS_URL.search(page)
+        assert match, "the page names no websocket"
+        ws_url = f"{html.unescape(match.group(1))}?width={width}&height={height}"
+        headers = {"Origin": origin} if origin else None
+        screens = []
+        async with session.ws_connect(ws_url, headers=headers) as ws:
+            await ws.send_str(json.dumps(["resize", {"width": width, "height": height}]))
+            await ws.send_str(json.dumps(["ping", "1"]))
+            loop = asyncio.get_running_loop()
+            for keys, want in steps:
+                if keys:
+                    await ws.send_str(json.dumps(["stdin", keys]))
+                received = bytearray()
+                deadline = loop.time() + timeout
+                while want not in screen_text(bytes(received)):
+                    left = deadline - loop.time()
+                    if left <= 0:
+                        raise AssertionError(f"no {want!r} in the app's output: "
+                                             f"{screen_text(bytes(received))[-600:]!r}")
+                    try:
+                        message = await ws.receive(timeout=left)
+                    except asyncio.TimeoutError:
+                        continue
+                    if message.type == aiohttp.WSMsgType.BINARY:
+                        received += message.data
+                    elif message.type in (aiohttp.WSMsgType.CLOSE, aiohttp.WSMsgType.CLOSED,
+                                          aiohttp.WSMsgType.ERROR):
+                        raise AssertionError("the websocket closed: "
+                                             f"{screen_text(bytes(received))!r}")
+                screens.append(screen_text(bytes(received)))
+            await ws.send_str(json.dumps(["stdin", "q"]))  # quit the visitor's app
+        return page, screens
