@@ -252,7 +252,8 @@ def test_the_peak_frontier_is_kept_while_recording(grid, algo) -> None:
     """Recording fills the block maxima (so ``end`` on a big map scans at most one block),
     and the peak is the largest frontier stepping meets, over every iteration of iterative
     deepening."""
-    with patch.object(Run, "PEAK_BLOCK", 3):  # several blocks even on a small map
+    # several blocks even on a small map, and pieces of blocks bounded before they are read
+    with patch.object(Run, "PEAK_BLOCK", 3), patch.object(Run, "PEAK_PIECE", 2):
         run = Run(grid, algo)
         run.advance()
         assert len(run._peak) == run.total // 3  # every whole block before the last step
@@ -270,7 +271,7 @@ def test_the_peak_frontier_is_kept_while_recording(grid, algo) -> None:
 def test_the_peak_frontier_in_any_order_of_asking(grid, algo, asks) -> None:
     """The last answer is remembered to make a step forwards cheap; asked backwards, across
     blocks or again, the peak is still the largest frontier over steps 0..k."""
-    with patch.object(Run, "PEAK_BLOCK", 3):
+    with patch.object(Run, "PEAK_BLOCK", 5), patch.object(Run, "PEAK_PIECE", 2):
         run = Run(grid, algo)
         run.advance()
         sizes = [run.frontier_size_at(j) for j in range(run.total + 1)]
