@@ -358,8 +358,9 @@ def general(
 # from 3.3x a bare BFS (one deque serving both frontiers) to 2.9x (CPU time, the loop alone;
 # 4.4x before the chunk buffers; 2.0-2.3x with the discarded steps buffered too), and the
 # recorded run from 3.5x to 3.1x with one loop a visit rule (DFS: 4.6x to 4.2x).  What is left
-# over the bare floors (1.9x): the record (an append or two a step, the events stack of LIFO)
-# and, outside the loop, the run's peak-frontier table (~0.6x a bare BFS for 4.2 M steps).
+# over the bare floors (1.9x): the record (an append or two a step, the events stack of LIFO);
+# the run's peak-frontier table outside the loop, ~0.6x a bare BFS for 4.2 M steps, now costs
+# ~0.2x (:meth:`~tui_search.engine.recording.Recording._max_size`).
 
 
 def _general_fifo(problem: Problem, rec: Record, chunk: int, closed: bytearray,
