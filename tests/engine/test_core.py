@@ -151,7 +151,8 @@ def test_the_loops_record_the_same_in_chunks_of_any_size(grid: Grid, choice, chu
     ("key", "sem", "loop"),
     [
         ("bfs", Semantics(), bfs),
-        ("dfs", Semantics(corners="never", order=("N", "W", "S", "E")), dfs),
+        ("dfs", Semantics(corners="never", order=("N", "W", "S", "E")), dfs),  # no diagonal
+        ("bfs", Semantics(corners="one"), general),
         ("bfs", Semantics(visit="expand"), general),
         ("dfs", Semantics(goal_test="expand"), general),
         ("dfs", Semantics(tree_search=True), tree),
@@ -159,7 +160,7 @@ def test_the_loops_record_the_same_in_chunks_of_any_size(grid: Grid, choice, chu
     ],
 )
 def test_the_tutorial_rules_take_the_fast_loops(key, sem, loop) -> None:
-    """The hot loops serve the tutorial's rules (any order, any corner rule); the general
+    """The hot loops serve the tutorial's rules under no corner rule (any order); the general
     loop every other choice -- the equality test above covers each of them."""
     chosen = loop_for(get_algorithm(key), sem)
     assert getattr(chosen, "func", chosen) is loop

@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
+import itertools
 import subprocess
 import sys
+from array import array
 from unittest.mock import patch
 
 import pytest
@@ -13,6 +15,7 @@ from hypothesis import strategies as st
 from tests.engine.test_search import random_grids
 from tests.helpers import TUTORIAL_ROWS, grid_from_rows, summary
 from tui_search.engine.grid import Grid
+from tui_search.engine.recording import _largest_size
 from tui_search.engine.run import MAX_STEPS, CellState, Run
 from tui_search.engine.search import CHUNK
 
@@ -252,7 +255,8 @@ def test_the_peak_frontier_is_kept_while_recording(grid, algo) -> None:
     """Recording fills the block maxima (so ``end`` on a big map scans at most one block),
     and the peak is the largest frontier stepping meets, over every iteration of iterative
     deepening."""
-    with patch.object(Run, "PEAK_BLOCK", 3):  # several blocks even on a small map
+    # several blocks even on a small map, and pieces of blocks bounded before they are read
+    with patch.object(Run, "PEAK_BLOCK", 3), patch.object(Run, "PEAK_PIECE", 2):
         run = Run(grid, algo)
         run.advance()
         assert len(run._peak) == run.total // 3  # every whole block before the last step
@@ -270,10 +274,23 @@ def test_the_peak_frontier_is_kept_while_recording(grid, algo) -> None:
 def test_the_peak_frontier_in_any_order_of_asking(grid, algo, asks) -> None:
     """The last answer is remembered to make a step forwards cheap; asked backwards, across
     blocks or again, the peak is still the largest frontier over steps 0..k."""
-    with patch.object(Run, "PEAK_BLOCK", 3):
+    with patch.object(Run, "PEAK_BLOCK", 5), patch.object(Run, "PEAK_PIECE", 2):
         run = Run(grid, algo)
         run.advance()
         sizes = [run.frontier_size_at(j) for j in range(run.total + 1)]
         for a in asks:
             k = a % (run.total + 1)
             assert run.peak_frontier(k) == max(sizes[: k + 1]), k
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.integers(0, 8), min_size=1, max_size=600), st.integers(0, 2**31 - 6000),
+       st.data())
+def test_the_largest_size_packed_in_one_int(steps, base, data) -> None:
+    """The peak table reads a block's sizes ``ends[j] - j - c`` as fields of one int: the
+    same largest size as the plain ``max``, for any block, up to sizes near 2**31."""
+    ends = array("i", itertools.accumulate(steps, initial=base + len(steps)))
+    lo = data.draw(st.integers(0, len(ends) - 1))
+    hi = data.draw(st.integers(lo + 1, len(ends)))
+    c = data.draw(st.integers(0, base))  # every size stays >= 0
+    assert _largest_size(ends, lo, hi, c) == max(ends[j] - j - c for j in range(lo, hi))

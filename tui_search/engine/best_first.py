@@ -14,6 +14,14 @@ best is stale: a discarded step ("lazy deletion": nothing is removed from the he
 
 Besides the arrays every loop records, these record ``gen_g``: each event's g, from which the
 app shows g, h and f and orders its frontier.
+
+What made the graph-search loop cheaper, counted with callgrind on maze512 row 3 under
+corners never (recorded run against the bare heapq search): closing expanded cells under a
+consistent heuristic, so most neighbours fail a byte test before any float is made (UCS 1.33
+-> 1.28x, A* 1.28 -> 1.24x, with the next two); the corner test before the float test; the
+record's lists appended as methods and the step numbers taken from the chunk's ``range``.
+Tried and dropped: ``(priority, event, cell)`` entries with each cell's latest event for the
+stale test (no fewer instructions: the test and the g then cost a lookup each).
 """
 
 from __future__ import annotations
@@ -22,7 +30,6 @@ import heapq
 from array import array
 from collections.abc import Iterator
 from functools import partial
-from itertools import repeat
 from struct import pack
 
 from tui_search.engine import heuristics
@@ -69,6 +76,12 @@ def best_first(problem: Problem, rec: Record, chunk: int = CHUNK, priority: str 
     use_h, use_g = "h" in priority, "g" in priority
     astar_octile = use_g and use_h and octile  # the default, with its heuristic inlined
     best = array("d", [INF]) * len(walls)  # the lowest g each cell was pushed with
+    # Under a consistent heuristic (the priority g, or g + h with any heuristic but manhattan
+    # beside diagonals) no cell is reached cheaper once expanded, so an expanded cell is
+    # closed and tested like a wall, before the float test it would fail anyway.
+    closed = bytearray(walls)
+    close = 1 if use_g and (not use_h or heuristics.admissible(
+        problem.semantics.heuristic, problem.semantics.order)) else 0
     rec.step_exp = step_exp = array("i", [-1])
     rec.gen_g = gen_g = array("d")
     rec.gen_node.append(start)
@@ -90,7 +103,6 @@ def best_first(problem: Problem, rec: Record, chunk: int = CHUNK, priority: str 
     ends: list[int] = []
     exps: list[int] = []
     discarded: list[int] = []
-    add, add_g, add_end, add_exp = nodes.append, gs.append, ends.append, exps.append
 
     def flush() -> None:
         for arr, buf, code in ((rec.gen_node, nodes, "i"), (gen_g, gs, "d"),
@@ -101,29 +113,31 @@ def best_first(problem: Problem, rec: Record, chunk: int = CHUNK, priority: str 
                 buf.clear()
 
     count = 1
-    recorded = rec.step_end
     while heap:
-        for _ in repeat(None, chunk):
+        first = rec.steps + 1
+        for step in range(first, first + chunk):  # the step's number, with no counter
             try:
                 _, e, n, g = pop(heap)
             except IndexError:
                 break
-            add_exp(e)
+            exps.append(e)
             if g > best[n]:  # stale: the cell was pushed with a lower g since
-                add_end(count)
-                discarded.append(len(recorded) - 1 + len(ends))  # this step's number
+                ends.append(count)
+                discarded.append(step)
                 continue
             if n == goal_on_pop:
-                add_end(count)
+                ends.append(count)
                 flush()
                 rec.goal_gen, rec.done = e, True
                 return
+            closed[n] = close
             for off, cost, margin, side_a, side_b in moves:
                 m = n + off
-                # cheapest test first: most neighbours are walls or reached already
-                if walls[m] or g + margin >= best[m]:
+                # cheapest tests first: most neighbours are walls or expanded already, and
+                # the corner rule refuses most diagonals of a maze
+                if closed[m] or side_a and walls[n + side_a] + walls[n + side_b] >= refused:
                     continue
-                if side_a and walls[n + side_a] + walls[n + side_b] >= refused:
+                if g + margin >= best[m]:
                     continue
                 ng = g + cost
                 best[m] = ng
@@ -138,15 +152,15 @@ def best_first(problem: Problem, rec: Record, chunk: int = CHUNK, priority: str 
                     push(heap, (ng + h if use_g else h, count, m, ng))
                 else:
                     push(heap, (ng, count, m, ng))
-                add(m)
-                add_g(ng)
+                nodes.append(m)
+                gs.append(ng)
                 count += 1
                 if m == goal_on_push:
-                    add_end(count)
+                    ends.append(count)
                     flush()
                     rec.goal_gen, rec.done = count - 1, True
                     return
-            add_end(count)
+            ends.append(count)
         flush()
         if heap:
             yield rec.steps
