@@ -224,6 +224,9 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
 
     # -- layout -----------------------------------------------------------------------------
     def compose(self) -> ComposeResult:
+        # The screen's mode class before its widgets are styled: set after, it would restyle
+        # every widget once more.
+        self.screen_stack[0].set_class(self.compare is not None, "-compare")
         self.view = view = GridView(self.grid, id="grid")
         self.frontier_panel = FrontierPanel(id="frontier")
         self.tree_panel = SearchTreePanel(id="tree")
@@ -268,7 +271,6 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
         self._timer = self.set_interval(1.0, self._tick, pause=True)
         self._set_speed(self.speed_index)
         self._check_size(self.size.width, self.size.height)
-        self.screen_stack[0].set_class(self.compare is not None, "-compare")
         self._arrange_panes(self.size.width, self.size.height)
         for view in self.views:
             view.set_cursor(self.cursor_cell)
