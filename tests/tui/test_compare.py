@@ -246,3 +246,18 @@ async def test_a_setting_that_does_not_apply_to_one_pane_applies_to_the_others()
         assert [c.semantics.visit for c in app.contenders] == ["expand", "generate"]
         assert "does not apply to A*" in app.note
         assert "visit on expand" in app.panes[0].stats.status_text
+
+
+@sync
+async def test_an_exercise_beside_the_panes_takes_its_room_from_them() -> None:
+    app = compare_app()
+    async with app.run_test(size=(120, 44)) as pilot:
+        await pilot.pause()
+        a, b = (p.region for p in app.panes)
+        assert a.y == b.y  # side by side: 60 columns each
+        await pilot.press("x")
+        await pilot.pause()
+        a, b = (p.region for p in app.panes)
+        assert a.x == b.x and b.y > a.y  # the challenge took 48: one above the other
+        challenge = app.query_one("#challenge").region
+        assert challenge.x >= a.right

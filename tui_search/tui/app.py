@@ -290,6 +290,8 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
         n = len(self.contenders) if self.compare else 0
         if not n:
             return
+        if self.exercise is not None:  # the challenge panel beside the panes (app.tcss)
+            width -= min(56, max(38, width * 2 // 5))
         columns = max(1, min(n, width // PANE_MIN_WIDTH))
         rows = -(-n // columns)
         box = self.compare_box
@@ -383,6 +385,7 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
         """Show exercise 1 or 2 as a live challenge on the map (0: none)."""
         self.exercise = exercise or None
         self._check_exercise()
+        self._arrange_panes(self.size.width, self.size.height)
 
     def _check_exercise(self) -> None:
         """The challenge panel's verdict on the map as it is now (two whole searches, so only
