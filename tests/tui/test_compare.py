@@ -167,7 +167,7 @@ async def test_the_settings_pick_what_c_compares() -> None:
 @sync
 async def test_narrow_terminals_stack_the_panes_and_short_ones_fold_the_trees() -> None:
     app = compare_app()
-    async with app.run_test(size=(90, 40)) as pilot:
+    async with app.run_test(size=(70, 48)) as pilot:
         await pilot.pause()
         a, b = (p.region for p in app.panes)
         assert a.x == b.x and b.y > a.y  # one above the other
@@ -261,3 +261,76 @@ async def test_an_exercise_beside_the_panes_takes_its_room_from_them() -> None:
         assert a.x == b.x and b.y > a.y  # the challenge took 48: one above the other
         challenge = app.query_one("#challenge").region
         assert challenge.x >= a.right
+
+
+@sync
+async def test_keys_pressed_at_once_act_on_the_new_comparison() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        post_keys(app, "c", "n", "n")
+        await wait_until(pilot, lambda: all(p.is_mounted for p in app.panes) and app.panes)
+        await pilot.pause()
+        assert app.compare == "bfs,dfs" and steps(app) == [2, 2]
+        post_keys(app, "3", "4")
+        await pilot.pause()
+        assert app.compare == "bfs,dfs,iddfs,ucs"
+        post_keys(app, "c", "c")
+        await pilot.pause()
+        assert app.compare == "bfs,dfs,iddfs,ucs" and len(app.panes) == 4
+
+
+@sync
+async def test_a_spaced_or_trailing_comma_spec_and_unchanged_settings_keep_the_comparison(
+) -> None:
+    app = compare_app("dfs, bfs,")
+    async with app.run_test(size=SIZE) as pilot:
+        assert app.compare == "dfs,bfs"
+        await pilot.press("n", "n")
+        await pilot.press("2")  # takes DFS out? two stay at least: no
+        assert app.compare == "dfs,bfs" and steps(app) == [2, 2]
+        await pilot.press("comma")
+        app.screen.query_one("#apply").press()
+        await pilot.pause()
+        assert app.compare == "dfs,bfs" and steps(app) == [2, 2]  # nothing changed
+
+
+@sync
+async def test_the_settings_in_compare_mode_are_for_every_search_compared() -> None:
+    app = compare_app("bfs,astar")
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("comma")
+        screen = app.screen
+        assert screen.query_one("#heuristic").disabled is False  # for A*
+        assert screen.query_one("#visit").disabled is False  # for BFS
+        screen.query_one("#heuristic-manhattan").value = True
+        screen.query_one("#apply").press()
+        await pilot.pause()
+        assert [c.semantics.heuristic for c in app.contenders] == ["manhattan", "manhattan"]
+        assert "inadmissible" in app.panes[1].stats.status_text
+
+
+@sync
+async def test_short_terminals_put_the_panes_beside_each_other_and_four_in_two_rows() -> None:
+    app = compare_app()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await pilot.pause()
+        a, b = (p.region for p in app.panes)
+        assert a.y == b.y  # too short to stack: beside each other, 40 columns each
+    app = compare_app("bfs,dfs,ucs,astar")
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.pause()
+        regions = [p.region for p in app.panes]
+        assert len({r.y for r in regions}) == 2 and len({r.x for r in regions}) == 2
+
+
+@sync
+async def test_zoom_and_labels_stay_when_a_search_is_added() -> None:
+    app = compare_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("left_square_bracket", "a")
+        await pilot.pause()
+        before = app.panes[0].view.view_state()
+        await pilot.press("6")
+        await wait_until(pilot, lambda: len(app.panes) == 3 and all(
+            p.is_mounted for p in app.panes))
+        assert all(p.view.view_state() == before for p in app.panes)

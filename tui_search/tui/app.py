@@ -56,6 +56,9 @@ DEFAULT_COMPARE = "bfs,dfs"
 #: of fewer columns, one above the other at the narrowest), and fold their search trees away
 #: when shorter than PANE_TREE_HEIGHT lines.
 PANE_MIN_WIDTH, PANE_TREE_HEIGHT = 50, 24
+#: The height at which a pane shows its map and frontier (a pane shorter than this favours
+#: more columns).
+PANE_MIN_HEIGHT = 16
 LOCKSTEP = ("Lockstep: n steps every search not done yet, p steps back the latest, "
             "end runs them all to the end · 1-6 add or take out a search · c one search")
 NEEDS_ENDPOINTS = "Place a start (s) and a goal (g) to search"
@@ -68,6 +71,27 @@ KEY_IMPORTANCE = {
 STEP = Binding.Group("Step", compact=True)
 ZOOM = Binding.Group("Zoom", compact=True)
 ALGO = Binding.Group("/".join(a.tag for a in ALGORITHMS.values()), compact=True)
+
+
+def normal_spec(spec: str) -> str:
+    """``bfs, dfs,`` as ``bfs,dfs``: the searches of a compare spec, no blanks."""
+    return ",".join(part.strip() for part in spec.split(",") if part.strip())
+
+
+def pane_grid(n: int, width: int, height: int) -> tuple[int, int]:
+    """Columns and rows for ``n`` panes in ``width`` x ``height``: side by side while each
+    gets PANE_MIN_WIDTH columns; else the grid whose panes come closest to that width and to
+    PANE_MIN_HEIGHT lines (two by two, or one above the other in a narrow terminal, beside
+    each other again in a short one)."""
+    if width // n >= PANE_MIN_WIDTH:
+        return n, 1
+
+    def fit(columns: int) -> float:
+        rows = -(-n // columns)
+        return min(width / columns / PANE_MIN_WIDTH, height / rows / PANE_MIN_HEIGHT)
+
+    columns = max(range(1, n + 1), key=lambda c: (fit(c), -abs(c - -(-n // c))))
+    return columns, -(-n // columns)
 
 
 def _search_commands() -> type[Provider]:
@@ -171,8 +195,10 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
         app's is narrower)."""
         super().__init__()
         self.file_access = file_access or FileAccess()
+        compare = normal_spec(compare) if compare else None
         self.compare = compare  # None: one search; else the searches side by side
         self.compare_pick = compare or DEFAULT_COMPARE  # what c compares
+        self._panes: list[RunPane] = []  # compare mode's panes, in the contenders' order
         self.contenders: list[Contender] = []
         self.runs: list[Run] = []  # every search shown: one, or one a pane
         self.fold_trees = False  # compare mode: the trees folded away by the user
@@ -247,7 +273,8 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
             yield Static(NEEDS_ENDPOINTS, id="side-note")
         yield self.readout
         yield Legend(view, id="legend")
-        self.compare_box = GridBox(*self._new_panes(), id="compare")
+        self._panes = self._new_panes()
+        self.compare_box = GridBox(*self._panes, id="compare")
         yield self.compare_box
         yield view
         yield Static(id="too-small")
@@ -258,7 +285,8 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
 
     @property
     def panes(self) -> list[RunPane]:
-        return list(self.compare_box.query_children(RunPane)) if self.compare else []
+        """Compare mode's panes (a pane a contender; mounted a moment after a change)."""
+        return self._panes
 
     @property
     def views(self) -> list[GridView]:
@@ -292,14 +320,13 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
             return
         if self.exercise is not None:  # the challenge panel beside the panes (app.tcss)
             width -= min(56, max(38, width * 2 // 5))
-        columns = max(1, min(n, width // PANE_MIN_WIDTH))
-        rows = -(-n // columns)
-        box = self.compare_box
-        box.styles.grid_size_columns = columns
-        box.styles.grid_size_rows = rows
         # What the bottom takes: the table (a line a search, head, two more, its border),
         # the status lines, the readout, the key bar and the legend.
         room = height - (n + 5) - 2 - 1 - 1 - 2
+        columns, rows = pane_grid(n, width, room)
+        box = self.compare_box
+        box.styles.grid_size_columns = columns
+        box.styles.grid_size_rows = rows
         box.set_class(self.fold_trees or room // rows < PANE_TREE_HEIGHT, "-no-trees")
 
     def _check_size(self, width: int, height: int) -> None:
@@ -435,13 +462,14 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
         title = f"{self.map_name} {'· modified' if self.dirty else ''}".strip()
         if self.compare:
             runs = self.runs
-            last = max((r.k for r in runs), default=0)
             for i, pane in enumerate(self.panes):
+                if not pane.is_mounted:
+                    continue  # shown whole once mounted (_panes_mounted)
                 r = runs[i] if runs else None
                 pane.show(r, self.contenders[i].algorithm,
                           per_run[i] if per_run is not None else changed, follow=follow,
                           hide_order=self.quiz and i == 0,
-                          done=r is not None and r.at_end and r.k < last)
+                          done=r is not None and r.at_end)
                 if pane.view.border_title != title:
                     pane.view.border_title = title
             labels = [c.label for c in self.contenders]
@@ -703,7 +731,7 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
         """One search: run ``algorithm``.  Compare mode: add it to the searches compared, or
         take it out (two to four stay)."""
         if self.compare:
-            parts = self.compare.split(",")
+            parts = self.compare.split(",")  # normal_spec: no blanks
             keys = [p.partition(":")[0] for p in parts]
             name = get_algorithm(algorithm).short
             if algorithm in keys:
@@ -718,7 +746,7 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
                 return
             else:
                 parts.append(algorithm)
-            self.run_worker(self._set_compare(",".join(parts)), exclusive=True)
+            self._set_compare(",".join(parts))
             return
         self.algorithm = algorithm
         note = ""
@@ -733,8 +761,10 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
         from tui_search.tui.screens.settings import SettingsScreen  # only when asked
 
         self._stop()
-        self.push_screen(SettingsScreen(self.semantics, get_algorithm(self.algorithm),
-                                        self.compare or self.compare_pick),
+        shown = ([get_algorithm(c.algorithm) for c in self.contenders] if self.compare
+                 else [get_algorithm(self.algorithm)])
+        self.push_screen(SettingsScreen(self.semantics, shown[0],
+                                        self.compare or self.compare_pick, shown),
                          self._settings_chosen)
 
     def _settings_chosen(self, chosen: SettingsChoice | None) -> None:
@@ -746,42 +776,63 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
             return
         self.semantics = chosen.semantics
         if self.compare and pick_changed:
-            self.run_worker(self._set_compare(chosen.compare), exclusive=True)
+            self._set_compare(chosen.compare)
         else:
             self._new_run()
 
     # -- compare mode -------------------------------------------------------------------------
     def action_compare(self) -> None:
         """Compare mode on (the searches last picked) or off (one search again)."""
-        self._stop()
-        self.run_worker(self._set_compare(None if self.compare else self.compare_pick),
-                        exclusive=True)
+        self._set_compare(None if self.compare else self.compare_pick)
 
     def action_show_compare(self, spec: str) -> None:
         """Compare the searches of ``spec`` (the palette's comparisons)."""
-        self.run_worker(self._set_compare(spec), exclusive=True)
+        self._set_compare(spec)
 
-    async def _set_compare(self, spec: str | None) -> None:
+    def _set_compare(self, spec: str | None) -> None:
         """Show the searches of ``spec`` side by side, a pane each (None: one search), and
-        start them all at step 0 on the map as it is."""
+        start them all at step 0 on the map as it is.  The state changes at once, so a key
+        pressed next acts on the new runs; the new panes are mounted a moment later (until
+        then what is shown skips them) and shown whole once they are."""
         self._stop()
         if spec is not None:
+            try:
+                spec = normal_spec(spec)
+                contenders = self._compare_contenders(spec)[0]
+            except ValueError as exc:  # a palette or settings spec the rules refuse
+                self.notify(f"Cannot compare {spec}: {exc}", severity="error", timeout=5)
+                return
             self.compare_pick = spec
+        else:
+            contenders = []
+        old = self._panes
+        state = (old[0].view if old else self.view).view_state()
         self.compare = spec
-        self.contenders = self._compare_contenders(spec)[0] if spec else []
+        self.contenders = contenders
+        self._panes = self._new_panes()
         box = self.compare_box
-        await box.remove_children()
-        if spec:
-            await box.mount_all(self._new_panes())
+        if old:
+            box.remove_children()
+        if self._panes:
+            box.mount_all(self._panes)
         self.screen_stack[0].set_class(spec is not None, "-compare")
         if self.view.grid is not self.grid:  # the one view again, after a new map
             self.view.set_grid(self.grid)
         self._arrange_panes(self.size.width, self.size.height)
         for view in self.views:
             view.set_cursor(self.cursor_cell)
+            view.set_view_state(state)  # zoom, labels, overview: as they were
+        self._new_run()
+        self.call_after_refresh(self._panes_mounted)
+
+    def _panes_mounted(self) -> None:
+        """The new panes are there: show every run in them, focus the first map."""
+        if not all(pane.is_mounted for pane in self._panes):
+            self.call_after_refresh(self._panes_mounted)
+            return
         if self.screen is self.screen_stack[0]:
             self.views[0].focus()
-        self._new_run()
+        self._show()
 
     def action_fold_trees(self) -> None:
         """Compare mode: fold the panes' search trees away, or show them again."""

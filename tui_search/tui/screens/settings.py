@@ -70,18 +70,22 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
     """
 
     def __init__(self, semantics: Semantics, algorithm: Algorithm,
-                 compare: str = "bfs,dfs") -> None:
-        """``compare``: the searches compare mode compares, as ``--compare`` spells them."""
+                 compare: str = "bfs,dfs", algorithms: list[Algorithm] | None = None) -> None:
+        """``compare``: the searches compare mode compares, as ``--compare`` spells them;
+        ``algorithms``: the searches the choices are for (compare mode's, else
+        ``algorithm``): a choice is greyed out only when it applies to none of them."""
         super().__init__()
         self.semantics = semantics
         self.algorithm = algorithm
+        self.algorithms = algorithms or [algorithm]
         self.compare = compare
 
     # -- layout ------------------------------------------------------------------------------
     def compose(self) -> ComposeResult:
         sem = self.semantics
         with VerticalScroll() as box:
-            box.border_title = f"Search settings · {self.algorithm.short}"
+            box.border_title = "Search settings · " + " · ".join(
+                a.short for a in self.algorithms)
             yield Label("Moves, in the order tried", classes="choice")
             yield Label(f"{EXPLAIN['order']} (all eight: {','.join(DEFAULT_ORDER)}; "
                         "4-connected: N,W,S,E)", classes="explain")
@@ -103,7 +107,7 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
             yield Label("", id="heuristic-explain", classes="explain")
             yield self._radios("heuristic", tuple(HEURISTICS), sem.heuristic)
             yield Label("Compare (c)", classes="choice")
-            picked = {part.partition(":")[0] for part in self.compare.split(",")}
+            picked = {part.strip().partition(":")[0] for part in self.compare.split(",")}
             with Horizontal(id="compare-picks"):
                 for algo in ALGORITHMS.values():
                     yield Checkbox(algo.short, algo.key in picked, id=f"compare-{algo.key}",
@@ -138,10 +142,16 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
     def picked(self) -> str | None:
         """The searches ticked for compare mode (``bfs,dfs``; a heuristic given on the
         command line kept), or None when fewer than two or more than four are."""
-        kept = {part.partition(":")[0]: part for part in self.compare.split(",")}
-        keys = [key for key in ALGORITHMS
-                if self.query_one(f"#compare-{key}", Checkbox).value]
+        kept = {part.strip().partition(":")[0]: part.strip()
+                for part in self.compare.split(",") if part.strip()}
+        ticked = [key for key in ALGORITHMS
+                  if self.query_one(f"#compare-{key}", Checkbox).value]
         explain = self.query_one("#compare-explain", Label)
+        if set(ticked) == set(kept):  # unchanged: as compared (order, A* twice, heuristics)
+            explain.set_class(False, "problem")
+            return ",".join(part.strip() for part in self.compare.split(",") if part.strip())
+        # in the order they were compared, then the newly ticked in the registry's
+        keys = [key for key in kept if key in ticked] + [k for k in ticked if k not in kept]
         if not 2 <= len(keys) <= 4:
             explain.set_class(True, "problem")
             explain.update(f"Compare: tick two to four searches ({len(keys)} ticked)")
@@ -162,8 +172,7 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
         error.update("")
         tree = self.query_one("#tree_search", Checkbox).value
         algo = self.algorithm
-        visit = ("generate" if tree or algo.iterative or algo.weighted
-                 else self._choice("visit"))
+        visit = ("generate" if tree or not self._visit_applies() else self._choice("visit"))
         goal_test = self._choice("goal-test")
         return Semantics(order=order, corners=self._choice("corners"), visit=visit,
                          goal_test=None if goal_test == algo.goal_test else goal_test,
@@ -174,11 +183,11 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
         and grey it out."""
         tree = self.query_one("#tree_search", Checkbox).value
         radios = self.query_one("#visit", RadioSet)
-        if self.algorithm.iterative:
+        if not self._visit_applies() and self.algorithm.iterative:
             why = f"does not apply to {self.algorithm.short}: it re-opens cells reached shallower"
-        elif self.algorithm.weighted:
-            why = (f"does not apply to {self.algorithm.short}: it re-opens cells reached "
-                   "with a lower g")
+        elif not self._visit_applies():
+            names = " or ".join(a.short for a in self.algorithms)
+            why = f"does not apply to {names}: it re-opens cells reached with a lower g"
         elif tree:
             why = "does not apply to tree search: it has no visited set"
         else:
@@ -186,12 +195,17 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
         radios.disabled = bool(why)
         self.query_one("#visit-explain", Label).update(why or EXPLAIN["visit"])
 
+    def _visit_applies(self) -> bool:
+        """The visit rule applies to BFS and DFS (in compare mode: to one of the searches)."""
+        return any(not (a.iterative or a.weighted) for a in self.algorithms)
+
     def _sync_heuristic(self) -> None:
         """The heuristic applies to greedy and A* only; an inadmissible one is named."""
         radios = self.query_one("#heuristic", RadioSet)
-        radios.disabled = not self.algorithm.informed
+        radios.disabled = not any(a.informed for a in self.algorithms)
         if radios.disabled:
-            text = f"does not apply to {self.algorithm.short}: it uses no estimate"
+            names = " or ".join(a.short for a in self.algorithms)
+            text = f"does not apply to {names}: it uses no estimate"
         else:
             name = self._choice("heuristic")
             order = self.query_one("#order", Input).value

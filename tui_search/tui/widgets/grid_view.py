@@ -175,6 +175,17 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
             self.fitted = False
         self._refit()
 
+    def view_state(self) -> tuple[bool, int, bool, str]:
+        """How the map is looked at (fitted, cell size, overview, labels), to carry over to
+        another view of the same map (compare mode's new panes)."""
+        return self.fitted, self._level, self._overview, self.labels
+
+    def set_view_state(self, state: tuple[bool, int, bool, str]) -> None:
+        if state == self.view_state():
+            return
+        self.fitted, self._level, self._overview, self.labels = state
+        self._refit()
+
     def cycle_labels(self) -> str:
         """The next label mode (arrows, depth/cost, none); returns it."""
         self.labels = LABEL_MODES[(LABEL_MODES.index(self.labels) + 1) % len(LABEL_MODES)]
