@@ -126,3 +126,10 @@ def test_the_sentence_in_the_tutorials_terms() -> None:
     assert [r.fewest_expanded for r in rows] == [True, False]
     assert [r.cheapest for r in rows] == [True, True]
     assert parse_compare("astar:manhattan,ucs", Semantics())[0].label == "A* (manhattan)"
+
+
+def test_searches_that_gave_up_are_named_in_the_sentence(capsys) -> None:
+    code, out, _ = run_cli(capsys, TUTORIAL, "--headless", "--compare", "bfs,dfs",
+                           "--max-steps", "3")
+    assert code == 3
+    assert "no path found, BFS, DFS stopped at the step limit" in out

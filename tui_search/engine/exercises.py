@@ -212,6 +212,9 @@ def summary_sentence(rows: list[TableRow]) -> str:
         f", {r.label} {r.outcome.expanded:,}" for r in rest)
     found = [r for r in rows if r.outcome.found]
     if not found:
+        gave_up = [r.label for r in rows if r.outcome.gave_up]
+        if gave_up:
+            return f"{expanded}; no path found, {', '.join(gave_up)} stopped at the step limit"
         return f"{expanded}; no path"
     lengths = {r.outcome.length for r in found}
     if len(found) == len(rows) and len(lengths) == 1:
