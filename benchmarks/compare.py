@@ -4,34 +4,16 @@
 from __future__ import annotations
 
 import asyncio
-import gc
 import sys
-import time
 
-from benchmarks.apps import TERMINAL, fast_press, search_app_class, settle
+from benchmarks.apps import search_app_class
 from benchmarks.harness import fmt_time, med, paired, series
+from benchmarks.jump import _jump_once
 from benchmarks.maps import maze_grid
 from benchmarks.step import _presses, step_keys
 from benchmarks.table import Row, add
-from tui_search.engine.grid import Grid
 
 COMPARED = "bfs,dfs"
-
-
-async def _end_once(app_cls, grid: Grid) -> tuple[float, list[int]]:
-    """``end`` in compare mode: from the key to the final screen of every pane."""
-    app = app_cls(grid.copy(), compare=COMPARED)
-    async with app.run_test(size=TERMINAL) as pilot:
-        await pilot.pause()
-        gc.collect()
-        t0 = time.perf_counter()
-        await fast_press(pilot, "end")
-        while app.seeking or not all(r.at_end for r in app.runs):
-            await asyncio.sleep(0.01)  # no forced repaints: the app paints as in a terminal
-            if time.perf_counter() - t0 > 120:
-                raise TimeoutError("end did not reach the end in 120 s")
-        await settle(pilot)
-        return time.perf_counter() - t0, [r.k for r in app.runs]
 
 
 def bench_compare(quick: bool) -> None:
@@ -56,11 +38,9 @@ def bench_compare(quick: bool) -> None:
     lines = (med([d for *_, d in single]), med([d for *_, d in pair]))
     add(Row("compare", "lines drawn afresh per press: one pane / two panes",
             f"{lines[0]:.1f} / {lines[1]:.1f}", "", None, "report"))
-    from benchmarks.jump import _jump_once
-
     times, singles, ks = [], [], []
     for _ in range(3 if quick else 5):  # interleaved with the single runs' end, the floor
-        dt, ks = asyncio.run(_end_once(app_cls, maze))
+        dt, ks = asyncio.run(_jump_once(app_cls, maze, compare=COMPARED))
         times.append(dt)
         singles.append(sum(asyncio.run(_jump_once(app_cls, maze, algo))[0]
                            for algo in COMPARED.split(",")))

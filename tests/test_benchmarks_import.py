@@ -16,7 +16,7 @@ import pkgutil
 import pytest
 
 import benchmarks
-from benchmarks import bench, choices, compare, harness, step
+from benchmarks import bench, choices, harness, jump, step
 from benchmarks.baselines import (
     bare_bfs,
     bare_dfs,
@@ -55,7 +55,7 @@ def test_the_compare_section_drives_compare_mode_to_the_end() -> None:
     """The compare section's ``end`` on the tutorial (untimed): both runs at their ends."""
     from tui_search.tui.app import SearchApp
 
-    _, steps = asyncio.run(compare._end_once(SearchApp, load_map(TUTORIAL)))
+    _, steps = asyncio.run(jump._jump_once(SearchApp, load_map(TUTORIAL), compare="bfs,dfs"))
     assert steps == [22, 7]
 
 

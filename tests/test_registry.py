@@ -37,8 +37,7 @@ def test_the_keys_the_cli_and_the_help_come_from_the_registry() -> None:
     choices = next(a for a in build_parser()._actions if a.dest == "algorithm").choices
     assert list(choices) == list(ALGORITHMS)
     keys_line = dict(KEYS)[" ".join(a.app_key for a in ALGORITHMS.values())]
-    assert keys_line == (
-        "BFS / DFS / IDDFS / UCS / Greedy / A* (a new search, same map; compare mode: add / take out)")
+    assert keys_line == "BFS / DFS / IDDFS / UCS / Greedy / A* (a new search, same map)"
 
 
 def test_a_priority_queue_is_titled_by_its_order() -> None:

@@ -457,8 +457,6 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
         repaint (``per_run``: a list of changed cells for each run)."""
         run = self.search_run
         self.screen_stack[0].set_class(run is None, "-no-run")
-        speed = playback.speed_text(playback.SPEEDS[self.speed_index])
-        playing = f"▶ playing {speed}" if self.playing else f"speed {speed}"
         title = f"{self.map_name} {'· modified' if self.dirty else ''}".strip()
         if self.compare:
             runs = self.runs
@@ -472,17 +470,14 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
                           done=r is not None and r.at_end)
                 if pane.view.border_title != title:
                     pane.view.border_title = title
-            labels = [c.label for c in self.contenders]
-            self.compare_table.show(labels, runs)
-            self.stats.show_compare(labels, playing=playing, note=self.note, sentence=LOCKSTEP)
+            self.compare_table.show([c.label for c in self.contenders], runs)
         else:
             show_run(self.view, self.frontier_panel, self.tree_panel, run,
                      per_run[0] if per_run is not None else changed, follow, self.quiz)
-            self.stats.show(run, self.algorithm, playing=playing, note=self.note)
             if self.view.border_title != title:  # setting it repaints the whole view
                 self.view.border_title = title
+        self._show_status()
         self.show_readout()
-        self._refresh_keys()
 
     def _refresh_keys(self) -> None:
         """Refresh the key bar when what greys out or hides its keys changed."""
@@ -494,7 +489,8 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
             self.refresh_bindings()
 
     def _show_status(self) -> None:
-        """Only the status lines (the note, the speed): what a seek's progress changes."""
+        """The status lines (counts, the note, the speed) and the key bar: all a seek's
+        progress changes."""
         speed = playback.speed_text(playback.SPEEDS[self.speed_index])
         playing = f"▶ playing {speed}" if self.playing else f"speed {speed}"
         if self.compare:

@@ -30,9 +30,8 @@ KEYS = (
     ("home  end", "first / last step (the answer)"),
     ("esc", "stop computing the last step (on a big map)"),
     (" ".join(a.app_key for a in ALGORITHMS.values()),
-     " / ".join(a.short for a in ALGORITHMS.values())
-     + " (a new search, same map; compare mode: add / take out)"),
-    ("c", "compare searches side by side, in lockstep (again: one search)"),
+     " / ".join(a.short for a in ALGORITHMS.values()) + " (a new search, same map)"),
+    ("c", "compare searches side by side, in lockstep; 1-6 add / remove"),
     ("f", "compare mode: fold the search trees away / show them"),
     ("r", "restart the search at step 0"),
     (",", "settings: moves, corners, visit, goal test, tree, heuristic"),
