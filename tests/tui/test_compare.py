@@ -334,3 +334,19 @@ async def test_zoom_and_labels_stay_when_a_search_is_added() -> None:
         await wait_until(pilot, lambda: len(app.panes) == 3 and all(
             p.is_mounted for p in app.panes))
         assert all(p.view.view_state() == before for p in app.panes)
+
+
+@sync
+async def test_the_palette_offers_comparisons_and_a_bad_one_is_said_not_crashed() -> None:
+    from tui_search.tui.commands import SearchCommands
+
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        names = [name for name, _, _ in SearchCommands(app.screen).commands()]
+        assert "Compare: A* · A* (manhattan)" in names and "Compare: BFS · DFS" in names
+        await app.run_action("show_compare('astar,astar:manhattan')")
+        await wait_until(pilot, lambda: all(p.is_mounted for p in app.panes) and app.panes)
+        assert [p.label for p in app.panes] == ["A*", "A* (manhattan)"]
+        await app.run_action("show_compare('bfs,nope')")
+        await pilot.pause()
+        assert app.compare == "astar,astar:manhattan"  # unchanged, and said in a notification
