@@ -7,6 +7,7 @@ the app's start-up time.  Every bad input ends in one line on stderr and exit co
 from __future__ import annotations
 
 import argparse
+import gc
 import json
 import sys
 from pathlib import Path
@@ -456,6 +457,11 @@ def run_app(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
                     config=Config.in_memory() if args.served else None)
     if args.served:
         exit_with_server(app)
+    # What is imported and built by now lives as long as the app.  Without this, the cyclic
+    # collector's first full pass (over Textual's ~60,000 objects) fell in the first frame's
+    # rendering: 30-60 ms of a ~400 ms start (benchmarks/README.md, "startup").  Objects still
+    # go when their last reference does; only cycles among them are left to the end.
+    gc.freeze()
     app.run()
     return app.return_code or 0
 
