@@ -20,7 +20,7 @@ MAX_TICKS_PER_SECOND = 30
 #: The longest a tick or a slice of ``end`` may keep the event loop busy.
 SLICE_SECONDS = 0.03
 #: The pause between two slices of ``end``, in which the event loop answers keys.
-SLICE_PAUSE = 0.01
+SLICE_PAUSE = 0.002
 
 
 def tick_interval(speed: int) -> float:
