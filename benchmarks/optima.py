@@ -6,6 +6,8 @@ relative).  Prints a line per file and the count; exit 1 when any row misses.
     python benchmarks/optima.py                     # every row of every .scen in the maps folder
     python benchmarks/optima.py --every 50          # one row in 50 (a quick look)
     python benchmarks/optima.py --only arena,den312d --searches astar:octile
+    python benchmarks/optima.py --log optima.jsonl  # resumable: rows already in the log are
+                                                    # not run again (the whole check is ~5 CPU-hours)
 
 The maps folder is ``TUI_SEARCH_MAPS`` (default ``/work/shared/maps/movingai``; the test suite
 checks a spread of rows on the copies in ``tests/data/movingai``).  The rows run on every CPU
@@ -15,11 +17,12 @@ checks a spread of rows on the copies in ``tests/data/movingai``).  The rows run
 from __future__ import annotations
 
 import argparse
+import json
 import math
 import os
 import sys
 import time
-from concurrent.futures import ProcessPoolExecutor
+from concurrent.futures import ProcessPoolExecutor, as_completed
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
@@ -67,6 +70,29 @@ def check_rows(map_path: str, scen_path: str, indices: list[int], searches: tupl
     return misses
 
 
+#: Rows a worker checks before it reports: a killed run loses at most this many a worker.
+BATCH = 20
+
+
+def read_log(path: Path | None, searches: tuple[str, ...]) -> dict[str, dict[int, list]]:
+    """What an earlier run with ``--log`` checked, by .scen name: row -> its misses.  Lines
+    for other searches, and a line cut short by a kill, are ignored."""
+    done: dict[str, dict[int, list]] = {}
+    if path is None or not path.exists():
+        return done
+    for line in path.read_text(encoding="utf-8").splitlines():
+        try:
+            entry = json.loads(line)
+        except ValueError:
+            continue
+        if tuple(entry.get("searches", ())) != searches:
+            continue
+        rows = done.setdefault(entry["scen"], {})
+        for row in entry["rows"]:
+            rows[row] = [tuple(m) for m in entry["misses"] if m[0] == row]
+    return done
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--maps", type=Path, default=MAPS, help=f"the folder (default {MAPS})")
@@ -75,31 +101,49 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--searches", default=",".join(SEARCHES),
                     help=f"comma-separated (default {','.join(SEARCHES)})")
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
+    ap.add_argument("--log", type=Path, help="append each batch of rows checked to this file "
+                    "(JSON lines), and skip the rows it already holds")
     args = ap.parse_args(argv)
     searches = tuple(s.strip() for s in args.searches.split(",") if s.strip())
     pairs = scen_files(args.maps, args.only.split(",") if args.only else None)
     if not pairs:
         print(f"no .scen files in {args.maps}", file=sys.stderr)
         return 2
+    done = read_log(args.log, searches)
+    log = args.log.open("a", encoding="utf-8") if args.log else None
+    if log is not None and args.log.stat().st_size and not args.log.read_bytes().endswith(b"\n"):
+        log.write("\n")  # a line cut by a kill ends here, not glued to the next
     t0 = time.perf_counter()
     total = missed = 0
     with ProcessPoolExecutor(max_workers=args.jobs) as pool:
         for map_path, scen in pairs:
             n = len(read_scenarios(scen))
             picked = list(range(0, n, max(1, args.every)))
+            earlier = done.get(scen.name, {})
+            todo = [i for i in picked if i not in earlier]
             t = time.perf_counter()
-            chunks = [picked[i::args.jobs * 4] for i in range(args.jobs * 4)]
-            futures = [pool.submit(check_rows, str(map_path), str(scen), c, searches)
-                       for c in chunks if c]
-            misses = [m for f in futures for m in f.result()]
+            batches = [todo[i:i + BATCH] for i in range(0, len(todo), BATCH)]
+            futures = {pool.submit(check_rows, str(map_path), str(scen), b, searches): b
+                       for b in batches}
+            misses = [m for i in picked if i in earlier for m in earlier[i]]
+            for future in as_completed(futures):
+                found = future.result()
+                misses += found
+                if log is not None:
+                    log.write(json.dumps({"scen": scen.name, "searches": list(searches),
+                                          "rows": futures[future], "misses": found}) + "\n")
+                    log.flush()
             checked = len(picked) * len(searches)
             total += checked
             missed += len(misses)
+            resumed = f", {len(picked) - len(todo):,} rows from the log" if earlier else ""
             print(f"{scen.name}: {len(picked):,} of {n:,} rows x {len(searches)} searches: "
                   f"{checked - len(misses):,} optimal, {len(misses)} missed "
-                  f"({time.perf_counter() - t:.0f} s)", flush=True)
-            for row, search, want, got in misses[:10]:
+                  f"({time.perf_counter() - t:.0f} s{resumed})", flush=True)
+            for row, search, want, got in sorted(misses)[:10]:
                 print(f"  row {row} {search}: optimal {want}, found {got}")
+    if log is not None:
+        log.close()
     print(f"{total - missed:,} of {total:,} searches met the optimal length "
           f"({time.perf_counter() - t0:.0f} s)")
     return 1 if missed else 0

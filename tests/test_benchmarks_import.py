@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import asyncio
 import importlib
+import json
 import pkgutil
 
 import pytest
@@ -150,3 +151,26 @@ def test_the_optima_command_checks_rows_and_counts_them(capsys) -> None:
     out = capsys.readouterr().out
     assert code == 0
     assert "arena.map.scen: 4 of 130 rows x 2 searches: 8 optimal, 0 missed" in out
+
+
+def test_the_optima_command_resumes_from_its_log(tmp_path, capsys) -> None:
+    """With --log, a second run checks only the rows the first did not (a killed run's batches
+    are kept), and counts them all; a log of other searches is not taken for these."""
+    from benchmarks import optima
+
+    log = tmp_path / "optima.jsonl"
+    common = ["--maps", str(ARENA_MAP.parent), "--only", "arena", "--jobs", "1",
+              "--searches", "ucs", "--log", str(log)]
+    assert optima.main(common + ["--every", "65"]) == 0  # rows 0 and 65
+    capsys.readouterr()
+    lines = log.read_text().splitlines()
+    assert [json.loads(line)["rows"] for line in lines] == [[0, 65]]
+    log.write_text(log.read_text() + '{"scen": "arena.map.scen", "rows": [1')  # cut by a kill
+    assert optima.main(common + ["--every", "13"]) == 0  # 10 rows: 0 and 65 from the log
+    out = capsys.readouterr().out
+    assert "10 of 130 rows x 1 searches: 10 optimal, 0 missed" in out
+    assert "2 rows from the log" in out
+    entries = [json.loads(line) for line in log.read_text().splitlines()[2:]]
+    assert sorted(r for e in entries for r in e["rows"]) == [13, 26, 39, 52, 78, 91, 104, 117]
+    assert optima.main(common[:-3] + ["astar:zero", "--log", str(log), "--every", "65"]) == 0
+    assert "2 rows from the log" not in capsys.readouterr().out
