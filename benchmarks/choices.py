@@ -101,9 +101,8 @@ def floor_note(floor: float, limit: float) -> str:
     return f"; target below the floor ({floor:.2f})" if floor > limit else ""
 
 
-RECORDED_FLOOR = ("the search plus the least record of the same steps (each event's cell, "
-                  "each step's end and expanded event, as plain list appends packed into the "
-                  "same arrays): no recorded run can be faster")
+#: What the recorded floors are, in their rows (README.md: "Floors").
+RECORDED_FLOOR = "plus the least record of its steps, the engine's arrays"
 
 
 def bench_map(name: str, grid: Grid, repeats: int) -> None:
@@ -122,8 +121,8 @@ def bench_map(name: str, grid: Grid, repeats: int) -> None:
             "next rows, no record) vs bare BFS of the same map", fmt_time(t["bare dfs walled"]),
             f"bare BFS {fmt_time(base_w)}", floor, "report"))
     rec_floor = paired(t["bare dfs recorded walled"], base_w)
-    add(Row("choices", f"{name} bare DFS recorded, full traversal ({RECORDED_FLOOR}: the "
-            "recorded floor of the next row) vs bare BFS of the same map",
+    add(Row("choices", f"{name} bare DFS {RECORDED_FLOOR}, full traversal (the recorded floor "
+            "of the next row) vs bare BFS of the same map",
             fmt_time(t["bare dfs recorded walled"]), f"bare BFS {fmt_time(base_w)}", rec_floor,
             "report"))
     r = paired(t["run dfs walled"], base_w)
@@ -143,8 +142,8 @@ def bench_map(name: str, grid: Grid, repeats: int) -> None:
     add(Row("choices", f"{name} bare DFS, visit on expand, walled in (the floor of that row, no "
             "record) vs bare BFS of the same map", fmt_time(t["bare dfs visit on expand walled"]),
             f"bare BFS {fmt_time(base_w)}", floors["dfs"], "report"))
-    add(Row("choices", f"{name} bare DFS recorded, visit on expand, walled in ({RECORDED_FLOOR}, "
-            "and the discarded steps: the recorded floor of that row) vs bare BFS of the same map",
+    add(Row("choices", f"{name} bare DFS, visit on expand, {RECORDED_FLOOR} and the discarded "
+            "steps, walled in (the recorded floor of that row) vs bare BFS of the same map",
             fmt_time(t["bare dfs visit on expand recorded walled"]),
             f"bare BFS {fmt_time(base_w)}", voe_floor, "report"))
     for algorithm, suffix, b in (("bfs", "", base), ("dfs", " walled", base_w)):
