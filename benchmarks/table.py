@@ -18,6 +18,15 @@ class Row:
     ratio: float | None = None
     target: str = ""
     ok: bool | None = None  # None: reported only (no target), or not measured
+    #: The ratio of the row's floor (the same work done by the fastest bare loop), when its
+    #: target was measured against one: a failed row whose floor is over the target says so.
+    floor: float | None = None
+
+    @property
+    def below_floor(self) -> bool:
+        """Is the target below the floor measured in the same run, so that no loop of the
+        engine could meet it?"""
+        return self.ok is False and self.floor is not None and self.floor > _limit(self.target)
 
     @property
     def verdict(self) -> str:
@@ -25,7 +34,17 @@ class Row:
             return "-"
         if self.ok is None:
             return "n/a" if self.measured in ("not installed", "skipped") else "report"
+        if self.below_floor:
+            return f"FAIL, target below the floor ({fmt_ratio(self.floor)})"
         return "pass" if self.ok else "FAIL"
+
+
+def _limit(target: str) -> float:
+    """The number of a ``≤ N`` target (infinity for any other)."""
+    try:
+        return float(target.removeprefix("≤").split()[0])
+    except (ValueError, IndexError):
+        return float("inf")
 
 
 #: Every row added so far, in order: the table ``bench.py`` prints at the end.
@@ -61,6 +80,10 @@ def print_table(rows: list[Row]) -> None:
     print(line)
     passed = sum(r.ok is True for r in rows)
     failed = [r for r in rows if r.ok is False]
-    print(f"{passed} pass, {len(failed)} fail, {sum(r.ok is None for r in rows)} reported only")
+    below = sum(r.below_floor for r in failed)
+    print(f"{passed} pass, {len(failed)} fail"
+          f"{f' ({below} with the target below its floor)' if below else ''}, "
+          f"{sum(r.ok is None for r in rows)} reported only")
     for r in failed:
-        print(f"  FAIL: [{r.section}] {r.what} ({fmt_ratio(r.ratio)}, target {r.target})")
+        floor = f", floor {fmt_ratio(r.floor)}" if r.below_floor else ""
+        print(f"  FAIL: [{r.section}] {r.what} ({fmt_ratio(r.ratio)}, target {r.target}{floor})")

@@ -21,12 +21,14 @@ from benchmarks import bench, choices, harness, jump, step
 from benchmarks.baselines import (
     bare_bfs,
     bare_dfs,
+    bare_dfs_recorded,
+    bare_dfs_visit_on_expand_recorded,
     bare_path_len,
     bare_search_visit_on_expand,
     walled_in,
 )
 from benchmarks.harness import interleaved, paired
-from benchmarks.maps import TUTORIAL
+from benchmarks.maps import TUTORIAL, open_grid
 from benchmarks.table import Row, fmt_ratio, print_table
 from benchmarks.trivial_app import Lines, TrivialApp
 from tests.helpers import MOVINGAI
@@ -79,6 +81,31 @@ def test_the_visit_on_expand_floor_finds_the_engines_paths_and_pushes_more() -> 
         assert len(nodes) > len(set(nodes))  # what the floor stands for: cells pushed again
 
 
+def test_the_recorded_floors_record_what_the_engine_records() -> None:
+    """The floors of the recorded DFS rows keep the same arrays as the engine's record, on
+    maps where the goal is found and walled in (a full traversal), and on a start that is
+    the goal (default choices; visit on expand has another layout there)."""
+    tutorial, arena = load_map(TUTORIAL), load_map(ARENA_MAP)
+    scen = load_scenario(ARENA_MAP.with_suffix(".map.scen"), 60)
+    arena.start, arena.goal = scen.start, scen.goal
+    maps = [tutorial, open_grid(40), arena]
+    maps += [walled_in(g) for g in maps]
+    same = tutorial.copy()
+    same.goal = same.start
+    for grid in maps + [same]:
+        for floor, sem in ((bare_dfs_recorded, Semantics()),
+                           (bare_dfs_visit_on_expand_recorded, Semantics(visit="expand"))):
+            if grid is same and sem.visit == "expand":
+                continue
+            run = Run(grid, "dfs", sem)
+            run.advance()
+            rec, bare = run.rec, floor(grid)
+            assert (bare.gen_node, bare.step_end, bare.step_exp, bare.discarded,
+                    bare.goal_gen) == (rec.gen_node, rec.step_end, rec.step_exp,
+                                       rec.discarded, rec.goal_gen)
+    assert len(bare_dfs_visit_on_expand_recorded(walled_in(arena)).discarded) > 0
+
+
 def test_walled_in_leaves_no_path_and_the_full_traversal_reaches_every_cell() -> None:
     grid = load_map(TUTORIAL)
     walled = walled_in(grid)
@@ -109,6 +136,11 @@ def test_the_harness_and_the_table(capsys, monkeypatch: pytest.MonkeyPatch) -> N
     print_table([Row("engine", "what", "1 ms", "base", 0.5, "≤ 1", True)])
     out = capsys.readouterr().out
     assert "what" in out and "pass" in out and out.rstrip().endswith("1 pass, 0 fail, 0 reported only")
+    below = Row("choices", "slow", "2 s", "base", 3.5, "≤ 3", False, floor=3.2)
+    assert below.verdict == "FAIL, target below the floor (3.20)"
+    assert Row("choices", "slow", "2 s", "base", 3.5, "≤ 3", False, floor=2.0).verdict == "FAIL"
+    print_table([below])
+    assert "1 fail (1 with the target below its floor)" in capsys.readouterr().out
 
 
 def test_the_trivial_app_answers_n_and_p() -> None:
