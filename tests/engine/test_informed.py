@@ -191,6 +191,13 @@ def test_each_events_g_derived_from_its_steps_is_the_loops_float_past_a_cut(key,
     some = events[::3]
     assert [g.hex() for g in run.gen_gs(some)] == [want[e].hex() for e in some]
     assert run.priority_keys(some) == [run.priority_key(e) for e in some]
+    # the entry a step took off carried its event's g: the step's own, and the bulk answer
+    # for that event alone right after its step was looked up
+    for k in range(1, run.rec.steps + 1, 7):
+        taken = run.rec.exp(k)
+        assert run.rec.step_g[k].hex() == want[taken].hex()
+        run.gen_gs(run.succ_range(k))
+        assert run.gen_gs((taken,))[0].hex() == want[taken].hex()
     assert len(run.rec.step_g) == len(run.rec.step_end)
 
 
