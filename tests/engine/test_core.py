@@ -85,7 +85,7 @@ def reference_arrays(grid: Grid, key: str, sem: Semantics, limit: int) -> dict:
     return {"cells": cells, "step_end": step_end, "step_exp": step_exp,
             "discarded": discarded, "roots": roots, "first_steps": first_steps, "goal": goal,
             "gave_up": gave_up,
-            "costs": costs if search.algorithm.weighted else None}
+            "costs": [c.hex() for c in costs] if search.algorithm.weighted else None}
 
 
 def recorded_arrays(run: Run) -> dict:
@@ -100,7 +100,9 @@ def recorded_arrays(run: Run) -> dict:
         "first_steps": list(rec.iter_first_step),
         "goal": rec.goal_gen,
         "gave_up": rec.gave_up,
-        "costs": None if rec.gen_g is None else list(rec.gen_g),
+        # derived from each step's g: the same floats, bit for bit, as the reference's
+        "costs": None if rec.step_g is None else [run.gen_g(e).hex()
+                                                  for e in range(len(rec.gen_node))],
     }
 
 

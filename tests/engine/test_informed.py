@@ -118,7 +118,7 @@ def test_stale_entries_are_discarded_and_counted() -> None:
     run.advance()
     events = [g for g in range(len(run.rec.gen_node)) if run.gen_cell(g) == (0, 3)]
     first, second = events[:2]
-    assert run.rec.gen_g[first] > run.rec.gen_g[second]
+    assert run.gen_g(first) > run.gen_g(second)
     run.goto(run.total)
     assert first in run.frontier() and run.is_stale(first) and not run.is_stale(second)
     back = run.step(run.total)  # stepping back before the second push: not stale yet
@@ -162,7 +162,43 @@ def test_the_reference_and_the_record_agree_on_every_g() -> None:
         costs.extend(s.g for s in step.successors)
     run = Run(grid, "astar")
     run.advance()
-    assert list(run.rec.gen_g) == costs
+    assert [run.gen_g(e).hex() for e in range(len(run.rec.gen_node))] == [c.hex() for c in costs]
+
+
+@pytest.mark.parametrize(("key", "sem"), [
+    ("ucs", Semantics(corners="never")), ("astar", Semantics()),
+    ("greedy", Semantics(heuristic="euclidean")), ("ucs", Semantics(tree_search=True))])
+def test_each_events_g_derived_from_its_steps_is_the_loops_float_past_a_cut(key, sem) -> None:
+    """The record keeps a g a step; an event's, its step's plus its move's cost, is the float
+    the loop pushed, bit for bit, along long paths (sums of ~120 moves) and where a run gives
+    up inside a chunk (uniform-cost: 5,000 steps, the second chunk of 4,096 cut there)."""
+    grid = Grid(90, 90, start=(2, 3), goal=(88, 85))
+    for i in range(0, 90 * 90, 7):  # scattered walls: diagonals and detours, costs re-lowered
+        cell = ((i * 37) % 90, (i * 11) % 90)
+        if cell not in (grid.start, grid.goal):
+            grid.set_blocked(cell, True)
+    run = Run(grid, key, sem, max_steps=5000)
+    run.advance()
+    want = [0.0]
+    for step in ReferenceSearch(grid, get_algorithm(key), sem):
+        if step.index > run.rec.steps:
+            break
+        want.extend(s.g for s in step.successors)
+    events = range(len(run.rec.gen_node))
+    got = [run.gen_g(e) for e in events]
+    assert [g.hex() for g in got] == [g.hex() for g in want]
+    # in bulk (a rebuild's open events: ascending, with gaps), the same floats
+    some = events[::3]
+    assert [g.hex() for g in run.gen_gs(some)] == [want[e].hex() for e in some]
+    assert run.priority_keys(some) == [run.priority_key(e) for e in some]
+    # the entry a step took off carried its event's g: the step's own, and the bulk answer
+    # for that event alone right after its step was looked up
+    for k in range(1, run.rec.steps + 1, 7):
+        taken = run.rec.exp(k)
+        assert run.rec.step_g[k].hex() == want[taken].hex()
+        run.gen_gs(run.succ_range(k))
+        assert run.gen_gs((taken,))[0].hex() == want[taken].hex()
+    assert len(run.rec.step_g) == len(run.rec.step_end)
 
 
 # -- the benchmark's optimal lengths ------------------------------------------------------------

@@ -12,8 +12,12 @@ reached with a lower g than its best so far (by more than
 :data:`~tui_search.engine.heuristics.CHEAPER_BY`: float noise), and an entry taken off with a g above its cell's
 best is stale: a discarded step ("lazy deletion": nothing is removed from the heap early).
 
-Besides the arrays every loop records, these record ``gen_g``: each event's g, from which the
-app shows g, h and f and orders its frontier.
+Besides the arrays every loop records, these record ``step_g``: the g of the entry each step
+took off.  An event's g is its generating step's plus its move's cost (1 or sqrt(2), from
+:func:`_costed_moves`): the very float sum ``g + cost`` the loop pushed, so nothing is stored per
+event but its cell (a search that pushes five entries an expansion, as A* on an open map, keeps
+36 bytes an expansion where a g an event made it 68).  From it the app shows g, h and f and
+orders its frontier (:meth:`~tui_search.engine.queries.RecordedTree.gen_g`).
 
 What made the graph-search loop cheaper, counted with callgrind on maze512 row 3 under
 corners never (recorded run against the bare heapq search): closing expanded cells under a
@@ -55,6 +59,13 @@ def _costed_moves(problem: Problem) -> tuple[tuple[int, float, int, int], ...]:
     return tuple(out)
 
 
+def move_costs(problem: Problem) -> dict[int, float]:
+    """Each move's cost by its offset, the same floats the loops add (:func:`_costed_moves`):
+    an event's g is its generating step's ``step_g`` plus the cost of the offset from the
+    expanded cell to its own."""
+    return {off: cost for off, cost, _, _ in _costed_moves(problem)}
+
+
 def _blocked_sides_refused(problem: Problem) -> int:
     """How many blocked side cells refuse a diagonal: 1 under ``never`` (either), 2 under
     ``one`` (both); the loops test ``walls[n + a] + walls[n + b] >= this``."""
@@ -83,9 +94,8 @@ def best_first(problem: Problem, rec: Record, chunk: int = CHUNK, priority: str 
     close = 1 if use_g and (not use_h or heuristics.admissible(
         problem.semantics.heuristic, problem.semantics.order)) else 0
     rec.step_exp = step_exp = array("i", [-1])
-    rec.gen_g = gen_g = array("d")
+    rec.step_g = step_g = array("d", [0.0])  # index 0: before any step
     rec.gen_node.append(start)
-    gen_g.append(0.0)
     best[start] = 0.0
     if start == goal_on_push:
         rec.goal_gen, rec.done = 0, True
@@ -99,13 +109,13 @@ def best_first(problem: Problem, rec: Record, chunk: int = CHUNK, priority: str 
     heap = [(f0, 0, start, 0.0)]
     pop, push = heapq.heappop, heapq.heappush
     nodes: list[int] = []
-    gs: list[float] = []
+    gs: list[float] = []  # each step's g
     ends: list[int] = []
     exps: list[int] = []
     discarded: list[int] = []
 
     def flush() -> None:
-        for arr, buf, code in ((rec.gen_node, nodes, "i"), (gen_g, gs, "d"),
+        for arr, buf, code in ((rec.gen_node, nodes, "i"), (step_g, gs, "d"),
                                (rec.step_end, ends, "i"), (step_exp, exps, "i"),
                                (rec.discarded, discarded, "i")):
             if buf:
@@ -121,6 +131,7 @@ def best_first(problem: Problem, rec: Record, chunk: int = CHUNK, priority: str 
             except IndexError:
                 break
             exps.append(e)
+            gs.append(g)
             if g > best[n]:  # stale: the cell was pushed with a lower g since
                 ends.append(count)
                 discarded.append(step)
@@ -153,7 +164,6 @@ def best_first(problem: Problem, rec: Record, chunk: int = CHUNK, priority: str 
                 else:
                     push(heap, (ng, count, m, ng))
                 nodes.append(m)
-                gs.append(ng)
                 count += 1
                 if m == goal_on_push:
                     ends.append(count)
@@ -189,7 +199,7 @@ def best_first_tree(problem: Problem, rec: Record, chunk: int = CHUNK, priority:
 
     gen_node, step_end = rec.gen_node, rec.step_end
     rec.step_exp = step_exp = array("i", [-1])
-    rec.gen_g = gen_g = array("d", [0.0])
+    rec.step_g = step_g = array("d", [0.0])
     parent = array("i", [-1])
     gen_node.append(start)
     if test_on_push and start == goal:
@@ -200,6 +210,7 @@ def best_first_tree(problem: Problem, rec: Record, chunk: int = CHUNK, priority:
     while heap:
         _, e, n, g = heapq.heappop(heap)
         step_exp.append(e)
+        step_g.append(g)
         steps += 1
         if not test_on_push and n == goal:
             step_end.append(len(gen_node))
@@ -214,7 +225,6 @@ def best_first_tree(problem: Problem, rec: Record, chunk: int = CHUNK, priority:
             ng = g + cost
             heapq.heappush(heap, (key(ng, m), len(gen_node), m, ng))
             gen_node.append(m)
-            gen_g.append(ng)
             parent.append(e)
             if test_on_push and m == goal:
                 step_end.append(len(gen_node))
@@ -231,4 +241,4 @@ def best_first_loop(priority: str, tree_search: bool) -> Loop:
     return partial(best_first_tree if tree_search else best_first, priority=priority)
 
 
-__all__ = ["best_first", "best_first_loop", "best_first_tree"]
+__all__ = ["best_first", "best_first_loop", "best_first_tree", "move_costs"]

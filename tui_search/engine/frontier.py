@@ -127,26 +127,27 @@ def _open_events(root: int, end: int, expanded: Iterable[Sequence[int]],
 class PriorityFrontier:
     """The priority queue as a sorted list of ``(priority, event)``: the next out first (the
     lowest priority; the oldest event among equals, as the heap of the loops takes them).
-    ``key`` gives an event's priority, the same float the loop pushed it with."""
+    ``keys`` gives the priorities of ascending events (a step's successors, the open events
+    of a rebuild), the same floats the loop pushed them with, in bulk: the record derives an
+    event's g from its generating step's, which is then looked up once a step."""
 
-    def __init__(self, key: Callable[[int], float]) -> None:
-        self.key = key
+    def __init__(self, keys: Callable[[Sequence[int]], list[float]]) -> None:
+        self.keys = keys
         self.queue: SortedList = SortedList()
 
     def reset(self, root: int) -> None:
-        self.queue = SortedList([(self.key(root), root)])
+        self.queue = SortedList([(self.keys((root,))[0], root)])
 
     def forward(self, g: int, succ: range) -> None:
         _, first = self.queue.pop(0)
         assert first == g, "the recorded step does not match the priority queue"
-        key = self.key
-        self.queue.update([(key(h), h) for h in succ])
+        self.queue.update(zip(self.keys(succ), succ))
 
     def backward(self, g: int, succ: range) -> None:
-        key, queue = self.key, self.queue
-        for h in succ:
-            queue.remove((key(h), h))
-        queue.add((key(g), g))
+        queue = self.queue
+        for entry in zip(self.keys(succ), succ):
+            queue.remove(entry)
+        queue.add((self.keys((g,))[0], g))
 
     @staticmethod
     def rebuild_work(root: int, end: int, expanded: int) -> int:
@@ -155,10 +156,14 @@ class PriorityFrontier:
     def rebuild_pieces(self, root: int, end: int, expanded: Iterable[Sequence[int]]) -> Iterator[int]:
         """Become the queue after the pieces of ``expanded`` were taken off the events
         ``root .. end - 1``: the events not taken off, sorted by priority."""
-        key = self.key
+        keys = self.keys
         entries: list[tuple[float, int]] = []
-        yield from _open_events(root, end, expanded,
-                                lambda events: entries.extend((key(h), h) for h in events))
+
+        def take(events: Iterator[int]) -> None:
+            open_ = list(events)
+            entries.extend(zip(keys(open_), open_))
+
+        yield from _open_events(root, end, expanded, take)
         self.queue = SortedList(entries)
         yield end - root
 
@@ -170,17 +175,18 @@ class PriorityFrontier:
 
     def position(self, g: int) -> int:
         """Where event ``g`` (on the frontier) stands in the order: 0 is the next out."""
-        return self.queue.index((self.key(g), g))
+        return self.queue.index((self.keys((g,))[0], g))
 
 
 FrontierModel = FifoFrontier | LifoFrontier | PriorityFrontier
 
 
-def frontier_model(kind: Frontier, key: Callable[[int], float] | None = None) -> FrontierModel:
-    """The model of ``kind``; a priority queue needs ``key``, an event's priority."""
+def frontier_model(kind: Frontier, keys: Callable[[Sequence[int]], list[float]] | None = None
+                   ) -> FrontierModel:
+    """The model of ``kind``; a priority queue needs ``keys``, ascending events' priorities."""
     if kind is Frontier.FIFO:
         return FifoFrontier()
     if kind is Frontier.LIFO:
         return LifoFrontier()
-    assert key is not None, "a priority queue needs its events' priorities"
-    return PriorityFrontier(key)
+    assert keys is not None, "a priority queue needs its events' priorities"
+    return PriorityFrontier(keys)

@@ -93,13 +93,13 @@ class Recording:
             del rec.step_end[n + 1 :]
             if isinstance(rec.step_exp, array):
                 del rec.step_exp[n + 1 :]
+            if rec.step_g is not None:
+                del rec.step_g[n + 1 :]
             del rec.gen_node[events:]
             while rec.discarded and rec.discarded[-1] > n:
                 rec.discarded.pop()
             if rec.gen_depth is not None:
                 del rec.gen_depth[events:]
-            if rec.gen_g is not None:
-                del rec.gen_g[events:]
             while rec.iter_first_step[-1] > n:
                 rec.iter_first_step.pop()
                 rec.iter_root.pop()

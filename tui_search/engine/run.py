@@ -60,7 +60,7 @@ class Run(RecordedTree):
         self._enter_iteration(0)
 
     def _new_frontier(self) -> FrontierModel:
-        return frontier_model(self.algo.frontier, self.priority_key)
+        return frontier_model(self.algo.frontier, self.priority_keys)
 
     def _enter_iteration(self, it: int) -> None:
         """Set the position to the start of iteration ``it``: only its root is generated."""

@@ -63,7 +63,9 @@ class Record:
     step_end: array = field(default_factory=lambda: array("i", [1]))
     step_exp: array | _InOrder = field(default_factory=lambda: _InOrder())
     gen_depth: array | None = None  # iterative deepening only
-    gen_g: array | None = None  # the cost-ordered searches only: each event's g
+    # The cost-ordered searches only: the g of the entry step ``k`` took off (0.0 at index 0,
+    # before any step).  An event's g is its generating step's plus its move's cost.
+    step_g: array | None = None
     iter_first_step: list[int] = field(default_factory=lambda: [1])
     iter_root: list[int] = field(default_factory=lambda: [0])
     iter_limit: list[int | None] = field(default_factory=lambda: [None])
@@ -88,7 +90,7 @@ class Record:
     def nbytes(self) -> int:
         """Bytes held by the arrays (for the memory benchmark)."""
         arrays = [self.gen_node, self.step_end, self.step_exp, self.gen_depth, self.discarded,
-                  self.gen_g]
+                  self.step_g]
         return sum(a.buffer_info()[1] * a.itemsize for a in arrays if isinstance(a, array))
 
 
