@@ -272,10 +272,9 @@ async def test_keys_pressed_at_once_act_on_the_new_comparison() -> None:
         await pilot.pause()
         assert app.compare == "bfs,dfs" and steps(app) == [2, 2]
         post_keys(app, "3", "4")
-        await pilot.pause()
-        assert app.compare == "bfs,dfs,iddfs,ucs"
-        post_keys(app, "c", "c")
-        await pilot.pause()
+        await wait_until(pilot, lambda: app.compare == "bfs,dfs,iddfs,ucs")
+        post_keys(app, "c", "c", "n")  # off and on again, then a step: every key was handled
+        await wait_until(pilot, lambda: steps(app) == [1, 1, 1, 1])
         assert app.compare == "bfs,dfs,iddfs,ucs" and len(app.panes) == 4
 
 

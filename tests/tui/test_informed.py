@@ -127,11 +127,15 @@ async def test_switching_to_a_star_keeps_its_own_goal_test() -> None:
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("comma")
+        await wait_until(pilot, lambda: isinstance(app.screen, SettingsScreen))
         await pilot.click("#apply")
+        await wait_until(pilot, lambda: not isinstance(app.screen, SettingsScreen))
         await pilot.press("6")
+        await wait_until(pilot, lambda: app.search_run.algo.key == "astar")
         run = app.search_run
         assert run.problem.goal_test == "expand" and "goal test" not in stats(app)[0]
         await pilot.press("comma")
+        await wait_until(pilot, lambda: isinstance(app.screen, SettingsScreen))
         assert app.screen.query_one("#goal_test-expand").value
 
 
