@@ -44,6 +44,7 @@ from tui_search.engine.outcome import Outcome
 from tui_search.engine.reference import Expansion, stream
 from tui_search.engine.run import MAX_STEPS, Run, Step
 from tui_search.engine.semantics import CORNER_RULES, GOAL_TESTS, VISIT_RULES, Semantics
+from tui_search.launch import collector_paused
 from tui_search.tui.themes import THEMES  # plain data: no Textual
 
 EXIT_FOUND, EXIT_NO_PATH, EXIT_BAD_INPUT, EXIT_GAVE_UP = 0, 1, 2, 3
@@ -444,24 +445,27 @@ def _need_endpoints(grid: Grid, where: str) -> None:
 
 
 def run_app(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
-    from tui_search.serve import exit_with_server, file_access
-    from tui_search.tui.app import SearchApp  # Textual only when the app is wanted
-    from tui_search.tui.config import Config
+    with collector_paused():  # Textual's import and the app's build (tui_search/launch.py)
+        from tui_search.serve import exit_with_server, file_access
+        from tui_search.tui.app import SearchApp  # Textual only when the app is wanted
+        from tui_search.tui.config import Config
 
-    scenario = getattr(args, "scenario", None)
-    app = SearchApp(grid, path=path, algorithm=args.algorithm, semantics=semantics_from(args),
-                    max_steps=args.max_steps, unsaved_name=BUILT_IN_TITLE, theme=args.theme,
-                    optimal_cost=scenario.optimal_length if scenario is not None else None,
-                    exercise=args.exercise, compare=args.compare,
-                    file_access=file_access(args),
-                    config=Config.in_memory() if args.served else None)
+        scenario = getattr(args, "scenario", None)
+        app = SearchApp(grid, path=path, algorithm=args.algorithm,
+                        semantics=semantics_from(args), max_steps=args.max_steps,
+                        unsaved_name=BUILT_IN_TITLE, theme=args.theme,
+                        optimal_cost=scenario.optimal_length if scenario is not None else None,
+                        exercise=args.exercise, compare=args.compare,
+                        file_access=file_access(args),
+                        config=Config.in_memory() if args.served else None)
+        # What is imported and built by now lives as long as the app.  Without this, the
+        # cyclic collector's first full pass (over Textual's ~60,000 objects) fell in the
+        # first frame's rendering: 30-60 ms of a ~400 ms start (benchmarks/README.md,
+        # "startup").  Objects still go when their last reference does; only cycles among
+        # them are left to the end.
+        gc.freeze()
     if args.served:
         exit_with_server(app)
-    # What is imported and built by now lives as long as the app.  Without this, the cyclic
-    # collector's first full pass (over Textual's ~60,000 objects) fell in the first frame's
-    # rendering: 30-60 ms of a ~400 ms start (benchmarks/README.md, "startup").  Objects still
-    # go when their last reference does; only cycles among them are left to the end.
-    gc.freeze()
     app.run()
     return app.return_code or 0
 

@@ -1,0 +1,68 @@
+"""The ``tui-search`` command's entry point: the collector is paused only while modules are
+imported, and left as it was found."""
+
+from __future__ import annotations
+
+import gc
+import subprocess
+import sys
+
+import pytest
+
+from tui_search.launch import collector_paused
+
+
+@pytest.mark.parametrize("was_on", [True, False])
+def test_the_collector_is_off_inside_and_as_it_was_after(was_on: bool) -> None:
+    before = gc.isenabled()
+    try:
+        (gc.enable if was_on else gc.disable)()
+        with collector_paused():
+            assert not gc.isenabled()
+        assert gc.isenabled() is was_on
+        with pytest.raises(RuntimeError), collector_paused():
+            raise RuntimeError
+        assert gc.isenabled() is was_on
+    finally:
+        (gc.enable if before else gc.disable)()
+
+
+def test_the_command_runs_the_cli_with_the_collector_back_on(tmp_path) -> None:
+    # python -m tui_search goes through launch.main, as the console script does; a headless
+    # run reports whether the collector is on once the program's own work begins.
+    probe = ("import gc, sys\n"
+             "import tui_search.cli as cli\n"
+             "real = cli.run_headless\n"
+             "def run_headless(*a):\n"
+             "    print('collector', gc.isenabled())\n"
+             "    return real(*a)\n"
+             "cli.run_headless = run_headless\n"
+             "sys.argv = ['tui-search', 'maps/tutorial.txt', '--headless']\n"
+             "from tui_search.launch import main\n"
+             "raise SystemExit(main())\n")
+    out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True,
+                         check=False, cwd=_repo())
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.splitlines()[0] == "collector True"
+    assert "path found" in out.stdout
+
+
+def _repo() -> str:
+    from pathlib import Path
+
+    return str(Path(__file__).resolve().parents[1])
+
+
+def test_the_app_runs_with_the_collector_on_and_its_start_frozen(monkeypatch) -> None:
+    from tui_search import cli
+    from tui_search.tui.app import SearchApp
+
+    seen: list[tuple[bool, int]] = []
+    monkeypatch.setattr(SearchApp, "run",
+                        lambda self, *a, **k: seen.append((gc.isenabled(), gc.get_freeze_count())))
+    try:
+        assert cli.main([f"{_repo()}/maps/tutorial.txt"]) == 0
+    finally:
+        gc.unfreeze()
+    [(on, frozen)] = seen
+    assert on and frozen > 10_000  # Textual's modules and the app, out of the collector's way
