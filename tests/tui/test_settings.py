@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from tests.tui.test_app import TUTORIAL, stats, sync, tutorial_app
+from tests.tui.test_app import TUTORIAL, stats, sync, tutorial_app, wait_until
 from tui_search.engine.mapfile import load_map
 from tui_search.engine.semantics import Semantics
 from tui_search.tui.app import SearchApp
@@ -42,8 +42,11 @@ async def test_cancel_and_escape_change_nothing() -> None:
         await pilot.press("comma", "right", "enter", "escape")
         assert app.search_run is first and first.k == 1 and app.semantics == Semantics()
         await pilot.press("comma")
+        # the screen laid out (a loaded machine can take longer than a pause) before the click
+        await wait_until(pilot, lambda: isinstance(app.screen, SettingsScreen)
+                         and app.screen.query_one("#cancel").region.area > 0)
         await pilot.click("#cancel")
-        await pilot.pause()
+        await wait_until(pilot, lambda: not isinstance(app.screen, SettingsScreen))
         assert app.search_run is first
 
 

@@ -9,8 +9,8 @@ and no UI module compares algorithm names.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from enum import Enum
+from typing import NamedTuple
 
 
 class Frontier(Enum):
@@ -62,8 +62,7 @@ _HINTS = {
 PRIORITIES: dict[str, str] = {"g": "g", "h": "h", "g+h": "f = g + h"}
 
 
-@dataclass(frozen=True)
-class Algorithm:
+class Algorithm(NamedTuple):
     """One search algorithm, described."""
 
     key: str  # what the command line and the JSON call it: "bfs"

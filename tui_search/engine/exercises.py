@@ -17,8 +17,9 @@ challenge panel shows the same figures live.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass, replace
+from dataclasses import replace
 from pathlib import Path
+from typing import NamedTuple
 
 from tui_search.engine.algorithms import get_algorithm
 from tui_search.engine.grid import Grid
@@ -49,8 +50,7 @@ def tutorial_grid() -> Grid:
     return parse_map_text(TUTORIAL_MAP.read_text("utf-8"), TUTORIAL_MAP.name)
 
 
-@dataclass(frozen=True)
-class Verdict:
+class Verdict(NamedTuple):
     """An exercise checked on a map: solved or not, why, and the two searches' outcomes."""
 
     exercise: int
@@ -103,8 +103,7 @@ def _only_goal_moved(grid: Grid, tutorial: Grid) -> bool:
 # -- comparing searches ------------------------------------------------------------------------
 
 
-@dataclass(frozen=True)
-class Contender:
+class Contender(NamedTuple):
     """One search of a comparison: an algorithm and its choices (a heuristic of its own)."""
 
     algorithm: str
@@ -150,8 +149,7 @@ def parse_compare(text: str, semantics: Semantics = DEFAULT_SEMANTICS,
     return out
 
 
-@dataclass(frozen=True)
-class TableRow:
+class TableRow(NamedTuple):
     label: str
     outcome: Outcome
     fewest_expanded: bool

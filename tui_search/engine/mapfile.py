@@ -26,8 +26,7 @@ import math
 import os
 import re
 import stat
-from dataclasses import dataclass, replace
-from typing import BinaryIO
+from typing import BinaryIO, NamedTuple
 
 from tui_search.engine.grid import Cell, Grid
 
@@ -328,8 +327,7 @@ def _movingai_rows(grid: Grid, old_rows: list[str] | None = None) -> list[str]:
 TEXT, MOVINGAI = "text", "movingai"
 
 
-@dataclass(frozen=True)
-class MapSource:
+class MapSource(NamedTuple):
     """The text a map file holds, kept with the grid read from it so that saving rewrites
     only the characters of the cells that were edited.
 
@@ -362,7 +360,7 @@ class MapSource:
         for i, before, after in zip(self.rows, old, new):
             if before != after:
                 lines[i] = after + lines[i][w:]
-        return replace(self, lines=tuple(lines))
+        return self._replace(lines=tuple(lines))
 
 
 def _fresh_source(grid: Grid, kind: str) -> MapSource:
@@ -626,8 +624,7 @@ def parse_cell(text: str) -> Cell:
 # -- MovingAI .scen ------------------------------------------------------------------------
 
 
-@dataclass(frozen=True)
-class Scenario:
+class Scenario(NamedTuple):
     """One benchmark problem: a start and goal on a named map, with its optimal length."""
 
     bucket: int

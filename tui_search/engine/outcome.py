@@ -6,14 +6,13 @@ command line) both end in an :class:`Outcome`; the command line turns it into it
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from typing import NamedTuple
 
 from tui_search.engine.grid import Cell, path_cost
 from tui_search.engine.semantics import Semantics
 
 
-@dataclass(frozen=True)
-class Outcome:
+class Outcome(NamedTuple):
     algorithm: str
     semantics: Semantics
     path: list[Cell] | None  # start to goal; None when no path was found

@@ -11,8 +11,8 @@ rules are tested as plain functions.
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass
 from pathlib import Path
+from typing import NamedTuple
 
 #: The endings a name may have in the folder: the two map formats (so a visitor cannot make
 #: a script, a dotfile or a web page there).
@@ -28,8 +28,7 @@ class NameRefused(ValueError):
     prompt."""
 
 
-@dataclass(frozen=True)
-class FileAccess:
+class FileAccess(NamedTuple):
     """``served`` False: any path, as typed (``~`` expanded).  ``served`` True: none, or,
     with ``folder`` (an absolute, resolved directory), names in that folder only."""
 

@@ -3,13 +3,12 @@ without the screen: start-up time)."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from typing import NamedTuple
 
 from tui_search.engine.semantics import Semantics
 
 
-@dataclass(frozen=True)
-class SettingsChoice:
+class SettingsChoice(NamedTuple):
     """The search choices, and the searches compare mode compares (``bfs,dfs``)."""
 
     semantics: Semantics
