@@ -4,12 +4,15 @@ the settings and the inadmissible warning."""
 
 from __future__ import annotations
 
+from tests.helpers import grid_from_rows
 from tests.tui.test_app import ARENA, MAPS, stats, sync, tutorial_app, wait_until
 from tui_search.engine.grid import Grid
 from tui_search.engine.heuristics import INADMISSIBLE
 from tui_search.engine.mapfile import load_map, load_scenario
+from tui_search.engine.run import Run
 from tui_search.engine.semantics import Semantics
 from tui_search.tui.app import SearchApp
+from tui_search.tui.narration import narrate
 from tui_search.tui.screens.settings import SettingsScreen
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 
@@ -96,6 +99,44 @@ async def test_a_stale_step_is_discarded_and_says_why() -> None:
         narration = stats(app)[1]
         assert "stale (its cell was reached with a lower g since), discarded" in narration
         assert panel_lines(app)[1].startswith("✗ ") and "stale, discarded" in panel_lines(app)[1]
+
+
+def test_a_cell_expanded_then_reached_with_a_lower_g_is_narrated_re_opened() -> None:
+    """A* with the inadmissible manhattan heuristic beside diagonal moves: (2,2) is expanded
+    at step 6 with g 4.83 (reached round by the south), then (3,1) reaches it diagonally at
+    g 2.83 + 1.41 = 4.24 -- the issue's "(4,4) re-opened with a lower g"; it is expanded
+    again next step."""
+    grid = grid_from_rows([".#....",
+                           "....#S",
+                           ".#.##.",
+                           "G#...#"])
+    run = Run(grid, "astar", Semantics(heuristic="manhattan"))
+    run.goto(6)
+    assert narrate(run) == "Expanded (2,2) f = 7.83 (g 4.83 + h 3.00): added N, NW, NE"
+    run.goto(8)
+    assert narrate(run) == ("Expanded (3,1) f = 7.83 (g 2.83 + h 5.00): added NW, W, SW; "
+                            "(2,1) reached with a lower g, (2,2) re-opened with a lower g")
+    run.goto(9)
+    assert run.current_node() == (2, 2) and not run.is_discarded(9)
+    assert narrate(run).startswith("Expanded (2,2) f = 7.24 (g 4.24 + h 3.00)")
+
+
+def test_a_cell_only_taken_off_stale_is_not_narrated_re_opened() -> None:
+    """Greedy takes equal h in push order, so (4,1)'s costlier entry (g 5.24) comes off first,
+    stale, and is discarded at step 17; when (3,2) reaches it cheaper still at step 19 it has
+    never been expanded: "reached with a lower g", not "re-opened"."""
+    grid = grid_from_rows(["G.##..",
+                           "###..#",
+                           "......",
+                           "...##.",
+                           "..S#.."])
+    run = Run(grid, "greedy", Semantics(heuristic="manhattan"))
+    run.goto(17)
+    assert run.current_node() == (4, 1) and run.is_discarded(17)
+    assert run.times_reached((4, 1)) == (2, 1)  # taken off once: the stale entry
+    run.goto(19)
+    assert narrate(run) == ("Expanded (3,2) h = 5.00 (g 2.41): added E, NE; "
+                            "(4,2) reached with a lower g, (4,1) reached with a lower g")
 
 
 @sync
