@@ -9,8 +9,9 @@ from tui_search.engine.grid import Grid
 
 ROOT = Path(__file__).resolve().parents[1]
 MAPS = ROOT / "maps"
-#: Small real MovingAI benchmark files copied into the repository byte for byte (their origins
-#: are in SOURCES.md there), so a fresh clone and CI run every test that reads one.
+#: Real MovingAI benchmark files copied into the repository (maps byte for byte, big .scen files
+#: trimmed to a spread of rows; their origins are in SOURCES.md there), so a fresh clone and CI
+#: run every test that reads one.
 MOVINGAI = ROOT / "tests" / "data" / "movingai"
 
 TUTORIAL_ROWS = [

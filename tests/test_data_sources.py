@@ -40,5 +40,8 @@ def test_every_copied_file_has_its_source_and_is_byte_identical() -> None:
 
 
 def test_the_copies_stay_small() -> None:
-    """Whole benchmark files are copied only when small; the 512x512 ones stay outside."""
-    assert sum(p.stat().st_size for p in MOVINGAI.iterdir()) < 100_000
+    """The maps are copied whole (three 512x512 ones at 257 KB each); a big benchmark's .scen
+    is trimmed to a few rows (SOURCES.md says which), so the folder stays under a megabyte."""
+    assert sum(p.stat().st_size for p in MOVINGAI.iterdir()) < 1_000_000
+    for scen in MOVINGAI.glob("*.scen"):
+        assert scen.stat().st_size < 20_000, scen.name

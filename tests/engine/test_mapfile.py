@@ -47,12 +47,23 @@ MAP_SIZES = {
     "den201d.map": (37, 37),
     "arena.map": (49, 49),
     "den312d.map": (65, 81),
+    "lak303d.map": (194, 194),
+    "Berlin_0_256.map": (256, 256),
+    "64room_005.map": (512, 512),
+    "maze512-1-0.map": (512, 512),
+    "random512-40-5.map": (512, 512),
 }
 SCEN_ROWS = {
     "room-32-32-4-random-1.scen": 341,
     "den201d.map.scen": 100,
     "arena.map.scen": 130,
     "den312d.map.scen": 290,
+    # trimmed to a spread of rows (SOURCES.md): the 2011 kind, and the maze's out of order
+    "lak303d.map.scen": 10,
+    "Berlin_0_256.map.scen": 6,
+    "64room_005.map.scen": 3,
+    "maze512-1-0.map.scen": 4,
+    "random512-40-5.map.scen": 4,
 }
 
 TUTORIAL = "S#...#\n.#.##.\n...##G\n..#.#.\n....##\n......\n"
@@ -656,8 +667,9 @@ def test_real_maps_parse(name: str) -> None:
 
 
 def test_a_crlf_map_without_a_final_newline_reads_as_its_lf_original(tmp_path: Path) -> None:
-    """Berlin_0_256.map (a street map, too big to copy here) has CRLF line ends and no newline
-    after its last row: a real map written that way reads exactly as the original."""
+    """Berlin_0_256.map (a street map; test_real_maps_parse reads the copy) has CRLF line ends
+    and no newline after its last row: a real map written that way reads exactly as the
+    original."""
     original = MOVINGAI / "arena.map"
     data = original.read_bytes().rstrip(b"\n").replace(b"\n", b"\r\n")
     path = write(tmp_path, "arena.map", data)
@@ -669,7 +681,7 @@ def test_a_crlf_map_without_a_final_newline_reads_as_its_lf_original(tmp_path: P
 
 def write_512_map(tmp_path: Path) -> tuple[Path, list[str]]:
     """A seeded random 512x512 MovingAI map (the size of maze512-1-0, random512-40-5 and
-    64room_005, too big to copy here) of every MovingAI letter, and its rows."""
+    64room_005) of every MovingAI letter, and its rows."""
     rng = random.Random(512)
     rows = ["".join(rng.choices(".G@OTSW", k=512)) for _ in range(512)]
     path = write(tmp_path, "big512.map",
@@ -686,7 +698,7 @@ def test_a_512x512_map_parses(tmp_path: Path) -> None:
 
 
 def test_a_big_scenario_file_out_of_bucket_order_with_a_blank_last_line(tmp_path: Path) -> None:
-    """maze512-1-0.map.scen (12,120 rows, too big to copy here) starts with its last bucket and
+    """maze512-1-0.map.scen (12,120 rows; the copy here is trimmed) starts with its last bucket and
     ends with a blank line: thousands of such rows on a 512x512 map parse, in file order, and
     match the map."""
     map_path, rows = write_512_map(tmp_path)
@@ -734,7 +746,7 @@ def test_real_scenario_values() -> None:
 
 
 def test_a_2011_scenario_file_names_a_path_and_matches_by_basename(tmp_path: Path) -> None:
-    """lak303d.map.scen (too big to copy here) is the older 2011 HOG2 kind: its map field is a
+    """lak303d.map.scen (the copy here is trimmed) is the older 2011 HOG2 kind: its map field is a
     path (`maps/dao/lak303d.map`) and its lengths have 6 significant digits (`1.41421`, `3`).
     The real arena.map.scen written that way parses and matches arena.map by its basename."""
     real = (MOVINGAI / "arena.map.scen").read_text().split("\n")

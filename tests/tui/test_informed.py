@@ -4,12 +4,15 @@ the settings and the inadmissible warning."""
 
 from __future__ import annotations
 
+from tests.helpers import grid_from_rows
 from tests.tui.test_app import ARENA, MAPS, stats, sync, tutorial_app, wait_until
 from tui_search.engine.grid import Grid
 from tui_search.engine.heuristics import INADMISSIBLE
 from tui_search.engine.mapfile import load_map, load_scenario
+from tui_search.engine.run import Run
 from tui_search.engine.semantics import Semantics
 from tui_search.tui.app import SearchApp
+from tui_search.tui.narration import narrate
 from tui_search.tui.screens.settings import SettingsScreen
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 
@@ -98,6 +101,44 @@ async def test_a_stale_step_is_discarded_and_says_why() -> None:
         assert panel_lines(app)[1].startswith("✗ ") and "stale, discarded" in panel_lines(app)[1]
 
 
+def test_a_cell_expanded_then_reached_with_a_lower_g_is_narrated_re_opened() -> None:
+    """A* with the inadmissible manhattan heuristic beside diagonal moves: (2,2) is expanded
+    at step 6 with g 4.83 (reached round by the south), then (3,1) reaches it diagonally at
+    g 2.83 + 1.41 = 4.24 -- the issue's "(4,4) re-opened with a lower g"; it is expanded
+    again next step."""
+    grid = grid_from_rows([".#....",
+                           "....#S",
+                           ".#.##.",
+                           "G#...#"])
+    run = Run(grid, "astar", Semantics(heuristic="manhattan"))
+    run.goto(6)
+    assert narrate(run) == "Expanded (2,2) f = 7.83 (g 4.83 + h 3.00): added N, NW, NE"
+    run.goto(8)
+    assert narrate(run) == ("Expanded (3,1) f = 7.83 (g 2.83 + h 5.00): added NW, W, SW; "
+                            "(2,1) reached with a lower g, (2,2) re-opened with a lower g")
+    run.goto(9)
+    assert run.current_node() == (2, 2) and not run.is_discarded(9)
+    assert narrate(run).startswith("Expanded (2,2) f = 7.24 (g 4.24 + h 3.00)")
+
+
+def test_a_cell_only_taken_off_stale_is_not_narrated_re_opened() -> None:
+    """Greedy takes equal h in push order, so (4,1)'s costlier entry (g 5.24) comes off first,
+    stale, and is discarded at step 17; when (3,2) reaches it cheaper still at step 19 it has
+    never been expanded: "reached with a lower g", not "re-opened"."""
+    grid = grid_from_rows(["G.##..",
+                           "###..#",
+                           "......",
+                           "...##.",
+                           "..S#.."])
+    run = Run(grid, "greedy", Semantics(heuristic="manhattan"))
+    run.goto(17)
+    assert run.current_node() == (4, 1) and run.is_discarded(17)
+    assert run.times_reached((4, 1)) == (2, 1)  # taken off once: the stale entry
+    run.goto(19)
+    assert narrate(run) == ("Expanded (3,2) h = 5.00 (g 2.41): added E, NE; "
+                            "(4,2) reached with a lower g, (4,1) reached with a lower g")
+
+
 @sync
 async def test_the_heuristic_is_a_setting_and_an_inadmissible_one_is_named() -> None:
     app = tutorial_app("astar")
@@ -159,7 +200,10 @@ async def test_the_benchmark_optimum_is_shown_while_the_map_is_unchanged() -> No
 async def test_a_priority_queue_of_100000_entries_is_drawn_line_by_line() -> None:
     """Uniform-cost tree search keeps every successor: ~100,000 entries after 20,000 steps.
     The panel is one line-API widget (no widget per entry): its height is the queue's, its
-    last line is the queue's last entry, and a step either way keeps it in priority order."""
+    last line is the queue's last entry, and a step either way keeps it in priority order.
+    Focused and scrolled (page down, end, page up, home, a jump to line 50,000), the rows on
+    screen are the entries at the scroll offset, with no widget added; the next step scrolls
+    back to the front."""
     grid = Grid(400, 400, start=(200, 200), goal=(0, 0))
     app = SearchApp(grid, algorithm="ucs", semantics=Semantics(tree_search=True),
                     max_steps=30_000)
@@ -179,3 +223,51 @@ async def test_a_priority_queue_of_100000_entries_is_drawn_line_by_line() -> Non
         await pilot.press("n", "p")
         keys = [run.priority_key(g) for g in run.frontier(0, 200)]
         assert keys == sorted(keys) and run.k == 20_000
+        widgets = len(list(app.screen.walk_children()))
+
+        # scrolled (Tab focuses the queue; its keys scroll it), the lines on screen are the
+        # queue's entries at the scroll offset, drawn from the run, still with no widget each
+        await pilot.press("tab")
+        assert app.focused is panel
+        seen = []
+        for key in ("pagedown", "pagedown", "end", "pageup", "home"):
+            await pilot.press(key)
+            await wait_until(pilot, lambda: shown_entries(panel) == queue_at(panel, run))
+            seen.append(panel.scroll_offset.y)
+        page = panel.scrollable_content_region.height
+        assert seen[:2] == [page, 2 * page] and seen[3] == seen[2] - page and seen[4] == 0
+        assert seen[2] == n + 1 - page  # the end: the queue's last entry on the last row
+        assert shown_entries(panel)[0] is None  # home: the count line again
+        panel.scroll_to(y=50_000, animate=False, immediate=True)
+        await pilot.pause()
+        (g,) = run.frontier(49_999, 50_000)  # line 50,000: the queue's entry 49,999
+        x, y = run.gen_cell(g)
+        assert shown_entries(panel) == queue_at(panel, run)
+        assert shown_entries(panel)[0] == (f"({x},{y})", f"{run.gen_g(g):.2f}")
+        assert not panel.children and len(list(app.screen.walk_children())) == widgets
+        # the next step scrolls the queue back to its front
+        await pilot.press("n")
+        await wait_until(pilot, lambda: panel.scroll_offset.y == 0)
+        assert shown_entries(panel) == queue_at(panel, run) and run.k == 20_001
+
+
+def shown_entries(panel: FrontierPanel) -> list[tuple[str, str] | None]:
+    """The (cell, g) each row of the panel draws on screen, None for a row that is no entry
+    (the count line)."""
+    out: list[tuple[str, str] | None] = []
+    for y in range(panel.scrollable_content_region.height):
+        words = panel.render_line(y).text.split()
+        cell = next((w for w in words if w.startswith("(")), None)
+        out.append(None if cell is None else (cell, words[words.index("g") + 1]))
+    return out
+
+
+def queue_at(panel: FrontierPanel, run: Run) -> list[tuple[str, str] | None]:
+    """What those rows must show: the queue's entries from the scroll offset on."""
+    top = panel.scroll_offset.y
+    rows = panel.scrollable_content_region.height
+    out: list[tuple[str, str] | None] = [None] * max(0, 1 - top)
+    for g in run.frontier(max(0, top - 1), top - 1 + rows):
+        x, y = run.gen_cell(g)
+        out.append((f"({x},{y})", f"{run.gen_g(g):.2f}"))
+    return out
