@@ -8,15 +8,28 @@ import asyncio
 import contextlib
 from collections.abc import AsyncIterator
 
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
+from rich.style import Style
 
 from tests.tui.test_app import SIZE, open_grid, sync, tutorial_app, wait_until, watch_repaints
 from tests.tui.test_snapshots import patterned_grid
+from tui_search.engine.grid import Cell, Grid
 from tui_search.tui.app import SearchApp
-from tui_search.tui.geometry import Geometry
+from tui_search.tui.geometry import MAX_LEVEL, Geometry
 from tui_search.tui.widgets.cell_readout import CellReadout
-from tui_search.tui.widgets.grid_view import EXPANDED, FRONTIER, RANK, START, WALL, GridView
+from tui_search.tui.widgets.grid_view import (
+    CURRENT,
+    EXPANDED,
+    FREE,
+    FRONTIER,
+    PATH,
+    RANK,
+    START,
+    UPPER_HALF,
+    WALL,
+    GridView,
+)
 
 
 def in_view(view: GridView, cell) -> bool:
@@ -99,39 +112,87 @@ async def test_zoom_in_and_out_changes_the_cell_size_and_keeps_the_cursor_cell_o
         assert in_view(view, app.cursor_cell)
 
 
-@settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(st.integers(0, 6), st.integers(0, 400), st.integers(0, 400), st.data())
-def test_a_click_hits_the_cell_drawn_there_at_every_size_and_offset(zoom, sx, sy,
-                                                                    data) -> None:
-    """Zoom 0 is the overview; then cells 2x1 .. 12x6, scrolled anywhere; a right-click (it
-    only moves the cursor) anywhere in the map's content moves the cursor to the cell drawn
-    under it: for the overview, the block's first cell."""
+#: A click: (zoom, scroll x, scroll y, where across, where down).  Zoom 0 is the overview, then
+#: cell sizes 1 .. MAX_LEVEL (2x1 .. 24x12); "where" is taken modulo the map's part in view.
+clicks = st.tuples(st.integers(0, MAX_LEVEL), st.integers(0, 4000), st.integers(0, 4000),
+                   st.integers(0, 10_000), st.integers(0, 10_000))
+CLICK_MAP = (150, 110)
+
+
+def drawn_chars(view: GridView) -> list[list[Style]]:
+    """The style of every character of the map's lines as drawn."""
+    lines = []
+    for y in range(view.scrollable_content_region.height):
+        lines.append([seg.style or Style() for seg in view.render_line(y)
+                      for _ in range(seg.cell_length)])
+    return lines
+
+
+async def check_click(app: SearchApp, pilot, view: GridView, zoom: int, scroll_x: int,
+                      scroll_y: int, where_x: int, where_y: int) -> None:
+    """Zoom, scroll, right-click (it only moves the cursor) a point of the map; the expected
+    cell comes from arithmetic written here and from the picture, never from the widget's
+    geometry; after the click the cursor is drawn where that cell is."""
+    columns, rows = CLICK_MAP
+    view.set_overview(zoom == 0)
+    if zoom:
+        view.zoom(zoom - view.geometry.cell_height)  # one call: from 2x1 to 24x12 at once
+    await pilot.pause()
+    view.scroll_to(scroll_x, scroll_y, animate=False, immediate=True)
+    width, height = view.scrollable_content_region.size
+    ox, oy = view.scroll_offset
+    if zoom:  # a cell: 2 * zoom characters by zoom lines; the map is wider than the view
+        cell_w, cell_h = 2 * zoom, zoom
+        assert ox % cell_w == 0 and oy % cell_h == 0  # scrolled by whole cells
+        drawn_w, drawn_h = columns * cell_w - ox, rows * cell_h - oy
+        pad = 0
+    else:  # the whole map in view, a character a block; how big, the picture says
+        assert (ox, oy) == (0, 0)
+        text = [view.render_line(y).text for y in range(height)]
+        pad = text[0].index(UPPER_HALF)
+        drawn_w = text[0].count(UPPER_HALF)
+        drawn_h = sum(UPPER_HALF in line for line in text)
+        block = min(b for b in range(1, columns + 1)
+                    if -(-columns // b) == drawn_w and -(-rows // (2 * b)) == drawn_h)
+    x = pad + where_x % min(width - pad, drawn_w)
+    y = where_y % min(height, drawn_h)
+    if zoom:
+        expected = ((x + ox) // cell_w, (y + oy) // cell_h)
+    else:
+        expected = ((x - pad) * block, y * 2 * block)  # the block's top-left cell
+    await pilot.click(GridView, offset=(1 + x, 1 + y), button=3)  # 1: the view's border
+    assert app.cursor_cell == expected
+    after = drawn_chars(view)
+    if zoom:  # the cursor's cell drawn reversed, and nothing else
+        ox, oy = view.scroll_offset  # the view may have followed the cursor
+        left, top = expected[0] * cell_w - ox, expected[1] * cell_h - oy
+        reversed_at = {(i, j) for j, line in enumerate(after) for i, s in enumerate(line)
+                       if s.reverse}
+        assert reversed_at == {(i, j) for i in range(max(0, left), min(width, left + cell_w))
+                               for j in range(max(0, top), min(height, top + cell_h))}
+    else:  # the cursor's colour: in the clicked character's upper half, and only there
+        cursor = view.get_component_rich_style("grid-view--cursor").color or (
+            view.rich_style.color)
+        assert {(i, j) for j, line in enumerate(after) for i, s in enumerate(line)
+                if s.color == cursor} == {(x, y)}
+
+
+@settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.lists(clicks, min_size=1, max_size=3))
+@example([(level, 4000 * (level % 2), 4000 * (level % 3 == 0), 9999, 9999)
+          for level in range(MAX_LEVEL + 1)])  # every size, scrolled to the far edges too
+def test_a_click_hits_the_cell_drawn_there_at_every_size_and_offset(sequence) -> None:
+    """The overview and every cell size 2x1 .. 24x12, scrolled anywhere: a click anywhere in
+    the map's content moves the cursor to the cell drawn under it (in the overview, the
+    block's first cell)."""
 
     async def check() -> None:
-        app = SearchApp(open_grid(150, 110, start=(3, 3)))
+        app = SearchApp(open_grid(*CLICK_MAP, start=(3, 3)))
         async with app.run_test(size=SIZE) as pilot:
             await pilot.pause()
             view = app.query_one(GridView)
-            if zoom == 0:
-                view.set_overview(True)
-            else:
-                for _ in range(zoom - 1):
-                    view.zoom(1)
-            await pilot.pause()
-            view.scroll_to(sx, sy, animate=False, immediate=True)
-            await pilot.pause()
-            g = view.geometry
-            ox, oy = view.scroll_offset
-            assert ox % g.cell_width == 0 and oy % g.cell_height == 0  # whole cells
-            width, height = view.scrollable_content_region.size
-            x = data.draw(st.integers(0, min(width, g.size[0] - ox) - 1))
-            y = data.draw(st.integers(0, min(height, g.size[1] - oy) - 1))
-            expected = g.cell_at(x + ox - view.pad_x, y + oy)
-            assert expected is not None
-            cx, cy, w, h = g.cell_region(expected)
-            assert cx <= x + ox - view.pad_x < cx + w and cy <= y + oy < cy + h
-            await pilot.click(GridView, offset=(1 + x, 1 + y), button=3)
-            assert app.cursor_cell == expected
+            for click in sequence:
+                await check_click(app, pilot, view, *click)
 
     asyncio.run(check())
 
@@ -183,6 +244,74 @@ async def test_a_block_of_the_overview_shows_its_most_important_state() -> None:
                 expected.append(max(looks, key=RANK.__getitem__))
             assert view._block_codes(range(5), 0, 20) == expected
         assert FRONTIER in expected and EXPANDED not in expected  # the frontier hides it
+
+
+#: What a block of the overview holding two kinds of cell shows, written out pair by pair from
+#: the issue's order "path > node being expanded > frontier > expanded > obstacle > free" (not
+#: derived from the code's RANK).
+SHOWS = {
+    ("path", "being expanded"): "path",
+    ("path", "frontier"): "path",
+    ("path", "expanded"): "path",
+    ("path", "obstacle"): "path",
+    ("path", "free"): "path",
+    ("being expanded", "frontier"): "being expanded",
+    ("being expanded", "expanded"): "being expanded",
+    ("being expanded", "obstacle"): "being expanded",
+    ("being expanded", "free"): "being expanded",
+    ("frontier", "expanded"): "frontier",
+    ("frontier", "obstacle"): "frontier",
+    ("frontier", "free"): "frontier",
+    ("expanded", "obstacle"): "expanded",
+    ("expanded", "free"): "expanded",
+    ("obstacle", "free"): "obstacle",
+}
+KIND = {"path": PATH, "being expanded": CURRENT, "frontier": FRONTIER, "expanded": EXPANDED,
+        "obstacle": WALL, "free": FREE}
+
+
+class PaintedRun:
+    """Just what the overview asks a run: the search state of each cell of a row."""
+
+    def __init__(self, states: dict[Cell, int]) -> None:
+        self.states = states
+
+    def row_states(self, y: int, x0: int, x1: int) -> list[int]:
+        return [self.states.get((x, y), FREE) for x in range(x0, x1)]
+
+
+@sync
+async def test_each_pair_of_states_in_a_block_shows_the_more_important_one() -> None:
+    """Blocks of 2x2 cells, each holding two kinds of cell (the more important one once, in
+    its first cell or in its last, the other in the rest): each draws as the table says, in
+    its code and in its colour."""
+    pairs = [(pair, first) for pair in SHOWS for first in (True, False)]
+    width = 2 * len(pairs) + 2  # a last block for the start and the goal, out of the way
+    grid = Grid(width, 2, start=(width - 2, 0), goal=(width - 1, 1))
+    states: dict[Cell, int] = {}
+    for i, ((a, b), first) in enumerate(pairs):
+        block = [(2 * i, 0), (2 * i + 1, 0), (2 * i, 1), (2 * i + 1, 1)]
+        one = block[0] if first else block[-1]
+        for cell in block:
+            kind = KIND[a if cell == one else b]
+            if kind == WALL:
+                grid.set_blocked(cell, True)
+            else:
+                states[cell] = kind
+    app = SearchApp(grid)
+    async with app.run_test(size=SIZE) as pilot:
+        view = app.query_one(GridView)
+        view.set_overview(True)
+        await pilot.pause()
+        view.geometry = Geometry(width, 2, 1, 2)  # blocks of 2, one line: upper halves only
+        view.run = PaintedRun(states)  # type: ignore[assignment]  # (a stand-in Run)
+        codes = view._block_codes(range(2), 0, width)
+        assert codes is not None
+        assert [codes[i] for i in range(len(pairs))] == [KIND[SHOWS[p]] for p, _ in pairs]
+        line = view.render_line(0)
+        colours = [seg.style.color for seg in line if seg.style
+                   for _ in range(seg.cell_length)][view.pad_x:]
+        assert colours[: len(pairs)] == [view.swatch(KIND[SHOWS[p]]).color for p, _ in pairs]
 
 
 @sync

@@ -3,9 +3,25 @@ big map, and the line that says what a cell is.  The docstring says what each mu
 
 from __future__ import annotations
 
+from tests.helpers import MOVINGAI
 from tests.tui.test_app import tutorial_app, wait_until
 from tests.tui.test_snapshots import patterned_grid
+from tui_search.engine.mapfile import load_map
 from tui_search.tui.app import SearchApp
+
+
+def overview_after_steps(steps: int):
+    """A ``run_before``: the run at step ``steps`` + 1 (panels and status in step), then z."""
+
+    async def run_before(pilot) -> None:
+        app = pilot.app
+        app.search_run.goto(steps)
+        app.action_first()  # a full redraw ...
+        app.search_run.goto(steps)
+        await pilot.press("n", "z")
+        await wait_until(pilot, lambda: app.query_one("GridView").overview)
+
+    return run_before
 
 
 def test_the_tutorial_in_big_cells_with_arrows(snap_compare) -> None:
@@ -21,16 +37,24 @@ def test_the_overview_of_a_512_map_shows_all_of_it(snap_compare) -> None:
     and column in view (no scrollbar), a half block a 7x7 block of cells: the walls' pattern
     red, the searched diamond around the start blue with its frontier edge, S in the middle."""
 
-    async def run_before(pilot) -> None:
-        app = pilot.app
-        app.search_run.goto(3000)
-        app.action_first()  # a full redraw ...
-        app.search_run.goto(3000)
-        await pilot.press("n", "z")
-        await wait_until(pilot, lambda: app.query_one("GridView").overview)
-
     grid = patterned_grid(512, 512, start=(256, 256), goal=(2, 2))
-    assert snap_compare(SearchApp(grid), terminal_size=(140, 45), run_before=run_before)
+    assert snap_compare(SearchApp(grid), terminal_size=(140, 45),
+                        run_before=overview_after_steps(3000))
+
+
+def test_the_overview_of_maze512_shows_the_whole_maze(snap_compare) -> None:
+    """The real MovingAI maze512-1-0 (512x512, corridors one cell wide) at 140x45, BFS from
+    (251,250) near the middle part-way (20000 steps), z: all 512 columns and rows in 74x37
+    characters inside the frame (no scrollbar), a half block a 7x7 block of cells.  Every
+    block of the maze holds a wall and an obstacle outranks free, so the unsearched maze is
+    solid obstacle colour but for a few all-free blocks on its right and bottom edges; the
+    searched part around the start is blue (expanded outranks obstacle) with the cursor (on
+    the start) white in it, the goal yellow top left; the panels and the status line agree: step
+    20001."""
+
+    grid = load_map(MOVINGAI / "maze512-1-0.map", start=(251, 250), goal=(1, 1))
+    assert snap_compare(SearchApp(grid), terminal_size=(140, 45),
+                        run_before=overview_after_steps(20000))
 
 
 def test_the_readout_of_an_expanded_cell(snap_compare) -> None:

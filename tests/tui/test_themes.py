@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import json
 import os
+import sys
 from pathlib import Path
 
 import pytest
@@ -64,6 +65,27 @@ async def palette_run(pilot, query: str) -> None:
 def test_the_config_dir_is_the_tests_own() -> None:
     assert config_path() == config_file()
     assert "pytest" in str(config_file()) or "tmp" in str(config_file())
+
+
+def test_without_the_variable_the_file_is_in_the_users_config_dir(tmp_path: Path,
+                                                                    monkeypatch) -> None:
+    """What a user gets: platformdirs' user config directory for "tui-search", which on Linux
+    is the README's ``~/.config/tui-search/`` (or ``$XDG_CONFIG_HOME/tui-search/``); a theme
+    chosen is saved there."""
+    import platformdirs
+
+    monkeypatch.delenv(CONFIG_DIR_ENV)
+    monkeypatch.setenv("HOME", str(tmp_path))
+    monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path / "xdg"))
+    expected = Path(platformdirs.user_config_dir("tui-search", appauthor=False)) / "config.json"
+    assert config_path() == expected and expected.is_relative_to(tmp_path)
+    if sys.platform.startswith("linux"):
+        assert expected == tmp_path / "xdg" / "tui-search" / "config.json"
+        monkeypatch.delenv("XDG_CONFIG_HOME")
+        assert config_path() == tmp_path / ".config" / "tui-search" / "config.json"
+    assert Config.load().save_theme("light") is None
+    assert json.loads(config_path().read_text()) == {"theme": "light"}
+    assert Config.load().theme == "light"
 
 
 def test_only_the_apps_themes_are_offered() -> None:

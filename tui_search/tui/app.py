@@ -853,9 +853,7 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
     def action_page(self, pages: int) -> None:
         """The cursor a screenful of cells up or down (at least one cell)."""
         view = self.views[0]
-        rows = view.scrollable_content_region.height // view.geometry.cell_height
-        if view.overview:
-            rows = view.scrollable_content_region.height * 2 * view.geometry.block
+        rows = view.geometry.rows_in(view.scrollable_content_region.height)
         x, y = self.cursor_cell
         y = max(0, min(self.grid.height - 1, y + pages * max(1, rows - 1)))
         self._move_cursor((x, y))

@@ -1,12 +1,16 @@
 """Where each map cell is on screen: the one geometry the map's drawing, its mouse hit-testing,
 its scrolling and its overview share (no Textual here, so it is tested on its own).
 
-Two kinds of layout, one object:
+A layout is data, not a mode: a cell covers ``cell_width`` x ``cell_height`` characters, and a
+character covers ``across`` x ``down`` cells, drawn in ``halves`` stacked parts.  Every method
+below is one formula over those five numbers; which numbers is decided once, when the geometry
+is made from a cell size (``level``) or an overview ``block``:
 
-* **cells** -- a cell is ``width`` x ``height`` characters, kept roughly square on screen
+* **cells** -- a cell is ``2 * level`` x ``level`` characters, kept roughly square on screen
   (a character is about twice as tall as wide): 2x1, 4x2, 6x3 ... (:data:`MAX_LEVEL` levels);
-* **overview** -- ``block`` > 0: a character column stands for ``block`` map columns and a
-  character row for ``2 * block`` map rows, drawn as two half blocks (``▀``) of ``block`` x
+  a character covers one cell;
+* **overview** -- ``block`` > 0: a cell is one character, and a character covers ``block`` map
+  columns and ``2 * block`` map rows, drawn as two half blocks (``▀``) of ``block`` x
   ``block`` cells each, so a 512x512 map fits a 140x45 terminal.
 
 All positions are *virtual*: in the map's whole drawing, before scrolling.
@@ -14,12 +18,16 @@ All positions are *virtual*: in the map's whole drawing, before scrolling.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from tui_search.engine.grid import Cell
 
 #: The largest cell: 2 * MAX_LEVEL characters wide, MAX_LEVEL lines tall.
 MAX_LEVEL = 12
+
+
+def _ceil_div(a: int, b: int) -> int:
+    return -(-a // b)
 
 
 @dataclass(frozen=True)
@@ -31,6 +39,26 @@ class Geometry:
     rows: int
     level: int = 1
     block: int = 0
+    #: Characters a cell spans across (1 in the overview: a character per block).
+    cell_width: int = field(init=False, repr=False)
+    #: Lines a cell spans (1 in the overview: a line per two blocks).
+    cell_height: int = field(init=False, repr=False)
+    #: Map columns a character covers (1, or the overview's block).
+    across: int = field(init=False, repr=False)
+    #: Map rows a line covers (1, or the overview's two blocks).
+    down: int = field(init=False, repr=False)
+    #: Stacked parts a character draws its ``down`` rows in (1, or 2: the half blocks ``▀``).
+    halves: int = field(init=False, repr=False)
+
+    def __post_init__(self) -> None:
+        # The one place the kind of layout is chosen: from here on, only its numbers.
+        if self.block > 0:
+            layout = (1, 1, self.block, 2 * self.block, 2)
+        else:
+            layout = (2 * self.level, self.level, 1, 1, 1)
+        for name, value in zip(("cell_width", "cell_height", "across", "down", "halves"),
+                               layout):
+            object.__setattr__(self, name, value)
 
     # -- construction --------------------------------------------------------------------
     @classmethod
@@ -45,15 +73,14 @@ class Geometry:
         """The smallest block at which every column and row of the map shows in ``width`` x
         ``height`` characters (a block of 1: a character per column, two rows per line)."""
         width, height = max(1, width), max(1, height)
-        block = max(1, -(-columns // width), -(-rows // (2 * height)))
+        block = max(1, _ceil_div(columns, width), _ceil_div(rows, 2 * height))
         return cls(columns, rows, 1, block)
 
     def zoomed(self, steps: int) -> Geometry:
-        """The cell size ``steps`` levels bigger (smaller when negative), within 1..MAX_LEVEL;
-        from the overview, cells of the smallest size."""
-        if self.overview:
-            return Geometry(self.columns, self.rows, 1)
-        level = max(1, min(MAX_LEVEL, self.level + steps))
+        """The cell size ``steps`` levels bigger (smaller when negative), within 1..MAX_LEVEL.
+        Sizes go by cell width, 2 characters a level, so the overview's cells (a character,
+        less than the smallest's two) are below level 1: any step from it gives level 1."""
+        level = max(1, min(MAX_LEVEL, self.cell_width // 2 + steps))
         return Geometry(self.columns, self.rows, level)
 
     # -- sizes ---------------------------------------------------------------------------
@@ -62,31 +89,21 @@ class Geometry:
         return self.block > 0
 
     @property
-    def cell_width(self) -> int:
-        """Characters per cell across (1 in the overview: a character per block)."""
-        return 1 if self.overview else 2 * self.level
-
-    @property
-    def cell_height(self) -> int:
-        """Lines per cell (1 in the overview: a line per two blocks)."""
-        return 1 if self.overview else self.level
-
-    @property
     def size(self) -> tuple[int, int]:
         """The whole map's drawing, in characters and lines."""
-        if self.overview:
-            b = self.block
-            return -(-self.columns // b), -(-self.rows // (2 * b))
-        return self.columns * self.cell_width, self.rows * self.cell_height
+        return (_ceil_div(self.columns, self.across) * self.cell_width,
+                _ceil_div(self.rows, self.down) * self.cell_height)
+
+    def rows_in(self, lines: int) -> int:
+        """How many map rows ``lines`` lines show (whole cells only)."""
+        return lines // self.cell_height * self.down
 
     # -- cell <-> screen -----------------------------------------------------------------
     def cell_region(self, cell: Cell) -> tuple[int, int, int, int]:
         """``(x, y, width, height)`` of the characters that draw ``cell``."""
         x, y = cell
-        if self.overview:
-            return x // self.block, y // (2 * self.block), 1, 1
         w, h = self.cell_width, self.cell_height
-        return x * w, y * h, w, h
+        return x // self.across * w, y // self.down * h, w, h
 
     def lines_of(self, cell: Cell) -> range:
         """The lines that draw ``cell`` (what a change of the cell repaints)."""
@@ -98,33 +115,24 @@ class Geometry:
         of the block there); None off the map."""
         if x < 0 or y < 0:
             return None
-        if self.overview:
-            cell = (x * self.block, y * 2 * self.block)
-        else:
-            cell = (x // self.cell_width, y // self.cell_height)
+        cell = (x // self.cell_width * self.across, y // self.cell_height * self.down)
         return cell if cell[0] < self.columns and cell[1] < self.rows else None
 
     def line_rows(self, line: int) -> tuple[range, range]:
-        """The map rows line ``line`` draws: cells mode, one row (and an empty range); the
-        overview, the rows of its upper and of its lower half block."""
-        if self.overview:
-            b = self.block
-            top = line * 2 * b
-            return (range(top, min(top + b, self.rows)),
-                    range(min(top + b, self.rows), min(top + 2 * b, self.rows)))
-        row = line // self.cell_height
-        return range(row, row + 1) if 0 <= row < self.rows else range(0), range(0)
+        """The map rows line ``line`` draws, as the rows of its upper and of its lower half:
+        cells, one row (and an empty lower half); the overview, a block's rows each."""
+        top = line // self.cell_height * self.down
+        middle = top + self.down // self.halves
+        end = self.rows
+        return (range(min(top, end), min(middle, end)),
+                range(min(middle, end), min(top + self.down, end)))
 
     def visible_columns(self, scroll_x: int, width: int) -> range:
         """The map columns with at least one character in ``width`` characters from
         ``scroll_x`` (in the overview, every column of the blocks shown)."""
-        if self.overview:
-            b = self.block
-            return range(min(scroll_x * b, self.columns),
-                         min(self.columns, (scroll_x + width) * b))
-        w = self.cell_width
-        return range(min(scroll_x // w, self.columns),
-                     min(self.columns, -(-(scroll_x + width) // w)))
+        w, n = self.cell_width, self.columns
+        return range(min(scroll_x // w * self.across, n),
+                     min(n, _ceil_div(scroll_x + width, w) * self.across))
 
     # -- scrolling -----------------------------------------------------------------------
     def snap(self, x: int, y: int) -> tuple[int, int]:

@@ -379,7 +379,7 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         the code of highest rank in it (None for no rows: a half below the map)."""
         if not rows:
             return None
-        b = self.geometry.block
+        b = self.geometry.across
         best: list[int] | None = None
         for y in rows:
             ranks = [RANK[code] for code in self._codes(y, x0, x1)]
@@ -399,8 +399,9 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         upper = self._block_codes(upper_rows, columns.start, columns.stop)
         assert upper is not None
         lower = self._block_codes(lower_rows, columns.start, columns.stop)
-        cx, cy = self.cursor
-        cursor_x = cx // geo.block - sx if cy in upper_rows or cy in lower_rows else -1
+        x, y, _, _ = geo.cell_region(self.cursor)  # the cursor's character
+        cursor_x = x - sx if y == line else -1
+        cursor_upper = self.cursor[1] in upper_rows
         cursor_colour = self.get_component_rich_style("grid-view--cursor").color or (
             background.color
         )
@@ -410,7 +411,7 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
             a = self.swatch(upper[i]).color
             b = self.swatch(lower[i]).color if lower is not None else background.bgcolor
             if i == cursor_x:
-                if cy in upper_rows:
+                if cursor_upper:
                     a = cursor_colour
                 else:
                     b = cursor_colour
