@@ -78,3 +78,21 @@ def test_exercise_without_headless_opens_the_app(monkeypatch) -> None:
     monkeypatch.setattr(SearchApp, "run", fake_run)
     assert main(["--exercise", "2"]) == 0
     assert seen == {"exercise": 2, "title": "tutorial (built-in)"}
+
+
+@sync
+async def test_the_palette_turns_the_exercises_on_and_off() -> None:
+    """As a user would: ctrl+p, type the command's name, enter."""
+    from tests.tui.test_themes import palette_run
+
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        assert app.exercise is None and not challenge(app).display
+        await palette_run(pilot, "Exercise 1")
+        assert app.exercise == 1 and challenge(app).display
+        assert challenge(app).border_title == "Exercise 1"
+        assert "Not solved yet: BFS expanded 22 nodes, DFS 7" in challenge(app).text
+        await palette_run(pilot, "Exercise 2")
+        assert app.exercise == 2 and challenge(app).border_title == "Exercise 2"
+        await palette_run(pilot, "Exercise: off", best=True)  # exercise 1's quote matches too
+        assert app.exercise is None and not challenge(app).display

@@ -63,3 +63,137 @@ async def test_enter_does_nothing_outside_the_quiz() -> None:
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("enter")
         assert app.search_run.k == 0
+
+
+# -- picking the answer in the frontier panel (click, tab and up/down) ------------------------
+def entry_offset(panel: FrontierPanel, cell) -> tuple[int, int]:
+    """Where to click on ``panel`` (its region, border included) for the entry of ``cell``."""
+    y = next(y for y in range(panel.virtual_size.height) if panel.entry_cell(y) == cell)
+    return (4, 1 + y - round(panel.scroll_y))  # the border's line, then the list's lines
+
+
+async def click_entry(pilot, cell, times: int = 1, panel: FrontierPanel | None = None) -> None:
+    """Click the line of ``cell``'s entry in ``panel`` (the app's single one by default)."""
+    panel = panel or pilot.app.frontier_panel
+    await pilot.click(panel, offset=entry_offset(panel, cell), times=times)
+    await pilot.pause()
+
+
+async def quiz_after_two_steps(pilot):
+    """BFS on the tutorial, two steps, quiz on: the queue holds two entries; the answer (the
+    front) and the entry that is not it."""
+    await pilot.press("n", "n", "i")
+    run = pilot.app.search_run
+    cells = [run.gen_cell(g) for g in run.frontier(0, 10)]
+    return cells[0], cells[1]
+
+
+@sync
+async def test_a_click_on_the_front_entry_picks_it_and_enter_answers_right() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        answer, _ = await quiz_after_two_steps(pilot)
+        assert "Cursor on it or click its entry, then enter" in stats(app)[1]
+        panel = app.query_one(FrontierPanel)
+        assert panel.border_subtitle == "+ just added · click picks"
+        await click_entry(pilot, answer)
+        assert app.cursor_cell == answer and app.view.cursor == answer  # the pick is the cursor
+        assert app.search_run.k == 2  # a click picks; it does not answer
+        assert panel.entry_cell(panel.pick_line()) == answer
+        assert panel.line_band(panel.pick_line()) is not None  # the picked line is marked
+        await pilot.press("enter")
+        assert app.search_run.k == 3 and app.search_run.current_node() == answer
+        assert (app.quiz_right, app.quiz_asked) == (1, 1)
+        assert stats(app)[1].startswith(f"Right: ({answer[0]},{answer[1]}) was the queue's "
+                                        "front · 1 of 1 · next: cursor or pick, enter")
+
+
+@sync
+async def test_a_click_on_another_entry_and_enter_is_not_quite() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        answer, other = await quiz_after_two_steps(pilot)
+        await click_entry(pilot, other)
+        assert app.cursor_cell == other
+        await pilot.press("enter")
+        assert app.search_run.current_node() == answer
+        assert (app.quiz_right, app.quiz_asked) == (0, 1)
+        assert stats(app)[1].startswith(
+            f"Not quite: ({answer[0]},{answer[1]}) came off the queue's front, "
+            f"not ({other[0]},{other[1]}) · 0 of 1")
+
+
+@sync
+async def test_a_double_click_on_an_entry_picks_and_answers() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        answer, _ = await quiz_after_two_steps(pilot)
+        await click_entry(pilot, answer, times=2)
+        assert app.search_run.k == 3 and (app.quiz_right, app.quiz_asked) == (1, 1)
+
+
+@sync
+async def test_clicks_on_the_count_line_or_outside_the_quiz_pick_nothing() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("n", "n")
+        panel = app.query_one(FrontierPanel)
+        await pilot.click(FrontierPanel, offset=(4, 2))  # no quiz: the front entry's line
+        await pilot.pause()
+        assert app.cursor_cell == (0, 0) and panel.pick_line() is None
+        await pilot.press("i")
+        await pilot.click(FrontierPanel, offset=(4, 1))  # the count line
+        await pilot.pause()
+        assert app.cursor_cell == (0, 0) and app.search_run.k == 2
+
+
+@sync
+async def test_tab_to_the_frontier_then_up_down_pick_and_enter_answers() -> None:
+    """From the keyboard: tab moves the focus to the frontier panel; in the quiz its key hint
+    is "Pick" and up / down move the pick (the cursor) entry by entry; enter answers."""
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        answer, _ = await quiz_after_two_steps(pilot)
+        panel = app.query_one(FrontierPanel)
+        for _ in range(4):
+            if app.focused is panel:
+                break
+            await pilot.press("tab")
+        assert app.focused is panel
+        assert "Pick" in [desc for _, desc, _ in app.query_one(KeyBar).hints()]
+        order = [panel.entry_cell(y) for y in (1, 2)]  # by cell: the listed order
+        assert None not in order and panel.entry_cell(3) is None
+        await pilot.press("down")  # nothing picked yet (the cursor is on the start): the first
+        assert app.cursor_cell == order[0] and panel.pick_line() == 1
+        await pilot.press("down", "down")  # stops at the last
+        assert app.cursor_cell == order[1] and panel.pick_line() == 2
+        await pilot.press("up")
+        assert app.cursor_cell == order[0]
+        while app.cursor_cell != answer:
+            await pilot.press("up")
+        await pilot.press("enter")
+        assert (app.quiz_right, app.quiz_asked) == (1, 1) and app.search_run.k == 3
+        await pilot.press("i")  # quiz off: up / down scroll the panel again, the pick is gone
+        assert "Pick" not in [desc for _, desc, _ in app.query_one(KeyBar).hints()]
+        cursor = app.cursor_cell
+        await pilot.press("down")
+        assert app.cursor_cell == cursor and panel.pick_line() is None
+
+
+@sync
+async def test_in_compare_mode_the_left_panes_frontier_picks() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=(160, 44)) as pilot:
+        await pilot.press("c")
+        await pilot.pause()
+        left, right = (pane.frontier for pane in app.panes)
+        await pilot.press("n", "n", "i")
+        answer = app.search_run.gen_cell(app.search_run.frontier(0, 1)[0])
+        await pilot.click(right, offset=(4, 2))  # the right pane's front: not the quiz's
+        await pilot.pause()
+        assert app.cursor_cell == (0, 0)
+        await click_entry(pilot, answer, panel=left)
+        assert app.cursor_cell == answer
+        await pilot.press("enter")
+        assert (app.quiz_right, app.quiz_asked) == (1, 1)
+        assert app.stats.narration_text.startswith(f"Right: ({answer[0]},{answer[1]}) was")

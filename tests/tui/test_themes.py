@@ -49,15 +49,20 @@ async def hits(pilot) -> CommandList:
     return found
 
 
-async def palette_run(pilot, query: str) -> None:
-    """Open the palette, type ``query`` (which names one command), take what it found."""
+async def palette_run(pilot, query: str, best: bool = False) -> None:
+    """Open the palette, type ``query`` (which names one command), take what it found
+    (``best``: the query matches others too, fuzzily; the command it names comes first)."""
     await pilot.press("ctrl+p")
     await pilot.pause()
     palette = pilot.app.screen
     assert isinstance(palette, CommandPalette)
     await pilot.press(*query)
     found = await hits(pilot)
-    assert found.option_count == 1, [str(o.prompt) for o in found.options]
+    prompts = [str(o.prompt) for o in found.options]
+    if best:
+        assert found.highlighted == 0 and prompts[0].startswith(query), prompts
+    else:
+        assert found.option_count == 1, prompts
     await pilot.press("enter")
     await pilot.pause()
 

@@ -67,6 +67,7 @@ NEEDS_ENDPOINTS = "Place a start (s) and a goal (g) to search"
 KEY_IMPORTANCE = {
     "help": 10, "quit": 10, "stop_seek": 9, "next": 8, "play": 7, "pause": 7, "algorithm": 6,
     "compare": 6, "settings": 5, "reset": 4, "save": 3, "quiz": 2, "overview": 2, "zoom": 1,
+    "pick": 7,  # the frontier panel's, while it has the focus in the quiz
 }
 STEP = Binding.Group("Step", compact=True)
 ZOOM = Binding.Group("Zoom", compact=True)
@@ -156,7 +157,8 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
                 tooltip="Cursor to the node being expanded"),
         Binding("i", "quiz", "Quiz", tooltip="Predict the next node: a quiz (again to stop)"),
         Binding("enter", "answer", "Answer", show=False,
-                tooltip="Quiz: the node under the cursor comes off next"),
+                tooltip="Quiz: the node under the cursor (or the frontier entry picked) "
+                "comes off next"),
         Binding("x", "exercise", "Exercise", show=False,
                 tooltip="The tutorial's exercises as live challenges: 1, 2, off"),
         Binding("t", "next_theme", "Theme", show=False,
@@ -476,6 +478,7 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
                      per_run[0] if per_run is not None else changed, follow, self.quiz)
             if self.view.border_title != title:  # setting it repaints the whole view
                 self.view.border_title = title
+        self._show_pick()
         self._show_status()
         self.show_readout()
 

@@ -67,6 +67,7 @@ class EditActions(AppMixinBase):
         self.cursor_cell = cell
         for view in self.views:  # compare mode: one cursor, on every pane's map
             view.set_cursor(cell)
+        self._show_pick()
         self.show_readout()
 
     def _edited(self, refusal: str | None) -> bool:

@@ -13,13 +13,16 @@ if TYPE_CHECKING:
     from textual.app import App
 
     from tui_search.engine.run import Run
+    from tui_search.tui.widgets.frontier_panel import FrontierPanel
     from tui_search.tui.widgets.grid_view import GridView
+    from tui_search.tui.widgets.run_pane import RunPane
 
     class AppMixinBase(App[int]):
         grid: Grid
         map_path: Path | None
         dirty: bool
         view: GridView
+        frontier_panel: FrontierPanel
         cursor_cell: Cell
         search_run: Run | None
         note: str
@@ -38,6 +41,10 @@ if TYPE_CHECKING:
         @property
         def views(self) -> list[GridView]: ...
         def show_readout(self) -> None: ...
+        def _move_cursor(self, cell: Cell) -> None: ...
+        def _show_pick(self) -> None: ...
+        @property
+        def panes(self) -> list[RunPane]: ...
 else:
     AppMixinBase = object
 

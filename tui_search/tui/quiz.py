@@ -3,7 +3,9 @@
 
 While it is on, the frontier panel lists its entries by cell, without the next-out mark, so it
 does not give the answer away; the student moves the cursor to the cell that will come off the
-frontier next and presses ``enter``; the app takes the step, says right or wrong, and keeps a
+frontier next -- or picks its entry in the frontier panel: a click on its line, or ``up`` /
+``down`` there after ``tab`` (the pick *is* the cursor: the app moves it to that cell) -- and
+presses ``enter`` (a double click on the entry picks and answers); the app takes the step, says right or wrong, and keeps a
 score.  Under BFS the answer is the queue's front, under DFS the stack's top, under A* the
 lowest f -- the whole lesson in one habit.
 """
@@ -12,6 +14,7 @@ from __future__ import annotations
 
 from tui_search.engine.grid import Cell
 from tui_search.tui.mixin import AppMixinBase
+from tui_search.tui.widgets.frontier_panel import FrontierPanel
 
 
 def cell_text(cell: Cell) -> str:
@@ -19,7 +22,8 @@ def cell_text(cell: Cell) -> str:
 
 
 class QuizActions(AppMixinBase):
-    """``i`` toggles the quiz; ``enter`` answers with the cell under the cursor."""
+    """``i`` toggles the quiz; ``enter`` answers with the cell under the cursor, which a pick
+    in the frontier panel moves."""
 
     quiz = False
     quiz_right = 0
@@ -33,8 +37,8 @@ class QuizActions(AppMixinBase):
         where = f"the {frontier.noun}'s {frontier.next_end}"
         if run.algo.weighted:
             where += f" (the lowest {run.algo.priority_name})"
-        return (f"Quiz: which node comes off the {frontier.noun} next? Put the cursor on it "
-                f"and press enter (it is {where}) · {self._quiz_score()}")
+        return (f"Quiz: which node comes off the {frontier.noun} next? Cursor on it or click "
+                f"its entry, then enter (it is {where}) · {self._quiz_score()}")
 
     def _quiz_score(self) -> str:
         return f"{self.quiz_right} of {self.quiz_asked}"
@@ -44,6 +48,25 @@ class QuizActions(AppMixinBase):
         self.quiz_right = self.quiz_asked = 0
         self.note = self._quiz_question() if self.quiz else ""
         self._show(changed=[])
+        self.refresh_bindings()  # the frontier panel's pick keys come or go
+
+    @property
+    def quiz_panel(self) -> FrontierPanel:
+        """The frontier the quiz asks about: the single view's, or the left pane's."""
+        panes = self.panes
+        return panes[0].frontier if panes else self.frontier_panel
+
+    def _show_pick(self) -> None:
+        """Mark the cursor's entry in the quiz's frontier panel (none outside the quiz)."""
+        self.quiz_panel.set_pick(self.cursor_cell if self.quiz else None)
+
+    def on_frontier_panel_entry_picked(self, message: FrontierPanel.EntryPicked) -> None:
+        """A pick in the quiz's panel moves the cursor there; a double click also answers."""
+        if not self.quiz or message.panel is not self.quiz_panel:
+            return
+        self._move_cursor(message.cell)
+        if message.answer:
+            self.action_answer()
 
     def action_answer(self) -> None:
         """Take the step and mark the guess: the cell under the cursor."""
@@ -71,7 +94,7 @@ class QuizActions(AppMixinBase):
             verdict = f"Right: {cell_text(node)} was {where}"
         else:
             verdict = f"Not quite: {cell_text(node)} came off {where}, not {cell_text(guess)}"
-        self.note = f"{verdict} · {self._quiz_score()} · next: cursor and enter"
+        self.note = f"{verdict} · {self._quiz_score()} · next: cursor or pick, enter"
         self._moved(before)
 
 

@@ -42,6 +42,7 @@ KEYS = (
     ("S  G  e", "cursor to the start / the goal / the node being expanded"),
     ("mouse over", "the line under the map says what the run knows of that cell"),
     ("i  enter", "quiz: predict the node that comes off next (cursor, enter)"),
+    ("click, tab ↑↓", "quiz: pick the frontier entry instead (double click: answer)"),
     ("x", "the tutorial's exercises as live challenges: 1, 2, off"),
     ("t", "next colour theme: " + ", ".join(t.title.lower() for t in THEMES.values())),
     ("ctrl+s", "save the map (to its file, in its format)"),

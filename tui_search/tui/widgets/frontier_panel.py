@@ -15,17 +15,27 @@ priority queue (``f 6.41  g 2.41  h 4.00``; an entry whose cell was pushed again
 is struck out as *stale*).  The first and last lines carry a hint (``← front (next out)`` /
 ``← back (newest)`` for a queue, ``← top (next out)`` / ``← bottom (oldest)`` for a stack) so a
 student sees which end is which.
+
+In the quiz the entries are the answers to pick from: a click on an entry's line, or ``up`` /
+``down`` while the panel has the focus, posts :class:`FrontierPanel.EntryPicked` (a double
+click asks to answer with it too); the app moves its cursor there and tells the panel which
+cell to mark (:meth:`FrontierPanel.set_pick`), so the pick is always the app's cursor.
 """
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, ClassVar
 
 from rich.cells import cell_len
 from rich.style import Style
+from textual import events
+from textual.binding import Binding, BindingType
 from textual.geometry import Size
+from textual.message import Message
 
 from tui_search.engine.algorithms import Frontier
+from tui_search.engine.grid import Cell
 from tui_search.engine.heuristics import octile
 from tui_search.tui.narration import gave_up_text, group_digits
 from tui_search.tui.widgets.line_panel import LinePanel, set_virtual_size
@@ -59,8 +69,32 @@ class FrontierPanel(LinePanel):
         & > .frontier-panel--no-path { color: $text-error; text-style: bold; }
         & > .frontier-panel--discarded { color: $text-error; text-style: strike; }
         & > .frontier-panel--stale { color: $text-muted; text-style: strike; }
+        & > .frontier-panel--picked { background: $primary 35%; }
     }
     """
+
+    PICK = Binding.Group("Pick", compact=True)
+    BINDINGS: ClassVar[list[BindingType]] = [
+        # In the quiz, up / down pick an entry; else (check_action) they scroll, as the
+        # ScrollView's bindings of the same keys (the next binding of a key that is disabled).
+        Binding("up", "pick(-1)", "Pick", group=PICK, tooltip="Quiz: pick the entry above"),
+        Binding("down", "pick(1)", "Pick", group=PICK, tooltip="Quiz: pick the entry below"),
+        Binding("up", "scroll_up", "Scroll Up", show=False),
+        Binding("down", "scroll_down", "Scroll Down", show=False),
+    ]
+
+    @dataclass
+    class EntryPicked(Message):
+        """The quiz: the student picked the entry of ``cell`` (``answer``: and answers with
+        it, a double click)."""
+
+        panel: FrontierPanel
+        cell: Cell
+        answer: bool = False
+
+        @property
+        def control(self) -> FrontierPanel:
+            return self.panel
 
     COMPONENT_CLASSES: ClassVar[set[str]] = {
         "frontier-panel--entry",
@@ -72,6 +106,7 @@ class FrontierPanel(LinePanel):
         "frontier-panel--no-path",
         "frontier-panel--discarded",
         "frontier-panel--stale",
+        "frontier-panel--picked",
     }
     """
     | Class | Description |
@@ -85,6 +120,7 @@ class FrontierPanel(LinePanel):
     | `frontier-panel--no-path` | The line shown when the search ended without a path. |
     | `frontier-panel--discarded` | The entry a discarded step threw away (visit on expand). |
     | `frontier-panel--stale` | A priority-queue entry whose cell was pushed again cheaper. |
+    | `frontier-panel--picked` | The quiz: the entry at the cursor, the answer picked. |
     """
 
     def __init__(self, **widget_args: Any) -> None:  # name, id, classes, disabled
@@ -103,6 +139,7 @@ class FrontierPanel(LinePanel):
         self._count_text = ""  # the first line: "4 in the queue"
         self._discarded_text = ""  # after a discarded step: the entry it threw away
         self._by_cell: list[int] | None = None  # the quiz: the entries sorted by cell
+        self._pick: Cell | None = None  # the quiz: the entry marked as picked (the cursor)
         self.border_title = "Frontier"
 
     # -- the contract with the app ----------------------------------------------------------
@@ -155,8 +192,8 @@ class FrontierPanel(LinePanel):
             events = run.frontier(0, self.QUIZ_ENTRIES)
             self._by_cell = sorted(events, key=lambda g: run.gen_cell(g)[::-1])
         title = run.algo.frontier_title + (" · order hidden" if hide_order else "")
-        self.show_titles(title, ("+ just added" if hide_order else "▶ next out  + just added")
-                         if n else "")
+        subtitle = "+ just added · click picks" if hide_order else "▶ next out  + just added"
+        self.show_titles(title, subtitle if n else "")
         if n:
             self._empty_text = ""
             self._count_text = kind.count_text(group_digits(n))
@@ -175,6 +212,60 @@ class FrontierPanel(LinePanel):
         if moved:
             self.scroll_to(0, 0, animate=False, immediate=True, force=True)
         self.refresh_changed()
+
+    def set_pick(self, cell: Cell | None) -> None:
+        """Mark the entry of ``cell`` as the quiz's pick (None: none), in view when listed."""
+        if cell == self._pick:
+            return
+        self._pick = cell
+        self.refresh()
+        y = self.pick_line()
+        if y is not None:
+            top, height = round(self.scroll_y), self.scrollable_content_region.height
+            if not top <= y < top + height:
+                self.scroll_to(y=y if y < top else y - height + 1, animate=False,
+                               immediate=True)
+
+    def pick_line(self) -> int | None:
+        """The line of the picked entry, or None when it is not listed."""
+        index = self._pick_index()
+        return None if index is None else self._top() + index
+
+    def _pick_index(self) -> int | None:
+        run, cells = self._run, self._by_cell
+        if run is None or cells is None or self._pick is None:
+            return None
+        return next((i for i, g in enumerate(cells) if run.gen_cell(g) == self._pick), None)
+
+    def entry_cell(self, y: int) -> Cell | None:
+        """The quiz: the cell of the entry on line ``y`` of the list, None for other lines."""
+        run, cells = self._run, self._by_cell
+        i = y - self._top()
+        if run is None or cells is None or not self._count or not 0 <= i < len(cells):
+            return None
+        return run.gen_cell(cells[i])
+
+    def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
+        if action == "pick":
+            return bool(self._by_cell) and bool(self._count)
+        return True
+
+    def action_pick(self, delta: int) -> None:
+        """The entry ``delta`` lines from the pick (the first when none is picked)."""
+        cells = self._by_cell
+        if not cells or self._run is None:
+            return
+        index = self._pick_index()
+        index = 0 if index is None else max(0, min(len(cells) - 1, index + delta))
+        self.post_message(self.EntryPicked(self, self._run.gen_cell(cells[index])))
+
+    def on_click(self, event: events.Click) -> None:
+        offset = event.get_content_offset(self)
+        if offset is None:
+            return
+        cell = self.entry_cell(offset.y + round(self.scroll_y))
+        if cell is not None:
+            self.post_message(self.EntryPicked(self, cell, answer=event.chain >= 2))
 
     def _top(self) -> int:
         """Lines above the entries: the count, and the entry a discarded step threw away."""
@@ -281,4 +372,6 @@ class FrontierPanel(LinePanel):
         """The entry expanded next is highlighted across the whole line, like a cursor."""
         if y == self._top() and self._count and self._by_cell is None:
             return Style(bgcolor=self.cached_style("frontier-panel--next").bgcolor)
+        if self._pick is not None and self.entry_cell(y) == self._pick:
+            return Style(bgcolor=self.cached_style("frontier-panel--picked").bgcolor)
         return None
