@@ -2,7 +2,7 @@
 
 One loop serves the three: they differ only in the priority an entry is pushed with (``g``,
 ``h`` or ``g + h``; :func:`~tui_search.engine.heuristics.priority_of`).  The definition is the
-reference loop (:meth:`tui_search.engine.reference.ReferenceSearch._best_first`), and a
+reference loop (:class:`tui_search.engine.reference.ReferenceSearch`), and a
 hypothesis test holds these equal to it, array for array.
 
 The queue is a binary heap of ``(priority, event, cell, g)``: the event number breaks ties, so

@@ -6,41 +6,48 @@ step by step, over random maps and random choices.  The headless command line st
 it keeps only the frontier, the visited cells and the chains of parents the frontier still
 points to, so its memory grows with the map and the frontier, never with the number of steps.
 
-The loop, as in AIMA's ``best_first_search`` with the frontier as a parameter::
+The loop, as in AIMA's ``best_first_search``, takes two parameters: the *frontier*, which
+says which entry comes out next (a FIFO :class:`Queue`, a LIFO :class:`Stack`, or a
+:class:`PriorityQueue`), and what was *reached*, which says which successors are pushed and
+which entries taken off are thrown away (:class:`Visited`, :class:`Cheapest`,
+:class:`Shallowest`, or :class:`OnPath` for tree search)::
 
-    frontier = [root]
+    push the root
     while frontier:
-        node = take(frontier)          # the oldest (FIFO queue) or the newest (LIFO stack)
-        if visit on expand and node.cell was expanded: the step is discarded
+        node = frontier.take()
+        if reached.discards(node): the step is discarded
         if goal test on expand and node.cell is the goal: found
         for each move in the order:
-            skip a cell off the map, blocked, refused by the corner rule, or visited
-            (tree search: on the path from the root to this node)
+            skip a cell off the map, blocked or refused by the corner rule
+            skip it unless reached.admits(it)
             push the child; if goal test on generate and it is the goal: found
 
-Uniform-cost, greedy best-first and A* take the entry of lowest priority (g, h or g + h; ties
-in the order pushed) from a priority queue.  A move costs 1 straight and sqrt(2) diagonally; a
-cell is pushed again whenever it is reached with a lower g than its best so far (lower by
-more than ``CHEAPER_BY``, 1e-9: the floats' rounding is no cheaper path) (even after it
-was expanded: it is *re-opened*), and an entry taken off with a g above its cell's best is
-*stale*: a discarded step.  Tree search keeps no best g: a successor is skipped only when it is
-on the node's own path.  The goal is tested on expansion unless told otherwise.
+BFS takes the oldest entry, DFS the newest.  Uniform-cost, greedy best-first and A* take the
+entry of lowest priority (g, h or g + h; ties in the order pushed).  A move costs 1 straight
+and sqrt(2) diagonally; a cell is pushed again whenever it is reached with a lower g than its
+best so far (lower by more than ``CHEAPER_BY``, 1e-9: the floats' rounding is no cheaper path)
+(even after it was expanded: it is *re-opened*), and an entry taken off with a g above its
+cell's best is *stale*: a discarded step.  Tree search keeps no best g: a successor is skipped
+only when it is on the node's own path.  The goal is tested on expansion unless told otherwise.
 
-Iterative deepening runs a depth-limited DFS with limits 0, 1, 2, ...: a node taken off at the
-limit is expanded with no successors, and within an iteration a cell is pushed again only when
-reached at a smaller depth than before (tree search: when not on the node's own path).  It stops
-with no path when an iteration cuts nothing off at its limit.
+Iterative deepening runs the same loop on a stack with depth limits 0, 1, 2, ...: a node taken
+off at the limit is expanded with no successors, and within an iteration a cell is pushed again
+only when reached at a smaller depth than before (tree search: when not on the node's own
+path).  It stops with no path when an iteration cuts nothing off at its limit.
 """
 
 from __future__ import annotations
 
 import heapq
+import itertools
 from array import array
 from collections import deque
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Generator, Iterator
 from dataclasses import dataclass
+from typing import Protocol
 
-from tui_search.engine.algorithms import Algorithm, Frontier
+from tui_search.engine.algorithms import Algorithm
+from tui_search.engine.algorithms import Frontier as FrontierKind
 from tui_search.engine.grid import DELTAS, Cell, Grid, move_cost
 from tui_search.engine.heuristics import CHEAPER_BY, HEURISTICS, priority_of
 from tui_search.engine.outcome import Outcome
@@ -104,6 +111,141 @@ class Expansion:
 INF = float("inf")
 
 
+# -- the frontier: which entry comes out next ---------------------------------------------------
+class Frontier(Protocol):
+    def __len__(self) -> int: ...
+    def add(self, node: Node) -> None: ...
+    def take(self) -> Node: ...
+
+
+class Queue:
+    """FIFO (BFS): the oldest entry comes out first."""
+
+    def __init__(self) -> None:
+        self.entries: deque[Node] = deque()
+
+    def __len__(self) -> int:
+        return len(self.entries)
+
+    def add(self, node: Node) -> None:
+        self.entries.append(node)
+
+    def take(self) -> Node:
+        return self.entries.popleft()
+
+
+class Stack(Queue):
+    """LIFO (DFS, iterative deepening): the same line of entries, the newest coming out first."""
+
+    def take(self) -> Node:
+        return self.entries.pop()
+
+
+class PriorityQueue:
+    """Uniform-cost, greedy and A*: the lowest priority (g, h or g + h) first, ties in the order
+    pushed (a heap of ``(priority, event, node)``: the event number breaks ties)."""
+
+    def __init__(self, priority: Callable[[float, int, int], float]) -> None:
+        self.priority = priority
+        self.heap: list[tuple[float, int, Node]] = []
+
+    def __len__(self) -> int:
+        return len(self.heap)
+
+    def add(self, node: Node) -> None:
+        heapq.heappush(self.heap, (self.priority(node.g, *node.cell), node.event, node))
+
+    def take(self) -> Node:
+        return heapq.heappop(self.heap)[2]
+
+
+# -- what was reached: which successors are pushed, which entries taken off are discarded -------
+class Reached(Protocol):
+    def admits(self, parent: Node, cell: Cell, g: float) -> bool:
+        """May ``cell``, reached from ``parent`` with cost ``g``, be pushed?"""
+        ...
+
+    def pushed(self, node: Node) -> None: ...
+
+    def discards(self, node: Node) -> bool:
+        """Is ``node``, just taken off, thrown away (a discarded step)?"""
+        ...
+
+
+class OnPath:
+    """Tree search: no visited set; a cell is skipped only when it lies on the path from the
+    root to the node being expanded (that node included).  Nothing is discarded."""
+
+    def admits(self, parent: Node, cell: Cell, g: float) -> bool:
+        return not parent.on_path(cell)
+
+    def pushed(self, node: Node) -> None:
+        pass
+
+    def discards(self, node: Node) -> bool:
+        return False
+
+
+class Visited:
+    """BFS's and DFS's visited set.  Visit on generate: a cell is visited when pushed, so it is
+    never pushed twice.  Visit on expand: when taken off and expanded, so a cell may sit on the
+    frontier several times, and taking off a cell already expanded is a discarded step."""
+
+    def __init__(self, visit: str) -> None:
+        self.on_expand = visit == "expand"
+        self.cells: set[Cell] = set()
+
+    def admits(self, parent: Node, cell: Cell, g: float) -> bool:
+        return cell not in self.cells
+
+    def pushed(self, node: Node) -> None:
+        if not self.on_expand:
+            self.cells.add(node.cell)
+
+    def discards(self, node: Node) -> bool:
+        if not self.on_expand:
+            return False
+        if node.cell in self.cells:
+            return True
+        self.cells.add(node.cell)
+        return False
+
+
+class Cheapest:
+    """The priority queue's rule: a cell is pushed again whenever it is reached with a lower g
+    than its best so far (lower by more than ``CHEAPER_BY``), even after it was expanded (it
+    is re-opened); an entry taken off with a g above its cell's best is stale: discarded."""
+
+    def __init__(self) -> None:
+        self.best: dict[Cell, float] = {}
+
+    def admits(self, parent: Node, cell: Cell, g: float) -> bool:
+        return g + CHEAPER_BY < self.best.get(cell, INF)
+
+    def pushed(self, node: Node) -> None:
+        self.best[node.cell] = node.g
+
+    def discards(self, node: Node) -> bool:
+        return node.g > self.best[node.cell]
+
+
+class Shallowest:
+    """Iterative deepening, within one iteration: a cell is pushed again when reached at a
+    smaller depth than before.  An entry reached shallower since is still expanded."""
+
+    def __init__(self) -> None:
+        self.best: dict[Cell, int] = {}
+
+    def admits(self, parent: Node, cell: Cell, g: float) -> bool:
+        return parent.depth + 1 < self.best.get(cell, INF)
+
+    def pushed(self, node: Node) -> None:
+        self.best[node.cell] = node.depth
+
+    def discards(self, node: Node) -> bool:
+        return False
+
+
 class ReferenceSearch:
     """Iterate over it for the steps; afterwards ``goal`` is the goal's node or None.
 
@@ -125,34 +267,54 @@ class ReferenceSearch:
         # Per cell, a bit per move of the order that is legal from it (-1: not worked out
         # yet): the moves never change during a search, and two bytes a cell keep it small.
         self._legal_bits = array("h", [-1]) * (grid.width * grid.height)
-        self._order = [(move, DELTAS[move]) for move in semantics.order]
+        # A move costs 1 straight and sqrt(2) diagonally, to the searches ordered by cost; BFS,
+        # DFS and iterative deepening count moves, not costs: their g stays 0.
+        self._order = [(move, DELTAS[move], move_cost(move) if algorithm.weighted else 0.0)
+                       for move in semantics.order]
 
     def __iter__(self) -> Iterator[Expansion]:
         if self.algorithm.iterative:
             return self._deepening()
+        return self._loop(self._frontier(), self._reached())
+
+    def _frontier(self) -> Frontier:
         if self.algorithm.priority is not None:
-            return self._best_first(self.algorithm.priority)
-        return self._search()
+            goal = self.grid.goal
+            assert goal is not None  # checked in __init__
+            heuristic = HEURISTICS[self.semantics.heuristic]
+            return PriorityQueue(priority_of(self.algorithm.priority, heuristic, goal))
+        return Queue() if self.algorithm.frontier is FrontierKind.FIFO else Stack()
+
+    def _reached(self) -> Reached:
+        if self.semantics.tree_search:
+            return OnPath()
+        if self.algorithm.iterative:
+            return Shallowest()
+        if self.algorithm.priority is not None:
+            return Cheapest()
+        return Visited(self.semantics.visit)
 
     # -- moves -------------------------------------------------------------------------------
-    def _legal(self, cell: Cell) -> list[tuple[str, Cell]]:
-        """The legal moves from ``cell`` (``Grid.neighbours``), in order, with their cells."""
+    def _legal(self, cell: Cell) -> list[tuple[str, Cell, float]]:
+        """The legal moves from ``cell`` (``Grid.neighbours``), in order, with their cells and
+        costs."""
         x, y = cell
         i = y * self.grid.width + x
         bits = self._legal_bits[i]
         if bits < 0:
             legal = {move for move, _ in self.grid.neighbours(
                 cell, self.semantics.order, self.semantics.corners)}
-            bits = sum(1 << j for j, (move, _) in enumerate(self._order) if move in legal)
+            bits = sum(1 << j for j, (move, _, _) in enumerate(self._order) if move in legal)
             self._legal_bits[i] = bits
-        return [(move, (x + dx, y + dy)) for j, (move, (dx, dy)) in enumerate(self._order)
-                if bits >> j & 1]
+        return [(move, (x + dx, y + dy), cost)
+                for j, (move, (dx, dy), cost) in enumerate(self._order) if bits >> j & 1]
 
-    def _push(self, frontier: list[Node] | deque[Node], cell: Cell, parent: Node | None,
-              move: str | None) -> Node:
-        node = Node(self.generated, cell, parent, move, parent.depth + 1 if parent else 0)
+    def _push(self, frontier: Frontier, reached: Reached, cell: Cell, parent: Node | None,
+              move: str | None, g: float) -> Node:
+        node = Node(self.generated, cell, parent, move, parent.depth + 1 if parent else 0, g)
         self.generated += 1
-        frontier.append(node)
+        frontier.add(node)
+        reached.pushed(node)
         self.max_frontier = max(self.max_frontier, len(frontier))
         return node
 
@@ -162,152 +324,56 @@ class ReferenceSearch:
             return True
         return False
 
-    # -- BFS and DFS ---------------------------------------------------------------------------
-    def _search(self) -> Iterator[Expansion]:
-        sem = self.semantics
-        fifo = self.algorithm.frontier is Frontier.FIFO
-        frontier: deque[Node] | list[Node] = deque() if fifo else []
-        take = frontier.popleft if isinstance(frontier, deque) else frontier.pop
-        graph = not sem.tree_search
-        visited: set[Cell] = set()  # pushed (visit on generate) or expanded (visit on expand)
-        root = self._push(frontier, self.grid.start, None, None)  # type: ignore[arg-type]
-        if graph and sem.visit == "generate":
-            visited.add(root.cell)
+    # -- the loop ----------------------------------------------------------------------------
+    def _loop(self, frontier: Frontier, reached: Reached, limit: int | None = None
+              ) -> Generator[Expansion, None, bool]:
+        """The generic loop.  With a depth ``limit`` (iterative deepening) a node taken off at
+        the limit is expanded with no successors; the loop returns whether one was (a deeper
+        search may find more), and False when it found the goal."""
+        root = self._push(frontier, reached, self.grid.start, None, None, 0.0)  # type: ignore[arg-type]
         if self._is_goal_pushed(root):
-            return
-        k = 0
+            return False
+        first_step = self.expanded + self.discarded + 1  # steps are numbered across iterations
+        cut_off = False
         while frontier:
-            node = take()
-            k += 1
-            if graph and sem.visit == "expand":
-                if node.cell in visited:
-                    self.discarded += 1
-                    yield Expansion(k, node, (), True, False, len(frontier))
-                    continue
-                visited.add(node.cell)
-            self.expanded += 1
-            if self.goal_test == "expand" and node.cell == self.grid.goal:
-                self.goal = node
-                yield Expansion(k, node, (), False, True, len(frontier))
-                return
-            added = []
-            found = False
-            for move, cell in self._legal(node.cell):
-                if not graph:
-                    if node.on_path(cell):
-                        continue
-                elif cell in visited:
-                    continue
-                elif sem.visit == "generate":
-                    visited.add(cell)
-                child = self._push(frontier, cell, node, move)
-                added.append(child)
-                if self._is_goal_pushed(child):
-                    found = True
-                    break
-            yield Expansion(k, node, tuple(added), False, found, len(frontier))
-            if found:
-                return
-
-    # -- uniform-cost, greedy best-first and A* ----------------------------------------------
-    def _best_first(self, order: str) -> Iterator[Expansion]:
-        graph = not self.semantics.tree_search
-        goal = self.grid.goal
-        assert goal is not None  # checked in __init__
-        priority = priority_of(order, HEURISTICS[self.semantics.heuristic], goal)
-        queue: list[tuple[float, int, Node]] = []  # (priority, event, node): ties oldest first
-        best: dict[Cell, float] = {}  # graph search: the lowest g each cell was reached with
-
-        def push(cell: Cell, parent: Node | None, move: str | None, g: float) -> Node:
-            node = Node(self.generated, cell, parent, move, parent.depth + 1 if parent else 0, g)
-            self.generated += 1
-            heapq.heappush(queue, (priority(g, *cell), node.event, node))
-            self.max_frontier = max(self.max_frontier, len(queue))
-            best[cell] = g
-            return node
-
-        root = push(self.grid.start, None, None, 0.0)  # type: ignore[arg-type]
-        if self._is_goal_pushed(root):
-            return
-        k = 0
-        while queue:
-            node = heapq.heappop(queue)[2]
-            k += 1
-            if graph and node.g > best[node.cell]:  # stale: its cell was reached cheaper since
+            node = frontier.take()
+            k = self.expanded + self.discarded + 1
+            new_root = root if limit and k == first_step else None  # a new iteration began
+            if reached.discards(node):
                 self.discarded += 1
-                yield Expansion(k, node, (), True, False, len(queue))
+                yield Expansion(k, node, (), True, False, len(frontier), limit, new_root)
                 continue
             self.expanded += 1
             if self.goal_test == "expand" and node.cell == self.grid.goal:
                 self.goal = node
-                yield Expansion(k, node, (), False, True, len(queue))
-                return
+                yield Expansion(k, node, (), False, True, len(frontier), limit, new_root)
+                return False
             added = []
             found = False
-            for move, cell in self._legal(node.cell):
-                g = node.g + move_cost(move)
-                if graph:
-                    if g + CHEAPER_BY >= best.get(cell, INF):
+            if limit is not None and node.depth >= limit:
+                cut_off = True  # at the depth limit: expanded with no successors
+            else:
+                for move, cell, cost in self._legal(node.cell):
+                    g = node.g + cost
+                    if not reached.admits(node, cell, g):
                         continue
-                elif node.on_path(cell):
-                    continue
-                child = push(cell, node, move, g)
-                added.append(child)
-                if self._is_goal_pushed(child):
-                    found = True
-                    break
-            yield Expansion(k, node, tuple(added), False, found, len(queue))
+                    child = self._push(frontier, reached, cell, node, move, g)
+                    added.append(child)
+                    if self._is_goal_pushed(child):
+                        found = True
+                        break
+            yield Expansion(k, node, tuple(added), False, found, len(frontier), limit, new_root)
             if found:
-                return
+                return False
+        return cut_off
 
-    # -- iterative deepening -------------------------------------------------------------------
+    # -- iterative deepening: the loop again and again -----------------------------------------
     def _deepening(self) -> Iterator[Expansion]:
-        sem = self.semantics
-        k, limit = 0, 0
-        while True:
+        for limit in itertools.count():
             self.iterations += 1
-            stack: list[Node] = []
-            root = self._push(stack, self.grid.start, None, None)  # type: ignore[arg-type]
-            if self._is_goal_pushed(root):
-                return
-            best = {root.cell: 0}  # the smallest depth each cell was reached at, this iteration
-            cut_off = False
-            new_root: Node | None = root if limit else None
-            while stack:
-                node = stack.pop()
-                k += 1
-                self.expanded += 1
-                if self.goal_test == "expand" and node.cell == self.grid.goal:
-                    self.goal = node
-                    yield Expansion(k, node, (), False, True, len(stack), limit, new_root)
-                    return
-                added = []
-                found = False
-                if node.depth >= limit:
-                    cut_off = True
-                else:
-                    depth = node.depth + 1
-                    for move, cell in self._legal(node.cell):
-                        if sem.tree_search:
-                            if node.on_path(cell):
-                                continue
-                        elif best.get(cell, limit + 1) <= depth:
-                            continue
-                        best[cell] = depth
-                        child = self._push(stack, cell, node, move)
-                        added.append(child)
-                        if self._is_goal_pushed(child):
-                            found = True
-                            break
-                yield Expansion(k, node, tuple(added), False, found, len(stack), limit, new_root)
-                new_root = None
-                if found:
-                    return
+            cut_off = yield from self._loop(self._frontier(), self._reached(), limit)
             if not cut_off:
                 return
-            limit += 1
-
-
 
 
 def stream(
