@@ -8,6 +8,7 @@ relative).  Prints a line per file and the count; exit 1 when any row misses.
     python benchmarks/optima.py --only arena,den312d --searches astar:octile
     python benchmarks/optima.py --log optima.jsonl  # resumable: rows already in the log are
                                                     # not run again (the whole check is ~5 CPU-hours)
+    python benchmarks/optima.py --log optima.jsonl --reverse  # beside it: from the other end
 
 The maps folder is ``TUI_SEARCH_MAPS`` (default ``/work/shared/maps/movingai``; the test suite
 checks a spread of rows on the copies in ``tests/data/movingai``).  The rows run on every CPU
@@ -101,6 +102,9 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--searches", default=",".join(SEARCHES),
                     help=f"comma-separated (default {','.join(SEARCHES)})")
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
+    ap.add_argument("--reverse", action="store_true",
+                    help="check each file's rows from its last (a second run sharing the log "
+                    "meets the first in the middle)")
     ap.add_argument("--log", type=Path, help="append each batch of rows checked to this file "
                     "(JSON lines), and skip the rows it already holds")
     args = ap.parse_args(argv)
@@ -121,6 +125,8 @@ def main(argv: list[str] | None = None) -> int:
             picked = list(range(0, n, max(1, args.every)))
             earlier = done.get(scen.name, {})
             todo = [i for i in picked if i not in earlier]
+            if args.reverse:
+                todo.reverse()
             t = time.perf_counter()
             batches = [todo[i:i + BATCH] for i in range(0, len(todo), BATCH)]
             futures = {pool.submit(check_rows, str(map_path), str(scen), b, searches): b
