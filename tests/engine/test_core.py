@@ -20,10 +20,10 @@ from tests.engine.test_run import snapshot
 from tests.engine.test_search import random_grids
 from tests.helpers import TUTORIAL_ROWS, grid_from_rows, reference_distances
 from tui_search.engine.algorithms import ALGORITHMS, get_algorithm
-from tui_search.engine.grid import DIRECTIONS, Grid
+from tui_search.engine.grid import DIRECTIONS, Cell, Grid
 from tui_search.engine.heuristics import HEURISTICS
 from tui_search.engine.reference import ReferenceSearch, stream
-from tui_search.engine.run import Run
+from tui_search.engine.run import CellState, Run
 from tui_search.engine.search import (
     Problem,
     Record,
@@ -295,6 +295,52 @@ def test_moving_to_step_k_works_the_same_for_every_choice(grid, choice, targets,
             fresh.forward()
         assert snapshot(run) == snapshot(fresh)
         assert (run.discarded, run.frontier_len()) == (fresh.discarded, fresh.frontier_len())
+
+
+def reference_expanded(grid: Grid, key: str, sem: Semantics, limit: int) -> list[set[Cell]]:
+    """For each k, the cells the reference's non-discarded steps among the first k expanded
+    (in step k's iteration: iterative deepening begins each one afresh)."""
+    sets: list[set[Cell]] = [set()]
+    for step in ReferenceSearch(grid, get_algorithm(key), sem):
+        if step.index > limit:
+            break
+        cells = set() if step.new_root is not None else set(sets[-1])
+        if not step.discarded:
+            cells.add(step.node.cell)
+        sets.append(cells)
+    return sets
+
+
+def assert_expanded_as_the_reference(grid: Grid, key: str, sem: Semantics, targets: list[int],
+                                     rebuild: int) -> None:
+    """At each of ``targets`` (mod the run's steps), in turn, then at every step forwards and
+    backwards: the cells the run counts and colours expanded are those the reference
+    expanded by then."""
+    run = Run(grid, key, sem, 400)
+    run.REBUILD_AFTER = rebuild
+    run.advance()
+    expanded = reference_expanded(grid, key, sem, 400)
+    n = run.total + 1
+    assert len(expanded) == n
+    for k in itertools.chain((t % n for t in targets), range(n), reversed(range(n))):
+        run.goto(k)
+        cells = [(x, y) for y in range(grid.height) for x in range(grid.width)]
+        assert {c for c in cells if run.times_reached(c)[1]} == expanded[k]
+        coloured = {(x, y) for y in range(grid.height)
+                    for x, state in enumerate(run.row_states(y)) if state == CellState.EXPANDED}
+        shown_apart = {run.current_node()} | set(run.path() or () if run.at_end else ())
+        assert coloured == expanded[k] - shown_apart
+
+
+@settings(max_examples=200, deadline=None)
+@given(random_grids(max_side=6), semantics(),
+       st.lists(st.integers(0, 400), min_size=1, max_size=6), st.sampled_from([0, 3, 10**9]))
+def test_a_cell_is_expanded_from_its_real_expansion_at_any_step(grid, choice, targets,
+                                                                 rebuild) -> None:
+    """The cells the run counts and colours expanded at step k, reached either way, are those
+    of the reference's expansions in its first k steps: a discarded step expands nothing (a
+    greedy search's stale entry can come off before its cell is ever expanded)."""
+    assert_expanded_as_the_reference(grid, *choice, targets, rebuild)
 
 
 @core

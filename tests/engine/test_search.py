@@ -150,10 +150,14 @@ def test_iddfs_steps_carry_the_depth_limit_and_restart_from_the_root() -> None:
 
 
 @st.composite
-def random_grids(draw, max_side: int = 9) -> Grid:
-    w = draw(st.integers(1, max_side))
-    h = draw(st.integers(1, max_side))
-    cells = draw(st.lists(st.booleans(), min_size=w * h, max_size=w * h))
+def random_grids(draw, max_side: int = 9, walls_one_in: int = 2, min_side: int = 1) -> Grid:
+    """A map of ``min_side`` to ``max_side`` a side, about one cell in ``walls_one_in`` an
+    obstacle."""
+    w = draw(st.integers(min_side, max_side))
+    h = draw(st.integers(min_side, max_side))
+    cell = (st.booleans() if walls_one_in == 2
+            else st.integers(0, walls_one_in - 1).map(lambda v: v == walls_one_in - 1))
+    cells = draw(st.lists(cell, min_size=w * h, max_size=w * h))
     grid = Grid(w, h, bytearray(1 if c else 0 for c in cells))
     sx, sy = draw(st.integers(0, w - 1)), draw(st.integers(0, h - 1))
     gx, gy = draw(st.integers(0, w - 1)), draw(st.integers(0, h - 1))

@@ -9,10 +9,11 @@ from tests.tui.test_app import ARENA, MAPS, stats, sync, tutorial_app, wait_unti
 from tui_search.engine.grid import Grid
 from tui_search.engine.heuristics import INADMISSIBLE
 from tui_search.engine.mapfile import load_map, load_scenario
-from tui_search.engine.run import Run
+from tui_search.engine.run import CellState, Run
 from tui_search.engine.semantics import Semantics
 from tui_search.tui.app import SearchApp
 from tui_search.tui.narration import narrate
+from tui_search.tui.readout import describe
 from tui_search.tui.screens.settings import SettingsScreen
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 
@@ -133,7 +134,10 @@ def test_a_cell_only_taken_off_stale_is_not_narrated_re_opened() -> None:
     run = Run(grid, "greedy", Semantics(heuristic="manhattan"))
     run.goto(17)
     assert run.current_node() == (4, 1) and run.is_discarded(17)
-    assert run.times_reached((4, 1)) == (2, 1)  # taken off once: the stale entry
+    assert run.times_reached((4, 1)) == (2, 0)  # taken off once, stale: not expanded
+    run.goto(18)  # the map and the readout: still waiting on the frontier, not expanded
+    assert run.row_states(1)[4] == CellState.FRONTIER
+    assert describe(run, grid, (4, 1)).startswith("(4,1): on the frontier since step 12,")
     run.goto(19)
     assert narrate(run) == ("Expanded (3,2) h = 5.00 (g 2.41): added E, NE; "
                             "(4,2) reached with a lower g, (4,1) reached with a lower g")

@@ -19,7 +19,7 @@ record) plus three counters per cell of the map.
 from __future__ import annotations
 
 from array import array
-from bisect import bisect_right
+from bisect import bisect_left, bisect_right
 from collections.abc import Iterator, Sequence
 from enum import IntEnum
 from typing import Any
@@ -49,7 +49,10 @@ class Run(RecordedTree):
         algorithm's key, the semantics and the step limit."""
         super().__init__(*args, **kwargs)
         size = len(self.problem.walls)
-        # Per-cell counters at the current position: generation events and expansions.
+        # Per-cell counters at the current position: generation events and expansions.  A
+        # discarded step is no expansion: visit on expand takes off a cell expanded before, but
+        # greedy best-first takes equal h in push order, so a cell's stale (costlier) entry can
+        # come off before its cheaper one is ever expanded -- the cell is not expanded yet.
         # (``array * n`` fills in C: a third of the time of copying ``bytes(4 * n)`` in)
         self._n_gen = array("i", [0]) * size
         self._n_exp = array("i", [0]) * size
@@ -89,7 +92,8 @@ class Run(RecordedTree):
             self._clear_iteration(it - 1, k - 1)
             self._enter_iteration(it)
         g = rec.exp(k)
-        self._n_exp[rec.gen_node[g]] += 1
+        if not self.is_discarded(k):  # a discarded step expands nothing (see _n_exp)
+            self._n_exp[rec.gen_node[g]] += 1
         n_gen, gen_node, last = self._n_gen, rec.gen_node, self._last
         succ = self.succ_range(k)
         for h in succ:
@@ -111,7 +115,8 @@ class Run(RecordedTree):
             before = self.previous_same(h)
             latest[p] = before if before >= root else -1
         g = rec.exp(k)
-        self._n_exp[gen_node[g]] -= 1
+        if not self.is_discarded(k):
+            self._n_exp[gen_node[g]] -= 1
         self._frontier.backward(g, succ)
         self.k = k - 1
         it = self.iteration_of(k)
@@ -203,9 +208,14 @@ class Run(RecordedTree):
             for lo in range(first, last + 1, piece):
                 yield self._expanded_events(lo, min(lo + piece, last + 1) - 1)
 
-        for events in expanded():
+        discarded = rec.discarded
+        for lo in range(first, last + 1, piece):
+            hi = min(lo + piece, last + 1)
+            events = self._expanded_events(lo, hi - 1)
             for g in events:
                 n_exp[gen_node[g]] += 1
+            for s in discarded[bisect_left(discarded, lo) : bisect_left(discarded, hi)]:
+                n_exp[gen_node[rec.exp(s)]] -= 1  # taken off, but not expanded
             done += len(events)
             yield done / total
         for work in frontier.rebuild_pieces(root, end, expanded()):
@@ -292,7 +302,8 @@ class Run(RecordedTree):
         return super().peak_frontier(self.k if k is None else k)
 
     def times_reached(self, cell: Cell) -> tuple[int, int]:
-        """How often ``cell`` was generated and taken off the frontier, up to the position."""
+        """How often ``cell`` was generated and expanded (discarded steps not counted), up to
+        the position, in the iteration shown."""
         p = self.problem.pad(cell)
         return self._n_gen[p], self._n_exp[p]
 

@@ -56,29 +56,18 @@ def costs_text(run: Run, g: int) -> str:
 def _reopened(run: Run, added: range) -> list[str]:
     """What the step's pushes did to cells pushed before (a cost-ordered search pushes a cell
     again only with a lower g): "(4,4) re-opened with a lower g" when it had been expanded,
-    "(4,4) reached with a lower g" when it was still waiting (or only taken off stale)."""
+    "(4,4) reached with a lower g" when it was still waiting (or only taken off stale: greedy
+    search takes equal priorities in push order, so a cell's costlier entry can come off
+    before its cheaper one, and a discarded step is no expansion)."""
     out = []
     for h in added:
         cell = run.gen_cell(h)
-        generated, taken_off = run.times_reached(cell)
-        if taken_off and _was_expanded(run, h):
+        generated, expanded = run.times_reached(cell)
+        if expanded:
             out.append(f"{cell_text(cell)} re-opened with a lower g")
         elif generated > 1:
             out.append(f"{cell_text(cell)} reached with a lower g")
     return out
-
-
-def _was_expanded(run: Run, h: int) -> bool:
-    """Was an earlier event of event ``h``'s cell expanded before the step shown?  A stale
-    entry taken off and discarded does not count: greedy search takes equal priorities in
-    push order, so a cell's costlier entry can come off (stale) before its cheaper one."""
-    e = run.previous_same(h)
-    while e >= 0:
-        step = run.expanded_at(e)
-        if step is not None and step < run.k and not run.is_discarded(step):
-            return True
-        e = run.previous_same(e)
-    return False
 
 
 def _node_text(run: Run, g: int) -> str:
