@@ -92,10 +92,10 @@ class Run(RecordedTree):
             self._clear_iteration(it - 1, k - 1)
             self._enter_iteration(it)
         g = rec.exp(k)
-        if not self.is_discarded(k):  # a discarded step expands nothing (see _n_exp)
+        succ = self.succ_range(k)
+        if succ or not self.is_discarded(k):  # a discarded step expands nothing (see _n_exp)
             self._n_exp[rec.gen_node[g]] += 1
         n_gen, gen_node, last = self._n_gen, rec.gen_node, self._last
-        succ = self.succ_range(k)
         for h in succ:
             p = gen_node[h]
             n_gen[p] += 1
@@ -115,7 +115,7 @@ class Run(RecordedTree):
             before = self.previous_same(h)
             latest[p] = before if before >= root else -1
         g = rec.exp(k)
-        if not self.is_discarded(k):
+        if succ or not self.is_discarded(k):  # a step that added successors was no discard
             self._n_exp[gen_node[g]] -= 1
         self._frontier.backward(g, succ)
         self.k = k - 1
@@ -208,14 +208,14 @@ class Run(RecordedTree):
             for lo in range(first, last + 1, piece):
                 yield self._expanded_events(lo, min(lo + piece, last + 1) - 1)
 
-        discarded = rec.discarded
+        discarded, step_exp = rec.discarded, rec.step_exp
         for lo in range(first, last + 1, piece):
             hi = min(lo + piece, last + 1)
             events = self._expanded_events(lo, hi - 1)
             for g in events:
                 n_exp[gen_node[g]] += 1
             for s in discarded[bisect_left(discarded, lo) : bisect_left(discarded, hi)]:
-                n_exp[gen_node[rec.exp(s)]] -= 1  # taken off, but not expanded
+                n_exp[gen_node[step_exp[s]]] -= 1  # taken off, but not expanded
             done += len(events)
             yield done / total
         for work in frontier.rebuild_pieces(root, end, expanded()):
