@@ -92,6 +92,18 @@ async def wait_until(pilot, condition: Callable[[], bool], seconds: float = 20.0
         await pilot.pause(0.02)
 
 
+async def click_shown(pilot, selector: str) -> None:
+    """Click the widget ``selector`` of the screen on top once it is laid out: on a loaded
+    machine a screen just pushed can take longer than a pause to get its regions."""
+
+    def shown() -> bool:
+        found = pilot.app.screen.query(selector)
+        return bool(found) and found.first().region.area > 0
+
+    await wait_until(pilot, shown)
+    await pilot.click(selector)
+
+
 # -- start-up ----------------------------------------------------------------------------
 
 

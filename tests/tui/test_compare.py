@@ -145,6 +145,7 @@ async def test_the_settings_pick_what_c_compares() -> None:
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("comma")
+        await wait_until(pilot, lambda: isinstance(app.screen, SettingsScreen))
         screen = app.screen
         assert isinstance(screen, SettingsScreen)
         screen.query_one("#compare-dfs").value = False
@@ -298,6 +299,7 @@ async def test_the_settings_in_compare_mode_are_for_every_search_compared() -> N
     app = compare_app("bfs,astar")
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("comma")
+        await wait_until(pilot, lambda: isinstance(app.screen, SettingsScreen))
         screen = app.screen
         assert screen.query_one("#heuristic").disabled is False  # for A*
         assert screen.query_one("#visit").disabled is False  # for BFS

@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 from tests.textual_internals import notifications
-from tests.tui.test_app import MAPS, SIZE, sync
+from tests.tui.test_app import MAPS, SIZE, click_shown, sync
 from tui_search.engine.mapfile import format_text_map, load_map
 from tui_search.tui.app import SearchApp
 from tui_search.tui.screens.confirm_overwrite import ConfirmOverwriteScreen
@@ -156,11 +156,11 @@ async def test_the_overwrite_question_answers_the_mouse(tmp_path: Path) -> None:
     app = untitled()
     async with app.run_test(size=SIZE) as pilot:
         await save_as(pilot, str(other))
-        await pilot.click("#another")
+        await click_shown(pilot, "#another")
         await pilot.pause()
         assert isinstance(app.screen, SaveAsScreen) and other.read_text() == "keep\n"
         await pilot.press("enter")
-        await pilot.click("#overwrite")
+        await click_shown(pilot, "#overwrite")
         await pilot.pause()
         assert app.map_path == other and other.read_text() != "keep\n"
 

@@ -5,7 +5,7 @@ the settings and the inadmissible warning."""
 from __future__ import annotations
 
 from tests.helpers import grid_from_rows
-from tests.tui.test_app import ARENA, MAPS, stats, sync, tutorial_app, wait_until
+from tests.tui.test_app import ARENA, MAPS, click_shown, stats, sync, tutorial_app, wait_until
 from tui_search.engine.grid import Grid
 from tui_search.engine.heuristics import INADMISSIBLE
 from tui_search.engine.mapfile import load_map, load_scenario
@@ -148,12 +148,13 @@ async def test_the_heuristic_is_a_setting_and_an_inadmissible_one_is_named() -> 
     app = tutorial_app("astar")
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("comma")
+        await wait_until(pilot, lambda: isinstance(app.screen, SettingsScreen))
         screen = app.screen
         assert isinstance(screen, SettingsScreen)
-        await pilot.click("#heuristic-manhattan")
+        await click_shown(pilot, "#heuristic-manhattan")
         await pilot.pause()
         assert "inadmissible" in str(screen.query_one("#heuristic-explain").render())
-        await pilot.click("#apply")
+        await click_shown(pilot, "#apply")
         await pilot.pause()
         assert app.search_run.semantics.heuristic == "manhattan"
         status = stats(app)[0]
@@ -173,7 +174,7 @@ async def test_switching_to_a_star_keeps_its_own_goal_test() -> None:
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("comma")
         await wait_until(pilot, lambda: isinstance(app.screen, SettingsScreen))
-        await pilot.click("#apply")
+        await click_shown(pilot, "#apply")
         await wait_until(pilot, lambda: not isinstance(app.screen, SettingsScreen))
         await pilot.press("6")
         await wait_until(pilot, lambda: app.search_run.algo.key == "astar")

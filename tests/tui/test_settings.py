@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from tests.tui.test_app import TUTORIAL, stats, sync, tutorial_app, wait_until
+from tests.tui.test_app import TUTORIAL, click_shown, stats, sync, tutorial_app, wait_until
 from tui_search.engine.mapfile import load_map
 from tui_search.engine.semantics import Semantics
 from tui_search.tui.app import SearchApp
@@ -22,9 +22,9 @@ async def test_settings_apply_starts_a_new_run_at_step_0() -> None:
         await pilot.press("n", "n")
         first = app.search_run
         await pilot.press("comma")
-        assert isinstance(app.screen, SettingsScreen)
+        await wait_until(pilot, lambda: isinstance(app.screen, SettingsScreen))
         await pilot.press("right", "right", "enter")  # corners has the focus: never
-        await pilot.click("#apply")
+        await click_shown(pilot, "#apply")
         await pilot.pause()
         assert not isinstance(app.screen, SettingsScreen)
         run = app.search_run
@@ -42,10 +42,8 @@ async def test_cancel_and_escape_change_nothing() -> None:
         await pilot.press("comma", "right", "enter", "escape")
         assert app.search_run is first and first.k == 1 and app.semantics == Semantics()
         await pilot.press("comma")
-        # the screen laid out (a loaded machine can take longer than a pause) before the click
-        await wait_until(pilot, lambda: isinstance(app.screen, SettingsScreen)
-                         and app.screen.query_one("#cancel").region.area > 0)
-        await pilot.click("#cancel")
+        await wait_until(pilot, lambda: isinstance(app.screen, SettingsScreen))
+        await click_shown(pilot, "#cancel")
         await wait_until(pilot, lambda: not isinstance(app.screen, SettingsScreen))
         assert app.search_run is first
 
@@ -55,11 +53,12 @@ async def test_a_bad_move_order_is_shown_and_not_applied() -> None:
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("comma")
+        await wait_until(pilot, lambda: isinstance(app.screen, SettingsScreen))
         screen = app.screen
         order = screen.query_one("#order")
         order.value = "N,UP"
         await pilot.pause()
-        await pilot.click("#apply")
+        await click_shown(pilot, "#apply")
         await pilot.pause()
         assert app.screen is screen  # still open
         assert "unknown direction 'UP'" in str(screen.query_one("#order-error").render())
@@ -76,13 +75,14 @@ async def test_tree_search_greys_out_the_visit_rule_and_defaults_restore_all() -
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("comma")
+        await wait_until(pilot, lambda: isinstance(app.screen, SettingsScreen))
         screen = app.screen
-        await pilot.click("#visit-expand")
-        await pilot.click("#tree_search")
+        await click_shown(pilot, "#visit-expand")
+        await click_shown(pilot, "#tree_search")
         await pilot.pause()
         assert screen.query_one("#visit").disabled
         assert screen.chosen() == Semantics(tree_search=True)  # visit does not apply
-        await pilot.click("#defaults")
+        await click_shown(pilot, "#defaults")
         await pilot.pause()
         assert screen.chosen() == Semantics() and not screen.query_one("#visit").disabled
 

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from tests.tui.test_app import tutorial_app
+from tests.tui.test_app import click_shown, tutorial_app
 
 SIZE = (100, 32)
 
@@ -33,7 +33,7 @@ def test_tree_search_greys_out_the_visit_rule(snap_compare) -> None:
         for _ in range(5):
             if box.value:
                 break
-            await pilot.click("#tree_search")
+            await click_shown(pilot, "#tree_search")
             for _ in range(20):
                 await pilot.pause()
                 if box.value:
