@@ -26,7 +26,8 @@ async def test_the_quiz_hides_the_order_asks_and_keeps_a_score() -> None:
         front = app.search_run.frontier(0, 1)[0]
         answer = app.search_run.gen_cell(front)
         await pilot.press("i")
-        assert app.quiz and stats(app)[1].startswith("Quiz: which node comes off the queue next?")
+        assert app.quiz and stats(app)[1].startswith(
+            "Quiz (0 of 0): which node comes off the queue next?")
         lines = panel_text(app)
         assert not any("▶" in line or "front" in line for line in lines)
         assert app.query_one(FrontierPanel).border_title.endswith("· order hidden")

@@ -37,8 +37,9 @@ class QuizActions(AppMixinBase):
         where = f"the {frontier.noun}'s {frontier.next_end}"
         if run.algo.weighted:
             where += f" (the lowest {run.algo.priority_name})"
-        return (f"Quiz: which node comes off the {frontier.noun} next? Cursor on it or click "
-                f"its entry, then enter (it is {where}) · {self._quiz_score()}")
+        # the score first: on a narrow screen the line's end is cut, and the hint can go
+        return (f"Quiz ({self._quiz_score()}): which node comes off the {frontier.noun} next? "
+                f"Cursor on it or click its entry, then enter (it is {where})")
 
     def _quiz_score(self) -> str:
         return f"{self.quiz_right} of {self.quiz_asked}"
