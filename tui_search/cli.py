@@ -98,9 +98,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--tree-search", action="store_true",
                    help="no visited set: skip only cells on the node's own path")
     p.add_argument("--compare", metavar="A,B",
-                   help="with --headless: run two to four searches on the map and print a "
-                   "table (e.g. bfs,dfs or astar:manhattan,ucs: an informed search may name "
-                   "its heuristic)")
+                   help="two to four searches side by side in the app (compare mode); with "
+                   "--headless, run them on the map and print a table (e.g. bfs,dfs or "
+                   "astar:manhattan,ucs: an informed search may name its heuristic)")
     p.add_argument("--exercise", metavar="N", type=int, choices=sorted(QUOTES),
                    help="the tutorial's exercise N as a live challenge in the app; with "
                    "--headless, grade the map on it (1: BFS "

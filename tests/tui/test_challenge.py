@@ -2,8 +2,9 @@
 
 from __future__ import annotations
 
-from tests.tui.test_app import MAPS, TUTORIAL, sync, tutorial_app
+from tests.tui.test_app import MAPS, TUTORIAL, sync, tutorial_app, wait_until
 from tui_search.cli import main
+from tui_search.engine.exercises import LIVE_CELLS, check, tutorial_grid
 from tui_search.engine.grid import Grid
 from tui_search.engine.mapfile import load_map
 from tui_search.tui.app import SearchApp
@@ -63,9 +64,31 @@ async def test_exercise_two_on_its_shipped_solution_and_a_big_map() -> None:
     async with app.run_test(size=SIZE):
         assert challenge(app).verdict.solved
         assert "BFS's path has 5 moves, DFS's 8" in challenge(app).text
-    big = SearchApp(Grid(300, 300, start=(0, 0), goal=(299, 299)), exercise=1)
-    async with big.run_test(size=SIZE):
-        assert challenge(big).verdict is None and "--headless --exercise" in challenge(big).text
+
+
+@sync
+async def test_a_big_map_is_checked_in_the_background_once_the_edits_pause() -> None:
+    """Over LIVE_CELLS cells the check runs in a thread: "Checking" at once, the verdict the
+    headless grading gives once it is done; an edit meanwhile makes the old verdict stale (not
+    shown) and a new check gives the edited map's."""
+    grid = Grid(150, 150, start=(0, 0), goal=(149, 149))
+    assert grid.width * grid.height > LIVE_CELLS
+    big = SearchApp(grid, exercise=1)
+    async with big.run_test(size=SIZE) as pilot:
+        assert challenge(big).verdict is None and "Checking" in challenge(big).text
+        await wait_until(pilot, lambda: challenge(big).verdict is not None)
+        want = check(1, grid.copy(), tutorial_grid())
+        assert challenge(big).verdict == want
+        assert f"{want.bfs.expanded:,}" in challenge(big).text
+        # two edits in a row (the goal moved next to the start, then one further): the first
+        # one's check is cancelled or its verdict stale; the verdict is the last map's
+        await pilot.press("right", "g")
+        assert challenge(big).verdict is None and "Checking" in challenge(big).text
+        await pilot.press("right", "g")
+        assert big.grid.goal == (2, 0)
+        await wait_until(pilot, lambda: challenge(big).verdict is not None)
+        edited = check(1, big.grid.copy(), tutorial_grid())
+        assert challenge(big).verdict == edited and edited != want
 
 
 def test_exercise_without_headless_opens_the_app(monkeypatch) -> None:

@@ -198,3 +198,19 @@ async def test_in_compare_mode_the_left_panes_frontier_picks() -> None:
         await pilot.press("enter")
         assert (app.quiz_right, app.quiz_asked) == (1, 1)
         assert app.stats.narration_text.startswith(f"Right: ({answer[0]},{answer[1]}) was")
+
+
+@sync
+async def test_the_quiz_key_stays_in_a_narrow_key_bar_while_the_quiz_is_on() -> None:
+    """At 100 columns the bar leaves the quiz's hint out (it matters less than most), but
+    while the quiz is on its key is the way out, so it is kept; off again, it goes."""
+    app = tutorial_app()
+    async with app.run_test(size=(100, 30)) as pilot:
+        def shown() -> list[str]:
+            return [desc for _, desc, _ in app.query_one(KeyBar).shown_hints()]
+
+        assert "Quiz" not in shown() and "Help" in shown()
+        await pilot.press("i")
+        assert "Quiz" in shown() and "Help" in shown() and "Quit" in shown()
+        await pilot.press("i")
+        assert "Quiz" not in shown()

@@ -12,7 +12,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from dataclasses import replace
 from pathlib import Path
-from time import perf_counter
+from time import perf_counter, sleep
 from typing import ClassVar
 
 from textual import events
@@ -22,9 +22,17 @@ from textual.command import Provider
 from textual.containers import Grid as GridBox
 from textual.containers import Vertical
 from textual.widgets import Static
+from textual.worker import get_current_worker
 
 from tui_search.engine.algorithms import ALGORITHMS, DEFAULT_ALGORITHM, get_algorithm
-from tui_search.engine.exercises import LIVE_CELLS, Contender, check, parse_compare, tutorial_grid
+from tui_search.engine.exercises import (
+    LIVE_CELLS,
+    Contender,
+    Verdict,
+    check,
+    parse_compare,
+    tutorial_grid,
+)
 from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.run import MAX_STEPS, Run
 from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
@@ -62,6 +70,9 @@ PANE_MIN_HEIGHT = 16
 LOCKSTEP = ("Lockstep: n steps every search not done yet, p steps back the latest, "
             "end runs them all to the end · 1-6 add or take out a search · c one search")
 NEEDS_ENDPOINTS = "Place a start (s) and a goal (g) to search"
+#: On a map too big to check an exercise at each edit, the check waits for the edits to pause
+#: this long (seconds): a mouse stroke is an edit a cell.
+EXERCISE_PAUSE = 0.3
 #: What the key bar keeps when it is too narrow for every hint: the highest; help and quit
 #: always (the bar drops the lowest first).
 KEY_IMPORTANCE = {
@@ -417,8 +428,8 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
         self._arrange_panes(self.size.width, self.size.height)
 
     def _check_exercise(self) -> None:
-        """The challenge panel's verdict on the map as it is now (two whole searches, so only
-        on maps of at most ``LIVE_CELLS`` cells)."""
+        """The challenge panel's verdict on the map as it is now: two whole searches, at once
+        on a map of at most ``LIVE_CELLS`` cells, else in a thread once the edits pause."""
         screen = self.screen_stack[0]
         screen.set_class(self.exercise is not None, "-challenge")
         if self.exercise is None:
@@ -428,11 +439,30 @@ class SearchApp(EditActions, FileActions, QuizActions, App[int]):
         if grid.start is None or grid.goal is None:
             panel.show(self.exercise, None, "Place a start (s) and a goal (g) to check it.")
         elif grid.width * grid.height > LIVE_CELLS:
-            panel.show(self.exercise, None, f"Checked on maps of up to {LIVE_CELLS:,} cells: "
-                       "grade this one with --headless --exercise.")
+            panel.show(self.exercise, None, f"Checking on this map ({group_digits(grid.width)}"
+                       f" × {group_digits(grid.height)})…")
+            exercise, copy = self.exercise, grid.copy()
+            self.run_worker(lambda: self._check_big(exercise, copy), thread=True,
+                            exclusive=True, group="exercise")
         else:
             panel.show(self.exercise, check(self.exercise, grid, tutorial_grid(),
                                             self.max_steps))
+
+    def _check_big(self, exercise: int, grid: Grid) -> None:
+        """(In a thread.)  Check ``exercise`` on ``grid``, a copy of the map as it was, once
+        no edit has come for a moment (each edit starts a new check and cancels this one), and
+        show the verdict if the map and the exercise are still the same."""
+        sleep(EXERCISE_PAUSE)
+        if get_current_worker().is_cancelled:
+            return
+        verdict = check(exercise, grid, tutorial_grid(), self.max_steps)
+        self.call_from_thread(self._show_big_verdict, exercise, grid, verdict)
+
+    def _show_big_verdict(self, exercise: int, grid: Grid, verdict: Verdict) -> None:
+        now = self.grid
+        if exercise == self.exercise and (grid.start, grid.goal) == (now.start, now.goal) \
+                and grid.blocked == now.blocked:
+            self.screen_stack[0].query_one(ChallengePanel).show(exercise, verdict)
 
     def _benchmark_cost(self) -> float | None:
         """The benchmark's lowest cost, if it applies to the map and the rules as they are."""

@@ -15,6 +15,7 @@ from __future__ import annotations
 from tui_search.engine.grid import Cell
 from tui_search.tui.mixin import AppMixinBase
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
+from tui_search.tui.widgets.key_bar import KeyBar
 
 
 def cell_text(cell: Cell) -> str:
@@ -50,6 +51,7 @@ class QuizActions(AppMixinBase):
         self.note = self._quiz_question() if self.quiz else ""
         self._show(changed=[])
         self.refresh_bindings()  # the frontier panel's pick keys come or go
+        self.query_one(KeyBar).raise_hint("quiz", self.quiz)  # its key ends it: in sight
 
     @property
     def quiz_panel(self) -> FrontierPanel:

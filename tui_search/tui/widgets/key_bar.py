@@ -26,6 +26,10 @@ from textual.widget import Widget
 Hint = tuple[list[tuple[str, str, bool]], str, bool]
 
 
+#: The importance of a raised hint: above every other but help's and quit's (10).
+RAISED = 9
+
+
 class KeyBar(Widget):
     """One line of key hints for the active bindings of the screen."""
 
@@ -62,7 +66,20 @@ class KeyBar(Widget):
         #: How much each action's hint matters (by action name, without parameters): when
         #: the bar is too narrow, the lowest go first; an action not listed counts 0.
         self.importance: Mapping[str, int] = importance or {}
+        #: Actions whose hint matters most for now (a mode that is on: its key ends it), kept
+        #: in sight before all but the ones of importance 10 (help and quit).
+        self.raised: frozenset[str] = frozenset()
         self._spans: list[tuple[int, int, str]] = []  # (start, end, key) of each hint drawn
+
+    def raise_hint(self, action: str, raised: bool) -> None:
+        """Keep ``action``'s hint in sight (``raised``), or back to its own importance."""
+        now = self.raised | {action} if raised else self.raised - {action}
+        if now != self.raised:
+            self.raised = now
+            self.refresh()
+
+    def _importance(self, action: str) -> int:
+        return RAISED if action in self.raised else self.importance.get(action, 0)
 
     def on_mount(self) -> None:
         self.screen.bindings_updated_signal.subscribe(self, self._bindings_changed)
@@ -115,7 +132,7 @@ class KeyBar(Widget):
         ]
         kept = list(range(len(hints)))
         while len(kept) > 1 and sum(sizes[i] for i in kept) + 2 * (len(kept) - 1) > width:
-            kept.remove(min(reversed(kept), key=lambda i: self.importance.get(hints[i][1], 0)))
+            kept.remove(min(reversed(kept), key=lambda i: self._importance(hints[i][1])))
         return [hints[i][0] for i in kept]
 
     def render(self) -> Text:
