@@ -8,10 +8,9 @@ from __future__ import annotations
 
 import argparse
 import gc
-import json
 import sys
 from pathlib import Path
-from typing import IO, NoReturn
+from typing import IO, TYPE_CHECKING, NoReturn
 
 from tui_search import __version__
 from tui_search.engine.algorithms import ALGORITHMS, DEFAULT_ALGORITHM, get_algorithm
@@ -41,10 +40,12 @@ from tui_search.engine.mapfile import (
     parse_map_text,
 )
 from tui_search.engine.outcome import Outcome
-from tui_search.engine.reference import Expansion, stream
 from tui_search.engine.run import MAX_STEPS, Run, Step
 from tui_search.engine.semantics import CORNER_RULES, GOAL_TESTS, VISIT_RULES, Semantics
 from tui_search.launch import collector_paused
+
+if TYPE_CHECKING:
+    from tui_search.engine.reference import Expansion
 from tui_search.tui.themes import THEMES  # plain data: no Textual
 
 EXIT_FOUND, EXIT_NO_PATH, EXIT_BAD_INPUT, EXIT_GAVE_UP = 0, 1, 2, 3
@@ -230,7 +231,7 @@ def trace_line(step: Step) -> str:
         obj["depth_limit"] = step.depth_limit
     if step.discarded:
         obj["discarded"] = True
-    return json.dumps(obj, separators=(", ", ": ")) + "\n"
+    return to_json(obj, separators=(", ", ": ")) + "\n"
 
 
 def _as_step(step: Expansion) -> Step:
@@ -247,6 +248,8 @@ def search_headless(grid: Grid, key: str, semantics: Semantics, max_steps: int,
     parents it points to.  The two are held equal by a property test."""
     algorithm = get_algorithm(key)
     if algorithm.iterative or semantics.tree_search:
+        from tui_search.engine.reference import stream  # not imported at start-up
+
         write = None if out is None else (lambda step: out.write(trace_line(_as_step(step))))
         return stream(grid, algorithm, semantics, max_steps, write)
     run = Run(grid, key, semantics, max_steps)
@@ -280,6 +283,13 @@ def benchmark_text(outcome: Outcome, scenario: Scenario) -> str:
     if verdict is None:
         return text
     return text + (": this path is optimal" if verdict else ": this path costs more")
+
+
+def to_json(obj: object, **options: object) -> str:
+    """``json.dumps`` (json is imported for the headless output, not at the app's start-up)."""
+    import json
+
+    return json.dumps(obj, **options)  # type: ignore[arg-type]
 
 
 def json_summary(outcome: Outcome, scenario: Scenario | None = None) -> dict:
@@ -374,7 +384,7 @@ def run_headless(args: argparse.Namespace, grid: Grid, path: Path | None) -> int
         outcome = search(None)
     scenario = getattr(args, "scenario", None)
     if args.json:
-        print(json.dumps(json_summary(outcome, scenario)))
+        print(to_json(json_summary(outcome, scenario)))
     elif args.trace != "-":
         blocked_by = None
         if not outcome.found and not outcome.gave_up and not semantics.is_default:
@@ -412,7 +422,7 @@ def run_compare(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
     outcomes = [search_headless(grid, c.algorithm, c.semantics, args.max_steps, None)
                 for c in contenders]
     if args.json:
-        print(json.dumps({"runs": [json_summary(o, getattr(args, "scenario", None))
+        print(to_json({"runs": [json_summary(o, getattr(args, "scenario", None))
                                    for o in outcomes]}))
     else:
         print(f"Comparison on {where}:")
@@ -428,7 +438,7 @@ def run_exercise(args: argparse.Namespace, grid: Grid, path: Path | None) -> int
     _need_endpoints(grid, where)
     verdict: Verdict = check(args.exercise, grid, tutorial_grid(), args.max_steps)
     if args.json:
-        print(json.dumps({"map": where, **verdict.as_json()}))
+        print(to_json({"map": where, **verdict.as_json()}))
     else:
         print(f"{where}: exercise {verdict.exercise} "
               f"{'solved' if verdict.solved else 'not solved'} — {verdict.reason}")

@@ -21,10 +21,12 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from itertools import compress
-
-from sortedcontainers import SortedList
+from typing import TYPE_CHECKING
 
 from tui_search.engine.algorithms import Frontier
+
+if TYPE_CHECKING:
+    from sortedcontainers import SortedList
 
 #: Events a piece of a bulk rebuild handles (a few milliseconds of work).
 PIECE = 1 << 14
@@ -132,11 +134,15 @@ class PriorityFrontier:
     event's g from its generating step's, which is then looked up once a step."""
 
     def __init__(self, keys: Callable[[Sequence[int]], list[float]]) -> None:
+        # imported with the first priority queue, not at start-up (~2 ms)
+        from sortedcontainers import SortedList
+
+        self._sorted = SortedList
         self.keys = keys
         self.queue: SortedList = SortedList()
 
     def reset(self, root: int) -> None:
-        self.queue = SortedList([(self.keys((root,))[0], root)])
+        self.queue = self._sorted([(self.keys((root,))[0], root)])
 
     def forward(self, g: int, succ: range) -> None:
         _, first = self.queue.pop(0)
@@ -164,7 +170,7 @@ class PriorityFrontier:
             entries.extend(zip(keys(open_), open_))
 
         yield from _open_events(root, end, expanded, take)
-        self.queue = SortedList(entries)
+        self.queue = self._sorted(entries)
         yield end - root
 
     def __len__(self) -> int:

@@ -17,7 +17,6 @@ their session.
 
 from __future__ import annotations
 
-import json
 import os
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -69,6 +68,8 @@ class Config:
         except OSError as err:
             return cls(path, problem=_using_defaults(where, f"cannot read it: {os_reason(err)}"),
                        keep=True)
+        import json  # only when there is a file (start-up)
+
         try:
             data = json.loads(text)
         except json.JSONDecodeError as err:
@@ -97,6 +98,8 @@ class Config:
         if not self.writable:
             self.data = data
             return None
+        import json
+
         try:
             self.path.parent.mkdir(parents=True, exist_ok=True)
             write_atomically(str(self.path),
