@@ -285,11 +285,11 @@ def benchmark_text(outcome: Outcome, scenario: Scenario) -> str:
     return text + (": this path is optimal" if verdict else ": this path costs more")
 
 
-def to_json(obj: object, **options: object) -> str:
+def to_json(obj: object, separators: tuple[str, str] | None = None) -> str:
     """``json.dumps`` (json is imported for the headless output, not at the app's start-up)."""
     import json
 
-    return json.dumps(obj, **options)  # type: ignore[arg-type]
+    return json.dumps(obj, separators=separators)
 
 
 def json_summary(outcome: Outcome, scenario: Scenario | None = None) -> dict:
