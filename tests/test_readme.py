@@ -145,8 +145,8 @@ async def _tab_row_holds() -> None:
     app = SearchApp(grid, path=MOVINGAI / "arena.map")
     async with app.run_test(size=(120, 36)) as pilot:
         await pilot.press(*"n" * 60)
-        run, queue, tree = app.search_run, app.frontier_panel, app.tree_panel
-        assert run is not None and app.focused is app.view
+        run, queue, tree = app.session.run, app.main.panes[0].frontier, app.main.panes[0].tree_panel
+        assert run is not None and app.focused is app.main.views[0]
         await pilot.press("tab", "pagedown", "down")  # the queue scrolls, the step stays
         assert app.focused is queue and queue.scroll_offset.y > 1 and run.k == 60
         await pilot.press("n")  # the next step brings the queue back to its front
@@ -155,9 +155,9 @@ async def _tab_row_holds() -> None:
         assert app.focused is tree and run.k == 61
         assert tree.max_scroll_y > 0 and tree.scroll_offset.y == tree.max_scroll_y
         await pilot.press("home", "l")  # home scrolls back up; l still moves the cursor
-        assert tree.scroll_offset.y == 0 and run.k == 61 and app.cursor_cell == (45, 45)
+        assert tree.scroll_offset.y == 0 and run.k == 61 and app.session.cursor == (45, 45)
         await pilot.press("tab")
-        assert app.focused is app.view
+        assert app.focused is app.main.views[0]
         await pilot.press("shift+tab", "shift+tab")
         assert app.focused is queue
         await pilot.click(tree)

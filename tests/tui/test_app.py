@@ -25,7 +25,9 @@ from tui_search.engine.mapfile import format_text_map, load_map, load_scenario
 from tui_search.engine.run import Run
 from tui_search.engine.search import CHUNK
 from tui_search.tui import playback
-from tui_search.tui.app import NEEDS_ENDPOINTS, SearchApp
+from tui_search.tui.app import SearchApp
+from tui_search.tui.screens.main import MainScreen
+from tui_search.tui.session import NEEDS_ENDPOINTS
 from tui_search.tui.screens.confirm_quit import ConfirmQuitScreen
 from tui_search.tui.screens.help import HelpScreen
 from tui_search.tui.screens.save_as import SaveAsScreen
@@ -76,7 +78,7 @@ def stats(app: SearchApp) -> tuple[str, str]:
 def screen_state(app: SearchApp) -> tuple:
     """Everything a step changes: position, counts, frontier, map, status lines, and the
     terminal as composited (which shows any line a step forgot to repaint)."""
-    run = app.search_run
+    run = app.session.run
     assert run is not None
     panel = app.query_one(FrontierPanel)
     screen = re.sub(r"terminal-\d+-", "terminal-", app.export_screenshot())
@@ -112,11 +114,11 @@ async def test_starts_paused_at_step_0_with_the_cursor_on_the_start() -> None:
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
         await pilot.pause()
-        assert app.search_run is not None
-        app._tick()  # a playback tick: paused, it moves nothing
-        assert app.search_run.k == 0
-        assert not app.playing
-        assert app.cursor_cell == (0, 0)
+        assert app.session.run is not None
+        app.main._tick()  # a playback tick: paused, it moves nothing
+        assert app.session.run.k == 0
+        assert not app.session.playing
+        assert app.session.cursor == (0, 0)
         assert isinstance(app.focused, GridView)
         status, narration = stats(app)
         assert status.startswith("BFS │ step 0/22")
@@ -132,16 +134,16 @@ async def test_a_map_without_start_and_goal_opens_and_waits_for_them() -> None:
     grid = Grid(8, 5)
     app = SearchApp(grid)
     async with app.run_test(size=SIZE) as pilot:
-        assert app.search_run is None
+        assert app.session.run is None
         assert stats(app)[1] == NEEDS_ENDPOINTS
-        assert app.check_action("next", ()) is None
+        assert app.main.check_action("next", ()) is None
         await pilot.press("n", "space", "end")  # nothing to do: no crash
         await pilot.press("s", "right", "right", "down", "g")
-        assert app.search_run is not None
+        assert app.session.run is not None
         assert (grid.start, grid.goal) == ((0, 0), (2, 1))
         await pilot.press("end")
-        await wait_until(pilot, lambda: app.search_run.at_end)
-        assert app.search_run.path() == [(0, 0), (1, 1), (2, 1)]
+        await wait_until(pilot, lambda: app.session.run.at_end)
+        assert app.session.run.path() == [(0, 0), (1, 1), (2, 1)]
 
 
 # -- the cursor --------------------------------------------------------------------------
@@ -152,13 +154,13 @@ async def test_arrows_and_hjkl_move_the_cursor_and_stop_at_the_edges() -> None:
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("right", "right", "down")
-        assert app.cursor_cell == (2, 1)
+        assert app.session.cursor == (2, 1)
         await pilot.press("l", "j", "j", "h", "k")
-        assert app.cursor_cell == (2, 2)
+        assert app.session.cursor == (2, 2)
         await pilot.press(*["up"] * 5, *["left"] * 5)
-        assert app.cursor_cell == (0, 0)
+        assert app.session.cursor == (0, 0)
         await pilot.press(*["l"] * 9, *["j"] * 9)
-        assert app.cursor_cell == (5, 5)
+        assert app.session.cursor == (5, 5)
         assert app.query_one(GridView).cursor == (5, 5)
 
 
@@ -170,10 +172,10 @@ async def test_n_expands_one_node_and_narrates_it_in_the_tutorials_words() -> No
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("n")
-        assert app.search_run.k == 1
+        assert app.session.run.k == 1
         assert stats(app)[1] == "Expanded START (0,0): added S to the queue"
         await pilot.press("n", "n", "n")
-        assert app.search_run.k == 4
+        assert app.session.run.k == 4
         assert stats(app)[1] == "Expanded (1,2): added E, NE to the queue"
         assert "queue 4 (peak 4)" in stats(app)[0]
 
@@ -230,19 +232,19 @@ async def test_p_at_step_0_and_n_at_the_end_are_greyed_out_and_do_nothing() -> N
         bindings = app.screen.active_bindings
         assert bindings["p"].enabled is False and bindings["home"].enabled is False
         assert bindings["n"].enabled is True
-        assert app.check_action("prev", ()) is None
+        assert app.main.check_action("prev", ()) is None
         await pilot.press("p")
-        assert app.search_run.k == 0
+        assert app.session.run.k == 0
         await pilot.press("end")
-        await wait_until(pilot, lambda: app.search_run.at_end)
+        await wait_until(pilot, lambda: app.session.run.at_end)
         await pilot.pause()
         bindings = app.screen.active_bindings
         assert bindings["n"].enabled is False and bindings["end"].enabled is False
         assert bindings["space"].enabled is True  # space plays again from step 0
         assert bindings["p"].enabled is True
-        total = app.search_run.k
+        total = app.session.run.k
         await pilot.press("n")
-        assert app.search_run.k == total
+        assert app.session.run.k == total
 
 
 @sync
@@ -250,8 +252,8 @@ async def test_home_and_end_go_to_the_first_and_last_step() -> None:
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("end")
-        await wait_until(pilot, lambda: app.search_run.at_end)
-        run = app.search_run
+        await wait_until(pilot, lambda: app.session.run.at_end)
+        run = app.session.run
         assert run.k == 22 and run.found
         assert stats(app)[1] == (
             "Goal (5,2) found from (5,1) · path: 7 moves, cost 8.66 (the lowest) · generated 24 of "
@@ -267,7 +269,7 @@ async def test_no_path_is_reported_when_the_frontier_empties() -> None:
     app = SearchApp(load_map(MAPS / "no-path.txt"), MAPS / "no-path.txt")
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("end")
-        await wait_until(pilot, lambda: app.search_run.at_end)
+        await wait_until(pilot, lambda: app.session.run.at_end)
         status, narration = stats(app)
         assert narration.endswith("Frontier empty: no path")
         assert status.endswith("│ speed 5/s")
@@ -307,22 +309,22 @@ async def test_end_on_a_big_map_runs_in_slices_and_keys_are_still_answered(
     recorded = slices_of_one_chunk(monkeypatch)
     app = SearchApp(open_grid(30, 30), algorithm="iddfs")  # 67,105 steps: 17 chunks
     seen: list[tuple[bool, str]] = []  # (seeking, narration) when the cursor key was handled
-    move = app.action_move
+    move = app.main.action_move
 
     def spy(dx: int, dy: int) -> None:
-        seen.append((app.seeking, stats(app)[1]))
+        seen.append((app.session.seeking, stats(app)[1]))
         move(dx, dy)
 
-    app.action_move = spy  # type: ignore[method-assign]
+    app.main.action_move = spy  # type: ignore[method-assign]
     async with app.run_test(size=SIZE) as pilot:
-        first = app.search_run.recorded
+        first = app.session.run.recorded
         post_keys(app, "end", "right")
-        await wait_until(pilot, lambda: seen and not app.seeking)
-        run = app.search_run
+        await wait_until(pilot, lambda: seen and not app.session.seeking)
+        run = app.session.run
         assert run.at_end and run.found and run.k == run.total == 67_105
         assert "Computing" not in stats(app)[1]
         assert stats(app)[1].startswith("Goal (29,29) found from (28,28) · path")
-        assert app.cursor_cell == (1, 0)
+        assert app.session.cursor == (1, 0)
     assert seen and seen[0][0], "the cursor key waited for the whole seek"
     assert seen[0][1].startswith("Computing the search…")
     # Several slices, each recording one chunk, the last one the end of the search.
@@ -339,12 +341,12 @@ async def test_a_step_key_during_end_stops_the_seek_where_it_is(
     app = SearchApp(open_grid(30, 30), algorithm="iddfs")
     async with app.run_test(size=SIZE) as pilot:
         post_keys(app, "end", "n")
-        run = app.search_run
+        run = app.session.run
         await wait_until(pilot, lambda: run.k == 1)
         assert recorded, "end started a seek"
-        assert not app.seeking and not run.at_end and not run.done
+        assert not app.session.seeking and not run.at_end and not run.done
         slices, steps = len(recorded), run.recorded
-        app._seek_slice(run)  # what the seek's pending timer calls: it records no more
+        app.main._seek_slice()  # what the seek's pending timer calls: it records no more
         assert run.k == 1 and run.recorded == steps and len(recorded) == slices
         assert not stats(app)[1].startswith("Computing")
 
@@ -368,8 +370,8 @@ async def test_a_step_repaints_only_the_lines_it_changed() -> None:
         await pilot.press("n", "n", "n")
         painted, refreshed_all = watch_repaints(app.query_one(GridView))
         await pilot.pause()
-        app.action_next()  # what the step itself repaints (not focus or hover events)
-        assert app.search_run.k == 4
+        app.main.action_next()  # what the step itself repaints (not focus or hover events)
+        assert app.session.run.k == 4
         assert painted and set(painted) <= {4, 5, 6, 7}
         assert not any(a == () for a in refreshed_all), "a whole-view refresh"
 
@@ -384,11 +386,11 @@ async def test_a_step_repaints_every_line_it_changes(algorithm: str) -> None:
     for grid, steps in ((load_map(TUTORIAL), 25), (open_grid(40, 40, start=(20, 20)), 12)):
         app = SearchApp(grid, algorithm=algorithm)
         async with app.run_test(size=SIZE) as pilot:
-            run = app.search_run
+            run = app.session.run
             run.advance()
             steps = min(steps, run.recorded)
             for forward in [True] * steps + [False] * steps:
-                app.action_next() if forward else app.action_prev()
+                app.main.action_next() if forward else app.main.action_prev()
                 await settle(pilot)
                 assert composited(app) == await repainted(pilot), (forward, run.k)
 
@@ -398,18 +400,18 @@ async def test_space_plays_and_pauses() -> None:
     app = SearchApp(open_grid(60, 60))
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("plus", "plus", "plus")  # 50 steps/s: 2 steps a tick
-        assert playback.steps_per_tick(playback.SPEEDS[app.speed_index]) == 2
+        assert playback.steps_per_tick(playback.SPEEDS[app.session.speed_index]) == 2
         await pilot.press("space")
-        run = app.search_run
-        assert app.playing
+        run = app.session.run
+        assert app.session.playing
         k = run.k
-        app._tick()  # what the playback timer calls
+        app.main._tick()  # what the playback timer calls
         assert run.k == k + 2
         await wait_until(pilot, lambda: run.k > k + 2)  # and the timer calls it by itself
         await pilot.press("space")
         k = run.k
-        assert not app.playing
-        app._tick()  # paused: a tick moves nothing
+        assert not app.session.playing
+        app.main._tick()  # paused: a tick moves nothing
         assert run.k == k
 
 
@@ -419,30 +421,30 @@ async def test_playback_at_top_speed_skips_frames_and_stops_at_the_end() -> None
     async with app.run_test(size=SIZE) as pilot:
         for _ in playback.SPEEDS:
             await pilot.press("plus")
-        assert playback.SPEEDS[app.speed_index] == playback.SPEEDS[-1]
-        assert app.check_action("faster", ()) is None
+        assert playback.SPEEDS[app.session.speed_index] == playback.SPEEDS[-1]
+        assert app.main.check_action("faster", ()) is None
         assert playback.steps_per_tick(playback.SPEEDS[-1]) > 1000  # frames are skipped
         await pilot.press("space")
-        run = app.search_run
+        run = app.session.run
         k = run.k
-        app._tick()
+        app.main._tick()
         assert run.k - k > 1  # one frame, many steps
         await wait_until(pilot, lambda: run.at_end, 60)  # a guard against hanging
-        assert not app.playing
+        assert not app.session.playing
 
 
 @sync
 async def test_plus_and_minus_change_the_speed_within_its_bounds() -> None:
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
-        i = app.speed_index
+        i = app.session.speed_index
         await pilot.press("plus")
-        assert app.speed_index == i + 1
+        assert app.session.speed_index == i + 1
         assert "speed 10/s" in stats(app)[0]
         for _ in range(len(playback.SPEEDS)):
             await pilot.press("minus")
-        assert app.speed_index == 0
-        assert app.check_action("slower", ()) is None
+        assert app.session.speed_index == 0
+        assert app.main.check_action("slower", ()) is None
         assert "speed 1/s" in stats(app)[0]
 
 
@@ -454,17 +456,17 @@ async def test_1_2_3_switch_algorithm_and_restart_on_the_same_map() -> None:
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("n", "n")
-        first = app.search_run
+        first = app.session.run
         await pilot.press("2")
-        assert app.algorithm == "dfs" and app.search_run is not first
-        assert app.search_run.k == 0
+        assert app.session.algorithm == "dfs" and app.session.run is not first
+        assert app.session.run.k == 0
         assert app.query_one(FrontierPanel).border_title.startswith("Stack (LIFO)")
         assert stats(app)[0].startswith("DFS")
         await pilot.press("3")
-        assert app.search_run.algorithm == "iddfs"
+        assert app.session.run.algorithm == "iddfs"
         assert "depth limit 0" in stats(app)[0]
         await pilot.press("1")
-        assert app.search_run.algorithm == "bfs"
+        assert app.session.run.algorithm == "bfs"
         assert app.query_one(FrontierPanel).border_title.startswith("Queue (FIFO)")
 
 
@@ -473,9 +475,9 @@ async def test_r_makes_a_fresh_run_at_step_0() -> None:
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("n", "n", "n")
-        old = app.search_run
+        old = app.session.run
         await pilot.press("r")
-        assert app.search_run is not old and app.search_run.k == 0
+        assert app.session.run is not old and app.session.run.k == 0
         assert stats(app)[1].startswith("START (0,0) is on the queue")
 
 
@@ -488,13 +490,13 @@ async def test_s_and_g_move_start_and_goal_and_restart_the_search() -> None:
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("n", "n")
         await pilot.press("down", "down", "s")
-        assert app.grid.start == (0, 2) and app.dirty
-        assert app.search_run.k == 0 and app.search_run.grid.start == (0, 2)
+        assert app.session.grid.start == (0, 2) and app.session.dirty
+        assert app.session.run.k == 0 and app.session.run.grid.start == (0, 2)
         await pilot.press("right", "g")
-        assert app.grid.goal == (1, 2)
+        assert app.session.grid.goal == (1, 2)
         await pilot.press("end")
-        await wait_until(pilot, lambda: app.search_run.at_end)
-        assert app.search_run.path() == [(0, 2), (1, 2)]
+        await wait_until(pilot, lambda: app.session.run.at_end)
+        assert app.session.run.path() == [(0, 2), (1, 2)]
         assert "modified" in app.query_one(GridView).border_title
 
 
@@ -503,15 +505,15 @@ async def test_start_on_an_obstacle_or_on_the_goal_is_refused_with_a_notificatio
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("right", "s")  # (1,0) is an obstacle
-        assert app.grid.start == (0, 0) and not app.dirty
+        assert app.session.grid.start == (0, 0) and not app.session.dirty
         await pilot.pause()
         assert any("obstacle" in n.message for n in notifications(app))
-        app.cursor_cell = (5, 2)  # the goal
+        app.session.cursor = (5, 2)  # the goal
         await pilot.press("s")
-        assert app.grid.start == (0, 0)
+        assert app.session.grid.start == (0, 0)
         assert any("on the goal" in n.message for n in notifications(app))
         await pilot.press("o")  # an obstacle on the goal
-        assert not app.grid.is_blocked((5, 2))
+        assert not app.session.grid.is_blocked((5, 2))
 
 
 @sync
@@ -519,17 +521,17 @@ async def test_o_toggles_an_obstacle_and_the_new_run_searches_the_edited_map() -
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("end")
-        await wait_until(pilot, lambda: app.search_run.at_end)
-        assert (1, 2) in app.search_run.path()
-        app.cursor_cell = (1, 2)
+        await wait_until(pilot, lambda: app.session.run.at_end)
+        assert (1, 2) in app.session.run.path()
+        app.session.cursor = (1, 2)
         await pilot.press("o")
-        assert app.grid.is_blocked((1, 2)) and app.dirty
-        assert app.search_run.k == 0 and app.search_run.grid.is_blocked((1, 2))
+        assert app.session.grid.is_blocked((1, 2)) and app.session.dirty
+        assert app.session.run.k == 0 and app.session.run.grid.is_blocked((1, 2))
         await pilot.press("end")
-        await wait_until(pilot, lambda: app.search_run.at_end)
-        assert (1, 2) not in (app.search_run.path() or [])
+        await wait_until(pilot, lambda: app.session.run.at_end)
+        assert (1, 2) not in (app.session.run.path() or [])
         await pilot.press("o")
-        assert not app.grid.is_blocked((1, 2))
+        assert not app.session.grid.is_blocked((1, 2))
 
 
 def at(view: GridView, x: int, y: int) -> tuple[int, int]:
@@ -546,13 +548,13 @@ async def test_clicking_a_cell_moves_the_cursor_and_toggles_an_obstacle() -> Non
         await pilot.pause()  # laid out: the cells have their size
         view = app.query_one(GridView)
         await pilot.click(GridView, offset=at(view, 2, 3))
-        assert app.cursor_cell == (2, 3)
-        assert app.grid.is_blocked((2, 3)) is False  # (2,3) was an obstacle: erased
-        assert app.dirty and app.search_run.k == 0
+        assert app.session.cursor == (2, 3)
+        assert app.session.grid.is_blocked((2, 3)) is False  # (2,3) was an obstacle: erased
+        assert app.session.dirty and app.session.run.k == 0
         await pilot.click(GridView, offset=at(view, 2, 3))
-        assert app.grid.is_blocked((2, 3)) is True
+        assert app.session.grid.is_blocked((2, 3)) is True
         await pilot.click(GridView, offset=at(view, 0, 0))  # the start: cursor only
-        assert app.cursor_cell == (0, 0) and not app.grid.is_blocked((0, 0))
+        assert app.session.cursor == (0, 0) and not app.session.grid.is_blocked((0, 0))
 
 
 @sync
@@ -561,7 +563,7 @@ async def test_right_click_moves_the_cursor_only() -> None:
     async with app.run_test(size=SIZE) as pilot:
         await pilot.pause()  # laid out: the cells have their size
         await pilot.click(GridView, offset=at(app.query_one(GridView), 3, 4), button=3)
-        assert app.cursor_cell == (3, 4) and not app.dirty
+        assert app.session.cursor == (3, 4) and not app.session.dirty
 
 
 @sync
@@ -574,17 +576,17 @@ async def test_click_and_drag_draws_then_erases_obstacles() -> None:
         for x in range(1, 5):
             await pilot.hover(GridView, offset=at(view, x, 5))
         await pilot.mouse_up(GridView, offset=at(view, 4, 5))
-        assert [app.grid.is_blocked((x, 5)) for x in range(6)] == [True] * 5 + [False]
-        assert app.search_run.grid.is_blocked((4, 5))
+        assert [app.session.grid.is_blocked((x, 5)) for x in range(6)] == [True] * 5 + [False]
+        assert app.session.run.grid.is_blocked((4, 5))
         # starting on an obstacle erases
         await pilot.mouse_down(GridView, offset=at(view, 1, 5))
         await pilot.hover(GridView, offset=at(view, 2, 5))
         await pilot.mouse_up(GridView, offset=at(view, 2, 5))
-        assert [app.grid.is_blocked((x, 5)) for x in range(6)] == [
+        assert [app.session.grid.is_blocked((x, 5)) for x in range(6)] == [
             True, False, False, True, True, False]
         # moving without a button down draws nothing
         await pilot.hover(GridView, offset=at(view, 5, 5))
-        assert not app.grid.is_blocked((5, 5))
+        assert not app.session.grid.is_blocked((5, 5))
 
 
 # -- the overview ------------------------------------------------------------------------
@@ -618,15 +620,15 @@ async def test_the_view_follows_the_cursor_and_the_node_being_expanded() -> None
 
         assert visible((150, 150))
         await pilot.press("n")
-        assert visible(app.search_run.current_node())
-        app.search_run.goto(5000)
+        assert visible(app.session.run.current_node())
+        app.session.run.goto(5000)
         await pilot.press("n")
         await pilot.pause()
-        assert visible(app.search_run.current_node())
+        assert visible(app.session.run.current_node())
         for _ in range(30):
             await pilot.press("up")
         await pilot.pause()
-        assert visible(app.cursor_cell)
+        assert visible(app.session.cursor)
 
 
 # -- files -------------------------------------------------------------------------------
@@ -639,10 +641,10 @@ async def test_ctrl_s_saves_to_the_maps_file_and_clears_dirty(tmp_path: Path) ->
     app = SearchApp(load_map(path), path=path)
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("down", "down", "down", "down", "o")
-        assert app.dirty
+        assert app.session.dirty
         await pilot.press("ctrl+s")
-        assert not app.dirty
-        assert path.read_text() == format_text_map(app.grid)
+        assert not app.session.dirty
+        assert path.read_text() == format_text_map(app.session.grid)
         assert load_map(path).is_blocked((0, 4))
 
 
@@ -664,7 +666,7 @@ async def test_a_failed_save_leaves_the_old_file_and_says_why(
         await pilot.press("ctrl+s")
         await pilot.pause()
         assert path.read_text() == old
-        assert app.dirty
+        assert app.session.dirty
         assert sorted(p.name for p in tmp_path.iterdir()) == ["tutorial.txt"]
         errors = [n for n in notifications(app) if n.severity == "error"]
         assert errors and "cannot save: permission denied" in errors[-1].message
@@ -676,7 +678,7 @@ async def test_ctrl_s_without_a_file_asks_for_a_name(tmp_path: Path) -> None:
     app = tutorial_app(path=None)
     target = tmp_path / "mine.txt"
     async with app.run_test(size=SIZE) as pilot:
-        app.cursor_cell = (0, 5)
+        app.session.cursor = (0, 5)
         await pilot.press("o")
         await pilot.press("ctrl+s")
         assert isinstance(app.screen, SaveAsScreen)
@@ -684,8 +686,8 @@ async def test_ctrl_s_without_a_file_asks_for_a_name(tmp_path: Path) -> None:
         await pilot.press("enter")
         await pilot.pause()
         assert not isinstance(app.screen, SaveAsScreen)
-        assert target.read_text() == format_text_map(app.grid)
-        assert app.map_path == target and not app.dirty
+        assert target.read_text() == format_text_map(app.session.grid)
+        assert app.session.map_path == target and not app.session.dirty
 
 
 # -- help, quitting, small terminals -----------------------------------------------------
@@ -698,7 +700,7 @@ async def test_question_mark_opens_help_and_escape_closes_it() -> None:
         await pilot.press("question_mark")
         assert isinstance(app.screen, HelpScreen)
         await pilot.press("n")  # keys of the main screen do nothing under help
-        assert app.search_run.k == 0
+        assert app.session.run.k == 0
         await pilot.press("escape")
         assert not isinstance(app.screen, HelpScreen)
 
@@ -713,7 +715,7 @@ def test_help_lists_every_key_of_the_binding_table() -> None:
                 "plus": "+", "minus": "-", "question_mark": "?", "comma": ",", "escape": "esc",
                 "right_square_bracket": "]", "left_square_bracket": "[", "pageup": "pgup",
                 "pagedown": "pgdn"}
-    for binding in Binding.make_bindings(SearchApp.BINDINGS):
+    for binding in Binding.make_bindings(MainScreen.BINDINGS):
         assert aliases.get(binding.key, binding.key) in listed, binding.key
 
 
@@ -758,7 +760,7 @@ async def test_a_terminal_too_small_shows_a_message_instead_of_the_layout() -> N
     async with app.run_test(size=(50, 15)) as pilot:
         await pilot.pause()
         message = app.query_one("#too-small")
-        assert message.display and not app.query_one("#grid").display
+        assert message.display and not app.query_one(GridView).display
         assert "need at least 60×20, have 50×15" in str(message.render())
     app = tutorial_app()
     async with app.run_test(size=(60, 20)) as pilot:
@@ -807,12 +809,12 @@ async def test_the_key_bar_dims_keys_that_cannot_act_and_a_click_presses_a_key()
         assert enabled()["n"] and not enabled()["p"]  # step 0: nothing to go back to
         await pilot.click(KeyBar, offset=(1, 0))  # the "n" of "np Step" (after the padding)
         await pilot.pause()
-        assert app.search_run.k == 1 and enabled()["p"]
+        assert app.session.run.k == 1 and enabled()["p"]
         await pilot.click(KeyBar, offset=(2, 0))  # the "p"
         await pilot.pause()
-        assert app.search_run.k == 0
+        assert app.session.run.k == 0
         await pilot.press("end")
-        await wait_until(pilot, lambda: app.search_run.at_end)
+        await wait_until(pilot, lambda: app.session.run.at_end)
         await pilot.pause()
         assert not enabled()["n"] and enabled()["p"]
 
@@ -822,9 +824,9 @@ async def test_a_run_that_reaches_the_step_limit_says_it_gave_up() -> None:
     app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, algorithm="iddfs", max_steps=30)
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("end")
-        await wait_until(pilot, lambda: app.search_run.at_end)
+        await wait_until(pilot, lambda: app.session.run.at_end)
         await pilot.pause()
-        assert app.search_run.k == 30 and app.search_run.gave_up
+        assert app.session.run.k == 30 and app.session.run.gave_up
         status, narration = stats(app)
         assert "step 30/30" in status
         assert narration.endswith(". Gave up at --max-steps 30")
@@ -832,9 +834,9 @@ async def test_a_run_that_reaches_the_step_limit_says_it_gave_up() -> None:
     app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, algorithm="iddfs", max_steps=1)
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("end")
-        await wait_until(pilot, lambda: app.search_run.at_end)
+        await wait_until(pilot, lambda: app.session.run.at_end)
         await pilot.pause()
-        assert app.search_run.gave_up and app.search_run.frontier_len() == 0
+        assert app.session.run.gave_up and app.session.run.frontier_len() == 0
         assert app.query_one(FrontierPanel).lines() == ["empty — gave up at --max-steps 1"]
 
 
@@ -849,14 +851,14 @@ async def test_a_movingai_map_opens_with_its_scenario_and_z_shows_it_whole() -> 
     scen = load_scenario(f"{arena}.scen", 5)
     app = SearchApp(grid, path=path)
     async with app.run_test(size=(120, 40)) as pilot:
-        assert (app.grid.width, app.grid.height) == (49, 49)
-        assert app.grid.start == scen.start and app.grid.goal == scen.goal
-        assert app.cursor_cell == scen.start
+        assert (app.session.grid.width, app.session.grid.height) == (49, 49)
+        assert app.session.grid.start == scen.start and app.session.grid.goal == scen.goal
+        assert app.session.cursor == scen.start
         assert app.query_one(GridView).border_title == "arena.map"
         await pilot.press("end")
-        await wait_until(pilot, lambda: app.search_run.at_end)
-        assert app.search_run.found
-        assert app.search_run.path()[-1] == scen.goal
+        await wait_until(pilot, lambda: app.session.run.at_end)
+        assert app.session.run.found
+        assert app.session.run.path()[-1] == scen.goal
         await pilot.press("z")
         await pilot.pause()
         assert app.query_one(GridView).overview

@@ -95,13 +95,13 @@ async def test_zoom_in_and_out_changes_the_cell_size_and_keeps_the_cursor_cell_o
             await pilot.press("right_square_bracket")
             await pilot.pause()
             sizes.append((view.geometry.cell_width, view.geometry.cell_height))
-            assert in_view(view, app.cursor_cell)
+            assert in_view(view, app.session.cursor)
         assert sizes == [(4, 2), (6, 3), (8, 4), (10, 5), (12, 6)]
         await pilot.press("left", "left", "up")  # the cursor moves; the view follows it
         for _ in range(5):
             await pilot.press("left_square_bracket")
             await pilot.pause()
-            assert in_view(view, app.cursor_cell)
+            assert in_view(view, app.session.cursor)
         assert view.geometry.level == 1 and not view.overview
         await pilot.press("left_square_bracket")  # out of the smallest: the whole map
         await pilot.pause()
@@ -109,7 +109,7 @@ async def test_zoom_in_and_out_changes_the_cell_size_and_keeps_the_cursor_cell_o
         await pilot.press("right_square_bracket")
         await pilot.pause()
         assert not view.overview and view.geometry.level == 1
-        assert in_view(view, app.cursor_cell)
+        assert in_view(view, app.session.cursor)
 
 
 #: A click: (zoom, scroll x, scroll y, where across, where down).  Zoom 0 is the overview, then
@@ -161,7 +161,7 @@ async def check_click(app: SearchApp, pilot, view: GridView, zoom: int, scroll_x
     else:
         expected = ((x - pad) * block, y * 2 * block)  # the block's top-left cell
     await pilot.click(GridView, offset=(1 + x, 1 + y), button=3)  # 1: the view's border
-    assert app.cursor_cell == expected
+    assert app.session.cursor == expected
     after = drawn_chars(view)
     if zoom:  # the cursor's cell drawn reversed, and nothing else
         ox, oy = view.scroll_offset  # the view may have followed the cursor
@@ -220,8 +220,8 @@ async def test_a_block_of_the_overview_shows_its_most_important_state() -> None:
     """A 20x20 map in blocks of 5: one frontier cell among expanded ones draws its block as
     frontier; the start's block as the start; a wall among free cells as a wall."""
     app = SearchApp(open_grid(20, 20, start=(2, 2), goal=(19, 19)))
-    app.grid.set_blocked((12, 2), True)
-    app._new_run()
+    app.session.grid.set_blocked((12, 2), True)
+    app.main.action_reset()
     async with app.run_test(size=SIZE) as pilot:
         view = app.query_one(GridView)
         view.set_overview(True)
@@ -229,7 +229,7 @@ async def test_a_block_of_the_overview_shows_its_most_important_state() -> None:
         view.geometry = Geometry(20, 20, 1, 5)  # the fit would choose 1; blocks of 5 here
         codes = view._block_codes(range(5), 0, 20)
         assert codes == [6, 0, 5, 0]  # START, FREE, WALL, FREE
-        run = app.search_run
+        run = app.session.run
         for k in (3, 9, 20, 40):
             run.goto(k)
             expected = []
@@ -238,8 +238,8 @@ async def test_a_block_of_the_overview_shows_its_most_important_state() -> None:
                 for x in range(5 * bx, 5 * bx + 5):
                     for y in range(5):
                         cell = (x, y)
-                        looks.append(START if cell == app.grid.start
-                                     else WALL if app.grid.is_blocked(cell)
+                        looks.append(START if cell == app.session.grid.start
+                                     else WALL if app.session.grid.is_blocked(cell)
                                      else int(run.cell_state(cell)))
                 expected.append(max(looks, key=RANK.__getitem__))
             assert view._block_codes(range(5), 0, 20) == expected
@@ -340,7 +340,7 @@ async def test_an_informed_search_labels_cells_with_g_and_f() -> None:
     async with tutorial_in_big_cells("astar") as (app, pilot, view):
         await pilot.press(*["n"] * 3)
         g = view.geometry
-        run = app.search_run
+        run = app.session.run
         e = run.last_event((0, 1))
         cost, _, f = run.gen_costs(e)
         _, y, _, h = g.cell_region((0, 1))
@@ -355,8 +355,8 @@ async def test_a_step_in_big_cells_repaints_only_the_lines_of_the_cells_it_chang
         await pilot.press("n", "n")
         painted, whole = watch_repaints(view)
         await pilot.pause()
-        run = app.search_run
-        app.action_next()
+        run = app.session.run
+        app.main.action_next()
         changed = run.changed_cells(run.k) + [run.gen_cell(run.rec.exp(run.k - 1))]
         lines = {line for cell in changed for line in view.geometry.lines_of(cell)}
         assert painted and set(painted) == lines
@@ -405,14 +405,14 @@ async def test_the_readout_says_what_the_cursor_cell_is() -> None:
             "reached by SE from (0,2)"
         await pilot.press("right")
         assert readout(app) == "Cursor (2,3): obstacle"
-        app.cursor_cell = (4, 5)
+        app.session.cursor = (4, 5)
         await pilot.press("right")
         assert readout(app) == "Cursor (5,5): never reached"
         await pilot.press("n")  # the cursor's cell does not change: the readout follows
         await pilot.press("end")
-        await wait_until(pilot, lambda: app.search_run.at_end)
-        assert (0, 1) in app.search_run.path()
-        app.cursor_cell = (0, 0)
+        await wait_until(pilot, lambda: app.session.run.at_end)
+        assert (0, 1) in app.session.run.path()
+        app.session.cursor = (0, 0)
         await pilot.press("down")
         assert readout(app).startswith("Cursor (0,1): on the path, expanded at step 2")
 
@@ -439,7 +439,7 @@ async def test_the_readout_of_a_cost_ordered_search_gives_g_h_and_f() -> None:
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("n", "down")
         text = readout(app)
-        run = app.search_run
+        run = app.session.run
         cost, _, _ = run.gen_costs(run.last_event((0, 1)))
         assert text.startswith("Cursor (0,1): on the frontier since step 1, depth 1, ")
         assert f"g {cost:g}, h " in text and "f " in text and "reached by S from (0,0)" in text
@@ -452,14 +452,14 @@ async def test_keys_jump_the_cursor_to_start_goal_and_the_node_being_expanded() 
         view = app.query_one(GridView)
         await pilot.pause()
         await pilot.press("G")
-        assert app.cursor_cell == (5, 5) and in_view(view, (5, 5))
+        assert app.session.cursor == (5, 5) and in_view(view, (5, 5))
         await pilot.press("e")  # step 0: none yet
-        assert app.cursor_cell == (5, 5)
+        assert app.session.cursor == (5, 5)
         await pilot.press("n", "n", "n", "e")
-        assert app.cursor_cell == app.search_run.current_node()
+        assert app.session.cursor == app.session.run.current_node()
         await pilot.press("S")
         await pilot.pause()
-        assert app.cursor_cell == (100, 120) and in_view(view, (100, 120))
+        assert app.session.cursor == (100, 120) and in_view(view, (100, 120))
         assert readout(app).startswith("Cursor (100,120): the start")
 
 
@@ -471,12 +471,12 @@ async def test_page_keys_move_the_cursor_a_screenful() -> None:
         await pilot.pause()
         rows = view.scrollable_content_region.height
         await pilot.press("pagedown")
-        assert app.cursor_cell == (0, rows - 1) and in_view(view, app.cursor_cell)
+        assert app.session.cursor == (0, rows - 1) and in_view(view, app.session.cursor)
         await pilot.press("pagedown", "pagedown", "pagedown", "pagedown", "pagedown",
                           "pagedown", "pagedown", "pagedown", "pagedown")
-        assert app.cursor_cell == (0, 199)
+        assert app.session.cursor == (0, 199)
         await pilot.press("pageup")
-        assert app.cursor_cell == (0, 199 - (rows - 1))
+        assert app.session.cursor == (0, 199 - (rows - 1))
 
 
 @sync
@@ -507,9 +507,9 @@ async def test_a_new_map_is_fitted_again_even_after_a_zoom() -> None:
     async with tutorial_in_big_cells() as (app, pilot, view):
         await pilot.press("left_square_bracket", "left_square_bracket")
         assert view.geometry.level == 4 and not view.fitted
-        app._use_map(open_grid(60, 60), None)  # what opening a map does
+        app.main.files._use_map(open_grid(60, 60), None)  # what opening a map does
         await pilot.pause()
         assert view.fitted and view.geometry == Geometry(60, 60, 1)
-        app._use_map(open_grid(3, 3), None)
+        app.main.files._use_map(open_grid(3, 3), None)
         await pilot.pause()
         assert view.geometry.level == 12  # the largest: 3 cells of 24x12 fit easily

@@ -15,9 +15,9 @@ def overview_after_steps(steps: int):
 
     async def run_before(pilot) -> None:
         app = pilot.app
-        app.search_run.goto(steps)
-        app.action_first()  # a full redraw ...
-        app.search_run.goto(steps)
+        app.session.run.goto(steps)
+        app.main.action_first()  # a full redraw ...
+        app.session.run.goto(steps)
         await pilot.press("n", "z")
         await wait_until(pilot, lambda: app.query_one("GridView").overview)
 

@@ -24,14 +24,14 @@ async def test_moving_the_goal_solves_exercise_one_the_moment_it_does() -> None:
         panel = challenge(app)
         assert panel.display and panel.border_title == "Exercise 1"
         assert "Not solved yet: BFS expanded 22 nodes, DFS 7" in panel.text
-        app.view.set_cursor((0, 4))
-        app.cursor_cell = (0, 4)
+        app.main.views[0].set_cursor((0, 4))
+        app.session.cursor = (0, 4)
         await pilot.press("g")
         assert panel.verdict.solved and "Solved ✓ BFS expanded 5 nodes, DFS 18" in panel.text
         assert "Hint" not in panel.text  # only the goal moved
         # an edit that unsolves it says so
-        app.cursor_cell = (2, 0)
-        app.view.set_cursor((2, 0))
+        app.session.cursor = (2, 0)
+        app.main.views[0].set_cursor((2, 0))
         await pilot.press("g")
         assert not panel.verdict.solved and "Not solved any more" in panel.text
 
@@ -50,12 +50,12 @@ async def test_x_cycles_the_exercises_and_hides_the_panel() -> None:
     async with app.run_test(size=SIZE) as pilot:
         assert not challenge(app).display
         await pilot.press("x")
-        assert app.exercise == 1 and challenge(app).display
+        assert app.session.exercise == 1 and challenge(app).display
         await pilot.press("x")
-        assert app.exercise == 2 and "Exercise 2" == challenge(app).border_title
+        assert app.session.exercise == 2 and "Exercise 2" == challenge(app).border_title
         assert "Not solved yet: both paths have 7 moves" in challenge(app).text
         await pilot.press("x")
-        assert app.exercise is None and not challenge(app).display
+        assert app.session.exercise is None and not challenge(app).display
 
 
 @sync
@@ -85,9 +85,9 @@ async def test_a_big_map_is_checked_in_the_background_once_the_edits_pause() -> 
         await pilot.press("right", "g")
         assert challenge(big).verdict is None and "Checking" in challenge(big).text
         await pilot.press("right", "g")
-        assert big.grid.goal == (2, 0)
+        assert big.session.grid.goal == (2, 0)
         await wait_until(pilot, lambda: challenge(big).verdict is not None)
-        edited = check(1, big.grid.copy(), tutorial_grid())
+        edited = check(1, big.session.grid.copy(), tutorial_grid())
         assert challenge(big).verdict == edited and edited != want
 
 
@@ -110,12 +110,12 @@ async def test_the_palette_turns_the_exercises_on_and_off() -> None:
 
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
-        assert app.exercise is None and not challenge(app).display
+        assert app.session.exercise is None and not challenge(app).display
         await palette_run(pilot, "Exercise 1")
-        assert app.exercise == 1 and challenge(app).display
+        assert app.session.exercise == 1 and challenge(app).display
         assert challenge(app).border_title == "Exercise 1"
         assert "Not solved yet: BFS expanded 22 nodes, DFS 7" in challenge(app).text
         await palette_run(pilot, "Exercise 2")
-        assert app.exercise == 2 and challenge(app).border_title == "Exercise 2"
+        assert app.session.exercise == 2 and challenge(app).border_title == "Exercise 2"
         await palette_run(pilot, "Exercise: off", best=True)  # exercise 1's quote matches too
-        assert app.exercise is None and not challenge(app).display
+        assert app.session.exercise is None and not challenge(app).display

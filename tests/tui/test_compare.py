@@ -28,26 +28,26 @@ def compare_app(spec: str = "bfs,dfs", path=TUTORIAL) -> SearchApp:
 
 
 def steps(app: SearchApp) -> list[int]:
-    return [run.k for run in app.runs]
+    return [run.k for run in app.session.runs]
 
 
 @sync
 async def test_c_shows_two_panes_and_c_again_one_search() -> None:
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
-        assert app.compare is None and not app.query(RunPane)
+        assert app.session.spec.count(",") == 0 and not app.query(RunPane)
         await pilot.press("c")
         await pilot.pause()
         panes = app.query(RunPane)
         assert [p.label for p in panes] == ["BFS", "DFS"]
-        assert all(p.display for p in panes) and not app.view.display
+        assert all(p.display for p in panes) and not app.main.views[0].display
         titles = [p.frontier.border_title for p in panes]
         assert titles == ["Queue (FIFO)", "Stack (LIFO)"]
         assert app.focused is panes[0].view
         await pilot.press("c")
         await pilot.pause()
-        assert app.compare is None and not app.query(RunPane) and app.view.display
-        assert len(app.runs) == 1 and app.focused is app.view
+        assert app.session.spec.count(",") == 0 and not app.query(RunPane) and app.main.views[0].display
+        assert len(app.session.runs) == 1 and app.focused is app.main.views[0]
 
 
 @sync
@@ -59,8 +59,8 @@ async def test_n_advances_every_run_and_end_then_p_leaves_the_finished_one() -> 
         assert steps(app) == [3, 3]
         await pilot.press("end")
         await pilot.pause()
-        assert steps(app) == [22, 7] and all(r.at_end for r in app.runs)
-        dfs_pane = app.panes[1]
+        assert steps(app) == [22, 7] and all(r.at_end for r in app.session.runs)
+        dfs_pane = app.main.panes[1]
         assert "done at step 7" in dfs_pane.stats.status_text
         await pilot.press("p")
         assert steps(app) == [21, 7]  # DFS ended earlier: it stays on its last screen
@@ -86,7 +86,7 @@ async def test_the_table_equals_the_headless_comparison(capsys) -> None:
     headless = json.loads(capsys.readouterr().out)["runs"]
     app = compare_app("bfs,dfs,astar")
     async with app.run_test(size=SIZE) as pilot:
-        table = app.compare_table
+        table = app.main.compare_table
         assert table.text_lines[1].split()[:2] == ["BFS", "…"]  # going: no figures yet
         await pilot.press("end")
         await pilot.pause()
@@ -105,18 +105,18 @@ async def test_an_edit_restarts_every_run_on_the_one_map() -> None:
     app = compare_app()
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("n", "n")
-        old = list(app.runs)
+        old = list(app.session.runs)
         await pilot.press("down", "down", "right", "o")  # an obstacle at (1,2)
-        assert app.grid.is_blocked((1, 2)) and app.dirty
-        assert steps(app) == [0, 0] and not set(app.runs) & set(old)
-        assert all(p.view.grid is app.grid for p in app.panes)
-        assert all(p.view.cursor == (1, 2) for p in app.panes)  # one cursor
+        assert app.session.grid.is_blocked((1, 2)) and app.session.dirty
+        assert steps(app) == [0, 0] and not set(app.session.runs) & set(old)
+        assert all(p.view.grid is app.session.grid for p in app.main.panes)
+        assert all(p.view.cursor == (1, 2) for p in app.main.panes)  # one cursor
         # a click on the second pane's map edits the same map
-        view = app.panes[1].view
+        view = app.main.panes[1].view
         x, y = view.screen_offset((3, 3))
         await pilot.click(view, offset=(x, y))
-        assert app.grid.is_blocked((3, 3)) is False  # (3,3) was an obstacle: now free
-        assert all(r.k == 0 for r in app.runs)
+        assert app.session.grid.is_blocked((3, 3)) is False  # (3,3) was an obstacle: now free
+        assert all(r.k == 0 for r in app.session.runs)
 
 
 @sync
@@ -125,19 +125,19 @@ async def test_algorithm_keys_add_and_take_out_searches() -> None:
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("6")
         await pilot.pause()
-        assert app.compare == "bfs,dfs,astar" and [p.label for p in app.panes] == [
+        assert app.session.spec == "bfs,dfs,astar" and [p.label for p in app.main.panes] == [
             "BFS", "DFS", "A*"]
         await pilot.press("1")
         await pilot.pause()
-        assert app.compare == "dfs,astar"
+        assert app.session.spec == "dfs,astar"
         await pilot.press("2")  # two stay at least
         await pilot.pause()
-        assert app.compare == "dfs,astar"
+        assert app.session.spec == "dfs,astar"
         await pilot.press("1", "3")
         await pilot.pause()
         await pilot.press("4")  # four at most
         await pilot.pause()
-        assert app.compare == "dfs,astar,bfs,iddfs"
+        assert app.session.spec == "dfs,astar,bfs,iddfs"
 
 
 @sync
@@ -159,10 +159,10 @@ async def test_the_settings_pick_what_c_compares() -> None:
         await pilot.pause()
         screen.query_one("#apply").press()
         await pilot.pause()
-        assert app.screen is not screen and app.compare is None
+        assert app.screen is not screen and app.session.spec.count(",") == 0
         await pilot.press("c")
         await pilot.pause()
-        assert [p.label for p in app.panes] == ["BFS", "UCS", "A*"]
+        assert [p.label for p in app.main.panes] == ["BFS", "UCS", "A*"]
 
 
 @sync
@@ -170,21 +170,21 @@ async def test_narrow_terminals_stack_the_panes_and_short_ones_fold_the_trees() 
     app = compare_app()
     async with app.run_test(size=(70, 48)) as pilot:
         await pilot.pause()
-        a, b = (p.region for p in app.panes)
+        a, b = (p.region for p in app.main.panes)
         assert a.x == b.x and b.y > a.y  # one above the other
-        assert not app.panes[0].tree_panel.display  # too short for trees
+        assert not app.main.panes[0].tree_panel.display  # too short for trees
     app = compare_app()
     async with app.run_test(size=SIZE) as pilot:
         await pilot.pause()
-        a, b = (p.region for p in app.panes)
+        a, b = (p.region for p in app.main.panes)
         assert a.y == b.y and b.x > a.x  # side by side
-        assert app.panes[0].tree_panel.display
+        assert app.main.panes[0].tree_panel.display
         await pilot.press("f")
         await pilot.pause()
-        assert not app.panes[0].tree_panel.display
+        assert not app.main.panes[0].tree_panel.display
         await pilot.press("f")
         await pilot.pause()
-        assert app.panes[0].tree_panel.display
+        assert app.main.panes[0].tree_panel.display
 
 
 @sync
@@ -193,13 +193,13 @@ async def test_end_on_a_big_map_computes_each_run_in_slices_and_esc_stops(monkey
     app = SearchApp(open_grid(30, 30), compare="iddfs,bfs")  # iddfs: 67,105 steps, 17 chunks
     async with app.run_test(size=SIZE) as pilot:
         post_keys(app, "end", "escape")
-        await wait_until(pilot, lambda: recorded and not app.seeking)
+        await wait_until(pilot, lambda: recorded and not app.session.seeking)
         await pilot.pause(0.1)
-        assert len(recorded) == 1 and not app.runs[0].at_end and "esc" not in app.note
+        assert len(recorded) == 1 and not app.session.runs[0].at_end and "esc" not in app.session.note
         post_keys(app, "end")
-        await wait_until(pilot, lambda: app.seeking and "IDDFS: computing" in app.note)
-        await wait_until(pilot, lambda: not app.seeking, seconds=60)
-        assert all(r.at_end and r.found for r in app.runs) and app.note == ""
+        await wait_until(pilot, lambda: app.session.seeking and "IDDFS: computing" in app.session.note)
+        await wait_until(pilot, lambda: not app.session.seeking, seconds=60)
+        assert all(r.at_end and r.found for r in app.session.runs) and app.session.note == ""
         assert len(set(recorded)) > 3  # in slices
 
 
@@ -212,7 +212,7 @@ async def test_play_runs_all_in_lockstep_to_the_end() -> None:
         await pilot.press("space")
         for _ in range(100):
             await pilot.pause(0.02)
-            if not app.playing:
+            if not app.session.playing:
                 break
         assert steps(app) == [22, 7]
 
@@ -222,8 +222,8 @@ async def test_quiz_in_compare_mode_asks_of_the_left_pane_and_steps_all() -> Non
     app = compare_app("dfs,bfs")
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("i", "enter")  # the cursor is on the start: it comes off first
-        assert app.quiz_asked == 1 and app.quiz_right == 1 and steps(app) == [1, 1]
-        assert "stack's top" in app.note
+        assert app.session.quiz.asked == 1 and app.session.quiz.right == 1 and steps(app) == [1, 1]
+        assert "stack's top" in app.session.note
 
 
 def test_the_command_line_opens_compare_mode_and_refuses_bad_searches(capsys,
@@ -244,9 +244,9 @@ async def test_a_setting_that_does_not_apply_to_one_pane_applies_to_the_others()
         app.screen.query_one("#visit-expand").value = True
         app.screen.query_one("#apply").press()
         await pilot.pause()
-        assert [c.semantics.visit for c in app.contenders] == ["expand", "generate"]
-        assert "does not apply to A*" in app.note
-        assert "visit on expand" in app.panes[0].stats.status_text
+        assert [c.semantics.visit for c in app.session.contenders] == ["expand", "generate"]
+        assert "does not apply to A*" in app.session.note
+        assert "visit on expand" in app.main.panes[0].stats.status_text
 
 
 @sync
@@ -254,11 +254,11 @@ async def test_an_exercise_beside_the_panes_takes_its_room_from_them() -> None:
     app = compare_app()
     async with app.run_test(size=(120, 44)) as pilot:
         await pilot.pause()
-        a, b = (p.region for p in app.panes)
+        a, b = (p.region for p in app.main.panes)
         assert a.y == b.y  # side by side: 60 columns each
         await pilot.press("x")
         await pilot.pause()
-        a, b = (p.region for p in app.panes)
+        a, b = (p.region for p in app.main.panes)
         assert a.x == b.x and b.y > a.y  # the challenge took 48: one above the other
         challenge = app.query_one("#challenge").region
         assert challenge.x >= a.right
@@ -269,14 +269,14 @@ async def test_keys_pressed_at_once_act_on_the_new_comparison() -> None:
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
         post_keys(app, "c", "n", "n")
-        await wait_until(pilot, lambda: all(p.is_mounted for p in app.panes) and app.panes)
+        await wait_until(pilot, lambda: all(p.is_mounted for p in app.main.panes) and app.main.panes)
         await pilot.pause()
-        assert app.compare == "bfs,dfs" and steps(app) == [2, 2]
+        assert app.session.spec == "bfs,dfs" and steps(app) == [2, 2]
         post_keys(app, "3", "4")
-        await wait_until(pilot, lambda: app.compare == "bfs,dfs,iddfs,ucs")
+        await wait_until(pilot, lambda: app.session.spec == "bfs,dfs,iddfs,ucs")
         post_keys(app, "c", "c", "n")  # off and on again, then a step: every key was handled
         await wait_until(pilot, lambda: steps(app) == [1, 1, 1, 1])
-        assert app.compare == "bfs,dfs,iddfs,ucs" and len(app.panes) == 4
+        assert app.session.spec == "bfs,dfs,iddfs,ucs" and len(app.main.panes) == 4
 
 
 @sync
@@ -284,14 +284,14 @@ async def test_a_spaced_or_trailing_comma_spec_and_unchanged_settings_keep_the_c
 ) -> None:
     app = compare_app("dfs, bfs,")
     async with app.run_test(size=SIZE) as pilot:
-        assert app.compare == "dfs,bfs"
+        assert app.session.spec == "dfs,bfs"
         await pilot.press("n", "n")
         await pilot.press("2")  # takes DFS out? two stay at least: no
-        assert app.compare == "dfs,bfs" and steps(app) == [2, 2]
+        assert app.session.spec == "dfs,bfs" and steps(app) == [2, 2]
         await pilot.press("comma")
         app.screen.query_one("#apply").press()
         await pilot.pause()
-        assert app.compare == "dfs,bfs" and steps(app) == [2, 2]  # nothing changed
+        assert app.session.spec == "dfs,bfs" and steps(app) == [2, 2]  # nothing changed
 
 
 @sync
@@ -306,8 +306,8 @@ async def test_the_settings_in_compare_mode_are_for_every_search_compared() -> N
         screen.query_one("#heuristic-manhattan").value = True
         screen.query_one("#apply").press()
         await pilot.pause()
-        assert [c.semantics.heuristic for c in app.contenders] == ["manhattan", "manhattan"]
-        assert "inadmissible" in app.panes[1].stats.status_text
+        assert [c.semantics.heuristic for c in app.session.contenders] == ["manhattan", "manhattan"]
+        assert "inadmissible" in app.main.panes[1].stats.status_text
 
 
 @sync
@@ -315,12 +315,12 @@ async def test_short_terminals_put_the_panes_beside_each_other_and_four_in_two_r
     app = compare_app()
     async with app.run_test(size=(80, 24)) as pilot:
         await pilot.pause()
-        a, b = (p.region for p in app.panes)
+        a, b = (p.region for p in app.main.panes)
         assert a.y == b.y  # too short to stack: beside each other, 40 columns each
     app = compare_app("bfs,dfs,ucs,astar")
     async with app.run_test(size=SIZE) as pilot:
         await pilot.pause()
-        regions = [p.region for p in app.panes]
+        regions = [p.region for p in app.main.panes]
         assert len({r.y for r in regions}) == 2 and len({r.x for r in regions}) == 2
 
 
@@ -330,11 +330,11 @@ async def test_zoom_and_labels_stay_when_a_search_is_added() -> None:
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("left_square_bracket", "a")
         await pilot.pause()
-        before = app.panes[0].view.view_state()
+        before = app.main.panes[0].view.view_state()
         await pilot.press("6")
-        await wait_until(pilot, lambda: len(app.panes) == 3 and all(
-            p.is_mounted for p in app.panes))
-        assert all(p.view.view_state() == before for p in app.panes)
+        await wait_until(pilot, lambda: len(app.main.panes) == 3 and all(
+            p.is_mounted for p in app.main.panes))
+        assert all(p.view.view_state() == before for p in app.main.panes)
 
 
 @sync
@@ -346,8 +346,8 @@ async def test_the_palette_offers_comparisons_and_a_bad_one_is_said_not_crashed(
         names = [name for name, _, _ in SearchCommands(app.screen).commands()]
         assert "Compare: A* · A* (manhattan)" in names and "Compare: BFS · DFS" in names
         await app.run_action("show_compare('astar,astar:manhattan')")
-        await wait_until(pilot, lambda: all(p.is_mounted for p in app.panes) and app.panes)
-        assert [p.label for p in app.panes] == ["A*", "A* (manhattan)"]
+        await wait_until(pilot, lambda: all(p.is_mounted for p in app.main.panes) and app.main.panes)
+        assert [p.label for p in app.main.panes] == ["A*", "A* (manhattan)"]
         await app.run_action("show_compare('bfs,nope')")
         await pilot.pause()
-        assert app.compare == "astar,astar:manhattan"  # unchanged, and said in a notification
+        assert app.session.spec == "astar,astar:manhattan"  # unchanged, and said in a notification

@@ -71,10 +71,10 @@ async def test_ctrl_s_keeps_the_comments_and_changes_only_the_moved_goal(tmp_pat
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("ctrl+s")  # no edit: the same bytes
         assert path.read_bytes() == original
-        app.cursor_cell = (5, 1)
+        app.session.cursor = (5, 1)
         await pilot.press("g", "ctrl+s")
         await pilot.pause()
-        assert not app.dirty
+        assert not app.session.dirty
     saved = path.read_bytes()
     assert saved.count(b"\n;") == original.count(b"\n;") and saved.startswith(b"; The tutorial")
     # Two characters differ: the old G is now '.', the cell above it is 'G'.
@@ -91,12 +91,12 @@ async def test_ctrl_s_on_a_movingai_map_saves_it_in_place_as_a_map(tmp_path: Pat
     grid = load_map(path, start=(19, 26), goal=(19, 29))
     app = SearchApp(grid, path=path)
     async with app.run_test(size=SIZE) as pilot:
-        app.cursor_cell = (20, 26)
+        app.session.cursor = (20, 26)
         assert not grid.is_blocked((20, 26))
         await pilot.press("o", "ctrl+s")
         await pilot.pause()
         assert not isinstance(app.screen, SaveAsScreen)
-        assert not app.dirty and app.map_path == path
+        assert not app.session.dirty and app.session.map_path == path
         assert any("start and goal are not part of a .map file" in m for m in messages(app))
     saved = path.read_bytes()
     assert saved.split(b"\n")[:4] == original.split(b"\n")[:4]
@@ -116,9 +116,9 @@ async def test_save_as_txt_from_a_movingai_map_writes_the_text_format(tmp_path: 
         await pilot.press("enter")
         await pilot.pause()
         assert not isinstance(app.screen, SaveAsScreen)
-        assert app.map_path == tmp_path / "arena.txt"
+        assert app.session.map_path == tmp_path / "arena.txt"
     text_map = load_map(tmp_path / "arena.txt")
-    assert text_map == app.grid and text_map.start == (19, 26)
+    assert text_map == app.session.grid and text_map.start == (19, 26)
     assert path.read_bytes() == (DATA / "arena.map").read_bytes()
 
 
@@ -139,13 +139,13 @@ async def test_save_as_onto_an_existing_file_asks_first(tmp_path: Path) -> None:
         await pilot.press("n")  # choose another name
         assert isinstance(app.screen, SaveAsScreen)
         assert app.screen.query_one("Input").value == str(other)
-        assert other.read_text() == "my notes\n" and app.map_path is None
+        assert other.read_text() == "my notes\n" and app.session.map_path is None
         await pilot.press("enter")
         assert isinstance(app.screen, ConfirmOverwriteScreen)
         await pilot.press("y")  # overwrite
         await pilot.pause()
         assert not isinstance(app.screen, (SaveAsScreen, ConfirmOverwriteScreen))
-        assert app.map_path == other
+        assert app.session.map_path == other
     assert other.read_text() == format_text_map(load_map(TUTORIAL))
 
 
@@ -162,7 +162,7 @@ async def test_the_overwrite_question_answers_the_mouse(tmp_path: Path) -> None:
         await pilot.press("enter")
         await click_shown(pilot, "#overwrite")
         await pilot.pause()
-        assert app.map_path == other and other.read_text() != "keep\n"
+        assert app.session.map_path == other and other.read_text() != "keep\n"
 
 
 @sync
@@ -173,7 +173,7 @@ async def test_save_as_onto_the_maps_own_file_does_not_ask(tmp_path: Path) -> No
         await pilot.press("down", "o", "w")
         await type_name(pilot, str(path))
         assert not isinstance(app.screen, (SaveAsScreen, ConfirmOverwriteScreen))
-        assert not app.dirty and load_map(path).is_blocked((0, 1))
+        assert not app.session.dirty and load_map(path).is_blocked((0, 1))
 
 
 @sync
@@ -206,11 +206,11 @@ async def test_an_unwritable_target_keeps_the_prompt_open_with_the_reason(
         await type_name(pilot, str(target))
         assert isinstance(app.screen, SaveAsScreen)
         assert app.screen.error == f"{target}: cannot save: permission denied"
-        assert app.map_path is None and os.listdir(tmp_path) == []
+        assert app.session.map_path is None and os.listdir(tmp_path) == []
         monkeypatch.undo()
         await pilot.press("enter")  # the name is still there: try again
         await pilot.pause()
-        assert not isinstance(app.screen, SaveAsScreen) and app.map_path == target
+        assert not isinstance(app.screen, SaveAsScreen) and app.session.map_path == target
     assert load_map(target) == load_map(TUTORIAL)
 
 
@@ -226,10 +226,10 @@ async def test_ctrl_o_opens_a_map(tmp_path: Path) -> None:
         assert isinstance(app.screen, OpenMapScreen)
         await type_name(pilot, str(other))
         assert not isinstance(app.screen, OpenMapScreen)
-        assert app.map_path == other and app.grid == load_map(other)
-        assert app.search_run.k == 0 and app.cursor_cell == app.grid.start
-        assert app.view.grid is app.grid
-        assert app.view.border_title == "exercise1-bfs-wins.txt"
+        assert app.session.map_path == other and app.session.grid == load_map(other)
+        assert app.session.run.k == 0 and app.session.cursor == app.session.grid.start
+        assert app.main.views[0].grid is app.session.grid
+        assert app.main.views[0].border_title == "exercise1-bfs-wins.txt"
 
 
 @sync
@@ -244,7 +244,7 @@ async def test_a_file_that_is_not_a_map_keeps_the_open_prompt_open(tmp_path: Pat
         await type_name(pilot, str(tmp_path / "missing.txt"))
         assert app.screen.error == f"{tmp_path / 'missing.txt'}: no such file"
         await pilot.press("escape")
-        assert app.map_path is None and app.grid == load_map(TUTORIAL)
+        assert app.session.map_path is None and app.session.grid == load_map(TUTORIAL)
 
 
 @sync
@@ -259,19 +259,19 @@ async def test_opening_a_map_over_unsaved_edits_asks_first(tmp_path: Path) -> No
         assert isinstance(app.screen, ConfirmQuitScreen)
         assert "Open no-path.txt anyway?" in str(app.screen.query_one("Label").content)
         await pilot.press("n")  # cancel
-        assert app.map_path == path and app.dirty and app.grid.is_blocked((0, 1))
+        assert app.session.map_path == path and app.session.dirty and app.session.grid.is_blocked((0, 1))
         await pilot.press("ctrl+o")
         await type_name(pilot, str(other))
         await pilot.press("s")  # save, then open
         await pilot.pause()
-        assert app.map_path == other and not app.dirty
+        assert app.session.map_path == other and not app.session.dirty
         assert load_map(path).is_blocked((0, 1))
-        app.cursor_cell = (0, 1)
+        app.session.cursor = (0, 1)
         await pilot.press("o", "ctrl+o")
         await type_name(pilot, str(path))
         await pilot.press("y")  # discard the edit
         await pilot.pause()
-        assert app.map_path == path and not app.dirty
+        assert app.session.map_path == path and not app.session.dirty
     assert (MAPS / "no-path.txt").read_bytes() == other.read_bytes()
 
 
@@ -282,18 +282,18 @@ async def test_replace_map_is_what_an_exercise_calls(tmp_path: Path) -> None:
     app = untitled()
     exercise = load_map(MAPS / "exercise2-dfs-longer.txt")
     async with app.run_test(size=SIZE) as pilot:
-        app.replace_map(exercise, None, "Exercise 2")
+        app.main.files.replace_map(exercise, None, "Exercise 2")
         await pilot.pause()
-        assert app.grid is exercise and app.map_path is None  # nothing unsaved: no question
+        assert app.session.grid is exercise and app.session.map_path is None  # nothing unsaved: no question
         await pilot.press("down", "o")  # the cursor is on the start (1,1): blocks (1,2)
-        app.replace_map(load_map(TUTORIAL), None, "the tutorial")
+        app.main.files.replace_map(load_map(TUTORIAL), None, "the tutorial")
         await pilot.pause()
         assert isinstance(app.screen, ConfirmQuitScreen)
         assert "Open the tutorial anyway?" in str(app.screen.query_one("Label").content)
         await pilot.press("s")
         assert isinstance(app.screen, SaveAsScreen)
         await type_name(pilot, str(tmp_path / "ex2.txt"))
-        assert app.grid == load_map(TUTORIAL) and not app.dirty
+        assert app.session.grid == load_map(TUTORIAL) and not app.session.dirty
     saved = load_map(tmp_path / "ex2.txt")
     assert saved.is_blocked((1, 2))
     saved.set_blocked((1, 2), False)

@@ -33,7 +33,7 @@ async def test_the_keys_pick_the_informed_searches_from_the_registry() -> None:
                                       ("5", "greedy", "Priority queue (Greedy: h)"),
                                       ("6", "astar", "Priority queue (A*: f = g + h)")):
             await pilot.press(key)
-            assert app.search_run.algorithm == algorithm and app.search_run.k == 0
+            assert app.session.run.algorithm == algorithm and app.session.run.k == 0
             assert app.query_one(FrontierPanel).border_title == title
 
 
@@ -68,7 +68,7 @@ async def test_uniform_cost_shows_g_only_and_ends_on_the_lowest_cost() -> None:
         assert panel_lines(app)[1].endswith("g 2.00") or " g " in panel_lines(app)[1]
         assert " h " not in panel_lines(app)[1]
         await pilot.press("end")
-        await wait_until(pilot, lambda: app.search_run.at_end)
+        await wait_until(pilot, lambda: app.session.run.at_end)
         assert "cost 8.66 (the lowest)" in stats(app)[1]
         assert stats(app)[1].startswith("Took the goal (5,2) off the priority queue: found")
 
@@ -80,7 +80,7 @@ async def test_bfs_on_exercise_one_is_shown_the_cheaper_path() -> None:
     app = SearchApp(grid)
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("end")
-        await wait_until(pilot, lambda: app.search_run.at_end)
+        await wait_until(pilot, lambda: app.session.run.at_end)
         assert "cost 2.83 (lowest 2.00)" in stats(app)[1]
 
 
@@ -91,7 +91,7 @@ async def test_a_stale_step_is_discarded_and_says_why() -> None:
                 start=(0, 0), goal=(4, 1))
     app = SearchApp(grid, algorithm="astar")
     async with app.run_test(size=SIZE) as pilot:
-        run = app.search_run
+        run = app.session.run
         run.advance()
         k = run.rec.discarded[0]
         for _ in range(k):
@@ -156,7 +156,7 @@ async def test_the_heuristic_is_a_setting_and_an_inadmissible_one_is_named() -> 
         assert "inadmissible" in str(screen.query_one("#heuristic-explain").render())
         await click_shown(pilot, "#apply")
         await pilot.pause()
-        assert app.search_run.semantics.heuristic == "manhattan"
+        assert app.session.run.semantics.heuristic == "manhattan"
         status = stats(app)[0]
         assert "heuristic manhattan" in status and INADMISSIBLE in status
         # the heuristic does not apply to BFS: its settings grey it out, its status says nothing
@@ -177,8 +177,8 @@ async def test_switching_to_a_star_keeps_its_own_goal_test() -> None:
         await click_shown(pilot, "#apply")
         await wait_until(pilot, lambda: not isinstance(app.screen, SettingsScreen))
         await pilot.press("6")
-        await wait_until(pilot, lambda: app.search_run.algo.key == "astar")
-        run = app.search_run
+        await wait_until(pilot, lambda: app.session.run.algo.key == "astar")
+        run = app.session.run
         assert run.problem.goal_test == "expand" and "goal test" not in stats(app)[0]
         await pilot.press("comma")
         await wait_until(pilot, lambda: isinstance(app.screen, SettingsScreen))
@@ -192,13 +192,13 @@ async def test_the_benchmark_optimum_is_shown_while_the_map_is_unchanged() -> No
     app = SearchApp(grid, path=ARENA, algorithm="ucs", semantics=Semantics(corners="never"),
                     optimal_cost=scen.optimal_length)
     async with app.run_test(size=SIZE) as pilot:
-        assert app.search_run.known_lowest == scen.optimal_length
+        assert app.session.run.known_lowest == scen.optimal_length
         await pilot.press("end")
-        await wait_until(pilot, lambda: app.search_run.at_end)
+        await wait_until(pilot, lambda: app.session.run.at_end)
         assert "cost 2.00 (the lowest)" in stats(app)[1]
-        app.cursor_cell = (0, 0)
+        app.session.cursor = (0, 0)
         await pilot.press("o")  # an edit: the benchmark's figure no longer applies
-        assert app.search_run.known_lowest is None
+        assert app.session.run.known_lowest is None
 
 
 @sync
@@ -213,9 +213,9 @@ async def test_a_priority_queue_of_100000_entries_is_drawn_line_by_line() -> Non
     app = SearchApp(grid, algorithm="ucs", semantics=Semantics(tree_search=True),
                     max_steps=30_000)
     async with app.run_test(size=SIZE) as pilot:
-        run = app.search_run
+        run = app.session.run
         run.goto(20_000)
-        app._show()  # the app's own refresh, after moving its run directly
+        app.main.present()  # the app's own refresh, after moving its run directly
         await pilot.pause()
         panel = app.query_one(FrontierPanel)
         n = run.frontier_len()

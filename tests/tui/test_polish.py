@@ -52,17 +52,17 @@ async def test_a_key_pressed_while_end_moves_to_the_last_step_acts_at_once(one_s
     is done in slices too: the status line says how to stop it, the key bar shows esc, and a
     step key stops it where it is and steps."""
     app = SearchApp(open_grid(120, 120))
-    app.search_run.advance()  # recorded: `end` goes straight to moving there
+    app.session.run.advance()  # recorded: `end` goes straight to moving there
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("end")
-        run = app.search_run
-        assert app.seeking and run.k == 0  # whole at step 0 until the move is done
+        run = app.session.run
+        assert app.session.seeking and run.k == 0  # whole at step 0 until the move is done
         narration = stats(app)[1]
         assert narration.startswith(f"Moving to step {run.recorded:,}… ") and narration.endswith(
             " — esc to stop")
         assert "Stop" in shown(app)
         await pilot.press("n")
-        assert not app.seeking and run.k == 1 and not run.at_end
+        assert not app.session.seeking and run.k == 1 and not run.at_end
         assert "esc" not in stats(app)[1] and "Stop" not in shown(app)
 
 
@@ -71,30 +71,30 @@ async def test_esc_stops_end_while_it_records(one_slice) -> None:
     app = SearchApp(open_grid(80, 80), algorithm="iddfs")  # 3.4 M steps to record
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("end")
-        run = app.search_run
-        assert app.seeking
+        run = app.session.run
+        assert app.session.seeking
         assert stats(app)[1].startswith("Computing the search… ")
         assert stats(app)[1].endswith(" steps recorded — esc to stop")
         await pilot.press("escape")
-        assert not app.seeking and run.k == 0 and not run.done
+        assert not app.session.seeking and run.k == 0 and not run.done
         assert stats(app)[1].startswith("START (0,0) is on the stack")
         assert "Stop" not in shown(app)
         await pilot.press("escape")  # nothing to stop: nothing happens
-        assert run.k == 0 and not app.seeking
+        assert run.k == 0 and not app.session.seeking
 
 
 @sync
 async def test_esc_stops_end_while_it_moves_and_leaves_the_run_where_it_was(one_slice) -> None:
     app = SearchApp(walled_goal(120), algorithm="dfs")
-    app.search_run.advance()
+    app.session.run.advance()
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("n", "n")
-        before = (app.search_run.k, app.search_run.frontier(), stats(app))
+        before = (app.session.run.k, app.session.run.frontier(), stats(app))
         await pilot.press("end")
-        assert app.seeking and stats(app)[1].startswith("Moving to step")
+        assert app.session.seeking and stats(app)[1].startswith("Moving to step")
         await pilot.press("escape")
-        run = app.search_run
-        assert not app.seeking
+        run = app.session.run
+        assert not app.session.seeking
         assert (run.k, run.frontier(), stats(app)) == before
 
 
@@ -113,8 +113,8 @@ async def test_end_left_alone_gets_there_in_many_slices(monkeypatch: pytest.Monk
     app = SearchApp(walled_goal(120), algorithm="dfs")
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("end")
-        await wait_until(pilot, lambda: not app.seeking, 60)
-        run = app.search_run
+        await wait_until(pilot, lambda: not app.session.seeking, 60)
+        run = app.session.run
         assert run.at_end and not run.found and run.k > 14_000
         assert stats(app)[1].endswith("Frontier empty: no path")
         stepped = Run(walled_goal(120), "dfs")
@@ -131,19 +131,19 @@ async def test_home_from_far_moves_in_slices_too(monkeypatch: pytest.MonkeyPatch
     app = SearchApp(open_grid(120, 120))
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("end")
-        await wait_until(pilot, lambda: not app.seeking, 60)
-        run = app.search_run
+        await wait_until(pilot, lambda: not app.session.seeking, 60)
+        run = app.session.run
         total = run.k
         monkeypatch.setattr(Run, "REBUILD_PIECE", 64)
         monkeypatch.setattr(playback, "SLICE_SECONDS", 0.0)
         monkeypatch.setattr(playback, "SLICE_PAUSE", 3600.0)
         await pilot.press("home")
-        assert app.seeking and run.k == total and stats(app)[1].startswith("Moving to step 0… ")
+        assert app.session.seeking and run.k == total and stats(app)[1].startswith("Moving to step 0… ")
         await pilot.press("escape")
-        assert not app.seeking and run.k == total and run.at_end
+        assert not app.session.seeking and run.k == total and run.at_end
         monkeypatch.setattr(playback, "SLICE_PAUSE", 0.01)
         await pilot.press("home")
-        await wait_until(pilot, lambda: not app.seeking, 60)
+        await wait_until(pilot, lambda: not app.session.seeking, 60)
         assert run.k == 0 and stats(app)[1].startswith("START (0,0) is on the queue")
 
 
@@ -155,18 +155,18 @@ async def test_keys_do_nothing_behind_the_too_small_message() -> None:
     app = tutorial_app()
     async with app.run_test(size=(40, 12)) as pilot:
         assert app.screen.has_class("-too-small")
-        walls = app.grid.copy()
+        walls = app.session.grid.copy()
         await pilot.press("n", "n", "n", "end", "space", "o", "right", "3", "z", "question_mark")
-        run = app.search_run
-        assert run is not None and run.k == 0 and not app.playing and not app.seeking
-        assert app.search_run is run and app.algorithm == "bfs"  # no new run either
-        assert app.grid == walls and not app.dirty and app.cursor_cell == (0, 0)
+        run = app.session.run
+        assert run is not None and run.k == 0 and not app.session.playing and not app.session.seeking
+        assert app.session.run is run and app.session.algorithm == "bfs"  # no new run either
+        assert app.session.grid == walls and not app.session.dirty and app.session.cursor == (0, 0)
         assert not app.query_one(GridView).overview and len(app.screen_stack) == 1
         await pilot.resize_terminal(*SIZE)  # big enough again: the keys act
         await pilot.pause()
         assert not app.screen.has_class("-too-small")
         await pilot.press("n")
-        assert app.search_run.k == 1
+        assert app.session.run.k == 1
         await pilot.resize_terminal(40, 12)
         await pilot.pause()
         await pilot.press("q")
@@ -183,11 +183,11 @@ async def test_the_key_bar_says_pause_while_playing() -> None:
     async with app.run_test(size=SIZE) as pilot:
         assert "Play" in shown(app) and "Pause" not in shown(app)
         await pilot.press("space")
-        assert app.playing
+        assert app.session.playing
         await pilot.pause()
         assert "Pause" in shown(app) and "Play" not in shown(app)
         await pilot.press("space")
-        assert not app.playing
+        assert not app.session.playing
         await pilot.pause()
         assert "Play" in shown(app) and "Pause" not in shown(app)
 
@@ -217,12 +217,12 @@ async def test_a_narrow_key_bar_drops_the_least_important_hints_never_help_and_q
 @sync
 async def test_counts_are_grouped_with_commas_everywhere() -> None:
     app = SearchApp(open_grid(300, 300, start=(150, 150)))
-    app.search_run.advance()
+    app.session.run.advance()
     async with app.run_test(size=SIZE) as pilot:
-        app.search_run.goto(70_000)
-        app._show()
+        app.session.run.goto(70_000)
+        app.main.present()
         await pilot.pause()
-        run = app.search_run
+        run = app.session.run
         n, size = run.frontier_len(), run.tree_size()
         assert n > 999 and size > 999
         assert app.query_one(FrontierPanel).line_text(0) == f"{n:,} in the queue"
@@ -256,11 +256,11 @@ async def test_space_at_the_last_step_plays_again_from_step_0() -> None:
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("end")
-        await wait_until(pilot, lambda: app.search_run.at_end)
-        total = app.search_run.k
+        await wait_until(pilot, lambda: app.session.run.at_end)
+        total = app.session.run.k
         await pilot.press("space")
-        assert app.playing and app.search_run.k < total
-        assert app.check_action("play", ()) is False and app.check_action("pause", ()) is True
+        assert app.session.playing and app.session.run.k < total
+        assert app.main.check_action("play", ()) is False and app.main.check_action("pause", ()) is True
 
 
 @sync
@@ -268,12 +268,12 @@ async def test_space_at_the_last_step_of_a_big_run_slides_back_then_plays() -> N
     app = SearchApp(open_grid(120, 120))
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("end")
-        await wait_until(pilot, lambda: not app.seeking, 60)
-        total = app.search_run.k
-        assert total > app.search_run.REBUILD_AFTER
+        await wait_until(pilot, lambda: not app.session.seeking, 60)
+        total = app.session.run.k
+        assert total > app.session.run.REBUILD_AFTER
         await pilot.press("space")
-        await wait_until(pilot, lambda: not app.seeking, 60)
-        assert app.playing and app.search_run.k < 100 < total
+        await wait_until(pilot, lambda: not app.session.seeking, 60)
+        assert app.session.playing and app.session.run.k < 100 < total
 
 
 @sync
@@ -301,9 +301,9 @@ async def test_a_slice_of_end_due_after_the_app_closed_does_nothing(one_slice) -
     """Seen: leaving the app while `end` computed, the next slice came due as it closed and
     found no screen to show the run on (a traceback on the way out)."""
     app = SearchApp(open_grid(120, 120))
-    app.search_run.advance()
+    app.session.run.advance()
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("end")
-        assert app.seeking
-    app._seek_slice(app.search_run)  # what the pending timer would do
-    assert app.search_run.k == 0
+        assert app.session.seeking
+    app.main._seek_slice(app.session.run)  # what the pending timer would do
+    assert app.session.run.k == 0

@@ -23,26 +23,26 @@ async def test_the_quiz_hides_the_order_asks_and_keeps_a_score() -> None:
     async with app.run_test(size=SIZE) as pilot:
         assert "Quiz" in [desc for _, desc, _ in app.query_one(KeyBar).hints()]
         await pilot.press("n", "n")
-        front = app.search_run.frontier(0, 1)[0]
-        answer = app.search_run.gen_cell(front)
+        front = app.session.run.frontier(0, 1)[0]
+        answer = app.session.run.gen_cell(front)
         await pilot.press("i")
-        assert app.quiz and stats(app)[1].startswith(
+        assert app.session.quiz.on and stats(app)[1].startswith(
             "Quiz (0 of 0): which node comes off the queue next?")
         lines = panel_text(app)
         assert not any("▶" in line or "front" in line for line in lines)
         assert app.query_one(FrontierPanel).border_title.endswith("· order hidden")
-        app.cursor_cell = answer
+        app.session.cursor = answer
         await pilot.press("enter")
-        assert app.search_run.k == 3 and app.search_run.current_node() == answer
+        assert app.session.run.k == 3 and app.session.run.current_node() == answer
         assert stats(app)[1].startswith(f"Right: ({answer[0]},{answer[1]}) was the queue's "
                                         "front · 1 of 1")
-        app.cursor_cell = (5, 5)  # not on the frontier at all
+        app.session.cursor = (5, 5)  # not on the frontier at all
         await pilot.press("enter")
-        node = app.search_run.current_node()
+        node = app.session.run.current_node()
         assert stats(app)[1].startswith(f"Not quite: ({node[0]},{node[1]}) came off the "
                                         "queue's front, not (5,5) · 1 of 2")
         await pilot.press("i")  # off: the order and the marks come back
-        assert not app.quiz and any("▶" in line for line in panel_text(app))
+        assert not app.session.quiz.on and any("▶" in line for line in panel_text(app))
 
 
 @sync
@@ -52,8 +52,8 @@ async def test_under_dfs_the_answer_is_the_stacks_top() -> None:
         await pilot.press("i")
         assert "(it is the stack's top)" in stats(app)[1]
         for _ in range(3):
-            top = app.search_run.gen_cell(app.search_run.frontier(0, 1)[0])
-            app.cursor_cell = top
+            top = app.session.run.gen_cell(app.session.run.frontier(0, 1)[0])
+            app.session.cursor = top
             await pilot.press("enter")
         assert "3 of 3" in stats(app)[1]
 
@@ -63,7 +63,7 @@ async def test_enter_does_nothing_outside_the_quiz() -> None:
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("enter")
-        assert app.search_run.k == 0
+        assert app.session.run.k == 0
 
 
 # -- picking the answer in the frontier panel (click, tab and up/down) ------------------------
@@ -75,7 +75,7 @@ def entry_offset(panel: FrontierPanel, cell) -> tuple[int, int]:
 
 async def click_entry(pilot, cell, times: int = 1, panel: FrontierPanel | None = None) -> None:
     """Click the line of ``cell``'s entry in ``panel`` (the app's single one by default)."""
-    panel = panel or pilot.app.frontier_panel
+    panel = panel or pilot.app.main.panes[0].frontier
     await pilot.click(panel, offset=entry_offset(panel, cell), times=times)
     await pilot.pause()
 
@@ -84,7 +84,7 @@ async def quiz_after_two_steps(pilot):
     """BFS on the tutorial, two steps, quiz on: the queue holds two entries; the answer (the
     front) and the entry that is not it."""
     await pilot.press("n", "n", "i")
-    run = pilot.app.search_run
+    run = pilot.app.session.run
     cells = [run.gen_cell(g) for g in run.frontier(0, 10)]
     return cells[0], cells[1]
 
@@ -98,13 +98,13 @@ async def test_a_click_on_the_front_entry_picks_it_and_enter_answers_right() -> 
         panel = app.query_one(FrontierPanel)
         assert panel.border_subtitle == "+ just added · click picks"
         await click_entry(pilot, answer)
-        assert app.cursor_cell == answer and app.view.cursor == answer  # the pick is the cursor
-        assert app.search_run.k == 2  # a click picks; it does not answer
+        assert app.session.cursor == answer and app.main.views[0].cursor == answer  # the pick is the cursor
+        assert app.session.run.k == 2  # a click picks; it does not answer
         assert panel.entry_cell(panel.pick_line()) == answer
         assert panel.line_band(panel.pick_line()) is not None  # the picked line is marked
         await pilot.press("enter")
-        assert app.search_run.k == 3 and app.search_run.current_node() == answer
-        assert (app.quiz_right, app.quiz_asked) == (1, 1)
+        assert app.session.run.k == 3 and app.session.run.current_node() == answer
+        assert (app.session.quiz.right, app.session.quiz.asked) == (1, 1)
         assert stats(app)[1].startswith(f"Right: ({answer[0]},{answer[1]}) was the queue's "
                                         "front · 1 of 1 · next: cursor or pick, enter")
 
@@ -115,10 +115,10 @@ async def test_a_click_on_another_entry_and_enter_is_not_quite() -> None:
     async with app.run_test(size=SIZE) as pilot:
         answer, other = await quiz_after_two_steps(pilot)
         await click_entry(pilot, other)
-        assert app.cursor_cell == other
+        assert app.session.cursor == other
         await pilot.press("enter")
-        assert app.search_run.current_node() == answer
-        assert (app.quiz_right, app.quiz_asked) == (0, 1)
+        assert app.session.run.current_node() == answer
+        assert (app.session.quiz.right, app.session.quiz.asked) == (0, 1)
         assert stats(app)[1].startswith(
             f"Not quite: ({answer[0]},{answer[1]}) came off the queue's front, "
             f"not ({other[0]},{other[1]}) · 0 of 1")
@@ -130,7 +130,7 @@ async def test_a_double_click_on_an_entry_picks_and_answers() -> None:
     async with app.run_test(size=SIZE) as pilot:
         answer, _ = await quiz_after_two_steps(pilot)
         await click_entry(pilot, answer, times=2)
-        assert app.search_run.k == 3 and (app.quiz_right, app.quiz_asked) == (1, 1)
+        assert app.session.run.k == 3 and (app.session.quiz.right, app.session.quiz.asked) == (1, 1)
 
 
 @sync
@@ -141,11 +141,11 @@ async def test_clicks_on_the_count_line_or_outside_the_quiz_pick_nothing() -> No
         panel = app.query_one(FrontierPanel)
         await pilot.click(FrontierPanel, offset=(4, 2))  # no quiz: the front entry's line
         await pilot.pause()
-        assert app.cursor_cell == (0, 0) and panel.pick_line() is None
+        assert app.session.cursor == (0, 0) and panel.pick_line() is None
         await pilot.press("i")
         await pilot.click(FrontierPanel, offset=(4, 1))  # the count line
         await pilot.pause()
-        assert app.cursor_cell == (0, 0) and app.search_run.k == 2
+        assert app.session.cursor == (0, 0) and app.session.run.k == 2
 
 
 @sync
@@ -165,20 +165,20 @@ async def test_tab_to_the_frontier_then_up_down_pick_and_enter_answers() -> None
         order = [panel.entry_cell(y) for y in (1, 2)]  # by cell: the listed order
         assert None not in order and panel.entry_cell(3) is None
         await pilot.press("down")  # nothing picked yet (the cursor is on the start): the first
-        assert app.cursor_cell == order[0] and panel.pick_line() == 1
+        assert app.session.cursor == order[0] and panel.pick_line() == 1
         await pilot.press("down", "down")  # stops at the last
-        assert app.cursor_cell == order[1] and panel.pick_line() == 2
+        assert app.session.cursor == order[1] and panel.pick_line() == 2
         await pilot.press("up")
-        assert app.cursor_cell == order[0]
-        while app.cursor_cell != answer:
+        assert app.session.cursor == order[0]
+        while app.session.cursor != answer:
             await pilot.press("up")
         await pilot.press("enter")
-        assert (app.quiz_right, app.quiz_asked) == (1, 1) and app.search_run.k == 3
+        assert (app.session.quiz.right, app.session.quiz.asked) == (1, 1) and app.session.run.k == 3
         await pilot.press("i")  # quiz off: up / down scroll the panel again, the pick is gone
         assert "Pick" not in [desc for _, desc, _ in app.query_one(KeyBar).hints()]
-        cursor = app.cursor_cell
+        cursor = app.session.cursor
         await pilot.press("down")
-        assert app.cursor_cell == cursor and panel.pick_line() is None
+        assert app.session.cursor == cursor and panel.pick_line() is None
 
 
 @sync
@@ -187,17 +187,17 @@ async def test_in_compare_mode_the_left_panes_frontier_picks() -> None:
     async with app.run_test(size=(160, 44)) as pilot:
         await pilot.press("c")
         await pilot.pause()
-        left, right = (pane.frontier for pane in app.panes)
+        left, right = (pane.frontier for pane in app.main.panes)
         await pilot.press("n", "n", "i")
-        answer = app.search_run.gen_cell(app.search_run.frontier(0, 1)[0])
+        answer = app.session.run.gen_cell(app.session.run.frontier(0, 1)[0])
         await pilot.click(right, offset=(4, 2))  # the right pane's front: not the quiz's
         await pilot.pause()
-        assert app.cursor_cell == (0, 0)
+        assert app.session.cursor == (0, 0)
         await click_entry(pilot, answer, panel=left)
-        assert app.cursor_cell == answer
+        assert app.session.cursor == answer
         await pilot.press("enter")
-        assert (app.quiz_right, app.quiz_asked) == (1, 1)
-        assert app.stats.narration_text.startswith(f"Right: ({answer[0]},{answer[1]}) was")
+        assert (app.session.quiz.right, app.session.quiz.asked) == (1, 1)
+        assert app.main.stats.narration_text.startswith(f"Right: ({answer[0]},{answer[1]}) was")
 
 
 @sync

@@ -29,7 +29,7 @@ async def test_with_saving_off_each_file_key_says_so_and_opens_nothing(tmp_path:
     before = path.read_bytes()
     app = served_app(path, None)
     async with app.run_test(size=SIZE) as pilot:
-        app.cursor_cell = (5, 1)
+        app.session.cursor = (5, 1)
         await pilot.press("g")  # an edit: ctrl+s would save it
         for key in ("ctrl+s", "w", "ctrl+o"):
             await pilot.press(key)
@@ -42,7 +42,7 @@ async def test_with_saving_off_each_file_key_says_so_and_opens_nothing(tmp_path:
         assert isinstance(app.screen, ConfirmQuitScreen)
         await pilot.press("s")
         await pilot.pause()
-        assert app.dirty and messages(app)[-1] == OFF_MESSAGE
+        assert app.session.dirty and messages(app)[-1] == OFF_MESSAGE
     assert path.read_bytes() == before
     assert sorted(p.name for p in tmp_path.iterdir()) == ["tutorial.txt"]
 
@@ -55,7 +55,7 @@ async def test_save_as_takes_plain_names_in_the_folder_only(tmp_path: Path) -> N
     before = served.read_bytes()
     app = served_app(served, folder)
     async with app.run_test(size=SIZE) as pilot:
-        app.cursor_cell = (5, 1)
+        app.session.cursor = (5, 1)
         await pilot.press("g", "ctrl+s")  # the served map is not in the folder: a name first
         await pilot.pause()
         prompt = app.screen
@@ -69,11 +69,11 @@ async def test_save_as_takes_plain_names_in_the_folder_only(tmp_path: Path) -> N
             assert app.screen is prompt and says in prompt.error, (name, prompt.error)
         await type_name(pilot, "mine.txt")
         assert app.screen is not prompt
-        assert app.map_path == folder.resolve() / "mine.txt" and not app.dirty
-        app.cursor_cell = (2, 1)  # ctrl+s now saves over the folder's file without asking
+        assert app.session.map_path == folder.resolve() / "mine.txt" and not app.session.dirty
+        app.session.cursor = (2, 1)  # ctrl+s now saves over the folder's file without asking
         await pilot.press("g", "ctrl+s")
         await pilot.pause()
-        assert len(app.screen_stack) == 1 and not app.dirty
+        assert len(app.screen_stack) == 1 and not app.session.dirty
     assert served.read_bytes() == before
     assert sorted(p.name for p in tmp_path.iterdir()) == ["saves", "tutorial.txt"]
     assert [p.name for p in folder.iterdir()] == ["mine.txt"]
@@ -100,7 +100,7 @@ async def test_the_open_prompt_reads_only_names_in_the_folder(tmp_path: Path) ->
             await type_name(pilot, name)
             assert app.screen is prompt and says in prompt.error, (name, prompt.error)
         await type_name(pilot, "class.txt")
-        assert app.screen is not prompt and app.map_path == folder.resolve() / "class.txt"
+        assert app.screen is not prompt and app.session.map_path == folder.resolve() / "class.txt"
 
 
 @sync

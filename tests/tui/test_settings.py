@@ -20,16 +20,16 @@ async def test_settings_apply_starts_a_new_run_at_step_0() -> None:
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("n", "n")
-        first = app.search_run
+        first = app.session.run
         await pilot.press("comma")
         await wait_until(pilot, lambda: isinstance(app.screen, SettingsScreen))
         await pilot.press("right", "right", "enter")  # corners has the focus: never
         await click_shown(pilot, "#apply")
         await pilot.pause()
         assert not isinstance(app.screen, SettingsScreen)
-        run = app.search_run
+        run = app.session.run
         assert run is not first and run.k == 0
-        assert run.semantics == Semantics(corners="never") == app.semantics
+        assert run.semantics == Semantics(corners="never") == app.session.semantics
         assert "corners: never" in stats(app)[0]
 
 
@@ -38,14 +38,14 @@ async def test_cancel_and_escape_change_nothing() -> None:
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("n")
-        first = app.search_run
+        first = app.session.run
         await pilot.press("comma", "right", "enter", "escape")
-        assert app.search_run is first and first.k == 1 and app.semantics == Semantics()
+        assert app.session.run is first and first.k == 1 and app.session.semantics == Semantics()
         await pilot.press("comma")
         await wait_until(pilot, lambda: isinstance(app.screen, SettingsScreen))
         await click_shown(pilot, "#cancel")
         await wait_until(pilot, lambda: not isinstance(app.screen, SettingsScreen))
-        assert app.search_run is first
+        assert app.session.run is first
 
 
 @sync
@@ -67,7 +67,7 @@ async def test_a_bad_move_order_is_shown_and_not_applied() -> None:
         await pilot.pause()
         await pilot.press("enter")  # enter in the order applies, as the Apply button does
         await pilot.pause()
-        assert app.semantics.order == ("N", "W", "S", "E")
+        assert app.session.semantics.order == ("N", "W", "S", "E")
 
 
 @sync
@@ -93,7 +93,7 @@ async def test_visit_on_expand_lists_duplicates_and_says_when_a_step_is_discarde
     step's narration says it threw the copy away."""
     app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, semantics=Semantics(visit="expand"))
     async with app.run_test(size=SIZE) as pilot:
-        run = app.search_run
+        run = app.session.run
         run.advance()
         k = run.rec.discarded[0]
         for _ in range(k - 1):
@@ -116,7 +116,7 @@ async def test_no_path_under_a_corner_rule_says_which_rule_blocked_it() -> None:
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("end")
         await pilot.pause()
-        assert app.search_run.at_end and not app.search_run.found
+        assert app.session.run.at_end and not app.session.run.found
         assert "the corner rule 'one' blocks it" in stats(app)[1]
 
 
@@ -125,7 +125,7 @@ async def test_switching_to_iddfs_drops_visit_on_expand_and_says_so() -> None:
     app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, semantics=Semantics(visit="expand"))
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("3")
-        assert app.search_run.algorithm == "iddfs" and app.semantics.visit == "generate"
+        assert app.session.run.algorithm == "iddfs" and app.session.semantics.visit == "generate"
         assert "does not apply to IDDFS" in stats(app)[1]
 
 
@@ -133,7 +133,7 @@ async def test_switching_to_iddfs_drops_visit_on_expand_and_says_so() -> None:
 async def test_a_discarded_step_shows_the_entry_it_threw_away() -> None:
     app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, semantics=Semantics(visit="expand"))
     async with app.run_test(size=SIZE) as pilot:
-        run = app.search_run
+        run = app.session.run
         run.advance()
         k = run.rec.discarded[0]
         for _ in range(k):

@@ -269,8 +269,8 @@ async def test_the_palette_picks_each_algorithm_of_the_registry() -> None:
     async with app.run_test(size=SIZE) as pilot:
         for algorithm in reversed(ALGORITHMS.values()):
             await palette_run(pilot, f"algorithm: {algorithm.name}")
-            assert app.algorithm == algorithm.key
-            assert app.search_run is not None and app.search_run.algorithm == algorithm.key
+            assert app.session.algorithm == algorithm.key
+            assert app.session.run is not None and app.session.run.algorithm == algorithm.key
 
 
 @sync

@@ -1,6 +1,5 @@
-"""The app's file actions, kept apart from its search actions (a mixin of
-:class:`~tui_search.tui.app.SearchApp`): saving, save-as, opening a map, and never losing
-unsaved edits -- quitting or replacing the map asks first.
+"""The main screen's file commands: saving, save-as, opening a map, and never losing unsaved
+edits -- quitting or replacing the map asks first.
 
 Saving writes the file the map was read from back with only the edited cells changed (see
 :class:`~tui_search.engine.mapfile.MapSource`), in its own format: ctrl+s on a MovingAI
@@ -16,12 +15,16 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any, Protocol
+
+from textual.app import App
+from textual.notifications import SeverityLevel
+from textual.screen import Screen
 
 from tui_search.engine.grid import Grid
 from tui_search.engine.mapfile import MOVINGAI, TEXT, MapError, kind_for_path, save_map
 from tui_search.tui.file_access import FileAccess
-from tui_search.tui.mixin import AppMixinBase
+from tui_search.tui.session import Session
 
 if TYPE_CHECKING:
     from tui_search.tui.screens.confirm_quit import Leaving
@@ -32,11 +35,38 @@ if TYPE_CHECKING:
 NO_ENDPOINTS_IN_MAP = "MovingAI format: the start and goal are not part of a .map file"
 
 
-class FileActions(AppMixinBase):
+class Host(Protocol):
+    """What the file commands need of the screen they serve."""
+
+    session: Session
+    file_access: FileAccess
+
+    @property
+    def app(self) -> App[Any]: ...
+
+    def notify(self, message: str, *, title: str = "", severity: SeverityLevel = "information",
+               timeout: float | None = None, markup: bool = True) -> None: ...
+
+    def show_map(self) -> None:
+        """Show the session's map anew (after a new map or a save)."""
+
+
+class FileCommands:
     """ctrl+s saves, w saves as, ctrl+o opens a map; q and a new map ask first when there
     are unsaved edits (:meth:`confirm_discard`, :meth:`replace_map`)."""
 
-    file_access: FileAccess = FileAccess()  # the app sets its own
+    def __init__(self, host: Host) -> None:
+        self.host = host
+
+    @property
+    def file_access(self) -> FileAccess:
+        return self.host.file_access
+
+    def notify(self, message: str, **options: Any) -> None:
+        self.host.notify(message, **options)
+
+    def push_screen(self, screen: Screen[Any], callback: Callable[[Any], None]) -> None:
+        self.host.app.push_screen(screen, callback)
 
     def _files_off(self) -> bool:
         """When the served app may not touch files: say so (one line) and return True."""
@@ -46,35 +76,34 @@ class FileActions(AppMixinBase):
         return off is not None
 
     # -- saving ---------------------------------------------------------------------------
-    def action_save(self) -> None:
-        own = self.map_path
+    def save_own(self) -> None:
+        own = self.host.session.map_path
         if own is None or not self.file_access.may_save_over(own):
             self.ask_save_as()
         else:
             self.save(own)
 
-    def action_save_as(self) -> None:
+    def save_as(self) -> None:
         self.ask_save_as()
 
     def _own_kind(self) -> str:
         """The format of the map's own file: the one it was read in."""
-        source = self.grid.source
+        source = self.host.session.grid.source
         if source is not None:
             return source.kind
-        return kind_for_path(self.map_path) if self.map_path is not None else TEXT
+        return kind_for_path(self.host.session.map_path) if self.host.session.map_path is not None else TEXT
 
     def write_map(self, path: Path, kind: str) -> str | None:
         """Save the map to ``path`` in format ``kind``, atomically; None, or the one-line
         reason it failed (the old file is then untouched)."""
         try:
-            self.grid.source = save_map(self.grid, path, kind)
+            self.host.session.grid.source = save_map(self.host.session.grid, path, kind)
         except MapError as exc:
             return str(exc)
-        self.map_path = Path(path)
-        self.dirty = False
+        self.host.session.saved(Path(path))
         note = f" ({NO_ENDPOINTS_IN_MAP})" if kind == MOVINGAI else ""
         self.notify(f"Saved {path}{note}", timeout=6 if note else 3)
-        self._show(changed=[])
+        self.host.show_map()
         return None
 
     def save(self, path: Path) -> bool:
@@ -85,7 +114,7 @@ class FileActions(AppMixinBase):
         return error is None
 
     def _save_as(self, path: Path) -> str | None:
-        own = self.map_path is not None and path.resolve() == self.map_path.resolve()
+        own = self.host.session.map_path is not None and path.resolve() == self.host.session.map_path.resolve()
         return self.write_map(path, self._own_kind() if own else kind_for_path(path))
 
     def ask_save_as(self, then: Callable[[], None] | None = None) -> None:
@@ -94,7 +123,7 @@ class FileActions(AppMixinBase):
             return
         from tui_search.tui.screens.save_as import SaveAsScreen
 
-        path = self.map_path
+        path = self.host.session.map_path
         access = self.file_access
         suggestion = access.suggestion(path)
 
@@ -113,7 +142,7 @@ class FileActions(AppMixinBase):
         ``leaving`` is a :class:`~tui_search.tui.screens.confirm_quit.Leaving` (the words);
         quitting's by default.
         """
-        if not self.dirty:
+        if not self.host.session.dirty:
             then()
             return
         from tui_search.tui.screens.confirm_quit import QUIT, QUITTING, SAVE, ConfirmQuitScreen
@@ -122,26 +151,26 @@ class FileActions(AppMixinBase):
             if choice == QUIT:
                 then()
             elif choice == SAVE:
-                own = self.map_path
+                own = self.host.session.map_path
                 if own is None or not self.file_access.may_save_over(own):
                     self.ask_save_as(then)
                 elif self.save(own):
                     then()
 
-        name = self.map_name
+        name = self.host.session.map_name
         self.push_screen(ConfirmQuitScreen(name, leaving or QUITTING), answer)
 
-    async def action_quit(self) -> None:
-        self.confirm_discard(lambda: self.exit(0))
+    def quit(self) -> None:
+        self.confirm_discard(lambda: self.host.app.exit(0))
 
     # -- opening a map --------------------------------------------------------------------
-    def action_open(self) -> None:
+    def open(self) -> None:
         if self._files_off():
             return
         from tui_search.tui.screens.open_map import OpenMapScreen
 
         access = self.file_access
-        suggestion = access.open_suggestion(self.map_path)
+        suggestion = access.open_suggestion(self.host.session.map_path)
 
         def opened(result: tuple[Grid, Path] | None) -> None:
             if result is not None:
@@ -159,11 +188,5 @@ class FileActions(AppMixinBase):
         self.confirm_discard(lambda: self._use_map(grid, path), replacing(new_name))
 
     def _use_map(self, grid: Grid, path: Path | None) -> None:
-        self.grid = grid
-        self.map_path = Path(path) if path is not None else None
-        self.dirty = False
-        self.cursor_cell = grid.start or (0, 0)
-        for view in self.views:
-            view.set_grid(grid)
-            view.set_cursor(self.cursor_cell)
-        self._new_run()
+        self.host.session.use_map(grid, path)
+        self.host.show_map()

@@ -1,57 +1,83 @@
-"""One run's pane in compare mode: its counts and narration, its map view, its frontier panel
-(titled by its discipline) and its search tree, side by side with the other runs' panes.
+"""A search's pane: its counts and narration, its map view, its frontier panel (titled by its
+discipline) and its search tree.  Every search shown is a pane, one or four of them.
 
-The same widgets as the single view, pushed the same way (:func:`show_run`): comparing runs
-is more panes, not more special cases.  Layout is the app's (``app.tcss``).
+The screen pushes a run to it (:meth:`RunPane.show`) and tells it how to lay itself out
+(:meth:`RunPane.lay_out`, from :func:`~tui_search.tui.layout.arrange`); layout beyond that is
+``app.tcss``'s.
 """
 
 from __future__ import annotations
 
 from textual.app import ComposeResult
-from textual.containers import Horizontal, Vertical
+from textual.containers import Vertical
+from textual.widgets import Static
 
 from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.run import Run
+from tui_search.tui.layout import Arrangement
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.search_tree import SearchTreePanel
 from tui_search.tui.widgets.stats import Stats
 
 
-def show_run(view: GridView, frontier: FrontierPanel, tree: SearchTreePanel, run: Run | None,
-             changed: list[Cell] | None, follow: bool, hide_order: bool) -> None:
-    """Push ``run`` at its position to a map view and its panels (``changed``: the cells
-    whose look changed, None for all)."""
-    view.show_run(run, changed)
-    if run is not None:
-        frontier.show(run, hide_order=hide_order)
-        tree.show(run)
-        node = run.current_node()
-        if follow and node is not None:
-            view.follow(node)
-
-
 class RunPane(Vertical):
-    """A run of a comparison: ``label`` names its search."""
+    """A run's pane: ``label`` names its search.  ``note`` is what the lists' place says
+    while there is no run (no start or goal)."""
 
-    def __init__(self, grid: Grid, label: str, *, id: str | None = None) -> None:
-        super().__init__(id=id, classes="run-pane")
+    def __init__(self, grid: Grid, label: str, note: str = "") -> None:
+        super().__init__(classes="run-pane")
         self.label = label
         self.stats = Stats(classes="pane-stats")
         self.view = GridView(grid, classes="pane-map")
         self.frontier = FrontierPanel(classes="pane-frontier")
         self.tree_panel = SearchTreePanel(classes="pane-tree")
+        self.side_note = Static(note, classes="pane-note")
+        self.map_box = Vertical(classes="pane-map-box")  # the room the map's cells fit
+        self.lists = Vertical(classes="pane-lists")
 
     def compose(self) -> ComposeResult:
         yield self.stats
-        with Vertical(classes="pane-map-box"):  # the room the map's cells are fitted to
-            yield self.view
-        with Horizontal(classes="pane-lists"):
+        with self.lists:
             yield self.frontier
             yield self.tree_panel
+            yield self.side_note
+        with self.map_box:
+            yield self.view
 
-    def show(self, run: Run | None, algorithm: str, changed: list[Cell] | None, *,
-             follow: bool = True, hide_order: bool = False, note: str = "",
-             done: bool = False) -> None:
-        show_run(self.view, self.frontier, self.tree_panel, run, changed, follow, hide_order)
-        self.stats.show(run, algorithm, label=self.label, note=note, done=done)
+    def lay_out(self, arrangement: Arrangement) -> None:
+        """Lay the pane out: its lists beside or under the map, or not at all; its trees and
+        its own status lines shown or not."""
+        self.set_class(arrangement.beside, "-beside")
+        self.stats.display = arrangement.pane_stats
+        lists = self.lists
+        lists.display = arrangement.lists
+        if arrangement.beside:
+            lists.styles.width = arrangement.lists_width
+            lists.styles.height = "1fr"
+            self.map_box.styles.height = "1fr"
+        else:
+            lists.styles.width = "1fr"
+            lists.styles.height = arrangement.lists_height or None
+            self.map_box.styles.height = arrangement.map_height or "1fr"
+        self.tree_panel.set_class(not arrangement.trees, "-folded")
+
+    def show(self, run: Run | None, changed: list[Cell] | None, *, follow: bool = True,
+             hide_order: bool = False, title: str = "", label: str = "", note: str = "",
+             playing: str = "") -> None:
+        """Push ``run`` at its position to the map and the panels (``changed``: the cells
+        whose look changed, None for all); ``title`` is the map's border title."""
+        view = self.view
+        view.show_run(run, changed)
+        self.set_class(run is None, "-no-run")
+        if run is not None:
+            self.frontier.show(run, hide_order=hide_order)
+            self.tree_panel.show(run)
+            node = run.current_node()
+            if follow and node is not None:
+                view.follow(node)
+            if self.stats.display:
+                self.stats.show(run, run.algo.key, label=label or self.label, note=note,
+                                done=run.at_end, playing=playing)
+        if view.border_title != title:  # setting it repaints the whole view
+            view.border_title = title

@@ -1,0 +1,84 @@
+"""The key table: every key of the main screen, its hint and what it does.
+
+The key bar, the help screen and the command palette all read this table, so a key is
+documented where it is bound.  ``check_action`` on the main screen greys out or hides the keys
+that cannot act now.
+"""
+
+from __future__ import annotations
+
+from textual.binding import Binding, BindingType
+
+from tui_search.engine.algorithms import ALGORITHMS
+from tui_search.tui.themes import THEMES
+
+#: What the key bar keeps when it is too narrow for every hint: the highest; help and quit
+#: always (the bar drops the lowest first).
+KEY_IMPORTANCE = {
+    "help": 10, "quit": 10, "stop_seek": 9, "next": 8, "play": 7, "pause": 7, "algorithm": 6,
+    "compare": 6, "settings": 5, "reset": 4, "save": 3, "quiz": 2, "overview": 2, "zoom": 1,
+    "pick": 7,  # the frontier panel's, while it has the focus in the quiz
+}
+STEP = Binding.Group("Step", compact=True)
+ZOOM = Binding.Group("Zoom", compact=True)
+ALGO = Binding.Group("/".join(a.tag for a in ALGORITHMS.values()), compact=True)
+
+KEYS: list[BindingType] = [
+    Binding("up,k", "move(0,-1)", "Cursor up", show=False),
+    Binding("down,j", "move(0,1)", "Cursor down", show=False),
+    Binding("left,h", "move(-1,0)", "Cursor left", show=False),
+    Binding("right,l", "move(1,0)", "Cursor right", show=False),
+    Binding("n", "next", "Next", group=STEP, tooltip="Next step (one expansion)"),
+    Binding("p", "prev", "Prev", group=STEP, tooltip="Previous step"),
+    # One key, two hints: "Play" while paused, "Pause" while playing (check_action hides
+    # the other, and a key runs the first of its bindings that is enabled).
+    Binding("space", "play", "Play", tooltip="Play (at the last step: again from step 0)"),
+    Binding("space", "pause", "Pause", tooltip="Pause"),
+    Binding("plus", "faster", "Faster", show=False, key_display="+", tooltip="Faster"),
+    Binding("minus", "slower", "Slower", show=False, key_display="-", tooltip="Slower"),
+    Binding("home", "first", "First", show=False, tooltip="First step"),
+    Binding("end", "last", "Last", show=False, tooltip="Last step: the answer"),
+    Binding("escape", "stop_seek", "Stop", key_display="esc",
+            tooltip="Stop computing the last step"),
+    *(Binding(a.app_key, f"algorithm({a.key!r})", a.short, group=ALGO, tooltip=a.name)
+      for a in ALGORITHMS.values()),
+    Binding("s", "place('start')", "Start", show=False, tooltip="Start at the cursor"),
+    Binding("g", "place('goal')", "Goal", show=False, tooltip="Goal at the cursor"),
+    Binding("o", "toggle_wall", "Wall", show=False, tooltip="Obstacle on/off at the cursor"),
+    Binding("c", "compare", "Compare",
+            tooltip="Compare searches side by side in lockstep (again: one search)"),
+    Binding("f", "fold_trees", "Trees", show=False,
+            tooltip="Compare mode: fold the search trees away (again: show them)"),
+    Binding("r", "reset", "Reset", tooltip="Restart the search at step 0"),
+    Binding("comma", "settings", "Settings", key_display=",",
+            tooltip="Search settings: moves, corners, visited, goal test, tree search"),
+    Binding("z", "overview", "Whole map",
+            tooltip="Overview: the whole map at once, a character a block of cells"),
+    Binding("right_square_bracket", "zoom(1)", "Zoom in", group=ZOOM, key_display="]",
+            tooltip="Bigger cells (the cursor's cell stays in view)"),
+    Binding("left_square_bracket", "zoom(-1)", "Zoom out", group=ZOOM, key_display="[",
+            tooltip="Smaller cells (out of the smallest: the whole map)"),
+    Binding("a", "labels", "Labels", show=False,
+            tooltip="Cell labels: arrows and depth/cost, depth/cost only, none"),
+    Binding("pageup", "page(-1)", "Page up", show=False, key_display="pgup",
+            tooltip="Cursor a page up"),
+    Binding("pagedown", "page(1)", "Page down", show=False, key_display="pgdn",
+            tooltip="Cursor a page down"),
+    Binding("S", "jump('start')", "To start", show=False, tooltip="Cursor to the start"),
+    Binding("G", "jump('goal')", "To goal", show=False, tooltip="Cursor to the goal"),
+    Binding("e", "jump('current')", "To node", show=False,
+            tooltip="Cursor to the node being expanded"),
+    Binding("i", "quiz", "Quiz", tooltip="Predict the next node: a quiz (again to stop)"),
+    Binding("enter", "answer", "Answer", show=False,
+            tooltip="Quiz: the node under the cursor (or the frontier entry picked) "
+            "comes off next"),
+    Binding("x", "exercise", "Exercise", show=False,
+            tooltip="The tutorial's exercises as live challenges: 1, 2, off"),
+    Binding("t", "app.next_theme", "Theme", show=False,
+            tooltip="Next colour theme: " + ", ".join(t.title.lower() for t in THEMES.values())),
+    Binding("ctrl+s", "save", "Save", tooltip="Save the map"),
+    Binding("w", "save_as", "Save as", show=False, tooltip="Save the map as a new file"),
+    Binding("ctrl+o", "open", "Open", show=False, tooltip="Open a map…"),
+    Binding("question_mark", "help", "Help", key_display="?", tooltip="Help"),
+    Binding("q", "quit", "Quit", tooltip="Quit (asks first when there are unsaved edits)"),
+]

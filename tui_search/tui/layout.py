@@ -1,0 +1,110 @@
+"""Where the panes go, from the room there is (no Textual): one rule for one pane or four.
+
+The panes share the space the status lines, the key bar, the legend, the readout and the
+challenge panel leave.  In that room the map comes first: it is shown whole whenever it fits
+at its smallest cells.  What else a pane shows gives way in this order when there is not room
+for all of it: the comparison table, the search trees, the frontier lists, the panes' own
+status lines (the status line under them still names the step).  A pane much wider than tall
+keeps its lists beside the map, as a column; else under it.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+#: Panes stand side by side while each is at least this wide (else in a grid of fewer
+#: columns), and are fitted to at least this many lines when a grid is chosen.
+PANE_MIN_WIDTH, PANE_MIN_HEIGHT = 50, 16
+#: The lists (frontier and tree) need this many lines under a map, and a column beside one
+#: this wide (at most LISTS_MAX_WIDTH, else 40 % of the pane).
+LISTS_MIN_HEIGHT, LISTS_MIN_WIDTH, LISTS_MAX_WIDTH = 6, 38, 56
+#: The trees show under a map when the lists get at least this many lines.
+TREES_MIN_HEIGHT = 9
+#: A pane's own status lines (its search's figures and narration).
+PANE_STATS_HEIGHT = 2
+
+
+class Arrangement(NamedTuple):
+    """How ``n`` panes are laid out: a ``columns`` x ``rows`` grid of panes; each pane's map
+    box gets ``map_height`` lines (0: all that is left), its lists ``lists_height`` (0: none),
+    or a column ``lists_width`` wide beside the map (``beside``)."""
+
+    columns: int
+    rows: int
+    table: bool  # the comparison table under the panes
+    pane_stats: bool
+    beside: bool
+    lists_width: int
+    lists_height: int
+    trees: bool
+    map_height: int
+    fits: bool  # the whole map is in view at the smallest cells
+
+    @property
+    def lists(self) -> bool:
+        return self.beside or self.lists_height > 0
+
+
+def pane_grid(n: int, width: int, height: int) -> tuple[int, int]:
+    """Columns and rows for ``n`` panes in ``width`` x ``height``: side by side while each
+    gets PANE_MIN_WIDTH columns; else the grid whose panes come closest to that width and to
+    PANE_MIN_HEIGHT lines (two by two, or one above the other in a narrow terminal, beside
+    each other again in a short one)."""
+    if width // n >= PANE_MIN_WIDTH:
+        return n, 1
+
+    def fit(columns: int) -> float:
+        rows = -(-n // columns)
+        return min(width / columns / PANE_MIN_WIDTH, height / rows / PANE_MIN_HEIGHT)
+
+    columns = max(range(1, n + 1), key=lambda c: (fit(c), -abs(c - -(-n // c))))
+    return columns, -(-n // columns)
+
+
+def lists_width(pane_width: int) -> int:
+    return max(LISTS_MIN_WIDTH, min(LISTS_MAX_WIDTH, pane_width * 2 // 5))
+
+
+def arrange(n: int, width: int, height: int, map_size: tuple[int, int], *,
+            table_height: int = 0, fold_trees: bool = False) -> Arrangement:
+    """Lay ``n`` panes out in ``width`` x ``height`` (the room under and beside the fixed
+    lines, the table's ``table_height`` lines included when there is one) for a map of
+    ``map_size`` cells, whose smallest cells are 2 characters by 1 line, in a border."""
+    need_w, need_h = 2 * map_size[0] + 2, map_size[1] + 2
+    stats = PANE_STATS_HEIGHT if n > 1 else 0  # one pane: the status line is its own
+    candidates = []
+    for table in ((True, False) if table_height else (False,)):
+        room = height - (table_height if table else 0)
+        columns, rows = pane_grid(n, width, room)
+        pane_w, pane_h = width // columns, room // rows - stats
+        candidates.append(_pane(columns, rows, table, stats > 0, pane_w, pane_h, need_w,
+                                need_h, fold_trees))
+    # The table goes first: the panes' own lines say most of what it says.
+    return (next((c for c in candidates if c.fits and c.lists), None)
+            or next((c for c in candidates if c.fits), None) or candidates[0])
+
+
+def _pane(columns: int, rows: int, table: bool, pane_stats: bool, pane_w: int, pane_h: int,
+          need_w: int, need_h: int, fold_trees: bool) -> Arrangement:
+    """One pane's inside: its lists beside the map when the pane is much wider than tall and
+    the map still fits beside them; else under the map when there is room for both."""
+    side = lists_width(pane_w)
+    if pane_w >= 3 * pane_h and pane_w - side >= need_w:
+        return Arrangement(columns, rows, table, pane_stats, True, side, 0, not fold_trees,
+                           0, need_h <= pane_h)
+    if need_h + LISTS_MIN_HEIGHT <= pane_h:
+        map_h = min(pane_h - LISTS_MIN_HEIGHT, max(need_h, pane_h * 3 // 5))
+        lists_h = pane_h - map_h
+        return Arrangement(columns, rows, table, pane_stats, False, 0, lists_h,
+                           lists_h >= TREES_MIN_HEIGHT and not fold_trees, map_h,
+                           need_w <= pane_w)
+    if need_h <= pane_h:  # the whole map, without the lists
+        return Arrangement(columns, rows, table, pane_stats, False, 0, 0, False, pane_h,
+                           need_w <= pane_w)
+    # Too big to fit: the map scrolls (z: the overview); the lists keep their share.
+    lists_h = pane_h * 2 // 5 if pane_h * 2 // 5 >= LISTS_MIN_HEIGHT else 0
+    return Arrangement(columns, rows, table, pane_stats, False, 0, lists_h,
+                       lists_h >= TREES_MIN_HEIGHT and not fold_trees, pane_h - lists_h, False)
+
+
+__all__ = ["Arrangement", "arrange", "pane_grid"]

@@ -1,0 +1,270 @@
+"""The main screen's keys and the widgets' messages: each a call on the session, then the
+screen shows what changed (:class:`~tui_search.tui.screens.panes.PanesScreen`)."""
+
+from __future__ import annotations
+
+from typing import ClassVar
+
+from textual.binding import BindingType
+
+from tui_search.tui import playback
+from tui_search.tui.keys import KEYS
+from tui_search.tui.screens.panes import PanesScreen
+from tui_search.tui.screens.settings_choice import SettingsChoice
+from tui_search.tui.widgets.frontier_panel import FrontierPanel
+from tui_search.tui.widgets.grid_view import GridView
+from tui_search.tui.widgets.key_bar import KeyBar
+
+
+class MainScreen(PanesScreen):
+    """The panes, and every key of :mod:`~tui_search.tui.keys`."""
+
+    BINDINGS: ClassVar[list[BindingType]] = KEYS
+
+    # -- moving through the runs -----------------------------------------------------------
+    def action_next(self) -> None:
+        self._timer.pause()
+        self.moved(self.session.step(forward=True))
+
+    def action_prev(self) -> None:
+        self._timer.pause()
+        self.moved(self.session.step(forward=False))
+
+    def action_first(self) -> None:
+        if self.session.runs:
+            self.seek(to_end=False)
+
+    def action_last(self) -> None:
+        """Go to the end: record each search, then move there, in slices with the event loop
+        answering keys in between (esc, or any key that moves the position, stops it)."""
+        if self.session.runs and not self.session.at_end():
+            self.seek(to_end=True)
+
+    def action_stop_seek(self) -> None:
+        """esc while computing the end: stop where the runs are (what was recorded is kept)."""
+        if self.session.seeking:
+            self.stop()
+            self.present(changed=[])
+
+    def action_reset(self) -> None:
+        self.session.new_runs()
+        self.new_runs_shown()
+
+    def action_play(self) -> None:
+        """Play (at the last step: again from step 0); pause when playing."""
+        if self.session.playing:
+            self.action_pause()
+        elif self.session.runs:
+            self.play()
+
+    def action_pause(self) -> None:
+        if self.session.playing:
+            self.stop()
+            self.present()
+
+    def action_faster(self) -> None:
+        self._set_speed(self.session.speed_index + 1)
+        self.present(changed=[])
+
+    def action_slower(self) -> None:
+        self._set_speed(self.session.speed_index - 1)
+        self.present(changed=[])
+
+    # -- the searches shown ----------------------------------------------------------------
+    def action_algorithm(self, algorithm: str) -> None:
+        """One pane: run ``algorithm``.  Several: add it to them, or take it out."""
+        self._timer.pause()
+        self.warn(self.session.choose_algorithm(algorithm), timeout=4)
+        self.new_runs_shown()
+
+    def action_compare(self) -> None:
+        """Several panes (the searches last compared) or one again."""
+        self._timer.pause()
+        self.warn(self.session.toggle_compare(), timeout=5)
+        self.new_runs_shown()
+
+    def action_show_compare(self, spec: str) -> None:
+        """Compare the searches of ``spec`` (the palette's comparisons)."""
+        self._timer.pause()
+        self.warn(self.session.show_searches(spec), timeout=5)
+        self.new_runs_shown()
+
+    def action_fold_trees(self) -> None:
+        self.session.fold_trees = not self.session.fold_trees
+        self.fit_panes()
+
+    def action_settings(self) -> None:
+        from tui_search.engine.algorithms import get_algorithm
+        from tui_search.tui.screens.settings import SettingsScreen  # only when asked
+
+        self.stop()
+        session = self.session
+        shown = [get_algorithm(c.algorithm) for c in session.contenders]
+        self.app.push_screen(SettingsScreen(session.semantics, shown[0], session.compare_pick,
+                                            shown), self._settings_chosen)
+
+    def _settings_chosen(self, chosen: SettingsChoice | None) -> None:
+        if chosen is not None:
+            before = (self.session.semantics, self.session.spec, self.session.runs)
+            self.session.choose_settings(chosen.semantics, chosen.compare)
+            if (self.session.semantics, self.session.spec, self.session.runs) != before:
+                self.new_runs_shown()
+
+    # -- the exercise and the quiz ---------------------------------------------------------
+    def action_exercise(self) -> None:
+        """Cycle the challenge: exercise 1, exercise 2, none."""
+        self.session.cycle_exercise()
+        self._check_exercise()
+
+    def action_show_exercise(self, exercise: int) -> None:
+        """Show exercise 1 or 2 as a live challenge on the map (0: none)."""
+        self.session.exercise = exercise or None
+        self._check_exercise()
+
+    def action_quiz(self) -> None:
+        self.session.toggle_quiz()
+        self.present(changed=[])
+        self.refresh_bindings()  # the frontier panel's pick keys come or go
+        self.query_one(KeyBar).raise_hint("quiz", self.session.quiz.on)  # its key ends it
+
+    def action_answer(self) -> None:
+        """Take the step and mark the guess: the cell under the cursor."""
+        self._timer.pause()
+        before = self.session.answer()
+        if before is None:
+            self.present(changed=[])
+        self.moved(before)
+
+    def on_frontier_panel_entry_picked(self, message: FrontierPanel.EntryPicked) -> None:
+        """A pick in the quiz's panel moves the cursor there; a double click also answers."""
+        if not self.session.quiz.on or message.panel is not self.quiz_panel:
+            return
+        self.move_cursor(message.cell)
+        if message.answer:
+            self.action_answer()
+
+    # -- the map ---------------------------------------------------------------------------
+    def move_cursor(self, cell: tuple[int, int]) -> None:
+        if self.session.move_cursor(cell):
+            for view in self.views:  # one cursor, on every pane's map
+                view.set_cursor(cell)
+            self.show_pick()
+            self.show_readout()
+
+    def action_move(self, dx: int, dy: int) -> None:
+        x, y = self.session.cursor
+        self.move_cursor((x + dx, y + dy))
+
+    def _edited(self, refusal: str | None) -> None:
+        if refusal is not None:
+            self.warn(refusal)
+        else:
+            self._timer.pause()
+            self.new_runs_shown()
+
+    def action_place(self, what: str) -> None:
+        self._edited(self.session.place(what))
+
+    def action_toggle_wall(self) -> None:
+        self._edited(self.session.toggle_wall())
+
+    def on_grid_view_cell_clicked(self, message: GridView.CellClicked) -> None:
+        """A left-button stroke paints what its first cell became (an obstacle, or free);
+        start and goal are never painted over; the right button only moves the cursor."""
+        self.move_cursor(message.cell)
+        self._stroke = None
+        grid, cell = self.session.grid, message.cell
+        if message.button == 1 and not self.views[0].overview and cell not in (
+                grid.start, grid.goal):
+            self._stroke = not grid.is_blocked(cell)
+            self._edited(self.session.toggle_wall())
+
+    def on_grid_view_cell_dragged(self, message: GridView.CellDragged) -> None:
+        if self._stroke is not None:
+            self.move_cursor(message.cell)
+            if self.session.paint(message.cell, self._stroke):
+                self._timer.pause()
+                self.new_runs_shown()
+
+    def on_grid_view_stroke_ended(self, message: GridView.StrokeEnded) -> None:
+        self._stroke = None
+
+    def on_grid_view_cell_hovered(self, message: GridView.CellHovered) -> None:
+        self.show_readout()
+
+    def action_overview(self) -> None:
+        on = not self.views[0].overview
+        for view in self.views:
+            view.set_overview(on)
+
+    def action_zoom(self, steps: int) -> None:
+        for view in self.views:
+            view.zoom(steps)
+
+    def action_labels(self) -> None:
+        for view in self.views:
+            mode = view.cycle_labels()
+        self.notify(f"Cell labels: {mode}", timeout=2)
+
+    def action_page(self, pages: int) -> None:
+        """The cursor a screenful of cells up or down (at least one cell)."""
+        view = self.views[0]
+        rows = view.geometry.rows_in(view.scrollable_content_region.height)
+        x, y = self.session.cursor
+        y = max(0, min(self.session.grid.height - 1, y + pages * max(1, rows - 1)))
+        self.move_cursor((x, y))
+
+    def action_jump(self, where: str) -> None:
+        """The cursor to the start, the goal or the node being expanded (when there is one)."""
+        session = self.session
+        run = session.run
+        cell = {"start": session.grid.start, "goal": session.grid.goal,
+                "current": run.current_node() if run is not None else None}[where]
+        if cell is None:
+            self.warn({"start": "No start on the map", "goal": "No goal on the map",
+                       "current": "No node is being expanded (step 0)"}[where])
+            return
+        self.move_cursor(cell)
+
+    # -- files and screens -----------------------------------------------------------------
+    def action_save(self) -> None:
+        self.files.save_own()
+
+    def action_save_as(self) -> None:
+        self.files.save_as()
+
+    def action_open(self) -> None:
+        self.files.open()
+
+    def action_quit(self) -> None:
+        self.files.quit()
+
+    def action_help(self) -> None:
+        from tui_search.tui.screens.help import HelpScreen  # only when asked: start-up time
+
+        self.app.push_screen(HelpScreen(self.views[0]))
+
+    # -- keys ------------------------------------------------------------------------------
+    def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
+        """Grey out (None) the keys that cannot act now, hide (False) those that do not apply
+        (Play while playing, Pause while not, esc but while computing the end), and behind
+        the "too small" message let only q act."""
+        session = self.session
+        runs = session.runs
+        if self.too_small:
+            return action in ("quit", "help_quit")
+        playing = session.playing
+        state: dict[str, bool | None] = {
+            "play": False if playing else (None if not runs else True),
+            "pause": playing,
+            "stop_seek": session.seeking,
+            "next": None if not runs or (session.at_end() and not playing) else True,
+            "prev": None if not runs or session.at_start() else True,
+            "reset": None if not runs else True,
+            "answer": session.quiz.on and bool(runs),
+            "fold_trees": len(self.panes) > 1,
+            "faster": None if session.speed_index == len(playback.SPEEDS) - 1 else True,
+            "slower": None if session.speed_index == 0 else True,
+        }
+        state["last"], state["first"] = state["next"], state["prev"]
+        return state.get(action, True)

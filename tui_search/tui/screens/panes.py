@@ -1,0 +1,325 @@
+"""The screen of panes: a pane a search, the status lines, the key bar, the legend, the readout,
+the comparison table and the challenge, and how the session is pushed down to them
+(:class:`~tui_search.tui.screens.main.MainScreen` adds the keys).  One search is one pane:
+nothing here asks whether it is comparing.
+
+Playback is a paused interval timer whose ticks do what ``n`` does, several steps per tick at
+high speeds; ``end`` and ``home`` on a big run move in time-boxed slices
+(:class:`~tui_search.tui.seek.Seek`) so keys are still answered.
+"""
+
+from __future__ import annotations
+
+from time import sleep
+from textual import events
+from textual.app import ComposeResult
+from textual.containers import Grid as PaneBox
+from textual.screen import Screen
+from textual.widgets import Static
+from textual.worker import get_current_worker
+
+from tui_search.engine.exercises import LIVE_CELLS, Verdict, check, tutorial_grid
+from tui_search.engine.grid import Cell, Grid
+from tui_search.tui import playback
+from tui_search.tui.file_access import FileAccess
+from tui_search.tui.files import FileCommands
+from tui_search.tui.keys import KEY_IMPORTANCE
+from tui_search.tui.layout import arrange
+from tui_search.tui.narration import group_digits
+from tui_search.tui.readout import describe, describe_each
+from tui_search.tui.session import LOCKSTEP, NEEDS_ENDPOINTS, Before, Session
+from tui_search.tui.widgets.cell_readout import CellReadout
+from tui_search.tui.widgets.challenge import ChallengePanel
+from tui_search.tui.widgets.compare_table import CompareTable
+from tui_search.tui.widgets.frontier_panel import FrontierPanel
+from tui_search.tui.widgets.grid_view import GridView
+from tui_search.tui.widgets.key_bar import KeyBar
+from tui_search.tui.widgets.legend import Legend
+from tui_search.tui.widgets.run_pane import RunPane
+from tui_search.tui.widgets.stats import Stats
+
+MIN_WIDTH, MIN_HEIGHT = 60, 20
+#: On a map too big to check an exercise at each edit, the check waits for the edits to pause
+#: this long (seconds): a mouse stroke is an edit a cell.
+EXERCISE_PAUSE = 0.3
+
+
+class PanesScreen(Screen[None]):
+    """The session's panes and everything around them."""
+
+    AUTO_FOCUS = "GridView"
+
+    def __init__(self, session: Session, file_access: FileAccess) -> None:
+        super().__init__()
+        self.session = session
+        self.file_access = file_access
+        self.files = FileCommands(self)
+        self.panes = self._new_panes()
+        self._stroke: bool | None = None  # what a mouse drag paints: True wall, False free
+        self._bindings_key: tuple[object, ...] = ()
+
+    # -- layout ----------------------------------------------------------------------------
+    def compose(self) -> ComposeResult:
+        yield KeyBar(KEY_IMPORTANCE, id="keys")
+        self.stats = Stats(id="stats")
+        yield self.stats
+        self.compare_table = CompareTable(id="compare-table")
+        yield self.compare_table
+        yield ChallengePanel(id="challenge")
+        self.readout = CellReadout(id="readout")
+        yield self.readout
+        self.legend = Legend(self.panes[0].view, id="legend")
+        yield self.legend
+        self.pane_box = PaneBox(*self.panes, id="panes")
+        yield self.pane_box
+        yield Static(id="too-small")
+
+    def _new_panes(self) -> list[RunPane]:
+        session = self.session
+        return [RunPane(session.grid, label, NEEDS_ENDPOINTS) for label in session.labels]
+
+    @property
+    def views(self) -> list[GridView]:
+        return [pane.view for pane in self.panes]
+
+    def on_mount(self) -> None:
+        self._timer = self.set_interval(1.0, self._tick, pause=True)
+        self._set_speed(self.session.speed_index)
+        self._check_size(self.size.width, self.size.height)
+        for view in self.views:
+            view.set_cursor(self.session.cursor)
+        self._check_exercise()
+        self.present()
+        self.call_after_refresh(self.fit_panes)
+
+    def on_resize(self, event: events.Resize) -> None:
+        self._check_size(event.size.width, event.size.height)
+        self.call_after_refresh(self.fit_panes)
+
+    def fit_panes(self) -> None:
+        """Fit the panes to the room the other lines leave (:func:`layout.arrange`)."""
+        table = self.compare_table
+        several = len(self.panes) > 1
+        table_height = table.outer_size.height if table.display else 0
+        if several and not table.display:
+            table_height = len(self.panes) + 5  # a line a search, head, two more, border
+        grid = self.session.grid
+        arrangement = arrange(len(self.panes), self.pane_box.size.width,
+                              self.pane_box.size.height + (table_height if table.display else 0),
+                              (grid.width, grid.height), table_height=table_height if several
+                              else 0, fold_trees=self.session.fold_trees)
+        box = self.pane_box
+        box.styles.grid_size_columns = arrangement.columns
+        box.styles.grid_size_rows = arrangement.rows
+        table.display = several and arrangement.table
+        for pane in self.panes:
+            pane.lay_out(arrangement)
+
+    def _check_size(self, width: int, height: int) -> None:
+        small = width < MIN_WIDTH or height < MIN_HEIGHT
+        if small != self.too_small:
+            self.set_class(small, "-too-small")
+            self.refresh_bindings()  # behind the message only q acts
+        self.query_one("#too-small", Static).update(
+            f"Terminal too small: need at least {MIN_WIDTH}×{MIN_HEIGHT}, have {width}×{height}")
+
+    @property
+    def too_small(self) -> bool:
+        """True while the terminal is too small and the screen shows only a message."""
+        return self.has_class("-too-small")
+
+    # -- showing the session ---------------------------------------------------------------
+    def new_runs_shown(self) -> None:
+        """The session made new runs: new panes when the searches changed, then show."""
+        session = self.session
+        if [p.label for p in self.panes] != session.labels:
+            state = self.views[0].view_state()
+            self.panes = self._new_panes()
+            self.pane_box.remove_children()
+            self.pane_box.mount_all(self.panes)
+            self.legend.view = self.panes[0].view
+            for view in self.views:
+                view.set_cursor(session.cursor)
+                view.set_view_state(state)  # zoom, labels, overview: as they were
+            self.call_after_refresh(self._panes_mounted)
+        self._check_exercise()
+        self.present()
+
+    def _panes_mounted(self) -> None:
+        if not all(pane.is_mounted for pane in self.panes):
+            self.call_after_refresh(self._panes_mounted)
+            return
+        if self.app.screen is self:
+            self.views[0].focus()
+        self.fit_panes()
+        self.present()
+
+    def show_map(self) -> None:
+        """The map was replaced or saved: every view on it, then show."""
+        for view in self.views:
+            if view.grid is not self.session.grid:
+                view.set_grid(self.session.grid)
+            view.set_cursor(self.session.cursor)
+        self.new_runs_shown()
+        self.fit_panes()
+
+    def present(self, changed: list[Cell] | None = None, follow: bool = True,
+                per_run: list[list[Cell] | None] | None = None) -> None:
+        """Push the runs at their positions to every widget; ``changed`` limits the map
+        repaint (``per_run``: a list of changed cells for each run)."""
+        session = self.session
+        runs = session.runs
+        self.set_class(not runs, "-no-run")
+        playing = self._playing_text()
+        for i, pane in enumerate(self.panes):
+            if pane.is_mounted:  # else shown whole once mounted (_panes_mounted)
+                pane.show(runs[i] if runs else None,
+                          per_run[i] if per_run is not None else changed, follow=follow,
+                          hide_order=session.quiz.on and i == 0, title=session.title)
+        if len(self.panes) > 1:
+            self.compare_table.show(session.labels, runs)
+        self.show_pick()
+        self.show_status()
+        self.show_readout()
+
+    def _playing_text(self) -> str:
+        speed = playback.speed_text(self.session.speed)
+        return f"▶ playing {speed}" if self.session.playing else f"speed {speed}"
+
+    def show_status(self) -> None:
+        """The status lines (one pane: its run's; several: the lockstep's) and the key bar:
+        all a seek's progress changes."""
+        session = self.session
+        if len(self.panes) > 1:
+            self.stats.show_compare(session.labels, playing=self._playing_text(),
+                                    note=session.note, sentence=LOCKSTEP)
+        else:
+            self.stats.show(session.run, session.algorithm, playing=self._playing_text(),
+                            note=session.note)
+        runs = session.runs
+        key = (not runs, session.at_start(), session.at_end(), session.speed_index,
+               session.playing, session.seeking, len(self.panes))
+        if key != self._bindings_key:  # what greys out or hides keys changed
+            self._bindings_key = key
+            self.refresh_bindings()
+
+    def show_readout(self) -> None:
+        """What the runs know of the cell under the mouse, else of the cursor's."""
+        session = self.session
+        hover = next((v.hover for v in self.views if v.hover is not None), None)
+        cell, label = (hover, "Mouse") if hover is not None else (session.cursor, "Cursor")
+        if not session.grid.in_bounds(cell):
+            cell, label = session.cursor, "Cursor"
+        if len(session.runs) > 1:
+            text = describe_each(session.runs, session.labels, session.grid, cell)
+        else:
+            text = describe(session.run, session.grid, cell)
+        self.readout.show(label, text)
+
+    @property
+    def quiz_panel(self) -> FrontierPanel:
+        """The frontier the quiz asks about: the first pane's."""
+        return self.panes[0].frontier
+
+    def show_pick(self) -> None:
+        """Mark the cursor's entry in the quiz's frontier panel (none outside the quiz)."""
+        self.quiz_panel.set_pick(self.session.cursor if self.session.quiz.on else None)
+
+    def moved(self, before: Before | None) -> None:
+        """Show the runs after a move from ``before``: only the cells a one-step move
+        changed."""
+        if before is not None:
+            self.present(per_run=[playback.step_changes(run, k, was_at_end)
+                                  for run, (k, was_at_end) in zip(self.session.runs, before)])
+
+    def warn(self, text: str | None, timeout: float = 3) -> None:
+        if text:
+            self.notify(text, severity="warning", timeout=timeout)
+
+    # -- the exercise ----------------------------------------------------------------------
+    def _check_exercise(self) -> None:
+        """The challenge panel's verdict on the map as it is now: two whole searches, at once
+        on a map of at most ``LIVE_CELLS`` cells, else in a thread once the edits pause."""
+        session = self.session
+        exercise = session.exercise
+        shown = exercise is not None
+        if self.has_class("-challenge") != shown:
+            self.set_class(shown, "-challenge")
+            self.call_after_refresh(self.fit_panes)
+        if exercise is None:
+            return
+        panel = self.query_one(ChallengePanel)
+        grid = session.grid
+        if grid.start is None or grid.goal is None:
+            panel.show(exercise, None, "Place a start (s) and a goal (g) to check it.")
+        elif grid.width * grid.height > LIVE_CELLS:
+            panel.show(exercise, None, f"Checking on this map ({group_digits(grid.width)}"
+                       f" × {group_digits(grid.height)})…")
+            copy = grid.copy()
+            self.run_worker(lambda: self._check_big(exercise, copy), thread=True,
+                            exclusive=True, group="exercise")
+        else:
+            panel.show(exercise, session.verdict())
+
+    def _check_big(self, exercise: int, grid: Grid) -> None:
+        """(In a thread.)  Check ``exercise`` on ``grid``, a copy of the map as it was, once
+        no edit has come for a moment (each edit starts a new check and cancels this one), and
+        show the verdict if the map and the exercise are still the same."""
+        sleep(EXERCISE_PAUSE)
+        if get_current_worker().is_cancelled:
+            return
+        verdict = check(exercise, grid, tutorial_grid(), self.session.max_steps)
+        self.app.call_from_thread(self._show_big_verdict, exercise, grid, verdict)
+
+    def _show_big_verdict(self, exercise: int, grid: Grid, verdict: Verdict) -> None:
+        now = self.session.grid
+        if exercise == self.session.exercise and (grid.start, grid.goal) == (
+                now.start, now.goal) and grid.blocked == now.blocked:
+            self.query_one(ChallengePanel).show(exercise, verdict)
+
+    # -- playback --------------------------------------------------------------------------
+    def _set_speed(self, index: int) -> None:
+        self.session.set_speed(index)
+        interval = playback.tick_interval(self.session.speed)
+        if hasattr(self, "_timer"):
+            self._timer.stop()
+        self._timer = self.set_interval(interval, self._tick, pause=not self.session.playing)
+
+    def _tick(self) -> None:
+        before = self.session.tick()
+        if not self.session.playing:
+            self._timer.pause()
+        self.moved(before)
+
+    def play(self) -> None:
+        if self.session.play():
+            self._seek_slice()
+        else:
+            self._timer.resume()
+            self.present()
+
+    def stop(self) -> None:
+        self.session.stop()
+        self._timer.pause()
+
+    def seek(self, to_end: bool) -> None:
+        self.session.start_seek(to_end)
+        self._timer.pause()
+        self._seek_slice()
+
+    def _seek_slice(self) -> None:
+        seek = self.session.seek
+        if seek is None or not self.is_attached:
+            return  # stopped or replaced
+        progress = seek.work()
+        if progress is not None:
+            self.session.note = progress
+            self.show_status()  # only the note: the panes show where the runs were till the end
+            self.set_timer(playback.SLICE_PAUSE, self._seek_slice)
+            return
+        before = self.session.seek_done()
+        if self.session.playing:
+            self._timer.resume()
+            self.present()
+        else:
+            self.moved(before) if before != self.session.where() else self.present(changed=[])

@@ -1,0 +1,369 @@
+"""What the app shows, without Textual: the map and its file, the searches shown (a pane each),
+their runs in lockstep, the cursor, playback, the quiz and the exercise.
+
+The screen turns keys into calls here and shows the result; nothing here draws.  Every search
+shown is a pane: one search is a session with one contender, and comparing is more of them.
+A new :class:`~tui_search.engine.run.Run` for every pane is made whenever the map is edited,
+a search or a setting changes or ``r`` is pressed, so no search state outlives its map.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from pathlib import Path
+
+from tui_search.engine.algorithms import DEFAULT_ALGORITHM, get_algorithm
+from tui_search.engine.exercises import Contender, Verdict, check, parse_compare, tutorial_grid
+from tui_search.engine.grid import Cell, Grid
+from tui_search.engine.run import MAX_STEPS, Run
+from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
+from tui_search.tui import playback
+from tui_search.tui.editing import place, set_wall
+from tui_search.tui.quiz import Quiz, verdict
+from tui_search.tui.seek import Seek
+
+#: The searches ``c`` compares until the settings pick others.
+DEFAULT_COMPARE = "bfs,dfs"
+#: Panes: one at least, four at most.
+MAX_PANES = 4
+NEEDS_ENDPOINTS = "Place a start (s) and a goal (g) to search"
+LOCKSTEP = ("Lockstep: n steps every search not done yet, p steps back the latest, "
+            "end runs them all to the end · 1-6 add or take out a search · c one search")
+
+#: Where each run was before a move: its step, and whether it was at its end.
+Before = list[tuple[int, bool]]
+
+
+def normal_spec(spec: str) -> str:
+    """``bfs, dfs,`` as ``bfs,dfs``: the searches of a spec, no blanks."""
+    return ",".join(part.strip() for part in spec.split(",") if part.strip())
+
+
+class Session:
+    """The state behind the screen.  ``compare`` (``bfs,dfs``, as ``--compare`` spells it)
+    opens with those searches side by side; else one pane runs ``algorithm``.
+
+    ``optimal_cost`` is a benchmark's lowest cost for this map, start and goal (a MovingAI
+    ``.scen`` row: 8 moves, no corner cutting), shown beside a path's cost while the map, its
+    ends and those rules stay as they are.  ``exercise`` is the tutorial's exercise 1 or 2
+    shown as a live challenge.
+    """
+
+    def __init__(
+        self,
+        grid: Grid,
+        path: Path | None = None,
+        algorithm: str = DEFAULT_ALGORITHM,
+        semantics: Semantics = DEFAULT_SEMANTICS,
+        max_steps: int = MAX_STEPS,
+        unsaved_name: str = "untitled",
+        optimal_cost: float | None = None,
+        exercise: int | None = None,
+        compare: str | None = None,
+    ) -> None:
+        self.grid = grid
+        self.map_path = Path(path) if path is not None else None
+        self.unsaved_name = unsaved_name  # the title of a map with no file
+        self.dirty = False
+        self.max_steps = max_steps
+        self.algorithm = algorithm  # the search a single pane runs
+        self.semantics = semantics
+        spec = normal_spec(compare) if compare else ""
+        self.spec = spec or algorithm  # the searches shown, a pane each
+        self.compare_pick = spec or DEFAULT_COMPARE  # what c compares
+        self.contenders: list[Contender] = []
+        self.runs: list[Run] = []
+        self.cursor: Cell = grid.start or (0, 0)
+        self.speed_index = playback.DEFAULT_SPEED
+        self.playing = False
+        self.seek: Seek | None = None
+        self.note = ""
+        self.quiz = Quiz()
+        self.exercise = exercise
+        self.fold_trees = False  # several panes: their trees folded away by the user
+        self._benchmark = None if optimal_cost is None else (
+            bytes(grid.blocked), grid.start, grid.goal, optimal_cost)
+        self.new_runs()
+
+    # -- what is shown -------------------------------------------------------------------
+    @property
+    def run(self) -> Run | None:
+        """The first pane's run (the quiz asks about it); None without start and goal."""
+        return self.runs[0] if self.runs else None
+
+    @property
+    def labels(self) -> list[str]:
+        """The panes' names, in order."""
+        return [c.label for c in self.contenders]
+
+    @property
+    def map_name(self) -> str:
+        """The map as its title names it: its file's name, else ``unsaved_name``."""
+        return self.map_path.name if self.map_path else self.unsaved_name
+
+    @property
+    def title(self) -> str:
+        return f"{self.map_name} {'· modified' if self.dirty else ''}".strip()
+
+    @property
+    def seeking(self) -> bool:
+        return self.seek is not None
+
+    @property
+    def speed(self) -> int:
+        return playback.SPEEDS[self.speed_index]
+
+    def at_start(self) -> bool:
+        return all(r.k == 0 for r in self.runs)
+
+    def at_end(self) -> bool:
+        return all(r.at_end for r in self.runs)
+
+    def _contenders(self, spec: str) -> tuple[list[Contender], str]:
+        """The searches of ``spec`` under the settings in force, and a note when a setting
+        does not apply to one of them (the visit rule: that one visits on generate)."""
+        parts = spec.split(",")
+        if len(parts) == 1:
+            return [Contender(parts[0], self.semantics)], ""
+        contenders = parse_compare(spec, self.semantics, fit=True)
+        fitted = [c.label for c in contenders if c.semantics.visit != self.semantics.visit]
+        note = (f"Visit on expand does not apply to {', '.join(fitted)}: visit on generate "
+                "there" if fitted else "")
+        return contenders, note
+
+    def new_runs(self, note: str = "") -> None:
+        """A fresh run a pane at step 0 on the map as it is now (none without start and
+        goal)."""
+        self.stop()
+        self.contenders, why = self._contenders(self.spec)
+        self.note = note or why
+        grid = self.grid
+        if grid.start is None or grid.goal is None:
+            self.runs = []
+            self.note = note or NEEDS_ENDPOINTS
+        else:
+            known = self._benchmark_cost()
+            self.runs = [Run(grid, c.algorithm, c.semantics, self.max_steps)
+                         for c in self.contenders]
+            for run in self.runs:
+                run.known_lowest = known
+        if self.runs and self.quiz.on and not self.note:
+            self.note = self.quiz.question(self.runs[0])
+
+    def _benchmark_cost(self) -> float | None:
+        """The benchmark's lowest cost, if it applies to the map and the rules as they are."""
+        if self._benchmark is None:
+            return None
+        blocked, start, goal, cost = self._benchmark
+        grid, sem = self.grid, self.semantics
+        same_map = (grid.start, grid.goal) == (start, goal) and bytes(grid.blocked) == blocked
+        rules = sem.corners == "never" and len(sem.order) == 8
+        return cost if same_map and rules else None
+
+    # -- the searches shown --------------------------------------------------------------
+    def choose_algorithm(self, key: str) -> str | None:
+        """One pane: run ``key`` there.  Several: add it, or take it out (one stays, four at
+        most).  None, or a warning why nothing changed."""
+        parts = self.spec.split(",")
+        if len(parts) == 1:
+            self.algorithm = key
+            note = ""
+            algo = get_algorithm(key)
+            if self.semantics.visit != "generate" and (algo.iterative or algo.weighted):
+                # The visit rule does not apply to iterative deepening: back to the default.
+                self.semantics = replace(self.semantics, visit="generate")
+                note = f"Visit on expand does not apply to {algo.short}: back to visit on generate"
+            self.spec = key
+            self.new_runs(note)
+            return None
+        keys = [p.partition(":")[0] for p in parts]
+        name = get_algorithm(key).short
+        if key in keys:
+            if len(parts) == 2:
+                return f"Compare keeps two searches at least: {name} stays (c for one search)"
+            del parts[keys.index(key)]
+        elif len(parts) == MAX_PANES:
+            return (f"Compare shows four searches at most: take one out to add {name}"
+                    " (its key again)")
+        else:
+            parts.append(key)
+        return self.show_searches(",".join(parts))
+
+    def show_searches(self, spec: str) -> str | None:
+        """Show the searches of ``spec`` (``bfs,dfs``; one key: one pane) from step 0.  None,
+        or the one-line reason the spec is refused (nothing changes then)."""
+        spec = normal_spec(spec)
+        if "," in spec:
+            try:
+                parse_compare(spec, self.semantics, fit=True)
+            except ValueError as exc:
+                return f"Cannot compare {spec}: {exc}"
+            self.compare_pick = spec
+        self.spec = spec
+        self.new_runs()
+        return None
+
+    def toggle_compare(self) -> str | None:
+        """Several panes (the searches last compared), or one again (the last single one)."""
+        return self.show_searches(self.algorithm if "," in self.spec else self.compare_pick)
+
+    def choose_settings(self, semantics: Semantics, compare: str) -> None:
+        """The settings screen's choice: the rules, and what ``c`` compares."""
+        pick_changed = compare != self.compare_pick
+        self.compare_pick = compare
+        several = "," in self.spec
+        if semantics == self.semantics and not (pick_changed and several):
+            return
+        self.semantics = semantics
+        if several and pick_changed:
+            self.show_searches(compare)
+        else:
+            self.new_runs()
+
+    # -- the map -------------------------------------------------------------------------
+    def _edited(self, refusal: str | None) -> str | None:
+        if refusal is None:
+            self.dirty = True
+            self.new_runs()
+        return refusal
+
+    def place(self, what: str) -> str | None:
+        """The start or the goal at the cursor: None, or why not."""
+        return self._edited(place(self.grid, what, self.cursor))
+
+    def toggle_wall(self) -> str | None:
+        cell = self.cursor
+        return self._edited(set_wall(self.grid, cell, not self.grid.is_blocked(cell)))
+
+    def paint(self, cell: Cell, wall: bool) -> bool:
+        """A mouse stroke over ``cell``: an obstacle or free (start and goal stay).  True
+        when it changed the map."""
+        if cell in (self.grid.start, self.grid.goal) or self.grid.is_blocked(cell) == wall:
+            return False
+        return self._edited(set_wall(self.grid, cell, wall)) is None
+
+    def move_cursor(self, cell: Cell) -> bool:
+        if not self.grid.in_bounds(cell):
+            return False
+        self.cursor = cell
+        return True
+
+    def use_map(self, grid: Grid, path: Path | None) -> None:
+        """Show ``grid`` (read from ``path``) instead, from step 0."""
+        self.grid = grid
+        self.map_path = Path(path) if path is not None else None
+        self.dirty = False
+        self.cursor = grid.start or (0, 0)
+        self.new_runs()
+
+    def saved(self, path: Path) -> None:
+        self.map_path = Path(path)
+        self.dirty = False
+
+    # -- moving in lockstep --------------------------------------------------------------
+    def where(self) -> Before:
+        return [(r.k, r.at_end) for r in self.runs]
+
+    def advance(self, forward: bool) -> Before | None:
+        """One step of the lockstep: forwards, every run not at its end; backwards, the runs
+        at the latest step (one that ended earlier stays on its last screen).  Where they
+        were before, or None when none moved."""
+        runs = self.runs
+        if not runs:
+            return None
+        before = self.where()
+        if forward:
+            moved = [r.forward() for r in runs]
+        else:
+            latest = max(r.k for r in runs)
+            moved = [r.k == latest and r.backward() for r in runs]
+        return before if any(moved) else None
+
+    def step(self, forward: bool) -> Before | None:
+        self.stop()
+        return self.advance(forward)
+
+    def tick(self) -> Before | None:
+        """A playback tick: a few steps at high speeds; playback stops at the end."""
+        if not self.runs or not self.playing:
+            return None
+        before = self.where()
+        playback.forward_for(self.runs, playback.steps_per_tick(self.speed))
+        if self.at_end():
+            self.playing = False
+        return before
+
+    def start_seek(self, to_end: bool, then_play: bool = False) -> None:
+        """Move every run to its end (or step 0) in slices: :meth:`Seek.work`."""
+        self.stop()
+        targets = [(run, None if to_end else 0) for run in self.runs]
+        labels = self.labels if len(self.runs) > 1 else [""] * len(self.runs)
+        self.seek = Seek(targets, labels, self.where(), then_play)
+
+    def seek_done(self) -> Before:
+        """The seek has arrived: where the runs were when it started (play if asked)."""
+        seek = self.seek
+        assert seek is not None
+        self.seek = None
+        if seek.noted:
+            self.note = ""
+        if seek.then_play:
+            self.playing = True
+        return seek.before
+
+    def stop(self) -> None:
+        """Pause playback and abandon a seek (any key that moves the position does this)."""
+        if self.seek is not None:
+            if self.seek.noted:
+                self.note = ""
+            self.seek = None  # the runs are still whole where they were
+        self.playing = False
+
+    def play(self) -> bool:
+        """Play (at the last step: True, seek to step 0 first)."""
+        self.stop()
+        if self.at_end():
+            self.start_seek(to_end=False, then_play=True)
+            return True
+        self.playing = True
+        return False
+
+    def set_speed(self, index: int) -> None:
+        self.speed_index = max(0, min(len(playback.SPEEDS) - 1, index))
+
+    # -- the quiz --------------------------------------------------------------------------
+    def toggle_quiz(self) -> None:
+        self.quiz = Quiz(on=not self.quiz.on)
+        run = self.run
+        self.note = (self.quiz.question(run) if run is not None else Quiz.NO_RUN) \
+            if self.quiz.on else ""
+
+    def answer(self) -> Before | None:
+        """Take the step and mark the guess, the cell under the cursor (None: no step)."""
+        run = self.run
+        if not self.quiz.on or run is None:
+            return None
+        if run.at_end:
+            self.note = self.quiz.over()
+            return None
+        self.stop()
+        guess = self.cursor
+        before = self.advance(forward=True)  # every pane steps
+        if before is None:
+            return None
+        node = run.current_node()
+        if node is not None and run.k != before[0][0]:
+            self.quiz, self.note = verdict(self.quiz, run, node, guess)
+        return before
+
+    # -- the exercise ----------------------------------------------------------------------
+    def cycle_exercise(self) -> None:
+        self.exercise = {None: 1, 1: 2, 2: None}[self.exercise]
+
+    def verdict(self) -> Verdict:
+        """The exercise's verdict on the map as it is (two whole searches)."""
+        assert self.exercise is not None
+        return check(self.exercise, self.grid, tutorial_grid(), self.max_steps)
+
+
+__all__ = ["DEFAULT_COMPARE", "LOCKSTEP", "NEEDS_ENDPOINTS", "Session", "normal_spec"]
