@@ -1,7 +1,7 @@
 """One search core: the fast recorded loops equal the reference loop, under every choice.
 
 The reference (:mod:`tui_search.engine.reference`) is the definition; every loop of
-:mod:`tui_search.engine.search` must record exactly what it does -- the same events in the same
+:mod:`tui_search.engine.loops` must record exactly what it does -- the same events in the same
 order, the same expansions, the same discarded steps, iterations and goal -- on random maps
 under random algorithms and choices.  Then the properties the choices promise.
 """
@@ -22,18 +22,15 @@ from tests.helpers import TUTORIAL_ROWS, grid_from_rows, reference_distances
 from tui_search.engine.algorithms import ALGORITHMS, get_algorithm
 from tui_search.engine.grid import DIRECTIONS, Cell, Grid
 from tui_search.engine.heuristics import HEURISTICS
+from tui_search.engine.loops.dispatch import loop_for
+from tui_search.engine.loops.general import general
+from tui_search.engine.loops.iddfs import iddfs
+from tui_search.engine.loops.tree import tree
+from tui_search.engine.loops.tutorial import bfs, dfs
+from tui_search.engine.problem import Problem
+from tui_search.engine.record import Record
 from tui_search.engine.reference import ReferenceSearch, stream
 from tui_search.engine.run import CellState, Run
-from tui_search.engine.search import (
-    Problem,
-    Record,
-    bfs,
-    dfs,
-    general,
-    iddfs,
-    loop_for,
-    tree,
-)
 from tui_search.engine.semantics import CORNER_RULES, GOAL_TESTS, VISIT_RULES, Semantics
 
 #: Tree search is exponential: every comparison stops here (both loops give up alike).

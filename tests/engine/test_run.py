@@ -15,9 +15,9 @@ from hypothesis import strategies as st
 from tests.engine.test_search import random_grids
 from tests.helpers import TUTORIAL_ROWS, grid_from_rows, summary
 from tui_search.engine.grid import Grid
+from tui_search.engine.record import CHUNK
 from tui_search.engine.recording import _largest_size
 from tui_search.engine.run import MAX_STEPS, CellState, Run
-from tui_search.engine.search import CHUNK
 
 
 def snapshot(run: Run) -> tuple:
@@ -126,8 +126,8 @@ def test_memory_grows_with_steps_not_steps_times_map() -> None:
 
 def test_engine_imports_without_textual_or_rich() -> None:
     code = (
-        "import sys, tui_search.engine.grid, tui_search.engine.search, tui_search.engine.run, "
-        "tui_search.engine.mapfile, tui_search.cli\n"
+        "import sys, tui_search.engine.grid, tui_search.engine.loops.dispatch, "
+        "tui_search.engine.run, tui_search.engine.mapfile, tui_search.cli\n"
         "bad = [m for m in sys.modules if m.split('.')[0] in ('textual', 'rich')]\n"
         "print(bad); sys.exit(1 if bad else 0)"
     )

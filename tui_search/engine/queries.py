@@ -10,12 +10,12 @@ from collections.abc import Iterator, Sequence
 from typing import Any
 
 from tui_search.engine.algorithms import Frontier
-from tui_search.engine.best_first import move_costs
 from tui_search.engine.grid import DIRECTIONS, Cell
 from tui_search.engine.heuristics import HEURISTICS, admissible, priority_of
+from tui_search.engine.loops.best_first import move_costs
 from tui_search.engine.outcome import Outcome
+from tui_search.engine.record import ROOT_DIR
 from tui_search.engine.recording import Recording, Step
-from tui_search.engine.search import ROOT_DIR
 
 #: Direction names indexed by stored direction code; a root is shown as START.
 DIR_NAMES: tuple[str, ...] = DIRECTIONS + ("START",)

@@ -19,7 +19,9 @@ from typing import cast
 
 from tui_search.engine.algorithms import DEFAULT_ALGORITHM, get_algorithm
 from tui_search.engine.grid import Cell, Grid
-from tui_search.engine.search import CHUNK, Problem, Record, loop_for
+from tui_search.engine.loops.dispatch import loop_for
+from tui_search.engine.problem import Problem
+from tui_search.engine.record import CHUNK, Record
 from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
 
 

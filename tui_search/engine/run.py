@@ -27,8 +27,8 @@ from typing import Any
 from tui_search.engine.frontier import FrontierModel, frontier_model
 from tui_search.engine.grid import Cell
 from tui_search.engine.queries import DIR_NAMES, RecordedTree
+from tui_search.engine.record import ROOT_DIR
 from tui_search.engine.recording import MAX_STEPS, Step
-from tui_search.engine.search import ROOT_DIR
 
 
 class CellState(IntEnum):
