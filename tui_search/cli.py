@@ -14,19 +14,16 @@ from typing import IO, TYPE_CHECKING, NoReturn
 
 from tui_search import __version__
 from tui_search.engine.algorithms import ALGORITHMS, DEFAULT_ALGORITHM, get_algorithm
-from tui_search.engine.exercises import (
+from tui_search.engine.compare import (
     MARKS_KEY,
-    QUOTES,
     Contender,
-    Verdict,
-    check,
     comparison,
     parse_compare,
     summary_sentence,
     table_cells,
     table_lines,
-    tutorial_grid,
 )
+from tui_search.engine.exercises import QUOTES, Verdict, check, tutorial_grid
 from tui_search.engine.grid import DEFAULT_ORDER, Grid, parse_order
 from tui_search.engine.heuristics import DEFAULT_HEURISTIC, HEURISTICS, INADMISSIBLE, admissible
 from tui_search.engine.mapfile import (
