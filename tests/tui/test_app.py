@@ -841,7 +841,8 @@ async def test_a_run_that_reaches_the_step_limit_says_it_gave_up() -> None:
 @sync
 async def test_a_movingai_map_opens_with_its_scenario_and_z_shows_it_whole() -> None:
     """``tui-search arena.map --scen arena.map.scen --scen-row 5``, as the CLI builds it."""
-    from tui_search.cli import build_parser, load_problem
+    from tui_search.cli import build_parser
+    from tui_search.flags import load_problem
 
     arena = ARENA
     args = build_parser().parse_args([str(arena), "--scen", f"{arena}.scen", "--scen-row", "5"])

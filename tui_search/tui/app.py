@@ -25,12 +25,11 @@ from textual.widgets import Static
 from textual.worker import get_current_worker
 
 from tui_search.engine.algorithms import ALGORITHMS, DEFAULT_ALGORITHM, get_algorithm
+from tui_search.engine.compare import Contender, parse_compare
 from tui_search.engine.exercises import (
     LIVE_CELLS,
-    Contender,
     Verdict,
     check,
-    parse_compare,
     tutorial_grid,
 )
 from tui_search.engine.grid import Cell, Grid

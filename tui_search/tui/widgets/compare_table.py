@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-from tui_search.engine.exercises import (
+from tui_search.engine.compare import (
     MARKS_KEY,
     TableRow,
     comparison,
