@@ -29,18 +29,16 @@ from tui_search.engine.exercises import (
 )
 from tui_search.engine.grid import DEFAULT_ORDER, Grid, parse_order
 from tui_search.engine.heuristics import DEFAULT_HEURISTIC, HEURISTICS, INADMISSIBLE, admissible
-from tui_search.engine.mapfile import (
-    MapError,
+from tui_search.engine.mapfile import load_map, parse_cell, parse_map_text
+from tui_search.engine.mapread import MapError
+from tui_search.engine.outcome import Outcome
+from tui_search.engine.run import MAX_STEPS, Run, Step
+from tui_search.engine.scenarios import (
     Scenario,
     check_scenario_map,
     check_scenario_matches,
-    load_map,
     load_scenario,
-    parse_cell,
-    parse_map_text,
 )
-from tui_search.engine.outcome import Outcome
-from tui_search.engine.run import MAX_STEPS, Run, Step
 from tui_search.engine.semantics import CORNER_RULES, GOAL_TESTS, VISIT_RULES, Semantics
 from tui_search.launch import collector_paused
 
