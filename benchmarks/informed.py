@@ -99,7 +99,8 @@ def informed_maps() -> list[tuple[str, Grid]]:
     maps = [("open 1024²", open_grid())]
     m, s = MAPS / MAZE, MAPS / MAZE_SCEN
     if m.exists() and s.exists():
-        from tui_search.engine.mapfile import load_map, load_scenario
+        from tui_search.engine.mapfile import load_map
+        from tui_search.engine.scenarios import load_scenario
 
         scen = load_scenario(s, MAZE_ROW)
         maps.append((f"maze512 row {MAZE_ROW}", load_map(m, start=scen.start, goal=scen.goal)))

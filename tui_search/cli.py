@@ -19,7 +19,7 @@ from tui_search.engine.algorithms import ALGORITHMS, DEFAULT_ALGORITHM
 from tui_search.engine.exercises import QUOTES
 from tui_search.engine.grid import DEFAULT_ORDER, Grid
 from tui_search.engine.heuristics import DEFAULT_HEURISTIC, HEURISTICS
-from tui_search.engine.mapfile import MapError
+from tui_search.engine.mapread import MapError
 from tui_search.engine.run import MAX_STEPS
 from tui_search.engine.semantics import CORNER_RULES, GOAL_TESTS, VISIT_RULES
 from tui_search.flags import UsageError, contenders_from, load_problem, semantics_from

@@ -15,14 +15,8 @@ from tui_search.engine.algorithms import ALGORITHMS, DEFAULT_ALGORITHM, get_algo
 from tui_search.engine.compare import Contender, parse_compare
 from tui_search.engine.grid import Grid, parse_order
 from tui_search.engine.heuristics import DEFAULT_HEURISTIC
-from tui_search.engine.mapfile import (
-    check_scenario_map,
-    check_scenario_matches,
-    load_map,
-    load_scenario,
-    parse_cell,
-    parse_map_text,
-)
+from tui_search.engine.mapfile import load_map, parse_cell, parse_map_text
+from tui_search.engine.scenarios import check_scenario_map, check_scenario_matches, load_scenario
 from tui_search.engine.semantics import Semantics
 
 TUTORIAL_NAME = "tutorial.txt"

@@ -22,9 +22,10 @@ from tui_search.engine.compare import (
 from tui_search.engine.exercises import Verdict, check, tutorial_grid
 from tui_search.engine.grid import Grid
 from tui_search.engine.heuristics import INADMISSIBLE, admissible
-from tui_search.engine.mapfile import MapError, Scenario
+from tui_search.engine.mapread import MapError
 from tui_search.engine.outcome import Outcome
 from tui_search.engine.run import Run, Step
+from tui_search.engine.scenarios import Scenario
 from tui_search.engine.semantics import Semantics
 from tui_search.flags import TUTORIAL_NAME, UsageError, contenders_from, semantics_from
 

@@ -23,9 +23,10 @@ from tests.helpers import MOVINGAI, TUTORIAL_ROWS, grid_from_rows, reference_cos
 from tui_search.engine.algorithms import get_algorithm
 from tui_search.engine.grid import DIRECTIONS, Grid
 from tui_search.engine.heuristics import HEURISTICS, admissible
-from tui_search.engine.mapfile import load_map, read_scenarios
+from tui_search.engine.mapfile import load_map
 from tui_search.engine.reference import ReferenceSearch
 from tui_search.engine.run import CellState, Run
+from tui_search.engine.scenarios import read_scenarios
 from tui_search.engine.semantics import CORNER_RULES, Semantics
 
 props = settings(max_examples=200, deadline=None)

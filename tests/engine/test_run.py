@@ -127,7 +127,8 @@ def test_memory_grows_with_steps_not_steps_times_map() -> None:
 def test_engine_imports_without_textual_or_rich() -> None:
     code = (
         "import sys, tui_search.engine.grid, tui_search.engine.loops.dispatch, "
-        "tui_search.engine.run, tui_search.engine.mapfile, tui_search.cli\n"
+        "tui_search.engine.run, tui_search.engine.mapfile, tui_search.engine.mapwrite, "
+        "tui_search.engine.scenarios, tui_search.cli\n"
         "bad = [m for m in sys.modules if m.split('.')[0] in ('textual', 'rich')]\n"
         "print(bad); sys.exit(1 if bad else 0)"
     )

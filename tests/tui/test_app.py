@@ -21,9 +21,11 @@ from textual import events
 
 from tests.textual_internals import composited, notifications, repainted, settle
 from tui_search.engine.grid import Grid
-from tui_search.engine.mapfile import format_text_map, load_map, load_scenario
+from tui_search.engine.mapfile import load_map
+from tui_search.engine.mapwrite import format_text_map
 from tui_search.engine.record import CHUNK
 from tui_search.engine.run import Run
+from tui_search.engine.scenarios import load_scenario
 from tui_search.tui import playback
 from tui_search.tui.app import NEEDS_ENDPOINTS, SearchApp
 from tui_search.tui.screens.confirm_quit import ConfirmQuitScreen

@@ -8,8 +8,9 @@ from tests.helpers import grid_from_rows
 from tests.tui.test_app import ARENA, MAPS, click_shown, stats, sync, tutorial_app, wait_until
 from tui_search.engine.grid import Grid
 from tui_search.engine.heuristics import INADMISSIBLE
-from tui_search.engine.mapfile import load_map, load_scenario
+from tui_search.engine.mapfile import load_map
 from tui_search.engine.run import CellState, Run
+from tui_search.engine.scenarios import load_scenario
 from tui_search.engine.semantics import Semantics
 from tui_search.tui.app import SearchApp
 from tui_search.tui.narration import narrate

@@ -1,5 +1,5 @@
 """Recording a search: the fast loop run in chunks, up to a step limit, into a
-:class:`~tui_search.engine.search.Record`, and what the record says of any step.
+:class:`~tui_search.engine.record.Record`, and what the record says of any step.
 
 This is the first of a recorded run's three jobs (:mod:`tui_search.engine.run` is the
 position, :mod:`tui_search.engine.queries` the tree and the path): it knows the steps, never

@@ -2,7 +2,7 @@
 
 The app and the headless command stand on :class:`Run`.  Its three jobs live in three
 modules: recording (:mod:`~tui_search.engine.recording`: the search computed lazily, in chunks,
-into a compact :class:`~tui_search.engine.search.Record`), the record's queries
+into a compact :class:`~tui_search.engine.record.Record`), the record's queries
 (:mod:`~tui_search.engine.queries`: parents, moves, the path), and, here, one *position* ``k``:
 after ``k`` steps.  At that position it answers what every cell is (unseen, frontier, expanded,
 being expanded, on the path), what the frontier holds in order (its model,
