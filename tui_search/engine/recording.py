@@ -15,11 +15,11 @@ from collections.abc import Generator, Iterator
 from dataclasses import dataclass
 from typing import cast
 
-from tui_search.engine.algorithms import DEFAULT_ALGORITHM, get_algorithm
+from tui_search.engine.algorithms import get_algorithm
 from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.peak import PeakTable
 from tui_search.engine.search import CHUNK, Problem, Record, loop_for
-from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
+from tui_search.engine.semantics import Semantics
 
 
 @dataclass(frozen=True, slots=True)
@@ -47,13 +47,10 @@ class Recording:
     The grid is copied: editing the original afterwards never changes this run.
     """
 
-    def __init__(
-        self,
-        grid: Grid,
-        algorithm: str = DEFAULT_ALGORITHM,
-        semantics: Semantics = DEFAULT_SEMANTICS,
-        max_steps: int = MAX_STEPS,
-    ) -> None:
+    def __init__(self, grid: Grid, algorithm: str, semantics: Semantics, max_steps: int) -> None:
+        """Record ``grid`` (copied) searched with ``algorithm`` (its key) under ``semantics``,
+        up to ``max_steps`` expansions (a :class:`~tui_search.engine.run.Run` gives the
+        defaults)."""
         self.algo = algo = get_algorithm(algorithm)
         semantics.check(algo)
         if max_steps < 1:
@@ -62,6 +59,7 @@ class Recording:
         self.algorithm = algorithm
         self.semantics = semantics.for_algorithm(algo)
         self.problem = Problem(self.grid, semantics, semantics.goal_test_for(algo))
+        #: The raw record: read by the run's parts (tree, position) and by checks, never the app.
         self.rec = Record()
         self.max_steps = max_steps
         # The loops are generator functions: close() ends one that gives up.
@@ -115,36 +113,6 @@ class Recording:
         """Record one more chunk (for callers that compute in slices); True when done."""
         self._advance_once()
         return self.rec.done
-
-    @property
-    def done(self) -> bool:
-        """True when the whole search has been recorded."""
-        return self.rec.done
-
-    @property
-    def found(self) -> bool:
-        """True once the goal has been found (and recorded)."""
-        return self.rec.found
-
-    @property
-    def gave_up(self) -> bool:
-        """True when the search was stopped at ``max_steps`` expansions, unfinished."""
-        return self.rec.gave_up
-
-    @property
-    def recorded(self) -> int:
-        """Steps recorded so far."""
-        return self.rec.steps
-
-    @property
-    def recorded_events(self) -> int:
-        """Generation events recorded so far (numbered from 0, the start)."""
-        return len(self.rec.gen_node)
-
-    @property
-    def total(self) -> int | None:
-        """Number of steps of the whole run, once known."""
-        return self.rec.steps if self.rec.done else None
 
     def iteration_of(self, k: int) -> int:
         """Index of the iteration that step ``k`` belongs to (step 0 is in iteration 0)."""

@@ -49,6 +49,7 @@ class Run:
         ``semantics``, giving up after ``max_steps`` expansions."""
         #: The loop and the raw record: for the engine's own checks and the benchmarks.
         self.recording = recording = Recording(grid, algorithm, semantics, max_steps)
+        self._rec = recording.rec  # the same record as long as the recording lives
         self._tree = tree = EventTree(recording)
         self._position = Position(recording, tree)
         self.grid = recording.grid  #: the run's own copy of the grid
@@ -72,32 +73,32 @@ class Run:
     @property
     def done(self) -> bool:
         """True when the whole search has been recorded."""
-        return self.recording.done
+        return self._rec.done
 
     @property
     def found(self) -> bool:
         """True once the goal has been found (and recorded)."""
-        return self.recording.found
+        return self._rec.found
 
     @property
     def gave_up(self) -> bool:
         """True when the search was stopped at ``max_steps`` expansions, unfinished."""
-        return self.recording.gave_up
+        return self._rec.gave_up
 
     @property
     def recorded(self) -> int:
         """Steps recorded so far."""
-        return self.recording.recorded
+        return self._rec.steps
 
     @property
     def recorded_events(self) -> int:
         """Generation events recorded so far (numbered from 0, the start)."""
-        return self.recording.recorded_events
+        return len(self._rec.gen_node)
 
     @property
     def total(self) -> int | None:
         """Number of steps of the whole run, once known (None until then)."""
-        return self.recording.total
+        return self._rec.steps if self._rec.done else None
 
     @property
     def goal_test(self) -> str:
@@ -234,10 +235,10 @@ class Run:
     def goto(self, k: int) -> None:
         """Move the position to step ``k`` (clamped to the run), recording as needed."""
         k = max(0, k)
-        recording = self.recording
-        if k > recording.recorded:
-            recording.advance(k)
-        k = min(k, recording.recorded)
+        rec = self._rec
+        if k > rec.steps:
+            self.recording.advance(k)
+        k = min(k, rec.steps)
         position = self._position
         if abs(k - position.k) > self.REBUILD_AFTER:
             for _ in position.rebuild_pieces(k, self.REBUILD_PIECE, self.REBUILD_CELLS):
