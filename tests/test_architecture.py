@@ -12,7 +12,7 @@ ROOT = Path(__file__).resolve().parents[1]
 TUI = ROOT / "tui_search" / "tui"
 
 #: Attribute names under which a run's raw record (or its holder) is or was reachable.
-RECORD_ATTRIBUTES = frozenset({"rec", "record", "recording"})
+RECORD_ATTRIBUTES = frozenset({"rec", "record", "recording", "_rec", "_record", "_recording"})
 #: The record's and the recording's classes.
 RECORD_CLASSES = frozenset({"Record", "Recording"})
 #: Their modules (``record`` is where the record's class is headed).
@@ -50,7 +50,7 @@ def record_uses(source: str) -> list[tuple[int, str]]:
 def test_the_check_sees_every_way_to_the_record() -> None:
     source = """run.rec.exp(k)
 run.record.goal_gen
-x = run.recording
+x = run._rec
 getattr(run, 'rec')
 import tui_search.engine.recording
 from tui_search.engine.recording import MAX_STEPS
