@@ -134,7 +134,7 @@ def bench_informed(quick: bool) -> None:
             series(f"{name} run {label}", t["run"])
             r = paired(t["run"], t["bare"])
             add(Row("informed", f"{name} {label} recorded run vs bare heapq "
-                    f"({run.rec.steps:,} steps, {len(run.rec.discarded):,} stale)",
+                    f"({run.recorded:,} steps, {len(run.discarded_steps()):,} stale)",
                     fmt_time(t["run"]), f"bare {fmt_time(t['bare'])}", r, "≤ 1.30", r <= 1.30))
             if astar:
                 pf = pathfinding_astar(grid)

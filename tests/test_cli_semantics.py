@@ -160,4 +160,4 @@ def test_a_streamed_trace_is_the_recorded_runs_trace(capsys, argv) -> None:
     recorded = StringIO()
     for step in run.steps():
         recorded.write(trace_line(step))
-    assert out == recorded.getvalue() and out.count("\n") == run.rec.steps
+    assert out == recorded.getvalue() and out.count("\n") == run.recorded

@@ -18,7 +18,7 @@ took off.  An event's g is its generating step's plus its move's cost (1 or sqrt
 :func:`_costed_moves`): the very float sum ``g + cost`` the loop pushed, so nothing is stored per
 event but its cell (a search that pushes five entries an expansion, as A* on an open map, keeps
 36 bytes an expansion where a g an event made it 68).  From it the app shows g, h and f and
-orders its frontier (:meth:`~tui_search.engine.queries.RecordedTree.gen_g`).
+orders its frontier (:meth:`~tui_search.engine.queries.EventTree.gen_g`).
 """
 
 from __future__ import annotations

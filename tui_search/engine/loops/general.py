@@ -51,7 +51,7 @@ def general(
 # recorded run from 3.5x to 3.1x with one loop a visit rule (DFS: 4.6x to 4.2x).  What is left
 # over the bare floors (1.9x): the record (an append or two a step, the events stack of LIFO);
 # the run's peak-frontier table outside the loop, ~0.6x a bare BFS for 4.2 M steps, now costs
-# ~0.2x (:meth:`~tui_search.engine.recording.Recording._max_size`).
+# ~0.2x (:meth:`~tui_search.engine.peak.PeakTable._max_size`).
 
 
 def _plain_moves(problem: Problem) -> tuple[int, ...]:
