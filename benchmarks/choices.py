@@ -91,7 +91,7 @@ def check_answers(name: str, grid: Grid, walled: Grid) -> None:
                   f"bare {want}", file=sys.stderr)
     for floor, sem in ((bare_dfs_recorded, Semantics()),
                        (bare_dfs_visit_on_expand_recorded, Semantics(visit="expand"))):
-        rec, bare = recorded(walled, "dfs", sem).rec, floor(walled)
+        rec, bare = recorded(walled, "dfs", sem).recording.rec, floor(walled)
         if (bare.gen_node, bare.step_end, bare.step_exp, bare.discarded) != (
                 rec.gen_node, rec.step_end, rec.step_exp, rec.discarded):
             print(f"WARNING: {name} {floor.__name__}: not the engine's record", file=sys.stderr)
@@ -108,7 +108,7 @@ RECORDED_FLOOR = "plus the least record of its steps, the engine's arrays"
 def bench_map(name: str, grid: Grid, repeats: int) -> None:
     walled = walled_in(grid)
     check_answers(name, grid, walled)
-    steps = recorded(walled, "dfs").rec.steps
+    steps = recorded(walled, "dfs").recorded
     t = interleaved(contenders(grid, walled), repeats, CPU)
     for key, xs in t.items():
         series(f"{name} {key}", xs)
@@ -172,12 +172,12 @@ def bench_tree(maps: list[tuple[str, Grid]]) -> None:
         for algorithm, limit in (("bfs", TREE_LIMIT), ("dfs", TREE_LIMIT // 100)):
             dt, run = timed(lambda a=algorithm, n=limit, g=grid: recorded(
                 g, a, Semantics(tree_search=True), n), CPU)
-            ok = run.gave_up and run.rec.steps == limit
+            ok = run.gave_up and run.recorded == limit
             add(Row("choices", f"{name} walled in, {algorithm.upper()} tree search, max_steps "
                     f"{limit:,}: "
-                    f"gave_up {run.gave_up}, {run.rec.steps:,} steps"
+                    f"gave_up {run.gave_up}, {run.recorded:,} steps"
                     f"{', found' if run.found else ''}", fmt_time(dt),
-                    f"{dt / run.rec.steps * 1e6:.0f} µs a step", None, "gave_up", ok))
+                    f"{dt / run.recorded * 1e6:.0f} µs a step", None, "gave_up", ok))
 
 
 def bench_choices(quick: bool) -> None:

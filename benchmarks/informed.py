@@ -99,7 +99,8 @@ def informed_maps() -> list[tuple[str, Grid]]:
     maps = [("open 1024²", open_grid())]
     m, s = MAPS / MAZE, MAPS / MAZE_SCEN
     if m.exists() and s.exists():
-        from tui_search.engine.mapfile import load_map, load_scenario
+        from tui_search.engine.mapfile import load_map
+        from tui_search.engine.scenarios import load_scenario
 
         scen = load_scenario(s, MAZE_ROW)
         maps.append((f"maze512 row {MAZE_ROW}", load_map(m, start=scen.start, goal=scen.goal)))
@@ -133,7 +134,7 @@ def bench_informed(quick: bool) -> None:
             series(f"{name} run {label}", t["run"])
             r = paired(t["run"], t["bare"])
             add(Row("informed", f"{name} {label} recorded run vs bare heapq "
-                    f"({run.rec.steps:,} steps, {len(run.rec.discarded):,} stale)",
+                    f"({run.recorded:,} steps, {len(run.discarded_steps()):,} stale)",
                     fmt_time(t["run"]), f"bare {fmt_time(t['bare'])}", r, "≤ 1.30", r <= 1.30))
             if astar:
                 pf = pathfinding_astar(grid)

@@ -28,7 +28,8 @@ def maze_grid() -> Grid | None:
     rows = [ln for ln in s.read_text().splitlines()[1:] if ln.strip()]
     last = len(rows) - 1
     try:
-        from tui_search.engine.mapfile import load_map, load_scenario
+        from tui_search.engine.mapfile import load_map
+        from tui_search.engine.scenarios import load_scenario
 
         scen = load_scenario(s, last)
         return load_map(m, start=scen.start, goal=scen.goal)

@@ -82,6 +82,6 @@ def _relaxed(grid: Grid, corners: str, order: tuple[str, ...] | None,
 
 def summary(run) -> dict:
     """A recorded run's whole result as the headless JSON gives it."""
-    from tui_search.cli import json_summary
+    from tui_search.headless import json_summary
 
     return json_summary(run.outcome())

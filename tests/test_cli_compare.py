@@ -8,7 +8,7 @@ import pytest
 
 from tests.helpers import MAPS
 from tests.test_cli import TUTORIAL, run_cli
-from tui_search.engine.exercises import comparison, parse_compare, summary_sentence
+from tui_search.engine.compare import comparison, parse_compare, summary_sentence
 from tui_search.engine.mapfile import load_map
 from tui_search.engine.run import Run
 from tui_search.engine.semantics import Semantics

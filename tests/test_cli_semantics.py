@@ -9,7 +9,9 @@ import pytest
 
 from tests.helpers import MAPS
 from tests.test_cli import TUTORIAL, run_cli
-from tui_search.cli import build_parser, load_problem, moves_text, run_headless
+from tui_search.cli import build_parser
+from tui_search.flags import load_problem
+from tui_search.headless import moves_text, run_headless
 
 
 def headless_json(capsys, *argv: str) -> tuple[int, dict]:
@@ -145,9 +147,10 @@ def test_a_streamed_trace_is_the_recorded_runs_trace(capsys, argv) -> None:
     the ones the recorded run (what the app steps through) gives."""
     from io import StringIO
 
-    from tui_search.cli import semantics_from, trace_line
     from tui_search.engine.mapfile import load_map
     from tui_search.engine.run import Run
+    from tui_search.flags import semantics_from
+    from tui_search.headless import trace_line
 
     args = build_parser().parse_args([TUTORIAL, "--headless", *argv, "--max-steps", "400"])
     _code, out, _ = run_cli(capsys, TUTORIAL, "--headless", "--trace", "-", *argv,
@@ -157,4 +160,4 @@ def test_a_streamed_trace_is_the_recorded_runs_trace(capsys, argv) -> None:
     recorded = StringIO()
     for step in run.steps():
         recorded.write(trace_line(step))
-    assert out == recorded.getvalue() and out.count("\n") == run.rec.steps
+    assert out == recorded.getvalue() and out.count("\n") == run.recorded

@@ -9,7 +9,7 @@ import sys
 
 import pytest
 
-from tui_search.launch import collector_paused
+from tui_search.collector import collector_paused
 
 
 @pytest.mark.parametrize("was_on", [True, False])

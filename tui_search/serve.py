@@ -23,7 +23,7 @@ import re
 import sys
 from typing import TYPE_CHECKING, Any
 
-from tui_search.cli import UsageError
+from tui_search.flags import UsageError
 
 if TYPE_CHECKING:
     from aiohttp import web

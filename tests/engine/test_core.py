@@ -1,7 +1,7 @@
 """One search core: the fast recorded loops equal the reference loop, under every choice.
 
 The reference (:mod:`tui_search.engine.reference`) is the definition; every loop of
-:mod:`tui_search.engine.search` must record exactly what it does -- the same events in the same
+:mod:`tui_search.engine.loops` must record exactly what it does -- the same events in the same
 order, the same expansions, the same discarded steps, iterations and goal -- on random maps
 under random algorithms and choices.  Then the properties the choices promise.
 """
@@ -22,18 +22,16 @@ from tests.helpers import TUTORIAL_ROWS, grid_from_rows, reference_distances
 from tui_search.engine.algorithms import ALGORITHMS, get_algorithm
 from tui_search.engine.grid import DIRECTIONS, Cell, Grid
 from tui_search.engine.heuristics import HEURISTICS
+from tui_search.engine.loops.dispatch import loop_for
+from tui_search.engine.loops.general import general
+from tui_search.engine.loops.iddfs import iddfs
+from tui_search.engine.loops.tree import tree
+from tui_search.engine.loops.tutorial import bfs, dfs
+from tui_search.engine.position import CellState
+from tui_search.engine.problem import Problem
+from tui_search.engine.record import Record
 from tui_search.engine.reference import ReferenceSearch, stream
-from tui_search.engine.run import CellState, Run
-from tui_search.engine.search import (
-    Problem,
-    Record,
-    bfs,
-    dfs,
-    general,
-    iddfs,
-    loop_for,
-    tree,
-)
+from tui_search.engine.run import Run
 from tui_search.engine.semantics import CORNER_RULES, GOAL_TESTS, VISIT_RULES, Semantics
 
 #: Tree search is exponential: every comparison stops here (both loops give up alike).
@@ -90,7 +88,7 @@ def reference_arrays(grid: Grid, key: str, sem: Semantics, limit: int) -> dict:
 
 def recorded_arrays(run: Run) -> dict:
     run.advance()
-    rec = run.rec
+    rec = run.recording.rec
     return {
         "cells": [run.gen_cell(g) for g in range(len(rec.gen_node))],
         "step_end": list(rec.step_end),
@@ -225,11 +223,11 @@ def test_visit_on_expand_lists_duplicates_and_discards_them() -> None:
     grid = grid_from_rows(TUTORIAL_ROWS)
     run = Run(grid, "bfs", Semantics(visit="expand"))
     run.advance()
-    cells = [run.gen_cell(g) for g in range(len(run.rec.gen_node))]
+    cells = [run.gen_cell(g) for g in range(run.recorded_events)]
     assert len(cells) > len(set(cells))
     out = run.outcome()
-    assert out.discarded > 0 and out.discarded == len(run.rec.discarded)
-    k = run.rec.discarded[0]
+    assert out.discarded > 0 and out.discarded == len(run.discarded_steps())
+    k = run.discarded_steps()[0]
     step = run.step(k)
     assert step.discarded and step.successors == ()
     run.goto(k)
@@ -243,7 +241,7 @@ def test_goal_test_on_expand_stops_when_the_goal_is_taken_off() -> None:
     on_pop = Run(grid, "bfs", Semantics(goal_test="expand"))
     out = on_pop.outcome()
     assert out.length == on_push.length and out.expanded > on_push.expanded
-    last = on_pop.step(on_pop.rec.steps)
+    last = on_pop.step(on_pop.recorded)
     assert last.node == grid.goal and last.found_goal and last.successors == ()
 
 

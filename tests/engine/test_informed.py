@@ -23,9 +23,12 @@ from tests.helpers import MOVINGAI, TUTORIAL_ROWS, grid_from_rows, reference_cos
 from tui_search.engine.algorithms import get_algorithm
 from tui_search.engine.grid import DIRECTIONS, Grid
 from tui_search.engine.heuristics import HEURISTICS, admissible
-from tui_search.engine.mapfile import load_map, read_scenarios
+from tui_search.engine.mapfile import load_map
+from tui_search.engine.position import CellState
+from tui_search.engine.queries import EventTree
 from tui_search.engine.reference import ReferenceSearch
-from tui_search.engine.run import CellState, Run
+from tui_search.engine.run import Run
+from tui_search.engine.scenarios import read_scenarios
 from tui_search.engine.semantics import CORNER_RULES, Semantics
 
 props = settings(max_examples=200, deadline=None)
@@ -118,7 +121,7 @@ def test_stale_entries_are_discarded_and_counted() -> None:
     grid = grid_from_rows(TUTORIAL_ROWS)
     run = Run(grid, "astar")
     run.advance()
-    events = [g for g in range(len(run.rec.gen_node)) if run.gen_cell(g) == (0, 3)]
+    events = [g for g in range(run.recorded_events) if run.gen_cell(g) == (0, 3)]
     first, second = events[:2]
     assert run.gen_g(first) > run.gen_g(second)
     run.goto(run.total)
@@ -132,8 +135,8 @@ def test_stale_entries_are_discarded_and_counted() -> None:
                       ("ucs", ["S...##", "...#..", "...#..", "..#..G"])):
         search = Run(grid_from_rows(rows), key)
         out = search.outcome()
-        assert out.discarded == len(search.rec.discarded) == 1
-        step = search.step(search.rec.discarded[0])
+        assert out.discarded == len(search.discarded_steps()) == 1
+        step = search.step(search.discarded_steps()[0])
         assert step.discarded and step.successors == ()
 
 
@@ -208,7 +211,7 @@ def test_the_reference_and_the_record_agree_on_every_g() -> None:
         costs.extend(s.g for s in step.successors)
     run = Run(grid, "astar")
     run.advance()
-    assert [run.gen_g(e).hex() for e in range(len(run.rec.gen_node))] == [c.hex() for c in costs]
+    assert [run.gen_g(e).hex() for e in range(run.recorded_events)] == [c.hex() for c in costs]
 
 
 @pytest.mark.parametrize(("key", "sem"), [
@@ -227,24 +230,25 @@ def test_each_events_g_derived_from_its_steps_is_the_loops_float_past_a_cut(key,
     run.advance()
     want = [0.0]
     for step in ReferenceSearch(grid, get_algorithm(key), sem):
-        if step.index > run.rec.steps:
+        if step.index > run.recorded:
             break
         want.extend(s.g for s in step.successors)
-    events = range(len(run.rec.gen_node))
+    events = range(run.recorded_events)
     got = [run.gen_g(e) for e in events]
     assert [g.hex() for g in got] == [g.hex() for g in want]
     # in bulk (a rebuild's open events: ascending, with gaps), the same floats
     some = events[::3]
-    assert [g.hex() for g in run.gen_gs(some)] == [want[e].hex() for e in some]
-    assert run.priority_keys(some) == [run.priority_key(e) for e in some]
+    tree, rec = EventTree(run.recording), run.recording.rec
+    assert [g.hex() for g in tree.gen_gs(some)] == [want[e].hex() for e in some]
+    assert tree.priority_keys(some) == [run.priority_key(e) for e in some]
     # the entry a step took off carried its event's g: the step's own, and the bulk answer
     # for that event alone right after its step was looked up
-    for k in range(1, run.rec.steps + 1, 7):
-        taken = run.rec.exp(k)
-        assert run.rec.step_g[k].hex() == want[taken].hex()
-        run.gen_gs(run.succ_range(k))
-        assert run.gen_gs((taken,))[0].hex() == want[taken].hex()
-    assert len(run.rec.step_g) == len(run.rec.step_end)
+    assert rec.step_g is not None and len(rec.step_g) == len(rec.step_end)
+    for k in range(1, run.recorded + 1, 7):
+        taken = run.expanded_event(k)
+        assert rec.step_g[k].hex() == want[taken].hex()
+        tree.gen_gs(run.succ_range(k))
+        assert tree.gen_gs((taken,))[0].hex() == want[taken].hex()
 
 
 # -- the benchmark's optimal lengths ------------------------------------------------------------

@@ -43,7 +43,7 @@ def test_the_last_event_of_each_cell_is_the_latest_generated(grid, algo, tree, m
             for _ in range(-move):
                 run.backward()
         else:
-            run.goto(move % (run.rec.steps + 1))
+            run.goto(move % (run.recorded + 1))
         assert kept(run) == scanned(run)
     run.reset()
     assert kept(run) == scanned(run) == {grid.start: 0}
@@ -56,5 +56,5 @@ def test_the_depth_of_a_stack_search_event_is_its_chain_walked_once() -> None:
 
     run = Run(grid_from_rows(TUTORIAL_ROWS), "dfs")
     run.advance()
-    for g in range(len(run.rec.gen_node)):
+    for g in range(run.recorded_events):
         assert run.gen_depth(g) == len(run.ancestors(g)) - 1

@@ -11,13 +11,22 @@ from tui_search.engine.run import Run
 
 @pytest.mark.parametrize("algorithm", list(ALGORITHMS))
 def test_the_figures_after_each_step_and_at_the_last_the_whole_outcome(algorithm) -> None:
+    """Counted here as the run steps: the steps not discarded, the events each step added
+    (and each iteration's root), the largest frontier met."""
     run = Run(grid_from_rows(TUTORIAL_ROWS), algorithm)
     whole = run.outcome()
+    discarded, generated, peak = 0, 1, run.frontier_len()
     for k in range(run.recorded + 1):
-        run.goto(k)
+        if k:
+            run.forward()
+            discarded += run.is_discarded(k)
+            generated += len(run.succ_range(k)) + (run.first_step_of_iteration(
+                run.iteration_of(k)) == k and run.iteration_of(k) > 0)
+            peak = max(peak, run.frontier_len())
+        assert run.k == k
         so_far = run.outcome_so_far(k)
         assert (so_far.expanded, so_far.discarded, so_far.generated, so_far.max_frontier) == (
-            run.expanded, run.discarded, run.generated, run.peak_frontier())
+            k - discarded, discarded, generated, peak)
         if k < run.recorded:
             assert so_far.path is None and so_far.moves is None and not so_far.gave_up
     assert run.outcome_so_far(run.recorded) == whole

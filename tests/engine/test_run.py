@@ -15,9 +15,10 @@ from hypothesis import strategies as st
 from tests.engine.test_search import random_grids
 from tests.helpers import TUTORIAL_ROWS, grid_from_rows, summary
 from tui_search.engine.grid import Grid
-from tui_search.engine.recording import _largest_size
-from tui_search.engine.run import MAX_STEPS, CellState, Run
-from tui_search.engine.search import CHUNK
+from tui_search.engine.peak import PeakTable, _largest_size
+from tui_search.engine.position import CellState
+from tui_search.engine.record import CHUNK
+from tui_search.engine.run import MAX_STEPS, Run
 
 
 def snapshot(run: Run) -> tuple:
@@ -121,13 +122,14 @@ def test_memory_grows_with_steps_not_steps_times_map() -> None:
     grid.start, grid.goal = (0, 0), (199, 199)
     run = Run(grid, "dfs")
     run.advance()
-    assert run.rec.nbytes() < 40 * (run.total + 1)
+    assert run.recording.rec.nbytes() < 40 * (run.total + 1)
 
 
 def test_engine_imports_without_textual_or_rich() -> None:
     code = (
-        "import sys, tui_search.engine.grid, tui_search.engine.search, tui_search.engine.run, "
-        "tui_search.engine.mapfile, tui_search.cli\n"
+        "import sys, tui_search.engine.grid, tui_search.engine.loops.dispatch, "
+        "tui_search.engine.run, tui_search.engine.mapfile, tui_search.engine.mapwrite, "
+        "tui_search.engine.scenarios, tui_search.cli\n"
         "bad = [m for m in sys.modules if m.split('.')[0] in ('textual', 'rich')]\n"
         "print(bad); sys.exit(1 if bad else 0)"
     )
@@ -140,23 +142,28 @@ def test_a_run_gives_up_exactly_at_its_step_limit(algorithm) -> None:
     grid = Grid(40, 40, start=(0, 0), goal=(39, 39))
     full = Run(grid, algorithm)
     full.advance()
-    limit = min(full.rec.steps // 2, 1000)  # exact for limits up to a chunk (and multiples)
+    limit = min(full.recorded // 2, 1000)  # exact for limits up to a chunk (and multiples)
     run = Run(grid, algorithm, max_steps=limit)
     run.goto(10**9)
     assert run.gave_up and run.done and not run.found and run.at_end
     assert run.k == run.total == limit
     # what it did record is the same as the full run's first steps
-    assert list(run.rec.step_end) == list(full.rec.step_end[: limit + 1])
+    assert list(run.recording.rec.step_end) == list(full.recording.rec.step_end[: limit + 1])
     assert summary(run)["gave_up"] and not summary(full)["gave_up"]
 
 
-def test_iddfs_on_a_big_maze_gives_up_at_the_default_limit_not_the_memory() -> None:
-    """A 512x512 maze takes ~75 million IDDFS steps; the default limit stops it (a smaller
-    limit here, for speed: the mechanism is the same)."""
-    run = Run(Grid(300, 300, start=(0, 0), goal=(299, 299)), "iddfs", max_steps=5 * CHUNK)
+def test_iddfs_on_a_big_map_gives_up_at_its_step_limit_not_the_memory() -> None:
+    """Iterative deepening on a big map takes many millions of steps (~75 million on a
+    512x512 maze): the step limit stops it, and what it keeps grows with the steps allowed.
+    (A smaller limit than the default here, for speed: the mechanism is the same.)"""
+    grid = Grid(300, 300, start=(0, 0), goal=(299, 299))
+    assert Run(grid, "iddfs").max_steps == MAX_STEPS  # the default limit a run is given
+    run = Run(grid, "iddfs", max_steps=5 * CHUNK)
     run.advance()
-    assert run.gave_up and run.rec.steps == 5 * CHUNK
-    assert MAX_STEPS % CHUNK == 0 and MAX_STEPS >= 20_000_000
+    assert run.gave_up and run.done and not run.found and run.recorded == 5 * CHUNK
+    assert run.recording.rec.nbytes() <= 64 * run.recorded
+    run.goto(10**9)
+    assert run.k == 5 * CHUNK and run.at_end
 
 
 @pytest.mark.parametrize("algorithm", ["bfs", "dfs", "iddfs"])
@@ -170,9 +177,9 @@ def test_a_limit_of_more_than_a_chunk_is_exact_too(algorithm, limit) -> None:
     full.advance(3 * CHUNK)
     run = Run(grid, algorithm, max_steps=limit)
     run.advance()
-    assert run.gave_up and run.rec.steps == limit and not run.found
-    assert list(run.rec.step_end) == list(full.rec.step_end[: limit + 1])
-    assert len(run.rec.gen_node) == run.rec.step_end[limit]
+    assert run.gave_up and run.recorded == limit and not run.found
+    assert list(run.recording.rec.step_end) == list(full.recording.rec.step_end[: limit + 1])
+    assert run.recorded_events == run.recording.rec.step_end[limit]
     run.goto(limit)
     assert run.at_end and run.frontier_len() > 0
     assert summary(run)["expanded"] == limit
@@ -186,7 +193,7 @@ def test_a_goal_found_past_the_limit_is_not_found() -> None:
     run = Run(grid, "bfs", max_steps=99)  # exactly what the search needs: found
     assert summary(run)["found"] and not run.gave_up
     run = Run(grid, "bfs", max_steps=98)
-    assert summary(run)["gave_up"] and not run.found and run.rec.steps == 98
+    assert summary(run)["gave_up"] and not run.found and run.recorded == 98
 
 
 def test_iddfs_that_ends_exactly_at_the_limit_has_not_given_up() -> None:
@@ -237,7 +244,8 @@ def test_a_rebuild_in_pieces_does_a_bounded_amount_per_piece_and_can_be_dropped(
         run.REBUILD_PIECE, run.REBUILD_CELLS = 100, 500
         run.advance(3000)
         k = run.recorded
-        events = run.rec.step_end[k] - run.rec.iter_root[run.iteration_of(k)]
+        rec = run.recording.rec
+        events = rec.step_end[k] - rec.iter_root[run.iteration_of(k)]
         pieces = run.rebuild_pieces(k)
         next(pieces)
         next(pieces)
@@ -256,10 +264,11 @@ def test_the_peak_frontier_is_kept_while_recording(grid, algo) -> None:
     and the peak is the largest frontier stepping meets, over every iteration of iterative
     deepening."""
     # several blocks even on a small map, and pieces of blocks bounded before they are read
-    with patch.object(Run, "PEAK_BLOCK", 3), patch.object(Run, "PEAK_PIECE", 2):
+    with patch.object(PeakTable, "PEAK_BLOCK", 3), patch.object(PeakTable, "PEAK_PIECE", 2):
         run = Run(grid, algo)
         run.advance()
-        assert len(run._peak) == run.total // 3  # every whole block before the last step
+        # every whole block before the last step, with no peak asked for
+        assert len(run.recording._peak) == run.recorded // 3
         stepper = Run(grid, algo)
         peak = stepper.frontier_len()
         assert run.peak_frontier(0) == peak
@@ -274,10 +283,10 @@ def test_the_peak_frontier_is_kept_while_recording(grid, algo) -> None:
 def test_the_peak_frontier_in_any_order_of_asking(grid, algo, asks) -> None:
     """The last answer is remembered to make a step forwards cheap; asked backwards, across
     blocks or again, the peak is still the largest frontier over steps 0..k."""
-    with patch.object(Run, "PEAK_BLOCK", 5), patch.object(Run, "PEAK_PIECE", 2):
+    with patch.object(PeakTable, "PEAK_BLOCK", 5), patch.object(PeakTable, "PEAK_PIECE", 2):
         run = Run(grid, algo)
         run.advance()
-        sizes = [run.frontier_size_at(j) for j in range(run.total + 1)]
+        sizes = [run.recording.frontier_size_at(j) for j in range(run.recorded + 1)]
         for a in asks:
             k = a % (run.total + 1)
             assert run.peak_frontier(k) == max(sizes[: k + 1]), k

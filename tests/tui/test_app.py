@@ -21,16 +21,18 @@ from textual import events
 
 from tests.textual_internals import composited, notifications, repainted, settle
 from tui_search.engine.grid import Grid
-from tui_search.engine.mapfile import format_text_map, load_map, load_scenario
+from tui_search.engine.mapfile import load_map
+from tui_search.engine.mapwrite import format_text_map
+from tui_search.engine.record import CHUNK
 from tui_search.engine.run import Run
-from tui_search.engine.search import CHUNK
+from tui_search.engine.scenarios import load_scenario
 from tui_search.tui import playback
 from tui_search.tui.app import SearchApp
-from tui_search.tui.screens.main import MainScreen
-from tui_search.tui.session import NEEDS_ENDPOINTS
 from tui_search.tui.screens.confirm_quit import ConfirmQuitScreen
 from tui_search.tui.screens.help import HelpScreen
+from tui_search.tui.screens.main import MainScreen
 from tui_search.tui.screens.save_as import SaveAsScreen
+from tui_search.tui.session import NEEDS_ENDPOINTS
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.key_bar import KeyBar
@@ -843,7 +845,8 @@ async def test_a_run_that_reaches_the_step_limit_says_it_gave_up() -> None:
 @sync
 async def test_a_movingai_map_opens_with_its_scenario_and_z_shows_it_whole() -> None:
     """``tui-search arena.map --scen arena.map.scen --scen-row 5``, as the CLI builds it."""
-    from tui_search.cli import build_parser, load_problem
+    from tui_search.cli import build_parser
+    from tui_search.flags import load_problem
 
     arena = ARENA
     args = build_parser().parse_args([str(arena), "--scen", f"{arena}.scen", "--scen-row", "5"])

@@ -357,7 +357,7 @@ async def test_a_step_in_big_cells_repaints_only_the_lines_of_the_cells_it_chang
         await pilot.pause()
         run = app.session.run
         app.main.action_next()
-        changed = run.changed_cells(run.k) + [run.gen_cell(run.rec.exp(run.k - 1))]
+        changed = run.changed_cells(run.k) + [run.gen_cell(run.expanded_event(run.k - 1))]
         lines = {line for cell in changed for line in view.geometry.lines_of(cell)}
         assert painted and set(painted) == lines
         assert not any(a == () for a in whole), "a whole-view refresh"

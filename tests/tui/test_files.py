@@ -11,7 +11,8 @@ import pytest
 
 from tests.textual_internals import notifications
 from tests.tui.test_app import MAPS, SIZE, click_shown, sync
-from tui_search.engine.mapfile import format_text_map, load_map
+from tui_search.engine.mapfile import load_map
+from tui_search.engine.mapwrite import format_text_map
 from tui_search.tui.app import SearchApp
 from tui_search.tui.screens.confirm_overwrite import ConfirmOverwriteScreen
 from tui_search.tui.screens.confirm_quit import ConfirmQuitScreen

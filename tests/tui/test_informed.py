@@ -8,8 +8,10 @@ from tests.helpers import grid_from_rows
 from tests.tui.test_app import ARENA, MAPS, click_shown, stats, sync, tutorial_app, wait_until
 from tui_search.engine.grid import Grid
 from tui_search.engine.heuristics import INADMISSIBLE
-from tui_search.engine.mapfile import load_map, load_scenario
-from tui_search.engine.run import CellState, Run
+from tui_search.engine.mapfile import load_map
+from tui_search.engine.position import CellState
+from tui_search.engine.run import Run
+from tui_search.engine.scenarios import load_scenario
 from tui_search.engine.semantics import Semantics
 from tui_search.tui.app import SearchApp
 from tui_search.tui.narration import narrate
@@ -93,7 +95,7 @@ async def test_a_stale_step_is_discarded_and_says_why() -> None:
     async with app.run_test(size=SIZE) as pilot:
         run = app.session.run
         run.advance()
-        k = run.rec.discarded[0]
+        k = run.discarded_steps()[0]
         for _ in range(k):
             await pilot.press("n")
         assert run.is_discarded(run.k)
@@ -179,7 +181,7 @@ async def test_switching_to_a_star_keeps_its_own_goal_test() -> None:
         await pilot.press("6")
         await wait_until(pilot, lambda: app.session.run.algo.key == "astar")
         run = app.session.run
-        assert run.problem.goal_test == "expand" and "goal test" not in stats(app)[0]
+        assert run.goal_test == "expand" and "goal test" not in stats(app)[0]
         await pilot.press("comma")
         await wait_until(pilot, lambda: isinstance(app.screen, SettingsScreen))
         assert app.screen.query_one("#goal_test-expand").value

@@ -349,7 +349,7 @@ async def test_big_tree_shows_the_focused_view() -> None:
         assert panel.border_title == "Search tree"
         note = panel.line_text(0)
         assert note == f"({size:,} nodes; showing the path to the node being expanded)"
-        chain = run.ancestors(run.rec.step_exp[run.k])
+        chain = run.ancestors(run.expanded_event(run.k))
         depth = len(chain) - 1
         kids = list(run.added_now())
         assert panel.virtual_size.height == 3 + tree_model.SHOW_LEVELS + 1 + len(kids)

@@ -95,7 +95,7 @@ async def test_visit_on_expand_lists_duplicates_and_says_when_a_step_is_discarde
     async with app.run_test(size=SIZE) as pilot:
         run = app.session.run
         run.advance()
-        k = run.rec.discarded[0]
+        k = run.discarded_steps()[0]
         for _ in range(k - 1):
             await pilot.press("n")
         cells = [run.gen_cell(g) for g in run.frontier()]
@@ -135,10 +135,10 @@ async def test_a_discarded_step_shows_the_entry_it_threw_away() -> None:
     async with app.run_test(size=SIZE) as pilot:
         run = app.session.run
         run.advance()
-        k = run.rec.discarded[0]
+        k = run.discarded_steps()[0]
         for _ in range(k):
             await pilot.press("n")
-        x, y = run.gen_cell(run.rec.exp(k))
+        x, y = run.gen_cell(run.expanded_event(k))
         first = app.query_one(FrontierPanel).line_text(1)  # under the count
         assert first.startswith(f"✗  ({x},{y})") and "discarded" in first
         assert any("◀ discarded" in line for line in app.query_one(SearchTreePanel).lines())

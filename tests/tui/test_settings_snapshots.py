@@ -62,6 +62,6 @@ def test_a_discarded_step(snap_compare) -> None:
     sem = Semantics(visit="expand")
     probe = Run(load_map(TUTORIAL), "bfs", sem)
     probe.advance()
-    k = probe.rec.discarded[0]
+    k = probe.discarded_steps()[0]
     app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, semantics=sem)
     assert snap_compare(app, press=["n"] * k, terminal_size=SIZE)

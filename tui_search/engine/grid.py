@@ -11,10 +11,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from itertools import pairwise
-from typing import TYPE_CHECKING
 
-if TYPE_CHECKING:
-    from tui_search.engine.mapfile import MapSource
+from tui_search.engine.mapsource import MapSource
 
 Cell = tuple[int, int]
 

@@ -1,32 +1,35 @@
 """What a record says of its generation events, wherever a run stands: each event's cell,
 parent and move, the chain from the root, the path and the outcome -- the tree's and the
-answer's queries of a recorded run (the second of its three jobs)."""
+answer's queries of a recorded run.  A :class:`~tui_search.engine.run.Run` has one, over its
+:class:`~tui_search.engine.recording.Recording`."""
 
 from __future__ import annotations
 
 from array import array
 from bisect import bisect_left, bisect_right
 from collections.abc import Iterator, Sequence
-from typing import Any
 
 from tui_search.engine.algorithms import Frontier
-from tui_search.engine.best_first import move_costs
 from tui_search.engine.grid import DIRECTIONS, Cell
 from tui_search.engine.heuristics import HEURISTICS, admissible, priority_of
+from tui_search.engine.loops.best_first import move_costs
 from tui_search.engine.outcome import Outcome
+from tui_search.engine.record import ROOT_DIR
 from tui_search.engine.recording import Recording, Step
-from tui_search.engine.search import ROOT_DIR
 
 #: Direction names indexed by stored direction code; a root is shown as START.
 DIR_NAMES: tuple[str, ...] = DIRECTIONS + ("START",)
 
 
-class RecordedTree(Recording):
-    """Queries on the record's events (no position)."""
+class EventTree:
+    """Queries on a recording's events (no position)."""
 
-    def __init__(self, *args: Any, **kwargs: Any) -> None:
-        super().__init__(*args, **kwargs)
-        self._in_order = self.algo.frontier is Frontier.FIFO  # event g expanded at step g+1
+    def __init__(self, recording: Recording) -> None:
+        self._recording = recording
+        self._rec = recording.rec  # the same record as long as the recording lives
+        self._algo = algo = recording.algo
+        self._problem = recording.problem
+        self._in_order = algo.frontier is Frontier.FIFO  # event g expanded at step g+1
         self._gen_step = array("i")  # event -> step that expanded it (LIFO; lazy)
         self._gen_step_filled = 0
         self._path: set[int] | None = None
@@ -36,11 +39,12 @@ class RecordedTree(Recording):
         self._prev_same = array("i")  # event -> the previous event of the same cell (-1: none)
         self._depths: dict[int, int] = {}  # gen_depth's answers where a chain was walked
         self._last_of_cell: dict[int, int] = {}
-        goal = self.grid.goal
+        goal = recording.grid.goal
         assert goal is not None  # the problem checked it
-        self._heuristic = HEURISTICS[self.semantics.heuristic]
-        self._priority = priority_of(self.algo.priority or "g", self._heuristic, goal)
-        self._move_cost = move_costs(self.problem)
+        self._goal: Cell = goal
+        self._heuristic = HEURISTICS[recording.semantics.heuristic]
+        self._priority = priority_of(algo.priority or "g", self._heuristic, goal)
+        self._move_cost = move_costs(self._problem)
         # gen_gs: the last step looked up (its events lo .. hi - 1, its number, the event it
         # took off)
         self._gs_step = (0, 1, 0, -1)  # step 0: the root
@@ -50,7 +54,7 @@ class RecordedTree(Recording):
         """Event ``g``'s cost so far (a cost-ordered search only): the g of the entry its
         generating step took off plus its move's cost -- the very sum the loop pushed, so the
         record keeps a g a step rather than an event.  A root's is 0 (step 0 generated it)."""
-        rec = self.rec
+        rec = self._rec
         step_g = rec.step_g
         assert step_g is not None, "only a cost-ordered search records costs"
         k = bisect_right(rec.step_end, g)
@@ -69,7 +73,7 @@ class RecordedTree(Recording):
         one beside it, and the event that step took off (a step back puts it on the frontier
         again) has the step's own g: the entry the loop took off carried the g it was pushed
         with."""
-        rec = self.rec
+        rec = self._rec
         step_g, ends, node, cost = rec.step_g, rec.step_end, rec.gen_node, self._move_cost
         assert step_g is not None, "only a cost-ordered search records costs"
         lo, hi, k, taken = self._gs_step
@@ -102,18 +106,17 @@ class RecordedTree(Recording):
     def gen_costs(self, g: int) -> tuple[float, float, float] | None:
         """Event ``g``'s cost so far, the heuristic's estimate from its cell and its priority
         (``g``, ``h`` and the priority the queue orders by); None for a queue or a stack."""
-        if self.rec.step_g is None:
+        if self._rec.step_g is None:
             return None
         cost = self.gen_g(g)
         x, y = self.gen_cell(g)
-        goal = self.grid.goal
-        assert goal is not None
-        h = self._heuristic(abs(x - goal[0]), abs(y - goal[1])) if self.algo.informed else 0.0
+        goal = self._goal
+        h = self._heuristic(abs(x - goal[0]), abs(y - goal[1])) if self._algo.informed else 0.0
         return cost, h, self._priority(cost, x, y)
 
     def priority_key(self, g: int) -> float:
         """The priority event ``g`` was pushed with (the frontier model's order)."""
-        if self.algo.priority == "g":  # uniform-cost: the cost itself, no cell needed
+        if self._algo.priority == "g":  # uniform-cost: the cost itself, no cell needed
             return self.gen_g(g)
         x, y = self.gen_cell(g)
         return self._priority(self.gen_g(g), x, y)
@@ -121,7 +124,7 @@ class RecordedTree(Recording):
     def priority_keys(self, events: Sequence[int]) -> list[float]:
         """:meth:`priority_key` of each of ``events``, which ascend (see :meth:`gen_gs`)."""
         costs = self.gen_gs(events)
-        if self.algo.priority == "g":
+        if self._algo.priority == "g":
             return costs
         priority, cell = self._priority, self.gen_cell
         return [priority(g, *cell(e)) for g, e in zip(costs, events)]
@@ -144,7 +147,7 @@ class RecordedTree(Recording):
     def _index_same_cell(self) -> None:
         """Extend the next- and previous-event-of-the-same-cell tables over what was recorded
         since they were last extended."""
-        nxt, prev, gen_node = self._next_same, self._prev_same, self.rec.gen_node
+        nxt, prev, gen_node = self._next_same, self._prev_same, self._rec.gen_node
         if len(nxt) < len(gen_node):
             last = self._last_of_cell
             start = len(nxt)
@@ -162,27 +165,29 @@ class RecordedTree(Recording):
     def admissible(self) -> bool:
         """Can the run's heuristic be trusted to find the cheapest path (True when none is
         used)?"""
-        return not self.algo.informed or admissible(self.semantics.heuristic,
-                                                    self.semantics.order)
+        semantics = self._recording.semantics
+        return not self._algo.informed or admissible(semantics.heuristic, semantics.order)
 
     def gen_cell(self, g: int) -> Cell:
-        return self.problem.unpad(self.rec.gen_node[g])
+        """Event ``g``'s cell."""
+        return self._problem.unpad(self._rec.gen_node[g])
 
     def gen_parent(self, g: int) -> int:
         """The event expanded to generate ``g`` (-1 for a root): the expansion of the step
         whose successors include ``g``."""
-        rec = self.rec
+        rec = self._rec
         it = bisect_right(rec.iter_root, g) - 1
         if rec.iter_root[it] == g:
             return -1
         return rec.exp(bisect_right(rec.step_end, g))
 
     def gen_dir(self, g: int) -> str:
+        """The move that reached event ``g`` from its parent (``START`` for a root)."""
         parent = self.gen_parent(g)
         if parent < 0:
             return DIR_NAMES[ROOT_DIR]
-        node = self.rec.gen_node
-        return DIR_NAMES[self.problem.dir_of_offset[node[g] - node[parent]]]
+        node = self._rec.gen_node
+        return DIR_NAMES[self._problem.dir_of_offset[node[g] - node[parent]]]
 
     def gen_depth(self, g: int) -> int:
         """Event ``g``'s depth (moves from the root).  Where it is not recorded, the chain up
@@ -206,7 +211,7 @@ class RecordedTree(Recording):
         """Event ``g``'s depth when it costs little to know: recorded (iterative deepening),
         or from the levels of a FIFO search; None for a stack, where only walking the chain
         up to the root (as deep as the map is big) would tell."""
-        rec = self.rec
+        rec = self._rec
         if rec.gen_depth is not None:
             return rec.gen_depth[g]
         if not self._in_order:
@@ -225,14 +230,14 @@ class RecordedTree(Recording):
     def expanded_at(self, g: int) -> int | None:
         """The step at which event ``g`` was expanded, if it was (in the whole record)."""
         if self._in_order:
-            return g + 1 if g + 1 <= self.rec.steps else None
+            return g + 1 if g + 1 <= self._rec.steps else None
         table = self._gen_step
-        if len(table) < len(self.rec.gen_node):  # extend it over what was recorded since
+        if len(table) < len(self._rec.gen_node):  # extend it over what was recorded since
             filled = self._gen_step_filled
-            table.extend(array("i", [-1]) * (len(self.rec.gen_node) - len(table)))
-            for k in range(filled + 1, self.rec.steps + 1):
-                table[self.rec.step_exp[k]] = k
-            self._gen_step_filled = self.rec.steps
+            table.extend(array("i", [-1]) * (len(self._rec.gen_node) - len(table)))
+            for k in range(filled + 1, self._rec.steps + 1):
+                table[self._rec.step_exp[k]] = k
+            self._gen_step_filled = self._rec.steps
         step = table[g]
         return step if step > 0 else None
 
@@ -247,79 +252,79 @@ class RecordedTree(Recording):
 
     def path_gens(self) -> list[int]:
         """Events from the start to the goal (empty when not found or not yet recorded)."""
-        if not self.rec.found:
+        if not self._rec.found:
             return []
         if self._path_gens is None:
-            self._path_gens = self.ancestors(self.rec.goal_gen)
+            self._path_gens = self.ancestors(self._rec.goal_gen)
         return list(self._path_gens)
 
     def path(self) -> list[Cell] | None:
-        if not self.rec.found:
+        if not self._rec.found:
             return None
         return [self.gen_cell(g) for g in self.path_gens()]
 
     def path_set(self) -> set[int]:
         """Padded cells on the path (empty until the goal is found)."""
         if self._path is None:
-            if not self.rec.found:
+            if not self._rec.found:
                 return set()
-            self._path = {self.rec.gen_node[g] for g in self.path_gens()}
+            self._path = {self._rec.gen_node[g] for g in self.path_gens()}
         return self._path
 
     def moves(self) -> list[str] | None:
-        if not self.rec.found:
+        if not self._rec.found:
             return None
         return [self.gen_dir(g) for g in self.path_gens()[1:]]
 
     def outcome(self) -> Outcome:
         """The result of the whole search (records it all first)."""
-        self.advance()
-        rec = self.rec
+        self._recording.advance()
+        rec = self._rec
         return Outcome(
-            algorithm=self.algorithm,
-            semantics=self.semantics,
+            algorithm=self._recording.algorithm,
+            semantics=self._recording.semantics,
             path=self.path(),
             moves=self.moves(),
             expanded=rec.steps - len(rec.discarded),
             discarded=len(rec.discarded),
             generated=len(rec.gen_node),
-            max_frontier=self.peak_frontier(rec.steps),
+            max_frontier=self._recording.peak_frontier(rec.steps),
             gave_up=rec.gave_up,
         )
 
     def outcome_so_far(self, k: int) -> Outcome:
         """The figures after step ``k`` (recorded): the counts up to it, and the path only
         when ``k`` is the last step (at the last step, :meth:`outcome`)."""
-        rec = self.rec
+        rec = self._rec
         discarded = bisect_right(rec.discarded, k)
         last = rec.done and k == rec.steps
         return Outcome(
-            algorithm=self.algorithm,
-            semantics=self.semantics,
+            algorithm=self._recording.algorithm,
+            semantics=self._recording.semantics,
             path=self.path() if last else None,
             moves=self.moves() if last else None,
             expanded=k - discarded,
             discarded=discarded,
             generated=rec.step_end[k],
-            max_frontier=self.peak_frontier(k),
+            max_frontier=self._recording.peak_frontier(k),
             gave_up=last and rec.gave_up,
         )
 
     def step(self, k: int) -> Step:
         """Step ``k`` (1-based) as a value."""
-        if k > self.rec.steps:
-            self.advance(k)
-        if not 1 <= k <= self.rec.steps:
-            raise IndexError(f"step {k} is outside 1..{self.rec.steps}")
-        rec = self.rec
-        succ = tuple((self.gen_dir(h), self.gen_cell(h)) for h in self.succ_range(k))
+        if k > self._rec.steps:
+            self._recording.advance(k)
+        if not 1 <= k <= self._rec.steps:
+            raise IndexError(f"step {k} is outside 1..{self._rec.steps}")
+        rec = self._rec
+        succ = tuple((self.gen_dir(h), self.gen_cell(h)) for h in self._recording.succ_range(k))
         return Step(
             index=k,
             node=self.gen_cell(rec.exp(k)),
             successors=succ,
-            depth_limit=self.depth_limit(k),
+            depth_limit=self._recording.depth_limit(k),
             found_goal=rec.found and k == rec.steps,
-            discarded=self.is_discarded(k),
+            discarded=self._recording.is_discarded(k),
         )
 
     def steps(self) -> Iterator[Step]:
@@ -327,12 +332,12 @@ class RecordedTree(Recording):
         of steps."""
         k = 1
         while True:
-            if k > self.rec.steps:
-                self.advance(k)
-                if k > self.rec.steps:
+            if k > self._rec.steps:
+                self._recording.advance(k)
+                if k > self._rec.steps:
                     return
             yield self.step(k)
             k += 1
 
 
-__all__ = ["DIR_NAMES", "RecordedTree"]
+__all__ = ["DIR_NAMES", "EventTree"]

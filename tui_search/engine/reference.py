@@ -1,7 +1,7 @@
 """The reference search: one generic loop, written for clarity, for every algorithm and choice.
 
 This is the definition of what a search does here.  The recorded runs use faster loops
-(:mod:`tui_search.engine.search`), and a hypothesis test holds each of them equal to this one,
+(:mod:`tui_search.engine.loops`), and a hypothesis test holds each of them equal to this one,
 step by step, over random maps and random choices.  The headless command line streams this loop:
 it keeps only the frontier, the visited cells and the chains of parents the frontier still
 points to, so its memory grows with the map and the frontier, never with the number of steps.

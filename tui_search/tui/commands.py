@@ -17,7 +17,8 @@ from textual.binding import Binding
 from textual.command import DiscoveryHit, Hit, Hits, Provider
 
 from tui_search.engine.algorithms import ALGORITHMS
-from tui_search.engine.exercises import QUOTES, parse_compare
+from tui_search.engine.compare import parse_compare
+from tui_search.engine.exercises import QUOTES
 from tui_search.tui.themes import THEMES
 
 if TYPE_CHECKING:

@@ -22,7 +22,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from tui_search.engine.mapfile import MapError, os_reason, write_atomically
+from tui_search.engine.atomic import os_reason, write_atomically
+from tui_search.engine.mapread import MapError
 from tui_search.tui.themes import THEMES, theme_choices
 
 CONFIG_DIR_ENV = "TUI_SEARCH_CONFIG_DIR"

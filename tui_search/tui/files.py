@@ -2,7 +2,7 @@
 edits -- quitting or replacing the map asks first.
 
 Saving writes the file the map was read from back with only the edited cells changed (see
-:class:`~tui_search.engine.mapfile.MapSource`), in its own format: ctrl+s on a MovingAI
+:class:`~tui_search.engine.mapsource.MapSource`), in its own format: ctrl+s on a MovingAI
 ``.map`` saves it in place as a ``.map`` (which has no start or goal, and the notification
 says so).  A new name picks the format by its ending: ``.map`` MovingAI, anything else text.
 
@@ -22,7 +22,9 @@ from textual.notifications import SeverityLevel
 from textual.screen import Screen
 
 from tui_search.engine.grid import Grid
-from tui_search.engine.mapfile import MOVINGAI, TEXT, MapError, kind_for_path, save_map
+from tui_search.engine.mapread import MapError
+from tui_search.engine.mapsource import MOVINGAI, TEXT
+from tui_search.engine.mapwrite import kind_for_path, save_map
 from tui_search.tui.file_access import FileAccess
 from tui_search.tui.session import Session
 

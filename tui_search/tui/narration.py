@@ -88,7 +88,7 @@ def narrate(run: Run) -> str:
         if run.at_end and run.found:
             return f"{first}: the start is the goal"
         return f"{first}. Press n to expand it."
-    expanded = run.rec.exp(k)
+    expanded = run.expanded_event(k)
     node = _node_text(run, expanded)
     costs = costs_text(run, expanded)
     if costs:
@@ -96,11 +96,11 @@ def narrate(run: Run) -> str:
     added = run.added_now()
     dirs = [run.gen_dir(h) for h in added]
     prefix = ""
-    if limit is not None and run.rec.iter_first_step[run.iteration_of(k)] == k:
+    if limit is not None and run.first_step_of_iteration(run.iteration_of(k)) == k:
         prefix = f"Depth limit {limit}, a new iteration from START. "
     if run.at_end and run.found:
-        goal = cell_text(run.gen_cell(run.rec.goal_gen))
-        if run.rec.goal_gen == expanded:  # the goal tested when taken off the frontier
+        goal = cell_text(run.gen_cell(run.goal_event))
+        if run.goal_event == expanded:  # the goal tested when taken off the frontier
             return f"{prefix}Took the goal {goal} off the {word}: found"
         return f"{prefix}Goal {goal} found from {node}"
     if run.is_discarded(k) and run.algo.weighted:
@@ -158,7 +158,7 @@ def status_parts(run: Run) -> list[tuple[str, str]]:
         ("expanded", digits(run.expanded)),
     ]
     if run.k and run.algo.weighted:  # the node just expanded: "f 7.24 (g 4.41 + h 2.83)"
-        name, _, value = costs_text(run, run.rec.exp(run.k)).partition(" = ")
+        name, _, value = costs_text(run, run.expanded_event(run.k)).partition(" = ")
         parts.insert(1, (name, value))
     if (run.semantics.visit == "expand" or run.algo.weighted) and not run.semantics.tree_search:
         parts.append(("discarded", digits(run.discarded)))

@@ -90,7 +90,7 @@ def step_changes(run: Run, old_k: int, was_at_end: bool) -> list[Cell] | None:
     step = max(k, old_k)
     cells = run.changed_cells(step)
     if step > 1:  # the marker of the node being expanded moves from or to step-1's node
-        cells.append(run.gen_cell(run.rec.exp(step - 1)))
+        cells.append(run.gen_cell(run.expanded_event(step - 1)))
     if run.found and (was_at_end or run.at_end):
         cells.extend(run.path() or [])
     return cells

@@ -10,7 +10,7 @@ lesson in one habit.
 
 from __future__ import annotations
 
-from typing import ClassVar, NamedTuple
+from typing import NamedTuple
 
 from tui_search.engine.grid import Cell
 from tui_search.engine.run import Run
@@ -22,14 +22,16 @@ def _where(run: Run) -> str:
     return f"the {frontier.noun}'s {frontier.next_end}"
 
 
+#: The question while there is no run.
+NO_RUN = "Quiz: place a start and a goal first"
+
+
 class Quiz(NamedTuple):
     """The quiz's state: on or off, and the score (``right`` of ``asked``)."""
 
     on: bool = False
     right: int = 0
     asked: int = 0
-
-    NO_RUN: ClassVar[str] = "Quiz: place a start and a goal first"
 
     @property
     def score(self) -> str:
@@ -59,4 +61,4 @@ def verdict(quiz: Quiz, run: Run, node: Cell, guess: Cell) -> tuple[Quiz, str]:
     return quiz, f"{said} · {quiz.score} · next: cursor or pick, enter"
 
 
-__all__ = ["Quiz", "verdict"]
+__all__ = ["NO_RUN", "Quiz", "verdict"]

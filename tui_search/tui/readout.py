@@ -3,10 +3,9 @@ depth 17, reached by NE from (11,41)" (no Textual: the readout widget shows the 
 
 from __future__ import annotations
 
-from bisect import bisect_right
-
 from tui_search.engine.grid import Cell, Grid
-from tui_search.engine.run import CellState, Run
+from tui_search.engine.position import CellState
+from tui_search.engine.run import Run
 from tui_search.tui.editing import cell_text
 
 
@@ -44,7 +43,7 @@ def describe(run: Run | None, grid: Grid, cell: Cell) -> str:
         else:
             parts.append(f"expanded at step {step}")
     else:
-        since = bisect_right(run.rec.step_end, g)
+        since = run.generated_at(g)
         parts.append(f"on the frontier since step {since}")
     parts.append(f"depth {run.gen_depth(g)}")
     costs = run.gen_costs(g)

@@ -13,13 +13,14 @@ from dataclasses import replace
 from pathlib import Path
 
 from tui_search.engine.algorithms import DEFAULT_ALGORITHM, get_algorithm
-from tui_search.engine.exercises import Contender, Verdict, check, parse_compare, tutorial_grid
+from tui_search.engine.compare import Contender, parse_compare
+from tui_search.engine.exercises import Verdict, check, tutorial_grid
 from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.run import MAX_STEPS, Run
 from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
 from tui_search.tui import playback
 from tui_search.tui.editing import place, set_wall
-from tui_search.tui.quiz import Quiz, verdict
+from tui_search.tui.quiz import NO_RUN, Quiz, verdict
 from tui_search.tui.seek import Seek
 
 #: The searches ``c`` compares until the settings pick others.
@@ -335,7 +336,7 @@ class Session:
     def toggle_quiz(self) -> None:
         self.quiz = Quiz(on=not self.quiz.on)
         run = self.run
-        self.note = (self.quiz.question(run) if run is not None else Quiz.NO_RUN) \
+        self.note = (self.quiz.question(run) if run is not None else NO_RUN) \
             if self.quiz.on else ""
 
     def answer(self) -> Before | None:

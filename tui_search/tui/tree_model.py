@@ -32,7 +32,6 @@ stays cheap however big the run grows:
 from __future__ import annotations
 
 from array import array
-from bisect import bisect_right
 from typing import TYPE_CHECKING
 
 from tui_search.tui.narration import group_digits
@@ -133,7 +132,6 @@ class TreeModel:
         Cost: the listing, O(steps moved) C-speed list edits (a jump: O(nodes) <= SMALL_TREE);
         the focused view, O(the part of the ancestor chain that changed) -- never O(tree).
         """
-        rec = run.rec
         k = run.k
         root = run.tree_root()
         size = run.tree_size()
@@ -151,10 +149,10 @@ class TreeModel:
             self._chain, self._chain_pos, self._top_depth = [], {}, None
         else:
             self._order, self._depth, self._expanded = [], array("i"), set()
-            self._focus(run, same_tree and self._mode == "focus", rec.step_exp[k])
+            self._focus(run, same_tree and self._mode == "focus", run.expanded_event(k))
             self._kids = run.added_now()
         self._run, self._k, self._root, self._mode = run, k, root, mode
-        self._current = rec.step_exp[k] if k else -1
+        self._current = run.expanded_event(k) if k else -1
         self._current_discarded = bool(k) and run.is_discarded(k)
         self._tree_size = size
         self._limit = run.depth_limit() if run.algo.iterative else None
@@ -197,22 +195,16 @@ class TreeModel:
 
     def _rebuild_list(self, run: Run, root: int, k: int) -> None:
         """The listing from scratch: O(nodes in the tree), replaying the iteration's steps."""
-        rec = run.rec
-        end = rec.step_end[k]
+        end = run.generated
         depth = array("i", bytes(4 * (end - root)))
-        it = run.iteration_of(k)
-        first = rec.iter_first_step[it]
+        first = run.first_step_of_iteration(run.iteration_of(k))
         blocks: dict[int, range] = {}
-        step_exp, step_end = rec.step_exp, rec.step_end
-        expanded = {step_exp[j] for j in range(first, k + 1)}
-        for j in range(first, k + 1):
-            # run.succ_range(j), inlined: a later iteration's root precedes its first step's
-            lo, hi = step_end[j - 1], step_end[j]
-            if j == first and it:
-                lo += 1
-            if hi > lo:
-                g = step_exp[j]
-                blocks[g] = range(lo, hi)
+        expanded: set[int] = set()
+        for g, added in run.expansions(first, k):
+            expanded.add(g)
+            if added:
+                lo, hi = added.start, added.stop
+                blocks[g] = added
                 depth[lo - root : hi - root] = array("i", [depth[g - root] + 1]) * (hi - lo)
         order: list[int] = []
         todo = [root]
@@ -226,7 +218,7 @@ class TreeModel:
 
     def _list_forward(self, run: Run, root: int, j: int) -> None:
         """Apply step ``j``: its node's children go right after it (it was a leaf)."""
-        g = run.rec.step_exp[j]
+        g = run.expanded_event(j)
         kids = run.succ_range(j)
         if kids:
             at = self._order.index(g) + 1
@@ -238,7 +230,7 @@ class TreeModel:
 
     def _list_backward(self, run: Run, root: int, j: int) -> None:
         """Undo step ``j``: its node's children (still leaves) leave the listing."""
-        g = run.rec.step_exp[j]
+        g = run.expanded_event(j)
         kids = run.succ_range(j)
         if kids:
             at = self._order.index(g) + 1
@@ -277,8 +269,8 @@ class TreeModel:
         self._elided = new[0] != run.tree_root()
 
     def _update_path(self, run: Run) -> None:
-        if self._path_run is not run or self._goal != run.rec.goal_gen:
-            self._path_run, self._goal = run, run.rec.goal_gen
+        if self._path_run is not run or self._goal != run.goal_event:
+            self._path_run, self._goal = run, run.goal_event
             self._path_all = frozenset(run.path_gens())
         self._path = self._path_all if run.at_end else frozenset()
 
@@ -340,11 +332,11 @@ class TreeModel:
         (a parent's children are consecutive events).  O(log steps)."""
         run = self._run
         assert run is not None
-        return run.succ_range(bisect_right(run.rec.step_end, g))
+        return run.succ_range(run.generated_at(g))
 
     def _is_last(self, g: int) -> bool:
         """Is ``g`` its parent's last child?"""
-        return g + 1 == self._run.rec.step_end[bisect_right(self._run.rec.step_end, g)]  # type: ignore[union-attr]
+        return g + 1 == self._siblings(g).stop
 
     def _node_parts(self, g: int, depth: int, expanded: bool, detail: str = "") -> Parts:
         """Glyph, move and cell of ``g``, a suffix (being expanded, the goal, cut off at the

@@ -9,7 +9,8 @@ from __future__ import annotations
 from pathlib import Path
 
 from tui_search.engine.grid import Grid
-from tui_search.engine.mapfile import MapError, load_map
+from tui_search.engine.mapfile import load_map
+from tui_search.engine.mapread import MapError
 from tui_search.tui.screens.path_prompt import PathPrompt
 
 

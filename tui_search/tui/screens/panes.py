@@ -11,6 +11,7 @@ high speeds; ``end`` and ``home`` on a big run move in time-boxed slices
 from __future__ import annotations
 
 from time import sleep
+
 from textual import events
 from textual.app import ComposeResult
 from textual.containers import Grid as PaneBox
@@ -170,7 +171,6 @@ class PanesScreen(Screen[None]):
         session = self.session
         runs = session.runs
         self.set_class(not runs, "-no-run")
-        playing = self._playing_text()
         for i, pane in enumerate(self.panes):
             if pane.is_mounted:  # else shown whole once mounted (_panes_mounted)
                 pane.show(runs[i] if runs else None,

@@ -1,6 +1,6 @@
 """Compare mode's table: a row a search with its figures at the position, live.
 
-The cells are the command line's (:func:`~tui_search.engine.exercises.table_cells`), so the
+The cells are the command line's (:func:`~tui_search.engine.compare.table_cells`), so the
 table on screen and ``--headless --compare`` print the same numbers; a run still going says
 which step it is at, and the marks on the fewest expanded and the cheapest path appear once
 every run is done.  Redrawn on every step, so drawn with the line API.
@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-from tui_search.engine.exercises import (
+from tui_search.engine.compare import (
     MARKS_KEY,
     TableRow,
     comparison,

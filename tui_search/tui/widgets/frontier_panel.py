@@ -182,7 +182,7 @@ class FrontierPanel(LinePanel):
         self._hint_col = entry_w + HINT_GAP
         self._discarded_text = ""
         if run.k and run.is_discarded(run.k):
-            g = run.rec.exp(run.k)
+            g = run.expanded_event(run.k)
             x, y = run.gen_cell(g)
             why = "stale, discarded" if run.algo.weighted else "discarded"
             self._discarded_text = (f"✗  ({x},{y}) {run.gen_dir(g).ljust(DIR_W)}"

@@ -1,9 +1,10 @@
-"""The recorded loops of uniform-cost search, greedy best-first search and A*.
+"""The best-first family: the recorded loops of uniform-cost search, greedy best-first search
+and A*, a priority queue's.
 
 One loop serves the three: they differ only in the priority an entry is pushed with (``g``,
 ``h`` or ``g + h``; :func:`~tui_search.engine.heuristics.priority_of`).  The definition is the
 reference loop (:class:`tui_search.engine.reference.ReferenceSearch`), and a
-hypothesis test holds these equal to it, array for array.
+hypothesis test in ``tests/engine`` holds these equal to it, array for array.
 
 The queue is a binary heap of ``(priority, event, cell, g)``: the event number breaks ties, so
 equal priorities come out in the order they were pushed (as in the frontier model the app
@@ -17,15 +18,7 @@ took off.  An event's g is its generating step's plus its move's cost (1 or sqrt
 :func:`_costed_moves`): the very float sum ``g + cost`` the loop pushed, so nothing is stored per
 event but its cell (a search that pushes five entries an expansion, as A* on an open map, keeps
 36 bytes an expansion where a g an event made it 68).  From it the app shows g, h and f and
-orders its frontier (:meth:`~tui_search.engine.queries.RecordedTree.gen_g`).
-
-What made the graph-search loop cheaper, counted with callgrind on maze512 row 3 under
-corners never (recorded run against the bare heapq search): closing expanded cells under a
-consistent heuristic, so most neighbours fail a byte test before any float is made (UCS 1.33
--> 1.28x, A* 1.28 -> 1.24x, with the next two); the corner test before the float test; the
-record's lists appended as methods and the step numbers taken from the chunk's ``range``.
-Tried and dropped: ``(priority, event, cell)`` entries with each cell's latest event for the
-stale test (no fewer instructions: the test and the g then cost a lookup each).
+orders its frontier (:meth:`~tui_search.engine.queries.EventTree.gen_g`).
 """
 
 from __future__ import annotations
@@ -33,15 +26,24 @@ from __future__ import annotations
 import heapq
 from array import array
 from collections.abc import Iterator
-from functools import partial
 from struct import pack
 
 from tui_search.engine import heuristics
 from tui_search.engine.grid import DELTAS, SQRT2
 from tui_search.engine.heuristics import CHEAPER_BY, HEURISTICS
-from tui_search.engine.search import CHUNK, Loop, Problem, Record, _on_path
+from tui_search.engine.loops.tree import _on_path
+from tui_search.engine.problem import Problem
+from tui_search.engine.record import CHUNK, Record
 
 INF = float("inf")
+
+# What made the graph-search loop cheaper, counted with callgrind on maze512 row 3 under
+# corners never (recorded run against the bare heapq search): closing expanded cells under a
+# consistent heuristic, so most neighbours fail a byte test before any float is made (UCS 1.33
+# -> 1.28x, A* 1.28 -> 1.24x, with the next two); the corner test before the float test; the
+# record's lists appended as methods and the step numbers taken from the chunk's ``range``.
+# Tried and dropped: ``(priority, event, cell)`` entries with each cell's latest event for the
+# stale test (no fewer instructions: the test and the g then cost a lookup each).
 
 
 def _costed_moves(problem: Problem) -> tuple[tuple[int, float, int, int], ...]:
@@ -181,7 +183,7 @@ def best_first_tree(problem: Problem, rec: Record, chunk: int = CHUNK, priority:
                     ) -> Iterator[int]:
     """Tree search in order of ``priority``: no best g, a successor on the node's own path is
     skipped, nothing is stale.  Exponential by nature (a run stops at its step limit), so
-    written plainly, as :func:`~tui_search.engine.search.tree` is."""
+    written plainly, as :func:`~tui_search.engine.loops.tree.tree` is."""
     moves, walls, stride = _costed_moves(problem), problem.walls, problem.stride
     refused = _blocked_sides_refused(problem)
     goal, start = problem.goal, problem.start
@@ -236,9 +238,4 @@ def best_first_tree(problem: Problem, rec: Record, chunk: int = CHUNK, priority:
     rec.done = True
 
 
-def best_first_loop(priority: str, tree_search: bool) -> Loop:
-    """The loop for a priority queue ordered by ``priority``."""
-    return partial(best_first_tree if tree_search else best_first, priority=priority)
-
-
-__all__ = ["best_first", "best_first_loop", "best_first_tree", "move_costs"]
+__all__ = ["best_first", "best_first_tree", "move_costs"]

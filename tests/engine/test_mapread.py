@@ -1,0 +1,178 @@
+"""Reading input files: MapError, exact reasons a file cannot be read (missing, a folder,
+permissions, too big, binary), and reads capped without big allocations."""
+
+from __future__ import annotations
+
+import os
+import pickle
+import threading
+import tracemalloc
+from pathlib import Path
+
+import pytest
+
+from tests.engine.map_helpers import TUTORIAL, error_of, write
+from tests.helpers import MAPS
+from tui_search.engine import mapread
+from tui_search.engine.mapfile import load_map
+from tui_search.engine.mapread import MAX_MAP_BYTES, MapError
+from tui_search.engine.textmap import parse_text_map
+
+# -- MapError ------------------------------------------------------------------------------
+
+
+def test_map_error_str_and_attributes() -> None:
+    err = MapError("a.txt", "bad", 3, 7)
+    assert (err.path, err.message, err.line, err.col) == ("a.txt", "bad", 3, 7)
+    assert str(err) == "a.txt:3:7: bad"
+    assert str(MapError("a.txt", "bad", 3)) == "a.txt:3: bad"
+    assert str(MapError("a.txt", "bad")) == "a.txt: bad"
+
+
+def test_map_error_pickles() -> None:
+    """Errors may cross a process boundary (workers); they must survive pickling."""
+    err = pickle.loads(pickle.dumps(MapError("a.txt", "bad", 3, 7)))
+    assert str(err) == "a.txt:3:7: bad" and err.col == 7
+
+
+# -- reading a file ------------------------------------------------------------------------
+
+
+def test_load_map_reads_a_file(tmp_path: Path) -> None:
+    path = write(tmp_path, "t.txt", TUTORIAL)
+    assert load_map(path) == parse_text_map(TUTORIAL)
+    assert load_map(str(path)) == parse_text_map(TUTORIAL)
+
+
+def test_load_map_errors_name_the_file(tmp_path: Path) -> None:
+    path = write(tmp_path, "t.txt", "S.\n.q\n")
+    assert error_of(load_map, path) == f"{path}:2:2: unknown cell character 'q'"
+
+
+def test_load_map_missing_file(tmp_path: Path) -> None:
+    path = tmp_path / "nope.txt"
+    assert error_of(load_map, path) == f"{path}: no such file"
+    inside_a_file = write(tmp_path, "t.txt", TUTORIAL) / "x"
+    assert error_of(load_map, inside_a_file) == f"{inside_a_file}: no such file"
+
+
+def test_load_map_directory(tmp_path: Path) -> None:
+    assert error_of(load_map, tmp_path) == f"{tmp_path}: is a directory, not a map file"
+
+
+def test_load_map_permission_denied(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Simulated, because root (CI containers) can read a chmod 000 file."""
+    path = write(tmp_path, "t.txt", TUTORIAL)
+
+    def denied(*args: object, **kwargs: object) -> None:
+        raise PermissionError(13, "Permission denied")
+
+    monkeypatch.setattr(mapread, "open", denied, raising=False)
+    assert error_of(load_map, path) == f"{path}: permission denied"
+
+
+def test_load_map_permission_denied_by_stat(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A folder on the way that may not be searched: ``os.stat`` itself is refused (simulated:
+    root, as in CI, may search any folder)."""
+    path = write(tmp_path, "t.txt", TUTORIAL)
+
+    def denied(*args: object, **kwargs: object) -> None:
+        raise PermissionError(13, "Permission denied")
+
+    monkeypatch.setattr(mapread.os, "stat", denied)
+    assert error_of(load_map, path) == f"{path}: permission denied"
+
+
+def test_load_map_too_big_is_refused_before_reading(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    path = tmp_path / "huge.map"
+    with open(path, "wb") as handle:  # sparse: no disk used
+        handle.truncate(MAX_MAP_BYTES + 1)
+
+    def no_reading(*args: object, **kwargs: object) -> None:
+        raise AssertionError("the file was opened")
+
+    monkeypatch.setattr(mapread, "open", no_reading, raising=False)
+    assert error_of(load_map, path) == f"{path}: file is 64.1 MB; a map may be at most 64 MB"
+    with open(path, "r+b") as handle:
+        handle.truncate(200 * 1024 * 1024)
+    assert error_of(load_map, path) == f"{path}: file is 200.0 MB; a map may be at most 64 MB"
+
+
+def test_load_map_just_under_the_limit_is_read(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr(mapread, "MAX_MAP_BYTES", len(TUTORIAL))
+    assert load_map(write(tmp_path, "t.txt", TUTORIAL)).width == 6
+    path = write(tmp_path, "u.txt", TUTORIAL + "\n")
+    assert "a map may be at most" in error_of(load_map, path)
+
+
+def test_loading_a_small_map_allocates_little() -> None:
+    """A read capped at 64 MB must not ask for 64 MB: ``read(n)`` allocates ``n`` bytes first,
+    which made loading the six-line tutorial map peak at 67 MB."""
+    load_map(MAPS / "tutorial.txt")  # once first, so one-off caches do not count
+    tracemalloc.start()
+    try:
+        grid = load_map(MAPS / "tutorial.txt")
+        _, peak = tracemalloc.get_traced_memory()
+    finally:
+        tracemalloc.stop()
+    assert (grid.width, grid.height) == (6, 6)
+    assert peak < 256 * 1024
+
+
+def fifo_fed(path: Path, data: bytes) -> tuple[Path, threading.Thread]:
+    """A named pipe at ``path`` (``os.stat`` says 0 bytes) that a thread fills with ``data``."""
+    os.mkfifo(path)
+
+    def feed() -> None:
+        with open(path, "wb") as pipe:
+            try:
+                pipe.write(data)
+            except BrokenPipeError:  # the reader stopped at the cap
+                pass
+
+    thread = threading.Thread(target=feed, daemon=True)
+    thread.start()
+    return path, thread
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="no named pipes on this system")
+def test_a_map_longer_than_stat_said_is_read_in_chunks_up_to_the_cap(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A pipe or a growing file holds more than ``os.stat`` said: the rest is read in bounded
+    chunks, and never more than the cap plus one byte."""
+    monkeypatch.setattr(mapread, "_READ_CHUNK", 5)
+    path, thread = fifo_fed(tmp_path / "pipe.txt", TUTORIAL.encode())
+    assert load_map(path) == parse_text_map(TUTORIAL)
+    thread.join(10)
+    monkeypatch.setattr(mapread, "MAX_MAP_BYTES", 1024 * 1024)
+    reads: list[int] = []
+    real_open = open
+
+    def spying_open(*args: object, **kwargs: object):  # type: ignore[no-untyped-def]
+        handle = real_open(*args, **kwargs)  # type: ignore[call-overload]
+        read = handle.read
+        handle.read = lambda n=-1: reads.append(n) or read(n)  # type: ignore[method-assign]
+        return handle
+
+    monkeypatch.setattr(mapread, "open", spying_open, raising=False)
+    monkeypatch.setattr(mapread, "_READ_CHUNK", 64 * 1024)
+    path, thread = fifo_fed(tmp_path / "big.txt", b"." * (3 * 1024 * 1024))
+    assert error_of(load_map, path) == f"{path}: file is 1.1 MB; a map may be at most 1 MB"
+    assert max(reads) <= 64 * 1024 and sum(reads) == 1024 * 1024 + 1
+    thread.join(10)
+
+
+@pytest.mark.parametrize(
+    "content",
+    [b"S.\n.G\x00\n", b"\x89PNG\r\n\x1a\n", "S.\n.G\n".encode("utf-16"), b"S.\n\xff\xfe\n"],
+)
+def test_load_map_binary(tmp_path: Path, content: bytes) -> None:
+    path = write(tmp_path, "b.map", content)
+    assert error_of(load_map, path) == f"{path}: binary file, not a text map"

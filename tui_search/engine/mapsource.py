@@ -1,0 +1,35 @@
+"""The record of the file a grid was read from (:class:`MapSource`), and the two formats.
+
+It lives apart from the readers and writers so that :class:`~tui_search.engine.grid.Grid`
+can hold one (``Grid.source``) without importing them: this module imports nothing from the
+engine.  Saving (:mod:`tui_search.engine.mapwrite`) writes the text back with only the
+characters of edited cells changed.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+__all__ = ["MOVINGAI", "TEXT", "MapSource"]
+
+TEXT, MOVINGAI = "text", "movingai"
+
+
+class MapSource(NamedTuple):
+    """The text a map file holds, kept with the grid read from it so that saving rewrites
+    only the characters of the cells that were edited.
+
+    ``lines`` are the file split on ``\\n`` only, each exactly as written (a CRLF line keeps
+    its ``\\r``, trailing spaces stay; the last is ``""`` when the file ends in a newline), so
+    ``text()`` gives the file back byte for byte.  Row ``y`` of the grid is the first
+    ``width`` characters of ``lines[rows[y]]`` (a BOM, if any, is kept apart in ``bom``).
+    """
+
+    kind: str  # TEXT or MOVINGAI
+    lines: tuple[str, ...]
+    rows: tuple[int, ...]
+    width: int
+    bom: bool = False
+
+    def text(self) -> str:
+        return ("\ufeff" if self.bom else "") + "\n".join(self.lines)

@@ -1,0 +1,166 @@
+"""MovingAI ``.scen`` files: benchmark problems (a start and goal on a named map, with the
+optimal length), read and checked against the map they are for.
+
+The format is https://movingai.com/benchmarks/formats.html: a ``version`` line, then one
+problem per line in nine fields.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import re
+from typing import NamedTuple
+
+from tui_search.engine.grid import Cell, Grid
+from tui_search.engine.mapread import (
+    MAX_DIGITS,
+    NUMBER,
+    MapError,
+    check_cell,
+    quoted,
+    read_text,
+    stripped_lines,
+)
+
+__all__ = [
+    "Scenario",
+    "check_scenario_map",
+    "check_scenario_matches",
+    "load_scenario",
+    "parse_scenarios",
+    "read_scenarios",
+]
+
+
+class Scenario(NamedTuple):
+    """One benchmark problem: a start and goal on a named map, with its optimal length."""
+
+    bucket: int
+    map_name: str  # as written in the file; may include directories (match by basename)
+    width: int
+    height: int
+    start: Cell
+    goal: Cell
+    optimal_length: float
+    line: int  # 1-based line in the .scen file, for error messages
+
+
+_VERSION = re.compile(r"version\s+[0-9]+(\.[0-9]+)?", re.IGNORECASE)
+_FIELDS = (
+    "bucket", "map", "map width", "map height",
+    "start x", "start y", "goal x", "goal y", "optimal length",
+)  # fmt: skip
+
+
+def read_scenarios(path: str | os.PathLike) -> list[Scenario]:
+    """Every problem in a ``.scen`` file, in file order."""
+    where = os.fsdecode(path)
+    return parse_scenarios(read_text(where), where)
+
+
+def parse_scenarios(text: str, path: str = "<scen>") -> list[Scenario]:
+    """Every problem in the text of a ``.scen`` file (``path`` is only for messages)."""
+    lines = stripped_lines(text)
+    if not _VERSION.fullmatch(lines[0].strip()):
+        found = quoted(lines[0]) if lines[0] else "an empty line"
+        raise MapError(path, f"expected 'version 1' on the first line, found {found}", 1)
+    out = []
+    for number, line in enumerate(lines[1:], start=2):
+        if not line.strip():
+            continue
+        fields = [f.strip() for f in line.split("\t")]
+        if len(fields) != 9:
+            fields = line.split()
+        if len(fields) != 9:
+            raise MapError(
+                path,
+                f"expected 9 fields ({', '.join(_FIELDS)}), found {len(fields)}",
+                number,
+            )
+        ints = []
+        for k in (0, 2, 3, 4, 5, 6, 7):
+            word = fields[k]
+            if not NUMBER.fullmatch(word) or len(word.lstrip("0")) > MAX_DIGITS:
+                raise MapError(
+                    path, f"{_FIELDS[k]} is not a whole number >= 0: {quoted(word)}", number
+                )
+            ints.append(int(word))
+        bucket, width, height, sx, sy, gx, gy = ints
+        try:
+            length = float(fields[8])
+        except ValueError:
+            length = math.nan
+        if not (math.isfinite(length) and length >= 0):
+            raise MapError(
+                path, f"optimal length is not a number >= 0: {quoted(fields[8])}", number
+            )
+        if not fields[1]:
+            raise MapError(path, "the map name is empty", number)
+        if width < 1 or height < 1:
+            raise MapError(path, f"map size {width}x{height} is empty", number)
+        for what, (x, y) in (("start", (sx, sy)), ("goal", (gx, gy))):
+            if x >= width or y >= height:
+                raise MapError(
+                    path, f"{what} ({x},{y}) is outside the {width}x{height} map", number
+                )
+        out.append(Scenario(bucket, fields[1], width, height, (sx, sy), (gx, gy), length, number))
+    return out
+
+
+def load_scenario(path: str | os.PathLike, row: int) -> Scenario:
+    """Problem number ``row`` (from 0, after the version line) of a ``.scen`` file."""
+    where = os.fsdecode(path)
+    scenarios = read_scenarios(where)
+    if 0 <= row < len(scenarios):
+        return scenarios[row]
+    if not scenarios:
+        raise MapError(where, f"no row {row}: the file has no scenario rows")
+    count = len(scenarios)
+    rows = "1 row (row 0)" if count == 1 else f"{count} rows (0 to {count - 1})"
+    raise MapError(where, f"no row {row}: the file has {rows}")
+
+
+def _basename(name: str) -> str:
+    """Basename for either separator: scenario files written on Windows use backslashes."""
+    return re.split(r"[\\/]", name)[-1]
+
+
+def check_scenario_map(
+    scen: Scenario, scen_path: str | os.PathLike, map_path: str | os.PathLike
+) -> None:
+    """Raise MapError (at the scenario's line) unless ``scen`` names the map ``map_path``.
+
+    Check this before the scenario's start and goal are put on the grid: on another map they
+    would be refused for the wrong reason ("start is on an obstacle").  Maps are matched by
+    basename because older files give a path (``maps/dao/x.map``).
+    """
+    where = os.fsdecode(scen_path)
+    map_name = _basename(os.fsdecode(map_path))
+    wanted = _basename(scen.map_name)
+    if wanted != map_name:
+        raise MapError(
+            where, f"{_basename(where)} is for {wanted}, not {map_name}", scen.line
+        )
+
+
+def check_scenario_matches(
+    scen: Scenario, grid: Grid, scen_path: str | os.PathLike, map_path: str | os.PathLike
+) -> None:
+    """Raise MapError (at the scenario's line) unless ``scen`` is a problem on this map:
+    its name (:func:`check_scenario_map`), its size, then its start and goal.
+
+    The spec's "scale the map to the scenario's size" is not supported: sizes must match.
+    """
+    check_scenario_map(scen, scen_path, map_path)
+    where = os.fsdecode(scen_path)
+    map_name = _basename(os.fsdecode(map_path))
+    if (scen.width, scen.height) != (grid.width, grid.height):
+        raise MapError(
+            where,
+            f"scenario says the map is {scen.width}x{scen.height}, "
+            f"but {map_name} is {grid.width}x{grid.height}",
+            scen.line,
+        )
+    check_cell(grid, scen.start, "start", where, scen.line)
+    check_cell(grid, scen.goal, "goal", where, scen.line)

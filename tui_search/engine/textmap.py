@@ -1,0 +1,119 @@
+"""Our text map format: reading it into a grid, and the grid's rows written in it.
+
+Text format::
+
+    ; a comment
+    S#...#
+    .#.##G
+
+``.`` free, ``#`` obstacle, ``S`` start, ``G`` goal.  A first row that is really another
+format's first line (a scenario file, a MovingAI header without its ``type`` line) is named
+as such instead of as a bad cell.
+"""
+
+from __future__ import annotations
+
+import re
+
+from tui_search.engine.grid import Cell, Grid
+from tui_search.engine.mapread import MapError, block_table, first_bad, quoted, split_lines
+from tui_search.engine.mapsource import TEXT, MapSource
+
+__all__ = ["parse_text_map", "text_rows"]
+
+_TEXT_BAD = re.compile(r"[^.#SG]")
+_TEXT_BLOCK = block_table("#")
+
+
+def parse_text_map(
+    text: str, path: str = "<map>", *, need_start: bool = True, need_goal: bool = True
+) -> Grid:
+    """Parse our text format; the map must have exactly one ``S`` and one ``G`` (at most
+    one where ``need_start``/``need_goal`` is false)."""
+    bom, raw = split_lines(text)
+    rows: list[bytes] = []
+    row_lines: list[int] = []  # index in ``raw`` of each row
+    width = 0
+    cells: dict[str, Cell] = {}  # "S"/"G" -> (x, y)
+    seen_at: dict[str, tuple[int, int]] = {}  # "S"/"G" -> (line, col), for "a second S"
+    blank_line: int | None = None  # first blank line after the rows began
+    for number, line in enumerate((line.rstrip() for line in raw), start=1):
+        if line.lstrip().startswith(";"):
+            continue
+        if not line:
+            if rows and blank_line is None:
+                blank_line = number
+            continue
+        if blank_line is not None:
+            raise MapError(path, "blank line inside the map", blank_line)
+        bad = first_bad(line, _TEXT_BAD)
+        if bad >= 0:
+            if not rows:
+                _check_other_format(line, number, path)
+            raise MapError(path, f"unknown cell character {line[bad]!r}", number, bad + 1)
+        if not rows:
+            width = len(line)
+        elif len(line) != width:
+            raise MapError(path, f"row has {len(line)} cells, expected {width}", number)
+        for letter, what in (("S", "start"), ("G", "goal")):
+            x = line.find(letter)
+            if x < 0:
+                continue
+            if letter not in seen_at:
+                cells[letter] = (x, len(rows))
+                seen_at[letter] = (number, x + 1)
+                x = line.find(letter, x + 1)
+                if x < 0:
+                    continue
+            first_line, first_col = seen_at[letter]
+            raise MapError(
+                path,
+                f"a second {what} {letter!r} (the first is at line {first_line}, "
+                f"column {first_col})",
+                number,
+                x + 1,
+            )
+        rows.append(line.encode("ascii").translate(_TEXT_BLOCK))
+        row_lines.append(number - 1)
+    if not rows:
+        raise MapError(path, "the map is empty")
+    if "S" not in cells and need_start:
+        raise MapError(path, "no start 'S' in the map")
+    if "G" not in cells and need_goal:
+        raise MapError(path, "no goal 'G' in the map")
+    blocked = bytearray(b"".join(rows))
+    source = MapSource(TEXT, tuple(raw), tuple(row_lines), width, bom)
+    return Grid(width, len(rows), blocked, cells.get("S"), cells.get("G"), source)
+
+
+_SCEN_START = re.compile(r"version(?:\s|$)", re.IGNORECASE)
+_HEADER_START = re.compile(r"type|height|width|map", re.IGNORECASE)
+
+
+def _check_other_format(line: str, number: int, path: str) -> None:
+    """Name the real problem when the first row of a "text map" is another format's first
+    line: a scenario file given as the map, or a MovingAI map whose ``type`` line is missing
+    or garbled (no text row starts with a letter other than S or G)."""
+    if _SCEN_START.match(line):
+        raise MapError(path, "this is a MovingAI scenario file: pass it with --scen", number)
+    if _HEADER_START.match(line):
+        raise MapError(
+            path, f"MovingAI header: expected 'type octile', found {quoted(line)}", number
+        )
+
+
+def text_rows(grid: Grid) -> list[str]:
+    """The grid's rows in the text format: ``.`` free, ``#`` obstacle, ``S`` and ``G``.
+
+    A grid without a start or goal has no ``S``/``G``; such a file loads only with
+    ``--start``/``--goal`` overrides.  A start or goal on an obstacle is written as
+    ``S``/``G``, so it comes back free.
+    """
+    w = grid.width
+    text = bytes(grid.blocked).translate(bytes.maketrans(b"\x00\x01", b".#")).decode("ascii")
+    rows = [text[y * w : (y + 1) * w] for y in range(grid.height)]
+    for cell, letter in ((grid.start, "S"), (grid.goal, "G")):
+        if cell is not None and grid.in_bounds(cell):
+            x, y = cell
+            rows[y] = rows[y][:x] + letter + rows[y][x + 1 :]
+    return rows

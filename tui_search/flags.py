@@ -1,0 +1,118 @@
+"""What the command line's flags ask for: the map (:func:`load_problem`), the search choices
+(:func:`semantics_from`) and the searches to compare (:func:`contenders_from`), with
+:class:`UsageError` for flags that make no sense.
+
+Shared by the dispatch (:mod:`tui_search.cli`), the headless runs (:mod:`tui_search.headless`)
+and the server (:mod:`tui_search.serve`), so that none of them imports another.
+"""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from tui_search.engine.algorithms import ALGORITHMS, DEFAULT_ALGORITHM, get_algorithm
+from tui_search.engine.compare import Contender, parse_compare
+from tui_search.engine.grid import Grid, parse_order
+from tui_search.engine.heuristics import DEFAULT_HEURISTIC
+from tui_search.engine.mapfile import load_map, parse_cell, parse_map_text
+from tui_search.engine.scenarios import check_scenario_map, check_scenario_matches, load_scenario
+from tui_search.engine.semantics import Semantics
+
+TUTORIAL_NAME = "tutorial.txt"
+
+
+class UsageError(Exception):
+    """A bad command line: reported as one line, exit code 2."""
+
+
+def _cell_arg(flag: str, text: str | None):
+    if text is None:
+        return None
+    try:
+        return parse_cell(text)
+    except ValueError as exc:
+        raise UsageError(f"{flag} {text!r}: {exc}") from None
+
+
+def load_problem(args: argparse.Namespace) -> tuple[Grid, Path | None]:
+    """The grid to search (start and goal resolved) and the file it came from."""
+    start = _cell_arg("--start", args.start)
+    goal = _cell_arg("--goal", args.goal)
+    if (args.scen is None) != (args.scen_row is None):
+        raise UsageError("--scen and --scen-row go together")
+    if args.map is None:
+        if args.scen:
+            raise UsageError("--scen needs a MAP")
+        # The map ships inside the package (a plain file: importlib.resources would cost
+        # ~10 ms of start-up to import).
+        text = (Path(__file__).parent / "maps" / TUTORIAL_NAME).read_text("utf-8")
+        return parse_map_text(text, TUTORIAL_NAME, start=start, goal=goal), None
+    path = Path(args.map)
+    scen = None
+    args.scenario = None
+    if args.scen:
+        scen = load_scenario(args.scen, args.scen_row)
+        # A row for another map is refused by name, before its start and goal are tried on
+        # this map's cells (they would fail there for the wrong reason).
+        check_scenario_map(scen, args.scen, path)
+        start = start or scen.start
+        goal = goal or scen.goal
+    grid = load_map(path, start=start, goal=goal)
+    if scen is not None:
+        check_scenario_matches(scen, grid, args.scen, str(path))
+        # Its optimal length is for its own start and goal: not when a flag moved one.
+        if (grid.start, grid.goal) == (scen.start, scen.goal):
+            args.scenario = scen
+    return grid, path
+
+
+def semantics_from(args: argparse.Namespace, checked: bool = True) -> Semantics:
+    """The search choices the flags ask for; a combination that makes no sense is a
+    UsageError.  ``checked`` False leaves out the checks against ``-a`` (a comparison checks
+    each of its searches)."""
+    try:
+        order = parse_order(args.order)
+    except ValueError as exc:
+        raise UsageError(f"--order {args.order!r}: {exc}") from None
+    corners = args.corners or ("never" if args.no_corner_cutting else "always")
+    if args.no_corner_cutting and corners != "never":
+        raise UsageError(f"--no-corner-cutting means --corners never, not {corners}")
+    if args.tree_search and args.visit is not None:
+        raise UsageError("--visit does not apply to --tree-search (it has no visited set)")
+    if not checked:
+        try:
+            return Semantics(order=order, corners=corners, visit=args.visit or "generate",
+                             goal_test=args.goal_test, tree_search=args.tree_search,
+                             heuristic=args.heuristic or DEFAULT_HEURISTIC)
+        except ValueError as exc:
+            raise UsageError(str(exc)) from None
+    args.algorithm = args.algorithm or DEFAULT_ALGORITHM  # -a's default (None: not given)
+    algorithm = get_algorithm(args.algorithm)
+    if algorithm.iterative and args.visit is not None:
+        raise UsageError(f"--visit does not apply to -a {args.algorithm} "
+                         "(it re-opens a cell reached at a smaller depth)")
+    if algorithm.weighted and args.visit is not None:
+        raise UsageError(f"--visit does not apply to -a {args.algorithm} "
+                         "(it re-opens a cell reached with a lower g)")
+    if args.heuristic is not None and not algorithm.informed:
+        informed = ", ".join(a.key for a in ALGORITHMS.values() if a.informed)
+        raise UsageError(f"--heuristic applies to -a {informed} only, not {args.algorithm}")
+    try:
+        sem = Semantics(order=order, corners=corners, visit=args.visit or "generate",
+                        goal_test=args.goal_test, tree_search=args.tree_search,
+                        heuristic=args.heuristic or DEFAULT_HEURISTIC)
+        sem.check(algorithm)
+    except ValueError as exc:
+        raise UsageError(str(exc)) from None
+    return sem
+
+
+def contenders_from(args: argparse.Namespace) -> list[Contender]:
+    """``--compare``'s searches, each under the flags' choices (``--heuristic`` for the
+    informed ones that name none)."""
+    base = semantics_from(args, checked=False)
+    try:
+        return parse_compare(args.compare, base)
+    except ValueError as exc:
+        raise UsageError(f"--compare {args.compare!r}: {exc}") from None
