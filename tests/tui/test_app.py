@@ -100,11 +100,18 @@ async def click_shown(pilot, selector: str) -> None:
     """Click the widget ``selector`` of the screen on top once it is laid out: on a loaded
     machine a screen just pushed can take longer than a pause to get its regions."""
 
-    def shown() -> bool:
-        found = pilot.app.screen.query(selector)
-        return bool(found) and found.first().region.area > 0
+    seen: list[object] = []
 
-    await wait_until(pilot, shown)
+    def settled() -> bool:
+        """Laid out, and in the same place as at the last look (a screen that is still
+        being laid out moves its widgets: a click there can miss)."""
+        found = pilot.app.screen.query(selector)
+        where = found.first().region if found else None
+        steady = where is not None and where.area > 0 and seen[-1:] == [where]
+        seen.append(where)
+        return steady
+
+    await wait_until(pilot, settled)
     await pilot.click(selector)
 
 
@@ -762,7 +769,7 @@ async def test_a_terminal_too_small_shows_a_message_instead_of_the_layout() -> N
     async with app.run_test(size=(50, 15)) as pilot:
         await pilot.pause()
         message = app.query_one("#too-small")
-        assert message.display and not app.query_one(GridView).display
+        assert message.display and not app.query_one("#panes").display
         assert "need at least 60×20, have 50×15" in str(message.render())
     app = tutorial_app()
     async with app.run_test(size=(60, 20)) as pilot:
@@ -773,7 +780,7 @@ async def test_a_terminal_too_small_shows_a_message_instead_of_the_layout() -> N
         assert app.query_one("#too-small").display
         await pilot.resize_terminal(80, 24)
         await pilot.pause()
-        assert not app.query_one("#too-small").display and app.query_one("#grid").display
+        assert not app.query_one("#too-small").display and app.query_one("#panes").display
 
 
 # -- the engine contract the app relies on -----------------------------------------------

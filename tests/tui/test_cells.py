@@ -221,7 +221,7 @@ async def test_a_block_of_the_overview_shows_its_most_important_state() -> None:
     frontier; the start's block as the start; a wall among free cells as a wall."""
     app = SearchApp(open_grid(20, 20, start=(2, 2), goal=(19, 19)))
     app.session.grid.set_blocked((12, 2), True)
-    app.main.action_reset()
+    app.session.new_runs()
     async with app.run_test(size=SIZE) as pilot:
         view = app.query_one(GridView)
         view.set_overview(True)
@@ -482,7 +482,7 @@ async def test_page_keys_move_the_cursor_a_screenful() -> None:
 @sync
 async def test_a_readout_too_long_for_its_line_ends_in_an_ellipsis() -> None:
     app = tutorial_app()
-    async with app.run_test(size=(80, 24)) as pilot:
+    async with app.run_test(size=(60, 24)) as pilot:
         await pilot.pause()
         line = app.query_one(CellReadout).render_line(0).text
         assert line.rstrip().endswith("…") and line.startswith("Cursor (0,0): the start")

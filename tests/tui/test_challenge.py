@@ -2,12 +2,17 @@
 
 from __future__ import annotations
 
+import threading
+
+import pytest
+
 from tests.tui.test_app import MAPS, TUTORIAL, sync, tutorial_app, wait_until
 from tui_search.cli import main
 from tui_search.engine.exercises import LIVE_CELLS, check, tutorial_grid
 from tui_search.engine.grid import Grid
 from tui_search.engine.mapfile import load_map
 from tui_search.tui.app import SearchApp
+from tui_search.tui.screens import panes
 from tui_search.tui.widgets.challenge import ChallengePanel
 
 SIZE = (120, 36)
@@ -67,25 +72,32 @@ async def test_exercise_two_on_its_shipped_solution_and_a_big_map() -> None:
 
 
 @sync
-async def test_a_big_map_is_checked_in_the_background_once_the_edits_pause() -> None:
+async def test_a_big_map_is_checked_in_the_background_once_the_edits_pause(
+        monkeypatch: pytest.MonkeyPatch) -> None:
     """Over LIVE_CELLS cells the check runs in a thread: "Checking" at once, the verdict the
     headless grading gives once it is done; an edit meanwhile makes the old verdict stale (not
-    shown) and a new check gives the edited map's."""
+    shown) and a new check gives the edited map's.  The pause before a check ends when the
+    test opens a gate (on a busy machine the app can take longer to start than the pause)."""
+    gate = threading.Event()
+    monkeypatch.setattr(panes, "sleep", lambda seconds: gate.wait(60))
     grid = Grid(150, 150, start=(0, 0), goal=(149, 149))
     assert grid.width * grid.height > LIVE_CELLS
     big = SearchApp(grid, exercise=1)
     async with big.run_test(size=SIZE) as pilot:
         assert challenge(big).verdict is None and "Checking" in challenge(big).text
+        gate.set()
         await wait_until(pilot, lambda: challenge(big).verdict is not None)
         want = check(1, grid.copy(), tutorial_grid())
         assert challenge(big).verdict == want
         assert f"{want.bfs.expanded:,}" in challenge(big).text
         # two edits in a row (the goal moved next to the start, then one further): the first
         # one's check is cancelled or its verdict stale; the verdict is the last map's
+        gate.clear()
         await pilot.press("right", "g")
         assert challenge(big).verdict is None and "Checking" in challenge(big).text
         await pilot.press("right", "g")
         assert big.session.grid.goal == (2, 0)
+        gate.set()
         await wait_until(pilot, lambda: challenge(big).verdict is not None)
         edited = check(1, big.session.grid.copy(), tutorial_grid())
         assert challenge(big).verdict == edited and edited != want
@@ -95,8 +107,8 @@ def test_exercise_without_headless_opens_the_app(monkeypatch) -> None:
     seen = {}
 
     def fake_run(self, *args, **kwargs):
-        seen["exercise"] = self.exercise
-        seen["title"] = self.map_name
+        seen["exercise"] = self.session.exercise
+        seen["title"] = self.session.map_name
 
     monkeypatch.setattr(SearchApp, "run", fake_run)
     assert main(["--exercise", "2"]) == 0

@@ -35,19 +35,20 @@ def steps(app: SearchApp) -> list[int]:
 async def test_c_shows_two_panes_and_c_again_one_search() -> None:
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
-        assert app.session.spec.count(",") == 0 and not app.query(RunPane)
+        single = app.query_one(RunPane)  # one search: one pane
+        assert app.session.spec == "bfs" and single.label == "BFS"
         await pilot.press("c")
         await pilot.pause()
         panes = app.query(RunPane)
-        assert [p.label for p in panes] == ["BFS", "DFS"]
-        assert all(p.display for p in panes) and not app.main.views[0].display
+        assert [p.label for p in panes] == ["BFS", "DFS"] and panes.first() is single
+        assert all(p.display and p.view.display for p in panes)
         titles = [p.frontier.border_title for p in panes]
         assert titles == ["Queue (FIFO)", "Stack (LIFO)"]
         assert app.focused is panes[0].view
         await pilot.press("c")
         await pilot.pause()
-        assert app.session.spec.count(",") == 0 and not app.query(RunPane) and app.main.views[0].display
-        assert len(app.session.runs) == 1 and app.focused is app.main.views[0]
+        assert app.session.spec == "bfs" and list(app.query(RunPane)) == [single]
+        assert len(app.session.runs) == 1 and app.focused is single.view
 
 
 @sync
@@ -172,6 +173,11 @@ async def test_narrow_terminals_stack_the_panes_and_short_ones_fold_the_trees() 
         await pilot.pause()
         a, b = (p.region for p in app.main.panes)
         assert a.x == b.x and b.y > a.y  # one above the other
+    app = compare_app()
+    async with app.run_test(size=(100, 24)) as pilot:
+        await pilot.pause()
+        a, b = (p.region for p in app.main.panes)
+        assert a.y == b.y and b.x > a.x  # side by side
         assert not app.main.panes[0].tree_panel.display  # too short for trees
     app = compare_app()
     async with app.run_test(size=SIZE) as pilot:
@@ -229,7 +235,8 @@ async def test_quiz_in_compare_mode_asks_of_the_left_pane_and_steps_all() -> Non
 def test_the_command_line_opens_compare_mode_and_refuses_bad_searches(capsys,
                                                                        monkeypatch) -> None:
     seen = {}
-    monkeypatch.setattr(SearchApp, "run", lambda self: seen.setdefault("compare", self.compare))
+    monkeypatch.setattr(SearchApp, "run",
+                        lambda self: seen.setdefault("compare", self.session.spec))
     assert main([str(MAPS / "tutorial.txt"), "--compare", "bfs,dfs"]) == 0
     assert seen["compare"] == "bfs,dfs"
     assert main([str(TUTORIAL), "--compare", "bfs"]) == 2
@@ -250,18 +257,18 @@ async def test_a_setting_that_does_not_apply_to_one_pane_applies_to_the_others()
 
 
 @sync
-async def test_an_exercise_beside_the_panes_takes_its_room_from_them() -> None:
+async def test_an_exercise_above_the_panes_takes_its_room_from_them() -> None:
     app = compare_app()
-    async with app.run_test(size=(120, 44)) as pilot:
+    async with app.run_test(size=(120, 40)) as pilot:
         await pilot.pause()
         a, b = (p.region for p in app.main.panes)
         assert a.y == b.y  # side by side: 60 columns each
         await pilot.press("x")
         await pilot.pause()
-        a, b = (p.region for p in app.main.panes)
-        assert a.x == b.x and b.y > a.y  # the challenge took 48: one above the other
+        a2, b2 = (p.region for p in app.main.panes)
+        assert a2.y == b2.y and a2.width == a.width  # still side by side, as wide
         challenge = app.query_one("#challenge").region
-        assert challenge.x >= a.right
+        assert challenge.width == 120 and challenge.bottom <= a2.y < a.y + challenge.height + 1
 
 
 @sync
@@ -345,9 +352,9 @@ async def test_the_palette_offers_comparisons_and_a_bad_one_is_said_not_crashed(
     async with app.run_test(size=SIZE) as pilot:
         names = [name for name, _, _ in SearchCommands(app.screen).commands()]
         assert "Compare: A* · A* (manhattan)" in names and "Compare: BFS · DFS" in names
-        await app.run_action("show_compare('astar,astar:manhattan')")
+        await app.main.run_action("show_compare('astar,astar:manhattan')")
         await wait_until(pilot, lambda: all(p.is_mounted for p in app.main.panes) and app.main.panes)
         assert [p.label for p in app.main.panes] == ["A*", "A* (manhattan)"]
-        await app.run_action("show_compare('bfs,nope')")
+        await app.main.run_action("show_compare('bfs,nope')")
         await pilot.pause()
         assert app.session.spec == "astar,astar:manhattan"  # unchanged, and said in a notification

@@ -150,7 +150,7 @@ async def test_switching_draws_what_starting_in_the_theme_draws(name) -> None:
         async with app.run_test(size=SIZE) as pilot:
             await pilot.press("n", "n")
             if switch:
-                app.set_theme(name)
+                app.theme = name
             await pilot.pause()
             assert app.theme == name
             drawn.append(await repainted(pilot))

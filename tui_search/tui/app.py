@@ -98,10 +98,6 @@ class SearchApp(App[int]):
         self.theme_variables = variables
         return variables
 
-    def set_theme(self, name: str) -> None:
-        """Switch to theme ``name`` (the palette's theme commands)."""
-        self.theme = name
-
     def action_next_theme(self) -> None:
         names = list(THEMES)
         self.theme = names[(names.index(self.theme) + 1) % len(names)]

@@ -2,7 +2,8 @@
 algorithm of the registry, each theme, and the actions a key does (settings, save, save as,
 open, overview, zoom, cell labels, help).
 
-A command runs the same action as its key (``app.run_action``), so the palette can never do
+A command runs the same action as its key (the main screen's ``run_action``), so the palette
+can never do
 something the keys do not; its help line is the key's tooltip and the key, so the palette also
 teaches the keys.  The app imports this module only when the palette first opens.
 """
@@ -11,7 +12,6 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from functools import partial
-from typing import TYPE_CHECKING
 
 from textual.binding import Binding
 from textual.command import DiscoveryHit, Hit, Hits, Provider
@@ -19,10 +19,8 @@ from textual.command import DiscoveryHit, Hit, Hits, Provider
 from tui_search.engine.algorithms import ALGORITHMS
 from tui_search.engine.compare import parse_compare
 from tui_search.engine.exercises import QUOTES
+from tui_search.tui.keys import KEYS
 from tui_search.tui.themes import THEMES
-
-if TYPE_CHECKING:
-    from tui_search.tui.app import SearchApp
 
 #: Comparisons offered by name: the tutorial's, the next lesson's, and A*'s heuristics.
 COMPARISONS = {
@@ -53,30 +51,31 @@ class SearchCommands(Provider):
     """Algorithms, themes and the app's actions, found by name."""
 
     def commands(self) -> list[Command]:
-        app: SearchApp = self.app  # type: ignore[assignment]
+        app = self.app
+        main = app.screen_stack[0]  # the main screen: its keys' actions
         found: list[Command] = [
-            (f"Algorithm: {a.name}", partial(app.run_action, f"algorithm({a.key!r})"),
+            (f"Algorithm: {a.name}", partial(main.run_action, f"algorithm({a.key!r})"),
              f"{a.summary} (key {a.app_key})")
             for a in ALGORITHMS.values()
         ]
         for spec in THEMES.values():
             now = " · the theme now" if app.theme == spec.name else ""
-            found.append((f"Theme: {spec.title}", partial(app.set_theme, spec.name),
+            found.append((f"Theme: {spec.title}", partial(setattr, app, "theme", spec.name),
                           f"{spec.description} · t cycles the themes{now}"))
         for n, quote in QUOTES.items():
-            found.append((f"Exercise {n}: {quote}", partial(app.run_action, f"show_exercise({n})"),
+            found.append((f"Exercise {n}: {quote}", partial(main.run_action, f"show_exercise({n})"),
                           "the tutorial's exercise, checked live as you edit (key x cycles)"))
-        found.append(("Exercise: off", partial(app.run_action, "show_exercise(0)"),
+        found.append(("Exercise: off", partial(main.run_action, "show_exercise(0)"),
                       "hide the challenge panel (key x)"))
         for spec_text, why in COMPARISONS.items():
             labels = [c.label for c in parse_compare(spec_text)]
             found.append((f"Compare: {' · '.join(labels)}",
-                          partial(app.run_action, f"show_compare({spec_text!r})"),
+                          partial(main.run_action, f"show_compare({spec_text!r})"),
                           f"{why} (side by side, in lockstep; key c toggles)"))
-        bindings = {b.action: b for b in Binding.make_bindings(app.BINDINGS)}
+        bindings = {b.action: b for b in Binding.make_bindings(KEYS)}
         for action, name in ACTIONS.items():
             binding = bindings[action]
-            found.append((name, partial(app.run_action, action),
+            found.append((name, partial(main.run_action, action),
                           f"{binding.tooltip} (key {app.get_key_display(binding)})"))
         return found
 

@@ -20,6 +20,8 @@ PANE_MIN_WIDTH, PANE_MIN_HEIGHT = 50, 16
 LISTS_MIN_HEIGHT, LISTS_MIN_WIDTH, LISTS_MAX_WIDTH = 6, 38, 56
 #: The trees show under a map when the lists get at least this many lines.
 TREES_MIN_HEIGHT = 9
+#: Beside the lists, a map that cannot fit whole gets at least this many columns.
+MAP_MIN_WIDTH = 20
 #: A pane's own status lines (its search's figures and narration).
 PANE_STATS_HEIGHT = 2
 
@@ -87,9 +89,10 @@ def arrange(n: int, width: int, height: int, map_size: tuple[int, int], *,
 def _pane(columns: int, rows: int, table: bool, pane_stats: bool, pane_w: int, pane_h: int,
           need_w: int, need_h: int, fold_trees: bool) -> Arrangement:
     """One pane's inside: its lists beside the map when the pane is much wider than tall and
-    the map still fits beside them; else under the map when there is room for both."""
+    the map still fits beside them (or would not fit whole anyway); else under the map when
+    there is room for both."""
     side = lists_width(pane_w)
-    if pane_w >= 3 * pane_h and pane_w - side >= need_w:
+    if pane_w >= 3 * pane_h and pane_w - side >= min(need_w, MAP_MIN_WIDTH):
         return Arrangement(columns, rows, table, pane_stats, True, side, 0, not fold_trees,
                            0, need_h <= pane_h)
     if need_h + LISTS_MIN_HEIGHT <= pane_h:

@@ -14,8 +14,10 @@ from time import sleep
 
 from textual import events
 from textual.app import ComposeResult
+from textual.await_remove import AwaitRemove
 from textual.containers import Grid as PaneBox
 from textual.screen import Screen
+from textual.widget import AwaitMount
 from textual.widgets import Static
 from textual.worker import get_current_worker
 
@@ -131,25 +133,34 @@ class PanesScreen(Screen[None]):
 
     # -- showing the session ---------------------------------------------------------------
     def new_runs_shown(self) -> None:
-        """The session made new runs: new panes when the searches changed, then show."""
+        """The session made new runs: as many panes as searches (the first ones kept, named
+        anew), then show."""
         session = self.session
-        if [p.label for p in self.panes] != session.labels:
+        labels = session.labels
+        for pane, label in zip(self.panes, labels):
+            pane.label = label
+        if len(self.panes) != len(labels):
             state = self.views[0].view_state()
-            self.panes = self._new_panes()
-            self.pane_box.remove_children()
-            self.pane_box.mount_all(self.panes)
-            self.legend.view = self.panes[0].view
-            for view in self.views:
-                view.set_cursor(session.cursor)
-                view.set_view_state(state)  # zoom, labels, overview: as they were
-            self.call_after_refresh(self._panes_mounted)
+            kept, gone = self.panes[:len(labels)], self.panes[len(labels):]
+            added = [RunPane(session.grid, label, NEEDS_ENDPOINTS)
+                     for label in labels[len(kept):]]
+            self.panes = kept + added
+            removing = [pane.remove() for pane in gone]
+            mounting = self.pane_box.mount_all(added) if added else None
+            for pane in added:
+                pane.view.set_cursor(session.cursor)
+                pane.view.set_view_state(state)  # zoom, labels, overview: as the others
+            self.call_later(self._panes_changed, removing, mounting)
         self._check_exercise()
         self.present()
 
-    def _panes_mounted(self) -> None:
-        if not all(pane.is_mounted for pane in self.panes):
-            self.call_after_refresh(self._panes_mounted)
-            return
+    async def _panes_changed(self, removing: list[AwaitRemove],
+                             mounting: AwaitMount | None) -> None:
+        """Once the panes are there: focus the first map, fit the panes, show every run."""
+        for removed in removing:
+            await removed
+        if mounting is not None:
+            await mounting
         if self.app.screen is self:
             self.views[0].focus()
         self.fit_panes()
@@ -172,7 +183,7 @@ class PanesScreen(Screen[None]):
         runs = session.runs
         self.set_class(not runs, "-no-run")
         for i, pane in enumerate(self.panes):
-            if pane.is_mounted:  # else shown whole once mounted (_panes_mounted)
+            if pane.is_mounted:  # else shown whole once mounted (_panes_changed)
                 pane.show(runs[i] if runs else None,
                           per_run[i] if per_run is not None else changed, follow=follow,
                           hide_order=session.quiz.on and i == 0, title=session.title)

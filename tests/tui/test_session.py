@@ -1,0 +1,160 @@
+"""The session model without Textual: every search a pane, the lockstep, edits, the quiz, the
+seek and the exercise, as plain unit tests (the screen only shows what these decide)."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+from tests.tui.test_app import TUTORIAL
+from tui_search.engine.exercises import check, tutorial_grid
+from tui_search.engine.grid import Grid
+from tui_search.engine.mapfile import load_map
+from tui_search.engine.semantics import DEFAULT_SEMANTICS
+from tui_search.tui.seek import Seek
+from tui_search.tui.session import DEFAULT_COMPARE, NEEDS_ENDPOINTS, Session
+
+
+def tutorial(**options: object) -> Session:
+    return Session(load_map(TUTORIAL), TUTORIAL, **options)  # type: ignore[arg-type]
+
+
+def steps(session: Session) -> list[int]:
+    return [run.k for run in session.runs]
+
+
+def test_one_search_is_one_pane_and_c_compares_the_pick() -> None:
+    session = tutorial()
+    assert session.spec == "bfs" and session.labels == ["BFS"] and len(session.runs) == 1
+    assert session.toggle_compare() is None
+    assert session.spec == DEFAULT_COMPARE and session.labels == ["BFS", "DFS"]
+    assert session.toggle_compare() is None
+    assert session.labels == ["BFS"] and session.compare_pick == DEFAULT_COMPARE
+
+
+def test_an_algorithm_key_replaces_one_search_and_adds_or_takes_out_one_of_several() -> None:
+    session = tutorial()
+    assert session.choose_algorithm("dfs") is None and session.labels == ["DFS"]
+    session.show_searches("bfs,dfs")
+    assert session.choose_algorithm("astar") is None and session.labels == ["BFS", "DFS", "A*"]
+    assert session.choose_algorithm("bfs") is None and session.labels == ["DFS", "A*"]
+    warning = session.choose_algorithm("dfs")
+    assert warning is not None and "two searches at least" in warning
+    assert session.labels == ["DFS", "A*"]
+    session.show_searches("dfs,astar,bfs,ucs")
+    warning = session.choose_algorithm("greedy")
+    assert warning is not None and "four searches at most" in warning and len(session.runs) == 4
+
+
+def test_a_refused_spec_changes_nothing() -> None:
+    session = tutorial()
+    error = session.show_searches("bfs,nosuch")
+    assert error is not None and error.startswith("Cannot compare bfs,nosuch")
+    assert session.spec == "bfs" and session.compare_pick == DEFAULT_COMPARE
+
+
+def test_the_visit_rule_falls_back_where_it_does_not_apply() -> None:
+    session = tutorial(semantics=replace(DEFAULT_SEMANTICS, visit="expand"))
+    session.choose_algorithm("iddfs")
+    assert session.semantics.visit == "generate" and "does not apply to ID" in session.note
+    session = tutorial(semantics=replace(DEFAULT_SEMANTICS, visit="expand"), compare="bfs,iddfs")
+    assert "Visit on expand does not apply to ID" in session.note
+    assert [c.semantics.visit for c in session.contenders] == ["expand", "generate"]
+
+
+def test_lockstep_steps_every_run_forward_and_the_latest_back() -> None:
+    session = tutorial(compare="bfs,dfs")
+    for k in range(3):
+        assert session.step(forward=True) == [(k, False), (k, False)]
+    assert steps(session) == [3, 3]
+    session.start_seek(to_end=True)
+    while (seek := session.seek) is not None and seek.work() is not None:
+        pass
+    session.seek_done()
+    assert steps(session) == [22, 7] and session.at_end()
+    before = session.step(forward=False)
+    assert before == [(22, True), (7, True)] and steps(session) == [21, 7]
+    assert session.step(forward=True) == [(21, False), (7, True)] and steps(session) == [22, 7]
+    assert session.step(forward=True) is None  # all at their ends: nothing moves
+
+
+def test_an_edit_marks_the_map_and_restarts_every_run() -> None:
+    session = tutorial(compare="bfs,dfs")
+    session.step(forward=True)
+    old = list(session.runs)
+    session.move_cursor((1, 2))
+    assert session.toggle_wall() is None and session.grid.is_blocked((1, 2)) and session.dirty
+    assert steps(session) == [0, 0] and not set(session.runs) & set(old)
+    assert session.title == "tutorial.txt · modified"
+    refusal = session.place("start")  # on the obstacle just made
+    assert refusal == "Cannot put the start on an obstacle at (1,2)"
+    assert not session.paint((1, 2), wall=True)  # already an obstacle: no edit
+    assert session.paint((1, 2), wall=False) and not session.grid.is_blocked((1, 2))
+    assert not session.move_cursor((99, 0)) and session.cursor == (1, 2)
+
+
+def test_no_start_means_no_runs_and_a_note() -> None:
+    grid = load_map(TUTORIAL)
+    grid.start = None
+    session = Session(grid)
+    assert session.runs == [] and session.run is None and session.note == NEEDS_ENDPOINTS
+    assert session.step(forward=True) is None
+
+
+def test_the_quiz_scores_the_cursor_against_the_node_taken_off() -> None:
+    session = tutorial()
+    session.toggle_quiz()
+    assert session.quiz.on and session.note.startswith("Quiz (0 of 0): which node comes off")
+    session.move_cursor((0, 0))  # BFS takes the start off first
+    assert session.answer() == [(0, False)]
+    assert session.quiz.right == 1 and session.note.startswith("Right: (0,0)")
+    session.move_cursor((5, 5))
+    session.answer()
+    assert (session.quiz.right, session.quiz.asked) == (1, 2)
+    assert session.note.startswith("Not quite: (0,1) came off the queue's front, not (5,5)")
+    session.toggle_quiz()
+    assert not session.quiz.on and session.note == ""
+
+
+def test_play_ticks_until_the_end_then_again_from_step_0() -> None:
+    session = tutorial()
+    assert session.play() is False and session.playing
+    while session.playing:
+        session.tick()
+    assert session.at_end()
+    assert session.play() is True  # at the end: back to step 0 first
+    assert isinstance(session.seek, Seek)
+    while (seek := session.seek) is not None and seek.work() is not None:
+        pass
+    session.seek_done()
+    assert steps(session) == [0] and session.playing
+
+
+def test_a_seek_says_how_far_it_is_and_stop_abandons_it() -> None:
+    session = Session(Grid(30, 30, start=(0, 0), goal=(29, 29)), compare="iddfs,bfs")
+    session.start_seek(to_end=True)
+    assert session.seek is not None
+    progress = session.seek.work(seconds=0.0)
+    assert progress is not None and progress.startswith("IDDFS: computing the search…") and progress.endswith("esc to stop")
+    session.note = progress
+    session.stop()
+    assert session.seek is None and session.note == "" and not session.at_end()
+
+
+def test_the_exercise_verdict_is_the_headless_one() -> None:
+    session = tutorial(exercise=1)
+    assert session.verdict() == check(1, session.grid, tutorial_grid(), session.max_steps)
+    session.cycle_exercise()
+    assert session.exercise == 2
+    session.cycle_exercise()
+    assert session.exercise is None
+
+
+def test_the_settings_pick_what_c_compares_and_apply_their_rules() -> None:
+    session = tutorial(compare="bfs,dfs")
+    corners = replace(DEFAULT_SEMANTICS, corners="never")
+    session.choose_settings(corners, "bfs,ucs")
+    assert session.labels == ["BFS", "UCS"] and session.compare_pick == "bfs,ucs"
+    assert all(c.semantics.corners == "never" for c in session.contenders)
+    session.toggle_compare()
+    session.choose_settings(corners, "dfs,astar")  # one pane: only what c compares changes
+    assert session.labels == ["BFS"] and session.compare_pick == "dfs,astar"
