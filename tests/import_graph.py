@@ -107,8 +107,8 @@ def _imports(tree: ast.Module, name: str, is_package: bool) -> Iterator[Import]:
                 yield from visit(child, type_checking, deferred)
         else:
             in_function = isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda))
-            for child in ast.iter_child_nodes(node):
-                yield from visit(child, type_checking, deferred or in_function)
+            for inner in ast.iter_child_nodes(node):
+                yield from visit(inner, type_checking, deferred or in_function)
 
     yield from visit(tree, False, False)
 
