@@ -39,8 +39,9 @@ def record_uses(source: str) -> list[tuple[int, str]]:
                       if a.name in RECORD_MODULES]
         elif isinstance(node, ast.ImportFrom):
             module = node.module or ""
-            if module in RECORD_MODULES:
+            if module in RECORD_MODULES:  # once a line: the names need not be listed too
                 found.append((node.lineno, f"from {module} import ..."))
+                continue
             found += [(node.lineno, f"from {module} import {a.name}") for a in node.names
                       if a.name in RECORD_CLASSES
                       or f"{module}.{a.name}" in RECORD_MODULES]

@@ -13,7 +13,7 @@ from pathlib import Path
 
 from tui_search.engine.algorithms import ALGORITHMS, DEFAULT_ALGORITHM, get_algorithm
 from tui_search.engine.compare import Contender, parse_compare
-from tui_search.engine.grid import Grid, parse_order
+from tui_search.engine.grid import Cell, Grid, parse_order
 from tui_search.engine.heuristics import DEFAULT_HEURISTIC
 from tui_search.engine.mapfile import load_map, parse_cell, parse_map_text
 from tui_search.engine.scenarios import check_scenario_map, check_scenario_matches, load_scenario
@@ -26,7 +26,7 @@ class UsageError(Exception):
     """A bad command line: reported as one line, exit code 2."""
 
 
-def _cell_arg(flag: str, text: str | None):
+def _cell_arg(flag: str, text: str | None) -> Cell | None:
     if text is None:
         return None
     try:

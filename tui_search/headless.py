@@ -38,7 +38,7 @@ EXIT_FOUND, EXIT_NO_PATH, EXIT_BAD_INPUT, EXIT_GAVE_UP = 0, 1, 2, 3
 def trace_line(step: Step) -> str:
     """One JSON object per step: the node taken off and exactly the successors it added, in
     order; iterative deepening adds the depth limit, a discarded step says so."""
-    obj: dict = {
+    obj: dict[str, object] = {
         "step": step.index,
         "node": list(step.node),
         "successors": [{"dir": d, "node": list(c)} for d, c in step.successors],
@@ -108,7 +108,7 @@ def to_json(obj: object, separators: tuple[str, str] | None = None) -> str:
     return json.dumps(obj, separators=separators)
 
 
-def json_summary(outcome: Outcome, scenario: Scenario | None = None) -> dict:
+def json_summary(outcome: Outcome, scenario: Scenario | None = None) -> dict[str, object]:
     """The headless JSON object (README: "Headless output")."""
     path, moves = outcome.path, outcome.moves
     extra = {} if scenario is None else {

@@ -28,6 +28,8 @@ from tui_search.flags import UsageError
 if TYPE_CHECKING:
     from aiohttp import web
 
+    from tui_search.tui.file_access import FileAccess
+
 DEFAULT_HOST = "127.0.0.1"
 DEFAULT_PORT = 8000
 #: Apps running at once (each is a Python process of some 60 MB): the next visitor is told to
@@ -94,7 +96,7 @@ def web_extra_installed() -> bool:
     return find_spec("textual_serve") is not None
 
 
-def file_access(args: argparse.Namespace):  # -> FileAccess (no Textual import here either)
+def file_access(args: argparse.Namespace) -> FileAccess:
     """Where the app may read and write maps: anywhere, or the served app's rules."""
     from tui_search.tui.file_access import FileAccess, NameRefused
 

@@ -3,8 +3,6 @@
 from __future__ import annotations
 
 import itertools
-import subprocess
-import sys
 from array import array
 from unittest.mock import patch
 
@@ -123,18 +121,6 @@ def test_memory_grows_with_steps_not_steps_times_map() -> None:
     run = Run(grid, "dfs")
     run.advance()
     assert run.recording.rec.nbytes() < 40 * (run.total + 1)
-
-
-def test_engine_imports_without_textual_or_rich() -> None:
-    code = (
-        "import sys, tui_search.engine.grid, tui_search.engine.loops.dispatch, "
-        "tui_search.engine.run, tui_search.engine.mapfile, tui_search.engine.mapwrite, "
-        "tui_search.engine.scenarios, tui_search.cli\n"
-        "bad = [m for m in sys.modules if m.split('.')[0] in ('textual', 'rich')]\n"
-        "print(bad); sys.exit(1 if bad else 0)"
-    )
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=False)
-    assert out.returncode == 0, out.stdout + out.stderr
 
 
 @pytest.mark.parametrize("algorithm", ["bfs", "dfs", "iddfs"])

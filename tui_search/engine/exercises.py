@@ -58,8 +58,8 @@ class Verdict(NamedTuple):
     dfs: Outcome
     hint: str = ""  # exercise 1 on a map whose start or obstacles moved
 
-    def as_json(self) -> dict:
-        def figures(out: Outcome) -> dict:
+    def as_json(self) -> dict[str, object]:
+        def figures(out: Outcome) -> dict[str, object]:
             return {"found": out.found, "moves": out.length, "expanded": out.expanded,
                     "generated": out.generated}
 

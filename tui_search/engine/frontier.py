@@ -181,7 +181,8 @@ class PriorityFrontier:
 
     def position(self, g: int) -> int:
         """Where event ``g`` (on the frontier) stands in the order: 0 is the next out."""
-        return self.queue.index((self.keys((g,))[0], g))
+        place: int = self.queue.index((self.keys((g,))[0], g))  # SortedList ships no types
+        return place
 
 
 FrontierModel = FifoFrontier | LifoFrontier | PriorityFrontier

@@ -71,6 +71,7 @@ class Grid:
 
     width: int
     height: int
+    # None (all open) is filled in by __post_init__: a grid's blocked is always a bytearray.
     blocked: bytearray = field(default=None)  # type: ignore[assignment]
     start: Cell | None = None
     goal: Cell | None = None

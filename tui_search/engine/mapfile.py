@@ -52,7 +52,7 @@ def parse_map_text(
 
 
 def load_map(
-    path: str | os.PathLike, *, start: Cell | None = None, goal: Cell | None = None
+    path: str | os.PathLike[str], *, start: Cell | None = None, goal: Cell | None = None
 ) -> Grid:
     """Read a map file of either format (see :func:`parse_map_text` for the overrides)."""
     where = os.fsdecode(path)

@@ -51,7 +51,7 @@ def _fresh_source(grid: Grid, kind: str) -> MapSource:
     return MapSource(kind, lines, tuple(range(len(header), len(header) + len(rows))), grid.width)
 
 
-def kind_for_path(path: str | os.PathLike) -> str:
+def kind_for_path(path: str | os.PathLike[str]) -> str:
     """The format a new file of this name gets: MovingAI for ``.map``, else the text format."""
     return MOVINGAI if os.fsdecode(path).lower().endswith(".map") else TEXT
 
@@ -73,12 +73,12 @@ def format_text_map(grid: Grid) -> str:
     return format_map(grid, TEXT).text()
 
 
-def save_text_map(grid: Grid, path: str | os.PathLike) -> None:
+def save_text_map(grid: Grid, path: str | os.PathLike[str]) -> None:
     """:func:`save_map` in the text format."""
     save_map(grid, path, TEXT)
 
 
-def save_map(grid: Grid, path: str | os.PathLike, kind: str = TEXT) -> MapSource:
+def save_map(grid: Grid, path: str | os.PathLike[str], kind: str = TEXT) -> MapSource:
     """Write :func:`format_map` of ``grid`` atomically (:func:`write_atomically`) and return
     what was written (the caller makes it the grid's ``source``, so the next save compares with
     the file on disk).  On failure the old file is untouched and a MapError says why."""

@@ -119,7 +119,7 @@ def _packed_constants(n: int, width: int) -> tuple[int, int, int, int]:
     return ones, iota, (1 << (n * width)) - 1, ones << (width - 1)
 
 
-def _largest_size(ends: array, lo: int, hi: int, c: int) -> int:
+def _largest_size(ends: array[int], lo: int, hi: int, c: int) -> int:
     """``max(ends[j] - j - c for j in range(lo, hi))`` with every size >= 0, in whole-int
     arithmetic, which CPython runs in C a machine word at a time: ~20 ns a step instead of
     ~100 for a ``max`` over a ``map`` of ``operator.sub`` (which makes three ints a step).

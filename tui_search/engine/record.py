@@ -37,17 +37,17 @@ class Record:
     expand): they expand nothing and generate nothing.
     """
 
-    gen_node: array = field(default_factory=lambda: array("i"))
-    step_end: array = field(default_factory=lambda: array("i", [1]))
-    step_exp: array | _InOrder = field(default_factory=lambda: _InOrder())
-    gen_depth: array | None = None  # iterative deepening only
+    gen_node: array[int] = field(default_factory=lambda: array("i"))
+    step_end: array[int] = field(default_factory=lambda: array("i", [1]))
+    step_exp: array[int] | _InOrder = field(default_factory=lambda: _InOrder())
+    gen_depth: array[int] | None = None  # iterative deepening only
     # The cost-ordered searches only: the g of the entry step ``k`` took off (0.0 at index 0,
     # before any step).  An event's g is its generating step's plus its move's cost.
-    step_g: array | None = None
+    step_g: array[float] | None = None
     iter_first_step: list[int] = field(default_factory=lambda: [1])
     iter_root: list[int] = field(default_factory=lambda: [0])
     iter_limit: list[int | None] = field(default_factory=lambda: [None])
-    discarded: array = field(default_factory=lambda: array("i"))
+    discarded: array[int] = field(default_factory=lambda: array("i"))
     done: bool = False
     goal_gen: int = -1  # the event that generated the goal, once found
     gave_up: bool = False  # stopped at the run's step limit before the search ended

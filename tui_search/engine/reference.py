@@ -260,6 +260,7 @@ class ReferenceSearch:
             raise ValueError("the map needs a start and a goal")
         semantics.check(algorithm)
         self.grid, self.algorithm, self.semantics = grid, algorithm, semantics
+        self._start: Cell = grid.start
         self.goal_test = semantics.goal_test_for(algorithm)
         self.goal: Node | None = None
         self.generated = self.expanded = self.discarded = self.max_frontier = 0
@@ -330,7 +331,7 @@ class ReferenceSearch:
         """The generic loop.  With a depth ``limit`` (iterative deepening) a node taken off at
         the limit is expanded with no successors; the loop returns whether one was (a deeper
         search may find more), and False when it found the goal."""
-        root = self._push(frontier, reached, self.grid.start, None, None, 0.0)  # type: ignore[arg-type]
+        root = self._push(frontier, reached, self._start, None, None, 0.0)
         if self._is_goal_pushed(root):
             return False
         first_step = self.expanded + self.discarded + 1  # steps are numbered across iterations

@@ -53,7 +53,7 @@ _FIELDS = (
 )  # fmt: skip
 
 
-def read_scenarios(path: str | os.PathLike) -> list[Scenario]:
+def read_scenarios(path: str | os.PathLike[str]) -> list[Scenario]:
     """Every problem in a ``.scen`` file, in file order."""
     where = os.fsdecode(path)
     return parse_scenarios(read_text(where), where)
@@ -108,7 +108,7 @@ def parse_scenarios(text: str, path: str = "<scen>") -> list[Scenario]:
     return out
 
 
-def load_scenario(path: str | os.PathLike, row: int) -> Scenario:
+def load_scenario(path: str | os.PathLike[str], row: int) -> Scenario:
     """Problem number ``row`` (from 0, after the version line) of a ``.scen`` file."""
     where = os.fsdecode(path)
     scenarios = read_scenarios(where)
@@ -127,7 +127,7 @@ def _basename(name: str) -> str:
 
 
 def check_scenario_map(
-    scen: Scenario, scen_path: str | os.PathLike, map_path: str | os.PathLike
+    scen: Scenario, scen_path: str | os.PathLike[str], map_path: str | os.PathLike[str]
 ) -> None:
     """Raise MapError (at the scenario's line) unless ``scen`` names the map ``map_path``.
 
@@ -145,7 +145,7 @@ def check_scenario_map(
 
 
 def check_scenario_matches(
-    scen: Scenario, grid: Grid, scen_path: str | os.PathLike, map_path: str | os.PathLike
+    scen: Scenario, grid: Grid, scen_path: str | os.PathLike[str], map_path: str | os.PathLike[str]
 ) -> None:
     """Raise MapError (at the scenario's line) unless ``scen`` is a problem on this map:
     its name (:func:`check_scenario_map`), its size, then its start and goal.

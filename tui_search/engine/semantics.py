@@ -127,9 +127,10 @@ class Semantics:
     def bound(self, depth: int) -> int:
         """The tutorial's bound on nodes generated to reach depth ``d``: ``(b-1)^(d+1)`` with
         ``b`` moves (``7^(d+1)`` for eight; one move leads back where the node came from)."""
-        return max(1, self.branching - 1) ** (depth + 1)
+        nodes: int = max(1, self.branching - 1) ** (depth + 1)  # int ** int types as Any
+        return nodes
 
-    def as_json(self, algorithm: Algorithm | None = None) -> dict:
+    def as_json(self, algorithm: Algorithm | None = None) -> dict[str, object]:
         """Every choice by name; the visit rule is null where it does not apply (tree search,
         iterative deepening, the cost-ordered searches), the heuristic where none is used."""
         no_visit = self.tree_search or (

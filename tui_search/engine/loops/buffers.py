@@ -13,7 +13,7 @@ from struct import pack
 from tui_search.engine.record import Record
 
 
-def _flush(arr: array, buf: list[int]) -> None:
+def _flush(arr: array[int], buf: list[int]) -> None:
     """Append ``buf`` to ``arr`` and empty it (a list of the caller's own, or a copy).  ``array.append`` converts each int through
     ``PyArg_Parse`` (~100 ns); a list append and one ``struct.pack`` per chunk take ~45."""
     if buf:

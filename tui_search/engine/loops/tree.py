@@ -16,7 +16,7 @@ from tui_search.engine.problem import Problem
 from tui_search.engine.record import CHUNK, Record
 
 
-def _on_path(cell: int, g: int, gen_node: array, parent: array) -> bool:
+def _on_path(cell: int, g: int, gen_node: array[int], parent: array[int]) -> bool:
     """Tree search: is ``cell`` on the path from the root to event ``g`` (``g`` included)?"""
     while g >= 0:
         if gen_node[g] == cell:
