@@ -19,12 +19,8 @@ def search_app_class():
 
 
 def app_run(app) -> Run | None:
-    """The app's current Run (``App.run`` is Textual's method, so the app calls it
-    ``search_run``)."""
-    run = getattr(app, "search_run", None)
-    if run is None:
-        run = getattr(app, "run_", None)
-    return run
+    """The app's current Run: its session's first pane's."""
+    return app.session.run
 
 
 

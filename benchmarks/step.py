@@ -69,7 +69,7 @@ async def _playback(app_cls, grid: Grid, seconds: float) -> tuple[float, int]:
         dt = time.perf_counter() - t0
         k = run.k
         await fast_press(pilot, "space")
-        return (k - k0) / dt, playback.SPEEDS[app.speed_index]
+        return (k - k0) / dt, playback.SPEEDS[app.session.speed_index]
 
 
 def bench_step(quick: bool) -> None:

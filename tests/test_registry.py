@@ -9,8 +9,8 @@ from textual.binding import Binding
 
 from tui_search.cli import build_parser
 from tui_search.engine.algorithms import ALGORITHMS, Frontier
-from tui_search.tui.app import SearchApp
 from tui_search.tui.screens.help import KEYS
+from tui_search.tui.screens.main import MainScreen
 
 TUI = Path(__file__).resolve().parents[1] / "tui_search" / "tui"
 
@@ -30,7 +30,7 @@ def test_no_ui_module_compares_algorithm_names() -> None:
 
 
 def test_the_keys_the_cli_and_the_help_come_from_the_registry() -> None:
-    bindings = {b.action: b for b in Binding.make_bindings(SearchApp.BINDINGS)}
+    bindings = {b.action: b for b in Binding.make_bindings(MainScreen.BINDINGS)}
     for algo in ALGORITHMS.values():
         binding = bindings[f"algorithm({algo.key!r})"]
         assert binding.key == algo.app_key and binding.description == algo.short

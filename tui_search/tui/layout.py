@@ -77,13 +77,16 @@ def arrange(n: int, width: int, height: int, map_size: tuple[int, int], *,
     candidates = []
     for table in ((True, False) if table_height else (False,)):
         room = height - (table_height if table else 0)
-        columns, rows = pane_grid(n, width, room)
-        pane_w, pane_h = width // columns, room // rows - stats
-        candidates.append(_pane(columns, rows, table, stats > 0, pane_w, pane_h, need_w,
-                                need_h, fold_trees))
-    # The table goes first: the panes' own lines say most of what it says.
-    return (next((c for c in candidates if c.fits and c.lists), None)
-            or next((c for c in candidates if c.fits), None) or candidates[0])
+        preferred = pane_grid(n, width, room)[0]
+        for columns in range(1, n + 1):
+            rows = -(-n // columns)
+            pane_w, pane_h = width // columns, room // rows - stats
+            pane = _pane(columns, rows, table, stats > 0, pane_w, pane_h, need_w, need_h,
+                         fold_trees)
+            candidates.append(((pane.fits, pane.lists, pane.trees or fold_trees, table,
+                                columns == preferred), pane))
+    # What gives way first: the table, then the trees, then the lists; the map never.
+    return max(candidates, key=lambda ranked: ranked[0])[1]
 
 
 def _pane(columns: int, rows: int, table: bool, pane_stats: bool, pane_w: int, pane_h: int,

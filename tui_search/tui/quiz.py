@@ -54,7 +54,7 @@ def verdict(quiz: Quiz, run: Run, node: Cell, guess: Cell) -> tuple[Quiz, str]:
     """The new score and what to say, when the step took ``node`` off and the student
     guessed ``guess``."""
     right = node == guess
-    quiz = quiz._replace(asked=quiz.asked + 1, right=quiz.right + right)
+    quiz = Quiz(quiz.on, quiz.right + right, quiz.asked + 1)
     where = _where(run)
     said = (f"Right: {cell_text(node)} was {where}" if right
             else f"Not quite: {cell_text(node)} came off {where}, not {cell_text(guess)}")

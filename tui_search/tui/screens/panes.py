@@ -45,6 +45,8 @@ MIN_WIDTH, MIN_HEIGHT = 60, 20
 #: On a map too big to check an exercise at each edit, the check waits for the edits to pause
 #: this long (seconds): a mouse stroke is an edit a cell.
 EXERCISE_PAUSE = 0.3
+#: The challenge panel's lines before it is first laid out (its border and a few of text).
+CHALLENGE_LINES = 8
 
 
 class PanesScreen(Screen[None]):
@@ -92,26 +94,34 @@ class PanesScreen(Screen[None]):
         for view in self.views:
             view.set_cursor(self.session.cursor)
         self._check_exercise()
+        self.fit_panes()  # reckoned: the first frame is laid out already
         self.present()
-        self.call_after_refresh(self.fit_panes)
+        self.call_after_refresh(self.fit_panes)  # measured
 
     def on_resize(self, event: events.Resize) -> None:
         self._check_size(event.size.width, event.size.height)
         self.call_after_refresh(self.fit_panes)
 
     def fit_panes(self) -> None:
-        """Fit the panes to the room the other lines leave (:func:`layout.arrange`)."""
-        table = self.compare_table
+        """Fit the panes to the room the other lines leave (:func:`layout.arrange`).  Before
+        the first layout that room is reckoned from the screen's size, so the first frame is
+        laid out as the next ones."""
+        table, box = self.compare_table, self.pane_box
         several = len(self.panes) > 1
-        table_height = table.outer_size.height if table.display else 0
-        if several and not table.display:
-            table_height = len(self.panes) + 5  # a line a search, head, two more, border
+        measured = table.outer_size.height if table.display else 0
+        table_height = max(measured, len(self.panes) + 5) if several else 0  # a line a search,
+        # its head, two more and its border; more when its sentence wraps
+        if box.size.area:
+            width, height = box.size.width, box.size.height + (
+                table.outer_size.height if table.display else 0)
+        else:  # the key bar, the status lines, the readout, the legend, the challenge
+            width = self.size.width
+            legend = self.legend.get_content_height(self.size, self.size, max(1, width - 2))
+            challenge = CHALLENGE_LINES if self.session.exercise is not None else 0
+            height = self.size.height - 4 - legend - challenge
         grid = self.session.grid
-        arrangement = arrange(len(self.panes), self.pane_box.size.width,
-                              self.pane_box.size.height + (table_height if table.display else 0),
-                              (grid.width, grid.height), table_height=table_height if several
-                              else 0, fold_trees=self.session.fold_trees)
-        box = self.pane_box
+        arrangement = arrange(len(self.panes), width, height, (grid.width, grid.height),
+                              table_height=table_height, fold_trees=self.session.fold_trees)
         box.styles.grid_size_columns = arrangement.columns
         box.styles.grid_size_rows = arrangement.rows
         table.display = several and arrangement.table

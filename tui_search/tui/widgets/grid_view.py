@@ -243,6 +243,14 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
             self._level = new.level
         else:
             new = Geometry(g.width, g.height, self._level)
+        # Scrollbars only for a map bigger than the room: one that fits exactly would
+        # otherwise keep bars that its own size once called for (a bar takes room, so the map
+        # no longer fits beside it).
+        fits_x, fits_y = new.size[0] <= width, new.size[1] <= height
+        for axis, fits in (("overflow_x", fits_x), ("overflow_y", fits_y)):
+            wanted = "hidden" if fits else "auto"
+            if getattr(self.styles, axis) != wanted:
+                setattr(self.styles, axis, wanted)
         old, self.geometry = self.geometry, new
         return new != old
 

@@ -1,0 +1,81 @@
+"""What a person sees at every terminal size: the whole map in every pane whenever it fits at
+its smallest cells, in every mode, from 80x24 to 200x60 (tui/layout.py decides, the screen
+applies it; these check what is on the screen)."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.tui.test_app import TUTORIAL, sync, wait_until
+from tui_search.engine.mapfile import load_map
+from tui_search.tui.app import SearchApp
+from tui_search.tui.layout import arrange
+from tui_search.tui.widgets.grid_view import GridView
+
+SIZES = [(80, 24), (100, 30), (120, 40), (160, 48), (200, 60)]
+#: Each mode: how the app opens, and the keys that put it in that mode.
+MODES = {
+    "single": ({}, []),
+    "compare 2": ({"compare": "bfs,dfs"}, []),
+    "compare 3": ({"compare": "bfs,dfs,astar"}, []),
+    "compare 4": ({"compare": "bfs,dfs,ucs,astar"}, []),
+    "exercise": ({"exercise": 1}, []),
+    "compare and exercise": ({"compare": "bfs,dfs", "exercise": 1}, []),
+    "quiz": ({}, ["i"]),
+}
+
+
+def whole_map_shown(app: SearchApp, view: GridView) -> str | None:
+    """None when every cell of ``view``'s map is drawn on the screen, else what is not."""
+    grid = app.session.grid
+    width, height = view.scrollable_content_region.size
+    drawn_w, drawn_h = view.geometry.size
+    if view.show_vertical_scrollbar or view.show_horizontal_scrollbar:
+        return f"scrollbars at {app.size}"
+    if drawn_w > width or drawn_h > height:
+        return f"{drawn_w}x{drawn_h} drawn in {width}x{height} at {app.size}"
+    screen, content = app.screen.region, view.scrollable_content_region
+    for cell in ((0, 0), (grid.width - 1, grid.height - 1), grid.start, grid.goal):
+        x, y = view.screen_offset(cell)  # in the view's content area
+        x, y = x + content.x, y + content.y
+        if not screen.contains(x, y) or not content.contains(x, y):
+            return f"cell {cell} off screen at {app.size}"
+    return None
+
+
+@pytest.mark.parametrize("mode", MODES)
+@sync
+async def test_the_whole_tutorial_map_shows_in_every_pane_at_every_size(mode: str) -> None:
+    options, keys = MODES[mode]
+    app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, **options)  # type: ignore[arg-type]
+    async with app.run_test(size=SIZES[0]) as pilot:
+        await pilot.press(*keys, "end")
+        await wait_until(pilot, lambda: app.session.at_end())
+        for size in SIZES:
+            await pilot.resize_terminal(*size)
+            for _ in range(100):  # the panes are fitted after the resize: wait for it
+                problems = [whole_map_shown(app, v) for v in app.main.views]
+                if not any(problems):
+                    break
+                await pilot.pause(0.05)
+            assert not any(problems), (mode, problems)
+            assert len(app.main.views) == len(app.session.runs), mode
+
+
+@pytest.mark.parametrize("n", [2, 3, 4])
+def test_the_table_gives_way_before_the_lists_and_the_lists_before_the_map(n: int) -> None:
+    """80x24 leaves 18 lines for the panes and the table (1 key bar, 2 status lines, 1
+    readout, 2 legend lines): the tutorial's 6x6 map needs 8 with its border."""
+    arrangement = arrange(n, 80, 18, (6, 6), table_height=n + 5)
+    assert arrangement.fits and not arrangement.table
+    big = arrange(n, 200, 54, (6, 6), table_height=n + 5)
+    assert big.fits and big.table and big.lists and big.trees
+
+
+def test_one_pane_keeps_its_lists_beside_the_map_and_a_narrow_tall_one_under_it() -> None:
+    assert arrange(1, 100, 26, (6, 6)).beside
+    tall = arrange(1, 60, 50, (6, 6))
+    assert not tall.beside and tall.lists and tall.fits
+    # a map too big to fit keeps the lists beside it, and says it does not fit
+    big = arrange(1, 140, 40, (512, 512))
+    assert big.beside and not big.fits
