@@ -68,12 +68,14 @@ def lists_width(pane_width: int) -> int:
 
 
 def arrange(n: int, width: int, height: int, map_size: tuple[int, int], *,
-            table_height: int = 0, fold_trees: bool = False) -> Arrangement:
+            table_height: int = 0, fold_trees: bool = False,
+            stats_height: int = PANE_STATS_HEIGHT) -> Arrangement:
     """Lay ``n`` panes out in ``width`` x ``height`` (the room under and beside the fixed
     lines, the table's ``table_height`` lines included when there is one) for a map of
-    ``map_size`` cells, whose smallest cells are 2 characters by 1 line, in a border."""
+    ``map_size`` cells, whose smallest cells are 2 characters by 1 line, in a border; a
+    pane's own status lines take ``stats_height`` lines."""
     need_w, need_h = 2 * map_size[0] + 2, map_size[1] + 2
-    stats = PANE_STATS_HEIGHT if n > 1 else 0  # one pane: the status line is its own
+    stats = stats_height if n > 1 else 0  # one pane: the status line under it is its own
     candidates = []
     for table in ((True, False) if table_height else (False,)):
         room = height - (table_height if table else 0)

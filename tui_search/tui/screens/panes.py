@@ -27,7 +27,7 @@ from tui_search.tui import playback
 from tui_search.tui.file_access import FileAccess
 from tui_search.tui.files import FileCommands
 from tui_search.tui.keys import KEY_IMPORTANCE
-from tui_search.tui.layout import arrange
+from tui_search.tui.layout import PANE_STATS_HEIGHT, arrange
 from tui_search.tui.narration import group_digits
 from tui_search.tui.readout import describe, describe_each
 from tui_search.tui.session import LOCKSTEP, NEEDS_ENDPOINTS, Before, Session
@@ -120,8 +120,10 @@ class PanesScreen(Screen[None]):
             challenge = CHALLENGE_LINES if self.session.exercise is not None else 0
             height = self.size.height - 4 - legend - challenge
         grid = self.session.grid
+        stats = max(pane.stats.outer_size.height for pane in self.panes)
         arrangement = arrange(len(self.panes), width, height, (grid.width, grid.height),
-                              table_height=table_height, fold_trees=self.session.fold_trees)
+                              table_height=table_height, fold_trees=self.session.fold_trees,
+                              stats_height=stats or PANE_STATS_HEIGHT)
         box.styles.grid_size_columns = arrangement.columns
         box.styles.grid_size_rows = arrangement.rows
         table.display = several and arrangement.table
