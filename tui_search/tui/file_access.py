@@ -36,7 +36,7 @@ class FileAccess(NamedTuple):
     folder: Path | None = None
 
     @classmethod
-    def served_in(cls, folder: str | os.PathLike | None) -> FileAccess:
+    def served_in(cls, folder: str | os.PathLike[str] | None) -> FileAccess:
         """The served app's access: off, or confined to ``folder`` (which must be a
         directory; a NameRefused says why not)."""
         if folder is None:

@@ -10,6 +10,8 @@ from __future__ import annotations
 
 from typing import ClassVar
 
+from textual.geometry import Size
+
 from tui_search.engine.compare import (
     MARKS_KEY,
     TableRow,
@@ -84,5 +86,5 @@ class CompareTable(PartsLines):
         self.text_lines = text
         self.set_lines(lines)
 
-    def get_content_height(self, container, viewport, width: int) -> int:
+    def get_content_height(self, container: Size, viewport: Size, width: int) -> int:
         return len(self._lines or [])

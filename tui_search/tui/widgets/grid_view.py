@@ -413,7 +413,7 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         cursor_colour = self.get_component_rich_style("grid-view--cursor").color or (
             background.color
         )
-        cache: dict[tuple, Style] = {}
+        cache: dict[tuple[object, ...], Style] = {}
         colours = []
         for i in range(len(upper)):
             a = self.swatch(upper[i]).color

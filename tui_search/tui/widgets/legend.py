@@ -4,6 +4,7 @@ from the map's own component classes), so a theme change changes both."""
 from __future__ import annotations
 
 from rich.text import Text
+from textual.geometry import Size
 from textual.widget import Widget
 
 from tui_search.tui.widgets.grid_view import (
@@ -70,7 +71,7 @@ class Legend(Widget):
             line.append_text(entry)
         return Text("\n").join(lines)
 
-    def get_content_height(self, container, viewport, width: int) -> int:
+    def get_content_height(self, container: Size, viewport: Size, width: int) -> int:
         return len(self._lines(max(1, width)).plain.split("\n"))
 
     def render(self) -> Text:
