@@ -87,7 +87,7 @@ async def test_the_table_equals_the_headless_comparison(capsys) -> None:
     headless = json.loads(capsys.readouterr().out)["runs"]
     app = compare_app("bfs,dfs,astar")
     async with app.run_test(size=SIZE) as pilot:
-        table = app.main.compare_table
+        table = app.main.table
         assert table.text_lines[1].split()[:2] == ["BFS", "…"]  # going: no figures yet
         await pilot.press("end")
         await pilot.pause()

@@ -28,7 +28,7 @@ def test_one_search_is_one_pane_and_c_compares_the_pick() -> None:
     assert session.toggle_compare() is None
     assert session.spec == DEFAULT_COMPARE and session.labels == ["BFS", "DFS"]
     assert session.toggle_compare() is None
-    assert session.labels == ["BFS"] and session.compare_pick == DEFAULT_COMPARE
+    assert session.labels == ["BFS"] and session.comparison == DEFAULT_COMPARE
 
 
 def test_an_algorithm_key_replaces_one_search_and_adds_or_takes_out_one_of_several() -> None:
@@ -49,7 +49,7 @@ def test_a_refused_spec_changes_nothing() -> None:
     session = tutorial()
     error = session.show_searches("bfs,nosuch")
     assert error is not None and error.startswith("Cannot compare bfs,nosuch")
-    assert session.spec == "bfs" and session.compare_pick == DEFAULT_COMPARE
+    assert session.spec == "bfs" and session.comparison == DEFAULT_COMPARE
 
 
 def test_the_visit_rule_falls_back_where_it_does_not_apply() -> None:
@@ -153,8 +153,8 @@ def test_the_settings_pick_what_c_compares_and_apply_their_rules() -> None:
     session = tutorial(compare="bfs,dfs")
     corners = replace(DEFAULT_SEMANTICS, corners="never")
     session.choose_settings(corners, "bfs,ucs")
-    assert session.labels == ["BFS", "UCS"] and session.compare_pick == "bfs,ucs"
+    assert session.labels == ["BFS", "UCS"] and session.comparison == "bfs,ucs"
     assert all(c.semantics.corners == "never" for c in session.contenders)
     session.toggle_compare()
     session.choose_settings(corners, "dfs,astar")  # one pane: only what c compares changes
-    assert session.labels == ["BFS"] and session.compare_pick == "dfs,astar"
+    assert session.labels == ["BFS"] and session.comparison == "dfs,astar"

@@ -71,7 +71,7 @@ class Session:
         self.semantics = semantics
         spec = normal_spec(compare) if compare else ""
         self.spec = spec or algorithm  # the searches shown, a pane each
-        self.compare_pick = spec or DEFAULT_COMPARE  # what c compares
+        self.comparison = spec or DEFAULT_COMPARE  # what c compares
         self.contenders: list[Contender] = []
         self.runs: list[Run] = []
         self.cursor: Cell = grid.start or (0, 0)
@@ -199,19 +199,19 @@ class Session:
                 parse_compare(spec, self.semantics, fit=True)
             except ValueError as exc:
                 return f"Cannot compare {spec}: {exc}"
-            self.compare_pick = spec
+            self.comparison = spec
         self.spec = spec
         self.new_runs()
         return None
 
     def toggle_compare(self) -> str | None:
         """Several panes (the searches last compared), or one again (the last single one)."""
-        return self.show_searches(self.algorithm if "," in self.spec else self.compare_pick)
+        return self.show_searches(self.algorithm if "," in self.spec else self.comparison)
 
     def choose_settings(self, semantics: Semantics, compare: str) -> None:
         """The settings screen's choice: the rules, and what ``c`` compares."""
-        pick_changed = compare != self.compare_pick
-        self.compare_pick = compare
+        pick_changed = compare != self.comparison
+        self.comparison = compare
         several = "," in self.spec
         if semantics == self.semantics and not (pick_changed and several):
             return

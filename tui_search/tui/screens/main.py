@@ -100,7 +100,7 @@ class MainScreen(PanesScreen):
         self.stop()
         session = self.session
         shown = [get_algorithm(c.algorithm) for c in session.contenders]
-        self.app.push_screen(SettingsScreen(session.semantics, shown[0], session.compare_pick,
+        self.app.push_screen(SettingsScreen(session.semantics, shown[0], session.comparison,
                                             shown), self._settings_chosen)
 
     def _settings_chosen(self, chosen: SettingsChoice | None) -> None:

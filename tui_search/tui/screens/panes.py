@@ -68,8 +68,8 @@ class PanesScreen(Screen[None]):
         yield KeyBar(KEY_IMPORTANCE, id="keys")
         self.stats = Stats(id="stats")
         yield self.stats
-        self.compare_table = CompareTable(id="compare-table")
-        yield self.compare_table
+        self.table = CompareTable(id="compare-table")
+        yield self.table
         yield ChallengePanel(id="challenge")
         self.readout = CellReadout(id="readout")
         yield self.readout
@@ -106,7 +106,7 @@ class PanesScreen(Screen[None]):
         """Fit the panes to the room the other lines leave (:func:`layout.arrange`).  Before
         the first layout that room is reckoned from the screen's size, so the first frame is
         laid out as the next ones."""
-        table, box = self.compare_table, self.pane_box
+        table, box = self.table, self.pane_box
         several = len(self.panes) > 1
         measured = table.outer_size.height if table.display else 0
         table_height = max(measured, len(self.panes) + 5) if several else 0  # a line a search,
@@ -200,7 +200,7 @@ class PanesScreen(Screen[None]):
                           per_run[i] if per_run is not None else changed, follow=follow,
                           hide_order=session.quiz.on and i == 0, title=session.title)
         if len(self.panes) > 1:
-            self.compare_table.show(session.labels, runs)
+            self.table.show(session.labels, runs)
         self.show_pick()
         self.show_status()
         self.show_readout()
