@@ -16,9 +16,7 @@ from tests.tui.test_app import SIZE, open_grid, sync, tutorial_app, wait_until, 
 from tests.tui.test_snapshots import patterned_grid
 from tui_search.engine.grid import Cell, Grid
 from tui_search.tui.app import SearchApp
-from tui_search.tui.geometry import MAX_LEVEL, Geometry
-from tui_search.tui.widgets.cell_readout import CellReadout
-from tui_search.tui.widgets.grid_view import (
+from tui_search.tui.cell_codes import (
     CURRENT,
     EXPANDED,
     FREE,
@@ -28,8 +26,10 @@ from tui_search.tui.widgets.grid_view import (
     START,
     UPPER_HALF,
     WALL,
-    GridView,
 )
+from tui_search.tui.geometry import MAX_LEVEL, Geometry
+from tui_search.tui.widgets.cell_readout import CellReadout
+from tui_search.tui.widgets.grid_view import GridView
 
 
 def in_view(view: GridView, cell) -> bool:

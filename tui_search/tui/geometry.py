@@ -19,6 +19,7 @@ All positions are *virtual*: in the map's whole drawing, before scrolling.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from math import ceil, floor
 
 from tui_search.engine.grid import Cell
 
@@ -175,3 +176,12 @@ class Geometry:
 
 
 __all__ = ["MAX_LEVEL", "Geometry"]
+
+
+def snapped(value: float, old: float, step: int, maximum: float) -> float:
+    """``value`` moved to a whole ``step`` in the direction it moves from ``old`` (so a wheel
+    turn of one line still moves a tall cell), within ``maximum``."""
+    if step == 1 or value == old:
+        return value
+    whole = ceil(value / step) if value > old else floor(value / step)
+    return min(float(whole * step), maximum)

@@ -6,16 +6,15 @@ mouse, the scrolling and the overview share:
 
 * **cells** -- each map cell is 2x1, 4x2, 6x3 ... characters (by default the largest at which the
   whole map fits; ``zoom`` changes it) and carries a glyph as well as a colour, so the picture
-  reads without colour too (see :data:`GLYPHS`, which the legend shows).  Cells at least 4 wide
+  reads without colour too (see :data:`~tui_search.tui.cell_codes.GLYPHS`, which the legend shows).  Cells at least 4 wide
   also carry a label (:mod:`~tui_search.tui.cell_labels`): the arrow of the move that reached
   the cell and, where there is room, its depth or its costs;
 * **overview** -- half blocks (``▀`` with a foreground and a background colour), each half
-  standing for a block of cells drawn by the state that matters most in it (see :data:`RANK`), so
+  standing for a block of cells drawn by the state that matters most in it (see :data:`~tui_search.tui.cell_codes.RANK`), so
   every row and column of a 512x512 map shows in a 140x45 terminal.
 
-The widget only draws.  It is told what to show (``show_run``, ``set_cursor``, ``set_grid``) and
-reports what the mouse did with messages (``CellClicked``, ``CellDragged``, ``StrokeEnded``,
-``CellHovered``); the app decides what an edit means.
+The widget only draws what it is told (``show_run``, ``set_cursor``, ``set_grid``) and posts
+what the mouse did (``CellClicked``, ...); the screen decides what an edit means.
 """
 
 from __future__ import annotations
@@ -23,7 +22,6 @@ from __future__ import annotations
 from collections.abc import Iterable
 from dataclasses import dataclass
 from itertools import groupby
-from math import ceil, floor
 
 from rich.segment import Segment
 from rich.style import Style
@@ -35,32 +33,20 @@ from textual.strip import Strip
 
 from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.run import Run
+from tui_search.tui.cell_codes import (
+    BY_RANK,
+    COMPONENTS,
+    FREE,
+    GLYPHS,
+    GOAL,
+    RANK,
+    START,
+    WALL,
+    half_blocks,
+)
 from tui_search.tui.cell_labels import LABEL_MODES, cell_line
-from tui_search.tui.geometry import Geometry
+from tui_search.tui.geometry import Geometry, snapped
 from tui_search.tui.widgets.line_panel import CachedStyles, QuietScrollbars, window_strip
-
-# Drawing codes: the search states of a free cell (CellState's values), then what the grid says.
-FREE, FRONTIER, EXPANDED, CURRENT, PATH, WALL, START, GOAL = range(8)
-COMPONENTS = ("free", "frontier", "expanded", "current", "path", "wall", "start", "goal")
-#: Two columns per cell; a distinct glyph per kind so the map reads in monochrome.
-GLYPHS = ("· ", "○ ", "● ", "◉ ", "◆ ", "██", "S ", "G ")
-NAMES = ("free", "frontier (generated)", "expanded", "being expanded", "path", "obstacle",
-         "start", "goal")
-UPPER_HALF = "▀"
-#: What draws a block of the overview: the code of highest rank in it.  Start and goal first
-#: (one cell each, they would vanish in a block otherwise), then path > node being expanded >
-#: frontier > expanded > obstacle > free.
-RANK = {START: 7, GOAL: 6, PATH: 5, CURRENT: 4, FRONTIER: 3, EXPANDED: 2, WALL: 1, FREE: 0}
-BY_RANK = sorted(RANK, key=RANK.__getitem__)
-
-
-def _snapped(value: float, old: float, step: int, maximum: float) -> float:
-    """``value`` moved to a whole ``step`` in the direction it moves from ``old`` (so a wheel
-    turn of one line still moves a tall cell), within ``maximum``."""
-    if step == 1 or value == old:
-        return value
-    whole = ceil(value / step) if value > old else floor(value / step)
-    return min(float(whole * step), maximum)
 
 
 class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inherit_bindings=False):
@@ -243,14 +229,10 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
             self._level = new.level
         else:
             new = Geometry(g.width, g.height, self._level)
-        # Scrollbars only for a map bigger than the room: one that fits exactly would
-        # otherwise keep bars that its own size once called for (a bar takes room, so the map
-        # no longer fits beside it).
-        fits_x, fits_y = new.size[0] <= width, new.size[1] <= height
-        for axis, fits in (("overflow_x", fits_x), ("overflow_y", fits_y)):
-            wanted = "hidden" if fits else "auto"
-            if getattr(self.styles, axis) != wanted:
-                setattr(self.styles, axis, wanted)
+        # Scrollbars only for a map bigger than the room (one that fits exactly would keep
+        # bars an earlier size called for: a bar takes room, so the map no longer fits).
+        self.styles.overflow_x = "hidden" if new.size[0] <= width else "auto"
+        self.styles.overflow_y = "hidden" if new.size[1] <= height else "auto"
         old, self.geometry = self.geometry, new
         return new != old
 
@@ -276,11 +258,11 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
 
     def validate_scroll_x(self, value: float) -> float:
         value = super().validate_scroll_x(value)
-        return _snapped(value, self.scroll_x, self.geometry.cell_width, self.max_scroll_x)
+        return snapped(value, self.scroll_x, self.geometry.cell_width, self.max_scroll_x)
 
     def validate_scroll_y(self, value: float) -> float:
         value = super().validate_scroll_y(value)
-        return _snapped(value, self.scroll_y, self.geometry.cell_height, self.max_scroll_y)
+        return snapped(value, self.scroll_y, self.geometry.cell_height, self.max_scroll_y)
 
     @property
     def pad_x(self) -> int:
@@ -413,7 +395,6 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         cursor_colour = self.get_component_rich_style("grid-view--cursor").color or (
             background.color
         )
-        cache: dict[tuple[object, ...], Style] = {}
         colours = []
         for i in range(len(upper)):
             a = self.swatch(upper[i]).color
@@ -424,12 +405,7 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
                 else:
                     b = cursor_colour
             colours.append((a, b))
-        segments = [Segment(" " * self.pad_x, background)]
-        for (a, b), like in groupby(colours):
-            style = cache.get((a, b))
-            if style is None:
-                style = cache[a, b] = Style(color=a, bgcolor=b)
-            segments.append(Segment(UPPER_HALF * len(list(like)), style))
+        segments = [Segment(" " * self.pad_x, background), *half_blocks(colours)]
         return window_strip(segments, 0, width, background)
 
     # -- the mouse: report, don't edit ------------------------------------------------------

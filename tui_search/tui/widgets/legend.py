@@ -7,7 +7,7 @@ from rich.text import Text
 from textual.geometry import Size
 from textual.widget import Widget
 
-from tui_search.tui.widgets.grid_view import (
+from tui_search.tui.cell_codes import (
     COMPONENTS,
     CURRENT,
     EXPANDED,
@@ -18,8 +18,8 @@ from tui_search.tui.widgets.grid_view import (
     PATH,
     START,
     WALL,
-    GridView,
 )
+from tui_search.tui.widgets.grid_view import GridView
 
 ENTRIES = (
     (START, "start"),
