@@ -105,7 +105,7 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         self.run: Run | None = None
         self.cursor: Cell = grid.start or (0, 0)
         self.hover: Cell | None = None  # the cell under the mouse, no button down
-        #: Where every cell is on screen; until the user zooms, the largest size that fits.
+        #: Where each cell is on screen; until the user zooms, the largest size that fits.
         self.geometry = Geometry(grid.width, grid.height)
         self.fitted = True  # False once zoomed: the size stays what the user chose
         self._level = 1  # the cell size to come back to from the overview
@@ -114,10 +114,10 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         self.labels = LABEL_MODES[0]
         self._stroke = False  # the mouse went down on the map and is not up yet
         self._last: Cell | None = None  # the cell the stroke is on
-        self._looks: list[tuple[str, Style]] | None = None  # cells mode, code + 8 * cursor
-        self._swatches: list[Style] | None = None  # overview mode: a colour per code
+        self._looks: list[tuple[str, Style]] | None = None  # cells: code + 8 * cursor
+        self._swatches: list[Style] | None = None  # the overview's: a colour per code
 
-    # -- what to show (attributes pushed down by the app) -----------------------------------
+    # -- what to show (attributes pushed down by the screen) --------------------------------
     def set_grid(self, grid: Grid) -> None:
         self.grid = grid
         self.fitted = True
@@ -405,16 +405,13 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
                 else:
                     b = cursor_colour
             colours.append((a, b))
-        segments = [Segment(" " * self.pad_x, background), *half_blocks(colours)]
-        return window_strip(segments, 0, width, background)
+        return window_strip([Segment(" " * self.pad_x, background), *half_blocks(colours)], 0,
+                            width, background)
 
     # -- the mouse: report, don't edit ------------------------------------------------------
     def _event_cell(self, event: events.MouseEvent, captured: bool = False) -> Cell | None:
-        offset = (event.get_content_offset_capture(self) if captured
-                  else event.get_content_offset(self))
-        if offset is None:
-            return None
-        return self.cell_at(offset.x, offset.y)
+        at = event.get_content_offset_capture(self) if captured else event.get_content_offset(self)
+        return None if at is None else self.cell_at(at.x, at.y)
 
     def on_mouse_down(self, event: events.MouseDown) -> None:
         cell = self._event_cell(event)
