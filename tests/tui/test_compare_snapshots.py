@@ -22,3 +22,16 @@ def test_compare_on_the_tutorial_at_the_end(snap_compare) -> None:
     expanded and both costs 8.657 with *, and says 'BFS expanded 22 nodes, DFS 7; both paths
     have 7 moves'."""
     assert snap_compare(compare_app(), press=["end"], terminal_size=(150, 44))
+
+
+def test_compare_at_80_by_24(snap_compare) -> None:
+    """The tutorial's demo in the smallest terminal, after end: both 6x6 maps whole (start,
+    goal and both paths), each pane's queue or stack under its map; the table gives way."""
+    assert snap_compare(compare_app(), press=["end"], terminal_size=(80, 24))
+
+
+def test_compare_with_an_exercise_at_120_by_40(snap_compare) -> None:
+    """Exercise 1 on top across the screen, BFS and DFS side by side under it, each map whole
+    with its lists under it; no empty column beside the panes."""
+    app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, compare="bfs,dfs", exercise=1)
+    assert snap_compare(app, press=["end"], terminal_size=(120, 40))
