@@ -174,7 +174,7 @@ async def test_narrow_terminals_stack_the_panes_and_short_ones_fold_the_trees() 
         a, b = (p.region for p in app.main.panes)
         assert a.x == b.x and b.y > a.y  # one above the other
     app = compare_app()
-    async with app.run_test(size=(100, 24)) as pilot:
+    async with app.run_test(size=(100, 22)) as pilot:
         await pilot.pause()
         a, b = (p.region for p in app.main.panes)
         assert a.y == b.y and b.x > a.x  # side by side

@@ -12,6 +12,8 @@ from __future__ import annotations
 
 from typing import NamedTuple
 
+from tui_search.tui.geometry import Geometry
+
 #: Panes stand side by side while each is at least this wide (else in a grid of fewer
 #: columns), and are fitted to at least this many lines when a grid is chosen.
 PANE_MIN_WIDTH, PANE_MIN_HEIGHT = 50, 16
@@ -41,6 +43,7 @@ class Arrangement(NamedTuple):
     trees: bool
     map_height: int
     fits: bool  # the whole map is in view at the smallest cells
+    pane_width: int = 0
 
     @property
     def lists(self) -> bool:
@@ -74,7 +77,6 @@ def arrange(n: int, width: int, height: int, map_size: tuple[int, int], *,
     lines, the table's ``table_height`` lines included when there is one) for a map of
     ``map_size`` cells, whose smallest cells are 2 characters by 1 line, in a border; a
     pane's own status lines take ``stats_height`` lines."""
-    need_w, need_h = 2 * map_size[0] + 2, map_size[1] + 2
     stats = stats_height if n > 1 else 0  # one pane: the status line under it is its own
     candidates = []
     for table in ((True, False) if table_height else (False,)):
@@ -83,8 +85,7 @@ def arrange(n: int, width: int, height: int, map_size: tuple[int, int], *,
         for columns in range(1, n + 1):
             rows = -(-n // columns)
             pane_w, pane_h = width // columns, room // rows - stats
-            pane = _pane(columns, rows, table, stats > 0, pane_w, pane_h, need_w, need_h,
-                         fold_trees)
+            pane = _pane(columns, rows, table, stats > 0, pane_w, pane_h, map_size, fold_trees)
             candidates.append(((pane.fits, pane.lists, pane.trees or fold_trees, table,
                                 columns == preferred), pane))
     # What gives way first: the table, then the trees, then the lists; the map never.
@@ -92,27 +93,33 @@ def arrange(n: int, width: int, height: int, map_size: tuple[int, int], *,
 
 
 def _pane(columns: int, rows: int, table: bool, pane_stats: bool, pane_w: int, pane_h: int,
-          need_w: int, need_h: int, fold_trees: bool) -> Arrangement:
+          map_size: tuple[int, int], fold_trees: bool) -> Arrangement:
     """One pane's inside: its lists beside the map when the pane is much wider than tall and
     the map still fits beside them (or would not fit whole anyway); else under the map when
     there is room for both."""
+    map_w, map_h = map_size
+    need_w, need_h = 2 * map_w + 2, map_h + 2  # the smallest cells, in a border
     side = lists_width(pane_w)
     if pane_w >= 3 * pane_h and pane_w - side >= min(need_w, MAP_MIN_WIDTH):
         return Arrangement(columns, rows, table, pane_stats, True, side, 0, not fold_trees,
-                           0, need_h <= pane_h)
+                           0, need_h <= pane_h, pane_w)
     if need_h + LISTS_MIN_HEIGHT <= pane_h:
-        map_h = min(pane_h - LISTS_MIN_HEIGHT, max(need_h, pane_h * 3 // 5))
-        lists_h = pane_h - map_h
+        # The map's box: as tall as the map at the biggest cells that fit the pane's width
+        # and three fifths of its height; the lists get the rest.
+        fitted = Geometry.fit(map_w, map_h, pane_w - 2, max(1, pane_h * 3 // 5 - 2)).size[1]
+        box_h = min(pane_h - LISTS_MIN_HEIGHT, max(need_h, fitted + 2))
+        lists_h = pane_h - box_h
         return Arrangement(columns, rows, table, pane_stats, False, 0, lists_h,
-                           lists_h >= TREES_MIN_HEIGHT and not fold_trees, map_h,
-                           need_w <= pane_w)
+                           lists_h >= TREES_MIN_HEIGHT and not fold_trees, box_h,
+                           need_w <= pane_w, pane_w)
     if need_h <= pane_h:  # the whole map, without the lists
         return Arrangement(columns, rows, table, pane_stats, False, 0, 0, False, pane_h,
-                           need_w <= pane_w)
+                           need_w <= pane_w, pane_w)
     # Too big to fit: the map scrolls (z: the overview); the lists keep their share.
     lists_h = pane_h * 2 // 5 if pane_h * 2 // 5 >= LISTS_MIN_HEIGHT else 0
     return Arrangement(columns, rows, table, pane_stats, False, 0, lists_h,
-                       lists_h >= TREES_MIN_HEIGHT and not fold_trees, pane_h - lists_h, False)
+                       lists_h >= TREES_MIN_HEIGHT and not fold_trees, pane_h - lists_h, False,
+                       pane_w)
 
 
 __all__ = ["Arrangement", "arrange", "pane_grid"]

@@ -20,6 +20,9 @@ from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.search_tree import SearchTreePanel
 from tui_search.tui.widgets.stats import Stats
 
+#: The map's box is at least this wide where the pane is, so its title (the file's name) shows.
+MAP_TITLE_WIDTH = 30
+
 
 class RunPane(Vertical):
     """A run's pane: ``label`` names its search.  ``note`` is what the lists' place says
@@ -61,6 +64,8 @@ class RunPane(Vertical):
             lists.styles.height = arrangement.lists_height or None
             self.map_box.styles.height = arrangement.map_height or "1fr"
         self.tree_panel.set_class(not arrangement.trees, "-folded")
+        # room for the map's title where the pane has it, else the map as narrow as it is
+        self.view.styles.min_width = min(MAP_TITLE_WIDTH, max(0, arrangement.pane_width - 2))
 
     def show(self, run: Run | None, changed: list[Cell] | None, *, follow: bool = True,
              hide_order: bool = False, title: str = "", label: str = "", note: str = "",
