@@ -29,7 +29,7 @@ from tui_search.tui.files import FileCommands
 from tui_search.tui.keys import KEY_IMPORTANCE
 from tui_search.tui.layout import PANE_STATS_HEIGHT, arrange
 from tui_search.tui.narration import group_digits
-from tui_search.tui.readout import describe, describe_each
+from tui_search.tui.readout import describe_each
 from tui_search.tui.session import LOCKSTEP, NEEDS_ENDPOINTS, Before, Session
 from tui_search.tui.widgets.cell_readout import CellReadout
 from tui_search.tui.widgets.challenge import ChallengePanel
@@ -233,11 +233,7 @@ class PanesScreen(Screen[None]):
         cell, label = (hover, "Mouse") if hover is not None else (session.cursor, "Cursor")
         if not session.grid.in_bounds(cell):
             cell, label = session.cursor, "Cursor"
-        if len(session.runs) > 1:
-            text = describe_each(session.runs, session.labels, session.grid, cell)
-        else:
-            text = describe(session.run, session.grid, cell)
-        self.readout.show(label, text)
+        self.readout.show(label, describe_each(session.runs, session.labels, session.grid, cell))
 
     @property
     def quiz_panel(self) -> FrontierPanel:
