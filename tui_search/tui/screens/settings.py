@@ -2,6 +2,10 @@
 on what it changes, and the searches compare mode compares.  Dismisses with a
 :class:`SettingsChoice`, or None when cancelled; the app then starts a new run at step 0 on the
 same map.
+
+Apply, Defaults and Cancel are docked under the choices, so they never scroll away; on a
+short terminal the blank lines between the choices go first, then the explanations (a note
+that a choice does not apply, or a problem, stays).
 """
 
 from __future__ import annotations
@@ -10,7 +14,7 @@ from typing import ClassVar
 
 from textual.app import ComposeResult
 from textual.binding import Binding, BindingType
-from textual.containers import Horizontal, VerticalScroll
+from textual.containers import Horizontal, Vertical, VerticalScroll
 from textual.screen import ModalScreen
 from textual.widgets import Button, Checkbox, Input, Label, RadioButton, RadioSet
 
@@ -42,6 +46,11 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
 
     BINDINGS: ClassVar[list[BindingType]] = [Binding("escape", "cancel", "Cancel")]
     AUTO_FOCUS = "#corners"
+    #: By the terminal's height: all of it from 37 lines (the box is 36 high); below, no
+    #: blank line between the choices (29 high); below 30, the explanations hidden too,
+    #: save a choice's note (does not apply, inadmissible) or a problem.
+    #: (Not ClassVar: textual's annotation makes mypy see an instance variable.)
+    VERTICAL_BREAKPOINTS = [(0, "-tiny"), (30, "-short"), (37, "-tall")]  # noqa: RUF012
 
     DEFAULT_CSS = """
     SettingsScreen {
@@ -56,7 +65,10 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
             padding: 0 1;
         }
         & .choice { text-style: bold; margin-top: 1; }
-        & .explain { color: $text-muted; width: 100%; }
+        & .explain, & .hint { color: $text-muted; width: 100%; }
+        &.-short .choice, &.-tiny .choice { margin-top: 0; }
+        &.-tiny .explain { display: none; }
+        &.-tiny .explain.-note, &.-tiny .explain.problem { display: block; }
         & .problem { color: $text-error; width: 100%; }
         & RadioSet { layout: horizontal; height: 1; width: 100%; }
         & RadioSet > RadioButton { width: auto; margin-right: 3; }
@@ -64,7 +76,8 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
         & #compare-picks { height: 1; width: 100%; margin-top: 0; }
         & #compare-picks > Checkbox { width: auto; margin-right: 2; }
         & Input { width: 100%; background: $boost; }
-        & Horizontal { height: 1; margin-top: 1; }
+        & #settings-buttons { dock: bottom; height: auto; background: $surface; }
+        & #settings-buttons > Horizontal { height: 1; margin-top: 1; }
         & Button { margin-right: 2; min-width: 10; }
     }
     """
@@ -114,12 +127,13 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
                                    compact=True)
             yield Label("two to four searches side by side, in lockstep on the same map",
                         id="compare-explain", classes="explain")
-            with Horizontal():
-                yield Button("Apply", id="apply", variant="primary", compact=True)
-                yield Button("Defaults", id="defaults", compact=True)
-                yield Button("Cancel", id="cancel", compact=True)
-            yield Label("tab / shift+tab move · arrows and enter pick · escape cancels",
-                        classes="explain")
+            with Vertical(id="settings-buttons"):  # docked: never scrolled away
+                with Horizontal():
+                    yield Button("Apply", id="apply", variant="primary", compact=True)
+                    yield Button("Defaults", id="defaults", compact=True)
+                    yield Button("Cancel", id="cancel", compact=True)
+                yield Label("tab / shift+tab move · arrows and enter pick · escape cancels",
+                            classes="hint")
 
     @staticmethod
     def _radios(name: str, values: tuple[str, ...], chosen: str) -> RadioSet:
@@ -155,6 +169,7 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
         if not 2 <= len(keys) <= 4:
             explain.set_class(True, "problem")
             explain.update(f"Compare: tick two to four searches ({len(keys)} ticked)")
+            explain.scroll_visible()  # on a short terminal it may be below the choices shown
             return None
         explain.set_class(False, "problem")
         explain.update("two to four searches side by side, in lockstep on the same map")
@@ -193,7 +208,9 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
         else:
             why = ""
         radios.disabled = bool(why)
-        self.query_one("#visit-explain", Label).update(why or EXPLAIN["visit"])
+        explain = self.query_one("#visit-explain", Label)
+        explain.update(why or EXPLAIN["visit"])
+        explain.set_class(bool(why), "-note")
 
     def _visit_applies(self) -> bool:
         """The visit rule applies to BFS and DFS (in compare mode: to one of the searches)."""
@@ -214,7 +231,9 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
             except ValueError:
                 moves = DEFAULT_ORDER
             text = INADMISSIBLE if not admissible(name, moves) else EXPLAIN["heuristic"]
-        self.query_one("#heuristic-explain", Label).update(text)
+        explain = self.query_one("#heuristic-explain", Label)
+        explain.update(text)
+        explain.set_class(text != EXPLAIN["heuristic"], "-note")
 
     # -- events ------------------------------------------------------------------------------
     def on_radio_set_changed(self, event: RadioSet.Changed) -> None:
