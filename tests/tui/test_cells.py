@@ -480,12 +480,15 @@ async def test_page_keys_move_the_cursor_a_screenful() -> None:
 
 
 @sync
-async def test_a_readout_too_long_for_its_line_ends_in_an_ellipsis() -> None:
+async def test_a_readout_too_long_for_its_line_wraps() -> None:
     app = tutorial_app()
     async with app.run_test(size=(60, 24)) as pilot:
         await pilot.pause()
-        line = app.query_one(CellReadout).render_line(0).text
-        assert line.rstrip().endswith("…") and line.startswith("Cursor (0,0): the start")
+        readout = app.query_one(CellReadout)
+        rows = readout.shown_lines()
+        assert len(rows) == readout.size.height > 1
+        assert rows[0].startswith("Cursor (0,0): the start") and "…" not in "".join(rows)
+        assert " ".join(rows) == f"{readout.label} {readout.text}"
 
 
 @sync

@@ -101,7 +101,9 @@ async def test_a_stale_step_is_discarded_and_says_why() -> None:
         assert run.is_discarded(run.k)
         narration = stats(app)[1]
         assert "stale (its cell was reached with a lower g since), discarded" in narration
-        assert panel_lines(app)[1].startswith("✗ ") and "stale, discarded" in panel_lines(app)[1]
+        lines = panel_lines(app)
+        assert lines[1].startswith("✗ ") and " h " in lines[1]  # a figure stays with its name
+        assert "stale, discarded" in " ".join(lines[1:3])  # wrapped in a narrow panel
 
 
 def test_a_cell_expanded_then_reached_with_a_lower_g_is_narrated_re_opened() -> None:

@@ -42,7 +42,7 @@ class Quiz(NamedTuple):
         if run.algo.weighted:
             where += f" (the lowest {run.algo.priority_name})"
         noun = run.algo.frontier.noun
-        # the score first: on a narrow screen the line's end is cut, and the hint can go
+        # the score first: on a narrow screen the question wraps, the score on its first row
         return (f"Quiz ({self.score}): which node comes off the {noun} next? "
                 f"Cursor on it or click its entry, then enter (it is {where})")
 

@@ -37,8 +37,9 @@ class PathPrompt(ModalScreen[T]):
             background: $surface;
             padding: 0 1;
         }
-        & Label { margin-bottom: 1; }
-        & #error { color: $text-error; display: none; }
+        /* a label longer than the box wraps, never cut */
+        & Label { width: 100%; height: auto; margin-bottom: 1; }
+        & #error { color: $text-error; display: none; width: 100%; height: auto; }
         & #error.-shown { display: block; }
         & .hint { color: $text-muted; margin: 0; }
     }

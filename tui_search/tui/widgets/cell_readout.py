@@ -1,27 +1,24 @@
 """The line under the map that answers "what is this cell?" for the cell under the cursor, or
 under the mouse while it hovers over the map (the text is :func:`~tui_search.tui.readout.
-describe`'s).  One line with the line API, repainted only when its text changes: the app tells
-it on every step."""
+describe`'s).  Drawn with the line API, repainted only when its text changes (the app tells it
+on every step), and wrapped to the width: in compare mode each search's part starts a row when
+it does not fit on the one before."""
 
 from __future__ import annotations
 
 from typing import ClassVar
 
-from rich.segment import Segment
-from textual.strip import Strip
-from textual.widget import Widget
-
-from tui_search.tui.widgets.line_panel import ELLIPSIS, CachedStyles
+from tui_search.tui.widgets.parts_lines import Line, PartsLines, Piece
 
 
-class CellReadout(CachedStyles, Widget):
+class CellReadout(PartsLines):
     """``Cursor (12,40): expanded at step 345, …`` (``Mouse`` while hovering)."""
 
     COMPONENT_CLASSES: ClassVar[set[str]] = {"cell-readout--label", "cell-readout--text"}
 
     DEFAULT_CSS = """
     CellReadout {
-        height: 1;
+        height: auto;
         padding: 0 1;
         & > .cell-readout--label { color: $text-muted; }
         & > .cell-readout--text { color: $text; }
@@ -34,19 +31,11 @@ class CellReadout(CachedStyles, Widget):
         self.text = ""
 
     def show(self, label: str, text: str) -> None:
-        if (label, text) != (self.label, self.text):
-            self.label, self.text = label, text
-            self.refresh()
-
-    def render_line(self, y: int) -> Strip:
-        width = self.content_size.width
-        base = self.cached_style()
-        if y:
-            return Strip.blank(width, base)
-        label = f"{self.label} "
-        text = self.text
-        if len(label) + len(text) > width > len(label):  # too long: it ends in an ellipsis
-            text = text[: width - len(label) - 1] + ELLIPSIS
-        segments = [Segment(label, self.cached_style("cell-readout--label")),
-                    Segment(text, self.cached_style("cell-readout--text"))]
-        return Strip(segments).crop_extend(0, width, base)
+        if (label, text) == (self.label, self.text):
+            return
+        self.label, self.text = label, text
+        first, *others = text.split(" │ ")  # compare mode: a part a search
+        pieces = [Piece([(f"{label} ", "cell-readout--label"), (first, "cell-readout--text")])]
+        pieces += [Piece([(other, "cell-readout--text")], 0, (" │ ", "cell-readout--label"))
+                   for other in others]
+        self.set_lines([Line(pieces)])

@@ -3,14 +3,13 @@
 The cells are the command line's (:func:`~tui_search.engine.compare.table_cells`), so the
 table on screen and ``--headless --compare`` print the same numbers; a run still going says
 which step it is at, and the marks on the fewest expanded and the cheapest path appear once
-every run is done.  Redrawn on every step, so drawn with the line API.
+every run is done.  Redrawn on every step, so drawn with the line API; a line wider than
+the table (the summary sentence) wraps.
 """
 
 from __future__ import annotations
 
 from typing import ClassVar
-
-from textual.geometry import Size
 
 from tui_search.engine.compare import (
     MARKS_KEY,
@@ -21,7 +20,8 @@ from tui_search.engine.compare import (
     table_lines,
 )
 from tui_search.engine.run import Run
-from tui_search.tui.widgets.line_panel import Parts, PartsLines
+from tui_search.tui.widgets.line_panel import Parts
+from tui_search.tui.widgets.parts_lines import PartsLines, plain
 
 
 def table_rows(labels: list[str], runs: list[Run]) -> tuple[list[TableRow], list[int | None]]:
@@ -64,11 +64,11 @@ class CompareTable(PartsLines):
     def show(self, labels: list[str], runs: list[Run]) -> None:
         if not runs:
             self.text_lines = ["Place a start (s) and a goal (g) to compare"]
-            self.set_lines([[(self.text_lines[0], "compare-table--key")]])
+            self.set_lines([plain([(self.text_lines[0], "compare-table--key")], prose=True)])
             return
         rows, steps = table_rows(labels, runs)
         text = table_lines(table_cells(rows, steps))
-        lines: list[Parts] = [[(text[0], "compare-table--head")]]
+        lines = [plain([(text[0], "compare-table--head")])]
         for line in text[1:]:
             # The marks in their own colour: "*" follows a figure, two spaces before the next.
             pieces = line.split(" *")
@@ -77,14 +77,11 @@ class CompareTable(PartsLines):
                 parts.append((piece, "compare-table--row"))
                 if i < len(pieces) - 1:
                     parts.append((" *", "compare-table--mark"))
-            lines.append(parts)
+            lines.append(plain(parts))
         if all(s is None for s in steps):
             sentence = summary_sentence(rows)
-            lines += [[(MARKS_KEY, "compare-table--key")],
-                      [(sentence, "compare-table--sentence")]]
+            lines += [plain([(MARKS_KEY, "compare-table--key")], prose=True),
+                      plain([(sentence, "compare-table--sentence")], prose=True)]
             text += [MARKS_KEY, sentence]
         self.text_lines = text
         self.set_lines(lines)
-
-    def get_content_height(self, container: Size, viewport: Size, width: int) -> int:
-        return len(self._lines or [])

@@ -16,6 +16,10 @@ is struck out as *stale*).  The first and last lines carry a hint (``← front (
 ``← back (newest)`` for a queue, ``← top (next out)`` / ``← bottom (oldest)`` for a stack) so a
 student sees which end is which.
 
+A narrow panel drops the hints (and "stale") before any figure, then presses the figures
+closer together; a line still wider than the panel shows no half word (the scrollbar says
+there is more), and the lines above the entries wrap.
+
 In the quiz the entries are the answers to pick from: a click on an entry's line, or ``up`` /
 ``down`` while the panel has the focus, posts :class:`FrontierPanel.EntryPicked` (a double
 click asks to answer with it too); the app moves its cursor there and tells the panel which
@@ -27,7 +31,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, ClassVar
 
-from rich.cells import cell_len
 from rich.style import Style
 from textual import events
 from textual.binding import Binding, BindingType
@@ -37,8 +40,10 @@ from textual.message import Message
 from tui_search.engine.algorithms import Frontier
 from tui_search.engine.grid import Cell
 from tui_search.engine.heuristics import octile
-from tui_search.tui.narration import gave_up_text, group_digits
-from tui_search.tui.widgets.line_panel import LinePanel, set_virtual_size
+from tui_search.tui.narration import group_digits
+from tui_search.tui.widgets.frontier_text import costs_column, describe_empty, end_hint, figures
+from tui_search.tui.widgets.line_panel import LinePanel, Parts, set_virtual_size
+from tui_search.tui.widgets.parts_lines import Line, Piece, length, plain, wrap
 
 if TYPE_CHECKING:
     from tui_search.engine.run import Run
@@ -48,6 +53,7 @@ HINT_GAP = 2
 #: Width of the move column: a direction's name (START, longer, is only ever on its own: the
 #: frontier holds just the root then).
 DIR_W = 2
+DISCARDED = "frontier-panel--discarded"
 
 
 class FrontierPanel(LinePanel):
@@ -137,7 +143,11 @@ class FrontierPanel(LinePanel):
         self._hint_col = 0  # column where end hints start
         self._empty_text = ""
         self._count_text = ""  # the first line: "4 in the queue"
-        self._discarded_text = ""  # after a discarded step: the entry it threw away
+        self._discarded: Line | None = None  # after a discarded step: the entry it threw away
+        self._hint_w = 0  # the widest end hint (or "stale")
+        self._squeeze = 0  # how close the figures are pressed in a narrow panel (costs_column)
+        self._top_key: object = None
+        self._top_cache: list[Parts] = []
         self._by_cell: list[int] | None = None  # the quiz: the entries sorted by cell
         self._pick: Cell | None = None  # the quiz: the entry marked as picked (the cursor)
         self.border_title = "Frontier"
@@ -178,15 +188,19 @@ class FrontierPanel(LinePanel):
         # so that every column stands one space from the next whatever its label (START d=0 /
         # S d=1 alike)
         entry_w = (3 + self._coord_w + 1 + (self._depth_w + 1 if self._depth_w else 0) + DIR_W
-                   + (len(self._costs(run, 0)) if self._cost_w else 0))
+                   + (len(costs_column(run, 0, self._cost_w)) if self._cost_w else 0))
         self._hint_col = entry_w + HINT_GAP
-        self._discarded_text = ""
+        self._discarded = None
         if run.k and run.is_discarded(run.k):
             g = run.expanded_event(run.k)
             x, y = run.gen_cell(g)
             why = "stale, discarded" if run.algo.weighted else "discarded"
-            self._discarded_text = (f"✗  ({x},{y}) {run.gen_dir(g).ljust(DIR_W)}"
-                                    f"{self._costs(run, g)}  {why}")
+            # kept whole: a figure never parted from its name when the line wraps
+            shown = [Piece([(figure, DISCARDED)], 0, (" " if i else "  ", DISCARDED))
+                     for i, figure in enumerate(figures(run, g, self._cost_w))]
+            self._discarded = Line([
+                Piece([(f"✗  ({x},{y}) {run.gen_dir(g).ljust(DIR_W)}", DISCARDED)]),
+                *shown, Piece([(why, DISCARDED)], 0, ("  ", DISCARDED))])
         self._by_cell = None
         if hide_order:
             events = run.frontier(0, self.QUIZ_ENTRIES)
@@ -197,21 +211,63 @@ class FrontierPanel(LinePanel):
         if n:
             self._empty_text = ""
             self._count_text = kind.count_text(group_digits(n))
-            hint = max(len(self._hints(kind, 0, n)), len(self._hints(kind, n - 1, n)))
-            stale = len("stale") if self._cost_w else 0
-            width = max(self._hint_col + stale + hint, cell_len(self._count_text),
-                        cell_len(self._discarded_text))
+            self._hint_w = max(len(end_hint(kind, 0, n)), len(end_hint(kind, n - 1, n)),
+                               len("stale") if self._cost_w else 0)
+        else:
+            self._empty_text = describe_empty(run)
+        self._fit(moved)
+
+    def on_resize(self) -> None:
+        if self._run is not None:
+            self._fit(False)
+
+    def _fit(self, moved: bool) -> None:
+        """Size what the panel scrolls over to its lines at the panel's width (the hints
+        shown only where they fit, the first lines wrapped), and repaint what changed."""
+        n = self._count
+        top = self._top_rows()
+        width = max((length(row) for row in top), default=0)
+        if n:
+            entry_w = self._hint_col - HINT_GAP
+            room = self.scrollable_content_region.width
+            count = len(figures(self._run, 0, self._cost_w)) if self._cost_w and self._run else 0
+            # too narrow for the figures: closer together, then each name on its number
+            self._squeeze = 0 if not room or entry_w <= room else (
+                1 if entry_w - 1 <= room else 2)
+            entry_w -= (0, 1, 1 + count)[self._squeeze] if count else 0
+            width = max(width, self._hint_col + self._hint_w if self._hints_fit() else entry_w)
             listed = n if self._by_cell is None or n <= len(self._by_cell) else (
                 len(self._by_cell) + 1)  # the quiz: "… N more"
-            height = self._top() + listed
+            height = len(top) + listed
         else:
-            self._empty_text = self._describe_empty(run)
-            width = max(cell_len(self._empty_text), cell_len(self._discarded_text))
-            height = 2 if self._discarded_text else 1
+            height = len(top)
         set_virtual_size(self, Size(width, height))
         if moved:
             self.scroll_to(0, 0, animate=False, immediate=True, force=True)
         self.refresh_changed()
+
+    def _hints_fit(self) -> bool:
+        """The end hints (and "stale") are shown only when they fit beside the entries:
+        they go before any figure does."""
+        room = self.scrollable_content_region.width
+        return not room or self._hint_col + self._hint_w <= room
+
+    def _top_rows(self) -> list[Parts]:
+        """The lines above the entries, wrapped to the panel's width: the count (or what an
+        empty frontier means), then the entry a discarded step threw away."""
+        room = self.scrollable_content_region.width or 1000
+        key = (self._count_text, self._empty_text, self._discarded, room)
+        if self._top_key != key:
+            if self._count:
+                rows = [[(self._count_text, "frontier-panel--detail")]]
+            else:
+                cls = "frontier-panel--no-path" if "no path" in self._empty_text else (
+                    "frontier-panel--empty")
+                rows = wrap(plain([(self._empty_text, cls)], prose=True), room)
+            if self._discarded is not None:
+                rows += wrap(self._discarded, room)
+            self._top_key, self._top_cache = key, rows
+        return self._top_cache
 
     def set_pick(self, cell: Cell | None) -> None:
         """Mark the entry of ``cell`` as the quiz's pick (None: none), in view when listed."""
@@ -269,44 +325,9 @@ class FrontierPanel(LinePanel):
 
     def _top(self) -> int:
         """Lines above the entries: the count, and the entry a discarded step threw away."""
-        return 2 if self._discarded_text else 1
+        return len(self._top_rows())
 
     # -- text, for tests and for render_line ------------------------------------------------
-    def _costs(self, run: Run, g: int) -> str:
-        """A priority queue's figures for event ``g``, the priority first: "  f 6.41 g 2.41
-        h 4.00" (A*), "  g 2.41" (UCS), "  h 4.00 g 2.41" (greedy); empty otherwise."""
-        costs = run.gen_costs(g)
-        if costs is None:
-            return ""
-        cost, h, f = costs
-        w = self._cost_w
-        figures = {"g": [("g", cost)], "h": [("h", h), ("g", cost)],
-                   "g+h": [("f", f), ("g", cost), ("h", h)]}[run.algo.priority or "g"]
-        return " " + "".join(f" {name} {value:>{w}.2f}" for name, value in figures)
-
-    @staticmethod
-    def _hints(kind: Frontier, i: int, n: int) -> str:
-        only, next_out, far_end = kind.end_hints
-        if n == 1:
-            return only
-        if i == 0:
-            return next_out
-        if i == n - 1:
-            return far_end
-        return ""
-
-    @staticmethod
-    def _describe_empty(run: Run) -> str:
-        if run.k < run.recorded or not run.done:
-            if run.algo.iterative:
-                limit = run.depth_limit()
-                nxt = 1 if limit is None else limit + 1
-                return f"empty — iteration over; next: depth limit {nxt}"
-            return "empty"
-        if run.gave_up:
-            return f"empty — {gave_up_text(run)}"
-        return "empty" if run.found else "empty — no path"
-
     def line_parts(self, y: int) -> list[tuple[str, str]]:
         """Line ``y`` as (text, component class) pieces: the count, the entry a discarded step
         threw away (if it did), then the entries;
@@ -315,18 +336,11 @@ class FrontierPanel(LinePanel):
         if run is None:
             return []
         n = self._count
+        top = self._top_rows()
+        if y < len(top):
+            return top[y]
         if not n:
-            if y == 1 and self._discarded_text:  # the entry the step threw away
-                return [(self._discarded_text, "frontier-panel--discarded")]
-            if y:
-                return []
-            cls = "frontier-panel--no-path" if "no path" in self._empty_text else (
-                "frontier-panel--empty")
-            return [(self._empty_text, cls)]
-        if y == 0:
-            return [(self._count_text, "frontier-panel--detail")]
-        if y == 1 and self._discarded_text:
-            return [(self._discarded_text, "frontier-panel--discarded")]
+            return []
         y -= self._top()
         if not 0 <= y < n:
             return []
@@ -355,14 +369,16 @@ class FrontierPanel(LinePanel):
         parts.append((move, main))
         used += len(move)
         if self._cost_w:
-            costs = self._costs(run, g)
+            costs = costs_column(run, g, self._cost_w, self._squeeze)
             stale = run.is_stale(g)
             parts.append((costs, "frontier-panel--stale" if stale else main))
             used += len(costs)
-            if stale:  # in the hint column (a priority queue has no end hints)
+            if stale and self._hints_fit():  # in the hint column (a priority queue has no
+                # end hints)
                 parts.append((" " * max(HINT_GAP, self._hint_col - used), main))
                 parts.append(("stale", "frontier-panel--stale"))
-        hint = self._hints(self._kind, y, n) if self._by_cell is None else ""
+        hint = end_hint(self._kind, y, n) if self._by_cell is None and (
+            self._hints_fit()) else ""
         if hint:
             parts.append((" " * max(HINT_GAP, self._hint_col - used), "frontier-panel--entry"))
             parts.append((hint, "frontier-panel--hint"))

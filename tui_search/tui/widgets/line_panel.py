@@ -216,41 +216,28 @@ class CachedStyles:
         return style
 
 
+#: A line as (text, component class) pieces.
 Parts = list[tuple[str, str]]
-#: What ends a line too long for its widget.
-ELLIPSIS = "…"
 
 
-class PartsLines(CachedStyles, Widget):
-    """A few lines of (text, component class) pieces drawn with the line API, a line wider
-    than the widget cut with an ellipsis: the status lines and the comparison table, redrawn
-    on every step (a ``Static`` rebuilt through Textual's markup and visual pipeline cost a
-    tenth of a step)."""
-
-    _lines: list[Parts] | None = None
-
-    def set_lines(self, lines: list[Parts]) -> bool:
-        """Show ``lines``; True (and a repaint) when they differ from what is shown."""
-        if lines == self._lines:
-            return False
-        old, self._lines = self._lines, lines
-        if old is not None and len(old) != len(lines):
-            self.refresh(layout=True)
-        else:
-            self.refresh()
-        return True
-
-    def render_line(self, y: int) -> Strip:
-        width = self.content_size.width
-        base = self.cached_style()
-        lines = self._lines or []
-        parts = lines[y] if 0 <= y < len(lines) else []
-        style = self.cached_style
-        segments = [Segment(text, style(cls)) for text, cls in parts]
-        if sum(cell_len(text) for text, _ in parts) > width > 0:
-            cut = list(Strip(segments).crop(0, width - 1))
-            segments = [*cut, Segment(ELLIPSIS, cut[-1].style if cut else base)]
-        return Strip(segments).crop_extend(0, width, base)
+def whole_words(parts: Parts, end: int) -> Parts:
+    """``parts`` cut before the word that column ``end`` would cut through (a line longer than
+    its panel shows no half number: the scrollbar says there is more)."""
+    text = "".join(part for part, _ in parts)
+    if cell_len(text) <= end or len(text) != cell_len(text):
+        return parts
+    if text[end] == " " or text[end - 1] == " ":
+        return parts
+    keep = text.rfind(" ", 0, end) + 1
+    out: Parts = []
+    at = 0
+    for part, cls in parts:
+        if at + len(part) <= keep:
+            out.append((part, cls))
+        elif at < keep:
+            out.append((part[: keep - at], cls))
+        at += len(part)
+    return out
 
 
 class LinePanel(QuietScrollbars, CachedStyles, ScrollView, can_focus=True):
@@ -309,6 +296,7 @@ class LinePanel(QuietScrollbars, CachedStyles, ScrollView, can_focus=True):
         parts = self.line_parts(scroll_y + y)
         if not parts:
             return Strip.blank(width, base)
+        parts = whole_words(parts, scroll_x + width)
         style = self.cached_style
         band = self.line_band(scroll_y + y)
         if band is None:

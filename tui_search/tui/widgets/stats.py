@@ -1,9 +1,11 @@
 """The status lines under the map: the counts, and what the search just did in the tutorial's
 words (see :mod:`tui_search.tui.narration`).
 
-Two lines redrawn on every step, so they are drawn with the line API from segments built in
-:meth:`Stats.show`, with styles looked up once per style change (a ``Static`` rebuilt its
-content through Textual's markup and visual pipeline on every step: a tenth of a step).
+Redrawn on every step, so they are drawn with the line API (a ``Static`` rebuilt its content
+through Textual's markup and visual pipeline on every step: a tenth of a step), wrapped to the
+widget's width by :class:`~tui_search.tui.widgets.parts_lines.PartsLines`: a count is never
+split from its label, and when the rows run out the figures a student can do without go first
+(the playing speed, the frontier's peak, ...), never the narration or the bound.
 """
 
 from __future__ import annotations
@@ -13,18 +15,30 @@ from typing import ClassVar
 from tui_search.engine.algorithms import get_algorithm
 from tui_search.engine.heuristics import INADMISSIBLE
 from tui_search.engine.run import Run
-from tui_search.tui.narration import narrate, result_text, status_parts
-from tui_search.tui.widgets.line_panel import Parts, PartsLines
+from tui_search.tui.narration import frontier_word, narrate, result_text, status_parts
+from tui_search.tui.widgets.parts_lines import Line, PartsLines, Piece, line_text
+
+#: Between two counts on a row.
+SEP = (" │ ", "stats--label")
+#: At most this many rows while some piece can go; a pane's, one of several, at most
+#: PANE_ROWS (its map comes first).
+MAX_ROWS, PANE_ROWS = 4, 3
+#: What goes first when the rows run out (the highest rank; 0 never goes).
+BOUND_RANK, PLAYING_RANK, PEAK_RANK, DONE_RANK, PATH_RANK = 8, 7, 6, 5, 2
+RANKS = {"discarded": 4, "expanded": 3, "generated": 3}
 
 
 class Stats(PartsLines):
-    """Two lines: ``BFS │ step 4/18 │ expanded 4 │ …`` then the narration, which ends with
-    the path's moves and cost once found (or says "no path").
+    """``BFS │ step 4/18 │ expanded 4 │ …`` then the narration, which ends with the path's
+    moves and cost and the tutorial's bound once found (or says "no path"), each wrapped to
+    as many rows as it needs (at most :attr:`MAX_ROWS` while some count can go).
 
-    The app calls :meth:`show` after every change; ``note`` replaces the narration (e.g. while
-    computing the end of a big run, or when the map lacks a start or a goal).  A line wider than
-    the terminal ends in an ellipsis.
+    The app calls :meth:`show` after every change; ``note`` replaces the narration (e.g. the
+    quiz's question, while computing the end of a big run, or when the map lacks a start or a
+    goal).
     """
+
+    MAX_ROWS: int | None = MAX_ROWS
 
     COMPONENT_CLASSES: ClassVar[set[str]] = {
         "stats--label", "stats--value", "stats--result", "stats--no-path", "stats--narration",
@@ -33,7 +47,7 @@ class Stats(PartsLines):
 
     DEFAULT_CSS = """
     Stats {
-        height: 2;
+        height: auto;
         padding: 0 1;
         background: $panel;
         & > .stats--label { color: $text-muted; }
@@ -63,45 +77,54 @@ class Stats(PartsLines):
     ) -> None:
         """``label`` names the search (default: the algorithm's short name); ``done`` adds
         "done at step k" (a compare pane whose run ended before the others)."""
-        sep = (" │ ", "stats--label")
-        status: Parts = [(label or get_algorithm(algorithm).short, "stats--value")]
+        status = [Piece([(label or get_algorithm(algorithm).short, "stats--value")])]
         if done and run is not None:
-            status += [sep, (f"done at step {run.k:,}", "stats--result")]
+            status.append(Piece([(f"done at step {run.k:,}", "stats--result")], DONE_RANK, SEP))
         differences = run.semantics.differences(run.algo) if run is not None else []
         if run is not None and not run.admissible:
             differences.append(INADMISSIBLE)
         if differences:  # always say what differs
-            status.append((" · " + " · ".join(differences), "stats--note"))
+            status.append(Piece([("· " + " · ".join(differences), "stats--note")], 0,
+                                (" ", "stats--note")))
         if run is not None:
+            noun = frontier_word(run)
             for name, value in status_parts(run):
-                status += [sep, (f"{name} ", "stats--label"), (value, "stats--value")]
+                parts = [(f"{name} ", "stats--label"), (value, "stats--value")]
+                if name == noun:  # "(peak 8)": the first to go, but for the playing speed
+                    short = [parts[0], (value.partition(" (")[0], "stats--value")]
+                    status.append(Piece(parts, PEAK_RANK, SEP, short))
+                else:
+                    status.append(Piece(parts, RANKS.get(name, 1), SEP))
         if playing:
-            status += [sep, (playing, "stats--play")]
-        line: Parts
+            status.append(Piece([(playing, "stats--play")], PLAYING_RANK, SEP))
+        line: list[Piece]
         if note:
-            line = [(note, "stats--note")]
+            line = [Piece([(note, "stats--note")])]
         elif run is None:
             line = []
         else:
             failed = run.at_end and not run.found and not run.gave_up  # "no path", in red
-            line = [(narrate(run), "stats--no-path" if failed else "stats--narration")]
-            if run.at_end and run.found:
-                line += [(" · ", "stats--label"), (result_text(run), "stats--result")]
+            line = [Piece([(narrate(run), "stats--no-path" if failed else "stats--narration")])]
+            if run.at_end and run.found:  # the path, and the bound: what the lesson is about
+                # (a pane of several: the comparison table says them too, and the map comes
+                # first: the bound goes first, the path after the counts)
+                ranks = (PATH_RANK, BOUND_RANK) if label else (0, 0)
+                line += [Piece([(text, "stats--result")], rank, (" · ", "stats--label"))
+                         for text, rank in zip(result_text(run).split(" · "), ranks)]
+        self.MAX_ROWS = PANE_ROWS if label else MAX_ROWS
         self._put_lines(status, line)
 
     def show_compare(self, labels: list[str], *, playing: str = "", note: str = "",
                      sentence: str = "") -> None:
         """Compare mode's lines: the searches and the playback, then a note or ``sentence``
         (how the lockstep goes)."""
-        sep = (" │ ", "stats--label")
-        status: Parts = [("compare ", "stats--label"), (" · ".join(labels), "stats--value")]
+        status = [Piece([("compare ", "stats--label"), (" · ".join(labels), "stats--value")])]
         if playing:
-            status += [sep, (playing, "stats--play")]
-        line: Parts = [(note, "stats--note")] if note else [(sentence, "stats--narration")]
+            status.append(Piece([(playing, "stats--play")], PLAYING_RANK, SEP))
+        line = [Piece([(note, "stats--note")] if note else [(sentence, "stats--narration")])]
         self._put_lines(status, line)
 
-    def _put_lines(self, status: Parts, line: Parts) -> None:
-        if self.set_lines([status, line]):
-            self.status_text = "".join(text for text, _ in status)
-            self.narration_text = "".join(text for text, _ in line)
-
+    def _put_lines(self, status: list[Piece], line: list[Piece]) -> None:
+        if self.set_lines([Line(status), Line(line, prose=True)]):
+            self.status_text = line_text(status)
+            self.narration_text = line_text(line)

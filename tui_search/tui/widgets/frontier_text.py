@@ -1,0 +1,61 @@
+"""What the frontier panel's lines say, as text (no Textual): a priority queue's figures, the
+end hints, what an empty frontier means.  The panel (:mod:`~tui_search.tui.widgets.
+frontier_panel`) lays them out."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from tui_search.engine.algorithms import Frontier
+from tui_search.tui.narration import gave_up_text
+
+if TYPE_CHECKING:
+    from tui_search.engine.run import Run
+
+
+def figures(run: Run, g: int, width: int) -> list[str]:
+    """A priority queue's figures for event ``g``, the priority first, each number ``width``
+    wide: "f 6.41", "g 2.41", "h 4.00" (A*), "g 2.41" (UCS), "h 4.00", "g 2.41" (greedy);
+    none otherwise."""
+    costs = run.gen_costs(g)
+    if costs is None:
+        return []
+    cost, h, f = costs
+    named = {"g": [("g", cost)], "h": [("h", h), ("g", cost)],
+             "g+h": [("f", f), ("g", cost), ("h", h)]}[run.algo.priority or "g"]
+    return [f"{name} {value:>{width}.2f}" for name, value in named]
+
+
+def costs_column(run: Run, g: int, width: int, squeeze: int = 0) -> str:
+    """The figures as an entry's column: "  f 6.41 g 2.41 h 4.00"; empty for none.  In a
+    panel too narrow for them, ``squeeze`` 1: " f 6.41 g 2.41 h 4.00"; 2: " f6.41 g2.41
+    h4.00" (no number is ever cut)."""
+    shown = figures(run, g, width)
+    if squeeze == 2:
+        shown = [figure.replace(" ", "", 1) for figure in shown]
+    return ("  " if squeeze == 0 else " ") + " ".join(shown) if shown else ""
+
+
+def end_hint(kind: Frontier, i: int, n: int) -> str:
+    """The hint beside entry ``i`` of ``n``: which end is which."""
+    only, next_out, far_end = kind.end_hints
+    if n == 1:
+        return only
+    if i == 0:
+        return next_out
+    if i == n - 1:
+        return far_end
+    return ""
+
+
+def describe_empty(run: Run) -> str:
+    """What an empty frontier means at the run's position."""
+    if run.k < run.recorded or not run.done:
+        if run.algo.iterative:
+            limit = run.depth_limit()
+            nxt = 1 if limit is None else limit + 1
+            return f"empty — iteration over; next: depth limit {nxt}"
+        return "empty"
+    if run.gave_up:
+        return f"empty — {gave_up_text(run)}"
+    return "empty" if run.found else "empty — no path"
