@@ -30,6 +30,8 @@ MAX_PANES = 4
 NEEDS_ENDPOINTS = "Place a start (s) and a goal (g) to search"
 LOCKSTEP = ("Lockstep: n steps every search not done yet, p steps back the latest, "
             "end runs them all to the end · 1-6 add or take out a search · c one search")
+#: The same where the long one would take two lines (the panes need them more).
+LOCKSTEP_SHORT = "Lockstep: n, p and end move every search · 1-6 add or take out · c one"
 
 #: Where each run was before a move: its step, and whether it was at its end.
 Before = list[tuple[int, bool]]
@@ -367,4 +369,4 @@ class Session:
         return check(self.exercise, self.grid, tutorial_grid(), self.max_steps)
 
 
-__all__ = ["DEFAULT_COMPARE", "LOCKSTEP", "NEEDS_ENDPOINTS", "Session", "normal_spec"]
+__all__ = ["DEFAULT_COMPARE", "LOCKSTEP", "LOCKSTEP_SHORT", "NEEDS_ENDPOINTS", "Session", "normal_spec"]

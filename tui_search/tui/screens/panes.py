@@ -30,7 +30,7 @@ from tui_search.tui.keys import KEY_IMPORTANCE
 from tui_search.tui.layout import PANE_STATS_HEIGHT, arrange
 from tui_search.tui.narration import group_digits
 from tui_search.tui.readout import describe_each
-from tui_search.tui.session import LOCKSTEP, NEEDS_ENDPOINTS, Before, Session
+from tui_search.tui.session import LOCKSTEP, LOCKSTEP_SHORT, NEEDS_ENDPOINTS, Before, Session
 from tui_search.tui.widgets.cell_readout import CellReadout
 from tui_search.tui.widgets.challenge import ChallengePanel
 from tui_search.tui.widgets.compare_table import CompareTable
@@ -100,6 +100,11 @@ class PanesScreen(Screen[None]):
 
     def on_resize(self, event: events.Resize) -> None:
         self._check_size(event.size.width, event.size.height)
+        self.call_after_refresh(self.fit_panes)
+
+    def on_stats_height_changed(self, message: Stats.HeightChanged) -> None:
+        """A status line took a row more or less (its text wrapped anew): fit the panes to
+        the room that leaves."""
         self.call_after_refresh(self.fit_panes)
 
     def fit_panes(self) -> None:
@@ -214,8 +219,9 @@ class PanesScreen(Screen[None]):
         all a seek's progress changes."""
         session = self.session
         if len(self.panes) > 1:
+            sentence = LOCKSTEP if len(LOCKSTEP) + 2 <= self.size.width else LOCKSTEP_SHORT
             self.stats.show_compare(session.labels, playing=self._playing_text(),
-                                    note=session.note, sentence=LOCKSTEP)
+                                    note=session.note, sentence=sentence)
         else:
             self.stats.show(session.run, session.algorithm, playing=self._playing_text(),
                             note=session.note)

@@ -40,11 +40,11 @@ class RunPane(Vertical):
         self.lists = Vertical(classes="pane-lists")
 
     def compose(self) -> ComposeResult:
-        yield self.stats
-        with self.lists:
+        with self.lists:  # docked first: beside the map, it spans the pane's whole height
             yield self.frontier
             yield self.tree_panel
             yield self.side_note
+        yield self.stats
         with self.map_box:
             yield self.view
 

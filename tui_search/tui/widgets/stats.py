@@ -12,6 +12,9 @@ from __future__ import annotations
 
 from typing import ClassVar
 
+from textual import events
+from textual.message import Message
+
 from tui_search.engine.algorithms import get_algorithm
 from tui_search.engine.heuristics import INADMISSIBLE
 from tui_search.engine.run import Run
@@ -64,6 +67,7 @@ class Stats(PartsLines):
         super().__init__(id=id, classes=classes)
         self.status_text = ""
         self.narration_text = ""
+        self._height: int | None = None  # the rows laid out last
 
     def show(
         self,
@@ -113,6 +117,15 @@ class Stats(PartsLines):
                          for text, rank in zip(result_text(run).split(" · "), ranks)]
         self.MAX_ROWS = PANE_ROWS if label else MAX_ROWS
         self._put_lines(status, line)
+
+    class HeightChanged(Message):
+        """The lines took a row more or less: the room around them changed."""
+
+    def on_resize(self, event: events.Resize) -> None:
+        if event.size.height != self._height:
+            if self._height is not None:
+                self.post_message(self.HeightChanged())
+            self._height = event.size.height
 
     def show_compare(self, labels: list[str], *, playing: str = "", note: str = "",
                      sentence: str = "") -> None:
