@@ -15,6 +15,7 @@ def overview_after_steps(steps: int):
 
     async def run_before(pilot) -> None:
         app = pilot.app
+        await pilot.pause()  # the screen mounted
         app.session.run.goto(steps)
         app.main.action_first()  # a full redraw ...
         app.session.run.goto(steps)

@@ -24,6 +24,8 @@ LISTS_MIN_HEIGHT, LISTS_MIN_WIDTH, LISTS_MAX_WIDTH = 6, 38, 56
 TREES_MIN_HEIGHT = 9
 #: Beside the lists, a map that cannot fit whole gets at least this many columns.
 MAP_MIN_WIDTH = 20
+#: A pane's own status lines share the map's column beside the lists: at least this wide.
+STATS_MIN_WIDTH = 40
 #: A pane's own status lines (its search's figures and narration).
 PANE_STATS_HEIGHT = 2
 
@@ -86,9 +88,10 @@ def arrange(n: int, width: int, height: int, map_size: tuple[int, int], *,
             rows = -(-n // columns)
             pane_w, pane_h = width // columns, room // rows - stats
             pane = _pane(columns, rows, table, stats > 0, pane_w, pane_h, map_size, fold_trees)
-            candidates.append(((pane.fits, pane.lists, pane.trees or fold_trees, table,
-                                columns == preferred), pane))
-    # What gives way first: the table, then the trees, then the lists; the map never.
+            candidates.append(((pane.fits, pane.lists, pane.trees or fold_trees,
+                                columns == preferred, table), pane))
+    # What gives way first: the table, then the grid's best proportions, then the trees,
+    # then the lists; the map never.
     return max(candidates, key=lambda ranked: ranked[0])[1]
 
 
@@ -100,7 +103,8 @@ def _pane(columns: int, rows: int, table: bool, pane_stats: bool, pane_w: int, p
     map_w, map_h = map_size
     need_w, need_h = 2 * map_w + 2, map_h + 2  # the smallest cells, in a border
     side = lists_width(pane_w)
-    if pane_w >= 3 * pane_h and pane_w - side >= min(need_w, MAP_MIN_WIDTH):
+    beside_w = max(min(need_w, MAP_MIN_WIDTH), STATS_MIN_WIDTH if pane_stats else 0)
+    if pane_w >= 3 * pane_h and pane_w - side >= beside_w:
         return Arrangement(columns, rows, table, pane_stats, True, side, 0, not fold_trees,
                            0, need_h <= pane_h, pane_w)
     if need_h + LISTS_MIN_HEIGHT <= pane_h:
