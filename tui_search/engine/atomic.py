@@ -53,7 +53,7 @@ def remove_stale_temps(target: str, now: float | None = None) -> list[str]:
     folder, base = os.path.split(os.path.abspath(target))
     pattern = _temp_pattern(base)
     limit = (time.time() if now is None else now) - STALE_TEMP_SECONDS
-    removed = []
+    removed: list[str] = []
     try:
         entries = list(os.scandir(folder))
     except OSError:

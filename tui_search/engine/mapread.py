@@ -33,8 +33,8 @@ __all__ = [
     "quoted",
     "read_map_file",
     "read_text",
-    "stamp_of",
     "split_lines",
+    "stamp_of",
     "stripped_lines",
 ]
 
