@@ -213,3 +213,32 @@ def test_a_device_is_refused(tmp_path: Path) -> None:
 def test_load_map_binary(tmp_path: Path, content: bytes) -> None:
     path = write(tmp_path, "b.map", content)
     assert error_of(load_map, path) == f"{path}: binary file, not a text map"
+
+
+@pytest.mark.parametrize("row", [".", "..........", "T" * 80])
+def test_loading_a_map_of_many_short_rows_peaks_near_its_size(tmp_path: Path, row: str) -> None:
+    """A map of millions of one-cell rows once peaked at about 90 times its size (a Python
+    object per row, twice): now about 10 (the text, the lines, a compact grid)."""
+    rows = 500_000 // (len(row) + 1)
+    if row == ".":
+        text = "S\n" + f"{row}\n" * rows + "G\n"
+    else:
+        text = f"type octile\nheight {rows}\nwidth {len(row)}\nmap\n" + f"{row}\n" * rows
+    path = write(tmp_path, "many.txt", text)
+    load_map(path)  # once first, so one-off caches do not count
+    tracemalloc.start()
+    try:
+        grid = load_map(path)
+        _, peak = tracemalloc.get_traced_memory()
+    finally:
+        tracemalloc.stop()
+    assert grid.height >= rows
+    assert peak < 12 * len(text)
+
+
+def test_a_map_over_the_limit_is_refused_in_one_line_naming_it(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr(mapread, "MAX_MAP_BYTES", 1024 * 1024)
+    path = write(tmp_path, "dots.txt", "S\n" + ".\n" * (600 * 1024) + "G\n")
+    assert error_of(load_map, path) == f"{path}: file is 1.2 MB; a map may be at most 1 MB"

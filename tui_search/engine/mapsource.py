@@ -9,6 +9,7 @@ since it was read or saved (:class:`FileStamp`).
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import NamedTuple
 
 __all__ = ["MOVINGAI", "TEXT", "FileStamp", "MapSource"]
@@ -43,7 +44,7 @@ class MapSource(NamedTuple):
 
     kind: str  # TEXT or MOVINGAI
     lines: tuple[str, ...]
-    rows: tuple[int, ...]
+    rows: Sequence[int]  # a range, or an array of ints: compact for millions of rows
     width: int
     bom: bool = False
     stamp: FileStamp | None = None

@@ -62,7 +62,7 @@ def _fresh_source(grid: Grid, kind: str) -> MapSource:
         header = ["type octile", f"height {grid.height}", f"width {grid.width}", "map"]
         rows = movingai_rows(grid)
     lines = (*header, *rows, "")
-    return MapSource(kind, lines, tuple(range(len(header), len(header) + len(rows))), grid.width)
+    return MapSource(kind, lines, range(len(header), len(header) + len(rows)), grid.width)
 
 
 def kind_for_path(path: str | os.PathLike[str]) -> str:
