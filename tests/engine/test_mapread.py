@@ -125,32 +125,27 @@ def test_loading_a_small_map_allocates_little() -> None:
     assert peak < 256 * 1024
 
 
-def fifo_fed(path: Path, data: bytes) -> tuple[Path, threading.Thread]:
-    """A named pipe at ``path`` (``os.stat`` says 0 bytes) that a thread fills with ``data``."""
-    os.mkfifo(path)
+def stat_says_empty(monkeypatch: pytest.MonkeyPatch) -> None:
+    """``os.fstat`` says 0 bytes: the file grew after it was looked at."""
+    real_fstat = os.fstat
 
-    def feed() -> None:
-        with open(path, "wb") as pipe:
-            try:
-                pipe.write(data)
-            except BrokenPipeError:  # the reader stopped at the cap
-                pass
+    def fstat(fd: int) -> os.stat_result:
+        st = real_fstat(fd)
+        return os.stat_result((st.st_mode, st.st_ino, st.st_dev, st.st_nlink, st.st_uid,
+                               st.st_gid, 0, st.st_atime, st.st_mtime, st.st_ctime))
 
-    thread = threading.Thread(target=feed, daemon=True)
-    thread.start()
-    return path, thread
+    monkeypatch.setattr(mapread.os, "fstat", fstat)
 
 
-@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="no named pipes on this system")
 def test_a_map_longer_than_stat_said_is_read_in_chunks_up_to_the_cap(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    """A pipe or a growing file holds more than ``os.stat`` said: the rest is read in bounded
-    chunks, and never more than the cap plus one byte."""
+    """A file growing while it is read holds more than ``os.fstat`` said: the rest is read in
+    bounded chunks, and never more than the cap plus one byte."""
     monkeypatch.setattr(mapread, "_READ_CHUNK", 5)
-    path, thread = fifo_fed(tmp_path / "pipe.txt", TUTORIAL.encode())
+    path = write(tmp_path, "grew.txt", TUTORIAL)
+    stat_says_empty(monkeypatch)
     assert load_map(path) == parse_text_map(TUTORIAL)
-    thread.join(10)
     monkeypatch.setattr(mapread, "MAX_MAP_BYTES", 1024 * 1024)
     reads: list[int] = []
     real_open = open
@@ -163,10 +158,52 @@ def test_a_map_longer_than_stat_said_is_read_in_chunks_up_to_the_cap(
 
     monkeypatch.setattr(mapread, "open", spying_open, raising=False)
     monkeypatch.setattr(mapread, "_READ_CHUNK", 64 * 1024)
-    path, thread = fifo_fed(tmp_path / "big.txt", b"." * (3 * 1024 * 1024))
+    path = write(tmp_path, "big.txt", b"." * (3 * 1024 * 1024))
+    monkeypatch.setattr(mapread, "_check_kind", lambda path, st: None)  # past the os.stat
     assert error_of(load_map, path) == f"{path}: file is 1.1 MB; a map may be at most 1 MB"
     assert max(reads) <= 64 * 1024 and sum(reads) == 1024 * 1024 + 1
-    thread.join(10)
+
+
+def within_seconds(seconds: float, func, *args: object) -> object:  # type: ignore[no-untyped-def]
+    """``func(*args)``'s result or exception, failing the test if it takes longer (a hang)."""
+    outcome: list[object] = []
+
+    def call() -> None:
+        try:
+            outcome.append(func(*args))
+        except Exception as exc:  # noqa: BLE001 - handed back to the test
+            outcome.append(exc)
+
+    thread = threading.Thread(target=call, daemon=True)
+    thread.start()
+    thread.join(seconds)
+    assert outcome, f"{func.__name__} hung"
+    return outcome[0]
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="no named pipes on this system")
+def test_a_fifo_is_refused_at_once(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A named pipe with no writer would block ``open`` (and ``read``) forever."""
+    path = tmp_path / "pipe.txt"
+    os.mkfifo(path)
+    error = within_seconds(5, load_map, path)
+    assert isinstance(error, MapError) and str(error) == f"{path}: not a regular file"
+    # Swapped in between the os.stat and the open: the open does not block, fstat refuses it.
+    real_stat = os.stat
+    regular = real_stat(write(tmp_path, "m.txt", TUTORIAL))
+    monkeypatch.setattr(mapread.os, "stat", lambda p, *a, **k: regular if p == str(path)
+                        else real_stat(p, *a, **k))
+    error = within_seconds(5, load_map, path)
+    assert isinstance(error, MapError) and str(error) == f"{path}: not a regular file"
+
+
+@pytest.mark.skipif(not os.path.exists("/dev/zero"), reason="no /dev/zero on this system")
+def test_a_device_is_refused(tmp_path: Path) -> None:
+    link = tmp_path / "zero.txt"
+    link.symlink_to("/dev/zero")
+    for path in (Path("/dev/zero"), link):
+        error = within_seconds(5, load_map, path)
+        assert isinstance(error, MapError) and str(error) == f"{path}: not a regular file"
 
 
 @pytest.mark.parametrize(
@@ -176,3 +213,32 @@ def test_a_map_longer_than_stat_said_is_read_in_chunks_up_to_the_cap(
 def test_load_map_binary(tmp_path: Path, content: bytes) -> None:
     path = write(tmp_path, "b.map", content)
     assert error_of(load_map, path) == f"{path}: binary file, not a text map"
+
+
+@pytest.mark.parametrize("row", [".", "..........", "T" * 80])
+def test_loading_a_map_of_many_short_rows_peaks_near_its_size(tmp_path: Path, row: str) -> None:
+    """A map of millions of one-cell rows once peaked at about 90 times its size (a Python
+    object per row, twice): now about 10 (the text, the lines, a compact grid)."""
+    rows = 500_000 // (len(row) + 1)
+    if row == ".":
+        text = "S\n" + f"{row}\n" * rows + "G\n"
+    else:
+        text = f"type octile\nheight {rows}\nwidth {len(row)}\nmap\n" + f"{row}\n" * rows
+    path = write(tmp_path, "many.txt", text)
+    load_map(path)  # once first, so one-off caches do not count
+    tracemalloc.start()
+    try:
+        grid = load_map(path)
+        _, peak = tracemalloc.get_traced_memory()
+    finally:
+        tracemalloc.stop()
+    assert grid.height >= rows
+    assert peak < 12 * len(text)
+
+
+def test_a_map_over_the_limit_is_refused_in_one_line_naming_it(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr(mapread, "MAX_MAP_BYTES", 1024 * 1024)
+    path = write(tmp_path, "dots.txt", "S\n" + ".\n" * (600 * 1024) + "G\n")
+    assert error_of(load_map, path) == f"{path}: file is 1.2 MB; a map may be at most 1 MB"

@@ -1,15 +1,25 @@
 """Writing a file atomically, and saying in a few words why an OS call on a file failed.
 
 Saving a map and saving the app's config file both replace the file this way, so a crash or a
-full disk never leaves half a file.  Stdlib only.
+full disk never leaves half a file; the file keeps its permissions, owner and group, a symlink
+stays a link, and what a killed save left behind is cleaned up at the next one.  Writing in
+place (for a file with hard links, which a rename would split) is here too.  Stdlib only.
 """
 
 from __future__ import annotations
 
 import os
+import re
 import stat
+import time
 
-__all__ = ["os_reason", "write_atomically"]
+__all__ = [
+    "STALE_TEMP_SECONDS",
+    "os_reason",
+    "remove_stale_temps",
+    "write_atomically",
+    "write_in_place",
+]
 
 
 def os_reason(err: OSError) -> str:
@@ -26,16 +36,56 @@ def os_reason(err: OSError) -> str:
     return reason[:1].lower() + reason[1:]
 
 
+#: A temporary file of :func:`write_atomically` untouched for this long is left over from a
+#: save that was killed (a live save writes, fsyncs and renames it within moments).
+STALE_TEMP_SECONDS = 30.0
+
+
+def _temp_pattern(base: str) -> re.Pattern[str]:
+    """The names of this module's temporary files for a target named ``base``, exactly."""
+    return re.compile(rf"\.{re.escape(base)}\.[0-9a-f]{{8}}\.tmp")
+
+
+def remove_stale_temps(target: str, now: float | None = None) -> list[str]:
+    """Remove the temporary files a killed :func:`write_atomically` of ``target`` left beside
+    it: regular files named exactly ``.NAME.XXXXXXXX.tmp`` (8 hex digits) and older than
+    :data:`STALE_TEMP_SECONDS`; nothing else.  Best effort; returns the names removed."""
+    folder, base = os.path.split(os.path.abspath(target))
+    pattern = _temp_pattern(base)
+    limit = (time.time() if now is None else now) - STALE_TEMP_SECONDS
+    removed: list[str] = []
+    try:
+        entries = list(os.scandir(folder))
+    except OSError:
+        return removed
+    for entry in entries:
+        if not pattern.fullmatch(entry.name):
+            continue
+        try:
+            st = entry.stat(follow_symlinks=False)
+            if stat.S_ISREG(st.st_mode) and st.st_mtime < limit:
+                os.unlink(entry.path)
+                removed.append(entry.name)
+        except OSError:
+            continue
+    return removed
+
+
 def write_atomically(target: str, data: bytes) -> None:
     """Replace ``target`` by ``data``: readers (and a crash) see the old file or the new one,
     never half of one.  A temporary file beside the target is written, fsynced and renamed
-    over the target (keeping the target's permissions).  On failure the temporary file is
-    removed, the old file is untouched, and the OSError propagates."""
-    folder = os.path.dirname(os.path.abspath(target))
+    over the target, keeping the target's permissions, and its owner and group where the
+    process may set them.  A symlink is followed: its target is replaced and the link stays.
+    Stale temporary files of an earlier, killed write are removed first
+    (:func:`remove_stale_temps`).  On failure the temporary file is removed, the old file is
+    untouched, and the OSError propagates."""
+    target = os.path.realpath(target)
+    folder = os.path.dirname(target)
+    remove_stale_temps(target)
     try:
-        old_mode: int | None = stat.S_IMODE(os.stat(target).st_mode)
+        old: os.stat_result | None = os.stat(target)
     except OSError:
-        old_mode = None
+        old = None
     tmp = ""  # set once the temporary file exists, cleared once it has been renamed
     try:
         # os.open with 0o666 applies the umask like any new file (mkstemp would make it
@@ -51,8 +101,8 @@ def write_atomically(target: str, data: bytes) -> None:
         else:  # pragma: no cover - 100 random clashes in a row
             raise FileExistsError("could not pick a temporary file name")
         with os.fdopen(fd, "wb") as handle:
-            if old_mode is not None and hasattr(os, "fchmod"):
-                os.fchmod(handle.fileno(), old_mode)
+            if old is not None:
+                _keep_owner_and_mode(handle.fileno(), old)
             handle.write(data)
             handle.flush()
             os.fsync(handle.fileno())
@@ -65,6 +115,34 @@ def write_atomically(target: str, data: bytes) -> None:
             except OSError:
                 pass
     _fsync_dir(folder)
+
+
+def write_in_place(target: str, data: bytes) -> None:
+    """Overwrite the file ``target`` with ``data`` where it is (write, truncate, fsync), so
+    that its hard links keep sharing it.  Not atomic: a crash may leave half a file."""
+    fd = os.open(target, os.O_WRONLY)
+    with os.fdopen(fd, "wb") as handle:
+        handle.write(data)
+        handle.truncate(len(data))
+        handle.flush()
+        os.fsync(handle.fileno())
+
+
+def _keep_owner_and_mode(fd: int, old: os.stat_result) -> None:
+    """Give the new file the old one's owner and group (or its group alone, or neither: as
+    far as the process may), then its permissions (after: a chown may clear set-id bits)."""
+    if hasattr(os, "fchown"):
+        new = os.fstat(fd)
+        for uid, gid in ((old.st_uid, old.st_gid), (-1, old.st_gid)):
+            if (new.st_uid, new.st_gid) == (old.st_uid, old.st_gid):
+                break
+            try:
+                os.fchown(fd, uid, gid)
+                break
+            except OSError:  # not allowed (PermissionError), or not on this filesystem
+                continue
+    if hasattr(os, "fchmod"):
+        os.fchmod(fd, stat.S_IMODE(old.st_mode))
 
 
 def _fsync_dir(folder: str) -> None:

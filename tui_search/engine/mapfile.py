@@ -12,7 +12,7 @@ import os
 import re
 
 from tui_search.engine.grid import Cell, Grid
-from tui_search.engine.mapread import MAX_DIGITS, check_cell, quoted, read_text
+from tui_search.engine.mapread import MAX_DIGITS, check_cell, quoted, read_map_file
 from tui_search.engine.movingai import parse_movingai_map
 from tui_search.engine.textmap import parse_text_map
 
@@ -54,9 +54,16 @@ def parse_map_text(
 def load_map(
     path: str | os.PathLike[str], *, start: Cell | None = None, goal: Cell | None = None
 ) -> Grid:
-    """Read a map file of either format (see :func:`parse_map_text` for the overrides)."""
+    """Read a map file of either format (see :func:`parse_map_text` for the overrides).
+
+    The grid's ``source`` remembers the file as read (its ``stamp``), so that saving can
+    tell whether someone else changed it since; loading again is how to reload."""
     where = os.fsdecode(path)
-    return parse_map_text(read_text(where), where, start=start, goal=goal)
+    text, stamp = read_map_file(where)
+    grid = parse_map_text(text, where, start=start, goal=goal)
+    if grid.source is not None:
+        grid.source = grid.source._replace(stamp=stamp)
+    return grid
 
 
 _CELL = re.compile(r"\(?\s*(-?[0-9]+)\s*,\s*(-?[0-9]+)\s*\)?")

@@ -10,6 +10,7 @@ Stdlib only: the engine must not depend on the UI libraries.
 
 from __future__ import annotations
 
+import hashlib
 import math
 import os
 import re
@@ -18,6 +19,7 @@ from typing import BinaryIO
 
 from tui_search.engine.atomic import os_reason
 from tui_search.engine.grid import Cell, Grid
+from tui_search.engine.mapsource import FileStamp
 
 __all__ = [
     "MAX_DIGITS",
@@ -26,10 +28,13 @@ __all__ = [
     "MapError",
     "block_table",
     "check_cell",
+    "current_stamp",
     "first_bad",
     "quoted",
+    "read_map_file",
     "read_text",
     "split_lines",
+    "stamp_of",
     "stripped_lines",
 ]
 
@@ -90,25 +95,71 @@ def quoted(text: str, limit: int = 40) -> str:
 
 
 def read_text(path: str) -> str:
-    """The file's text, or a MapError saying why it cannot be a map.
+    """The file's text, or a MapError saying why it cannot be a map (see :func:`read_map_file`)."""
+    return read_map_file(path)[0]
 
-    The size is checked with ``os.stat`` before anything is read, and the read itself is
-    capped too, for pipes and files that grow while we look (:func:`_read_capped`).
+
+def read_map_file(path: str) -> tuple[str, FileStamp]:
+    """The file's text and its :class:`FileStamp`, or a MapError saying why it cannot be a map.
+
+    Only a regular file is read: a FIFO or a device is refused at once (it could block the
+    read forever).  The size is checked with ``os.stat`` before anything is read, and the
+    read itself is capped too, for files that grow while we look (:func:`_read_capped`).
     """
+    data, st = _read_regular(path)
+    if b"\x00" in data:
+        raise MapError(path, "binary file, not a text map")
     try:
-        st = os.stat(path)
+        text = data.decode("utf-8")
+    except UnicodeDecodeError:
+        raise MapError(path, "binary file, not a text map") from None
+    return text, stamp_of(path, data, st)
+
+
+def stamp_of(path: str, data: bytes, st: os.stat_result) -> FileStamp:
+    """The stamp of the file at ``path`` holding ``data`` (``st`` its ``os.stat``)."""
+    real = os.path.realpath(path)
+    return FileStamp(real, len(data), st.st_mtime_ns, hashlib.sha256(data).hexdigest())
+
+
+def current_stamp(path: str) -> FileStamp | None:
+    """The stamp of the file now at ``path``, or None when there is none (or it cannot be
+    read as a map file: then nothing in it can be lost by a save the OS allows)."""
+    try:
+        data, st = _read_regular(path)
+    except MapError:
+        return None
+    return stamp_of(path, data, st)
+
+
+def _open_nonblocking(name: str, flags: int) -> int:
+    """``open``'s opener: a FIFO swapped in after the ``os.stat`` must not block the open."""
+    return os.open(name, flags | getattr(os, "O_NONBLOCK", 0))
+
+
+def _check_kind(path: str, st: os.stat_result) -> None:
+    if stat.S_ISDIR(st.st_mode):
+        raise MapError(path, "is a directory, not a map file")
+    if not stat.S_ISREG(st.st_mode):
+        raise MapError(path, "not a regular file")
+    if st.st_size > MAX_MAP_BYTES:
+        raise MapError(path, _too_big(st.st_size))
+
+
+def _read_regular(path: str) -> tuple[bytes, os.stat_result]:
+    """The bytes of the regular file at ``path`` (at most the cap) and its ``os.fstat``."""
+    try:
+        _check_kind(path, os.stat(path))
     except (FileNotFoundError, NotADirectoryError):
         raise MapError(path, "no such file") from None
     except OSError as err:
         raise MapError(path, os_reason(err)) from None
     except ValueError:  # e.g. an embedded NUL in the path
         raise MapError(path, "not a valid file name") from None
-    if stat.S_ISDIR(st.st_mode):
-        raise MapError(path, "is a directory, not a map file")
-    if st.st_size > MAX_MAP_BYTES:
-        raise MapError(path, _too_big(st.st_size))
     try:
-        with open(path, "rb") as handle:
+        with open(path, "rb", opener=_open_nonblocking) as handle:
+            st = os.fstat(handle.fileno())
+            _check_kind(path, st)
             data = _read_capped(handle, st.st_size)
     except IsADirectoryError:
         raise MapError(path, "is a directory, not a map file") from None
@@ -116,12 +167,7 @@ def read_text(path: str) -> str:
         raise MapError(path, os_reason(err)) from None
     if len(data) > MAX_MAP_BYTES:
         raise MapError(path, _too_big(len(data)))
-    if b"\x00" in data:
-        raise MapError(path, "binary file, not a text map")
-    try:
-        return data.decode("utf-8")
-    except UnicodeDecodeError:
-        raise MapError(path, "binary file, not a text map") from None
+    return data, st
 
 
 def _read_capped(handle: BinaryIO, expected: int) -> bytes:
@@ -130,7 +176,7 @@ def _read_capped(handle: BinaryIO, expected: int) -> bytes:
 
     ``handle.read(n)`` allocates ``n`` bytes before it reads, so asking for the cap at once
     costs 64 MB for a six-line map.  Instead ask for what ``os.stat`` said plus one byte (which
-    sees a file that grew), then, only while every read is filled (a pipe, a growing file), for
+    sees a file that grew), then, only while every read is filled (a growing file), for
     bounded chunks up to the cap.  A buffered read returns less than asked only at the end.
     """
     limit = MAX_MAP_BYTES + 1

@@ -3,21 +3,35 @@
 Saving keeps the file: a map read from a file carries its text (``Grid.source``, a
 :class:`~tui_search.engine.mapsource.MapSource`), and :func:`save_map` writes that text back
 with only the characters of edited cells changed, so comments, the MovingAI header, CRLF
-line ends and a missing final newline all survive.
+line ends and a missing final newline all survive.  A save never loses someone's work: it
+refuses (a MapError subclass the app can ask about) to write a file that would not load, a
+read-only file, one changed on disk since it was read, or one with hard links.
 """
 
 from __future__ import annotations
 
 import os
+import stat
 
-from tui_search.engine.atomic import os_reason, write_atomically
+from tui_search.engine.atomic import os_reason, write_atomically, write_in_place
 from tui_search.engine.grid import Grid
-from tui_search.engine.mapread import MapError
-from tui_search.engine.mapsource import MOVINGAI, TEXT, MapSource
+from tui_search.engine.mapfile import parse_map_text
+from tui_search.engine.mapread import MapError, current_stamp, stamp_of
+from tui_search.engine.mapsource import MOVINGAI, TEXT, FileStamp, MapSource
 from tui_search.engine.movingai import movingai_rows
 from tui_search.engine.textmap import text_rows
 
-__all__ = ["format_map", "format_text_map", "kind_for_path", "save_map", "save_text_map"]
+__all__ = [
+    "ChangedOnDisk",
+    "HardLinked",
+    "ReadOnlyFile",
+    "WouldNotLoad",
+    "format_map",
+    "format_text_map",
+    "kind_for_path",
+    "save_map",
+    "save_text_map",
+]
 
 
 def _fits(source: MapSource, grid: Grid) -> bool:
@@ -48,7 +62,7 @@ def _fresh_source(grid: Grid, kind: str) -> MapSource:
         header = ["type octile", f"height {grid.height}", f"width {grid.width}", "map"]
         rows = movingai_rows(grid)
     lines = (*header, *rows, "")
-    return MapSource(kind, lines, tuple(range(len(header), len(header) + len(rows))), grid.width)
+    return MapSource(kind, lines, range(len(header), len(header) + len(rows)), grid.width)
 
 
 def kind_for_path(path: str | os.PathLike[str]) -> str:
@@ -78,16 +92,97 @@ def save_text_map(grid: Grid, path: str | os.PathLike[str]) -> None:
     save_map(grid, path, TEXT)
 
 
-def save_map(grid: Grid, path: str | os.PathLike[str], kind: str = TEXT) -> MapSource:
-    """Write :func:`format_map` of ``grid`` atomically (:func:`write_atomically`) and return
-    what was written (the caller makes it the grid's ``source``, so the next save compares with
-    the file on disk).  On failure the old file is untouched and a MapError says why."""
+class ReadOnlyFile(MapError):
+    """The file may not be written (no write permission bit, or not for this user)."""
+
+
+class ChangedOnDisk(MapError):
+    """Someone else changed the file since it was read or last saved: saving would lose
+    their changes.  Save with ``overwrite=True`` to replace them, or load the file again."""
+
+
+class HardLinked(MapError):
+    """The file has other hard links, which replacing it would split.  Save with
+    ``in_place=True`` to write it where it is (not atomic), keeping the links."""
+
+
+class WouldNotLoad(MapError):
+    """What would be written could not be opened again (e.g. a text map whose start is its
+    goal, or without a start): nothing is written."""
+
+
+def save_map(
+    grid: Grid,
+    path: str | os.PathLike[str],
+    kind: str = TEXT,
+    *,
+    overwrite: bool = False,
+    in_place: bool = False,
+) -> MapSource:
+    """Write :func:`format_map` of ``grid`` atomically (:func:`write_atomically`: a symlink's
+    target is written, the owner, group and mode are kept) and return what was written with
+    its new ``stamp`` (the caller makes it the grid's ``source``, so the next save compares
+    with the file on disk).
+
+    Refused, with the file untouched, when what would be written does not load
+    (:class:`WouldNotLoad`), the file is not a regular one, is read-only
+    (:class:`ReadOnlyFile`), changed on disk since ``grid.source`` was read or saved
+    (:class:`ChangedOnDisk`, unless ``overwrite``) or has hard links (:class:`HardLinked`,
+    unless ``in_place``: then it is written where it is).  Any other failure is a MapError
+    saying why; the old file is then untouched too.
+    """
     target = os.fsdecode(path)
     source = format_map(grid, kind)
+    text = source.text()
     try:
-        write_atomically(target, source.text().encode("utf-8"))
+        parse_map_text(text, target)
+    except MapError as err:
+        raise WouldNotLoad(target, f"cannot save: the file would not open again: {err.message}")
+    data = text.encode("utf-8")
+    real = os.path.realpath(target)
+    old = _existing(target, real)
+    if old is not None and not overwrite:
+        stamp = grid.source.stamp if grid.source is not None else None
+        if stamp is not None and stamp.path == real and _changed(stamp, real, old):
+            raise ChangedOnDisk(target, "cannot save: the file changed on disk since it was "
+                                "opened or saved")
+    if old is not None and old.st_nlink > 1 and not in_place:
+        raise HardLinked(target, f"cannot save: the file has {old.st_nlink} hard links, which "
+                         "replacing it would split")
+    try:
+        if old is not None and old.st_nlink > 1:
+            write_in_place(real, data)
+        else:
+            write_atomically(real, data)
+        written = os.stat(real)
     except FileNotFoundError:
         raise MapError(target, "cannot save: the folder does not exist") from None
     except OSError as err:
         raise MapError(target, f"cannot save: {os_reason(err)}") from None
-    return source
+    return source._replace(stamp=stamp_of(real, data, written))
+
+
+def _existing(target: str, real: str) -> os.stat_result | None:
+    """The file to be replaced (None when there is none yet), or a MapError when it must not
+    be: not a regular file, or read-only (even to root, whose writes the mode does not stop:
+    the file's own mode says it is not to be changed)."""
+    try:
+        st = os.stat(real)
+    except OSError:
+        return None  # no file yet, or one the write will fail on and say why
+    if stat.S_ISDIR(st.st_mode):
+        return None  # the write says "is a directory"
+    if not stat.S_ISREG(st.st_mode):
+        raise MapError(target, "cannot save: not a regular file")
+    if not st.st_mode & 0o222 or not os.access(real, os.W_OK):
+        raise ReadOnlyFile(target, "cannot save: the file is read-only")
+    return st
+
+
+def _changed(stamp: FileStamp, real: str, now: os.stat_result) -> bool:
+    """Whether the file's bytes differ from ``stamp``'s (one that can't be read counts as
+    changed: it can't be shown to be the same)."""
+    if now.st_size != stamp.size:
+        return True
+    current = current_stamp(real)
+    return current is None or not current.same_bytes(stamp)

@@ -33,7 +33,9 @@ def parse_movingai_map(text: str, path: str = "<map>") -> Grid:
 
     MovingAI maps carry no start or goal, so both are None.
     """
-    bom, raw = split_lines(text)
+    bom, split = split_lines(text)
+    raw = tuple(split)  # kept in the grid's source: one copy of the lines, not two
+    del split
     lines = [line.rstrip() for line in raw]
     n = len(lines)
     i = 0
@@ -78,10 +80,10 @@ def parse_movingai_map(text: str, path: str = "<map>") -> Grid:
     last = n
     while last > i and not lines[last - 1]:
         last -= 1  # trailing blank lines (a final newline, or more) are not rows
-    rows: list[bytes] = []
+    blocked = bytearray()  # compact, as a big map has millions of rows
     for k in range(i, last):
         number, line = k + 1, lines[k]
-        if len(rows) == height:
+        if k - i == height:
             raise MapError(path, f"more rows than the height ({height}) in the header", number)
         if not line:
             raise MapError(path, "blank line inside the map", number)
@@ -90,14 +92,14 @@ def parse_movingai_map(text: str, path: str = "<map>") -> Grid:
             raise MapError(path, f"unknown cell character {line[bad]!r}", number, bad + 1)
         if len(line) != width:
             raise MapError(path, f"row has {len(line)} cells, expected {width}", number)
-        rows.append(line.encode("ascii").translate(_MAI_BLOCK))
-    if len(rows) < height:
-        found = f"{len(rows)} row" + ("" if len(rows) == 1 else "s")
+        blocked += line.encode("ascii").translate(_MAI_BLOCK)
+    if last - i < height:
+        found = f"{last - i} row" + ("" if last - i == 1 else "s")
         raise MapError(
             path, f"the header says height {height} but the map has {found}", height_line
         )
-    source = MapSource(MOVINGAI, tuple(raw), tuple(range(i, last)), width, bom)
-    return Grid(width, height, bytearray(b"".join(rows)), source=source)
+    source = MapSource(MOVINGAI, raw, range(i, last), width, bom)
+    return Grid(width, height, blocked, source=source)
 
 
 def movingai_rows(grid: Grid, old_rows: list[str] | None = None) -> list[str]:

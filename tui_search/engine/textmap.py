@@ -14,6 +14,7 @@ as such instead of as a bad cell.
 from __future__ import annotations
 
 import re
+from array import array
 
 from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.mapread import MapError, block_table, first_bad, quoted, split_lines
@@ -30,9 +31,13 @@ def parse_text_map(
 ) -> Grid:
     """Parse our text format; the map must have exactly one ``S`` and one ``G`` (at most
     one where ``need_start``/``need_goal`` is false)."""
-    bom, raw = split_lines(text)
-    rows: list[bytes] = []
-    row_lines: list[int] = []  # index in ``raw`` of each row
+    bom, split = split_lines(text)
+    raw = tuple(split)  # kept in the grid's source: one copy of the lines, not two
+    del split
+    # Compact, as a big map has millions of rows: the cells, and where each row is in ``raw``.
+    blocked = bytearray()
+    row_lines = array("q")
+    height = 0
     width = 0
     cells: dict[str, Cell] = {}  # "S"/"G" -> (x, y)
     seen_at: dict[str, tuple[int, int]] = {}  # "S"/"G" -> (line, col), for "a second S"
@@ -41,17 +46,17 @@ def parse_text_map(
         if line.lstrip().startswith(";"):
             continue
         if not line:
-            if rows and blank_line is None:
+            if height and blank_line is None:
                 blank_line = number
             continue
         if blank_line is not None:
             raise MapError(path, "blank line inside the map", blank_line)
         bad = first_bad(line, _TEXT_BAD)
         if bad >= 0:
-            if not rows:
+            if not height:
                 _check_other_format(line, number, path)
             raise MapError(path, f"unknown cell character {line[bad]!r}", number, bad + 1)
-        if not rows:
+        if not height:
             width = len(line)
         elif len(line) != width:
             raise MapError(path, f"row has {len(line)} cells, expected {width}", number)
@@ -60,7 +65,7 @@ def parse_text_map(
             if x < 0:
                 continue
             if letter not in seen_at:
-                cells[letter] = (x, len(rows))
+                cells[letter] = (x, height)
                 seen_at[letter] = (number, x + 1)
                 x = line.find(letter, x + 1)
                 if x < 0:
@@ -73,17 +78,19 @@ def parse_text_map(
                 number,
                 x + 1,
             )
-        rows.append(line.encode("ascii").translate(_TEXT_BLOCK))
+        blocked += line.encode("ascii").translate(_TEXT_BLOCK)
         row_lines.append(number - 1)
-    if not rows:
+        height += 1
+    if not height:
         raise MapError(path, "the map is empty")
     if "S" not in cells and need_start:
         raise MapError(path, "no start 'S' in the map")
     if "G" not in cells and need_goal:
         raise MapError(path, "no goal 'G' in the map")
-    blocked = bytearray(b"".join(rows))
-    source = MapSource(TEXT, tuple(raw), tuple(row_lines), width, bom)
-    return Grid(width, len(rows), blocked, cells.get("S"), cells.get("G"), source)
+    first = row_lines[0]
+    row_index = range(first, first + height) if row_lines[-1] == first + height - 1 else row_lines
+    source = MapSource(TEXT, raw, row_index, width, bom)
+    return Grid(width, height, blocked, cells.get("S"), cells.get("G"), source)
 
 
 _SCEN_START = re.compile(r"version(?:\s|$)", re.IGNORECASE)
