@@ -22,6 +22,8 @@ MODES = {
     "exercise": ({"exercise": 1}, []),
     "compare and exercise": ({"compare": "bfs,dfs", "exercise": 1}, []),
     "quiz": ({}, ["i"]),
+    "compare 4 and exercise": ({"compare": "bfs,dfs,ucs,astar", "exercise": 1}, []),
+    "compare 3, exercise and quiz": ({"compare": "bfs,dfs,astar", "exercise": 1}, ["i"]),
 }
 
 

@@ -79,19 +79,23 @@ def arrange(n: int, width: int, height: int, map_size: tuple[int, int], *,
     lines, the table's ``table_height`` lines included when there is one) for a map of
     ``map_size`` cells, whose smallest cells are 2 characters by 1 line, in a border; a
     pane's own status lines take ``stats_height`` lines."""
-    stats = stats_height if n > 1 else 0  # one pane: the status line under it is its own
     candidates = []
     for table in ((True, False) if table_height else (False,)):
         room = height - (table_height if table else 0)
         preferred = pane_grid(n, width, room)[0]
-        for columns in range(1, n + 1):
-            rows = -(-n // columns)
-            pane_w, pane_h = width // columns, room // rows - stats
-            pane = _pane(columns, rows, table, stats > 0, pane_w, pane_h, map_size, fold_trees)
-            candidates.append(((pane.fits, pane.lists, pane.trees or fold_trees,
-                                columns == preferred, table), pane))
+        # one pane: the status line under it is its own; several: each its own, which give
+        # way last
+        for stats in ((stats_height, 0) if n > 1 else (0,)):
+            for columns in range(1, n + 1):
+                rows = -(-n // columns)
+                pane_w, pane_h = width // columns, max(0, room // rows - stats)
+                pane = _pane(columns, rows, table, stats > 0, pane_w, pane_h, map_size,
+                             fold_trees)
+                candidates.append(((pane.fits, pane.pane_stats or n == 1, pane.lists,
+                                    pane.trees or fold_trees, columns == preferred, table),
+                                   pane))
     # What gives way first: the table, then the grid's best proportions, then the trees,
-    # then the lists; the map never.
+    # then the lists, then the panes' own status lines; the map never.
     return max(candidates, key=lambda ranked: ranked[0])[1]
 
 

@@ -91,7 +91,7 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
         self.semantics = semantics
         self.algorithm = algorithm
         self.algorithms = algorithms or [algorithm]
-        self.compare = compare
+        self.comparison = compare
 
     # -- layout ------------------------------------------------------------------------------
     def compose(self) -> ComposeResult:
@@ -120,7 +120,7 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
             yield Label("", id="heuristic-explain", classes="explain")
             yield self._radios("heuristic", tuple(HEURISTICS), sem.heuristic)
             yield Label("Compare (c)", classes="choice")
-            picked = {part.strip().partition(":")[0] for part in self.compare.split(",")}
+            picked = {part.strip().partition(":")[0] for part in self.comparison.split(",")}
             with Horizontal(id="compare-picks"):
                 for algo in ALGORITHMS.values():
                     yield Checkbox(algo.short, algo.key in picked, id=f"compare-{algo.key}",
@@ -157,13 +157,13 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
         """The searches ticked for compare mode (``bfs,dfs``; a heuristic given on the
         command line kept), or None when fewer than two or more than four are."""
         kept = {part.strip().partition(":")[0]: part.strip()
-                for part in self.compare.split(",") if part.strip()}
+                for part in self.comparison.split(",") if part.strip()}
         ticked = [key for key in ALGORITHMS
                   if self.query_one(f"#compare-{key}", Checkbox).value]
         explain = self.query_one("#compare-explain", Label)
         if set(ticked) == set(kept):  # unchanged: as compared (order, A* twice, heuristics)
             explain.set_class(False, "problem")
-            return ",".join(part.strip() for part in self.compare.split(",") if part.strip())
+            return ",".join(part.strip() for part in self.comparison.split(",") if part.strip())
         # in the order they were compared, then the newly ticked in the registry's
         keys = [key for key in kept if key in ticked] + [k for k in ticked if k not in kept]
         if not 2 <= len(keys) <= 4:

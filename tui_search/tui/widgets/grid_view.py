@@ -233,6 +233,8 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         # bars an earlier size called for: a bar takes room, so the map no longer fits).
         self.styles.overflow_x = "hidden" if new.size[0] <= width else "auto"
         self.styles.overflow_y = "hidden" if new.size[1] <= height else "auto"
+        whole = new.size[0] <= width and new.size[1] <= height  # else it says so, and how
+        self.border_subtitle = "" if whole else "part of the map · z: all of it"
         old, self.geometry = self.geometry, new
         return new != old
 
