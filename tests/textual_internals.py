@@ -83,5 +83,6 @@ class DrawnLines:
 
 
 def notifications(app: App) -> list[Notification]:
-    """The notifications the app has shown and not yet expired."""
-    return list(app._notifications)
+    """The notifications the app has shown, their time on screen over or not (a loaded
+    machine can take longer than that to get to a test's check)."""
+    return list(app._notifications._notifications.values())
