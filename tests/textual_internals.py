@@ -3,7 +3,7 @@ re-check them when the pin moves).  ``tui_search/`` itself uses Textual's public
 
 Textual has no public way to see the terminal as painted (its compositor's cached lines), to
 let an app handle what is queued and paint without Pilot's idle waits (20 ms or more each,
-which would make a test of hundreds of steps slow), to read the notifications shown, or (for the benchmarks) to count the lines it draws afresh.
+which would make a test of hundreds of steps slow) or until nothing is queued, to read the notifications shown, or (for the benchmarks) to count the lines it draws afresh.
 The benchmarks import these too: one module holds every private name outside ``tui_search``.
 """
 
@@ -29,6 +29,25 @@ async def settle(pilot: Pilot) -> None:
         await pilot._wait_for_screen()
         await pilot._wait_for_screen()
         pilot.app.screen._on_timer_update()
+
+
+def nothing_queued(app: App) -> bool:
+    """No message waits in the app's queue nor in any of the top screen's widgets'."""
+    if not app.screen_stack:  # the app has exited
+        return True
+    nodes = [app, *app.screen.walk_children(with_self=True)]
+    return all(node._message_queue.empty() for node in nodes)
+
+
+async def drain(pilot: Pilot) -> None:
+    """Let the app handle what is queued until nothing is: a key goes from the app to the
+    focused widget and bubbles up to the bindings, a message at a time.  (Pilot's own wait
+    is for the process to look idle, and a process starved of the CPU by a loaded machine
+    looks idle too.)"""
+    for _ in range(100):
+        await pilot._wait_for_screen()
+        if nothing_queued(pilot.app):
+            return
 
 
 async def repainted(pilot: Pilot) -> list[list[tuple]]:
@@ -64,5 +83,6 @@ class DrawnLines:
 
 
 def notifications(app: App) -> list[Notification]:
-    """The notifications the app has shown and not yet expired."""
-    return list(app._notifications)
+    """The notifications the app has shown, their time on screen over or not (a loaded
+    machine can take longer than that to get to a test's check)."""
+    return list(app._notifications._notifications.values())

@@ -97,22 +97,30 @@ async def wait_until(pilot, condition: Callable[[], bool], seconds: float = 20.0
 
 
 async def click_shown(pilot, selector: str) -> None:
-    """Click the widget ``selector`` of the screen on top once it is laid out: on a loaded
-    machine a screen just pushed can take longer than a pause to get its regions."""
-
+    """Click the widget ``selector`` of the screen on top once it is laid out and stays put:
+    on a loaded machine a screen just pushed can take longer than a pause to get its regions,
+    and a control it shows or hides on mount moves the others a frame later."""
     seen: list[object] = []
-
-    def settled() -> bool:
-        """Laid out, and in the same place as at the last look (a screen that is still
-        being laid out moves its widgets: a click there can miss)."""
+    deadline = time.monotonic() + 20.0
+    while True:
+        await settle(pilot)  # what is queued handled, the layout and the paint done
         found = pilot.app.screen.query(selector)
         where = found.first().region if found else None
-        steady = where is not None and where.area > 0 and seen[-1:] == [where]
+        if where is not None and where.area > 0 and seen[-1:] == [where]:
+            break
         seen.append(where)
-        return steady
+        assert time.monotonic() < deadline, f"{selector} is never laid out in one place"
+        await pilot.pause(0.02)
+    assert await pilot.click(selector), f"the click meant for {selector} landed elsewhere"
 
-    await wait_until(pilot, settled)
-    await pilot.click(selector)
+
+async def screen_shown(pilot, kind: type) -> Any:
+    """The screen on top once it is a ``kind``, mounted (its widgets composed): a key that
+    pushes a screen returns before the app has handled it on a loaded machine, so keys
+    meant for the new screen wait."""
+    await wait_until(pilot, lambda: isinstance(pilot.app.screen, kind)
+                     and pilot.app.screen.is_mounted)
+    return pilot.app.screen
 
 
 # -- start-up ----------------------------------------------------------------------------
@@ -656,7 +664,7 @@ async def test_ctrl_s_saves_to_the_maps_file_and_clears_dirty(tmp_path: Path) ->
         await pilot.press("down", "down", "down", "down", "o")
         assert app.session.dirty
         await pilot.press("ctrl+s")
-        assert not app.session.dirty
+        await wait_until(pilot, lambda: not app.session.dirty)
         assert path.read_text() == format_text_map(app.session.grid)
         assert load_map(path).is_blocked((0, 4))
 
@@ -694,11 +702,9 @@ async def test_ctrl_s_without_a_file_asks_for_a_name(tmp_path: Path) -> None:
         app.session.cursor = (0, 5)
         await pilot.press("o")
         await pilot.press("ctrl+s")
-        assert isinstance(app.screen, SaveAsScreen)
-        app.screen.query_one("Input").value = str(target)
+        (await screen_shown(pilot, SaveAsScreen)).query_one("Input").value = str(target)
         await pilot.press("enter")
-        await pilot.pause()
-        assert not isinstance(app.screen, SaveAsScreen)
+        await wait_until(pilot, lambda: not isinstance(app.screen, SaveAsScreen))
         assert target.read_text() == format_text_map(app.session.grid)
         assert app.session.map_path == target and not app.session.dirty
 
@@ -711,11 +717,12 @@ async def test_question_mark_opens_help_and_escape_closes_it() -> None:
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("question_mark")
-        assert isinstance(app.screen, HelpScreen)
+        await screen_shown(pilot, HelpScreen)
         await pilot.press("n")  # keys of the main screen do nothing under help
+        await pilot.pause()
         assert app.session.run.k == 0
         await pilot.press("escape")
-        assert not isinstance(app.screen, HelpScreen)
+        await wait_until(pilot, lambda: not isinstance(app.screen, HelpScreen))
 
 
 def test_help_lists_every_key_of_the_binding_table() -> None:
@@ -737,8 +744,8 @@ async def test_q_quits_at_once_when_nothing_is_unsaved() -> None:
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("q")
-        await pilot.pause()
-        assert app.return_code == 0 and not app.is_running
+        await wait_until(pilot, lambda: not app.is_running)
+        assert app.return_code == 0
 
 
 @sync
@@ -746,13 +753,14 @@ async def test_q_with_unsaved_edits_asks_first() -> None:
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("down", "o", "q")
-        assert isinstance(app.screen, ConfirmQuitScreen)
+        await screen_shown(pilot, ConfirmQuitScreen)
         await pilot.press("n")  # stay
-        assert not isinstance(app.screen, ConfirmQuitScreen) and app.is_running
+        await wait_until(pilot, lambda: not isinstance(app.screen, ConfirmQuitScreen))
+        assert app.is_running
         await pilot.press("q")
+        await screen_shown(pilot, ConfirmQuitScreen)
         await pilot.press("y")  # quit without saving
-        await pilot.pause()
-        assert not app.is_running
+        await wait_until(pilot, lambda: not app.is_running)
 
 
 @sync
@@ -761,9 +769,10 @@ async def test_save_and_quit_from_the_question(tmp_path: Path) -> None:
     path.write_text(TUTORIAL.read_text())
     app = SearchApp(load_map(path), path=path)
     async with app.run_test(size=SIZE) as pilot:
-        await pilot.press("down", "o", "q", "s")
-        await pilot.pause()
-        assert not app.is_running
+        await pilot.press("down", "o", "q")
+        await screen_shown(pilot, ConfirmQuitScreen)
+        await pilot.press("s")
+        await wait_until(pilot, lambda: not app.is_running)
     assert load_map(path).is_blocked((0, 1))
 
 

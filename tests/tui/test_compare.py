@@ -9,6 +9,7 @@ from tests.tui.test_app import (
     TUTORIAL,
     open_grid,
     post_keys,
+    screen_shown,
     slices_of_one_chunk,
     sync,
     tutorial_app,
@@ -146,7 +147,7 @@ async def test_the_settings_pick_what_c_compares() -> None:
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("comma")
-        await wait_until(pilot, lambda: isinstance(app.screen, SettingsScreen))
+        await screen_shown(pilot, SettingsScreen)
         screen = app.screen
         assert isinstance(screen, SettingsScreen)
         screen.query_one("#compare-dfs").value = False
@@ -200,7 +201,7 @@ async def test_end_on_a_big_map_computes_each_run_in_slices_and_esc_stops(monkey
     async with app.run_test(size=SIZE) as pilot:
         post_keys(app, "end", "escape")
         await wait_until(pilot, lambda: recorded and not app.session.seeking)
-        await pilot.pause(0.1)
+        await pilot.pause()  # a slice that esc failed to stop would be recorded by now
         assert len(recorded) == 1 and not app.session.runs[0].at_end and "esc" not in app.session.note
         post_keys(app, "end")
         await wait_until(pilot, lambda: app.session.seeking and "IDDFS: computing" in app.session.note)
@@ -216,10 +217,7 @@ async def test_play_runs_all_in_lockstep_to_the_end() -> None:
         for _ in range(7):  # the fastest speed
             await pilot.press("plus")
         await pilot.press("space")
-        for _ in range(100):
-            await pilot.pause(0.02)
-            if not app.session.playing:
-                break
+        await wait_until(pilot, lambda: not app.session.playing)
         assert steps(app) == [22, 7]
 
 
@@ -228,6 +226,7 @@ async def test_quiz_in_compare_mode_asks_of_the_left_pane_and_steps_all() -> Non
     app = compare_app("dfs,bfs")
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("i", "enter")  # the cursor is on the start: it comes off first
+        await wait_until(pilot, lambda: app.session.quiz.asked == 1)
         assert app.session.quiz.asked == 1 and app.session.quiz.right == 1 and steps(app) == [1, 1]
         assert "stack's top" in app.session.note
 
@@ -248,9 +247,10 @@ async def test_a_setting_that_does_not_apply_to_one_pane_applies_to_the_others()
     app = compare_app("bfs,astar")
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("comma")
-        app.screen.query_one("#visit-expand").value = True
-        app.screen.query_one("#apply").press()
-        await pilot.pause()
+        screen = await screen_shown(pilot, SettingsScreen)
+        screen.query_one("#visit-expand").value = True
+        screen.query_one("#apply").press()
+        await wait_until(pilot, lambda: not isinstance(app.screen, SettingsScreen))
         assert [c.semantics.visit for c in app.session.contenders] == ["expand", "generate"]
         assert "does not apply to A*" in app.session.note
         assert "visit on expand" in app.main.panes[0].stats.status_text
@@ -296,8 +296,8 @@ async def test_a_spaced_or_trailing_comma_spec_and_unchanged_settings_keep_the_c
         await pilot.press("2")  # takes DFS out? two stay at least: no
         assert app.session.spec == "dfs,bfs" and steps(app) == [2, 2]
         await pilot.press("comma")
-        app.screen.query_one("#apply").press()
-        await pilot.pause()
+        (await screen_shown(pilot, SettingsScreen)).query_one("#apply").press()
+        await wait_until(pilot, lambda: not isinstance(app.screen, SettingsScreen))
         assert app.session.spec == "dfs,bfs" and steps(app) == [2, 2]  # nothing changed
 
 
@@ -306,7 +306,7 @@ async def test_the_settings_in_compare_mode_are_for_every_search_compared() -> N
     app = compare_app("bfs,astar")
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("comma")
-        await wait_until(pilot, lambda: isinstance(app.screen, SettingsScreen))
+        await screen_shown(pilot, SettingsScreen)
         screen = app.screen
         assert screen.query_one("#heuristic").disabled is False  # for A*
         assert screen.query_one("#visit").disabled is False  # for BFS

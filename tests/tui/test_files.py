@@ -8,15 +8,17 @@ import os
 from pathlib import Path
 
 import pytest
+from textual.widgets import Input
 
 from tests.textual_internals import notifications
-from tests.tui.test_app import MAPS, SIZE, click_shown, sync
+from tests.tui.test_app import MAPS, SIZE, click_shown, screen_shown, sync, wait_until
 from tui_search.engine.mapfile import load_map
 from tui_search.engine.mapwrite import format_text_map
 from tui_search.tui.app import SearchApp
 from tui_search.tui.screens.confirm_overwrite import ConfirmOverwriteScreen
 from tui_search.tui.screens.confirm_quit import ConfirmQuitScreen
 from tui_search.tui.screens.open_map import OpenMapScreen
+from tui_search.tui.screens.path_prompt import PathPrompt
 from tui_search.tui.screens.save_as import SaveAsScreen
 
 DATA = Path(__file__).parents[1] / "data" / "movingai"
@@ -39,9 +41,24 @@ def differing(a: bytes, b: bytes) -> list[int]:
 
 
 async def type_name(pilot, name: str) -> None:
-    """Replace the prompt's text with ``name`` (as typed) and press enter."""
-    pilot.app.screen.query_one("Input").value = name
+    """Once the name prompt is up, replace its text with ``name`` (as typed) and press enter;
+    back when the prompt has answered (closed, and what it was for done, or an error shown)."""
+    prompt = await screen_shown(pilot, PathPrompt)
+    field = prompt.query_one(Input)
+    if field.value != name:
+        field.value = name
+        await wait_until(pilot, lambda: not prompt.error)  # the change seen: no old error
     await pilot.press("enter")
+    await wait_until(pilot, lambda: pilot.app.screen is not prompt or bool(prompt.error))
+    await pilot.pause()  # the answer's callback, queued when the prompt closed
+
+
+async def answer(pilot, kind: type, key: str) -> None:
+    """Press ``key`` once the question ``kind`` is on top; back when it has closed and what
+    it answered is done."""
+    question = await screen_shown(pilot, kind)
+    await pilot.press(key)
+    await wait_until(pilot, lambda: pilot.app.screen is not question)
     await pilot.pause()
 
 
@@ -71,11 +88,13 @@ async def test_ctrl_s_keeps_the_comments_and_changes_only_the_moved_goal(tmp_pat
     app = app_on(path)
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("ctrl+s")  # no edit: the same bytes
+        await pilot.pause()
         assert path.read_bytes() == original
         app.session.cursor = (5, 1)
-        await pilot.press("g", "ctrl+s")
-        await pilot.pause()
-        assert not app.session.dirty
+        await pilot.press("g")
+        await wait_until(pilot, lambda: app.session.dirty)
+        await pilot.press("ctrl+s")
+        await wait_until(pilot, lambda: not app.session.dirty)
     saved = path.read_bytes()
     assert saved.count(b"\n;") == original.count(b"\n;") and saved.startswith(b"; The tutorial")
     # Two characters differ: the old G is now '.', the cell above it is 'G'.
@@ -94,10 +113,11 @@ async def test_ctrl_s_on_a_movingai_map_saves_it_in_place_as_a_map(tmp_path: Pat
     async with app.run_test(size=SIZE) as pilot:
         app.session.cursor = (20, 26)
         assert not grid.is_blocked((20, 26))
-        await pilot.press("o", "ctrl+s")
-        await pilot.pause()
-        assert not isinstance(app.screen, SaveAsScreen)
-        assert not app.session.dirty and app.session.map_path == path
+        await pilot.press("o")
+        await wait_until(pilot, lambda: app.session.dirty)
+        await pilot.press("ctrl+s")
+        await wait_until(pilot, lambda: not app.session.dirty)
+        assert not isinstance(app.screen, SaveAsScreen) and app.session.map_path == path
         assert any("start and goal are not part of a .map file" in m for m in messages(app))
     saved = path.read_bytes()
     assert saved.split(b"\n")[:4] == original.split(b"\n")[:4]
@@ -112,11 +132,11 @@ async def test_save_as_txt_from_a_movingai_map_writes_the_text_format(tmp_path: 
     app = SearchApp(load_map(path, start=(19, 26), goal=(19, 29)), path=path)
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("w")
-        assert isinstance(app.screen, SaveAsScreen)
-        assert app.screen.query_one("Input").value == str(tmp_path / "arena.txt")
+        prompt = await screen_shown(pilot, SaveAsScreen)
+        assert prompt.query_one("Input").value == str(tmp_path / "arena.txt")
         await pilot.press("enter")
+        await wait_until(pilot, lambda: app.screen is not prompt)
         await pilot.pause()
-        assert not isinstance(app.screen, SaveAsScreen)
         assert app.session.map_path == tmp_path / "arena.txt"
     text_map = load_map(tmp_path / "arena.txt")
     assert text_map == app.session.grid and text_map.start == (19, 26)
@@ -135,17 +155,16 @@ async def test_save_as_onto_an_existing_file_asks_first(tmp_path: Path) -> None:
     app = untitled()
     async with app.run_test(size=SIZE) as pilot:
         await save_as(pilot, str(other))
-        assert isinstance(app.screen, ConfirmOverwriteScreen)
+        await screen_shown(pilot, ConfirmOverwriteScreen)
         assert other.read_text() == "my notes\n"
-        await pilot.press("n")  # choose another name
+        await answer(pilot, ConfirmOverwriteScreen, "n")  # choose another name
         assert isinstance(app.screen, SaveAsScreen)
         assert app.screen.query_one("Input").value == str(other)
         assert other.read_text() == "my notes\n" and app.session.map_path is None
         await pilot.press("enter")
-        assert isinstance(app.screen, ConfirmOverwriteScreen)
-        await pilot.press("y")  # overwrite
+        await answer(pilot, ConfirmOverwriteScreen, "y")  # overwrite
+        await wait_until(pilot, lambda: not isinstance(app.screen, SaveAsScreen))
         await pilot.pause()
-        assert not isinstance(app.screen, (SaveAsScreen, ConfirmOverwriteScreen))
         assert app.session.map_path == other
     assert other.read_text() == format_text_map(load_map(TUTORIAL))
 
@@ -158,11 +177,11 @@ async def test_the_overwrite_question_answers_the_mouse(tmp_path: Path) -> None:
     async with app.run_test(size=SIZE) as pilot:
         await save_as(pilot, str(other))
         await click_shown(pilot, "#another")
-        await pilot.pause()
-        assert isinstance(app.screen, SaveAsScreen) and other.read_text() == "keep\n"
+        await screen_shown(pilot, SaveAsScreen)
+        assert other.read_text() == "keep\n"
         await pilot.press("enter")
         await click_shown(pilot, "#overwrite")
-        await pilot.pause()
+        await wait_until(pilot, lambda: app.session.map_path == other)
         assert app.session.map_path == other and other.read_text() != "keep\n"
 
 
@@ -171,7 +190,9 @@ async def test_save_as_onto_the_maps_own_file_does_not_ask(tmp_path: Path) -> No
     path = copy(TUTORIAL, tmp_path)
     app = app_on(path)
     async with app.run_test(size=SIZE) as pilot:
-        await pilot.press("down", "o", "w")
+        await pilot.press("down", "o")
+        await wait_until(pilot, lambda: app.session.dirty)
+        await pilot.press("w")
         await type_name(pilot, str(path))
         assert not isinstance(app.screen, (SaveAsScreen, ConfirmOverwriteScreen))
         assert not app.session.dirty and load_map(path).is_blocked((0, 1))
@@ -210,8 +231,8 @@ async def test_an_unwritable_target_keeps_the_prompt_open_with_the_reason(
         assert app.session.map_path is None and os.listdir(tmp_path) == []
         monkeypatch.undo()
         await pilot.press("enter")  # the name is still there: try again
-        await pilot.pause()
-        assert not isinstance(app.screen, SaveAsScreen) and app.session.map_path == target
+        await wait_until(pilot, lambda: app.session.map_path == target)
+        assert not isinstance(app.screen, SaveAsScreen)
     assert load_map(target) == load_map(TUTORIAL)
 
 
@@ -224,7 +245,7 @@ async def test_ctrl_o_opens_a_map(tmp_path: Path) -> None:
     other = MAPS / "exercise1-bfs-wins.txt"
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("n", "ctrl+o")
-        assert isinstance(app.screen, OpenMapScreen)
+        await screen_shown(pilot, OpenMapScreen)
         await type_name(pilot, str(other))
         assert not isinstance(app.screen, OpenMapScreen)
         assert app.session.map_path == other and app.session.grid == load_map(other)
@@ -245,6 +266,7 @@ async def test_a_file_that_is_not_a_map_keeps_the_open_prompt_open(tmp_path: Pat
         await type_name(pilot, str(tmp_path / "missing.txt"))
         assert app.screen.error == f"{tmp_path / 'missing.txt'}: no such file"
         await pilot.press("escape")
+        await wait_until(pilot, lambda: not isinstance(app.screen, OpenMapScreen))
         assert app.session.map_path is None and app.session.grid == load_map(TUTORIAL)
 
 
@@ -255,24 +277,28 @@ async def test_opening_a_map_over_unsaved_edits_asks_first(tmp_path: Path) -> No
     other = MAPS / "no-path.txt"
     app = app_on(path)
     async with app.run_test(size=SIZE) as pilot:
-        await pilot.press("down", "o", "ctrl+o")
+        await pilot.press("down", "o")
+        await wait_until(pilot, lambda: app.session.dirty)
+        await pilot.press("ctrl+o")
         await type_name(pilot, str(other))
-        assert isinstance(app.screen, ConfirmQuitScreen)
-        assert "Open no-path.txt anyway?" in str(app.screen.query_one("Label").content)
-        await pilot.press("n")  # cancel
+        question = await screen_shown(pilot, ConfirmQuitScreen)
+        assert "Open no-path.txt anyway?" in str(question.query_one("Label").content)
+        await answer(pilot, ConfirmQuitScreen, "n")  # cancel
         assert app.session.map_path == path and app.session.dirty and app.session.grid.is_blocked((0, 1))
         await pilot.press("ctrl+o")
         await type_name(pilot, str(other))
-        await pilot.press("s")  # save, then open
-        await pilot.pause()
-        assert app.session.map_path == other and not app.session.dirty
+        await answer(pilot, ConfirmQuitScreen, "s")  # save, then open
+        await wait_until(pilot, lambda: app.session.map_path == other)
+        assert not app.session.dirty
         assert load_map(path).is_blocked((0, 1))
         app.session.cursor = (0, 1)
-        await pilot.press("o", "ctrl+o")
+        await pilot.press("o")
+        await wait_until(pilot, lambda: app.session.dirty)
+        await pilot.press("ctrl+o")
         await type_name(pilot, str(path))
-        await pilot.press("y")  # discard the edit
-        await pilot.pause()
-        assert app.session.map_path == path and not app.session.dirty
+        await answer(pilot, ConfirmQuitScreen, "y")  # discard the edit
+        await wait_until(pilot, lambda: app.session.map_path == path)
+        assert not app.session.dirty
     assert (MAPS / "no-path.txt").read_bytes() == other.read_bytes()
 
 
@@ -287,12 +313,11 @@ async def test_replace_map_is_what_an_exercise_calls(tmp_path: Path) -> None:
         await pilot.pause()
         assert app.session.grid is exercise and app.session.map_path is None  # nothing unsaved: no question
         await pilot.press("down", "o")  # the cursor is on the start (1,1): blocks (1,2)
+        await wait_until(pilot, lambda: app.session.dirty)
         app.main.files.replace_map(load_map(TUTORIAL), None, "the tutorial")
-        await pilot.pause()
-        assert isinstance(app.screen, ConfirmQuitScreen)
-        assert "Open the tutorial anyway?" in str(app.screen.query_one("Label").content)
-        await pilot.press("s")
-        assert isinstance(app.screen, SaveAsScreen)
+        question = await screen_shown(pilot, ConfirmQuitScreen)
+        assert "Open the tutorial anyway?" in str(question.query_one("Label").content)
+        await answer(pilot, ConfirmQuitScreen, "s")
         await type_name(pilot, str(tmp_path / "ex2.txt"))
         assert app.session.grid == load_map(TUTORIAL) and not app.session.dirty
     saved = load_map(tmp_path / "ex2.txt")

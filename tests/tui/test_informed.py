@@ -5,7 +5,16 @@ the settings and the inadmissible warning."""
 from __future__ import annotations
 
 from tests.helpers import grid_from_rows
-from tests.tui.test_app import ARENA, MAPS, click_shown, stats, sync, tutorial_app, wait_until
+from tests.tui.test_app import (
+    ARENA,
+    MAPS,
+    click_shown,
+    screen_shown,
+    stats,
+    sync,
+    tutorial_app,
+    wait_until,
+)
 from tui_search.engine.grid import Grid
 from tui_search.engine.heuristics import INADMISSIBLE
 from tui_search.engine.mapfile import load_map
@@ -152,22 +161,22 @@ async def test_the_heuristic_is_a_setting_and_an_inadmissible_one_is_named() -> 
     app = tutorial_app("astar")
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("comma")
-        await wait_until(pilot, lambda: isinstance(app.screen, SettingsScreen))
-        screen = app.screen
-        assert isinstance(screen, SettingsScreen)
+        screen = await screen_shown(pilot, SettingsScreen)
         await click_shown(pilot, "#heuristic-manhattan")
-        await pilot.pause()
-        assert "inadmissible" in str(screen.query_one("#heuristic-explain").render())
+        await wait_until(pilot, lambda: "inadmissible" in str(
+            screen.query_one("#heuristic-explain").render()))
         await click_shown(pilot, "#apply")
+        await wait_until(pilot, lambda: app.session.run.semantics.heuristic == "manhattan")
         await pilot.pause()
-        assert app.session.run.semantics.heuristic == "manhattan"
         status = stats(app)[0]
         assert "heuristic manhattan" in status and INADMISSIBLE in status
         # the heuristic does not apply to BFS: its settings grey it out, its status says nothing
         await pilot.press("1")
+        await wait_until(pilot, lambda: app.session.run.algorithm == "bfs")
+        await pilot.pause()
         assert "manhattan" not in stats(app)[0]
         await pilot.press("comma")
-        assert app.screen.query_one("#heuristic").disabled
+        assert (await screen_shown(pilot, SettingsScreen)).query_one("#heuristic").disabled
 
 
 @sync
@@ -177,7 +186,7 @@ async def test_switching_to_a_star_keeps_its_own_goal_test() -> None:
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("comma")
-        await wait_until(pilot, lambda: isinstance(app.screen, SettingsScreen))
+        await screen_shown(pilot, SettingsScreen)
         await click_shown(pilot, "#apply")
         await wait_until(pilot, lambda: not isinstance(app.screen, SettingsScreen))
         await pilot.press("6")
@@ -185,7 +194,7 @@ async def test_switching_to_a_star_keeps_its_own_goal_test() -> None:
         run = app.session.run
         assert run.goal_test == "expand" and "goal test" not in stats(app)[0]
         await pilot.press("comma")
-        await wait_until(pilot, lambda: isinstance(app.screen, SettingsScreen))
+        await screen_shown(pilot, SettingsScreen)
         assert app.screen.query_one("#goal_test-expand").value
 
 

@@ -157,20 +157,20 @@ async def test_keys_do_nothing_behind_the_too_small_message() -> None:
         assert app.screen.has_class("-too-small")
         walls = app.session.grid.copy()
         await pilot.press("n", "n", "n", "end", "space", "o", "right", "3", "z", "question_mark")
+        await pilot.pause()
         run = app.session.run
         assert run is not None and run.k == 0 and not app.session.playing and not app.session.seeking
         assert app.session.run is run and app.session.algorithm == "bfs"  # no new run either
         assert app.session.grid == walls and not app.session.dirty and app.session.cursor == (0, 0)
         assert not app.query_one(GridView).overview and len(app.screen_stack) == 1
         await pilot.resize_terminal(*SIZE)  # big enough again: the keys act
-        await pilot.pause()
-        assert not app.screen.has_class("-too-small")
+        await wait_until(pilot, lambda: not app.screen.has_class("-too-small"))
         await pilot.press("n")
-        assert app.session.run.k == 1
+        await wait_until(pilot, lambda: app.session.run.k == 1)
         await pilot.resize_terminal(40, 12)
-        await pilot.pause()
+        await wait_until(pilot, lambda: app.screen.has_class("-too-small"))
         await pilot.press("q")
-        await pilot.pause()
+        await wait_until(pilot, lambda: not app.is_running)
     assert app.return_code == 0
 
 

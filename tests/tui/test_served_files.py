@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from tests.tui.test_app import SIZE, sync
+from tests.tui.test_app import SIZE, screen_shown, sync, wait_until
 from tests.tui.test_files import TUTORIAL, copy, messages, type_name
 from tui_search.engine.mapfile import load_map
 from tui_search.tui.app import SearchApp
@@ -31,17 +31,19 @@ async def test_with_saving_off_each_file_key_says_so_and_opens_nothing(tmp_path:
     async with app.run_test(size=SIZE) as pilot:
         app.session.cursor = (5, 1)
         await pilot.press("g")  # an edit: ctrl+s would save it
-        for key in ("ctrl+s", "w", "ctrl+o"):
+        await wait_until(pilot, lambda: app.session.dirty)
+        for said, key in enumerate(("ctrl+s", "w", "ctrl+o"), 1):
             await pilot.press(key)
+            await wait_until(pilot, lambda n=said: len(messages(app)) == n)
             await pilot.pause()
             assert len(app.screen_stack) == 1, key
         assert messages(app) == [OFF_MESSAGE] * 3
         assert "\n" not in OFF_MESSAGE
         # Quitting with edits still asks; "save" then says saving is off and stays.
         await pilot.press("q")
-        assert isinstance(app.screen, ConfirmQuitScreen)
+        await screen_shown(pilot, ConfirmQuitScreen)
         await pilot.press("s")
-        await pilot.pause()
+        await wait_until(pilot, lambda: len(messages(app)) == 4)
         assert app.session.dirty and messages(app)[-1] == OFF_MESSAGE
     assert path.read_bytes() == before
     assert sorted(p.name for p in tmp_path.iterdir()) == ["tutorial.txt"]
@@ -57,9 +59,7 @@ async def test_save_as_takes_plain_names_in_the_folder_only(tmp_path: Path) -> N
     async with app.run_test(size=SIZE) as pilot:
         app.session.cursor = (5, 1)
         await pilot.press("g", "ctrl+s")  # the served map is not in the folder: a name first
-        await pilot.pause()
-        prompt = app.screen
-        assert isinstance(prompt, SaveAsScreen)
+        prompt = await screen_shown(pilot, SaveAsScreen)
         assert prompt.query_one("Input").value == "tutorial.txt"  # a name, not a path
         for name, says in (("../escape.txt", "without a folder part"),
                            (str(tmp_path / "abs.txt"), "without a folder part"),
@@ -71,9 +71,11 @@ async def test_save_as_takes_plain_names_in_the_folder_only(tmp_path: Path) -> N
         assert app.screen is not prompt
         assert app.session.map_path == folder.resolve() / "mine.txt" and not app.session.dirty
         app.session.cursor = (2, 1)  # ctrl+s now saves over the folder's file without asking
-        await pilot.press("g", "ctrl+s")
-        await pilot.pause()
-        assert len(app.screen_stack) == 1 and not app.session.dirty
+        await pilot.press("g")
+        await wait_until(pilot, lambda: app.session.dirty)
+        await pilot.press("ctrl+s")
+        await wait_until(pilot, lambda: not app.session.dirty)
+        assert len(app.screen_stack) == 1
     assert served.read_bytes() == before
     assert sorted(p.name for p in tmp_path.iterdir()) == ["saves", "tutorial.txt"]
     assert [p.name for p in folder.iterdir()] == ["mine.txt"]
@@ -90,9 +92,7 @@ async def test_the_open_prompt_reads_only_names_in_the_folder(tmp_path: Path) ->
     app = served_app(None, folder)
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("ctrl+o")
-        await pilot.pause()
-        prompt = app.screen
-        assert isinstance(prompt, OpenMapScreen)
+        prompt = await screen_shown(pilot, OpenMapScreen)
         assert prompt.query_one("Input").value == ""
         for name, says in (("../outside.txt", "without a folder part"),
                            (str(tmp_path / "outside.txt"), "without a folder part"),
@@ -108,6 +108,7 @@ async def test_a_theme_chosen_in_the_served_app_is_not_written() -> None:
     app = served_app(None, None)
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("t")
+        await wait_until(pilot, lambda: app.theme != "dark")
         await pilot.pause()
-        assert app.theme != "dark" and app.config.theme == app.theme
+        assert app.config.theme == app.theme
     assert not config_path().exists()

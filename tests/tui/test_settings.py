@@ -2,7 +2,15 @@
 
 from __future__ import annotations
 
-from tests.tui.test_app import TUTORIAL, click_shown, stats, sync, tutorial_app, wait_until
+from tests.tui.test_app import (
+    TUTORIAL,
+    click_shown,
+    screen_shown,
+    stats,
+    sync,
+    tutorial_app,
+    wait_until,
+)
 from tui_search.engine.mapfile import load_map
 from tui_search.engine.semantics import Semantics
 from tui_search.tui.app import SearchApp
@@ -22,11 +30,12 @@ async def test_settings_apply_starts_a_new_run_at_step_0() -> None:
         await pilot.press("n", "n")
         first = app.session.run
         await pilot.press("comma")
-        await wait_until(pilot, lambda: isinstance(app.screen, SettingsScreen))
+        await screen_shown(pilot, SettingsScreen)
         await pilot.press("right", "right", "enter")  # corners has the focus: never
+        await wait_until(pilot, lambda: app.screen.query_one("#corners-never").value)
         await click_shown(pilot, "#apply")
+        await wait_until(pilot, lambda: not isinstance(app.screen, SettingsScreen))
         await pilot.pause()
-        assert not isinstance(app.screen, SettingsScreen)
         run = app.session.run
         assert run is not first and run.k == 0
         assert run.semantics == Semantics(corners="never") == app.session.semantics
@@ -39,12 +48,17 @@ async def test_cancel_and_escape_change_nothing() -> None:
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("n")
         first = app.session.run
-        await pilot.press("comma", "right", "enter", "escape")
+        await pilot.press("comma")
+        await screen_shown(pilot, SettingsScreen)
+        await pilot.press("right", "enter", "escape")
+        await wait_until(pilot, lambda: not isinstance(app.screen, SettingsScreen))
+        await pilot.pause()
         assert app.session.run is first and first.k == 1 and app.session.semantics == Semantics()
         await pilot.press("comma")
-        await wait_until(pilot, lambda: isinstance(app.screen, SettingsScreen))
+        await screen_shown(pilot, SettingsScreen)
         await click_shown(pilot, "#cancel")
         await wait_until(pilot, lambda: not isinstance(app.screen, SettingsScreen))
+        await pilot.pause()
         assert app.session.run is first
 
 
@@ -53,21 +67,20 @@ async def test_a_bad_move_order_is_shown_and_not_applied() -> None:
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("comma")
-        await wait_until(pilot, lambda: isinstance(app.screen, SettingsScreen))
-        screen = app.screen
+        screen = await screen_shown(pilot, SettingsScreen)
         order = screen.query_one("#order")
         order.value = "N,UP"
-        await pilot.pause()
+        error = screen.query_one("#order-error")
+        await wait_until(pilot, lambda: "unknown direction 'UP'" in str(error.render()))
         await click_shown(pilot, "#apply")
         await pilot.pause()
         assert app.screen is screen  # still open
-        assert "unknown direction 'UP'" in str(screen.query_one("#order-error").render())
+        assert "unknown direction 'UP'" in str(error.render())
         order.value = "N,W,S,E"
         order.focus()
-        await pilot.pause()
+        await wait_until(pilot, lambda: "UP" not in str(error.render()) and order.has_focus)
         await pilot.press("enter")  # enter in the order applies, as the Apply button does
-        await pilot.pause()
-        assert app.session.semantics.order == ("N", "W", "S", "E")
+        await wait_until(pilot, lambda: app.session.semantics.order == ("N", "W", "S", "E"))
 
 
 @sync
@@ -75,16 +88,15 @@ async def test_tree_search_greys_out_the_visit_rule_and_defaults_restore_all() -
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("comma")
-        await wait_until(pilot, lambda: isinstance(app.screen, SettingsScreen))
-        screen = app.screen
+        screen = await screen_shown(pilot, SettingsScreen)
         await click_shown(pilot, "#visit-expand")
+        await wait_until(pilot, lambda: screen.query_one("#visit-expand").value)
         await click_shown(pilot, "#tree_search")
-        await pilot.pause()
-        assert screen.query_one("#visit").disabled
+        await wait_until(pilot, lambda: screen.query_one("#visit").disabled)
         assert screen.chosen() == Semantics(tree_search=True)  # visit does not apply
         await click_shown(pilot, "#defaults")
-        await pilot.pause()
-        assert screen.chosen() == Semantics() and not screen.query_one("#visit").disabled
+        await wait_until(pilot, lambda: not screen.query_one("#visit").disabled)
+        assert screen.chosen() == Semantics()
 
 
 @sync
@@ -115,8 +127,9 @@ async def test_no_path_under_a_corner_rule_says_which_rule_blocked_it() -> None:
     app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, semantics=Semantics(corners="one"))
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("end")
+        await wait_until(pilot, lambda: app.session.run.at_end)
         await pilot.pause()
-        assert app.session.run.at_end and not app.session.run.found
+        assert not app.session.run.found
         assert "the corner rule 'one' blocks it" in stats(app)[1]
 
 
@@ -125,7 +138,8 @@ async def test_switching_to_iddfs_drops_visit_on_expand_and_says_so() -> None:
     app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, semantics=Semantics(visit="expand"))
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("3")
-        assert app.session.run.algorithm == "iddfs" and app.session.semantics.visit == "generate"
+        await wait_until(pilot, lambda: app.session.run.algorithm == "iddfs")
+        assert app.session.semantics.visit == "generate"
         assert "does not apply to IDDFS" in stats(app)[1]
 
 

@@ -15,7 +15,7 @@ from rich.color import Color
 from textual.command import CommandList, CommandPalette
 
 from tests.textual_internals import notifications, repainted
-from tests.tui.test_app import SIZE, TUTORIAL, sync, tutorial_app
+from tests.tui.test_app import SIZE, TUTORIAL, sync, tutorial_app, wait_until
 from tui_search.engine.algorithms import ALGORITHMS
 from tui_search.engine.mapfile import load_map
 from tui_search.tui import config as config_module
@@ -41,10 +41,7 @@ def config_notes(app: SearchApp) -> list[str]:
 async def hits(pilot) -> CommandList:
     """The palette's list once its search (in a worker) has answered."""
     found = pilot.app.screen.query_one(CommandList)
-    for _ in range(200):
-        await pilot.pause(0.02)
-        if found.option_count and found.highlighted is not None:
-            break
+    await wait_until(pilot, lambda: bool(found.option_count) and found.highlighted is not None)
     await pilot.pause()
     return found
 
