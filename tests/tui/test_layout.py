@@ -4,6 +4,8 @@ applies it; these check what is on the screen)."""
 
 from __future__ import annotations
 
+import contextlib
+
 import pytest
 
 from tests.tui.test_app import TUTORIAL, sync, wait_until
@@ -53,13 +55,15 @@ async def test_the_whole_tutorial_map_shows_in_every_pane_at_every_size(mode: st
     async with app.run_test(size=SIZES[0]) as pilot:
         await pilot.press(*keys, "end")
         await wait_until(pilot, lambda: app.session.at_end())
+        problems: list[str | None] = []
         for size in SIZES:
             await pilot.resize_terminal(*size)
-            for _ in range(100):  # the panes are fitted after the resize: wait for it
-                problems = [whole_map_shown(app, v) for v in app.main.views]
-                if not any(problems):
-                    break
-                await pilot.pause(0.05)
+            def shown(problems: list[str | None] = problems) -> bool:
+                problems[:] = [whole_map_shown(app, v) for v in app.main.views]
+                return not any(problems)
+
+            with contextlib.suppress(AssertionError):  # the panes are fitted after a resize
+                await wait_until(pilot, shown)
             assert not any(problems), (mode, problems)
             assert len(app.main.views) == len(app.session.runs), mode
 
