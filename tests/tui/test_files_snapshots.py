@@ -17,7 +17,10 @@ def prompt_with(key: str, name: str):
 
     async def run_before(pilot) -> None:
         await pilot.press(key)
-        pilot.app.screen.query_one("Input").value = name
+        field = pilot.app.screen.query_one("Input")
+        field.value = name
+        field.cursor_position = len(name)  # at its end, wherever the clone is (the value
+        # replaced was a folder's path, as long as the clone's)
 
     return run_before
 
