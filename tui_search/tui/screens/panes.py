@@ -79,9 +79,11 @@ class PanesScreen(Screen[None]):
         yield self.pane_box
         yield Static(id="too-small")
 
-    def _new_panes(self) -> list[RunPane]:
+    def _new_panes(self, labels: list[str] | None = None) -> list[RunPane]:
+        """A pane for each of ``labels`` (default: every search shown)."""
         session = self.session
-        return [RunPane(session.grid, label, NEEDS_ENDPOINTS) for label in session.labels]
+        return [RunPane(session.grid, label, NEEDS_ENDPOINTS)
+                for label in (session.labels if labels is None else labels)]
 
     @property
     def views(self) -> list[GridView]:
@@ -159,8 +161,7 @@ class PanesScreen(Screen[None]):
         if len(self.panes) != len(labels):
             state = self.views[0].view_state()
             kept, gone = self.panes[:len(labels)], self.panes[len(labels):]
-            added = [RunPane(session.grid, label, NEEDS_ENDPOINTS)
-                     for label in labels[len(kept):]]
+            added = self._new_panes(labels[len(kept):])
             self.panes = kept + added
             removing = [pane.remove() for pane in gone]
             mounting = self.pane_box.mount_all(added) if added else None
@@ -198,7 +199,6 @@ class PanesScreen(Screen[None]):
         repaint (``per_run``: a list of changed cells for each run)."""
         session = self.session
         runs = session.runs
-        self.set_class(not runs, "-no-run")
         for i, pane in enumerate(self.panes):
             if pane.is_mounted:  # else shown whole once mounted (_panes_changed)
                 pane.show(runs[i] if runs else None,
