@@ -36,7 +36,7 @@ from benchmarks.harness import CPU, fmt_time, interleaved, paired, series, timed
 from benchmarks.maps import big_maps
 from benchmarks.table import Row, add
 from tui_search.engine.grid import Grid
-from tui_search.engine.run import Run
+from tui_search.engine.run import Run, recording_of
 from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
 
 #: The non-default combinations timed, by the name their rows print.
@@ -91,7 +91,7 @@ def check_answers(name: str, grid: Grid, walled: Grid) -> None:
                   f"bare {want}", file=sys.stderr)
     for floor, sem in ((bare_dfs_recorded, Semantics()),
                        (bare_dfs_visit_on_expand_recorded, Semantics(visit="expand"))):
-        rec, bare = recorded(walled, "dfs", sem).recording.rec, floor(walled)
+        rec, bare = recording_of(recorded(walled, "dfs", sem)).rec, floor(walled)
         if (bare.gen_node, bare.step_end, bare.step_exp, bare.discarded) != (
                 rec.gen_node, rec.step_end, rec.step_exp, rec.discarded):
             print(f"WARNING: {name} {floor.__name__}: not the engine's record", file=sys.stderr)

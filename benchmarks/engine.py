@@ -14,7 +14,7 @@ from benchmarks.maps import big_maps
 from benchmarks.peers import networkx_bfs, pathfinding_bfs, scipy_bfs
 from benchmarks.table import Row, add
 from tui_search.engine.grid import Grid
-from tui_search.engine.run import Run
+from tui_search.engine.run import Run, recording_of
 from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
 
 
@@ -58,7 +58,7 @@ def bench_memory(name: str, grid: Grid, algorithm: str, run: Run, section: str =
     it records, so ``bare`` (the same search as a bare loop, measured the same way) gives the
     peak's floor beside it."""
     steps = run.recorded
-    rec_b = run.recording.rec.nbytes() / steps
+    rec_b = recording_of(run).rec.nbytes() / steps
     trivial = grid.copy()
     trivial.goal = trivial.start
     sem = run.semantics

@@ -21,7 +21,7 @@ from benchmarks.harness import CPU, fmt_time, interleaved, med, paired, series, 
 from benchmarks.maps import MAPS, MAZE, MAZE_SCEN, open_grid
 from benchmarks.table import Row, add
 from tui_search.engine.grid import DEFAULT_ORDER, DELTAS, SQRT2, Grid
-from tui_search.engine.run import Run
+from tui_search.engine.run import Run, recording_of
 from tui_search.engine.semantics import Semantics
 
 NEVER = Semantics(corners="never")
@@ -134,7 +134,7 @@ def bench_informed(quick: bool) -> None:
             series(f"{name} run {label}", t["run"])
             r = paired(t["run"], t["bare"])
             add(Row("informed", f"{name} {label} recorded run vs bare heapq "
-                    f"({run.recorded:,} steps, {len(run.discarded_steps()):,} stale)",
+                    f"({run.recorded:,} steps, {len(recording_of(run).discarded_steps()):,} stale)",
                     fmt_time(t["run"]), f"bare {fmt_time(t['bare'])}", r, "≤ 1.30", r <= 1.30))
             if astar:
                 pf = pathfinding_astar(grid)
@@ -165,7 +165,7 @@ def bench_big_queue(quick: bool) -> None:
     for name, k in (("small", 1), ("big", 20_000)):  # 7 entries / ~102,000
         runs[name] = Run(grid, "ucs", sem, max_steps=30_000)
         runs[name].goto(k)
-    small_n, big_n = runs["small"].frontier_len(), runs["big"].frontier_len()
+    small_n, big_n = runs["small"].now.frontier_len(), runs["big"].now.frontier_len()
 
     def step_at(name: str) -> Callable[[], None]:
         run = runs[name]
@@ -173,9 +173,9 @@ def bench_big_queue(quick: bool) -> None:
         def go() -> None:  # 50 steps forwards and back, reading what the panel reads
             for _ in range(50):
                 run.forward()
-                run.frontier(0, 30)
+                run.now.frontier(0, 30)
                 run.backward()
-                run.frontier(0, 30)
+                run.now.frontier(0, 30)
         return go
 
     t = interleaved({"small": step_at("small"), "big": step_at("big")}, 3 if quick else 7, CPU)

@@ -60,7 +60,7 @@ from tui_search.engine import record
 search.Record()
 """
     assert [line for line, _ in record_uses(source)] == list(range(1, 10))
-    fine = "run.expanded_event(k)\nrun.goal_event\nfrom tui_search.engine.run import Run\n"
+    fine = "run.steps.expanded_event(k)\nrun.nodes.goal\nfrom tui_search.engine.run import Run\n"
     assert record_uses(fine) == []
 
 

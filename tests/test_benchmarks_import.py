@@ -33,7 +33,7 @@ from benchmarks.table import Row, fmt_ratio, print_table
 from benchmarks.trivial_app import Lines, TrivialApp
 from tests.helpers import MOVINGAI
 from tui_search.engine.mapfile import load_map
-from tui_search.engine.run import Run
+from tui_search.engine.run import Run, recording_of
 from tui_search.engine.scenarios import load_scenario
 from tui_search.engine.semantics import Semantics
 
@@ -78,7 +78,7 @@ def test_the_visit_on_expand_floor_finds_the_engines_paths_and_pushes_more() -> 
         run.advance()
         parent = bare_search_visit_on_expand(grid, lifo)
         assert bare_path_len(grid, parent) == len(run.path()) - 1
-        nodes = list(run.recording.rec.gen_node)
+        nodes = list(recording_of(run).rec.gen_node)
         assert len(nodes) > len(set(nodes))  # what the floor stands for: cells pushed again
 
 
@@ -100,7 +100,7 @@ def test_the_recorded_floors_record_what_the_engine_records() -> None:
                 continue
             run = Run(grid, "dfs", sem)
             run.advance()
-            rec, bare = run.recording.rec, floor(grid)
+            rec, bare = recording_of(run).rec, floor(grid)
             assert (bare.gen_node, bare.step_end, bare.step_exp, bare.discarded,
                     bare.goal_gen) == (rec.gen_node, rec.step_end, rec.step_exp,
                                        rec.discarded, rec.goal_gen)
@@ -115,7 +115,8 @@ def test_walled_in_leaves_no_path_and_the_full_traversal_reaches_every_cell() ->
         assert bare_path_len(walled, bare(walled)) == -1
     run = Run(walled, "dfs")
     run.advance()
-    assert not run.found and run.recorded_events == walled.free_count() - 1  # not the goal
+    events = len(recording_of(run).rec.gen_node)
+    assert not run.found and events == walled.free_count() - 1  # not the goal
 
 
 def test_the_choices_section_times_every_combination_on_both_frontiers() -> None:

@@ -158,6 +158,6 @@ def test_a_streamed_trace_is_the_recorded_runs_trace(capsys, argv) -> None:
     semantics = semantics_from(args)  # resolves -a's default too
     run = Run(load_map(TUTORIAL), args.algorithm, semantics, 400)
     recorded = StringIO()
-    for step in run.steps():
+    for step in run.steps.all():
         recorded.write(trace_line(step))
     assert out == recorded.getvalue() and out.count("\n") == run.recorded

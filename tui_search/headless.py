@@ -70,7 +70,7 @@ def search_headless(grid: Grid, key: str, semantics: Semantics, max_steps: int,
         return stream(grid, algorithm, semantics, max_steps, write)
     run = Run(grid, key, semantics, max_steps)
     if out is not None:
-        for step in run.steps():
+        for step in run.steps.all():
             out.write(trace_line(step))
     return run.outcome()
 

@@ -31,7 +31,7 @@ from tui_search.engine.position import CellState
 from tui_search.engine.problem import Problem
 from tui_search.engine.record import Record
 from tui_search.engine.reference import ReferenceSearch, stream
-from tui_search.engine.run import Run
+from tui_search.engine.run import Run, recording_of
 from tui_search.engine.semantics import CORNER_RULES, GOAL_TESTS, VISIT_RULES, Semantics
 
 #: Tree search is exponential: every comparison stops here (both loops give up alike).
@@ -88,9 +88,9 @@ def reference_arrays(grid: Grid, key: str, sem: Semantics, limit: int) -> dict:
 
 def recorded_arrays(run: Run) -> dict:
     run.advance()
-    rec = run.recording.rec
+    rec = recording_of(run).rec
     return {
-        "cells": [run.gen_cell(g) for g in range(len(rec.gen_node))],
+        "cells": [run.nodes.cell(g) for g in range(len(rec.gen_node))],
         "step_end": list(rec.step_end),
         "step_exp": [rec.exp(k) for k in range(1, rec.steps + 1)],
         "discarded": list(rec.discarded),
@@ -99,7 +99,7 @@ def recorded_arrays(run: Run) -> dict:
         "goal": rec.goal_gen,
         "gave_up": rec.gave_up,
         # derived from each step's g: the same floats, bit for bit, as the reference's
-        "costs": None if rec.step_g is None else [run.gen_g(e).hex()
+        "costs": None if rec.step_g is None else [run.nodes.cost(e).hex()
                                                   for e in range(len(rec.gen_node))],
     }
 
@@ -223,15 +223,15 @@ def test_visit_on_expand_lists_duplicates_and_discards_them() -> None:
     grid = grid_from_rows(TUTORIAL_ROWS)
     run = Run(grid, "bfs", Semantics(visit="expand"))
     run.advance()
-    cells = [run.gen_cell(g) for g in range(run.recorded_events)]
+    cells = [run.nodes.cell(g) for g in range(len(recording_of(run).rec.gen_node))]
     assert len(cells) > len(set(cells))
     out = run.outcome()
-    assert out.discarded > 0 and out.discarded == len(run.discarded_steps())
-    k = run.discarded_steps()[0]
-    step = run.step(k)
+    assert out.discarded > 0 and out.discarded == len(recording_of(run).discarded_steps())
+    k = recording_of(run).discarded_steps()[0]
+    step = run.steps.at(k)
     assert step.discarded and step.successors == ()
     run.goto(k)
-    assert run.expanded == k - 1 - (run.discarded - 1)
+    assert run.now.expanded == k - 1 - (run.now.discarded - 1)
     assert out.found and out.length == 7  # still the fewest moves
 
 
@@ -241,7 +241,7 @@ def test_goal_test_on_expand_stops_when_the_goal_is_taken_off() -> None:
     on_pop = Run(grid, "bfs", Semantics(goal_test="expand"))
     out = on_pop.outcome()
     assert out.length == on_push.length and out.expanded > on_push.expanded
-    last = on_pop.step(on_pop.recorded)
+    last = on_pop.steps.at(on_pop.recorded)
     assert last.node == grid.goal and last.found_goal and last.successors == ()
 
 
@@ -292,7 +292,8 @@ def test_moving_to_step_k_works_the_same_for_every_choice(grid, choice, targets,
         for _ in range(k):
             fresh.forward()
         assert snapshot(run) == snapshot(fresh)
-        assert (run.discarded, run.frontier_len()) == (fresh.discarded, fresh.frontier_len())
+        assert ((run.now.discarded, run.now.frontier_len())
+                == (fresh.now.discarded, fresh.now.frontier_len()))
 
 
 def reference_expanded(grid: Grid, key: str, sem: Semantics, limit: int) -> list[set[Cell]]:
@@ -323,10 +324,10 @@ def assert_expanded_as_the_reference(grid: Grid, key: str, sem: Semantics, targe
     for k in itertools.chain((t % n for t in targets), range(n), reversed(range(n))):
         run.goto(k)
         cells = [(x, y) for y in range(grid.height) for x in range(grid.width)]
-        assert {c for c in cells if run.times_reached(c)[1]} == expanded[k]
+        assert {c for c in cells if run.now.times_reached(c)[1]} == expanded[k]
         coloured = {(x, y) for y in range(grid.height)
-                    for x, state in enumerate(run.row_states(y)) if state == CellState.EXPANDED}
-        shown_apart = {run.current_node()} | set(run.path() or () if run.at_end else ())
+                    for x, state in enumerate(run.now.row_states(y)) if state == CellState.EXPANDED}
+        shown_apart = {run.now.current_node()} | set(run.path() or () if run.at_end else ())
         assert coloured == expanded[k] - shown_apart
 
 

@@ -27,7 +27,7 @@ from tui_search.engine.mapfile import load_map
 from tui_search.engine.position import CellState
 from tui_search.engine.queries import EventTree
 from tui_search.engine.reference import ReferenceSearch
-from tui_search.engine.run import Run
+from tui_search.engine.run import Run, recording_of
 from tui_search.engine.scenarios import read_scenarios
 from tui_search.engine.semantics import CORNER_RULES, Semantics
 
@@ -121,22 +121,22 @@ def test_stale_entries_are_discarded_and_counted() -> None:
     grid = grid_from_rows(TUTORIAL_ROWS)
     run = Run(grid, "astar")
     run.advance()
-    events = [g for g in range(run.recorded_events) if run.gen_cell(g) == (0, 3)]
+    events = [g for g in range(len(recording_of(run).rec.gen_node)) if run.nodes.cell(g) == (0, 3)]
     first, second = events[:2]
-    assert run.gen_g(first) > run.gen_g(second)
+    assert run.nodes.cost(first) > run.nodes.cost(second)
     run.goto(run.total)
-    assert first in run.frontier() and run.is_stale(first) and not run.is_stale(second)
-    back = run.step(run.total)  # stepping back before the second push: not stale yet
+    assert first in run.now.frontier() and run.now.is_stale(first) and not run.now.is_stale(second)
+    back = run.steps.at(run.total)  # stepping back before the second push: not stale yet
     run.goto(0)
-    assert not run.is_stale(first)
+    assert not run.now.is_stale(first)
     assert back.found_goal
     # maps where a stale entry comes off before the goal: a discarded step, counted apart
     for key, rows in (("astar", ["S..#.", "...#G"]), ("greedy", ["S#....", ".#..##", "#...#G"]),
                       ("ucs", ["S...##", "...#..", "...#..", "..#..G"])):
         search = Run(grid_from_rows(rows), key)
         out = search.outcome()
-        assert out.discarded == len(search.discarded_steps()) == 1
-        step = search.step(search.discarded_steps()[0])
+        assert out.discarded == len(recording_of(search).discarded_steps()) == 1
+        step = search.steps.at(recording_of(search).discarded_steps()[0])
         assert step.discarded and step.successors == ()
 
 
@@ -155,20 +155,21 @@ def test_a_cell_taken_off_stale_is_not_expanded_until_its_real_expansion() -> No
         run.advance()
         for k in (17, 31, 21, 18, 22, 23, 16):
             run.goto(k)
-            expanded = run.times_reached((4, 1))[1]
-            state = run.cell_state((4, 1))
+            expanded = run.now.times_reached((4, 1))[1]
+            state = run.now.cell_state((4, 1))
             if k == 17:  # taken off and discarded: the cell the step took off, not expanded
-                assert run.is_discarded(17) and state == CellState.CURRENT and not expanded
+                assert run.steps.is_discarded(17) and state == CellState.CURRENT and not expanded
             elif k < 22:
                 assert state == CellState.FRONTIER and not expanded, k
             elif k == 22:
-                assert not run.is_discarded(22) and state == CellState.CURRENT and expanded == 1
+                assert not run.steps.is_discarded(22)
+                assert state == CellState.CURRENT and expanded == 1
             else:
                 assert state == CellState.EXPANDED and expanded == 1
         run.goto(18)  # (3,2) too: discarded at step 16, expanded at 19
-        assert run.is_discarded(16) and run.cell_state((3, 2)) == CellState.FRONTIER
+        assert run.steps.is_discarded(16) and run.now.cell_state((3, 2)) == CellState.FRONTIER
         run.goto(20)
-        assert run.cell_state((3, 2)) == CellState.EXPANDED
+        assert run.now.cell_state((3, 2)) == CellState.EXPANDED
 
 
 @props
@@ -183,10 +184,12 @@ def test_moving_to_step_k_gives_the_same_queue_costs_and_stale_marks(grid, key, 
         fresh = Run(grid, key, Semantics(heuristic="manhattan"))
         for _ in range(k):
             fresh.forward()
-        shown = [(g, run.gen_costs(g), run.is_stale(g)) for g in run.frontier()]
-        assert shown == [(g, fresh.gen_costs(g), fresh.is_stale(g)) for g in fresh.frontier()]
+        shown = [(g, run.nodes.costs(g), run.now.is_stale(g)) for g in run.now.frontier()]
+        assert shown == [(g, fresh.nodes.costs(g), fresh.now.is_stale(g))
+                         for g in fresh.now.frontier()]
         # the queue is in priority order, ties oldest first
-        keys = [(run.priority_key(g), g) for g in run.frontier()]
+        tree = EventTree(recording_of(run))
+        keys = [(tree.priority_key(g), g) for g in run.now.frontier()]
         assert keys == sorted(keys)
 
 
@@ -211,7 +214,8 @@ def test_the_reference_and_the_record_agree_on_every_g() -> None:
         costs.extend(s.g for s in step.successors)
     run = Run(grid, "astar")
     run.advance()
-    assert [run.gen_g(e).hex() for e in range(run.recorded_events)] == [c.hex() for c in costs]
+    events = range(len(recording_of(run).rec.gen_node))
+    assert [run.nodes.cost(e).hex() for e in events] == [c.hex() for c in costs]
 
 
 @pytest.mark.parametrize(("key", "sem"), [
@@ -233,21 +237,21 @@ def test_each_events_g_derived_from_its_steps_is_the_loops_float_past_a_cut(key,
         if step.index > run.recorded:
             break
         want.extend(s.g for s in step.successors)
-    events = range(run.recorded_events)
-    got = [run.gen_g(e) for e in events]
+    events = range(len(recording_of(run).rec.gen_node))
+    got = [run.nodes.cost(e) for e in events]
     assert [g.hex() for g in got] == [g.hex() for g in want]
     # in bulk (a rebuild's open events: ascending, with gaps), the same floats
     some = events[::3]
-    tree, rec = EventTree(run.recording), run.recording.rec
+    tree, rec = EventTree(recording_of(run)), recording_of(run).rec
     assert [g.hex() for g in tree.gen_gs(some)] == [want[e].hex() for e in some]
-    assert tree.priority_keys(some) == [run.priority_key(e) for e in some]
+    assert tree.priority_keys(some) == [tree.priority_key(e) for e in some]
     # the entry a step took off carried its event's g: the step's own, and the bulk answer
     # for that event alone right after its step was looked up
     assert rec.step_g is not None and len(rec.step_g) == len(rec.step_end)
     for k in range(1, run.recorded + 1, 7):
-        taken = run.expanded_event(k)
+        taken = run.steps.expanded_event(k)
         assert rec.step_g[k].hex() == want[taken].hex()
-        tree.gen_gs(run.succ_range(k))
+        tree.gen_gs(run.steps.succ_range(k))
         assert tree.gen_gs((taken,))[0].hex() == want[taken].hex()
 
 

@@ -7,22 +7,22 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from tests.engine.test_search import random_grids
-from tui_search.engine.run import Run
+from tui_search.engine.run import Run, recording_of
 from tui_search.engine.semantics import Semantics
 
 
 def scanned(run: Run) -> dict:
     """The latest event of each cell among the iteration's events generated so far."""
     out: dict = {}
-    for g in range(run.tree_root(), run.generated):
-        out[run.gen_cell(g)] = g
+    for g in range(run.now.tree_root(), run.now.generated):
+        out[run.nodes.cell(g)] = g
     return out
 
 
 def kept(run: Run) -> dict:
     g = run.grid
     cells = ((x, y) for y in range(g.height) for x in range(g.width))
-    return {c: e for c in cells if (e := run.last_event(c)) is not None}
+    return {c: e for c in cells if (e := run.now.last_event(c)) is not None}
 
 
 @settings(max_examples=150, deadline=None)
@@ -56,5 +56,5 @@ def test_the_depth_of_a_stack_search_event_is_its_chain_walked_once() -> None:
 
     run = Run(grid_from_rows(TUTORIAL_ROWS), "dfs")
     run.advance()
-    for g in range(run.recorded_events):
-        assert run.gen_depth(g) == len(run.ancestors(g)) - 1
+    for g in range(len(recording_of(run).rec.gen_node)):
+        assert run.nodes.depth(g) == len(run.nodes.ancestors(g)) - 1

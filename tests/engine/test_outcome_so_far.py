@@ -15,14 +15,14 @@ def test_the_figures_after_each_step_and_at_the_last_the_whole_outcome(algorithm
     (and each iteration's root), the largest frontier met."""
     run = Run(grid_from_rows(TUTORIAL_ROWS), algorithm)
     whole = run.outcome()
-    discarded, generated, peak = 0, 1, run.frontier_len()
+    discarded, generated, peak = 0, 1, run.now.frontier_len()
     for k in range(run.recorded + 1):
         if k:
             run.forward()
-            discarded += run.is_discarded(k)
-            generated += len(run.succ_range(k)) + (run.first_step_of_iteration(
-                run.iteration_of(k)) == k and run.iteration_of(k) > 0)
-            peak = max(peak, run.frontier_len())
+            discarded += run.steps.is_discarded(k)
+            generated += len(run.steps.succ_range(k)) + (run.steps.first_of_iteration(
+                run.steps.iteration_of(k)) == k and run.steps.iteration_of(k) > 0)
+            peak = max(peak, run.now.frontier_len())
         assert run.k == k
         so_far = run.outcome_so_far(k)
         assert (so_far.expanded, so_far.discarded, so_far.generated, so_far.max_frontier) == (

@@ -16,25 +16,25 @@ from tui_search.engine.grid import Grid
 from tui_search.engine.peak import PeakTable, _largest_size
 from tui_search.engine.position import CellState
 from tui_search.engine.record import CHUNK
-from tui_search.engine.run import MAX_STEPS, Run
+from tui_search.engine.run import MAX_STEPS, Run, recording_of
 
 
 def snapshot(run: Run) -> tuple:
     """Everything the app shows at the position: cells, frontier, tree, counts."""
     g = run.grid
-    cells = tuple(run.cell_state((x, y)) for y in range(g.height) for x in range(g.width))
-    rows = tuple(tuple(run.row_states(y)) for y in range(g.height))
-    frontier = tuple((run.gen_cell(e), run.gen_dir(e)) for e in run.frontier())
-    root = run.tree_root()
+    cells = tuple(run.now.cell_state((x, y)) for y in range(g.height) for x in range(g.width))
+    rows = tuple(tuple(run.now.row_states(y)) for y in range(g.height))
+    frontier = tuple((run.nodes.cell(e), run.nodes.move(e)) for e in run.now.frontier())
+    root = run.now.tree_root()
     tree = []
     todo = [root]
     while todo:
         e = todo.pop()
-        kids = list(run.children(e))
-        tree.append((run.gen_cell(e), tuple(run.gen_cell(c) for c in kids)))
+        kids = list(run.now.children(e))
+        tree.append((run.nodes.cell(e), tuple(run.nodes.cell(c) for c in kids)))
         todo.extend(kids)
-    return (run.k, cells, rows, frontier, tuple(tree), run.expanded, run.generated,
-            run.peak_frontier(), run.depth_limit(), tuple(run.added_now()))
+    return (run.k, cells, rows, frontier, tuple(tree), run.now.expanded, run.now.generated,
+            run.steps.peak_frontier(), run.steps.depth_limit(), tuple(run.now.added_now()))
 
 
 def fresh_at(grid: Grid, algo: str, k: int) -> tuple:
@@ -78,22 +78,22 @@ def test_backward_undoes_forward_exactly(grid, algo) -> None:
 
 def test_tutorial_states_by_step() -> None:
     run = Run(grid_from_rows(TUTORIAL_ROWS), "bfs")
-    assert run.cell_state((0, 0)) == CellState.FRONTIER and run.frontier_len() == 1
+    assert run.now.cell_state((0, 0)) == CellState.FRONTIER and run.now.frontier_len() == 1
     run.goto(2)
-    assert run.cell_state((0, 1)) == CellState.CURRENT
-    assert run.cell_state((0, 0)) == CellState.EXPANDED
-    assert [run.gen_cell(e) for e in run.frontier()] == [(0, 2), (1, 2)]
-    assert [run.gen_dir(e) for e in run.added_now()] == ["S", "SE"]
+    assert run.now.cell_state((0, 1)) == CellState.CURRENT
+    assert run.now.cell_state((0, 0)) == CellState.EXPANDED
+    assert [run.nodes.cell(e) for e in run.now.frontier()] == [(0, 2), (1, 2)]
+    assert [run.nodes.move(e) for e in run.now.added_now()] == ["S", "SE"]
     run.goto(run.total)
     assert run.at_end and run.found
-    assert run.cell_state((4, 0)) == CellState.PATH
-    assert run.cell_state((5, 3)) == CellState.UNSEEN
+    assert run.now.cell_state((4, 0)) == CellState.PATH
+    assert run.now.cell_state((5, 3)) == CellState.UNSEEN
 
 
 def test_dfs_frontier_is_listed_top_first() -> None:
     run = Run(grid_from_rows(TUTORIAL_ROWS), "dfs")
     run.goto(3)
-    assert [run.gen_dir(e) for e in run.frontier()] == ["NE", "E", "S", "SW", "S"]
+    assert [run.nodes.move(e) for e in run.now.frontier()] == ["NE", "E", "S", "SW", "S"]
 
 
 def test_the_run_owns_a_copy_of_the_grid() -> None:
@@ -120,7 +120,7 @@ def test_memory_grows_with_steps_not_steps_times_map() -> None:
     grid.start, grid.goal = (0, 0), (199, 199)
     run = Run(grid, "dfs")
     run.advance()
-    assert run.recording.rec.nbytes() < 40 * (run.total + 1)
+    assert recording_of(run).rec.nbytes() < 40 * (run.total + 1)
 
 
 @pytest.mark.parametrize("algorithm", ["bfs", "dfs", "iddfs"])
@@ -134,7 +134,8 @@ def test_a_run_gives_up_exactly_at_its_step_limit(algorithm) -> None:
     assert run.gave_up and run.done and not run.found and run.at_end
     assert run.k == run.total == limit
     # what it did record is the same as the full run's first steps
-    assert list(run.recording.rec.step_end) == list(full.recording.rec.step_end[: limit + 1])
+    ends = recording_of(full).rec.step_end
+    assert list(recording_of(run).rec.step_end) == list(ends[: limit + 1])
     assert summary(run)["gave_up"] and not summary(full)["gave_up"]
 
 
@@ -147,7 +148,7 @@ def test_iddfs_on_a_big_map_gives_up_at_its_step_limit_not_the_memory() -> None:
     run = Run(grid, "iddfs", max_steps=5 * CHUNK)
     run.advance()
     assert run.gave_up and run.done and not run.found and run.recorded == 5 * CHUNK
-    assert run.recording.rec.nbytes() <= 64 * run.recorded
+    assert recording_of(run).rec.nbytes() <= 64 * run.recorded
     run.goto(10**9)
     assert run.k == 5 * CHUNK and run.at_end
 
@@ -164,10 +165,11 @@ def test_a_limit_of_more_than_a_chunk_is_exact_too(algorithm, limit) -> None:
     run = Run(grid, algorithm, max_steps=limit)
     run.advance()
     assert run.gave_up and run.recorded == limit and not run.found
-    assert list(run.recording.rec.step_end) == list(full.recording.rec.step_end[: limit + 1])
-    assert run.recorded_events == run.recording.rec.step_end[limit]
+    ends = recording_of(full).rec.step_end
+    assert list(recording_of(run).rec.step_end) == list(ends[: limit + 1])
+    assert len(recording_of(run).rec.gen_node) == recording_of(run).rec.step_end[limit]
     run.goto(limit)
-    assert run.at_end and run.frontier_len() > 0
+    assert run.at_end and run.now.frontier_len() > 0
     assert summary(run)["expanded"] == limit
 
 
@@ -230,13 +232,13 @@ def test_a_rebuild_in_pieces_does_a_bounded_amount_per_piece_and_can_be_dropped(
         run.REBUILD_PIECE, run.REBUILD_CELLS = 100, 500
         run.advance(3000)
         k = run.recorded
-        rec = run.recording.rec
-        events = rec.step_end[k] - rec.iter_root[run.iteration_of(k)]
+        rec = recording_of(run).rec
+        events = rec.step_end[k] - rec.iter_root[run.steps.iteration_of(k)]
         pieces = run.rebuild_pieces(k)
         next(pieces)
         next(pieces)
         pieces.close()  # dropped half-way (a key pressed during `end`)
-        assert run.k == 0 and run.frontier_len() == 1 and run.cell_state((1, 1)) == 0
+        assert run.k == 0 and run.now.frontier_len() == 1 and run.now.cell_state((1, 1)) == 0
         n = sum(1 for _ in run.rebuild_pieces(k))
         # No piece handles more than REBUILD_PIECE events or allocates REBUILD_CELLS counters.
         assert n >= events // 100 + 2 * (62 * 62 // 500)
@@ -254,13 +256,13 @@ def test_the_peak_frontier_is_kept_while_recording(grid, algo) -> None:
         run = Run(grid, algo)
         run.advance()
         # every whole block before the last step, with no peak asked for
-        assert len(run.recording._peak) == run.recorded // 3
+        assert len(recording_of(run)._peak) == run.recorded // 3
         stepper = Run(grid, algo)
-        peak = stepper.frontier_len()
-        assert run.peak_frontier(0) == peak
+        peak = stepper.now.frontier_len()
+        assert run.steps.peak_frontier(0) == peak
         while stepper.forward():
-            peak = max(peak, stepper.frontier_len())
-            assert run.peak_frontier(stepper.k) == peak
+            peak = max(peak, stepper.now.frontier_len())
+            assert run.steps.peak_frontier(stepper.k) == peak
 
 
 @settings(max_examples=80, deadline=None)
@@ -272,10 +274,10 @@ def test_the_peak_frontier_in_any_order_of_asking(grid, algo, asks) -> None:
     with patch.object(PeakTable, "PEAK_BLOCK", 5), patch.object(PeakTable, "PEAK_PIECE", 2):
         run = Run(grid, algo)
         run.advance()
-        sizes = [run.recording.frontier_size_at(j) for j in range(run.recorded + 1)]
+        sizes = [recording_of(run).frontier_size_at(j) for j in range(run.recorded + 1)]
         for a in asks:
             k = a % (run.total + 1)
-            assert run.peak_frontier(k) == max(sizes[: k + 1]), k
+            assert run.steps.peak_frontier(k) == max(sizes[: k + 1]), k
 
 
 @settings(max_examples=200, deadline=None)
@@ -289,3 +291,4 @@ def test_the_largest_size_packed_in_one_int(steps, base, data) -> None:
     hi = data.draw(st.integers(lo + 1, len(ends)))
     c = data.draw(st.integers(0, base))  # every size stays >= 0
     assert _largest_size(ends, lo, hi, c) == max(ends[j] - j - c for j in range(lo, hi))
+

@@ -24,14 +24,14 @@ def succ_dirs(step) -> list[str]:
 
 def test_tutorial_bfs_narrative() -> None:
     """START's only successor is S; then S (S, SE), S again (S, SE), SE (E, NE)."""
-    steps = list(Run(grid_from_rows(TUTORIAL_ROWS), "bfs").steps())
+    steps = list(Run(grid_from_rows(TUTORIAL_ROWS), "bfs").steps.all())
     assert [s.node for s in steps[:4]] == [(0, 0), (0, 1), (0, 2), (1, 2)]
     assert [succ_dirs(s) for s in steps[:4]] == [["S"], ["S", "SE"], ["S", "SE"], ["E", "NE"]]
 
 
 def test_tutorial_dfs_narrative() -> None:
     """DFS expands S (S, SE), then SE (SW, S, E, NE), then NE (the last pushed)."""
-    steps = list(Run(grid_from_rows(TUTORIAL_ROWS), "dfs").steps())
+    steps = list(Run(grid_from_rows(TUTORIAL_ROWS), "dfs").steps.all())
     assert [succ_dirs(s) for s in steps[:3]] == [["S"], ["S", "SE"], ["SW", "S", "E", "NE"]]
     ne = steps[2].successors[-1][1]
     assert steps[3].node == ne
@@ -41,7 +41,7 @@ def test_tutorial_ne_successor_passes_a_blocked_corner() -> None:
     """The tutorial's SE node has an NE successor although the cell north of SE is blocked:
     diagonal moves may pass blocked corners by default."""
     grid = grid_from_rows(TUTORIAL_ROWS)
-    step4 = Run(grid, "bfs").step(4)
+    step4 = Run(grid, "bfs").steps.at(4)
     (x, y), (nx, ny) = step4.node, step4.successors[-1][1]
     assert step4.successors[-1][0] == "NE"
     assert grid.is_blocked((x, ny)) or grid.is_blocked((nx, y))
@@ -78,8 +78,8 @@ def test_goal_test_on_generation_stops_the_expansion_at_once() -> None:
     result = summary(run)
     assert result["expanded"] == 1
     assert result["generated"] == 2
-    assert run.step(1).successors == (("N", (1, 0)),)
-    assert run.step(1).found_goal
+    assert run.steps.at(1).successors == (("N", (1, 0)),)
+    assert run.steps.at(1).found_goal
 
 
 def test_start_equal_to_goal_is_a_path_of_one_cell() -> None:
@@ -98,29 +98,29 @@ def test_no_path_empties_the_frontier() -> None:
         result = summary(run)
         assert not result["found"] and result["path"] is None and result["moves"] is None
         run.goto(run.total)
-        assert run.frontier_len() == 0
+        assert run.now.frontier_len() == 0
 
 
 def test_dfs_pushes_in_order_so_the_last_pushed_is_expanded_next() -> None:
     grid = grid_from_rows([".....", ".....", "..S..", ".....", "....G"])
     run = Run(grid, "dfs")
-    first = run.step(1)
+    first = run.steps.at(1)
     assert succ_dirs(first) == ["N", "NW", "W", "SW", "S", "SE", "E", "NE"]
-    assert run.step(2).node == first.successors[-1][1]
+    assert run.steps.at(2).node == first.successors[-1][1]
 
 
 def test_bfs_expands_in_generation_order() -> None:
     grid = grid_from_rows([".....", ".....", "..S..", ".....", "....G"])
     run = Run(grid, "bfs")
-    first = run.step(1)
-    assert [run.step(k).node for k in range(2, 6)] == [c for _, c in first.successors[:4]]
+    first = run.steps.at(1)
+    assert [run.steps.at(k).node for k in range(2, 6)] == [c for _, c in first.successors[:4]]
 
 
 def test_custom_order_changes_the_successor_order() -> None:
     grid = grid_from_rows(["...", ".S.", "..G"])
     order = parse_order("N,NE,E,SE,S,SW,W,NW")
     run = Run(grid, "bfs", Semantics(order=order))
-    assert succ_dirs(run.step(1)) == ["N", "NE", "E", "SE"]  # SE is the goal: stop there
+    assert succ_dirs(run.steps.at(1)) == ["N", "NE", "E", "SE"]  # SE is the goal: stop there
 
 
 @pytest.mark.parametrize("bad", ["N,UP", "N,N,E,SE,S,SW,W,NW", "N,NE,E,SE,S,SW,W,UP", ""])
@@ -138,7 +138,7 @@ def test_no_corner_cutting_forbids_squeezing_past_a_blocked_corner() -> None:
 
 def test_iddfs_steps_carry_the_depth_limit_and_restart_from_the_root() -> None:
     run = Run(grid_from_rows(TUTORIAL_ROWS), "iddfs")
-    steps = list(run.steps())
+    steps = list(run.steps.all())
     limits = [s.depth_limit for s in steps]
     assert limits[0] == 0 and limits == sorted(limits)
     assert limits[-1] == summary(run)["length"]
@@ -221,7 +221,7 @@ def test_every_successor_is_a_legal_unvisited_move(grid: Grid, algo: str) -> Non
     generated before; each expanded node was generated before."""
     run = Run(grid, algo)
     generated = {grid.start}
-    for step in run.steps():
+    for step in run.steps.all():
         assert step.node in generated
         legal = grid.neighbours(step.node)
         for d, cell in step.successors:

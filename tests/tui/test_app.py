@@ -84,7 +84,7 @@ def screen_state(app: SearchApp) -> tuple:
     assert run is not None
     panel = app.query_one(FrontierPanel)
     screen = re.sub(r"terminal-\d+-", "terminal-", app.export_screenshot())
-    return (run.k, run.expanded, run.generated, run.frontier(), tuple(map_lines(app)),
+    return (run.k, run.now.expanded, run.now.generated, run.now.frontier(), tuple(map_lines(app)),
             stats(app), panel.border_title, tuple(panel.lines()),
             tuple(app.query_one(SearchTreePanel).lines()), screen)
 
@@ -641,11 +641,11 @@ async def test_the_view_follows_the_cursor_and_the_node_being_expanded() -> None
 
         assert visible((150, 150))
         await pilot.press("n")
-        assert visible(app.session.run.current_node())
+        assert visible(app.session.run.now.current_node())
         app.session.run.goto(5000)
         await pilot.press("n")
         await pilot.pause()
-        assert visible(app.session.run.current_node())
+        assert visible(app.session.run.now.current_node())
         for _ in range(30):
             await pilot.press("up")
         await pilot.pause()
@@ -803,12 +803,12 @@ def test_step_changes_names_every_cell_a_step_changes() -> None:
     """Repainting only step_changes' cells gives the same picture as repainting everything."""
     for algorithm in ("bfs", "dfs", "iddfs"):
         run = Run(load_map(TUTORIAL), algorithm)
-        before = [run.row_states(y) for y in range(6)]
+        before = [run.now.row_states(y) for y in range(6)]
         while True:
             old_k, was_end = run.k, run.at_end
             if not run.forward():
                 break
-            after = [run.row_states(y) for y in range(6)]
+            after = [run.now.row_states(y) for y in range(6)]
             changed = playback.step_changes(run, old_k, was_end)
             if changed is not None:
                 diff = {(x, y) for y in range(6) for x in range(6) if before[y][x] != after[y][x]}
@@ -858,7 +858,7 @@ async def test_a_run_that_reaches_the_step_limit_says_it_gave_up() -> None:
         await pilot.press("end")
         await wait_until(pilot, lambda: app.session.run.at_end)
         await pilot.pause()
-        assert app.session.run.gave_up and app.session.run.frontier_len() == 0
+        assert app.session.run.gave_up and app.session.run.now.frontier_len() == 0
         assert app.query_one(FrontierPanel).lines() == ["empty — gave up at --max-steps 1"]
 
 

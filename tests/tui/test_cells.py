@@ -240,7 +240,7 @@ async def test_a_block_of_the_overview_shows_its_most_important_state() -> None:
                         cell = (x, y)
                         looks.append(START if cell == app.session.grid.start
                                      else WALL if app.session.grid.is_blocked(cell)
-                                     else int(run.cell_state(cell)))
+                                     else int(run.now.cell_state(cell)))
                 expected.append(max(looks, key=RANK.__getitem__))
             assert view._block_codes(range(5), 0, 20) == expected
         assert FRONTIER in expected and EXPANDED not in expected  # the frontier hides it
@@ -341,8 +341,8 @@ async def test_an_informed_search_labels_cells_with_g_and_f() -> None:
         await pilot.press(*["n"] * 3)
         g = view.geometry
         run = app.session.run
-        e = run.last_event((0, 1))
-        cost, _, f = run.gen_costs(e)
+        e = run.now.last_event((0, 1))
+        cost, _, f = run.nodes.costs(e)
         _, y, _, h = g.cell_region((0, 1))
         assert view.render_line(y).text[: g.cell_width].endswith(f"{cost:.0f}")
         last = view.render_line(y + h - 1).text[: g.cell_width]
@@ -357,7 +357,8 @@ async def test_a_step_in_big_cells_repaints_only_the_lines_of_the_cells_it_chang
         await pilot.pause()
         run = app.session.run
         app.main.action_next()
-        changed = run.changed_cells(run.k) + [run.gen_cell(run.expanded_event(run.k - 1))]
+        before = run.nodes.cell(run.steps.expanded_event(run.k - 1))
+        changed = run.now.changed_cells(run.k) + [before]
         lines = {line for cell in changed for line in view.geometry.lines_of(cell)}
         assert painted and set(painted) == lines
         assert not any(a == () for a in whole), "a whole-view refresh"
@@ -440,7 +441,7 @@ async def test_the_readout_of_a_cost_ordered_search_gives_g_h_and_f() -> None:
         await pilot.press("n", "down")
         text = readout(app)
         run = app.session.run
-        cost, _, _ = run.gen_costs(run.last_event((0, 1)))
+        cost, _, _ = run.nodes.costs(run.now.last_event((0, 1)))
         assert text.startswith("Cursor (0,1): on the frontier since step 1, depth 1, ")
         assert f"g {cost:g}, h " in text and "f " in text and "reached by S from (0,0)" in text
 
@@ -456,7 +457,7 @@ async def test_keys_jump_the_cursor_to_start_goal_and_the_node_being_expanded() 
         await pilot.press("e")  # step 0: none yet
         assert app.session.cursor == (5, 5)
         await pilot.press("n", "n", "n", "e")
-        assert app.session.cursor == app.session.run.current_node()
+        assert app.session.cursor == app.session.run.now.current_node()
         await pilot.press("S")
         await pilot.pause()
         assert app.session.cursor == (100, 120) and in_view(view, (100, 120))

@@ -19,7 +19,8 @@ from tui_search.engine.grid import Grid
 from tui_search.engine.heuristics import INADMISSIBLE
 from tui_search.engine.mapfile import load_map
 from tui_search.engine.position import CellState
-from tui_search.engine.run import Run
+from tui_search.engine.queries import EventTree
+from tui_search.engine.run import Run, recording_of
 from tui_search.engine.scenarios import load_scenario
 from tui_search.engine.semantics import Semantics
 from tui_search.tui.app import SearchApp
@@ -104,10 +105,10 @@ async def test_a_stale_step_is_discarded_and_says_why() -> None:
     async with app.run_test(size=SIZE) as pilot:
         run = app.session.run
         run.advance()
-        k = run.discarded_steps()[0]
+        k = recording_of(run).discarded_steps()[0]
         for _ in range(k):
             await pilot.press("n")
-        assert run.is_discarded(run.k)
+        assert run.steps.is_discarded(run.k)
         narration = stats(app)[1]
         assert "stale (its cell was reached with a lower g since), discarded" in narration
         lines = panel_lines(app)
@@ -131,7 +132,7 @@ def test_a_cell_expanded_then_reached_with_a_lower_g_is_narrated_re_opened() -> 
     assert narrate(run) == ("Expanded (3,1) f = 7.83 (g 2.83 + h 5.00): added NW, W, SW; "
                             "(2,1) reached with a lower g, (2,2) re-opened with a lower g")
     run.goto(9)
-    assert run.current_node() == (2, 2) and not run.is_discarded(9)
+    assert run.now.current_node() == (2, 2) and not run.steps.is_discarded(9)
     assert narrate(run).startswith("Expanded (2,2) f = 7.24 (g 4.24 + h 3.00)")
 
 
@@ -146,10 +147,10 @@ def test_a_cell_only_taken_off_stale_is_not_narrated_re_opened() -> None:
                            "..S#.."])
     run = Run(grid, "greedy", Semantics(heuristic="manhattan"))
     run.goto(17)
-    assert run.current_node() == (4, 1) and run.is_discarded(17)
-    assert run.times_reached((4, 1)) == (2, 0)  # taken off once, stale: not expanded
+    assert run.now.current_node() == (4, 1) and run.steps.is_discarded(17)
+    assert run.now.times_reached((4, 1)) == (2, 0)  # taken off once, stale: not expanded
     run.goto(18)  # the map and the readout: still waiting on the frontier, not expanded
-    assert run.row_states(1)[4] == CellState.FRONTIER
+    assert run.now.row_states(1)[4] == CellState.FRONTIER
     assert describe(run, grid, (4, 1)).startswith("(4,1): on the frontier since step 12,")
     run.goto(19)
     assert narrate(run) == ("Expanded (3,2) h = 5.00 (g 2.41): added E, NE; "
@@ -231,15 +232,16 @@ async def test_a_priority_queue_of_100000_entries_is_drawn_line_by_line() -> Non
         app.main.present()  # the app's own refresh, after moving its run directly
         await pilot.pause()
         panel = app.query_one(FrontierPanel)
-        n = run.frontier_len()
+        n = run.now.frontier_len()
         assert n > 100_000
         assert panel.line_text(0) == f"{n:,} in the priority queue"
         assert panel.virtual_size.height == n + 1 and not panel.children
-        (last,) = run.frontier(n - 1, n)
-        x, y = run.gen_cell(last)
+        (last,) = run.now.frontier(n - 1, n)
+        x, y = run.nodes.cell(last)
         assert panel.line_text(n)[3:].startswith(f"({x},{y})")
         await pilot.press("n", "p")
-        keys = [run.priority_key(g) for g in run.frontier(0, 200)]
+        tree = EventTree(recording_of(run))
+        keys = [tree.priority_key(g) for g in run.now.frontier(0, 200)]
         assert keys == sorted(keys) and run.k == 20_000
         widgets = len(list(app.screen.walk_children()))
 
@@ -258,10 +260,10 @@ async def test_a_priority_queue_of_100000_entries_is_drawn_line_by_line() -> Non
         assert shown_entries(panel)[0] is None  # home: the count line again
         panel.scroll_to(y=50_000, animate=False, immediate=True)
         await pilot.pause()
-        (g,) = run.frontier(49_999, 50_000)  # line 50,000: the queue's entry 49,999
-        x, y = run.gen_cell(g)
+        (g,) = run.now.frontier(49_999, 50_000)  # line 50,000: the queue's entry 49,999
+        x, y = run.nodes.cell(g)
         assert shown_entries(panel) == queue_at(panel, run)
-        assert shown_entries(panel)[0] == (f"({x},{y})", f"{run.gen_g(g):.2f}")
+        assert shown_entries(panel)[0] == (f"({x},{y})", f"{run.nodes.cost(g):.2f}")
         assert not panel.children and len(list(app.screen.walk_children())) == widgets
         # the next step scrolls the queue back to its front
         await pilot.press("n")
@@ -285,7 +287,7 @@ def queue_at(panel: FrontierPanel, run: Run) -> list[tuple[str, str] | None]:
     top = panel.scroll_offset.y
     rows = panel.scrollable_content_region.height
     out: list[tuple[str, str] | None] = [None] * max(0, 1 - top)
-    for g in run.frontier(max(0, top - 1), top - 1 + rows):
-        x, y = run.gen_cell(g)
-        out.append((f"({x},{y})", f"{run.gen_g(g):.2f}"))
+    for g in run.now.frontier(max(0, top - 1), top - 1 + rows):
+        x, y = run.nodes.cell(g)
+        out.append((f"({x},{y})", f"{run.nodes.cost(g):.2f}"))
     return out

@@ -121,7 +121,7 @@ async def test_dfs_stack_has_ne_on_top() -> None:
     run = tutorial_run("dfs", 3)
     panel = FrontierPanel()
     async with PanelApp(panel, run).run_test(size=(50, 12)):
-        assert run.current_node() == (1, 2)
+        assert run.now.current_node() == (1, 2)
         assert panel.border_title == "Stack (LIFO)"
         assert screen_lines(panel) == [
             "5 on the stack",
@@ -139,7 +139,7 @@ async def test_iddfs_stack_shows_depths_and_iteration_ends() -> None:
     run = tutorial_run("iddfs", 5)
     panel = FrontierPanel()
     async with PanelApp(panel, run).run_test(size=(50, 12)) as pilot:
-        assert run.depth_limit() == 2
+        assert run.steps.depth_limit() == 2
         assert panel.border_title == "Stack (LIFO)"
         assert screen_lines(panel) == [
             "2 on the stack",
@@ -170,7 +170,7 @@ async def test_big_queue_renders_and_scrolls_to_the_end() -> None:
     """BFS on an open 400x400 map after 100 000 steps: lines come from the run on demand."""
     run = Run(walled_goal_grid(400), "bfs")
     run.goto(100_000)
-    n = run.frontier_len()
+    n = run.now.frontier_len()
     panel = FrontierPanel()
     async with PanelApp(panel, run).run_test(size=(50, 20)) as pilot:
         assert panel.virtual_size.height == 1 + n
@@ -179,15 +179,15 @@ async def test_big_queue_renders_and_scrolls_to_the_end() -> None:
         panel.scroll_end(animate=False, immediate=True)
         await pilot.pause()
         last = screen_lines(panel)[-1]
-        (g,) = run.frontier(n - 1, n)
-        x, y = run.gen_cell(g)
-        assert f"({x},{y}) {run.gen_dir(g)}" in last and last.endswith("← back (newest)")
+        (g,) = run.now.frontier(n - 1, n)
+        x, y = run.nodes.cell(g)
+        assert f"({x},{y}) {run.nodes.move(g)}" in last and last.endswith("← back (newest)")
         # one more step: back to the front, the new entries marked at the back
         run.forward()
         panel.show(run)
         await pilot.pause()
         assert panel.scroll_offset.y == 0
-        assert panel.line_text(run.frontier_len()).startswith(" +")  # the count, then entries
+        assert panel.line_text(run.now.frontier_len()).startswith(" +")  # the count, then entries
 
 
 @sync
@@ -195,7 +195,7 @@ async def test_stack_of_100_000_entries() -> None:
     """DFS on an open 1000x1000 map: a stack of over 100 000 entries, bottom line reachable."""
     run = Run(walled_goal_grid(1000), "dfs")
     run.goto(80_000)
-    n = run.frontier_len()
+    n = run.now.frontier_len()
     assert n >= 100_000
     panel = FrontierPanel()
     async with PanelApp(panel, run).run_test(size=(50, 20)) as pilot:
@@ -212,15 +212,15 @@ async def test_stack_of_100_000_entries() -> None:
 
 
 def reference_tree(run: Run) -> list[str]:
-    """The tree at the position in preorder, built from the engine's ``children()``:
+    """The tree at the position in preorder, built from the engine's ``run.now.children()``:
     ``"  S (0,2)"`` (two spaces a level) -- an independent check of the panel's listing."""
     out = []
-    todo = [(run.tree_root(), 0)]
+    todo = [(run.now.tree_root(), 0)]
     while todo:
         g, depth = todo.pop()
-        x, y = run.gen_cell(g)
-        out.append(f"{'  ' * depth}{run.gen_dir(g)} ({x},{y})")
-        todo.extend((c, depth + 1) for c in reversed(run.children(g)))
+        x, y = run.nodes.cell(g)
+        out.append(f"{'  ' * depth}{run.nodes.move(g)} ({x},{y})")
+        todo.extend((c, depth + 1) for c in reversed(run.now.children(g)))
     return out
 
 
@@ -290,7 +290,7 @@ async def test_tree_path_highlighted_at_the_end() -> None:
         goal_line = next(y for y, line in enumerate(lines) if "★ goal" in line)
         assert lines[goal_line].endswith("└─ ★ S (5,2)  ★ goal")
         path_style = panel.get_component_rich_style("search-tree--path")
-        on_path = {run.gen_cell(g) for g in run.path_gens()}  # the path outranks "current"
+        on_path = {run.nodes.cell(g) for g in run.nodes.path()}  # the path outranks "current"
         assert len(on_path) == 8
         for y, line in enumerate(lines):
             cell = line.split(" (")[-1].split(")")[0] if "(" in line else None
@@ -306,7 +306,7 @@ async def test_iddfs_tree_title_and_cutoff() -> None:
     run = tutorial_run("iddfs", 7)
     panel = SearchTreePanel()
     async with PanelApp(panel, run).run_test(size=(50, 14)):
-        assert run.depth_limit() == 2
+        assert run.steps.depth_limit() == 2
         assert panel.border_title == "Search tree · depth limit 2"
         assert screen_lines(panel) == [
             "4 nodes",
@@ -320,7 +320,7 @@ async def test_iddfs_tree_title_and_cutoff() -> None:
 @pytest.mark.parametrize("algorithm", ["bfs", "dfs", "iddfs"])
 @sync
 async def test_tree_listing_matches_the_engine_stepping_both_ways(algorithm: str) -> None:
-    """The incrementally kept listing equals a tree built from ``run.children()`` at every
+    """The incrementally kept listing equals a tree built from ``run.now.children()`` at every
     step, forwards, backwards and after jumps."""
     run = tutorial_run(algorithm, 0)
     panel = SearchTreePanel()
@@ -331,7 +331,7 @@ async def test_tree_listing_matches_the_engine_stepping_both_ways(algorithm: str
             run.goto(k)
             panel.show(run)
             count, *lines = panel.lines()
-            size = run.tree_size()
+            size = run.now.tree_size()
             assert count == f"{size} node{'s' if size != 1 else ''}", k
             assert [strip_tree(line) for line in lines] == reference_tree(run), k
 
@@ -345,35 +345,35 @@ async def test_big_tree_shows_the_focused_view() -> None:
     panel = SearchTreePanel()
     async with PanelApp(panel, run).run_test(size=(90, 20)) as pilot:
         assert panel.mode == "focus"
-        size = run.tree_size()
+        size = run.now.tree_size()
         assert panel.border_title == "Search tree"
         note = panel.line_text(0)
         assert note == f"({size:,} nodes; showing the path to the node being expanded)"
-        chain = run.ancestors(run.expanded_event(run.k))
+        chain = run.nodes.ancestors(run.steps.expanded_event(run.k))
         depth = len(chain) - 1
-        kids = list(run.added_now())
+        kids = list(run.now.added_now())
         assert panel.virtual_size.height == 3 + tree_model.SHOW_LEVELS + 1 + len(kids)
         assert panel.line_text(1) == "  0 ● START (0,0)"
         hidden = depth - tree_model.SHOW_LEVELS - 1
         assert panel.line_text(2) == f"    ⋮  {hidden} levels not shown"
         visible = screen_lines(panel)
         current = next(line for line in visible if "◀ expanding" in line)
-        x, y = run.current_node()  # type: ignore[misc]
+        x, y = run.now.current_node()  # type: ignore[misc]
         assert current.lstrip().startswith(f"{depth} ")
-        assert f"● {run.gen_dir(chain[-1])} ({x},{y})" in current
+        assert f"● {run.nodes.move(chain[-1])} ({x},{y})" in current
         # the last lines: the deepest edges, each with its move, then the children
         below = len(visible) - len(kids)
         for g, line in zip(chain[-5:], visible[below - 5 : below], strict=True):
-            cx, cy = run.gen_cell(g)
-            assert f"{run.gen_dir(g)} ({cx},{cy})" in line
+            cx, cy = run.nodes.cell(g)
+            assert f"{run.nodes.move(g)} ({cx},{cy})" in line
         for g, line in zip(kids, visible[below:], strict=True):
-            cx, cy = run.gen_cell(g)
-            assert f"○ {run.gen_dir(g)} ({cx},{cy})" in line
+            cx, cy = run.nodes.cell(g)
+            assert f"○ {run.nodes.move(g)} ({cx},{cy})" in line
         # a step forward keeps the new node in view
         run.forward()
         panel.show(run)
         await pilot.pause()
-        x, y = run.current_node()  # type: ignore[misc]
+        x, y = run.now.current_node()  # type: ignore[misc]
         assert any("◀ expanding" in line and f"({x},{y})" in line for line in screen_lines(panel))
 
 
@@ -409,7 +409,7 @@ async def test_deep_dfs_chain_is_cut_to_its_deepest_levels() -> None:
         assert panel.mode == "focus"
         assert panel.line_text(1).endswith("● START (0,0)")
         assert "⋮" in panel.line_text(2) and "levels not shown" in panel.line_text(2)
-        x, y = run.current_node()  # type: ignore[misc]
+        x, y = run.now.current_node()  # type: ignore[misc]
         assert any("◀ expanding" in line and f"({x},{y})" in line for line in screen_lines(panel))
 
 
@@ -500,12 +500,13 @@ async def test_a_step_repaints_a_scrollbar_only_where_its_thumb_moves() -> None:
         for _ in range(150):
             before = scrollbar_cells(bar)
             run.forward()
-            lengths.add(run.frontier_len())
+            lengths.add(run.now.frontier_len())
             panel.show(run)
             await settle(pilot)  # handled and painted, without pilot.pause()'s idle wait
             after = scrollbar_cells(bar)
             changed += sum(a != b for a, b in zip(after, before))
-            assert bar.window_virtual_size == panel.virtual_size.height == 1 + run.frontier_len()
+            assert (bar.window_virtual_size == panel.virtual_size.height
+                    == 1 + run.now.frontier_len())
             assert bar.window_size == panel.scrollable_content_region.height
             shown = [cell(s) for strip in bar.render_lines(bar.size.region) for s in strip]
             expected = [cell(s) for s in drawn_bar(bar.size.height, bar.window_virtual_size,

@@ -89,13 +89,13 @@ async def test_esc_stops_end_while_it_moves_and_leaves_the_run_where_it_was(one_
     app.session.run.advance()
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("n", "n")
-        before = (app.session.run.k, app.session.run.frontier(), stats(app))
+        before = (app.session.run.k, app.session.run.now.frontier(), stats(app))
         await pilot.press("end")
         assert app.session.seeking and stats(app)[1].startswith("Moving to step")
         await pilot.press("escape")
         run = app.session.run
         assert not app.session.seeking
-        assert (run.k, run.frontier(), stats(app)) == before
+        assert (run.k, run.now.frontier(), stats(app)) == before
 
 
 @sync
@@ -121,8 +121,8 @@ async def test_end_left_alone_gets_there_in_many_slices(monkeypatch: pytest.Monk
         stepped.advance()
         while stepped.forward():
             pass
-        assert run.frontier() == stepped.frontier() and run.k == stepped.k
-        assert run.peak_frontier() == stepped.peak_frontier()
+        assert run.now.frontier() == stepped.now.frontier() and run.k == stepped.k
+        assert run.steps.peak_frontier() == stepped.steps.peak_frontier()
     assert len(calls) > 10 and calls[-1] is None and all(c is not None for c in calls[:-1])
 
 
@@ -223,11 +223,11 @@ async def test_counts_are_grouped_with_commas_everywhere() -> None:
         app.main.present()
         await pilot.pause()
         run = app.session.run
-        n, size = run.frontier_len(), run.tree_size()
+        n, size = run.now.frontier_len(), run.now.tree_size()
         assert n > 999 and size > 999
         assert app.query_one(FrontierPanel).line_text(0) == f"{n:,} in the queue"
         assert f"{size:,} nodes" in app.query_one(SearchTreePanel).line_text(0)
-        assert f"generated {run.generated:,}" in stats(app)[0]
+        assert f"generated {run.now.generated:,}" in stats(app)[0]
         assert f"step 70,000/{run.total:,}" in stats(app)[0]
 
 

@@ -23,8 +23,8 @@ async def test_the_quiz_hides_the_order_asks_and_keeps_a_score() -> None:
     async with app.run_test(size=SIZE) as pilot:
         assert "Quiz" in [desc for _, desc, _ in app.query_one(KeyBar).hints()]
         await pilot.press("n", "n")
-        front = app.session.run.frontier(0, 1)[0]
-        answer = app.session.run.gen_cell(front)
+        front = app.session.run.now.frontier(0, 1)[0]
+        answer = app.session.run.nodes.cell(front)
         await pilot.press("i")
         assert app.session.quiz.on and stats(app)[1].startswith(
             "Quiz (0 of 0): which node comes off the queue next?")
@@ -33,12 +33,12 @@ async def test_the_quiz_hides_the_order_asks_and_keeps_a_score() -> None:
         assert app.query_one(FrontierPanel).border_title.endswith("· order hidden")
         app.session.cursor = answer
         await pilot.press("enter")
-        assert app.session.run.k == 3 and app.session.run.current_node() == answer
+        assert app.session.run.k == 3 and app.session.run.now.current_node() == answer
         assert stats(app)[1].startswith(f"Right: ({answer[0]},{answer[1]}) was the queue's "
                                         "front · 1 of 1")
         app.session.cursor = (5, 5)  # not on the frontier at all
         await pilot.press("enter")
-        node = app.session.run.current_node()
+        node = app.session.run.now.current_node()
         assert stats(app)[1].startswith(f"Not quite: ({node[0]},{node[1]}) came off the "
                                         "queue's front, not (5,5) · 1 of 2")
         await pilot.press("i")  # off: the order and the marks come back
@@ -52,7 +52,7 @@ async def test_under_dfs_the_answer_is_the_stacks_top() -> None:
         await pilot.press("i")
         assert "(it is the stack's top)" in stats(app)[1]
         for _ in range(3):
-            top = app.session.run.gen_cell(app.session.run.frontier(0, 1)[0])
+            top = app.session.run.nodes.cell(app.session.run.now.frontier(0, 1)[0])
             app.session.cursor = top
             await pilot.press("enter")
         assert "3 of 3" in stats(app)[1]
@@ -85,7 +85,7 @@ async def quiz_after_two_steps(pilot):
     front) and the entry that is not it."""
     await pilot.press("n", "n", "i")
     run = pilot.app.session.run
-    cells = [run.gen_cell(g) for g in run.frontier(0, 10)]
+    cells = [run.nodes.cell(g) for g in run.now.frontier(0, 10)]
     return cells[0], cells[1]
 
 
@@ -103,7 +103,7 @@ async def test_a_click_on_the_front_entry_picks_it_and_enter_answers_right() -> 
         assert panel.entry_cell(panel.pick_line()) == answer
         assert panel.line_band(panel.pick_line()) is not None  # the picked line is marked
         await pilot.press("enter")
-        assert app.session.run.k == 3 and app.session.run.current_node() == answer
+        assert app.session.run.k == 3 and app.session.run.now.current_node() == answer
         assert (app.session.quiz.right, app.session.quiz.asked) == (1, 1)
         assert stats(app)[1].startswith(f"Right: ({answer[0]},{answer[1]}) was the queue's "
                                         "front · 1 of 1 · next: cursor or pick, enter")
@@ -117,7 +117,7 @@ async def test_a_click_on_another_entry_and_enter_is_not_quite() -> None:
         await click_entry(pilot, other)
         assert app.session.cursor == other
         await pilot.press("enter")
-        assert app.session.run.current_node() == answer
+        assert app.session.run.now.current_node() == answer
         assert (app.session.quiz.right, app.session.quiz.asked) == (0, 1)
         assert stats(app)[1].startswith(
             f"Not quite: ({answer[0]},{answer[1]}) came off the queue's front, "
@@ -189,7 +189,7 @@ async def test_in_compare_mode_the_left_panes_frontier_picks() -> None:
         await pilot.pause()
         left, right = (pane.frontier for pane in app.main.panes)
         await pilot.press("n", "n", "i")
-        answer = app.session.run.gen_cell(app.session.run.frontier(0, 1)[0])
+        answer = app.session.run.nodes.cell(app.session.run.now.frontier(0, 1)[0])
         await pilot.click(right, offset=(4, 2))  # the right pane's front: not the quiz's
         await pilot.pause()
         assert app.session.cursor == (0, 0)

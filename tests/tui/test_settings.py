@@ -12,6 +12,7 @@ from tests.tui.test_app import (
     wait_until,
 )
 from tui_search.engine.mapfile import load_map
+from tui_search.engine.run import recording_of
 from tui_search.engine.semantics import Semantics
 from tui_search.tui.app import SearchApp
 from tui_search.tui.screens.settings import SettingsScreen
@@ -107,10 +108,10 @@ async def test_visit_on_expand_lists_duplicates_and_says_when_a_step_is_discarde
     async with app.run_test(size=SIZE) as pilot:
         run = app.session.run
         run.advance()
-        k = run.discarded_steps()[0]
+        k = recording_of(run).discarded_steps()[0]
         for _ in range(k - 1):
             await pilot.press("n")
-        cells = [run.gen_cell(g) for g in run.frontier()]
+        cells = [run.nodes.cell(g) for g in run.now.frontier()]
         assert len(cells) > len(set(cells))  # a cell twice on the queue
         panel = app.query_one(FrontierPanel)
         shown = [panel.line_text(y) for y in range(len(cells))]
@@ -149,13 +150,13 @@ async def test_a_discarded_step_shows_the_entry_it_threw_away() -> None:
     async with app.run_test(size=SIZE) as pilot:
         run = app.session.run
         run.advance()
-        k = run.discarded_steps()[0]
+        k = recording_of(run).discarded_steps()[0]
         for _ in range(k):
             await pilot.press("n")
-        x, y = run.gen_cell(run.expanded_event(k))
+        x, y = run.nodes.cell(run.steps.expanded_event(k))
         first = app.query_one(FrontierPanel).line_text(1)  # under the count
         assert first.startswith(f"✗  ({x},{y})") and "discarded" in first
         assert any("◀ discarded" in line for line in app.query_one(SearchTreePanel).lines())
         await pilot.press("n")  # the next step expands: the mark goes
-        if not run.is_discarded(k + 1):
+        if not run.steps.is_discarded(k + 1):
             assert "✗" not in " ".join(app.query_one(FrontierPanel).lines())

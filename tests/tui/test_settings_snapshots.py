@@ -55,13 +55,13 @@ def test_a_discarded_step(snap_compare) -> None:
     and discarded."""
     from tests.tui.test_app import TUTORIAL
     from tui_search.engine.mapfile import load_map
-    from tui_search.engine.run import Run
+    from tui_search.engine.run import Run, recording_of
     from tui_search.engine.semantics import Semantics
     from tui_search.tui.app import SearchApp
 
     sem = Semantics(visit="expand")
     probe = Run(load_map(TUTORIAL), "bfs", sem)
     probe.advance()
-    k = probe.discarded_steps()[0]
+    k = recording_of(probe).discarded_steps()[0]
     app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, semantics=sem)
     assert snap_compare(app, press=["n"] * k, terminal_size=SIZE)

@@ -41,17 +41,17 @@ def _quiz(app: SearchApp) -> list[str]:
 def _figures(app: SearchApp) -> list[str]:
     """A*: the entry expanded next, with its f, g and h, in the frontier panel."""
     run = app.session.run
-    (g,) = run.frontier(0, 1)
-    x, y = run.gen_cell(g)
-    cost, h, f = run.gen_costs(g)
-    return [f"({x},{y}) {run.gen_dir(g)}", f"f {f:.2f}", f"g {cost:.2f}", f"h {h:.2f}"]
+    (g,) = run.now.frontier(0, 1)
+    x, y = run.nodes.cell(g)
+    cost, h, f = run.nodes.costs(g)
+    return [f"({x},{y}) {run.nodes.move(g)}", f"f {f:.2f}", f"g {cost:.2f}", f"h {h:.2f}"]
 
 
 def _next_limit(app: SearchApp) -> list[str]:
     """Iterative deepening between two iterations: the next depth limit."""
     run = app.session.run
-    assert run.frontier_len() == 0
-    return [f"next: depth limit {run.depth_limit() + 1}"]
+    assert run.now.frontier_len() == 0
+    return [f"next: depth limit {run.steps.depth_limit() + 1}"]
 
 
 def _nothing(app: SearchApp) -> list[str]:

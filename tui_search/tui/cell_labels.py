@@ -37,13 +37,13 @@ def number_text(value: float, room: int) -> str | None:
 def label(run: Run, cell: Cell, mode: str) -> tuple[str, list[float]]:
     """The arrow (or ``""``) and the numbers ``cell``'s label shows in ``mode``, from the
     latest event that reached the cell at the run's position (nothing when none did)."""
-    g = run.last_event(cell)
+    g = run.now.last_event(cell)
     if g is None or mode == "none":
         return "", []
-    arrow = ARROWS.get(run.gen_dir(g), "") if mode == "arrows" else ""
-    costs = run.gen_costs(g)
+    arrow = ARROWS.get(run.nodes.move(g), "") if mode == "arrows" else ""
+    costs = run.nodes.costs(g)
     if costs is None:
-        numbers = [float(run.gen_depth(g))]
+        numbers = [float(run.nodes.depth(g))]
     else:
         cost, h, priority = costs
         numbers = [cost, priority] if priority != cost else [cost]

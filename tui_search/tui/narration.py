@@ -41,7 +41,7 @@ def frontier_word(run: Run) -> str:
 def costs_text(run: Run, g: int) -> str:
     """Event ``g``'s priority said with what it adds up: "f = 7.24 (g 4.41 + h 2.83)",
     "g = 4.41", "h = 2.83 (g 4.41)"; empty for a queue or a stack."""
-    costs = run.gen_costs(g)
+    costs = run.nodes.costs(g)
     if costs is None:
         return ""
     cost, h, f = costs
@@ -61,8 +61,8 @@ def _reopened(run: Run, added: range) -> list[str]:
     before its cheaper one, and a discarded step is no expansion)."""
     out = []
     for h in added:
-        cell = run.gen_cell(h)
-        generated, expanded = run.times_reached(cell)
+        cell = run.nodes.cell(h)
+        generated, expanded = run.now.times_reached(cell)
         if expanded:
             out.append(f"{cell_text(cell)} re-opened with a lower g")
         elif generated > 1:
@@ -72,15 +72,15 @@ def _reopened(run: Run, added: range) -> list[str]:
 
 def _node_text(run: Run, g: int) -> str:
     """An event as the tutorial names it: START, or the cell (and the move that reached it)."""
-    cell = cell_text(run.gen_cell(g))
-    return f"START {cell}" if run.gen_parent(g) < 0 else cell
+    cell = cell_text(run.nodes.cell(g))
+    return f"START {cell}" if run.nodes.parent(g) < 0 else cell
 
 
 def narrate(run: Run) -> str:
     """One line about the step just taken (or, at step 0, about what happens next)."""
     word = frontier_word(run)
     k = run.k
-    limit = run.depth_limit() if run.algo.iterative else None
+    limit = run.steps.depth_limit() if run.algo.iterative else None
     if k == 0:
         first = f"START {cell_text(run.grid.start)} is on the {word}"
         if limit is not None:
@@ -88,25 +88,25 @@ def narrate(run: Run) -> str:
         if run.at_end and run.found:
             return f"{first}: the start is the goal"
         return f"{first}. Press n to expand it."
-    expanded = run.expanded_event(k)
+    expanded = run.steps.expanded_event(k)
     node = _node_text(run, expanded)
     costs = costs_text(run, expanded)
     if costs:
         node = f"{node} {costs}"
-    added = run.added_now()
-    dirs = [run.gen_dir(h) for h in added]
+    added = run.now.added_now()
+    dirs = [run.nodes.move(h) for h in added]
     prefix = ""
-    if limit is not None and run.first_step_of_iteration(run.iteration_of(k)) == k:
+    if limit is not None and run.steps.first_of_iteration(run.steps.iteration_of(k)) == k:
         prefix = f"Depth limit {limit}, a new iteration from START. "
     if run.at_end and run.found:
-        goal = cell_text(run.gen_cell(run.goal_event))
-        if run.goal_event == expanded:  # the goal tested when taken off the frontier
+        goal = cell_text(run.nodes.cell(run.nodes.goal))
+        if run.nodes.goal == expanded:  # the goal tested when taken off the frontier
             return f"{prefix}Took the goal {goal} off the {word}: found"
         return f"{prefix}Goal {goal} found from {node}"
-    if run.is_discarded(k) and run.algo.weighted:
+    if run.steps.is_discarded(k) and run.algo.weighted:
         text = (f"{prefix}Took {node} off the {word}: stale (its cell was reached with a "
                 f"lower g since), discarded")
-    elif run.is_discarded(k):
+    elif run.steps.is_discarded(k):
         text = f"{prefix}Took {node} off the {word}: already expanded, discarded"
     elif dirs and run.algo.weighted:
         text = f"{prefix}Expanded {node}: added {', '.join(dirs)}"
@@ -115,7 +115,7 @@ def narrate(run: Run) -> str:
             text += "; " + ", ".join(reopened)
     elif dirs:
         text = f"{prefix}Expanded {node}: added {', '.join(dirs)} to the {word}"
-    elif limit is not None and run.gen_depth(expanded) >= limit:
+    elif limit is not None and run.nodes.depth(expanded) >= limit:
         text = f"{prefix}Expanded {node} at the depth limit {limit}: no successors added"
     else:
         text = f"{prefix}Expanded {node}: no new successors"
@@ -155,19 +155,20 @@ def status_parts(run: Run) -> list[tuple[str, str]]:
     step = f"{digits(run.k)}/{digits(total) if total is not None else '?'}"
     parts = [
         ("step", step),
-        ("expanded", digits(run.expanded)),
+        ("expanded", digits(run.now.expanded)),
     ]
     if run.k and run.algo.weighted:  # the node just expanded: "f 7.24 (g 4.41 + h 2.83)"
-        name, _, value = costs_text(run, run.expanded_event(run.k)).partition(" = ")
+        name, _, value = costs_text(run, run.steps.expanded_event(run.k)).partition(" = ")
         parts.insert(1, (name, value))
     if (run.semantics.visit == "expand" or run.algo.weighted) and not run.semantics.tree_search:
-        parts.append(("discarded", digits(run.discarded)))
+        parts.append(("discarded", digits(run.now.discarded)))
     parts += [
-        ("generated", digits(run.generated)),
-        (frontier_word(run), f"{digits(run.frontier_len())} (peak {digits(run.peak_frontier())})"),
+        ("generated", digits(run.now.generated)),
+        (frontier_word(run),
+         f"{digits(run.now.frontier_len())} (peak {digits(run.steps.peak_frontier())})"),
     ]
     if run.algo.iterative:
-        parts.append(("depth limit", str(run.depth_limit())))
+        parts.append(("depth limit", str(run.steps.depth_limit())))
     return parts
 
 
@@ -225,7 +226,7 @@ def bound_text(run: Run) -> str:
     else:  # 7^139 has 118 digits: say how big, not every digit
         power = str(len(digits) - 1).translate(_SUPERSCRIPT)
         value = f"≈ {digits[0]}.{digits[1]}×10{power}"
-    return f"generated {run.generated:,} of at most {base}{exponent} {value}"
+    return f"generated {run.now.generated:,} of at most {base}{exponent} {value}"
 
 
 def algorithm_title(algorithm: str) -> str:

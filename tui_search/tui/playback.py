@@ -85,12 +85,12 @@ def step_changes(run: Run, old_k: int, was_at_end: bool) -> list[Cell] | None:
     k = run.k
     if k == old_k:
         return []
-    if abs(k - old_k) != 1 or run.iteration_of(k) != run.iteration_of(old_k):
+    if abs(k - old_k) != 1 or run.steps.iteration_of(k) != run.steps.iteration_of(old_k):
         return None
     step = max(k, old_k)
-    cells = run.changed_cells(step)
+    cells = run.now.changed_cells(step)
     if step > 1:  # the marker of the node being expanded moves from or to step-1's node
-        cells.append(run.gen_cell(run.expanded_event(step - 1)))
+        cells.append(run.nodes.cell(run.steps.expanded_event(step - 1)))
     if run.found and (was_at_end or run.at_end):
         cells.extend(run.path() or [])
     return cells

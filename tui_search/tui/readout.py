@@ -25,28 +25,28 @@ def describe(run: Run | None, grid: Grid, cell: Cell) -> str:
         parts.append("the start")
     elif cell == grid.goal:
         parts.append("the goal")
-    g = run.last_event(cell) if run is not None else None
+    g = run.now.last_event(cell) if run is not None else None
     if run is None or g is None:
         if run is not None:
-            parts.append("not reached in this iteration" if run.iteration_of(run.k)
+            parts.append("not reached in this iteration" if run.steps.iteration_of(run.k)
                          else "never reached")
         return f"{head}: {', '.join(parts) or 'free'}"
-    state = run.cell_state(cell)
+    state = run.now.cell_state(cell)
     if state == CellState.PATH:
         parts.append("on the path")
-    step = run.expanded_at(g)
+    step = run.nodes.expanded_at(g)
     if step is not None and step <= run.k:
-        if run.is_discarded(step):
+        if run.steps.is_discarded(step):
             parts.append(f"taken off at step {step} and discarded (expanded before)")
         elif step == run.k:
             parts.append(f"being expanded (step {step})")
         else:
             parts.append(f"expanded at step {step}")
     else:
-        since = run.generated_at(g)
+        since = run.nodes.generated_at(g)
         parts.append(f"on the frontier since step {since}")
-    parts.append(f"depth {run.gen_depth(g)}")
-    costs = run.gen_costs(g)
+    parts.append(f"depth {run.nodes.depth(g)}")
+    costs = run.nodes.costs(g)
     if costs is not None:
         cost, h, priority = costs
         parts.append(f"g {_number(cost)}")
@@ -54,10 +54,10 @@ def describe(run: Run | None, grid: Grid, cell: Cell) -> str:
             parts.append(f"h {_number(h)}")
             if priority not in (cost, h):
                 parts.append(f"f {_number(priority)}")
-    parent = run.gen_parent(g)
+    parent = run.nodes.parent(g)
     if parent >= 0:
-        parts.append(f"reached by {run.gen_dir(g)} from {cell_text(run.gen_cell(parent))}")
-    times = run.times_reached(cell)[0]
+        parts.append(f"reached by {run.nodes.move(g)} from {cell_text(run.nodes.cell(parent))}")
+    times = run.now.times_reached(cell)[0]
     if times > 1:
         parts.append(f"reached {times} times")
     return f"{head}: {', '.join(parts)}"

@@ -354,7 +354,7 @@ class Session:
         before = self.advance(forward=True)  # every pane steps
         if before is None:
             return None
-        node = run.current_node()
+        node = run.now.current_node()
         if node is not None and run.k != before[0][0]:
             self.quiz, self.note = verdict(self.quiz, run, node, guess)
         return before

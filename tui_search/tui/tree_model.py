@@ -133,8 +133,8 @@ class TreeModel:
         the focused view, O(the part of the ancestor chain that changed) -- never O(tree).
         """
         k = run.k
-        root = run.tree_root()
-        size = run.tree_size()
+        root = run.now.tree_root()
+        size = run.now.tree_size()
         moved = run is not self._run or k != self._k
         same_tree = run is self._run and root == self._root
         mode = "list" if size <= SMALL_TREE else "focus"
@@ -149,13 +149,13 @@ class TreeModel:
             self._chain, self._chain_pos, self._top_depth = [], {}, None
         else:
             self._order, self._depth, self._expanded = [], array("i"), set()
-            self._focus(run, same_tree and self._mode == "focus", run.expanded_event(k))
-            self._kids = run.added_now()
+            self._focus(run, same_tree and self._mode == "focus", run.steps.expanded_event(k))
+            self._kids = run.now.added_now()
         self._run, self._k, self._root, self._mode = run, k, root, mode
-        self._current = run.expanded_event(k) if k else -1
-        self._current_discarded = bool(k) and run.is_discarded(k)
+        self._current = run.steps.expanded_event(k) if k else -1
+        self._current_discarded = bool(k) and run.steps.is_discarded(k)
         self._tree_size = size
-        self._limit = run.depth_limit() if run.algo.iterative else None
+        self._limit = run.steps.depth_limit() if run.algo.iterative else None
         grid = run.grid
         self._coord_w = len(f"({grid.width - 1},{grid.height - 1})")
         self._update_path(run)
@@ -195,12 +195,12 @@ class TreeModel:
 
     def _rebuild_list(self, run: Run, root: int, k: int) -> None:
         """The listing from scratch: O(nodes in the tree), replaying the iteration's steps."""
-        end = run.generated
+        end = run.now.generated
         depth = array("i", bytes(4 * (end - root)))
-        first = run.first_step_of_iteration(run.iteration_of(k))
+        first = run.steps.first_of_iteration(run.steps.iteration_of(k))
         blocks: dict[int, range] = {}
         expanded: set[int] = set()
-        for g, added in run.expansions(first, k):
+        for g, added in run.steps.expansions(first, k):
             expanded.add(g)
             if added:
                 lo, hi = added.start, added.stop
@@ -218,8 +218,8 @@ class TreeModel:
 
     def _list_forward(self, run: Run, root: int, j: int) -> None:
         """Apply step ``j``: its node's children go right after it (it was a leaf)."""
-        g = run.expanded_event(j)
-        kids = run.succ_range(j)
+        g = run.steps.expanded_event(j)
+        kids = run.steps.succ_range(j)
         if kids:
             at = self._order.index(g) + 1
             self._order[at:at] = kids
@@ -230,8 +230,8 @@ class TreeModel:
 
     def _list_backward(self, run: Run, root: int, j: int) -> None:
         """Undo step ``j``: its node's children (still leaves) leave the listing."""
-        g = run.expanded_event(j)
-        kids = run.succ_range(j)
+        g = run.steps.expanded_event(j)
+        kids = run.steps.succ_range(j)
         if kids:
             at = self._order.index(g) + 1
             del self._order[at : at + len(kids)]
@@ -244,7 +244,7 @@ class TreeModel:
         old chain (a step: a level or a few), the root, or WALK_MAX levels (a jump)."""
         chain, pos = (self._chain, self._chain_pos) if keep else ([], {})
         top_depth = self._top_depth if keep else None
-        parent = run.gen_parent
+        parent = run.nodes.parent
         walk: list[int] = []
         a = current
         while a >= 0 and a not in pos and len(walk) <= WALK_MAX:
@@ -263,15 +263,15 @@ class TreeModel:
             if top_depth is not None:
                 top_depth += excess
         if top_depth is None:
-            top_depth = run.cheap_depth(new[0])
+            top_depth = run.nodes.cheap_depth(new[0])
         self._chain, self._top_depth = new, top_depth
         self._chain_pos = {g: i for i, g in enumerate(new)}
-        self._elided = new[0] != run.tree_root()
+        self._elided = new[0] != run.now.tree_root()
 
     def _update_path(self, run: Run) -> None:
-        if self._path_run is not run or self._goal != run.goal_event:
-            self._path_run, self._goal = run, run.goal_event
-            self._path_all = frozenset(run.path_gens())
+        if self._path_run is not run or self._goal != run.nodes.goal:
+            self._path_run, self._goal = run, run.nodes.goal
+            self._path_all = frozenset(run.nodes.path())
         self._path = self._path_all if run.at_end else frozenset()
 
     def line_count(self) -> int:
@@ -315,7 +315,7 @@ class TreeModel:
 
     def _current_kids(self) -> range:
         run = self._run
-        return run.added_now() if run is not None else range(0)
+        return run.now.added_now() if run is not None else range(0)
 
     def _count_text(self) -> str:
         """The listing's first line: ``8 nodes`` (a title with the count would repaint the
@@ -332,7 +332,7 @@ class TreeModel:
         (a parent's children are consecutive events).  O(log steps)."""
         run = self._run
         assert run is not None
-        return run.succ_range(run.generated_at(g))
+        return run.steps.succ_range(run.nodes.generated_at(g))
 
     def _is_last(self, g: int) -> bool:
         """Is ``g`` its parent's last child?"""
@@ -343,8 +343,8 @@ class TreeModel:
         depth limit), then ``detail`` (sibling counts)."""
         run = self._run
         assert run is not None
-        x, y = run.gen_cell(g)
-        label = f"{run.gen_dir(g)} ({x},{y})"
+        x, y = run.nodes.cell(g)
+        label = f"{run.nodes.move(g)} ({x},{y})"
         goal = g == self._goal and bool(self._path)
         if g in self._path:  # the answer, at the end, outranks everything (as on the grid)
             cls = "path"
@@ -378,7 +378,7 @@ class TreeModel:
         return guides
 
     def _draw_guides(self, g: int, depth: int) -> str:
-        parent = self._run.gen_parent  # type: ignore[union-attr]
+        parent = self._run.nodes.parent  # type: ignore[union-attr]
         is_last = self._is_last
         pieces = ["└─ " if is_last(g) else "├─ "]
         a = parent(g)
@@ -407,7 +407,7 @@ class TreeModel:
         depth_w = self._depth_width()
         if self._elided and y <= 2:
             if y == 1:
-                root = self._run.tree_root()  # type: ignore[union-attr]
+                root = self._run.now.tree_root()  # type: ignore[union-attr]
                 parts: Parts = [(f"{0:>{depth_w - 1}} " if depth_w else "", "detail")]
                 return parts + self._node_parts(root, 0, True)
             return [(" " * depth_w + self._elision(), "detail")]

@@ -219,7 +219,7 @@ class MainScreen(PanesScreen):
         session = self.session
         run = session.run
         cell = {"start": session.grid.start, "goal": session.grid.goal,
-                "current": run.current_node() if run is not None else None}[where]
+                "current": run.now.current_node() if run is not None else None}[where]
         if cell is None:
             self.warn({"start": "No start on the map", "goal": "No goal on the map",
                        "current": "No node is being expanded (step 0)"}[where])

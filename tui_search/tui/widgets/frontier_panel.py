@@ -3,7 +3,7 @@ queue of uniform-cost, greedy best-first and A* search, one entry a line.
 
 The panel is a line-API :class:`~textual.scroll_view.ScrollView`: it holds no copy of the
 frontier, only the run and the position it was last shown.  ``render_line`` asks the run for the
-one entry on that row (``run.frontier(i, i + 1)``), so drawing costs O(rows visible) whether the
+one entry on that row (``run.now.frontier(i, i + 1)``), so drawing costs O(rows visible) whether the
 frontier holds 3 entries or 100 000, and :meth:`FrontierPanel.show` costs O(1).
 
 The first line counts the entries (``4 in the queue``: the border title says only what the
@@ -174,11 +174,11 @@ class FrontierPanel(LinePanel):
         self._run, self._shown = run, key
         kind = self._kind = run.algo.frontier
         self._iddfs = run.algo.iterative
-        n = self._count = run.frontier_len()
-        self._added = run.added_now()
+        n = self._count = run.now.frontier_len()
+        self._added = run.now.added_now()
         grid = run.grid
         self._coord_w = len(f"({grid.width - 1},{grid.height - 1})")
-        limit = run.depth_limit() if self._iddfs else None
+        limit = run.steps.depth_limit() if self._iddfs else None
         self._depth_w = len(f"d={limit}") if limit is not None else 0
         # The longest straight-line cost across the map: most figures fit, a longer one
         # pushes the rest of its line along.
@@ -191,20 +191,20 @@ class FrontierPanel(LinePanel):
                    + (len(costs_column(run, 0, self._cost_w)) if self._cost_w else 0))
         self._hint_col = entry_w + HINT_GAP
         self._discarded = None
-        if run.k and run.is_discarded(run.k):
-            g = run.expanded_event(run.k)
-            x, y = run.gen_cell(g)
+        if run.k and run.steps.is_discarded(run.k):
+            g = run.steps.expanded_event(run.k)
+            x, y = run.nodes.cell(g)
             why = "stale, discarded" if run.algo.weighted else "discarded"
             # kept whole: a figure never parted from its name when the line wraps
             shown = [Piece([(figure, DISCARDED)], 0, (" " if i else "  ", DISCARDED))
                      for i, figure in enumerate(figures(run, g, self._cost_w))]
             self._discarded = Line([
-                Piece([(f"✗  ({x},{y}) {run.gen_dir(g).ljust(DIR_W)}", DISCARDED)]),
+                Piece([(f"✗  ({x},{y}) {run.nodes.move(g).ljust(DIR_W)}", DISCARDED)]),
                 *shown, Piece([(why, DISCARDED)], 0, ("  ", DISCARDED))])
         self._by_cell = None
         if hide_order:
-            events = run.frontier(0, self.QUIZ_ENTRIES)
-            self._by_cell = sorted(events, key=lambda g: run.gen_cell(g)[::-1])
+            events = run.now.frontier(0, self.QUIZ_ENTRIES)
+            self._by_cell = sorted(events, key=lambda g: run.nodes.cell(g)[::-1])
         title = run.algo.frontier_title + (" · order hidden" if hide_order else "")
         subtitle = "+ just added · click picks" if hide_order else "▶ next out  + just added"
         self.show_titles(title, subtitle if n else "")
@@ -291,7 +291,7 @@ class FrontierPanel(LinePanel):
         run, cells = self._run, self._by_cell
         if run is None or cells is None or self._pick is None:
             return None
-        return next((i for i, g in enumerate(cells) if run.gen_cell(g) == self._pick), None)
+        return next((i for i, g in enumerate(cells) if run.nodes.cell(g) == self._pick), None)
 
     def entry_cell(self, y: int) -> Cell | None:
         """The quiz: the cell of the entry on line ``y`` of the list, None for other lines."""
@@ -299,7 +299,7 @@ class FrontierPanel(LinePanel):
         i = y - self._top()
         if run is None or cells is None or not self._count or not 0 <= i < len(cells):
             return None
-        return run.gen_cell(cells[i])
+        return run.nodes.cell(cells[i])
 
     def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
         if action == "pick":
@@ -313,7 +313,7 @@ class FrontierPanel(LinePanel):
             return
         index = self._pick_index()
         index = 0 if index is None else max(0, min(len(cells) - 1, index + delta))
-        self.post_message(self.EntryPicked(self, self._run.gen_cell(cells[index])))
+        self.post_message(self.EntryPicked(self, self._run.nodes.cell(cells[index])))
 
     def on_click(self, event: events.Click) -> None:
         offset = event.get_content_offset(self)
@@ -349,8 +349,8 @@ class FrontierPanel(LinePanel):
                 return [(f"   … {n - len(self._by_cell):,} more", "frontier-panel--detail")]
             g = self._by_cell[y]
         else:
-            (g,) = run.frontier(y, y + 1)
-        x, cy = run.gen_cell(g)
+            (g,) = run.now.frontier(y, y + 1)
+        x, cy = run.nodes.cell(g)
         first = y == 0 and self._by_cell is None
         main = "frontier-panel--next" if first else "frontier-panel--entry"
         added = g in self._added
@@ -361,16 +361,16 @@ class FrontierPanel(LinePanel):
         ]
         used = 3 + self._coord_w + 1
         if self._iddfs:
-            depth = f"d={run.gen_depth(g)}".ljust(self._depth_w)
+            depth = f"d={run.nodes.depth(g)}".ljust(self._depth_w)
             parts.append((depth, "frontier-panel--detail"))
             parts.append((" ", main))
             used += len(depth) + 1
-        move = run.gen_dir(g).ljust(DIR_W)
+        move = run.nodes.move(g).ljust(DIR_W)
         parts.append((move, main))
         used += len(move)
         if self._cost_w:
             costs = costs_column(run, g, self._cost_w, self._squeeze)
-            stale = run.is_stale(g)
+            stale = run.now.is_stale(g)
             parts.append((costs, "frontier-panel--stale" if stale else main))
             used += len(costs)
             if stale and self._hints_fit():  # in the hint column (a priority queue has no

@@ -17,7 +17,7 @@ def figures(run: Run, g: int, width: int) -> list[str]:
     """A priority queue's figures for event ``g``, the priority first, each number ``width``
     wide: "f 6.41", "g 2.41", "h 4.00" (A*), "g 2.41" (UCS), "h 4.00", "g 2.41" (greedy);
     none otherwise."""
-    costs = run.gen_costs(g)
+    costs = run.nodes.costs(g)
     if costs is None:
         return []
     cost, h, f = costs
@@ -52,7 +52,7 @@ def describe_empty(run: Run) -> str:
     """What an empty frontier means at the run's position."""
     if run.k < run.recorded or not run.done:
         if run.algo.iterative:
-            limit = run.depth_limit()
+            limit = run.steps.depth_limit()
             nxt = 1 if limit is None else limit + 1
             return f"empty — iteration over; next: depth limit {nxt}"
         return "empty"

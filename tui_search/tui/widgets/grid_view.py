@@ -319,7 +319,7 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         """Drawing codes of cells ``x0 .. x1-1`` of map row ``y``."""
         g = self.grid
         run = self.run
-        codes = run.row_states(y, x0, x1) if run is not None else [FREE] * (x1 - x0)
+        codes = run.now.row_states(y, x0, x1) if run is not None else [FREE] * (x1 - x0)
         w = g.width
         blocked = g.blocked
         base = y * w

@@ -78,7 +78,7 @@ class RunPane(Vertical):
         if run is not None:
             self.frontier.show(run, hide_order=hide_order)
             self.tree_panel.show(run)
-            node = run.current_node()
+            node = run.now.current_node()
             if follow and node is not None:
                 view.follow(node)
             if self.stats.display:
