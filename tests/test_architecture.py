@@ -1,7 +1,8 @@
 """The app reads a recorded run through the run's named queries only: nothing under
 ``tui_search/tui/`` reaches the raw record (its arrays are the engine's to lay out, and the
 run's parts keep them consistent), whatever the attribute is called, nor imports the
-record's or the recording's class or module."""
+record's or the recording's class or module, nor opens the engine-only door to the recording
+(``tui_search.engine.run.recording_of``, for the engine's own checks and the benchmarks)."""
 
 from __future__ import annotations
 
@@ -15,6 +16,8 @@ TUI = ROOT / "tui_search" / "tui"
 RECORD_ATTRIBUTES = frozenset({"rec", "record", "recording", "_rec", "_record", "_recording"})
 #: The record's and the recording's classes.
 RECORD_CLASSES = frozenset({"Record", "Recording"})
+#: The engine-only door to a run's recording: the engine's checks and benchmarks use it.
+ENGINE_DOORS = frozenset({"recording_of"})
 #: Their modules (``record`` is where the record's class is headed).
 RECORD_MODULES = frozenset({"tui_search.engine.recording", "tui_search.engine.record"})
 
@@ -27,8 +30,11 @@ def record_uses(source: str) -> list[tuple[int, str]]:
     found: list[tuple[int, str]] = []
     for node in ast.walk(ast.parse(source)):
         if isinstance(node, ast.Attribute) and (node.attr in RECORD_ATTRIBUTES
-                                                 or node.attr in RECORD_CLASSES):
+                                                 or node.attr in RECORD_CLASSES
+                                                 or node.attr in ENGINE_DOORS):
             found.append((node.lineno, f".{node.attr}"))
+        elif isinstance(node, ast.Name) and node.id in ENGINE_DOORS:
+            found.append((node.lineno, node.id))
         elif (isinstance(node, ast.Call) and isinstance(node.func, ast.Name)
               and node.func.id in ("getattr", "setattr", "hasattr") and len(node.args) > 1
               and isinstance(node.args[1], ast.Constant)
@@ -43,7 +49,7 @@ def record_uses(source: str) -> list[tuple[int, str]]:
                 found.append((node.lineno, f"from {module} import ..."))
                 continue
             found += [(node.lineno, f"from {module} import {a.name}") for a in node.names
-                      if a.name in RECORD_CLASSES
+                      if a.name in RECORD_CLASSES or a.name in ENGINE_DOORS
                       or f"{module}.{a.name}" in RECORD_MODULES]
     return sorted(found)
 
@@ -58,8 +64,12 @@ from tui_search.engine.recording import MAX_STEPS
 from tui_search.engine.record import Record
 from tui_search.engine import record
 search.Record()
+from tui_search.engine.run import Run, recording_of
+run_module.recording_of(run)
+recording_of(run)
+run._recording
 """
-    assert [line for line, _ in record_uses(source)] == list(range(1, 10))
+    assert [line for line, _ in record_uses(source)] == list(range(1, 14))
     fine = "run.steps.expanded_event(k)\nrun.nodes.goal\nfrom tui_search.engine.run import Run\n"
     assert record_uses(fine) == []
 
@@ -70,4 +80,13 @@ def test_the_app_reads_no_raw_record() -> None:
     bad = [f"{path.relative_to(ROOT)}:{line}: {what}"
            for path in files
            for line, what in record_uses(path.read_text(encoding="utf-8"))]
+    assert not bad, f"{WHY}:\n" + "\n".join(bad)
+
+
+def test_the_app_never_opens_the_engine_only_door() -> None:
+    """``recording_of`` is for the engine's checks and the benchmarks: named nowhere in the app."""
+    bad = [f"{path.relative_to(ROOT)}:{line}: {what}"
+           for path in sorted(TUI.rglob("*.py"))
+           for line, what in record_uses(path.read_text(encoding="utf-8"))
+           if what.split()[-1].lstrip(".") in ENGINE_DOORS]
     assert not bad, f"{WHY}:\n" + "\n".join(bad)

@@ -292,3 +292,37 @@ def test_the_largest_size_packed_in_one_int(steps, base, data) -> None:
     c = data.draw(st.integers(0, base))  # every size stays >= 0
     assert _largest_size(ends, lo, hi, c) == max(ends[j] - j - c for j in range(lo, hi))
 
+
+def public_names(obj: object) -> set[str]:
+    return {name for name in dir(obj) if not name.startswith("_")}
+
+
+#: Run's own names: what it is, how much is recorded, where it stands, the answer, the facets.
+RUN_NAMES = {
+    "grid", "algorithm", "algo", "semantics", "max_steps", "known_lowest",
+    "advance", "advance_some", "done", "found", "gave_up", "recorded", "total", "goal_test",
+    "k", "goto", "forward", "backward", "reset", "at_end", "rebuild_pieces",
+    "REBUILD_AFTER", "REBUILD_PIECE", "REBUILD_CELLS",
+    "outcome", "outcome_so_far", "path", "moves", "admissible",
+    "nodes", "steps", "now",
+}
+FACET_NAMES = {
+    "nodes": {"cell", "move", "parent", "depth", "cheap_depth", "cost", "costs",
+              "generated_at", "expanded_at", "ancestors", "goal", "path"},
+    "steps": {"at", "all", "expanded_event", "succ_range", "expansions", "is_discarded",
+              "iteration_of", "first_of_iteration", "depth_limit", "peak_frontier"},
+    "now": {"cell_state", "row_states", "current_node", "changed_cells", "times_reached",
+            "last_event", "is_stale", "frontier_len", "frontier", "added_now", "children",
+            "tree_root", "tree_size", "expanded", "discarded", "generated"},
+}
+
+
+def test_the_run_surface_is_small_and_named() -> None:
+    """Run's public names and its facets' are exactly these: a new query goes in a facet (and
+    here) on purpose, never onto Run by accident; the recording stays behind
+    ``recording_of``."""
+    run = Run(grid_from_rows(TUTORIAL_ROWS), "bfs")
+    assert public_names(run) == RUN_NAMES
+    for facet, names in FACET_NAMES.items():
+        assert public_names(getattr(run, facet)) == names, facet
+    assert recording_of(run).rec.steps == run.recorded
