@@ -271,10 +271,12 @@ KIND = {"path": PATH, "being expanded": CURRENT, "frontier": FRONTIER, "expanded
 
 
 class PaintedRun:
-    """Just what the overview asks a run: the search state of each cell of a row."""
+    """Just what the overview asks a run: the search state of each cell of a row (its
+    ``run.now.row_states``)."""
 
     def __init__(self, states: dict[Cell, int]) -> None:
         self.states = states
+        self.now = self
 
     def row_states(self, y: int, x0: int, x1: int) -> list[int]:
         return [self.states.get((x, y), FREE) for x in range(x0, x1)]
