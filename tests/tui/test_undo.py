@@ -10,8 +10,8 @@ from textual.app import App
 from textual.binding import Binding
 
 from tests.tui.test_app import SIZE, TUTORIAL, at, sync, tutorial_app, wait_until
-from tui_search.tui.app import SearchApp
 from tui_search.engine.mapfile import load_map
+from tui_search.tui.app import SearchApp
 from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.key_bar import KeyBar
 
@@ -59,11 +59,7 @@ async def test_undo_puts_back_a_moved_goal_and_the_cursor_on_it() -> None:
         app.session.cursor = (5, 1)
         await pilot.press("g", "left", "left", "ctrl+z")
         assert app.session.grid.goal == (5, 2) and app.session.cursor == (5, 2)
-        assert view_cursor(app) == (5, 2) and not app.session.dirty
-
-
-def view_cursor(app: SearchApp) -> tuple[int, int]:
-    return app.query_one(GridView).cursor
+        assert app.query_one(GridView).cursor == (5, 2) and not app.session.dirty
 
 
 @sync
