@@ -34,6 +34,8 @@ COMPARISONS = {
 ACTIONS = {
     "compare": "Compare searches side by side (on / off)",
     "settings": "Search settings",
+    "undo": "Undo the last edit of the map",
+    "redo": "Redo the edit undone",
     "save": "Save the map",
     "save_as": "Save the map as…",
     "open": "Open a map…",

@@ -2,8 +2,8 @@
 
 :func:`place` and :func:`set_wall` edit a grid and return ``None``, or a one-line reason they
 refused (start on an obstacle, an obstacle on the goal ...).  The session
-(:class:`~tui_search.tui.session.Session`) marks the map dirty and starts new runs at step 0
-after every edit that happens.
+(:class:`~tui_search.tui.session.Session`) records every edit that happens (undo, redo, the
+title's "modified": :mod:`~tui_search.tui.history`) and starts new runs at step 0.
 """
 
 from __future__ import annotations

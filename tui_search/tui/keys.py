@@ -13,14 +13,17 @@ from tui_search.engine.algorithms import ALGORITHMS
 from tui_search.tui.themes import THEMES
 
 #: What the key bar keeps when it is too narrow for every hint: the highest; help and quit
-#: always (the bar drops the lowest first).
+#: always (the bar drops the lowest first).  Undo shows only once the map has an edit, and
+#: then matters more than a reset (an edit resets anyway).
 KEY_IMPORTANCE = {
     "help": 10, "quit": 10, "stop_seek": 9, "next": 8, "play": 7, "pause": 7, "algorithm": 6,
-    "compare": 6, "settings": 5, "reset": 4, "save": 3, "quiz": 2, "overview": 2, "zoom": 1,
+    "compare": 6, "undo": 5, "settings": 5, "reset": 4, "save": 3, "quiz": 2, "overview": 2,
+    "zoom": 1,
     "pick": 7,  # the frontier panel's, while it has the focus in the quiz
 }
 STEP = Binding.Group("Step", compact=True)
 ZOOM = Binding.Group("Zoom", compact=True)
+UNDO = Binding.Group("Undo/Redo", compact=True)
 ALGO = Binding.Group("/".join(a.tag for a in ALGORITHMS.values()), compact=True)
 
 KEYS: list[BindingType] = [
@@ -45,6 +48,10 @@ KEYS: list[BindingType] = [
     Binding("s", "place('start')", "Start", show=False, tooltip="Start at the cursor"),
     Binding("g", "place('goal')", "Goal", show=False, tooltip="Goal at the cursor"),
     Binding("o", "toggle_wall", "Wall", show=False, tooltip="Obstacle on/off at the cursor"),
+    # Shown once the map has an edit to undo or redo (the title says "modified" then too).
+    Binding("ctrl+z", "undo", "Undo", group=UNDO,
+            tooltip="Undo the last edit of the map (a mouse stroke is one edit)"),
+    Binding("ctrl+y", "redo", "Redo", group=UNDO, tooltip="Redo the edit undone last"),
     Binding("c", "compare", "Compare",
             tooltip="Compare searches side by side in lockstep (again: one search)"),
     Binding("f", "fold_trees", "Trees", show=False,

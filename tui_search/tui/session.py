@@ -20,6 +20,7 @@ from tui_search.engine.run import MAX_STEPS, Run
 from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
 from tui_search.tui import playback
 from tui_search.tui.editing import place, set_wall
+from tui_search.tui.history import Edit, History
 from tui_search.tui.quiz import NO_RUN, Quiz, verdict
 from tui_search.tui.seek import Seek
 
@@ -67,7 +68,7 @@ class Session:
         self.grid = grid
         self.map_path = Path(path) if path is not None else None
         self.unsaved_name = unsaved_name  # the title of a map with no file
-        self.dirty = False
+        self.history = History()  # the map's edits: undo, redo, and "modified"
         self.max_steps = max_steps
         self.algorithm = algorithm  # the search a single pane runs
         self.semantics = semantics
@@ -103,6 +104,11 @@ class Session:
     def map_name(self) -> str:
         """The map as its title names it: its file's name, else ``unsaved_name``."""
         return self.map_path.name if self.map_path else self.unsaved_name
+
+    @property
+    def dirty(self) -> bool:
+        """True when the map differs from its file (edits not saved, nor undone)."""
+        return self.history.modified
 
     @property
     def title(self) -> str:
@@ -224,26 +230,42 @@ class Session:
             self.new_runs()
 
     # -- the map -------------------------------------------------------------------------
-    def _edited(self, refusal: str | None) -> str | None:
+    def _edited(self, refusal: str | None, edit: Edit) -> str | None:
         if refusal is None:
-            self.dirty = True
+            self.history.add(edit)
             self.new_runs()
         return refusal
 
     def place(self, what: str) -> str | None:
         """The start or the goal at the cursor: None, or why not."""
-        return self._edited(place(self.grid, what, self.cursor))
+        grid = self.grid
+        before = (grid.start, grid.goal)
+        refusal = place(grid, what, self.cursor)
+        return self._edited(refusal, Edit(ends=(before, (grid.start, grid.goal))))
 
     def toggle_wall(self) -> str | None:
-        cell = self.cursor
-        return self._edited(set_wall(self.grid, cell, not self.grid.is_blocked(cell)))
+        return self._set_wall(self.cursor, not self.grid.is_blocked(self.cursor))
+
+    def _set_wall(self, cell: Cell, wall: bool) -> str | None:
+        return self._edited(set_wall(self.grid, cell, wall), Edit([(cell, not wall, wall)]))
 
     def paint(self, cell: Cell, wall: bool) -> bool:
         """A mouse stroke over ``cell``: an obstacle or free (start and goal stay).  True
         when it changed the map."""
         if cell in (self.grid.start, self.grid.goal) or self.grid.is_blocked(cell) == wall:
             return False
-        return self._edited(set_wall(self.grid, cell, wall)) is None
+        return self._set_wall(cell, wall) is None
+
+    def undo(self, redo: bool = False) -> str | None:
+        """Undo the last edit of the map (``redo``: make the last one undone again), the
+        cursor on it, from step 0: None, or why nothing changed."""
+        history = self.history
+        cell = history.redo(self.grid) if redo else history.undo(self.grid)
+        if cell is None:
+            return "Nothing to redo" if redo else "Nothing to undo"
+        self.cursor = cell
+        self.new_runs()
+        return None
 
     def move_cursor(self, cell: Cell) -> bool:
         if not self.grid.in_bounds(cell):
@@ -255,13 +277,13 @@ class Session:
         """Show ``grid`` (read from ``path``) instead, from step 0."""
         self.grid = grid
         self.map_path = Path(path) if path is not None else None
-        self.dirty = False
+        self.history = History()
         self.cursor = grid.start or (0, 0)
         self.new_runs()
 
     def saved(self, path: Path) -> None:
         self.map_path = Path(path)
-        self.dirty = False
+        self.history.saved()
 
     # -- moving in lockstep --------------------------------------------------------------
     def where(self) -> Before:

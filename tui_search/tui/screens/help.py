@@ -24,6 +24,7 @@ KEYS = (
     ("o", "obstacle on / off at the cursor"),
     ("click, drag", "draw or erase obstacles (the first cell decides which)"),
     ("right-click", "move the cursor only"),
+    ("ctrl+z  ctrl+y", "undo / redo an edit of the map (a mouse stroke is one edit)"),
     ("n  p", "next / previous step (one expansion)"),
     ("space", "play / pause (at the last step: again from step 0)"),
     ("+  -", "faster / slower"),

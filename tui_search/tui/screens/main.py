@@ -168,6 +168,18 @@ class MainScreen(PanesScreen):
     def action_toggle_wall(self) -> None:
         self._edited(self.session.toggle_wall())
 
+    def action_undo(self) -> None:
+        """Undo the last edit (a mouse stroke is one): the cursor on it, the searches anew."""
+        self._undone(self.session.undo())
+
+    def action_redo(self) -> None:
+        self._undone(self.session.undo(redo=True))
+
+    def _undone(self, refusal: str | None) -> None:
+        if refusal is None:
+            self.move_cursor(self.session.cursor)
+        self._edited(refusal)
+
     def on_grid_view_cell_clicked(self, message: GridView.CellClicked) -> None:
         """A left-button stroke paints what its first cell became (an obstacle, or free);
         start and goal are never painted over; the right button only moves the cursor."""
@@ -177,6 +189,7 @@ class MainScreen(PanesScreen):
         if message.button == 1 and not self.views[0].overview and cell not in (
                 grid.start, grid.goal):
             self._stroke = not grid.is_blocked(cell)
+            self.session.history.begin_stroke()  # the cells of this stroke: one edit
             self._edited(self.session.toggle_wall())
 
     def on_grid_view_cell_dragged(self, message: GridView.CellDragged) -> None:
@@ -188,6 +201,7 @@ class MainScreen(PanesScreen):
 
     def on_grid_view_stroke_ended(self, message: GridView.StrokeEnded) -> None:
         self._stroke = None
+        self.session.history.end_stroke()
 
     def on_grid_view_cell_hovered(self, message: GridView.CellHovered) -> None:
         self.show_readout()
@@ -247,8 +261,8 @@ class MainScreen(PanesScreen):
     # -- keys ------------------------------------------------------------------------------
     def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
         """Grey out (None) the keys that cannot act now, hide (False) those that do not apply
-        (Play while playing, Pause while not, esc but while computing the end), and behind
-        the "too small" message let only q act."""
+        (Play while playing, Pause while not, esc but while computing the end, undo and
+        redo before the first edit), and behind the "too small" message let only q act."""
         session = self.session
         runs = session.runs
         if self.too_small:
@@ -266,5 +280,9 @@ class MainScreen(PanesScreen):
             "faster": None if session.speed_index == len(playback.SPEEDS) - 1 else True,
             "slower": None if session.speed_index == 0 else True,
         }
+        history = session.history
+        edited = history.can_undo() or history.can_redo()
+        state["undo"] = (history.can_undo() or None) if edited else False
+        state["redo"] = (history.can_redo() or None) if edited else False
         state["last"], state["first"] = state["next"], state["prev"]
         return state.get(action, True)

@@ -227,7 +227,8 @@ class PanesScreen(Screen[None]):
                             note=session.note)
         runs = session.runs
         key = (not runs, session.at_start(), session.at_end(), session.speed_index,
-               session.playing, session.seeking, len(self.panes))
+               session.playing, session.seeking, len(self.panes),
+               session.history.can_undo(), session.history.can_redo())
         if key != self._bindings_key:  # what greys out or hides keys changed
             self._bindings_key = key
             self.refresh_bindings()
