@@ -16,13 +16,12 @@ from tests.textual_internals import repainted
 from tests.tui.test_app import TUTORIAL, sync, wait_until
 from tui_search.engine.mapfile import load_map
 from tui_search.tui.app import SearchApp
+from tui_search.tui.pieces import Line, Parts, Piece, lay_out, text_of, wrap
 from tui_search.tui.screens.open_map import OpenMapScreen
 from tui_search.tui.screens.save_as import SaveAsScreen
 from tui_search.tui.widgets.cell_readout import CellReadout
 from tui_search.tui.widgets.compare_table import CompareTable
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
-from tui_search.tui.widgets.line_panel import Parts
-from tui_search.tui.widgets.parts_lines import Line, Piece, lay_out, text_of, wrap
 from tui_search.tui.widgets.stats import Stats
 
 SIZES = [(80, 24), (100, 30), (120, 40), (160, 48), (200, 60)]

@@ -41,9 +41,9 @@ from tui_search.engine.algorithms import Frontier
 from tui_search.engine.grid import Cell
 from tui_search.engine.heuristics import octile
 from tui_search.tui.narration import group_digits
+from tui_search.tui.pieces import Line, Parts, Piece, length, plain, wrap
 from tui_search.tui.widgets.frontier_text import costs_column, describe_empty, end_hint, figures
-from tui_search.tui.widgets.line_panel import LinePanel, Parts, set_virtual_size
-from tui_search.tui.widgets.parts_lines import Line, Piece, length, plain, wrap
+from tui_search.tui.widgets.line_panel import LinePanel, set_virtual_size
 
 if TYPE_CHECKING:
     from tui_search.engine.run import Run

@@ -37,6 +37,8 @@ from textual.scrollbar import ScrollBar, ScrollBarRender
 from textual.strip import Strip
 from textual.widget import Widget
 
+from tui_search.tui.pieces import Parts
+
 #: A scrollbar cell as :meth:`ScrollBarRender.render_bar` draws it: glyph, drawn reversed,
 #: and what a click on it does.
 BarCell = tuple[str, bool, "str | None"]
@@ -214,10 +216,6 @@ class CachedStyles:
                 else widget.get_component_rich_style(component)
             )
         return style
-
-
-#: A line as (text, component class) pieces.
-Parts = list[tuple[str, str]]
 
 
 def whole_words(parts: Parts, end: int) -> Parts:

@@ -22,8 +22,9 @@ from typing import TYPE_CHECKING, Any, ClassVar
 
 from textual.geometry import Region, Size
 
+from tui_search.tui.pieces import Parts
 from tui_search.tui.tree_model import GLYPH_EXPANDED, GLYPH_FRONTIER, GLYPH_GOAL, TreeModel
-from tui_search.tui.widgets.line_panel import LinePanel, Parts, set_virtual_size
+from tui_search.tui.widgets.line_panel import LinePanel, set_virtual_size
 
 if TYPE_CHECKING:
     from tui_search.engine.run import Run
