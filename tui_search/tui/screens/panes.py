@@ -131,7 +131,8 @@ class PanesScreen(Screen[None]):
         stats = max(pane.stats.outer_size.height for pane in self.panes)
         arrangement = arrange(len(self.panes), width, height, (grid.width, grid.height),
                               table_height=table_height, fold_trees=self.session.fold_trees,
-                              stats_height=stats or PANE_STATS_HEIGHT)
+                              stats_height=stats or PANE_STATS_HEIGHT,
+                              wrapped=self.stats.wrapped)
         box.styles.grid_size_columns = arrangement.columns
         box.styles.grid_size_rows = arrangement.rows
         table.display = several and arrangement.table

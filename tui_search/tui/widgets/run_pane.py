@@ -59,11 +59,12 @@ class RunPane(Vertical):
         if arrangement.beside:
             lists.styles.width = arrangement.lists_width
             lists.styles.height = "1fr"
-            self.map_box.styles.height = "1fr"
+            self.map_box.styles.height = arrangement.map_height or "1fr"
         else:
             lists.styles.width = "1fr"
             lists.styles.height = arrangement.lists_height or None
             self.map_box.styles.height = arrangement.map_height or "1fr"
+        self.view.styles.max_height = arrangement.map_max_height or "100%"
         self.tree_panel.set_class(not arrangement.trees, "-folded")
         # room for the map's title where the pane has it, else the map as narrow as it is
         self.view.styles.min_width = min(MAP_TITLE_WIDTH, max(0, arrangement.pane_width - 2))

@@ -66,6 +66,11 @@ class Stats(PartsLines):
             self.status_text = line_text(status.pieces)
             self.narration_text = "".join(line_text(line.pieces) for line in rest)
 
+    @property
+    def wrapped(self) -> int:
+        """The rows the lines take beyond a row each (they wrapped)."""
+        return max(0, self.outer_size.height - len(self._lines or ()))
+
     class HeightChanged(Message):
         """The lines took a row more or less: the room around them changed."""
 
