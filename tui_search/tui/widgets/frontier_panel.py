@@ -48,6 +48,10 @@ from tui_search.tui.widgets.line_panel import LinePanel, set_virtual_size
 if TYPE_CHECKING:
     from tui_search.engine.run import Run
 
+#: The bottom legend's wordings, longest first (a narrow panel shows a shorter one); in the
+#: quiz, whose order is hidden: HIDDEN_LEGENDS.
+LEGENDS = ("▶ next out  + just added", "▶ next out + just added", "▶ next + added")
+HIDDEN_LEGENDS = ("+ just added · click picks", "+ added · click picks", "click picks")
 #: Cells between an entry and its end hint (at least).
 HINT_GAP = 2
 #: Width of the move column: a direction's name (START, longer, is only ever on its own: the
@@ -206,8 +210,8 @@ class FrontierPanel(LinePanel):
             events = run.frontier(0, self.QUIZ_ENTRIES)
             self._by_cell = sorted(events, key=lambda g: run.gen_cell(g)[::-1])
         title = run.algo.frontier_title + (" · order hidden" if hide_order else "")
-        subtitle = "+ just added · click picks" if hide_order else "▶ next out  + just added"
-        self.show_titles(title, subtitle if n else "")
+        legends = HIDDEN_LEGENDS if hide_order else LEGENDS
+        self.show_titles(title, legends if n else ())
         if n:
             self._empty_text = ""
             self._count_text = kind.count_text(group_digits(n))
