@@ -125,15 +125,15 @@ def _steady(steady: Arrangement, pane: Arrangement, steady_h: int, pane_h: int,
         lists_h = steady.lists_height - more
         if lists_h < LISTS_MIN_HEIGHT:
             return pane
-        return steady._replace(lists_height=lists_h,
-                               trees=lists_h >= TREES_MIN_HEIGHT and not fold_trees)
+        return Arrangement(*steady[:6], lists_h, lists_h >= TREES_MIN_HEIGHT and not fold_trees,
+                           *steady[8:])
     # the map, centred in a box as tall as the steady pane: at most this tall, it ends above
     # the pane's end (a map zoomed in scrolls in that height)
     box_w = steady.pane_width - (steady.lists_width if steady.beside else 0)
     most = steady_h - 2 * more
     if Geometry.fit(*map_size, box_w - 2, steady_h - 2).size[1] + 2 > most:
         return pane
-    return steady._replace(map_height=steady_h, map_max_height=most)
+    return Arrangement(*steady[:8], steady_h, *steady[9:11], most)
 
 
 def _pane(columns: int, rows: int, table: bool, pane_stats: bool, pane_w: int, pane_h: int,
