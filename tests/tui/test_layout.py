@@ -85,3 +85,42 @@ def test_one_pane_keeps_its_lists_beside_the_map_and_a_narrow_tall_one_under_it(
     # a map too big to fit keeps the lists beside it, and says it does not fit
     big = arrange(1, 140, 40, (512, 512))
     assert big.beside and not big.fits
+
+
+def test_a_status_line_that_wraps_takes_the_blank_lines_under_the_map_not_its_place() -> None:
+    """One pane at 100x30 beside its lists: two more status rows leave the map's box as tall
+    (its cells and place as they were), the map at most two rows less two lines tall so it
+    ends above the pane's end; no room to spare under the map: laid out anew."""
+    now = arrange(1, 100, 25, (6, 6))
+    steady = arrange(1, 100, 23, (6, 6), wrapped=2)
+    assert now.beside and now.map_height == 0
+    assert steady.map_height == 25 and steady.map_max_height == 21
+    assert (*steady[:8], 0, *steady[9:11], 0) == now
+    under = arrange(1, 60, 29, (6, 6), wrapped=2)  # lists under the map: they give the rows
+    assert under.map_height == arrange(1, 60, 31, (6, 6)).map_height
+    assert under.lists_height == arrange(1, 60, 31, (6, 6)).lists_height - 2
+    tight = arrange(1, 100, 9, (6, 6), wrapped=2)  # the map needs the rows
+    assert tight == arrange(1, 100, 9, (6, 6)) and tight.fits
+
+
+@pytest.mark.parametrize("size", [(100, 30), (80, 24)])
+@sync
+async def test_the_map_stays_put_while_the_status_line_wraps_to_more_rows(
+        size: tuple[int, int]) -> None:
+    """A* on the tutorial: its status line takes a row more after some steps; the map's
+    place on the screen does not change."""
+    app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, algorithm="astar")
+    async with app.run_test(size=size) as pilot:
+        view, stats = app.main.views[0], app.main.stats
+        await wait_until(pilot, lambda: stats.outer_size.height > 0)
+        app.main.fit_panes()  # measured (the first frame's is reckoned)
+        await pilot.pause()
+        top, rows = view.region.y, {stats.outer_size.height}
+        for _ in range(14):
+            await pilot.press("n")
+            await pilot.pause()
+            rows.add(stats.outer_size.height)
+            # the panes are fitted after the status lines are laid out: once they are, the
+            # map's top is where it was (a map moved a row would not come back)
+            await wait_until(pilot, lambda: view.region.y == top, seconds=5)
+        assert len(rows) > 1  # the status line did wrap anew

@@ -16,13 +16,12 @@ from tests.textual_internals import repainted
 from tests.tui.test_app import TUTORIAL, sync, wait_until
 from tui_search.engine.mapfile import load_map
 from tui_search.tui.app import SearchApp
+from tui_search.tui.pieces import Line, Parts, Piece, lay_out, text_of, wrap
 from tui_search.tui.screens.open_map import OpenMapScreen
 from tui_search.tui.screens.save_as import SaveAsScreen
 from tui_search.tui.widgets.cell_readout import CellReadout
 from tui_search.tui.widgets.compare_table import CompareTable
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
-from tui_search.tui.widgets.line_panel import Parts
-from tui_search.tui.widgets.parts_lines import Line, Piece, lay_out, text_of, wrap
 from tui_search.tui.widgets.stats import Stats
 
 SIZES = [(80, 24), (100, 30), (120, 40), (160, 48), (200, 60)]
@@ -198,3 +197,24 @@ def test_when_the_rows_run_out_the_highest_rank_goes_first_and_rank_0_never() ->
     assert _rows(lay_out([status, narration], 30, 3)) == [
         "A* │ step 5/16 │ queue 5", "Expanded (0,2) f = 7.00 (g", "2.00 + h 5.00)"]
     assert len(lay_out([status, narration], 12, 2)) > 2  # rank 0 takes the rows it needs
+
+
+@pytest.mark.parametrize("options", [{}, {"compare": "bfs,dfs"}, {"compare": "bfs,astar"}])
+@pytest.mark.parametrize("size", [(80, 24), (100, 30)])
+@sync
+async def test_the_panels_bottom_legends_are_shortened_not_cut(
+        options: dict[str, str], size: tuple[int, int]) -> None:
+    """A narrow frontier or tree panel shows a shorter wording of its bottom legend (or none)
+    rather than the border's "…", stepping and in the quiz."""
+    app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, **options)  # type: ignore[arg-type]
+    async with app.run_test(size=size) as pilot:
+        for keys in (["n"] * 3, ["i"]):
+            await pilot.press(*keys)
+            await pilot.pause()
+            screen = ["".join(text for text, _ in line) for line in await repainted(pilot)]
+            for panel in app.main.query(".pane-frontier, .pane-tree"):
+                if panel.display and panel.region.area:
+                    region = panel.region
+                    bottom = screen[region.bottom - 1][region.x:region.right]
+                    assert "…" not in bottom, (size, options, bottom)
+                    assert panel.border_subtitle in bottom

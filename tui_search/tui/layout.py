@@ -6,6 +6,9 @@ at its smallest cells.  What else a pane shows gives way in this order when ther
 for all of it: the comparison table, the search trees, the frontier lists, the panes' own
 status lines (the status line under them still names the step).  A pane much wider than tall
 keeps its lists beside the map, as a column; else under it.
+
+When the status lines under the panes wrap to more rows, the map stays where it was (placed in
+the room they left at their least) while the rows under it that they take were blank.
 """
 
 from __future__ import annotations
@@ -46,6 +49,8 @@ class Arrangement(NamedTuple):
     map_height: int
     fits: bool  # the whole map is in view at the smallest cells
     pane_width: int = 0
+    map_max_height: int = 0  # the map's box is taller than the pane by rows under the map
+    # kept blank: the map is at most this tall, so it stays in view (0: as tall as its box)
 
     @property
     def lists(self) -> bool:
@@ -74,11 +79,13 @@ def lists_width(pane_width: int) -> int:
 
 def arrange(n: int, width: int, height: int, map_size: tuple[int, int], *,
             table_height: int = 0, fold_trees: bool = False,
-            stats_height: int = PANE_STATS_HEIGHT) -> Arrangement:
+            stats_height: int = PANE_STATS_HEIGHT, wrapped: int = 0) -> Arrangement:
     """Lay ``n`` panes out in ``width`` x ``height`` (the room under and beside the fixed
     lines, the table's ``table_height`` lines included when there is one) for a map of
     ``map_size`` cells, whose smallest cells are 2 characters by 1 line, in a border; a
-    pane's own status lines take ``stats_height`` lines."""
+    pane's own status lines take ``stats_height`` lines.  The status lines under the panes
+    take ``wrapped`` rows more than their least: the map is placed as in the room they would
+    leave (:func:`_steady`)."""
     candidates = []
     for table in ((True, False) if table_height else (False,)):
         room = height - (table_height if table else 0)
@@ -91,12 +98,42 @@ def arrange(n: int, width: int, height: int, map_size: tuple[int, int], *,
                 pane_w, pane_h = width // columns, max(0, room // rows - stats)
                 pane = _pane(columns, rows, table, stats > 0, pane_w, pane_h, map_size,
                              fold_trees)
+                if wrapped:
+                    steady_h = max(0, (room + wrapped) // rows - stats)
+                    steady = _pane(columns, rows, table, stats > 0, pane_w, steady_h,
+                                   map_size, fold_trees)
+                    pane = _steady(steady, pane, steady_h, pane_h, map_size, fold_trees)
                 candidates.append(((pane.fits, pane.pane_stats or n == 1, pane.lists,
                                     pane.trees or fold_trees, columns == preferred, table),
                                    pane))
     # What gives way first: the table, then the grid's best proportions, then the trees,
     # then the lists, then the panes' own status lines; the map never.
     return max(candidates, key=lambda ranked: ranked[0])[1]
+
+
+def _steady(steady: Arrangement, pane: Arrangement, steady_h: int, pane_h: int,
+            map_size: tuple[int, int], fold_trees: bool) -> Arrangement:
+    """``steady``, laid out in a pane ``steady_h`` lines tall, in the ``pane_h`` lines
+    ``pane`` is laid out in, when the whole map still shows there at the same cells and
+    place: the lists under the map give up the lines, or the map's box (the pane's height)
+    overflows the pane by lines that were blank under the map; else ``pane``."""
+    if (pane.beside, pane.lists_height > 0) != (steady.beside, steady.lists_height > 0) \
+            or not steady.fits:
+        return pane
+    more = steady_h - pane_h
+    if steady.lists_height:  # the map's box keeps its height, the lists are shorter
+        lists_h = steady.lists_height - more
+        if lists_h < LISTS_MIN_HEIGHT:
+            return pane
+        return Arrangement(*steady[:6], lists_h, lists_h >= TREES_MIN_HEIGHT and not fold_trees,
+                           *steady[8:])
+    # the map, centred in a box as tall as the steady pane: at most this tall, it ends above
+    # the pane's end (a map zoomed in scrolls in that height)
+    box_w = steady.pane_width - (steady.lists_width if steady.beside else 0)
+    most = steady_h - 2 * more
+    if Geometry.fit(*map_size, box_w - 2, steady_h - 2).size[1] + 2 > most:
+        return pane
+    return Arrangement(*steady[:8], steady_h, *steady[9:11], most)
 
 
 def _pane(columns: int, rows: int, table: bool, pane_stats: bool, pane_w: int, pane_h: int,

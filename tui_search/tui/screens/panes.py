@@ -30,7 +30,8 @@ from tui_search.tui.keys import KEY_IMPORTANCE
 from tui_search.tui.layout import PANE_STATS_HEIGHT, arrange
 from tui_search.tui.narration import group_digits
 from tui_search.tui.readout import describe_each
-from tui_search.tui.session import LOCKSTEP, LOCKSTEP_SHORT, NEEDS_ENDPOINTS, Before, Session
+from tui_search.tui.session import NEEDS_ENDPOINTS, Before, Session
+from tui_search.tui.status_lines import screen_status
 from tui_search.tui.widgets.cell_readout import CellReadout
 from tui_search.tui.widgets.challenge import ChallengePanel
 from tui_search.tui.widgets.compare_table import CompareTable
@@ -130,7 +131,8 @@ class PanesScreen(Screen[None]):
         stats = max(pane.stats.outer_size.height for pane in self.panes)
         arrangement = arrange(len(self.panes), width, height, (grid.width, grid.height),
                               table_height=table_height, fold_trees=self.session.fold_trees,
-                              stats_height=stats or PANE_STATS_HEIGHT)
+                              stats_height=stats or PANE_STATS_HEIGHT,
+                              wrapped=self.stats.wrapped)
         box.styles.grid_size_columns = arrangement.columns
         box.styles.grid_size_rows = arrangement.rows
         table.display = several and arrangement.table
@@ -210,21 +212,12 @@ class PanesScreen(Screen[None]):
         self.show_status()
         self.show_readout()
 
-    def _playing_text(self) -> str:
-        speed = playback.speed_text(self.session.speed)
-        return f"▶ playing {speed}" if self.session.playing else f"speed {speed}"
-
     def show_status(self) -> None:
-        """The status lines (one pane: its run's; several: the lockstep's) and the key bar:
+        """The status lines (:func:`~tui_search.tui.status_lines.screen_status`) and the key bar:
         all a seek's progress changes."""
         session = self.session
-        if len(self.panes) > 1:
-            sentence = LOCKSTEP if len(LOCKSTEP) + 2 <= self.size.width else LOCKSTEP_SHORT
-            self.stats.show_compare(session.labels, playing=self._playing_text(),
-                                    note=session.note, sentence=sentence)
-        else:
-            self.stats.show(session.run, session.algorithm, playing=self._playing_text(),
-                            note=session.note)
+        status = screen_status(session, self.size.width)
+        self.stats.show(status.lines, status.max_rows)
         runs = session.runs
         key = (not runs, session.at_start(), session.at_end(), session.speed_index,
                session.playing, session.seeking, len(self.panes),

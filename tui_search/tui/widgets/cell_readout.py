@@ -8,7 +8,8 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-from tui_search.tui.widgets.parts_lines import Line, PartsLines, Piece
+from tui_search.tui.pieces import Line, Piece
+from tui_search.tui.widgets.parts_lines import PartsLines
 
 
 class CellReadout(PartsLines):

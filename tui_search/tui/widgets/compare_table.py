@@ -20,8 +20,8 @@ from tui_search.engine.compare import (
     table_lines,
 )
 from tui_search.engine.run import Run
-from tui_search.tui.widgets.line_panel import Parts
-from tui_search.tui.widgets.parts_lines import PartsLines, plain
+from tui_search.tui.pieces import Parts, plain
+from tui_search.tui.widgets.parts_lines import PartsLines
 
 
 def table_rows(labels: list[str], runs: list[Run]) -> tuple[list[TableRow], list[int | None]]:

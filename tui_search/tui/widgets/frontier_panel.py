@@ -41,13 +41,17 @@ from tui_search.engine.algorithms import Frontier
 from tui_search.engine.grid import Cell
 from tui_search.engine.heuristics import octile
 from tui_search.tui.narration import group_digits
+from tui_search.tui.pieces import Line, Parts, Piece, length, plain, wrap
 from tui_search.tui.widgets.frontier_text import costs_column, describe_empty, end_hint, figures
-from tui_search.tui.widgets.line_panel import LinePanel, Parts, set_virtual_size
-from tui_search.tui.widgets.parts_lines import Line, Piece, length, plain, wrap
+from tui_search.tui.widgets.line_panel import LinePanel, set_virtual_size
 
 if TYPE_CHECKING:
     from tui_search.engine.run import Run
 
+#: The bottom legend's wordings, longest first (a narrow panel shows a shorter one); in the
+#: quiz, whose order is hidden: HIDDEN_LEGENDS.
+LEGENDS = ("▶ next out  + just added", "▶ next out + just added", "▶ next + added")
+HIDDEN_LEGENDS = ("+ just added · click picks", "+ added · click picks", "click picks")
 #: Cells between an entry and its end hint (at least).
 HINT_GAP = 2
 #: Width of the move column: a direction's name (START, longer, is only ever on its own: the
@@ -206,8 +210,8 @@ class FrontierPanel(LinePanel):
             events = run.now.frontier(0, self.QUIZ_ENTRIES)
             self._by_cell = sorted(events, key=lambda g: run.nodes.cell(g)[::-1])
         title = run.algo.frontier_title + (" · order hidden" if hide_order else "")
-        subtitle = "+ just added · click picks" if hide_order else "▶ next out  + just added"
-        self.show_titles(title, subtitle if n else "")
+        legends = HIDDEN_LEGENDS if hide_order else LEGENDS
+        self.show_titles(title, legends if n else ())
         if n:
             self._empty_text = ""
             self._count_text = kind.count_text(group_digits(n))

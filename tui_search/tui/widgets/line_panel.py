@@ -37,6 +37,8 @@ from textual.scrollbar import ScrollBar, ScrollBarRender
 from textual.strip import Strip
 from textual.widget import Widget
 
+from tui_search.tui.pieces import Parts
+
 #: A scrollbar cell as :meth:`ScrollBarRender.render_bar` draws it: glyph, drawn reversed,
 #: and what a click on it does.
 BarCell = tuple[str, bool, "str | None"]
@@ -216,10 +218,6 @@ class CachedStyles:
         return style
 
 
-#: A line as (text, component class) pieces.
-Parts = list[tuple[str, str]]
-
-
 def whole_words(parts: Parts, end: int) -> Parts:
     """``parts`` cut before the word that column ``end`` would cut through (a line longer than
     its panel shows no half number: the scrollbar says there is more)."""
@@ -272,6 +270,7 @@ class LinePanel(QuietScrollbars, CachedStyles, ScrollView, can_focus=True):
 
     _painted: tuple[Offset, Size, list[Parts]] | None = None  # what the visible lines show
     _titles: tuple[str, str] | None = None
+    _legends: tuple[str, ...] = ()
 
     def line_parts(self, y: int) -> Parts:
         """Line ``y`` of the whole list as (text, component class) pieces; ``[]`` past it."""
@@ -305,7 +304,22 @@ class LinePanel(QuietScrollbars, CachedStyles, ScrollView, can_focus=True):
         return window_strip([Segment(text, style(cls) + band) for text, cls in parts], scroll_x,
                             width, base + band)
 
-    def show_titles(self, title: str, subtitle: str) -> None:
+    def show_titles(self, title: str, legends: tuple[str, ...]) -> None:
+        """Set the border title and the subtitle: of ``legends`` (the bottom legend's
+        wordings, longest first) the first that fits the bottom border whole, none when none
+        does (the border would cut it with "…"); chosen anew on a resize."""
+        self._legends = legends
+        self._set_titles(title, self._legend())
+
+    def _legend(self) -> str:
+        room = self.outer_size.width - 6  # as the border leaves it: its corners, and more
+        return next((text for text in self._legends if cell_len(text) <= room), "")
+
+    def on_resize(self) -> None:
+        if self._titles is not None:
+            self._set_titles(self._titles[0], self._legend())
+
+    def _set_titles(self, title: str, subtitle: str) -> None:
         """Set the border title and subtitle, each only when its text changed (the setter
         repaints the whole panel, even for the same text)."""
         old_title, old_subtitle = self._titles or (None, None)

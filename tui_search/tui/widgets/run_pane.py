@@ -15,6 +15,7 @@ from textual.widgets import Static
 from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.run import Run
 from tui_search.tui.layout import Arrangement
+from tui_search.tui.status_lines import search_status
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.search_tree import SearchTreePanel
@@ -58,18 +59,18 @@ class RunPane(Vertical):
         if arrangement.beside:
             lists.styles.width = arrangement.lists_width
             lists.styles.height = "1fr"
-            self.map_box.styles.height = "1fr"
+            self.map_box.styles.height = arrangement.map_height or "1fr"
         else:
             lists.styles.width = "1fr"
             lists.styles.height = arrangement.lists_height or None
             self.map_box.styles.height = arrangement.map_height or "1fr"
+        self.view.styles.max_height = arrangement.map_max_height or "100%"
         self.tree_panel.set_class(not arrangement.trees, "-folded")
         # room for the map's title where the pane has it, else the map as narrow as it is
         self.view.styles.min_width = min(MAP_TITLE_WIDTH, max(0, arrangement.pane_width - 2))
 
     def show(self, run: Run | None, changed: list[Cell] | None, *, follow: bool = True,
-             hide_order: bool = False, title: str = "", label: str = "", note: str = "",
-             playing: str = "") -> None:
+             hide_order: bool = False, title: str = "") -> None:
         """Push ``run`` at its position to the map and the panels (``changed``: the cells
         whose look changed, None for all); ``title`` is the map's border title."""
         view = self.view
@@ -81,8 +82,8 @@ class RunPane(Vertical):
             node = run.now.current_node()
             if follow and node is not None:
                 view.follow(node)
-            if self.stats.display:
-                self.stats.show(run, run.algo.key, label=label or self.label, note=note,
-                                done=run.at_end, playing=playing)
+            if self.stats.display:  # a pane's own status lines show only among several
+                status = search_status(run, self.label, of_several=True, done=run.at_end)
+                self.stats.show(status.lines, status.max_rows)
         if view.border_title != title:  # setting it repaints the whole view
             view.border_title = title

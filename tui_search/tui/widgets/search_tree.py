@@ -22,8 +22,9 @@ from typing import TYPE_CHECKING, Any, ClassVar
 
 from textual.geometry import Region, Size
 
+from tui_search.tui.pieces import Parts
 from tui_search.tui.tree_model import GLYPH_EXPANDED, GLYPH_FRONTIER, GLYPH_GOAL, TreeModel
-from tui_search.tui.widgets.line_panel import LinePanel, Parts, set_virtual_size
+from tui_search.tui.widgets.line_panel import LinePanel, set_virtual_size
 
 if TYPE_CHECKING:
     from tui_search.engine.run import Run
@@ -102,10 +103,11 @@ class SearchTreePanel(LinePanel):
         title = "Search tree"
         if model.limit is not None:
             title += f" · depth limit {model.limit}"
-        legend = f"{GLYPH_EXPANDED} expanded  {GLYPH_FRONTIER} frontier"
-        if model.path_shown:
-            legend += f"  {GLYPH_GOAL} goal"
-        self.show_titles(title, legend)
+        goal = f"  {GLYPH_GOAL} goal" if model.path_shown else ""
+        self.show_titles(title, (
+            f"{GLYPH_EXPANDED} expanded  {GLYPH_FRONTIER} frontier{goal}",
+            f"{GLYPH_EXPANDED} expanded {GLYPH_FRONTIER} frontier{goal.replace('  ', ' ')}",
+            f"{GLYPH_EXPANDED} expanded {GLYPH_FRONTIER} frontier"))
         set_virtual_size(self, Size(model.content_width(), model.line_count()))
         if moved:
             self._scroll_to_current()

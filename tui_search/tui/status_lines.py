@@ -1,0 +1,119 @@
+"""What the status lines say, built from the session without Textual: the screen's under the
+panes (one search: its run's counts and narration; several: the searches shown and how the
+lockstep goes) and a pane's own among several (its search's counts), as
+:class:`~tui_search.tui.pieces.Line` s that :class:`~tui_search.tui.widgets.stats.Stats`
+draws.
+
+The counts are pieces ranked by what a student can do without, so that when the rows run out
+the playing speed, the frontier's peak, ... go first, never the narration or the bound (see
+:func:`~tui_search.tui.pieces.lay_out`).  Whether the screen shows one search or several is
+asked here only, in :func:`screen_status`.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+from tui_search.engine.algorithms import get_algorithm
+from tui_search.engine.heuristics import INADMISSIBLE
+from tui_search.engine.run import Run
+from tui_search.tui import playback
+from tui_search.tui.narration import frontier_word, narrate, result_text, status_parts
+from tui_search.tui.pieces import Line, Piece
+from tui_search.tui.session import LOCKSTEP, LOCKSTEP_SHORT, Session
+
+#: Between two counts on a row.
+SEP = (" │ ", "stats--label")
+#: At most this many rows while some piece can go; a pane's, one of several, at most
+#: PANE_ROWS (its map comes first).
+MAX_ROWS, PANE_ROWS = 4, 3
+#: What goes first when the rows run out (the highest rank; 0 never goes).
+BOUND_RANK, PLAYING_RANK, PEAK_RANK, DONE_RANK, PATH_RANK = 8, 7, 6, 5, 2
+RANKS = {"discarded": 4, "expanded": 3, "generated": 3}
+
+
+class Status(NamedTuple):
+    """Status lines: the counts, then the narration (or a note, or the lockstep's sentence),
+    shown in at most ``max_rows`` rows while some piece can go."""
+
+    lines: list[Line]
+    max_rows: int
+
+
+def search_status(run: Run | None, name: str, *, of_several: bool, playing: str = "",
+                  note: str = "", done: bool = False) -> Status:
+    """One search's lines: ``name`` names it; ``done`` adds "done at step k" (a run that
+    ended before the others); ``note`` replaces the narration (e.g. the quiz's question, while
+    computing the end of a big run, or when the map lacks a start or a goal).
+
+    ``of_several``: the lines of a pane among several, whose map comes first: at most
+    :data:`PANE_ROWS`, and the path and the bound may go (the comparison table says them
+    too); else at most :data:`MAX_ROWS`, and they never go."""
+    status = [Piece([(name, "stats--value")])]
+    if done and run is not None:
+        status.append(Piece([(f"done at step {run.k:,}", "stats--result")], DONE_RANK, SEP))
+    differences = run.semantics.differences(run.algo) if run is not None else []
+    if run is not None and not run.admissible:
+        differences.append(INADMISSIBLE)
+    if differences:  # always say what differs
+        status.append(Piece([("· " + " · ".join(differences), "stats--note")], 0,
+                            (" ", "stats--note")))
+    if run is not None:
+        noun = frontier_word(run)
+        for count, value in status_parts(run):
+            parts = [(f"{count} ", "stats--label"), (value, "stats--value")]
+            if count == noun:  # "(peak 8)": the first to go, but for the playing speed
+                short = [parts[0], (value.partition(" (")[0], "stats--value")]
+                status.append(Piece(parts, PEAK_RANK, SEP, short))
+            else:
+                status.append(Piece(parts, RANKS.get(count, 1), SEP))
+    if playing:
+        status.append(Piece([(playing, "stats--play")], PLAYING_RANK, SEP))
+    line: list[Piece]
+    if note:
+        line = [Piece([(note, "stats--note")])]
+    elif run is None:
+        line = []
+    else:
+        failed = run.at_end and not run.found and not run.gave_up  # "no path", in red
+        line = [Piece([(narrate(run), "stats--no-path" if failed else "stats--narration")])]
+        if run.at_end and run.found:  # the path, and the bound: what the lesson is about
+            # (a pane of several: the comparison table says them too, and the map comes
+            # first: the bound goes first, the path after the counts)
+            ranks = (PATH_RANK, BOUND_RANK) if of_several else (0, 0)
+            line += [Piece([(text, "stats--result")], rank, (" · ", "stats--label"))
+                     for text, rank in zip(result_text(run).split(" · "), ranks)]
+    return Status([Line(status), Line(line, prose=True)], PANE_ROWS if of_several else MAX_ROWS)
+
+
+def lockstep_status(labels: list[str], *, playing: str = "", note: str = "",
+                    sentence: str = "") -> Status:
+    """The lines of several searches: their names and the playback, then a note or
+    ``sentence`` (how the lockstep goes)."""
+    status = [Piece([("compare ", "stats--label"), (" · ".join(labels), "stats--value")])]
+    if playing:
+        status.append(Piece([(playing, "stats--play")], PLAYING_RANK, SEP))
+    line = [Piece([(note, "stats--note")] if note else [(sentence, "stats--narration")])]
+    return Status([Line(status), Line(line, prose=True)], MAX_ROWS)
+
+
+def playing_text(session: Session) -> str:
+    """``▶ playing 5/s`` while playing, else ``speed 5/s``."""
+    speed = playback.speed_text(session.speed)
+    return f"▶ playing {speed}" if session.playing else f"speed {speed}"
+
+
+def screen_status(session: Session, width: int) -> Status:
+    """The status lines under the panes, ``width`` cells wide: one search, its run's (and the
+    session's note); several, the lockstep's (the short sentence where the long one would
+    take two lines: the panes need them more)."""
+    if len(session.labels) > 1:
+        sentence = LOCKSTEP if len(LOCKSTEP) + 2 <= width else LOCKSTEP_SHORT
+        return lockstep_status(session.labels, playing=playing_text(session),
+                               note=session.note, sentence=sentence)
+    return search_status(session.run, get_algorithm(session.algorithm).short,
+                         of_several=False, playing=playing_text(session), note=session.note)
+
+
+__all__ = ["MAX_ROWS", "PANE_ROWS", "Status", "lockstep_status", "playing_text",
+           "screen_status", "search_status"]
