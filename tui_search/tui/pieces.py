@@ -20,18 +20,9 @@ is done once per text and width.
 from __future__ import annotations
 
 import re
-from functools import lru_cache
 from typing import NamedTuple
-from unicodedata import combining, east_asian_width
 
-
-@lru_cache(maxsize=4096)
-def cell_len(text: str) -> int:
-    """The cells ``text`` takes in a terminal: two for a wide character, none for a combining
-    or control one (as the terminal draws it; rich is not imported here)."""
-    return sum(0 if combining(c) or c < " " else 2 if east_asian_width(c) in "WF" else 1
-               for c in text)
-
+from rich.cells import cell_len  # the widths Textual draws with (a pure function)
 
 #: A line as (text, component class) pieces.
 Parts = list[tuple[str, str]]
