@@ -42,7 +42,13 @@ from tui_search.engine.grid import Cell
 from tui_search.engine.heuristics import octile
 from tui_search.tui.narration import group_digits
 from tui_search.tui.pieces import Line, Parts, Piece, length, plain, wrap
-from tui_search.tui.widgets.frontier_text import costs_column, describe_empty, end_hint, figures
+from tui_search.tui.widgets.frontier_text import (
+    costs_column,
+    describe_empty,
+    end_hint,
+    figures,
+    titles,
+)
 from tui_search.tui.widgets.line_panel import LinePanel, set_virtual_size
 
 if TYPE_CHECKING:
@@ -209,9 +215,8 @@ class FrontierPanel(LinePanel):
         if hide_order:
             events = run.now.frontier(0, self.QUIZ_ENTRIES)
             self._by_cell = sorted(events, key=lambda g: run.nodes.cell(g)[::-1])
-        title = run.algo.frontier_title + (" · order hidden" if hide_order else "")
         legends = HIDDEN_LEGENDS if hide_order else LEGENDS
-        self.show_titles(title, legends if n else ())
+        self.show_titles(titles(run.algo, hide_order), legends if n else ())
         if n:
             self._empty_text = ""
             self._count_text = kind.count_text(group_digits(n))

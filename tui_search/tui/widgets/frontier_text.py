@@ -1,16 +1,49 @@
 """What the frontier panel's lines say, as text (no Textual): a priority queue's figures, the
-end hints, what an empty frontier means.  The panel (:mod:`~tui_search.tui.widgets.
+end hints, what an empty frontier means, the title's wordings.  The panel (:mod:`~tui_search.tui.widgets.
 frontier_panel`) lays them out."""
 
 from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from tui_search.engine.algorithms import Frontier
+from tui_search.engine.algorithms import PRIORITIES, Algorithm, Frontier
 from tui_search.tui.narration import gave_up_text
 
 if TYPE_CHECKING:
     from tui_search.engine.run import Run
+
+
+#: The frontier's names, shortest last, after its full title (``Frontier.title``).
+SHORT_NAMES = {Frontier.FIFO: ("Queue", "Q"), Frontier.LIFO: ("Stack", "S"),
+               Frontier.PRIORITY: ("Priority queue", "PQ")}
+
+
+def titles(algo: Algorithm, hide_order: bool = False) -> tuple[str, ...]:
+    """The panel's title in its wordings, longest first: "Queue (FIFO)", "Queue", "Q";
+    a priority queue's says what it orders by as long as it can ("Priority queue (A*: f = g
+    + h)" ... "PQ (f)", "PQ"); in the quiz, that the order is hidden ("Queue (FIFO) · order
+    hidden", "Queue (FIFO) · hidden", "Queue · hidden", then the plain wordings)."""
+    name, letters = SHORT_NAMES[algo.frontier]
+    if algo.priority is None:
+        plain = [algo.frontier_title, name, letters]
+    else:
+        by, what = algo.priority_name, PRIORITIES[algo.priority]
+        plain = [algo.frontier_title, f"{name} ({what})", f"{name} ({by})", name,
+                 f"{letters} ({by})", letters]
+    wordings = plain
+    if hide_order:
+        wordings = [f"{plain[0]} · order hidden",
+                    *(f"{text} · hidden" for text in plain[:-1]), *plain]
+    return _longest_first(wordings)
+
+
+def _longest_first(wordings: list[str]) -> tuple[str, ...]:
+    """``wordings`` without those no shorter than one before them (never the first to fit)."""
+    kept: list[str] = []
+    for text in wordings:
+        if not kept or len(text) < len(kept[-1]):
+            kept.append(text)
+    return tuple(kept)
 
 
 def figures(run: Run, g: int, width: int) -> list[str]:

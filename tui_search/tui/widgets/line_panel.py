@@ -21,7 +21,9 @@ Titles:
 
 Setting a border title repaints the whole panel (even for the same text), so the panels'
 titles say what they show and change only with it (the algorithm, the iteration); the counts
-that change on every step are each panel's first line.
+that change on every step are each panel's first line.  Each title and bottom legend comes in
+a few wordings, longest first, and a panel shows the longest that fits its border, never one
+that Textual would cut with "…".
 """
 
 from __future__ import annotations
@@ -269,8 +271,8 @@ class LinePanel(QuietScrollbars, CachedStyles, ScrollView, can_focus=True):
     """
 
     _painted: tuple[Offset, Size, list[Parts]] | None = None  # what the visible lines show
-    _titles: tuple[str, str] | None = None
-    _legends: tuple[str, ...] = ()
+    _titles: tuple[str, str] | None = None  # the title and the legend shown
+    _wordings: tuple[tuple[str, ...], tuple[str, ...]] = ((), ())  # each one's wordings
 
     def line_parts(self, y: int) -> Parts:
         """Line ``y`` of the whole list as (text, component class) pieces; ``[]`` past it."""
@@ -304,20 +306,26 @@ class LinePanel(QuietScrollbars, CachedStyles, ScrollView, can_focus=True):
         return window_strip([Segment(text, style(cls) + band) for text, cls in parts], scroll_x,
                             width, base + band)
 
-    def show_titles(self, title: str, legends: tuple[str, ...]) -> None:
-        """Set the border title and the subtitle: of ``legends`` (the bottom legend's
-        wordings, longest first) the first that fits the bottom border whole, none when none
-        does (the border would cut it with "…"); chosen anew on a resize."""
-        self._legends = legends
-        self._set_titles(title, self._legend())
+    def show_titles(self, titles: tuple[str, ...], legends: tuple[str, ...]) -> None:
+        """Set the border title and the bottom legend, each given as its wordings, longest
+        first: the panel shows the first that fits its border whole, none when none does
+        (the border would cut it with "…"); chosen anew on a resize."""
+        self._wordings = (titles, legends)
+        self._set_titles(self._fitting(titles), self._fitting(legends))
 
-    def _legend(self) -> str:
-        room = self.outer_size.width - 6  # as the border leaves it: its corners, and more
-        return next((text for text in self._legends if cell_len(text) <= room), "")
+    def _fitting(self, wordings: tuple[str, ...]) -> str:
+        """Of ``wordings`` the first that fits the border (the first of all before the panel
+        is laid out: the resize that follows chooses again)."""
+        width = self.outer_size.width
+        if not width:
+            return wordings[0] if wordings else ""
+        room = width - 6  # as the border leaves it: its corners, and more
+        return next((text for text in wordings if cell_len(text) <= room), "")
 
     def on_resize(self) -> None:
         if self._titles is not None:
-            self._set_titles(self._titles[0], self._legend())
+            titles, legends = self._wordings
+            self._set_titles(self._fitting(titles), self._fitting(legends))
 
     def _set_titles(self, title: str, subtitle: str) -> None:
         """Set the border title and subtitle, each only when its text changed (the setter

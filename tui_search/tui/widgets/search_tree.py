@@ -100,11 +100,12 @@ class SearchTreePanel(LinePanel):
         """Show ``run`` at its position and keep the node being expanded in view."""
         model = self.model
         moved = model.update(run)
-        title = "Search tree"
-        if model.limit is not None:
-            title += f" · depth limit {model.limit}"
+        limit = model.limit
+        titles = ("Search tree", "Tree") if limit is None else (
+            f"Search tree · depth limit {limit}", f"Tree · depth limit {limit}",
+            f"Tree · limit {limit}", f"limit {limit}", "Tree")
         goal = f"  {GLYPH_GOAL} goal" if model.path_shown else ""
-        self.show_titles(title, (
+        self.show_titles(titles, (
             f"{GLYPH_EXPANDED} expanded  {GLYPH_FRONTIER} frontier{goal}",
             f"{GLYPH_EXPANDED} expanded {GLYPH_FRONTIER} frontier{goal.replace('  ', ' ')}",
             f"{GLYPH_EXPANDED} expanded {GLYPH_FRONTIER} frontier"))
