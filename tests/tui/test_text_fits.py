@@ -2,24 +2,28 @@
 painted, no status line, narration, readout, frontier line or comparison table ends in "…" or
 shows a piece of a word (a number cut short), and what the lesson is about -- the tutorial's
 bound, the quiz's score, a priority queue's f, g and h, iterative deepening's next depth
-limit -- is on the screen whole; the file prompts' labels wrap too."""
+limit, an exercise's verdict -- is on the screen whole; the file prompts' labels wrap too, and
+no panel's border title or legend is cut with "…" (a shorter wording shows instead)."""
 
 from __future__ import annotations
 
 from collections.abc import Callable
 
 import pytest
+from textual.pilot import Pilot
 from textual.widget import Widget
 from textual.widgets import Label
 
 from tests.textual_internals import repainted
 from tests.tui.test_app import TUTORIAL, sync, wait_until
+from tui_search.engine.exercises import QUOTES
 from tui_search.engine.mapfile import load_map
 from tui_search.tui.app import SearchApp
 from tui_search.tui.pieces import Line, Parts, Piece, lay_out, text_of, wrap
 from tui_search.tui.screens.open_map import OpenMapScreen
 from tui_search.tui.screens.save_as import SaveAsScreen
 from tui_search.tui.widgets.cell_readout import CellReadout
+from tui_search.tui.widgets.challenge import ChallengePanel
 from tui_search.tui.widgets.compare_table import CompareTable
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.stats import Stats
@@ -57,6 +61,13 @@ def _nothing(app: SearchApp) -> list[str]:
     return []
 
 
+def _verdict(app: SearchApp) -> list[str]:
+    """An exercise: its words, and the verdict with BFS's and DFS's figures."""
+    verdict = app.main.query_one(ChallengePanel).verdict
+    assert verdict is not None and app.session.exercise is not None
+    return [QUOTES[app.session.exercise], verdict.reason]
+
+
 #: Each case: how the app opens, the keys, and the texts that must be on the screen whole.
 CASES: dict[str, tuple[dict[str, object], list[str], Callable[[SearchApp], list[str]]]] = {
     "bfs at the end": ({"algorithm": "bfs"}, ["end"], _bound),
@@ -66,6 +77,10 @@ CASES: dict[str, tuple[dict[str, object], list[str], Callable[[SearchApp], list[
     "astar's priority queue": ({"algorithm": "astar"}, ["n"] * 5, _figures),
     "the quiz": ({"algorithm": "bfs"}, ["i"], _quiz),
     "compare at the end": ({"compare": "bfs,dfs"}, ["end"], _nothing),
+    "exercise 1": ({"algorithm": "bfs"}, ["x"], _verdict),
+    "exercise 1 solved": ({"exercise": 1}, ["j"] * 4 + ["g"], _verdict),
+    "exercise 2 beside a comparison": ({"exercise": 2, "compare": "bfs,dfs"}, ["end"],
+                                       _verdict),
 }
 
 
@@ -81,6 +96,8 @@ def _whole_texts(widget: Widget) -> list[str]:
         return [f"{widget.label} {widget.text}"]
     if isinstance(widget, CompareTable):
         return widget.text_lines
+    if isinstance(widget, ChallengePanel):
+        return [widget.text]
     assert isinstance(widget, FrontierPanel)
     return widget.lines()
 
@@ -96,7 +113,7 @@ def problems(app: SearchApp, screen: list[str], lesson: list[str]) -> list[str]:
     """What is cut on ``screen`` (its lines as text), and what of ``lesson`` is not on it."""
     found = []
     seen = []
-    kinds = (Stats, CellReadout, CompareTable, FrontierPanel)
+    kinds = (Stats, CellReadout, CompareTable, FrontierPanel, ChallengePanel)
     for widget in app.main.query("*"):
         if not isinstance(widget, kinds) or not widget.display or not widget.region.area:
             continue
@@ -127,16 +144,24 @@ async def test_teaching_text_wraps_and_is_on_the_screen_whole(case: str) -> None
         await pilot.press(*keys)
         await wait_until(pilot, lambda: not app.session.seeking)
         lesson = lesson_of(app)
-        for size in SIZES:
-            await pilot.resize_terminal(*size)
-            found: list[str] = ["not drawn yet"]
-            for _ in range(100):  # the panes are fitted after the resize: wait for it
-                screen = ["".join(text for text, _ in line) for line in await repainted(pilot)]
-                found = problems(app, screen, lesson)
-                if not found and app.size == size:
-                    break
-                await pilot.pause(0.05)
-            assert not found, (case, found)
+        await at_every_size(pilot, lambda screen: problems(app, screen, lesson), case)
+
+
+async def at_every_size(pilot: Pilot, check: Callable[[list[str]], list[str]],
+                        what: str) -> None:
+    """Resize the terminal to each of SIZES and assert that ``check`` finds nothing wrong on
+    the screen as painted (its lines as text) once the panes are fitted."""
+    app = pilot.app
+    for size in SIZES:
+        await pilot.resize_terminal(*size)
+        found: list[str] = ["not drawn yet"]
+        for _ in range(100):  # the panes are fitted after the resize: wait for it
+            screen = ["".join(text for text, _ in line) for line in await repainted(pilot)]
+            found = check(screen)
+            if not found and app.size == size:
+                break
+            await pilot.pause(0.05)
+        assert not found, (what, found)
 
 
 @sync
@@ -218,3 +243,45 @@ async def test_the_panels_bottom_legends_are_shortened_not_cut(
                     bottom = screen[region.bottom - 1][region.x:region.right]
                     assert "…" not in bottom, (size, options, bottom)
                     assert panel.border_subtitle in bottom
+
+
+#: Each mode of the app: how it opens and the keys that bring it on.
+MODES: dict[str, tuple[dict[str, object], list[str]]] = {
+    "single": ({"algorithm": "iddfs"}, ["n"] * 3),
+    "compare 2": ({"compare": "bfs,dfs"}, ["n"] * 3),
+    "compare 3": ({"compare": "bfs,dfs,astar"}, ["n"] * 3),
+    "compare 4": ({"compare": "bfs,dfs,astar,iddfs"}, ["n"] * 3),
+    "exercise": ({"compare": "bfs,dfs"}, ["x"]),
+    "quiz": ({"algorithm": "astar"}, ["i"]),
+    "quiz comparing 2": ({"compare": "bfs,dfs"}, ["i"]),
+    "quiz comparing 4": ({"compare": "bfs,dfs,astar,iddfs"}, ["i"]),
+}
+
+
+def cut_borders(app: SearchApp, screen: list[str]) -> list[str]:
+    """The border rows on ``screen`` (its lines as text) that Textual cut a title or a legend
+    of with "…"."""
+    found = []
+    for widget in app.screen.query("*"):
+        if not widget.display or not widget.region.area:
+            continue
+        region = widget.region
+        for y, edge in ((region.y, widget.styles.border_top),
+                        (region.bottom - 1, widget.styles.border_bottom)):
+            row = screen[y][region.x:region.right]
+            if edge[0] not in ("", "none", "hidden") and "…" in row:
+                found.append(f"{app.size}: {type(widget).__name__}: {row!r}")
+    return found
+
+
+@pytest.mark.parametrize("mode", MODES)
+@sync
+async def test_no_panel_border_is_cut(mode: str) -> None:
+    """Every panel's border title and legend is shown whole, in a shorter wording where the
+    longest does not fit, at every size, in every mode."""
+    options, keys = MODES[mode]
+    app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, **options)  # type: ignore[arg-type]
+    async with app.run_test(size=SIZES[0]) as pilot:
+        await pilot.press(*keys)
+        await wait_until(pilot, lambda: not app.session.seeking)
+        await at_every_size(pilot, lambda screen: cut_borders(app, screen), mode)
