@@ -44,7 +44,7 @@ class FileAccess(NamedTuple):
         directory; a NameRefused says why not)."""
         if folder is None:
             return cls(served=True)
-        path = Path(folder).expanduser()
+        path = Path(os.path.expanduser(folder))
         if not path.is_dir():
             raise NameRefused(f"--save-dir {os.fspath(folder)!r}: not a folder")
         return cls(served=True, folder=path.resolve())
@@ -71,7 +71,7 @@ class FileAccess(NamedTuple):
         if problem is not None:
             raise NameRefused(problem)
         if self.folder is None:  # not served (served without a folder was refused above)
-            return Path(name).expanduser()
+            return Path(os.path.expanduser(name))  # "~nobody-known" stays as typed
         if "/" in name or "\\" in name or os.path.isabs(name) or name in (".", ".."):
             raise NameRefused(f"{name!r}: only {where}, without a folder part")
         if name.startswith((".", "~")):

@@ -20,7 +20,7 @@ from textual.containers import Horizontal, Vertical
 from textual.screen import ModalScreen
 from textual.widgets import DirectoryTree, Input, Label, Static
 
-from tui_search.tui.file_access import name_or_problem, one_line
+from tui_search.tui.file_access import FileAccess, name_or_problem, one_line
 from tui_search.tui.widgets.map_tree import MapTree
 
 T = TypeVar("T")
@@ -69,7 +69,7 @@ class PathPrompt(ModalScreen[T]):
         super().__init__()
         self.suggestion = suggestion
         self.served = flat
-        self.to_path = to_path or (lambda name: Path(name).expanduser())
+        self.to_path = to_path or FileAccess().path_for
         self.folder = folder
         self.first_error = error
         self.error_about: str | None = None  # the name the error shown is about
