@@ -258,3 +258,15 @@ async def test_any_other_refusal_is_one_line_and_keeps_the_prompt(
         await type_name(pilot, str(tmp_path / "b.txt"))
         assert isinstance(app.screen, SaveAsScreen)
         assert app.screen.error == "x\\x1b[2J.txt: cannot save: no\\nreason [/]"
+
+
+@sync
+async def test_opening_a_fifo_says_not_a_regular_file(tmp_path: Path) -> None:
+    """ctrl+o on a FIFO: one line in the prompt, no hang (and the picker does not list it)."""
+    fifo = tmp_path / "pipe.txt"
+    os.mkfifo(fifo)
+    app = app_on(copy(TUTORIAL, tmp_path))
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("ctrl+o")
+        await type_name(pilot, str(fifo))
+        assert app.screen.error == f"{fifo}: not a regular file"
