@@ -255,7 +255,7 @@ async def test_hard_link_question_fits_and_acts(size: tuple[int, int], tmp_path:
         await wait_until(pilot, lambda: app.session.dirty)
         await pilot.press("ctrl+s")
         await assert_fits(pilot, InPlaceScreen)
-        await click_shown(pilot, "#in-place")
+        await click_shown(pilot, "#yes")
         await wait_until(pilot, lambda: not app.session.dirty)
         assert (tmp_path / "alias.txt").read_bytes() == path.read_bytes()
 

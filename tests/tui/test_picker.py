@@ -70,24 +70,12 @@ async def test_the_name_field_keeps_the_focus_and_typing_works(tmp_path: Path) -
         await wait_until(pilot, lambda: app.session.map_path == tmp_path / "a.txt")
 
 
+@pytest.mark.parametrize("how", ["enter", "click"])
 @sync
-async def test_choosing_a_file_fills_the_name_and_choosing_it_again_opens(tmp_path: Path) -> None:
-    a_folder(tmp_path)
-    app = app_on(tmp_path / "a.txt")
-    async with app.run_test(size=SIZE) as pilot:
-        await pilot.press("ctrl+o")
-        prompt, tree = await picker_of(pilot, OpenMapScreen)
-        field = prompt.query_one("#filename", Input)
-        await choose(pilot, tree, "b.map")
-        await wait_until(pilot, lambda: field.value == str(tmp_path / "b.map"))
-        assert app.screen is prompt
-        await pilot.press("enter")  # the same file again
-        await wait_until(pilot, lambda: app.session.map_path == tmp_path / "b.map")
-        assert app.session.grid == load_map(tmp_path / "b.map")
-
-
-@sync
-async def test_a_click_fills_and_a_second_click_opens(tmp_path: Path) -> None:
+async def test_choosing_a_file_fills_the_name_and_choosing_it_again_opens(
+    tmp_path: Path, how: str
+) -> None:
+    """With enter on the picker's cursor, or with the mouse: once fills, twice opens."""
     a_folder(tmp_path)
     app = app_on(tmp_path / "a.txt")
     async with app.run_test(size=SIZE) as pilot:
@@ -95,10 +83,18 @@ async def test_a_click_fills_and_a_second_click_opens(tmp_path: Path) -> None:
         prompt, tree = await picker_of(pilot, OpenMapScreen)
         field = prompt.query_one("#filename", Input)
         line = 1 + listed(tree).index("b.map")  # the root is line 0
-        await pilot.click(MapTree, offset=(6, line))
+        if how == "enter":
+            await choose(pilot, tree, "b.map")
+        else:
+            await pilot.click(MapTree, offset=(6, line))
         await wait_until(pilot, lambda: field.value == str(tmp_path / "b.map"))
-        await pilot.click(MapTree, offset=(6, line))
+        assert app.screen is prompt
+        if how == "enter":
+            await pilot.press("enter")  # the same file again
+        else:
+            await pilot.click(MapTree, offset=(6, line))
         await wait_until(pilot, lambda: app.session.map_path == tmp_path / "b.map")
+        assert app.session.grid == load_map(tmp_path / "b.map")
 
 
 @sync

@@ -40,6 +40,14 @@ def change_on_disk(path: Path) -> bytes:
     return data
 
 
+async def ctrl_s_after_a_change_on_disk(pilot, app: SearchApp, path: Path) -> bytes:
+    """Edit the map, let another program change its file, press ctrl+s; the file's bytes."""
+    await edit(pilot, app)
+    theirs = change_on_disk(path)
+    await pilot.press("ctrl+s")
+    return theirs
+
+
 async def saved_without_asking(pilot, app: SearchApp) -> None:
     """ctrl+s saves at once: no question, the title no longer says modified."""
     await pilot.press("ctrl+s")
@@ -55,9 +63,7 @@ async def test_changed_on_disk_cancel_keeps_both_then_overwrite_replaces(tmp_pat
     path = copy(TUTORIAL, tmp_path)
     app = app_on(path)
     async with app.run_test(size=SIZE) as pilot:
-        await edit(pilot, app)
-        theirs = change_on_disk(path)
-        await pilot.press("ctrl+s")
+        theirs = await ctrl_s_after_a_change_on_disk(pilot, app, path)
         question = await screen_shown(pilot, ChangedOnDiskScreen)
         assert "changed on disk since it was opened or saved" in str(
             question.query_one("Label").content)
@@ -79,9 +85,7 @@ async def test_reload_with_edits_asks_again_before_dropping_them(tmp_path: Path)
     path = copy(TUTORIAL, tmp_path)
     app = app_on(path)
     async with app.run_test(size=SIZE) as pilot:
-        await edit(pilot, app)
-        theirs = change_on_disk(path)
-        await pilot.press("ctrl+s")
+        theirs = await ctrl_s_after_a_change_on_disk(pilot, app, path)
         await answer(pilot, ChangedOnDiskScreen, "r")
         question = await screen_shown(pilot, DropEditsScreen)
         assert "drops the edits made in the app" in str(question.query_one("Label").content)
@@ -117,9 +121,7 @@ async def test_changed_on_disk_save_as_writes_another_file(tmp_path: Path) -> No
     other = tmp_path / "mine.txt"
     app = app_on(path)
     async with app.run_test(size=SIZE) as pilot:
-        await edit(pilot, app)
-        theirs = change_on_disk(path)
-        await pilot.press("ctrl+s")
+        theirs = await ctrl_s_after_a_change_on_disk(pilot, app, path)
         await answer(pilot, ChangedOnDiskScreen, "a")
         await type_name(pilot, str(other))
         await wait_until(pilot, lambda: app.session.map_path == other)

@@ -45,10 +45,10 @@ def confirm_reload(files: FileCommands, path: Path) -> None:
     if not files.host.session.dirty:
         files.reload(path)
         return
-    from tui_search.tui.screens.save_refused import RELOAD, DropEditsScreen
+    from tui_search.tui.screens.save_refused import YES, DropEditsScreen
 
     def answer(choice: str | None) -> None:
-        if choice == RELOAD:
+        if choice == YES:
             files.reload(path)
 
     files.push_screen(DropEditsScreen(describe_name(str(path))), answer)
@@ -80,10 +80,10 @@ def other_names(path: Path) -> int:
 def ask_in_place(files: FileCommands, path: Path, kind: str, done: Done, *,
                  in_prompt: bool = False, overwrite: bool = False) -> None:
     """The file has hard links: write it in place (all its names change), or don't save."""
-    from tui_search.tui.screens.save_refused import IN_PLACE, InPlaceScreen
+    from tui_search.tui.screens.save_refused import YES, InPlaceScreen
 
     def answer(choice: str | None) -> None:
-        if choice == IN_PLACE:
+        if choice == YES:
             files.write_map(path, kind, done, in_prompt=in_prompt, overwrite=overwrite,
                             in_place=True)
 

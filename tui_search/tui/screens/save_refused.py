@@ -11,7 +11,7 @@ from textual.binding import Binding, BindingType
 from tui_search.tui.screens.question import QuestionScreen
 
 #: What the screens dismiss with.
-OVERWRITE, RELOAD, SAVE_AS, CANCEL, IN_PLACE = "overwrite", "reload", "save-as", "cancel", "in-place"
+OVERWRITE, RELOAD, SAVE_AS, CANCEL, YES = "overwrite", "reload", "save-as", "cancel", "yes"
 
 
 class ChangedOnDiskScreen(QuestionScreen):
@@ -38,38 +38,34 @@ class ChangedOnDiskScreen(QuestionScreen):
         )
 
 
-class DropEditsScreen(QuestionScreen):
-    """``y`` reloads and drops the edits, ``n`` or escape keeps them (focused)."""
+class YesNoScreen(QuestionScreen):
+    """``y`` does what the question offers, ``n`` or escape does not (focused)."""
 
     BINDINGS: ClassVar[list[BindingType]] = [
-        Binding("y", "choose('reload')", "Reload"),
-        Binding("n,escape", "choose('cancel')", "Keep my edits"),
+        Binding("y", "choose('yes')", "Yes"),
+        Binding("n,escape", "choose('cancel')", "No"),
     ]
     AUTO_FOCUS = "#cancel"
+
+    def __init__(self, title: str, text: str, yes: str, no: str) -> None:
+        """``yes`` and ``no``: the buttons' words (the keys are added)."""
+        super().__init__(title, text, [(YES, f"{yes} (y)", "error"), (CANCEL, f"{no} (n)", "primary")])
+
+
+class DropEditsScreen(YesNoScreen):
+    """Reload, dropping the app's edits?"""
 
     def __init__(self, name: str) -> None:
-        super().__init__(
-            "Drop your edits?",
-            f"Reloading {name} drops the edits made in the app. Reload anyway?",
-            [(RELOAD, "Reload, drop my edits (y)", "error"),
-             (CANCEL, "Keep my edits (n)", "primary")],
-        )
+        super().__init__("Drop your edits?",
+                         f"Reloading {name} drops the edits made in the app. Reload anyway?",
+                         "Reload, drop my edits", "Keep my edits")
 
 
-class InPlaceScreen(QuestionScreen):
-    """``y`` writes the file in place, ``n`` or escape does not save (focused)."""
-
-    BINDINGS: ClassVar[list[BindingType]] = [
-        Binding("y", "choose('in-place')", "Write in place"),
-        Binding("n,escape", "choose('cancel')", "Don't save"),
-    ]
-    AUTO_FOCUS = "#cancel"
+class InPlaceScreen(YesNoScreen):
+    """Write a file with hard links in place?"""
 
     def __init__(self, name: str, others: int) -> None:
         names = f"{others} other name{'s' if others != 1 else ''}" if others else "other names"
-        super().__init__(
-            "Hard links",
-            f"{name}: this file has {names}; write it in place so they all change?",
-            [(IN_PLACE, "Write in place (y)", "warning"),
-             (CANCEL, "Don't save (n)", "primary")],
-        )
+        super().__init__("Hard links",
+                         f"{name}: this file has {names}; write it in place so they all change?",
+                         "Write in place", "Don't save")
