@@ -5,6 +5,9 @@ Saving writes the file the map was read from back with only the edited cells cha
 :class:`~tui_search.engine.mapsource.MapSource`), in its own format: ctrl+s on a MovingAI
 ``.map`` saves it in place as a ``.map`` (which has no start or goal, and the notification
 says so).  A new name picks the format by its ending: ``.map`` MovingAI, anything else text.
+A save the engine refuses loses nothing: a file changed on disk or with hard links is asked
+about (:mod:`~tui_search.tui.save_questions`), a read-only one opens save-as with the reason,
+any other refusal is one line.
 
 Where files may be read and written is the app's ``file_access``
 (:class:`~tui_search.tui.file_access.FileAccess`): anywhere in a terminal; served to browsers,
@@ -112,8 +115,9 @@ class FileCommands:
 
         A file changed on disk since it was read or saved, or one with hard links, is asked
         about first (:mod:`~tui_search.tui.save_questions`); ``done`` is not called when the
-        answer leaves the map unsaved (cancel, reload, another name).  ``in_prompt``: asked
-        from the save-as prompt, whose own name field is the way to another name."""
+        answer leaves the map unsaved (cancel, reload), and is called once it is saved under
+        another name chosen then.  ``in_prompt``: asked from the save-as prompt, whose own
+        name field is the way to another name."""
         try:
             source = save_map(self.host.session.grid, path, kind, overwrite=overwrite,
                               in_place=in_place)
