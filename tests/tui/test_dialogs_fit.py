@@ -18,6 +18,7 @@ from textual.widget import Widget
 from textual.widgets import Button, Input
 
 from tests.tui.test_app import MAPS, TUTORIAL, click_shown, sync, tutorial_app, wait_until
+from tui_search.engine.mapfile import load_map
 from tui_search.engine.semantics import Semantics
 from tui_search.tui.app import SearchApp
 from tui_search.tui.screens.confirm_overwrite import ConfirmOverwriteScreen
@@ -25,15 +26,18 @@ from tui_search.tui.screens.confirm_quit import ConfirmQuitScreen
 from tui_search.tui.screens.help import HelpScreen
 from tui_search.tui.screens.open_map import OpenMapScreen
 from tui_search.tui.screens.save_as import SaveAsScreen
+from tui_search.tui.screens.save_refused import ChangedOnDiskScreen, DropEditsScreen, InPlaceScreen
 from tui_search.tui.screens.settings import SettingsScreen
+from tui_search.tui.widgets.map_tree import MapTree
 
 SIZES = [(80, 24), (100, 30), (120, 40), (160, 48), (200, 60)]
 
 
 def shown_widgets(screen: Screen[object]) -> list[Widget]:
-    """What must be on screen without scrolling: the buttons, a prompt's field, the hints."""
+    """What must be on screen without scrolling: the buttons, a prompt's field, its file
+    picker, the hints."""
     return [*screen.query(Button), *screen.query(Input).filter("#filename"),
-            *screen.query(".hint")]
+            *screen.query(MapTree), *screen.query(".hint")]
 
 
 def problems(screen: Screen[object]) -> list[str]:
@@ -214,6 +218,46 @@ async def test_overwrite_question_fits_and_acts(size: tuple[int, int], tmp_path:
         await click_shown(pilot, "#overwrite")
         await wait_until(pilot, lambda: not isinstance(app.screen, SaveAsScreen))
         assert other.read_text() != "keep me\n"
+
+
+@pytest.mark.parametrize("size", SIZES)
+@sync
+async def test_changed_on_disk_questions_fit_and_act(size: tuple[int, int], tmp_path: Path) -> None:
+    """The four buttons of 'Changed on disk' (the widest row), then reload's second
+    question: 'Keep my edits' keeps them, 'Cancel' keeps both versions."""
+    _, path = on_copy(tmp_path)
+    app = SearchApp(load_map(path), path=path)  # the copy read: its stamp is the copy's
+    async with app.run_test(size=size) as pilot:
+        await pilot.press("down", "o")
+        await wait_until(pilot, lambda: app.session.dirty)
+        theirs = b"; theirs\n" + path.read_bytes()
+        path.write_bytes(theirs)
+        await pilot.press("ctrl+s")
+        await assert_fits(pilot, ChangedOnDiskScreen)
+        await click_shown(pilot, "#reload")
+        await assert_fits(pilot, DropEditsScreen)
+        await click_shown(pilot, "#cancel")
+        await wait_until(pilot, lambda: app.screen is app.main)
+        await pilot.press("ctrl+s")
+        await assert_fits(pilot, ChangedOnDiskScreen)
+        await click_shown(pilot, "#cancel")
+        await wait_until(pilot, lambda: app.screen is app.main)
+        assert app.session.dirty and path.read_bytes() == theirs
+
+
+@pytest.mark.parametrize("size", SIZES)
+@sync
+async def test_hard_link_question_fits_and_acts(size: tuple[int, int], tmp_path: Path) -> None:
+    app, path = on_copy(tmp_path)
+    (tmp_path / "alias.txt").hardlink_to(path)
+    async with app.run_test(size=size) as pilot:
+        await pilot.press("down", "o")
+        await wait_until(pilot, lambda: app.session.dirty)
+        await pilot.press("ctrl+s")
+        await assert_fits(pilot, InPlaceScreen)
+        await click_shown(pilot, "#yes")
+        await wait_until(pilot, lambda: not app.session.dirty)
+        assert (tmp_path / "alias.txt").read_bytes() == path.read_bytes()
 
 
 # -- prompts -------------------------------------------------------------------------------

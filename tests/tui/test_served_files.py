@@ -1,7 +1,8 @@
 """The served app's files, driven by Pilot: with saving off, ctrl+s, w and ctrl+o each say so
 in one line and open nothing; with a save folder, the save-as and open prompts take only
-plain names in it (a name that would leave it is refused in the prompt), and ctrl+s never
-writes the map the teacher served; a theme chosen in the served app writes no config file."""
+plain names in it (a name that would leave it, or holds a control or bidi character, is
+refused in the prompt), and ctrl+s never writes the map the teacher served; a theme chosen
+in the served app writes no config file."""
 
 from __future__ import annotations
 
@@ -64,7 +65,9 @@ async def test_save_as_takes_plain_names_in_the_folder_only(tmp_path: Path) -> N
         for name, says in (("../escape.txt", "without a folder part"),
                            (str(tmp_path / "abs.txt"), "without a folder part"),
                            (".profile.txt", "may not start with '.'"),
-                           ("run.sh", "ends in .txt or .map")):
+                           ("run.sh", "ends in .txt or .map"),
+                           ("evil\u202etxt.map", "control or bidi characters (\\u202e)"),
+                           ("red\x1b[31m.txt", "control or bidi characters (\\x1b)")):
             await type_name(pilot, name)
             assert app.screen is prompt and says in prompt.error, (name, prompt.error)
         await type_name(pilot, "mine.txt")

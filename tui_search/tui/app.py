@@ -5,6 +5,7 @@ Textual-free :class:`~tui_search.tui.session.Session`; the
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 from textual.app import App
@@ -12,6 +13,8 @@ from textual.command import Provider
 from textual.screen import Screen
 
 from tui_search.engine.algorithms import DEFAULT_ALGORITHM
+from tui_search.engine.atomic import os_reason
+from tui_search.engine.filenames import describe_name
 from tui_search.engine.grid import Grid
 from tui_search.engine.run import MAX_STEPS
 from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
@@ -108,6 +111,24 @@ class SearchApp(App[int]):
             problem = self.config.save_theme(name)
             if problem:
                 self._config_note(problem)
+
+    # -- the palette's Screenshot ----------------------------------------------------------
+    def deliver_screenshot(self, filename: str | None = None, path: str | None = None,
+                           time_format: str | None = None) -> str | None:
+        """Save an SVG of the screen in the current folder (served: the save folder; with
+        none, Textual's way: a download in the browser) and say where, in full."""
+        access = self.file_access
+        if access.served and access.folder is None:
+            return super().deliver_screenshot(filename, path, time_format)
+        folder = path or os.fspath(access.folder or Path.cwd())
+        try:
+            saved = os.path.abspath(self.save_screenshot(filename, folder, time_format))
+        except OSError as err:
+            self.notify(f"Not saved in {describe_name(folder)}: {os_reason(err)}",
+                        title="Screenshot", severity="error", markup=False)
+            return None
+        self.notify(f"Saved {describe_name(saved)}", title="Screenshot", markup=False)
+        return saved
 
     def _config_note(self, text: str) -> None:
         """Say what is wrong with the config file, once a run (it never stops the app)."""

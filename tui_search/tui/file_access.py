@@ -11,8 +11,11 @@ rules are tested as plain functions.
 from __future__ import annotations
 
 import os
+from collections.abc import Callable
 from pathlib import Path
 from typing import NamedTuple
+
+from tui_search.engine.filenames import describe_name, name_problem
 
 #: The endings a name may have in the folder: the two map formats (so a visitor cannot make
 #: a script, a dotfile or a web page there).
@@ -41,7 +44,7 @@ class FileAccess(NamedTuple):
         directory; a NameRefused says why not)."""
         if folder is None:
             return cls(served=True)
-        path = Path(folder).expanduser()
+        path = Path(os.path.expanduser(folder))
         if not path.is_dir():
             raise NameRefused(f"--save-dir {os.fspath(folder)!r}: not a folder")
         return cls(served=True, folder=path.resolve())
@@ -52,19 +55,23 @@ class FileAccess(NamedTuple):
         return OFF_MESSAGE if self.served and self.folder is None else None
 
     def path_for(self, typed: str) -> Path:
-        """The file that the name typed into a prompt stands for, or NameRefused.
+        """The file that the name typed into a prompt stands for, or NameRefused: one that
+        no file can have (:func:`~tui_search.engine.filenames.name_problem`; served, strictly).
 
         Served with a folder, only a plain file name is taken: no folder part (``/``, ``\\``),
         no ``..``, not absolute, not hidden (a leading ``.``), ending in .txt or .map, and not
         a symbolic link (nor anything that resolves outside the folder)."""
         name = typed.strip()
-        if not self.served:
-            return Path(name).expanduser()
-        if self.folder is None:
+        if self.served and self.folder is None:
             raise NameRefused(OFF_MESSAGE)
         where = f"a file name in {self.folder}"
-        if not name:
+        if self.served and not name:
             raise NameRefused(f"type {where}")
+        problem = name_problem(name, strict=self.served)
+        if problem is not None:
+            raise NameRefused(problem)
+        if self.folder is None:  # not served (served without a folder was refused above)
+            return Path(os.path.expanduser(name))  # "~nobody-known" stays as typed
         if "/" in name or "\\" in name or os.path.isabs(name) or name in (".", ".."):
             raise NameRefused(f"{name!r}: only {where}, without a folder part")
         if name.startswith((".", "~")):
@@ -96,8 +103,37 @@ class FileAccess(NamedTuple):
             return path.with_suffix(".txt").name
         return str(path.with_suffix(".txt"))
 
+    def folder_for(self, path: Path | None) -> Path | None:
+        """The folder a prompt's file picker shows: the served app's folder (None when files
+        are off), else that of ``path`` (the map's file), else the current one."""
+        if self.served:
+            return self.folder
+        try:
+            return (path.parent if path is not None else Path.cwd()).resolve()
+        except (OSError, ValueError):
+            return None
+
     def open_suggestion(self, path: Path | None) -> str:
         """What the open prompt offers: the map's folder (nothing, served)."""
         if self.served or path is None or str(path.parent) == ".":
             return ""
         return f"{path.parent}/"
+
+
+def one_line(error: Exception) -> str:
+    """What went wrong, as one line showing any name in it safely
+    (:func:`~tui_search.engine.filenames.describe_name`)."""
+    return describe_name(str(error))
+
+
+def name_or_problem(typed: str, to_path: Callable[[str], Path]) -> Path | str:
+    """The file a prompt's ``typed`` name stands for (``to_path``: a FileAccess's
+    :meth:`~FileAccess.path_for`), or the one line saying why no file can have it: never
+    an exception, whatever was typed."""
+    problem = name_problem(typed.strip())
+    if problem is not None:
+        return problem
+    try:
+        return to_path(typed)
+    except (OSError, ValueError) as exc:  # NameRefused among them
+        return one_line(exc)

@@ -5,6 +5,9 @@ Saving writes the file the map was read from back with only the edited cells cha
 :class:`~tui_search.engine.mapsource.MapSource`), in its own format: ctrl+s on a MovingAI
 ``.map`` saves it in place as a ``.map`` (which has no start or goal, and the notification
 says so).  A new name picks the format by its ending: ``.map`` MovingAI, anything else text.
+A save the engine refuses loses nothing: a file changed on disk or with hard links is asked
+about (:mod:`~tui_search.tui.save_questions`), a read-only one opens save-as with the reason,
+any other refusal is one line.
 
 Where files may be read and written is the app's ``file_access``
 (:class:`~tui_search.tui.file_access.FileAccess`): anywhere in a terminal; served to browsers,
@@ -13,6 +16,7 @@ nowhere (each action says so in one line) or names in one folder.
 
 from __future__ import annotations
 
+import os
 from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Protocol
@@ -21,11 +25,20 @@ from textual.app import App
 from textual.notifications import SeverityLevel
 from textual.screen import Screen
 
+from tui_search.engine.filenames import describe_name
 from tui_search.engine.grid import Grid
+from tui_search.engine.mapfile import load_map
 from tui_search.engine.mapread import MapError
 from tui_search.engine.mapsource import MOVINGAI, TEXT
-from tui_search.engine.mapwrite import kind_for_path, save_map
-from tui_search.tui.file_access import FileAccess
+from tui_search.engine.mapwrite import (
+    ChangedOnDisk,
+    HardLinked,
+    ReadOnlyFile,
+    kind_for_path,
+    save_map,
+)
+from tui_search.tui.file_access import FileAccess, one_line
+from tui_search.tui.save_questions import Done, ask_in_place, changed_in_prompt, changed_on_ctrl_s
 from tui_search.tui.session import Session
 
 if TYPE_CHECKING:
@@ -95,32 +108,68 @@ class FileCommands:
             return source.kind
         return kind_for_path(self.host.session.map_path) if self.host.session.map_path is not None else TEXT
 
-    def write_map(self, path: Path, kind: str) -> str | None:
-        """Save the map to ``path`` in format ``kind``, atomically; None, or the one-line
-        reason it failed (the old file is then untouched)."""
+    def write_map(self, path: Path, kind: str, done: Done, *, in_prompt: bool = False,
+                  overwrite: bool = False, in_place: bool = False) -> None:
+        """Save the map to ``path`` in format ``kind``, atomically, then ``done(None)``; or
+        ``done(error)`` with the MapError saying why not (the old file is then untouched).
+
+        A file changed on disk since it was read or saved, or one with hard links, is asked
+        about first (:mod:`~tui_search.tui.save_questions`); ``done`` is not called when the
+        answer leaves the map unsaved (cancel, reload), and is called once it is saved under
+        another name chosen then.  ``in_prompt``: asked from the save-as prompt, whose own
+        name field is the way to another name."""
         try:
-            self.host.session.grid.source = save_map(self.host.session.grid, path, kind)
+            source = save_map(self.host.session.grid, path, kind, overwrite=overwrite,
+                              in_place=in_place)
+        except ChangedOnDisk:
+            ask = changed_in_prompt if in_prompt else changed_on_ctrl_s
+            ask(self, path, kind, done, in_place=in_place)
+            return
+        except HardLinked:
+            ask_in_place(self, path, kind, done, in_prompt=in_prompt, overwrite=overwrite)
+            return
         except MapError as exc:
-            return str(exc)
+            done(exc)
+            return
+        except (OSError, ValueError) as exc:  # what no name may do: end the app
+            done(MapError(os.fsdecode(path), f"cannot save: {exc}"))
+            return
+        self.host.session.grid.source = source
         self.host.session.saved(Path(path))
         note = f" ({NO_ENDPOINTS_IN_MAP})" if kind == MOVINGAI else ""
-        self.notify(f"Saved {path}{note}", timeout=6 if note else 3)
+        self.notify(f"Saved {describe_name(str(path))}{note}", timeout=6 if note else 3,
+                    markup=False)
         self.host.show_map()
-        return None
+        done(None)
 
-    def save(self, path: Path) -> bool:
-        """Save to the map's own file; on failure say why in a notification."""
-        error = self.write_map(path, self._own_kind())
-        if error is not None:
-            self.notify(error, title="Not saved", severity="error", timeout=8)
-        return error is None
+    def save(self, path: Path, then: Callable[[], None] | None = None) -> None:
+        """ctrl+s: save to the map's own file, then ``then``.  A read-only file opens the
+        save-as prompt with the reason; any other failure is said in a notification."""
 
-    def _save_as(self, path: Path) -> str | None:
+        def done(error: MapError | None) -> None:
+            if error is None:
+                if then is not None:
+                    then()
+            elif isinstance(error, ReadOnlyFile):
+                self.ask_save_as(then, error=one_line(error))
+            else:
+                self.notify(one_line(error), title="Not saved", severity="error", timeout=8,
+                            markup=False)
+
+        self.write_map(path, self._own_kind(), done)
+
+    def _save_as(self, path: Path, answer: Callable[[str | None], None]) -> None:
         own = self.host.session.map_path is not None and path.resolve() == self.host.session.map_path.resolve()
-        return self.write_map(path, self._own_kind() if own else kind_for_path(path))
 
-    def ask_save_as(self, then: Callable[[], None] | None = None) -> None:
-        """The save-as prompt; ``then`` runs once the map is saved (not on cancel)."""
+        def done(error: MapError | None) -> None:
+            answer(None if error is None else one_line(error))
+
+        self.write_map(path, self._own_kind() if own else kind_for_path(path), done,
+                       in_prompt=True)
+
+    def ask_save_as(self, then: Callable[[], None] | None = None, error: str = "") -> None:
+        """The save-as prompt; ``then`` runs once the map is saved (not on cancel);
+        ``error``, the reason the map could not be saved where it was, shown in it."""
         if self._files_off():
             return
         from tui_search.tui.screens.save_as import SaveAsScreen
@@ -134,7 +183,19 @@ class FileCommands:
                 then()
 
         self.push_screen(SaveAsScreen(self._save_as, suggestion, own=path,
-                                      to_path=access.path_for), saved)
+                                      to_path=access.path_for, folder=access.folder_for(path),
+                                      flat=access.served, error=error), saved)
+
+    def reload(self, path: Path) -> None:
+        """Read the map's file again, dropping the app's edits (the caller asked first)."""
+        try:
+            grid = load_map(path)
+        except MapError as exc:
+            self.notify(one_line(exc), title="Not reloaded", severity="error", timeout=8,
+                        markup=False)
+            return
+        self._use_map(grid, path)
+        self.notify(f"Reloaded {describe_name(str(path))}", timeout=3, markup=False)
 
     # -- leaving a map with edits ---------------------------------------------------------
     def confirm_discard(self, then: Callable[[], None], leaving: Leaving | None = None) -> None:
@@ -156,10 +217,10 @@ class FileCommands:
                 own = self.host.session.map_path
                 if own is None or not self.file_access.may_save_over(own):
                     self.ask_save_as(then)
-                elif self.save(own):
-                    then()
+                else:
+                    self.save(own, then)
 
-        name = self.host.session.map_name
+        name = describe_name(self.host.session.map_name)
         self.push_screen(ConfirmQuitScreen(name, leaving or QUITTING), answer)
 
     def quit(self) -> None:
@@ -178,7 +239,10 @@ class FileCommands:
             if result is not None:
                 self.replace_map(*result)
 
-        self.push_screen(OpenMapScreen(suggestion, access.path_for), opened)
+        self.push_screen(OpenMapScreen(suggestion, access.path_for,
+                                       folder=access.folder_for(self.host.session.map_path),
+                                       flat=access.served),
+                         opened)
 
     def replace_map(self, grid: Grid, path: Path | None, name: str | None = None) -> None:
         """Show ``grid`` (read from ``path``, None for a map made in code) instead of the
@@ -186,7 +250,7 @@ class FileCommands:
         file or an exercise calls this; ``name`` is what the question calls the new map."""
         from tui_search.tui.screens.confirm_quit import replacing
 
-        new_name = name or (path.name if path is not None else "the new map")
+        new_name = name or (describe_name(path.name) if path is not None else "the new map")
         self.confirm_discard(lambda: self._use_map(grid, path), replacing(new_name))
 
     def _use_map(self, grid: Grid, path: Path | None) -> None:

@@ -7,6 +7,7 @@ from typing import ClassVar
 
 from textual.binding import Binding, BindingType
 
+from tui_search.engine.filenames import describe_name
 from tui_search.tui.screens.question import QuestionScreen
 
 #: What the screen dismisses with.
@@ -22,10 +23,11 @@ class ConfirmOverwriteScreen(QuestionScreen):
     ]
     AUTO_FOCUS = "#another"
 
-    def __init__(self, path: Path) -> None:
+    def __init__(self, path: Path, text: str = "") -> None:
+        """``text``: the question (by default, that ``path`` exists)."""
         super().__init__(
             "File exists",
-            f"{path} already exists. Replace it with this map?",
+            text or f"{describe_name(str(path))} already exists. Replace it with this map?",
             [(OVERWRITE, "Overwrite (y)", "error"),
              (ANOTHER, "Choose another name (n)", "primary")],
         )

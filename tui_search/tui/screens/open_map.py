@@ -11,6 +11,7 @@ from pathlib import Path
 from tui_search.engine.grid import Grid
 from tui_search.engine.mapfile import load_map
 from tui_search.engine.mapread import MapError
+from tui_search.tui.file_access import one_line
 from tui_search.tui.screens.path_prompt import PathPrompt
 
 
@@ -25,6 +26,6 @@ class OpenMapScreen(PathPrompt[tuple[Grid, Path] | None]):
         try:
             grid = load_map(path)
         except MapError as exc:
-            self.show_error(str(exc))
+            self.show_error(one_line(exc))
             return
         self.dismiss((grid, path))

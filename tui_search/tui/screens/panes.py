@@ -16,12 +16,14 @@ from textual import events
 from textual.app import ComposeResult
 from textual.await_remove import AwaitRemove
 from textual.containers import Grid as PaneBox
+from textual.markup import escape
 from textual.screen import Screen
 from textual.widget import AwaitMount
 from textual.widgets import Static
 from textual.worker import get_current_worker
 
 from tui_search.engine.exercises import LIVE_CELLS, Verdict, check, tutorial_grid
+from tui_search.engine.filenames import describe_name
 from tui_search.engine.grid import Cell, Grid
 from tui_search.tui import playback
 from tui_search.tui.file_access import FileAccess
@@ -205,7 +207,8 @@ class PanesScreen(Screen[None]):
             if pane.is_mounted:  # else shown whole once mounted (_panes_changed)
                 pane.show(runs[i] if runs else None,
                           per_run[i] if per_run is not None else changed, follow=follow,
-                          hide_order=session.quiz.on and i == 0, title=session.title)
+                          hide_order=session.quiz.on and i == 0,
+                          title=escape(describe_name(session.title)))  # a file's name: not markup
         if len(self.panes) > 1:
             self.table.show(session.labels, runs)
         self.show_pick()

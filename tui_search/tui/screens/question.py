@@ -40,7 +40,7 @@ class QuestionScreen(ModalScreen[str]):
     def compose(self) -> ComposeResult:
         with Vertical() as box:
             box.border_title = self.title_text
-            yield Label(self.question_text)
+            yield Label(self.question_text, markup=False)  # names in it are typed
             with Horizontal():
                 for choice, label, variant in self.buttons:
                     yield Button(label, id=choice, variant=variant)  # type: ignore[arg-type]

@@ -2,7 +2,8 @@
 
 The prompt saves by itself (through the ``save`` it is given) so that a failed save keeps it
 open with the reason and the name typed; a file that exists, other than the map's own, is not
-replaced before the overwrite question says so.
+replaced before the overwrite question says so.  The save may ask questions of its own (the
+file changed on disk, has hard links) before it answers.
 """
 
 from __future__ import annotations
@@ -11,6 +12,7 @@ import os
 from collections.abc import Callable
 from pathlib import Path
 
+from tui_search.engine.filenames import describe_name
 from tui_search.tui.screens.confirm_overwrite import OVERWRITE, ConfirmOverwriteScreen
 from tui_search.tui.screens.path_prompt import PathPrompt
 
@@ -24,21 +26,26 @@ class SaveAsScreen(PathPrompt[Path | None]):
 
     def __init__(
         self,
-        save: Callable[[Path], str | None],
+        save: Callable[[Path, Callable[[str | None], None]], None],
         suggestion: str = "map.txt",
         own: Path | None = None,
         to_path: Callable[[str], Path] | None = None,
+        *,
+        folder: Path | None = None,
+        flat: bool = False,
+        error: str = "",
     ) -> None:
-        """``save(path)`` writes the map and returns None, or the one-line reason it could
-        not; ``own`` is the map's own file, saved over without asking; ``to_path`` as
-        :class:`PathPrompt`'s."""
-        super().__init__(suggestion, to_path)
+        """``save(path, answer)`` writes the map, then calls ``answer(None)``, or
+        ``answer(reason)`` with the one line saying why it could not (or never, when a
+        question it asked was cancelled: the prompt is then still here); ``own`` is the
+        map's own file, saved over without asking; the rest as :class:`PathPrompt`'s."""
+        super().__init__(suggestion, to_path, folder=folder, flat=flat, error=error)
         self.save = save
         self.own = own
 
     def submit(self, path: Path) -> None:
         if path.is_dir():
-            self.show_error(f"{path} is a folder: type a file name")
+            self.show_error(f"{describe_name(str(path))} is a folder: type a file name")
         elif path.exists() and not self._is_own(path):
             self.app.push_screen(ConfirmOverwriteScreen(path), self._overwrite_answer(path))
         else:
@@ -55,13 +62,15 @@ class SaveAsScreen(PathPrompt[Path | None]):
             if choice == OVERWRITE:
                 self._save(path)
             else:  # choose another name: the prompt, with the name, is still here
-                self.query_one("Input").focus()
+                self.query_one("#filename").focus()
 
         return answer
 
     def _save(self, path: Path) -> None:
-        error = self.save(path)
-        if error is None:
-            self.dismiss(path)
-        else:
-            self.show_error(error)
+        def answer(error: str | None) -> None:
+            if error is None:
+                self.dismiss(path)
+            else:
+                self.show_error(error)
+
+        self.save(path, answer)
