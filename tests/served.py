@@ -21,9 +21,11 @@ import time
 from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
+from pathlib import Path
 
 from tests.helpers import ROOT
 
+TOKEN = re.compile(r"\?token=([A-Za-z0-9_-]+)")
 WS_URL = re.compile(r'data-session-websocket-url="([^"]+)"')
 ESCAPES = re.compile(r"\x1b\[[0-9;?<>=]*[ -/]*[@-~]|\x1b[PX^_\]].*?(?:\x1b\\|\x07)|\x1b.")
 
@@ -39,6 +41,19 @@ class Served:
     process: subprocess.Popen[str]
     url: str
     banner: str
+    token: str | None = None
+
+    @property
+    def page(self) -> str:
+        """The page's address as the banner gives it (with the token, if any)."""
+        return self.url + (f"?token={self.token}" if self.token else "")
+
+    def log(self) -> str:
+        """Everything the server printed after its banner, once it has stopped (SIGINT)."""
+        assert self.process.stdout is not None
+        if self.process.poll() is None:
+            self.process.send_signal(signal.SIGINT)
+        return self.process.stdout.read()
 
 
 @contextmanager
@@ -56,6 +71,9 @@ def served(*args: str, timeout: float = 30.0) -> Iterator[Served]:
         banner = process.stdout.readline()  # "Serving tui-search (...) on http://...": listening
         if not banner.startswith("Serving"):
             raise AssertionError(f"the server did not start: {banner}{process.stdout.read()}")
+        while not banner.endswith("Press Ctrl+C to stop.\n"):
+            banner += process.stdout.readline()
+        token = TOKEN.search(banner)
         # Listening starts right after on_startup prints; wait until it accepts.
         deadline = time.monotonic() + timeout
         while True:
@@ -66,7 +84,8 @@ def served(*args: str, timeout: float = 30.0) -> Iterator[Served]:
                 if time.monotonic() > deadline:
                     raise
                 time.sleep(0.05)
-        yield Served(process, f"http://127.0.0.1:{port}/", banner)
+        yield Served(process, f"http://127.0.0.1:{port}/", banner,
+                     token.group(1) if token else None)
     finally:
         if process.poll() is None:
             process.send_signal(signal.SIGINT)
@@ -75,6 +94,27 @@ def served(*args: str, timeout: float = 30.0) -> Iterator[Served]:
             except subprocess.TimeoutExpired:
                 process.kill()
                 process.wait()
+
+
+def descendants(pid: int) -> list[int]:
+    """The processes ``pid`` started, and theirs, from ``/proc`` (Linux)."""
+    found: list[int] = []
+    try:
+        children = [int(p) for p in Path(f"/proc/{pid}/task/{pid}/children").read_text().split()]
+    except OSError:
+        return found
+    for child in children:
+        found += [child, *descendants(child)]
+    return found
+
+
+def running(pid: int) -> bool:
+    """Is ``pid`` a live process (not gone, not a zombie waiting for a parent to reap it)?"""
+    try:
+        state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
+    except (FileNotFoundError, ProcessLookupError):
+        return False
+    return state not in ("Z", "X")
 
 
 def screen_text(data: bytes) -> str:
@@ -97,7 +137,8 @@ async def visit(url: str, steps: list[tuple[str, str]], width: int = 120, height
     text; the page and each step's output.  Then ``q`` quits the app."""
     import aiohttp
 
-    async with aiohttp.ClientSession() as session:
+    # unsafe: the token's cookie of a server at an IP address is kept too
+    async with aiohttp.ClientSession(cookie_jar=aiohttp.CookieJar(unsafe=True)) as session:
         async with session.get(url) as response:
             assert response.status == 200, response.status
             page = await response.text()
