@@ -174,3 +174,44 @@ async def visit(url: str, steps: list[tuple[str, str]], width: int = 120, height
                 screens.append(screen_text(bytes(received)))
             await ws.send_str(json.dumps(["stdin", "q"]))  # quit the visitor's app
         return page, screens
+
+
+def raw_websocket(url: str, host: str | None = None) -> socket.socket:
+    """A websocket to ``url``'s server opened by hand (an upgrade request on a plain socket):
+    a visitor who can send bad frames, fall silent, or drop the connection."""
+    import base64
+
+    port = int(url.rsplit(":", 1)[1].strip("/"))
+    sock = socket.create_connection(("127.0.0.1", port), timeout=10)
+    key = base64.b64encode(os.urandom(16)).decode()
+    sock.sendall((f"GET /ws?width=80&height=24 HTTP/1.1\r\nHost: {host or f'127.0.0.1:{port}'}"
+                  f"\r\nUpgrade: websocket\r\nConnection: Upgrade\r\nSec-WebSocket-Key: {key}"
+                  "\r\nSec-WebSocket-Version: 13\r\n\r\n").encode())
+    answer = b""
+    while b"\r\n\r\n" not in answer:
+        answer += sock.recv(1)
+    assert answer.startswith(b"HTTP/1.1 101"), answer
+    return sock
+
+
+def frame(opcode: int, payload: bytes) -> bytes:
+    """One masked client frame (the mask all zeros: the payload as it is); short payloads."""
+    assert len(payload) < 126
+    return bytes([0x80 | opcode, 0x80 | len(payload)]) + b"\0\0\0\0" + payload
+
+
+def apps_of(server: Served) -> list[int]:
+    """The visitors' apps running under ``server``: its fork server's descendants."""
+    pid = server.process.pid
+    forks = [int(p) for p in Path(f"/proc/{pid}/task/{pid}/children").read_text().split()]
+    return [app for fork in forks for app in descendants(fork) if running(app)]
+
+
+def wait_for(test, timeout: float) -> float:
+    """Seconds until ``test()`` is true (AssertionError after ``timeout``)."""
+    start = time.monotonic()
+    while not test():
+        if time.monotonic() - start > timeout:
+            raise AssertionError(f"not within {timeout} s")
+        time.sleep(0.05)
+    return time.monotonic() - start

@@ -12,7 +12,7 @@ sees it (an aiohttp middleware, :meth:`Guard.middleware`).
   its websocket carry it.  A request without it gets 403.
 
 textual-serve's static folder is served without its directory listing (in
-:mod:`tui_search.serve`, where the routes are made).
+:mod:`tui_search.serve`, where the routes are made); a folder is "not found" (404) here.
 """
 
 from __future__ import annotations
@@ -109,7 +109,10 @@ class Guard(NamedTuple):
             why = self.refusal(request)
             if why is not None:
                 raise web.HTTPForbidden(text=why)
-            response = await handler(request)
+            try:
+                response = await handler(request)
+            except web.HTTPForbidden:  # aiohttp's answer for a static folder, listing off
+                raise web.HTTPNotFound() from None
             if (self.token is not None and self._given(request.query.get("token"))
                     and not response.prepared):
                 response.set_cookie(COOKIE, self.token, httponly=True, samesite="Strict")

@@ -198,6 +198,8 @@ async def visit(request: web.Request, forks: Forks, visitor: str | None,
     app = VisitorApp(forks, visitor, websocket, downloads)
     try:
         await app.start(width, height)
+        if app._task is not None:  # the app gone (ended, killed): the visit is over
+            app._task.add_done_callback(lambda _: asyncio.ensure_future(websocket.close()))
         await relay(websocket, app)
     except asyncio.CancelledError:
         pass

@@ -11,6 +11,7 @@ rules are tested as plain functions.
 from __future__ import annotations
 
 import os
+import unicodedata
 from pathlib import Path
 from typing import NamedTuple
 
@@ -21,6 +22,12 @@ MAX_NAME = 80
 
 OFF_MESSAGE = ("Saving and opening files are off in the served app "
                "(the teacher can allow them in one folder: tui-search --serve --save-dir DIR)")
+
+
+def unsafe_character(c: str) -> bool:
+    """A character a name in the served folder may not have: a control character (C0, DEL,
+    C1) or one that reorders or hides text (bidi controls, zero-width marks)."""
+    return unicodedata.category(c) in ("Cc", "Cf", "Zl", "Zp")
 
 
 class NameRefused(ValueError):
@@ -69,7 +76,7 @@ class FileAccess(NamedTuple):
             raise NameRefused(f"{name!r}: only {where}, without a folder part")
         if name.startswith((".", "~")):
             raise NameRefused(f"{name!r}: a name may not start with {name[0]!r}")
-        if len(name) > MAX_NAME or any(ord(c) < 32 or c in ':*?"<>|' for c in name):
+        if len(name) > MAX_NAME or any(unsafe_character(c) or c in ':*?"<>|' for c in name):
             raise NameRefused(f"{name!r}: use letters, digits, spaces and - _ . "
                               f"(at most {MAX_NAME} characters)")
         if not name.lower().endswith(MAP_ENDINGS):
