@@ -45,6 +45,13 @@ MAX_HEIGHT = 200
 HEARTBEAT = 2.0
 #: Seconds an app asked to quit has before the fork server ends it.
 QUIT_WAIT = 1.0
+#: Apps starting at once, one a CPU; the next visitors wait their turn (without it, 30 apps
+#: starting together share the CPUs and every visitor waits as long as the last).
+STARTING = os.cpu_count() or 1
+#: An output of this many bytes is the first frame: the app's turn to start is over.
+FIRST_FRAME_BYTES = 2048
+#: Seconds a starting app may keep its turn, first frame or not.
+TURN = 2.0
 
 
 def clamp(width: object, height: object) -> tuple[int, int]:
@@ -65,6 +72,7 @@ class Forks:
         self.folder = Path(tempfile.mkdtemp(prefix="tui-search-"))
         self.path = str(self.folder / "forks")
         self.process: subprocess.Popen[str] | None = None
+        self.turns = asyncio.Semaphore(STARTING)
 
     def start(self) -> None:
         """Start the fork server; return once it has imported the app and listens."""
@@ -161,12 +169,30 @@ class VisitorApp(AppService):
                          download_manager=downloads)
         self.forks, self.visitor = forks, visitor
         self.forked: ForkedApp | None = None
+        self._turn: asyncio.TimerHandle | None = None
 
     async def _open_app_process(self, width: int = 80, height: int = 24) -> Any:
-        self.forked = await self.forks.open_app(width, height, self.visitor)
+        await self.forks.turns.acquire()  # the app's turn to start (STARTING)
+        self._turn = asyncio.get_running_loop().call_later(TURN, self._turn_over)
+        try:
+            self.forked = await self.forks.open_app(width, height, self.visitor)
+        except BaseException:
+            self._turn_over()
+            raise
         self._process = cast(Any, self.forked)
         self._stdin = self.forked.stdin
         return self.forked
+
+    def _turn_over(self) -> None:
+        if self._turn is not None:
+            self._turn.cancel()
+            self._turn = None
+            self.forks.turns.release()
+
+    async def on_data(self, payload: bytes) -> None:
+        if len(payload) >= FIRST_FRAME_BYTES:
+            self._turn_over()
+        await super().on_data(payload)
 
     async def end(self) -> None:
         """Ask the app to quit; end it QUIT_WAIT seconds later if it has not (and at once if
@@ -180,6 +206,7 @@ class VisitorApp(AppService):
         except (asyncio.TimeoutError, OSError):
             pass
         finally:
+            self._turn_over()
             if self.forked is not None:
                 self.forked.end()
 
