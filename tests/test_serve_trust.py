@@ -110,12 +110,10 @@ def test_an_app_ends_within_5_s_of_its_visitors_connection_dropping() -> None:
             sock = raw_websocket(server.url)
             wait_for(lambda: apps_of(server), 30)
             (app,) = apps_of(server)
-            left = time.monotonic()
             if not silent:
                 sock.setsockopt(socket.SOL_SOCKET, socket.SO_LINGER, struct.pack("ii", 1, 0))
                 sock.close()  # a reset
-            wait_for(lambda a=app: not running(a), 6)
-            assert time.monotonic() - left < 5.5 if silent else time.monotonic() - left < 5
+            wait_for(lambda a=app: not running(a), 5)
             sock.close()
 
 
