@@ -127,9 +127,10 @@ async def _class(url: str, visitors: int, steps: int = 0) -> tuple[list[float], 
 
 def floor_cpu(repeats: int) -> list[float]:
     """CPU seconds of a forked app from the fork to its first frame (fork server alone)."""
+    from tui_search.serve import APP_MEMORY_MB
     from tui_search.serve_visit import Forks
 
-    forks = Forks([TUTORIAL, "--served"], 400)
+    forks = Forks([TUTORIAL, "--served"], APP_MEMORY_MB)
     forks.start()
 
     async def one() -> float:

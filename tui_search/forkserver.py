@@ -30,8 +30,6 @@ from pathlib import Path
 WATCH_EVERY = 0.25
 #: How long an app asked to end (SIGTERM) has before it is killed.
 KILL_AFTER = 1.5
-#: The default limit on an app's resident memory (MB): the tutorial's app is about 60.
-MEMORY_MB = 400
 _PAGE = os.sysconf("SC_PAGE_SIZE") if hasattr(os, "sysconf") else 4096
 
 
@@ -217,7 +215,9 @@ def _signal(pid: int, sig: int) -> None:
 def main(argv: list[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else argv
     path, app_args = argv[0], argv[argv.index("--") + 1:]
-    memory_mb = int(os.environ.get("TUI_SEARCH_APP_MEMORY_MB", MEMORY_MB))
+    from tui_search.serve import APP_MEMORY_MB
+
+    memory_mb = int(os.environ.get("TUI_SEARCH_APP_MEMORY_MB", APP_MEMORY_MB))
     preload(app_args)
     listener = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
     listener.bind(path)

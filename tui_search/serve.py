@@ -45,8 +45,9 @@ SERVER_FLAGS = ("serve", "host", "port", "save_dir", "shared_save_dir", "app_mem
 FILE_FLAGS = ("map", "scen")
 #: What the served app cannot do (the flags it refuses).
 NOT_SERVED = {"headless": "--headless", "json": "--json", "trace": "--trace"}
-#: A visitor's app using more memory than this (MB) is ended: the tutorial's uses ~60.
-APP_MEMORY_MB = 400
+#: A visitor's app using more memory than this (MB) is ended: the tutorial's uses ~40, and a
+#: record of 20 million steps (--max-steps' default) some 400.
+APP_MEMORY_MB = 1000
 #: A visitor's id: the name of their own folder in --save-dir.
 VISITOR_ID = re.compile(r"[0-9a-f]{6}")
 NEEDS_EXTRA = "--serve needs textual-serve: pip install 'tui-search[web]'"
