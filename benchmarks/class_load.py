@@ -36,6 +36,7 @@ if __name__ == "__main__":  # run as a script: the checkout first, this folder n
 
 from benchmarks.harness import fmt_time, med
 from benchmarks.table import ROWS, Row, add, print_table
+from tui_search.serve_visit import stop_process
 
 TUTORIAL = str(Path(__file__).resolve().parent.parent / "maps" / "tutorial.txt")
 WANT = ("START (0,0)", "Quit")  # in the first frame: the status line and the footer
@@ -66,15 +67,6 @@ def _start(argv: list[str], port: int) -> subprocess.Popen[bytes]:
                 process.kill()
                 raise
             time.sleep(0.05)
-
-
-def _stop(process: subprocess.Popen[bytes]) -> None:
-    process.send_signal(signal.SIGINT)
-    try:
-        process.wait(timeout=20)
-    except subprocess.TimeoutExpired:
-        process.kill()
-        process.wait()
 
 
 async def _visitor(url: str, start: asyncio.Event, steps: int = 0) -> tuple[float, list[float]]:
@@ -199,7 +191,7 @@ def bench_class_load(quick: bool) -> None:
                     add(Row("class_load", f"{design}: a step answered, {visitors} connected",
                             fmt_time(steps), "", None, "≤ 0.5 s", med(steps) <= 0.5))
         finally:
-            _stop(server)
+            stop_process(server, signal.SIGINT, 20)
 
 
 if __name__ == "__main__":

@@ -24,6 +24,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from tests.helpers import ROOT
+from tui_search.serve_visit import stop_process
 
 TOKEN = re.compile(r"\?token=([A-Za-z0-9_-]+)")
 WS_URL = re.compile(r'data-session-websocket-url="([^"]+)"')
@@ -87,13 +88,7 @@ def served(*args: str, timeout: float = 30.0) -> Iterator[Served]:
         yield Served(process, f"http://127.0.0.1:{port}/", banner,
                      token.group(1) if token else None)
     finally:
-        if process.poll() is None:
-            process.send_signal(signal.SIGINT)
-            try:
-                process.wait(timeout=10)
-            except subprocess.TimeoutExpired:
-                process.kill()
-                process.wait()
+        stop_process(process, signal.SIGINT, 10)
 
 
 def descendants(pid: int) -> list[int]:

@@ -90,14 +90,8 @@ class Forks:
 
     def stop(self) -> None:
         """End the fork server, which ends every app first."""
-        process = self.process
-        if process is not None and process.poll() is None:
-            process.send_signal(signal.SIGTERM)
-            try:
-                process.wait(timeout=4)
-            except subprocess.TimeoutExpired:
-                process.kill()
-                process.wait()
+        if self.process is not None:
+            stop_process(self.process, signal.SIGTERM, 4)
         for leftover in self.folder.iterdir():
             leftover.unlink()
         self.folder.rmdir()
@@ -128,6 +122,17 @@ class Forks:
                 os.close(fd)
         return ForkedApp(int(reply), lease, await _writer(stdin_w), await _reader(out_r),
                          await _reader(err_r))
+
+
+def stop_process(process: subprocess.Popen[Any], sig: int, timeout: float) -> None:
+    """Send ``sig`` to ``process`` if it runs, and wait for it; kill it after ``timeout``."""
+    if process.poll() is None:
+        process.send_signal(sig)
+        try:
+            process.wait(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            process.kill()
+            process.wait()
 
 
 class ForkedApp:
