@@ -14,7 +14,7 @@ The peers (``pip install -e .[bench]``: pathfinding, networkx, scipy) are option
 gives a "not installed" row.  See benchmarks/README.md for what each row means.
 
 This file is the entry point only: each section lives in its own module of this package
-(engine.py, choices.py, informed.py, jump.py, step.py, startup.py), on the shared table.py, harness.py and maps.py.
+(engine.py, choices.py, informed.py, jump.py, step.py, startup.py, class_load.py), on the shared table.py, harness.py and maps.py.
 """
 
 from __future__ import annotations
@@ -34,6 +34,7 @@ sys.path[:] = [p for p in sys.path if Path(p or ".").resolve() != HERE]
 sys.path.insert(0, str(ROOT))
 
 from benchmarks.choices import bench_choices
+from benchmarks.class_load import bench_class_load
 from benchmarks.compare import bench_compare
 from benchmarks.engine import bench_engine
 from benchmarks.harness import NOISE, med
@@ -46,7 +47,7 @@ from benchmarks.table import ROWS, Row, add, print_table
 #: The sections, in the order they run and print.
 SECTIONS = {"engine": bench_engine, "choices": bench_choices, "informed": bench_informed,
             "jump": bench_jump, "step": bench_step, "compare": bench_compare,
-            "startup": bench_startup}
+            "startup": bench_startup, "class_load": bench_class_load}
 
 
 def main(argv: list[str] | None = None) -> int:

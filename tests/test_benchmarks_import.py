@@ -47,9 +47,9 @@ def test_every_benchmark_module_imports() -> None:
         importlib.import_module(f"benchmarks.{name}")
 
 
-def test_the_entry_point_has_the_seven_sections_and_refuses_another(capsys) -> None:
+def test_the_entry_point_has_the_eight_sections_and_refuses_another(capsys) -> None:
     assert list(bench.SECTIONS) == ["engine", "choices", "informed", "jump", "step", "compare",
-                                    "startup"]
+                                    "startup", "class_load"]
     with pytest.raises(SystemExit) as info:
         bench.main(["--only", "engine,nope"])
     assert info.value.code == 2 and "unknown section 'nope'" in capsys.readouterr().err
@@ -208,3 +208,11 @@ def test_the_optima_command_resumes_from_its_log(tmp_path, capsys) -> None:
     assert sorted(r for e in entries for r in e["rows"]) == [13, 26, 39, 52, 78, 91, 104, 117]
     assert optima.main(common[:-3] + ["astar:zero", "--log", str(log), "--every", "65"]) == 0
     assert "2 rows from the log" not in capsys.readouterr().out
+
+
+def test_the_class_load_floor_is_measured_on_the_fork_server() -> None:
+    """class_load's floor (untimed): one app forked, its CPU to the first frame read."""
+    from benchmarks.class_load import floor_cpu
+
+    (cpu,) = floor_cpu(1)
+    assert 0 < cpu < 60

@@ -8,18 +8,17 @@ import argparse
 import asyncio
 import os
 import re
-import shlex
 import sys
 from pathlib import Path
 
 import pytest
 
 from tests.helpers import MAPS
-from tests.served import first_screen, served, visit
+from tests.served import descendants, first_screen, running, served, visit, wait_for
 from tests.test_cli import run_cli
 from tui_search.cli import build_parser
 from tui_search.headless import EXIT_BAD_INPUT
-from tui_search.serve import NEEDS_EXTRA, SERVER_FLAGS, served_command
+from tui_search.serve import NEEDS_EXTRA, SERVER_FLAGS, served_args
 from tui_search.tui.config import Config, config_path
 from tui_search.tui.file_access import OFF_MESSAGE, FileAccess, NameRefused
 
@@ -60,25 +59,25 @@ def parse(*argv: str) -> argparse.Namespace:
     return build_parser().parse_args(list(argv))
 
 
-def test_the_served_command_carries_the_apps_flags_and_none_of_the_servers(
+def test_the_served_apps_command_line_carries_the_apps_flags_and_none_of_the_servers(
         tmp_path, monkeypatch) -> None:
     monkeypatch.chdir(tmp_path)  # a relative map becomes an absolute path
     (tmp_path / "my map's copy.txt").write_text(Path(TUTORIAL).read_text())
     (tmp_path / "saves").mkdir()
     args = parse("my map's copy.txt", "-a", "astar", "--heuristic", "octile", "--theme",
                  "light", "--order", "N,E,S,W", "--tree-search", "--max-steps", "500",
-                 "--serve", "--host", "0.0.0.0", "--port", "9999", "--save-dir", "saves")
-    command = served_command(build_parser(), args, python="/opt/py thon/bin/python")
-    words = shlex.split(command)
-    assert words[:4] == ["exec", "/opt/py thon/bin/python", "-m", "tui_search"]
+                 "--serve", "--host", "0.0.0.0", "--port", "9999", "--save-dir", "saves",
+                 "--app-memory", "300")
+    words = served_args(build_parser(), args)
     assert words[-2:] == ["--", str(tmp_path / "my map's copy.txt")]
-    served_args = parse(*words[4:])
-    assert served_args.served and served_args.save_dir == str((tmp_path / "saves").resolve())
+    app_args = parse(*words)
+    assert app_args.served and app_args.save_dir == str((tmp_path / "saves").resolve())
     for dest, value in vars(args).items():
         if dest in ("map", "served", *SERVER_FLAGS):
             continue
-        assert getattr(served_args, dest) == value, dest
-    assert not served_args.serve and served_args.host is None and served_args.port is None
+        assert getattr(app_args, dest) == value, dest
+    assert not app_args.serve and app_args.host is None and app_args.port is None
+    assert app_args.app_memory is None and app_args.visitor is None
 
 
 def test_the_web_extra_is_found_without_importing_it() -> None:
@@ -87,15 +86,13 @@ def test_the_web_extra_is_found_without_importing_it() -> None:
     assert web_extra_installed()  # the test extra brings it
 
 
-def test_the_served_command_without_a_save_dir_or_map() -> None:
-    words = shlex.split(served_command(build_parser(), parse("--serve"), python="python"))
-    assert words == ["exec", "python", "-m", "tui_search", "--served"]
+def test_the_served_apps_command_line_without_a_save_dir_or_map() -> None:
+    assert served_args(build_parser(), parse("--serve")) == ["--served"]
 
 
-def test_a_shell_cannot_be_smuggled_in_through_a_name(tmp_path) -> None:
+def test_a_name_reaches_the_app_as_one_word(tmp_path) -> None:
     name = tmp_path / "$(touch pwned); `touch pwned2` && rm -rf x.txt"
-    command = served_command(build_parser(), parse(str(name), "--serve"), python="python")
-    assert shlex.split(command)[-1] == str(name)
+    assert served_args(build_parser(), parse(str(name), "--serve"))[-1] == str(name)
 
 
 # -- where a served app may read and write ---------------------------------------------
@@ -120,7 +117,8 @@ def test_the_terminal_app_takes_any_path() -> None:
 @pytest.mark.parametrize("typed", [
     "../escape.txt", "..", ".", "/etc/passwd.txt", "sub/x.txt", "sub\\x.txt", "~/x.txt",
     ".hidden.txt", "", "   ", "x.sh", "x.txt.sh", "x" * 81 + ".txt", "a\x00b.txt", "a\nb.txt",
-    "x:y.txt", "link-out.txt", "link-in.txt",
+    "x:y.txt", "link-out.txt", "link-in.txt", "a\x7fb.txt", "a\x85b.txt", "\u202etxt.map",
+    "a\u2066b.txt", "a\u200fb.txt", "a\u200bb.txt", "a\u2028b.txt",
 ])
 def test_names_that_could_leave_the_folder_are_refused(tmp_path, typed: str) -> None:
     folder = tmp_path / "saves"
@@ -199,17 +197,23 @@ def test_the_page_sends_its_websocket_to_the_address_the_browser_used() -> None:
         assert f'data-session-websocket-url="ws://{server.url[7:]}ws"' in page
 
 
-def test_the_banner_for_every_network_says_how_to_reach_it(capsys) -> None:
-    from tui_search.serve import make_server
+def test_the_banner_for_every_network_says_how_to_reach_it_and_who_can() -> None:
+    from tui_search.serve import banner_text
 
-    make_server("true", "0.0.0.0", 8123, "tutorial.txt").banner("")
-    out = capsys.readouterr().out.splitlines()
-    assert out == [
+    assert banner_text("0.0.0.0", 8123, "tutorial.txt", None, True, "T0K").splitlines() == [
         ("Serving tui-search (tutorial.txt) on port 8123 of every network this computer is on "
          "— one app per visitor, visitors cannot save or open files."),
-        ("Open http://THIS-COMPUTER'S-ADDRESS:8123 in the class's browsers (and allow the port "
-         "through the firewall)."),
+        ("Open http://THIS-COMPUTER'S-ADDRESS:8123/?token=T0K in the class's browsers (and "
+         "allow the port through the firewall)."),
+        ("Warning: every computer on this computer's networks can reach port 8123; only a "
+         "browser given the link with its token can open an app."),
         "Press Ctrl+C to stop.",
+    ]
+    assert banner_text("10.1.2.3", 80, "t", "/s", False, "T").splitlines()[:2] == [
+        ("Serving tui-search (t) on http://10.1.2.3:80/?token=T — one app per visitor, "
+         "visitors may save and open maps in /s only."),
+        ("Warning: every computer that can reach 10.1.2.3 can reach port 80; only a browser "
+         "given the link with its token can open an app."),
     ]
 
 
@@ -290,7 +294,7 @@ def test_past_the_visitor_limit_the_next_visitor_is_told_to_try_later() -> None:
     from tui_search.serve import make_server
 
     async def visit() -> int:
-        server = make_server("true", "127.0.0.1", 8000, "t", max_visitors=0)
+        server = make_server(["--served"], "127.0.0.1", 8000, "t", max_visitors=0)
         async with TestClient(TestServer(await server._make_app())) as client:
             with pytest.raises(aiohttp.WSServerHandshakeError) as refused:
                 await client.ws_connect("/ws")
@@ -299,21 +303,11 @@ def test_past_the_visitor_limit_the_next_visitor_is_told_to_try_later() -> None:
     assert asyncio.run(visit()) == 503
 
 
-def running(pid: int) -> bool:
-    """Is ``pid`` a live process (not gone, not a zombie waiting for a parent to reap it)?"""
-    try:
-        state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
-    except (FileNotFoundError, ProcessLookupError):
-        return False
-    return state not in ("Z", "X")
-
-
 @pytest.mark.skipif(not Path("/proc/self/task").is_dir(), reason="reads /proc (Linux)")
 def test_a_visitors_app_ends_when_the_server_is_killed() -> None:
-    """A server that dies without stopping its apps (SIGKILL, a crash) leaves none running:
-    each app is the server's own child (``exec``) and exits once it is re-parented."""
+    """A server that dies without stopping its apps (SIGKILL, a crash) leaves none running
+    5 s later: its fork server ends them, and each app exits once it is re-parented."""
     import signal
-    import time
 
     with served(TUTORIAL) as server:
         async def open_app_then_kill_the_server() -> list[int]:
@@ -325,20 +319,16 @@ def test_a_visitors_app_ends_when_the_server_is_killed() -> None:
                 ws_url = re.search(r'data-session-websocket-url="([^"]+)"', page).group(1)
                 async with session.ws_connect(ws_url + "?width=100&height=32") as ws:
                     await ws.receive(timeout=30)  # the app is up
-                    pid = server.process.pid
-                    apps = [int(p) for p in Path(f"/proc/{pid}/task/{pid}/children")
-                            .read_text().split()]
+                    apps = descendants(server.process.pid)
                     server.process.send_signal(signal.SIGKILL)
                     server.process.wait()
                     return apps
 
         apps = asyncio.run(open_app_then_kill_the_server())
     try:
-        assert len(apps) == 1 and "tui_search" in Path(f"/proc/{apps[0]}/cmdline").read_text()
-        deadline = time.monotonic() + 15
-        while running(apps[0]) and time.monotonic() < deadline:
-            time.sleep(0.1)
-        assert not running(apps[0])
+        assert len(apps) == 2  # the fork server and the app
+        assert "tui_search" in Path(f"/proc/{apps[1]}/cmdline").read_text()
+        wait_for(lambda: not any(running(pid) for pid in apps), 5)
     finally:  # a failure leaves nothing behind
         for pid in apps:
             if running(pid):

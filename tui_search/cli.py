@@ -11,7 +11,7 @@ import argparse
 import gc
 import sys
 from pathlib import Path
-from typing import NoReturn
+from typing import TYPE_CHECKING, NoReturn
 
 from tui_search import __version__
 from tui_search.collector import collector_paused
@@ -25,6 +25,9 @@ from tui_search.engine.semantics import CORNER_RULES, GOAL_TESTS, VISIT_RULES
 from tui_search.flags import UsageError, contenders_from, load_problem, semantics_from
 from tui_search.headless import EXIT_BAD_INPUT, run_compare, run_exercise, run_headless
 from tui_search.tui.themes import THEMES  # plain data: no Textual
+
+if TYPE_CHECKING:
+    from tui_search.tui.app import SearchApp
 
 BUILT_IN_TITLE = "tutorial (built-in)"  # the app's title for the map with no file
 
@@ -109,20 +112,25 @@ def _positive(text: str) -> int:
     return n
 
 
+def build_app(args: argparse.Namespace, grid: Grid, path: Path | None) -> SearchApp:
+    """The app the command line asks for (Textual imported here: only when it is wanted)."""
+    from tui_search.serve import file_access
+    from tui_search.tui.app import SearchApp
+    from tui_search.tui.config import Config
+
+    scenario = getattr(args, "scenario", None)
+    return SearchApp(grid, path=path, algorithm=args.algorithm,
+                     semantics=semantics_from(args), max_steps=args.max_steps,
+                     unsaved_name=BUILT_IN_TITLE, theme=args.theme,
+                     optimal_cost=scenario.optimal_length if scenario is not None else None,
+                     exercise=args.exercise, compare=args.compare,
+                     file_access=file_access(args),
+                     config=Config.in_memory() if args.served else None)
+
+
 def run_app(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
     with collector_paused():  # Textual's import and the app's build (tui_search/collector.py)
-        from tui_search.serve import exit_with_server, file_access
-        from tui_search.tui.app import SearchApp  # Textual only when the app is wanted
-        from tui_search.tui.config import Config
-
-        scenario = getattr(args, "scenario", None)
-        app = SearchApp(grid, path=path, algorithm=args.algorithm,
-                        semantics=semantics_from(args), max_steps=args.max_steps,
-                        unsaved_name=BUILT_IN_TITLE, theme=args.theme,
-                        optimal_cost=scenario.optimal_length if scenario is not None else None,
-                        exercise=args.exercise, compare=args.compare,
-                        file_access=file_access(args),
-                        config=Config.in_memory() if args.served else None)
+        app = build_app(args, grid, path)
         # What is imported and built by now lives as long as the app.  Without this, the
         # cyclic collector's first full pass (over Textual's ~60,000 objects) fell in the
         # first frame's rendering: 30-60 ms of a ~400 ms start (benchmarks/README.md,
@@ -130,7 +138,10 @@ def run_app(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
         # them are left to the end.
         gc.freeze()
     if args.served:
+        from tui_search.serve import exit_with_server, greet_visitor
+
         exit_with_server(app)
+        greet_visitor(app, args)
     app.run()
     return app.return_code or 0
 

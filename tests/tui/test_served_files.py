@@ -66,8 +66,8 @@ async def test_save_as_takes_plain_names_in_the_folder_only(tmp_path: Path) -> N
                            (str(tmp_path / "abs.txt"), "without a folder part"),
                            (".profile.txt", "may not start with '.'"),
                            ("run.sh", "ends in .txt or .map"),
-                           ("evil\u202etxt.map", "control or bidi characters (\\u202e)"),
-                           ("red\x1b[31m.txt", "control or bidi characters (\\x1b)")):
+                           ("evil\u202etxt.map", "control, bidi or invisible characters (\\u202e)"),
+                           ("red\x1b[31m.txt", "control, bidi or invisible characters (\\x1b)")):
             await type_name(pilot, name)
             assert app.screen is prompt and says in prompt.error, (name, prompt.error)
         await type_name(pilot, "mine.txt")

@@ -13,16 +13,23 @@ from __future__ import annotations
 import os
 import unicodedata
 
-__all__ = ["MAX_NAME_BYTES", "MAX_PATH_BYTES", "describe_name", "name_problem"]
+__all__ = ["MAX_NAME_BYTES", "MAX_PATH_BYTES", "describe_name", "name_problem",
+           "unsafe_character"]
 
 #: The longest name of one file or folder (in bytes, as the file system stores it) and of a
 #: whole path that POSIX file systems take; longer ones fail with ENAMETOOLONG.
 MAX_NAME_BYTES = 255
 MAX_PATH_BYTES = 4095
 
-#: The bidi controls: embeddings, overrides, isolates and marks.
-BIDI_CONTROLS = frozenset("\u061c\u200e\u200f\u202a\u202b\u202c\u202d\u202e"
-                          "\u2066\u2067\u2068\u2069")
+#: The Unicode categories a name in the served folder may not hold: control characters (C0,
+#: DEL, C1), format characters (bidi embeddings, overrides, isolates and marks, zero-width
+#: marks) and the line and paragraph separators.
+UNSAFE_CATEGORIES = frozenset(("Cc", "Cf", "Zl", "Zp"))
+
+
+def unsafe_character(c: str) -> bool:
+    """A character that moves the terminal's cursor, reorders text or hides itself."""
+    return unicodedata.category(c) in UNSAFE_CATEGORIES
 
 def describe_name(name: str) -> str:
     """``name`` as one line that shows every character it holds: what ``repr`` would escape
@@ -38,7 +45,8 @@ def name_problem(name: str, *, strict: bool = False) -> str | None:
 
     Refused always: nothing typed, a NUL, characters the file system's encoding cannot hold,
     a part longer than :data:`MAX_NAME_BYTES` or a path longer than :data:`MAX_PATH_BYTES`.
-    ``strict`` (the served save folder) also refuses control and bidi characters, which
+    ``strict`` (the served save folder) also refuses control, bidi and zero-width characters
+    (:func:`unsafe_character`), which
     elsewhere are allowed and shown escaped (:func:`describe_name`)."""
     if not name.strip():
         return "type a file name"
@@ -53,8 +61,8 @@ def name_problem(name: str, *, strict: bool = False) -> str | None:
     if any(len(part) > MAX_NAME_BYTES for part in data.split(os.fsencode(os.sep))):
         return f"the name is too long (at most {MAX_NAME_BYTES} bytes between slashes)"
     if strict:
-        bad = next((c for c in name if unicodedata.category(c) == "Cc" or c in BIDI_CONTROLS), None)
+        bad = next((c for c in name if unsafe_character(c)), None)
         if bad is not None:
-            return (f"a file name here cannot hold control or bidi characters "
+            return (f"a file name here cannot hold control, bidi or invisible characters "
                     f"({describe_name(bad)})")
     return None

@@ -76,7 +76,7 @@ class FileAccess(NamedTuple):
             raise NameRefused(f"{name!r}: only {where}, without a folder part")
         if name.startswith((".", "~")):
             raise NameRefused(f"{name!r}: a name may not start with {name[0]!r}")
-        if len(name) > MAX_NAME or any(ord(c) < 32 or c in ':*?"<>|' for c in name):
+        if len(name) > MAX_NAME or any(c in ':*?"<>|' for c in name):
             raise NameRefused(f"{name!r}: use letters, digits, spaces and - _ . "
                               f"(at most {MAX_NAME} characters)")
         if not name.lower().endswith(MAP_ENDINGS):
