@@ -1,0 +1,460 @@
+/* The compiled search core: every recorded loop of tui_search.engine.loops in C.
+ *
+ * A Search appends to the same Record arrays the Python loops write (gen_node, step_end,
+ * step_exp, step_g, discarded, gen_depth and the iteration lists), a chunk of steps per
+ * advance(): the chunk's new entries go to scratch buffers and into the arrays in one
+ * frombytes each.  The reference loop (tui_search/engine/reference.py) is the specification;
+ * tests/engine holds this core equal to it, array for array.  Three loops serve every
+ * algorithm and choice: a queue or a stack (graph or tree search, either visit rule), iterative
+ * deepening, and a priority queue.  Floats are summed in Python's order; the build turns off
+ * contraction (-ffp-contract=off), so g and priorities are Python's bit for bit.
+ */
+#define PY_SSIZE_T_CLEAN
+#include <Python.h>
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#ifndef CORE_SOURCE_HASH
+#define CORE_SOURCE_HASH "unknown"
+#endif
+
+enum { QUEUE = 0, IDDFS = 1, BEST = 2 };          /* the loop */
+enum { H_OCTILE, H_EUCLIDEAN, H_MANHATTAN, H_CHEBYSHEV, H_ZERO };
+#define PAUSED (-2)
+#define NO_GOAL (-1)
+
+typedef struct { char *a; Py_ssize_t n, cap; } Buf;   /* n and cap in bytes */
+typedef struct { double f; int e, n; double g; } Entry;  /* a priority queue's entry */
+
+static int reserve(Buf *b, Py_ssize_t more) {
+    if (b->n + more <= b->cap) return 0;
+    Py_ssize_t cap = b->cap ? b->cap : 4096;
+    while (cap < b->n + more) cap *= 2;
+    char *a = PyMem_RawRealloc(b->a, cap);
+    if (!a) { PyErr_NoMemory(); return -1; }
+    b->a = a; b->cap = cap;
+    return 0;
+}
+#define PUT(b, T, v) (*(T *)((b).a + (b).n) = (v), (b).n += sizeof(T))  /* reserved before */
+#define AT(b, T, i) (((T *)(b).a)[i])
+
+typedef struct {
+    PyObject_HEAD
+    int loop, lifo, tree, visit_expand, use_g, use_h, heuristic, close, refused;
+    int nmoves, off[8], side_a[8], side_b[8];
+    double cost[8], margin[8], extra;
+    int stride, start, goal, goal_on_push, goal_on_pop, gx, gy;
+    Py_buffer walls_view;
+    const unsigned char *walls;
+    unsigned char *closed;
+    Py_ssize_t ncells;
+    /* the record: its arrays (step_exp, step_g, gen_depth may be None) and iteration lists */
+    PyObject *r_node, *r_end, *r_exp, *r_g, *r_disc, *r_depth, *it_first, *it_root, *it_limit;
+    Buf node, end, exp, gs, disc, depth;     /* a chunk's new entries */
+    Buf stack, parent;                        /* the stack or heap; each event's parent */
+    double *best;                             /* priority queue: each cell's lowest g */
+    int *best_depth, *stamp;                  /* iterative deepening: per iteration */
+    const int *base; Py_ssize_t base_n;       /* gen_node as recorded before this chunk */
+    Py_ssize_t count, steps, head;
+    int started, limit, cut_off, iteration;
+} Search;
+
+static inline int cell_of(Search *s, Py_ssize_t e) {
+    return e < s->base_n ? s->base[e] : AT(s->node, int, e - s->base_n);
+}
+
+static int on_path(Search *s, int cell, int e) {  /* tree search: is cell on e's own path? */
+    while (e >= 0) {
+        if (cell_of(s, e) == cell) return 1;
+        e = AT(s->parent, int, e);
+    }
+    return 0;
+}
+
+static inline int refused(Search *s, int i, int n) {  /* the corner rule refuses move i */
+    return s->side_a[i] && s->walls[n + s->side_a[i]] + s->walls[n + s->side_b[i]] >= s->refused;
+}
+
+static double priority(Search *s, double g, int m) {
+    if (!s->use_h) return g;
+    int y = m / s->stride, x = m % s->stride;
+    int dx = abs(x - s->gx), dy = abs(y - s->gy);
+    double h;
+    switch (s->heuristic) {
+    case H_OCTILE: h = dx >= dy ? (double)dx + s->extra * (double)dy
+                                : (double)dy + s->extra * (double)dx; break;
+    case H_EUCLIDEAN: h = sqrt((double)dx * dx + (double)dy * dy); break;  /* = math.hypot */
+    case H_MANHATTAN: h = (double)(dx + dy); break;
+    case H_CHEBYSHEV: h = (double)(dx > dy ? dx : dy); break;
+    default: h = 0.0;
+    }
+    return s->use_g ? g + h : h;
+}
+
+/* -- the priority queue: a binary heap ordered by (priority, event), as heapq's tuples -- */
+static inline int before(const Entry *a, const Entry *b) {
+    return a->f < b->f || (a->f == b->f && a->e < b->e);
+}
+
+static int heap_push(Search *s, Entry x) {
+    if (reserve(&s->stack, sizeof(Entry)) < 0) return -1;
+    Entry *h = (Entry *)s->stack.a;
+    Py_ssize_t i = s->stack.n / (Py_ssize_t)sizeof(Entry);
+    s->stack.n += sizeof(Entry);
+    while (i > 0 && before(&x, &h[(i - 1) / 2])) { h[i] = h[(i - 1) / 2]; i = (i - 1) / 2; }
+    h[i] = x;
+    return 0;
+}
+
+static Entry heap_pop(Search *s) {
+    Entry *h = (Entry *)s->stack.a, top = h[0];
+    Py_ssize_t n = s->stack.n / (Py_ssize_t)sizeof(Entry) - 1, i = 0;
+    s->stack.n -= sizeof(Entry);
+    Entry last = h[n];
+    for (;;) {
+        Py_ssize_t c = 2 * i + 1;
+        if (c >= n) break;
+        if (c + 1 < n && before(&h[c + 1], &h[c])) c++;
+        if (!before(&h[c], &last)) break;
+        h[i] = h[c]; i = c;
+    }
+    if (n > 0) h[i] = last;
+    return top;
+}
+
+/* -- the loops: each runs at most `chunk` steps and returns PAUSED, NO_GOAL or the goal's
+ *    event; -3 on an error (memory) -- */
+#define END_STEP() PUT(s->end, int, (int)count)
+
+/* A FIFO queue (the events in the order generated) or a LIFO stack of (event, cell): graph
+ * search under either visit rule, or tree search (only the node's own path is skipped). */
+static long run_queue(Search *s, Py_ssize_t chunk) {
+    Py_ssize_t count = s->count, head = s->head, step = s->steps, stop = s->steps + chunk;
+    unsigned char *closed = s->closed;
+    int lifo = s->lifo, tree = s->tree, expand = s->visit_expand;
+    long result = PAUSED;
+    while (step < stop) {
+        int e, n;
+        if (lifo) {
+            if (!s->stack.n) break;
+            s->stack.n -= 2 * sizeof(int);
+            e = AT(s->stack, int, s->stack.n / sizeof(int));
+            n = AT(s->stack, int, s->stack.n / sizeof(int) + 1);
+            PUT(s->exp, int, e);
+        } else {
+            if (head >= count) break;
+            e = (int)head++;
+            n = cell_of(s, e);
+        }
+        step++;
+        if (expand) {
+            if (closed[n]) { PUT(s->disc, int, (int)step); END_STEP(); continue; }
+            closed[n] = 1;
+        }
+        if (n == s->goal_on_pop) { result = e; END_STEP(); goto out; }
+        if (lifo && reserve(&s->stack, s->nmoves * 2 * sizeof(int)) < 0) return -3;
+        if (tree && reserve(&s->parent, s->nmoves * sizeof(int)) < 0) return -3;
+        for (int i = 0; i < s->nmoves; i++) {
+            int m = n + s->off[i];
+            if (closed[m] || refused(s, i, n)) continue;
+            if (tree) {
+                if (on_path(s, m, e)) continue;
+                PUT(s->parent, int, e);
+            } else if (!expand) {
+                closed[m] = 1;
+            }
+            if (lifo) { PUT(s->stack, int, (int)count); PUT(s->stack, int, m); }
+            PUT(s->node, int, m);
+            count++;
+            if (m == s->goal_on_push) { result = count - 1; END_STEP(); goto out; }
+        }
+        END_STEP();
+    }
+    if (lifo ? !s->stack.n : head >= count) result = NO_GOAL;
+out:
+    s->count = count; s->head = head; s->steps = step;
+    return result;
+}
+
+/* Iterative deepening: depth-limited DFS with limits 0, 1, 2, ...; a cell is generated again
+ * in an iteration only when reached at a smaller depth (graph search), or when not on the
+ * node's own path (tree search).  The stack holds (event, cell, depth). */
+static int new_iteration(Search *s) {
+    Py_ssize_t root = s->count;
+    if (s->limit) {
+        PyObject *a = PyLong_FromSsize_t(s->steps + 1), *b = PyLong_FromSsize_t(root),
+                 *c = PyLong_FromLong(s->limit);
+        int bad = !a || !b || !c || PyList_Append(s->it_first, a) || PyList_Append(s->it_root, b)
+                  || PyList_Append(s->it_limit, c);
+        Py_XDECREF(a); Py_XDECREF(b); Py_XDECREF(c);
+        if (bad) return -1;
+    } else {
+        PyObject *zero = PyLong_FromLong(0);
+        if (!zero || PyList_SetItem(s->it_limit, 0, zero)) return -1;  /* steals zero */
+    }
+    if (reserve(&s->node, sizeof(int)) < 0 || reserve(&s->depth, sizeof(int)) < 0
+        || reserve(&s->stack, 3 * sizeof(int)) < 0 || reserve(&s->parent, sizeof(int)) < 0)
+        return -1;
+    PUT(s->node, int, s->start); PUT(s->depth, int, 0);
+    if (s->tree) PUT(s->parent, int, -1);
+    s->count++;
+    s->iteration++;
+    s->stamp[s->start] = s->iteration; s->best_depth[s->start] = 0;
+    PUT(s->stack, int, (int)root); PUT(s->stack, int, s->start); PUT(s->stack, int, 0);
+    s->cut_off = 0;
+    return 0;
+}
+
+static long run_iddfs(Search *s, Py_ssize_t chunk) {
+    Py_ssize_t count = s->count, step = s->steps, stop = s->steps + chunk;
+    long result = PAUSED;
+    if (!s->started) {
+        s->started = 1;
+        if (new_iteration(s) < 0) return -3;
+        count = s->count;
+        if (s->start == s->goal_on_push) return (long)(count - 1);
+    }
+    while (step < stop) {
+        if (!s->stack.n) {
+            if (!s->cut_off) { result = NO_GOAL; break; }
+            s->limit++;
+            s->count = count; s->steps = step;
+            if (new_iteration(s) < 0) return -3;
+            count = s->count;
+        }
+        s->stack.n -= 3 * sizeof(int);
+        int *top = (int *)(s->stack.a + s->stack.n), e = top[0], n = top[1], depth = top[2];
+        if (n == s->goal_on_pop) { PUT(s->exp, int, e); step++; result = e; END_STEP(); goto out; }
+        if (depth >= s->limit) {
+            s->cut_off = 1;
+        } else {
+            int child = depth + 1;
+            if (reserve(&s->stack, s->nmoves * 3 * sizeof(int)) < 0
+                || reserve(&s->parent, s->nmoves * sizeof(int)) < 0) return -3;
+            for (int i = 0; i < s->nmoves; i++) {
+                int m = n + s->off[i];
+                if (s->walls[m] || refused(s, i, n)) continue;
+                if (s->tree) {
+                    if (on_path(s, m, e)) continue;
+                    PUT(s->parent, int, e);
+                } else if (s->stamp[m] == s->iteration && s->best_depth[m] <= child) {
+                    continue;
+                } else {
+                    s->stamp[m] = s->iteration; s->best_depth[m] = child;
+                }
+                PUT(s->stack, int, (int)count); PUT(s->stack, int, m); PUT(s->stack, int, child);
+                PUT(s->node, int, m); PUT(s->depth, int, child);
+                count++;
+                if (m == s->goal_on_push) {
+                    PUT(s->exp, int, e); step++; result = count - 1; END_STEP(); goto out;
+                }
+            }
+        }
+        PUT(s->exp, int, e); step++;
+        END_STEP();
+    }
+    if (result == PAUSED && !s->stack.n && !s->cut_off) result = NO_GOAL;
+out:
+    s->count = count; s->steps = step;
+    return result;
+}
+
+/* A priority queue of (priority, event, cell, g): graph search (an entry whose g is above its
+ * cell's best is stale: a discarded step) or tree search. */
+static long run_best(Search *s, Py_ssize_t chunk) {
+    Py_ssize_t count = s->count, step = s->steps, stop = s->steps + chunk;
+    unsigned char *closed = s->closed;
+    double *best = s->best;
+    long result = PAUSED;
+    while (step < stop && s->stack.n) {
+        Entry x = heap_pop(s);
+        int e = x.e, n = x.n;
+        double g = x.g;
+        PUT(s->exp, int, e); PUT(s->gs, double, g);
+        step++;
+        if (!s->tree && g > best[n]) { END_STEP(); PUT(s->disc, int, (int)step); continue; }
+        if (n == s->goal_on_pop) { result = e; END_STEP(); goto out; }
+        if (!s->tree) closed[n] = (unsigned char)s->close;
+        if (s->tree && reserve(&s->parent, s->nmoves * sizeof(int)) < 0) return -3;
+        for (int i = 0; i < s->nmoves; i++) {
+            int m = n + s->off[i];
+            if (closed[m] || refused(s, i, n)) continue;
+            if (s->tree) {
+                if (on_path(s, m, e)) continue;
+                PUT(s->parent, int, e);
+            } else if (g + s->margin[i] >= best[m]) {
+                continue;
+            }
+            double ng = g + s->cost[i];
+            if (!s->tree) best[m] = ng;
+            Entry y = {priority(s, ng, m), (int)count, m, ng};
+            if (heap_push(s, y) < 0) return -3;
+            PUT(s->node, int, m);
+            count++;
+            if (m == s->goal_on_push) { result = count - 1; END_STEP(); goto out; }
+        }
+        END_STEP();
+    }
+    if (!s->stack.n) result = NO_GOAL;
+out:
+    s->count = count; s->steps = step;
+    return result;
+}
+
+/* -- the Python type -- */
+static int append_bytes(PyObject *arr, Buf *b) {  /* the chunk's entries into the record */
+    if (!b->n || arr == Py_None) { b->n = 0; return 0; }
+    PyObject *view = PyMemoryView_FromMemory(b->a, b->n, PyBUF_READ);
+    if (!view) return -1;
+    PyObject *r = PyObject_CallMethod(arr, "frombytes", "O", view);
+    Py_DECREF(view);
+    b->n = 0;
+    if (!r) return -1;
+    Py_DECREF(r);
+    return 0;
+}
+
+static PyObject *Search_advance(Search *s, PyObject *arg) {
+    Py_ssize_t chunk = PyLong_AsSsize_t(arg);
+    if (chunk < 1) { if (!PyErr_Occurred()) PyErr_SetString(PyExc_ValueError, "chunk < 1"); return NULL; }
+    if (reserve(&s->node, (chunk * s->nmoves + 2) * sizeof(int)) < 0
+        || reserve(&s->end, (chunk + 1) * sizeof(int)) < 0
+        || reserve(&s->exp, (chunk + 1) * sizeof(int)) < 0
+        || reserve(&s->disc, (chunk + 1) * sizeof(int)) < 0
+        || reserve(&s->gs, (chunk + 1) * sizeof(double)) < 0
+        || (s->loop == IDDFS && reserve(&s->depth, (chunk * (s->nmoves + 1) + 2) * sizeof(int)) < 0))
+        return NULL;
+    Py_buffer view;
+    if (PyObject_GetBuffer(s->r_node, &view, PyBUF_SIMPLE) < 0) return NULL;
+    s->base = view.buf; s->base_n = view.len / (Py_ssize_t)sizeof(int);
+    long r;
+    if (s->loop != IDDFS && !s->started) {  /* the start alone, when it is the goal */
+        s->started = 1;
+        if (s->start == s->goal_on_push) { r = 0; goto recorded; }
+    }
+    if (s->loop == IDDFS) r = run_iddfs(s, chunk);
+    else if (s->loop == BEST) r = run_best(s, chunk);
+    else r = run_queue(s, chunk);
+recorded:
+    PyBuffer_Release(&view);
+    s->base = NULL; s->base_n = 0;
+    if (r == -3) return NULL;
+    if (PyErr_Occurred() || append_bytes(s->r_node, &s->node) || append_bytes(s->r_end, &s->end)
+        || append_bytes(s->r_exp, &s->exp) || append_bytes(s->r_g, &s->gs)
+        || append_bytes(s->r_disc, &s->disc) || append_bytes(s->r_depth, &s->depth))
+        return NULL;
+    if (r != PAUSED) {  /* done: what only a paused search needs goes */
+        PyMem_RawFree(s->stack.a); s->stack = (Buf){0};
+        PyMem_RawFree(s->parent.a); s->parent = (Buf){0};
+    }
+    return PyLong_FromLong(r);
+}
+
+static void Search_dealloc(Search *s) {
+    Buf *bufs[] = {&s->node, &s->end, &s->exp, &s->gs, &s->disc, &s->depth, &s->stack, &s->parent};
+    for (size_t i = 0; i < sizeof bufs / sizeof *bufs; i++) PyMem_RawFree(bufs[i]->a);
+    PyMem_RawFree(s->closed); PyMem_RawFree(s->best);
+    PyMem_RawFree(s->best_depth); PyMem_RawFree(s->stamp);
+    if (s->walls_view.obj) PyBuffer_Release(&s->walls_view);
+    PyObject *refs[] = {s->r_node, s->r_end, s->r_exp, s->r_g, s->r_disc, s->r_depth,
+                        s->it_first, s->it_root, s->it_limit};
+    for (size_t i = 0; i < sizeof refs / sizeof *refs; i++) Py_XDECREF(refs[i]);
+    Py_TYPE(s)->tp_free((PyObject *)s);
+}
+
+static PyObject *Search_new(PyTypeObject *type, PyObject *args, PyObject *kw) {
+    (void)kw;
+    Search *s = (Search *)type->tp_alloc(type, 0);
+    if (!s) return NULL;
+    PyObject *moves, *walls;
+    if (!PyArg_ParseTuple(args, "iiiiiiiiiiiidOO(OOOOOOOOO)iii", &s->loop, &s->lifo, &s->tree,
+                          &s->visit_expand, &s->use_g, &s->use_h,
+                          &s->heuristic, &s->close, &s->refused, &s->stride, &s->start,
+                          &s->goal, &s->extra, &walls, &moves, &s->r_node, &s->r_end,
+                          &s->r_exp, &s->r_g, &s->r_disc, &s->r_depth, &s->it_first,
+                          &s->it_root, &s->it_limit, &s->goal_on_push, &s->goal_on_pop,
+                          &s->nmoves)) {
+        s->r_node = s->r_end = s->r_exp = s->r_g = s->r_disc = s->r_depth = NULL;
+        s->it_first = s->it_root = s->it_limit = NULL;
+        Py_DECREF(s); return NULL;
+    }
+    PyObject *refs[] = {s->r_node, s->r_end, s->r_exp, s->r_g, s->r_disc, s->r_depth,
+                        s->it_first, s->it_root, s->it_limit};
+    for (size_t i = 0; i < sizeof refs / sizeof *refs; i++) Py_INCREF(refs[i]);
+    if (s->nmoves < 1 || s->nmoves > 8 || PyTuple_Size(moves) != s->nmoves) {
+        PyErr_SetString(PyExc_ValueError, "one to eight moves");
+        Py_DECREF(s); return NULL;
+    }
+    for (int i = 0; i < s->nmoves; i++)
+        if (!PyArg_ParseTuple(PyTuple_GET_ITEM(moves, i), "iddii", &s->off[i], &s->cost[i],
+                              &s->margin[i], &s->side_a[i], &s->side_b[i])) {
+            Py_DECREF(s); return NULL;
+        }
+    if (PyObject_GetBuffer(walls, &s->walls_view, PyBUF_SIMPLE) < 0) { Py_DECREF(s); return NULL; }
+    s->walls = s->walls_view.buf; s->ncells = s->walls_view.len;
+    s->gy = s->goal / s->stride; s->gx = s->goal % s->stride;
+    s->closed = PyMem_RawMalloc(s->ncells);
+    if (!s->closed) { Py_DECREF(s); return PyErr_NoMemory(); }
+    memcpy(s->closed, s->walls, s->ncells);
+    if (s->loop == IDDFS) {
+        s->best_depth = PyMem_RawMalloc(s->ncells * sizeof(int));
+        s->stamp = PyMem_RawCalloc(s->ncells, sizeof(int));
+        if (!s->best_depth || !s->stamp) { Py_DECREF(s); return PyErr_NoMemory(); }
+        return (PyObject *)s;  /* each iteration pushes its own root */
+    }
+    if (reserve(&s->node, sizeof(int)) < 0) { Py_DECREF(s); return NULL; }
+    PUT(s->node, int, s->start);  /* the start, event 0: written by the first advance */
+    s->count = 1;
+    if (s->tree && reserve(&s->parent, sizeof(int)) == 0) PUT(s->parent, int, -1);
+    if (s->loop == BEST) {
+        s->best = PyMem_RawMalloc(s->ncells * sizeof(double));
+        if (!s->best) { Py_DECREF(s); return PyErr_NoMemory(); }
+        for (Py_ssize_t i = 0; i < s->ncells; i++) s->best[i] = HUGE_VAL;
+        s->best[s->start] = 0.0;
+        Entry root = {priority(s, 0.0, s->start), 0, s->start, 0.0};
+        if (heap_push(s, root) < 0) { Py_DECREF(s); return NULL; }
+    } else {
+        if (!s->visit_expand && !s->tree) s->closed[s->start] = 1;
+        if (s->lifo) {
+            if (reserve(&s->stack, 2 * sizeof(int)) < 0) { Py_DECREF(s); return NULL; }
+            PUT(s->stack, int, 0); PUT(s->stack, int, s->start);
+        }
+    }
+    return (PyObject *)s;
+}
+
+static PyMethodDef Search_methods[] = {
+    {"advance", (PyCFunction)Search_advance, METH_O,
+     "advance(chunk): record up to chunk more steps; -2 paused, -1 done with no path, "
+     "else done with the goal's event"},
+    {NULL}
+};
+
+static PyTypeObject SearchType = {
+    PyVarObject_HEAD_INIT(NULL, 0)
+    .tp_name = "tui_search.engine._core.Search",
+    .tp_basicsize = sizeof(Search),
+    .tp_flags = Py_TPFLAGS_DEFAULT,
+    .tp_doc = "One recorded search (built by tui_search.engine.loops.compiled).",
+    .tp_new = Search_new,
+    .tp_dealloc = (destructor)Search_dealloc,
+    .tp_methods = Search_methods,
+};
+
+static struct PyModuleDef core_module = {
+    PyModuleDef_HEAD_INIT, "_core", "The compiled search core (see _core.c).", -1,
+    NULL, NULL, NULL, NULL, NULL
+};
+
+PyMODINIT_FUNC PyInit__core(void) {
+    if (PyType_Ready(&SearchType) < 0) return NULL;
+    PyObject *m = PyModule_Create(&core_module);
+    if (!m) return NULL;
+    Py_INCREF(&SearchType);
+    if (PyModule_AddObject(m, "Search", (PyObject *)&SearchType) < 0
+        || PyModule_AddStringConstant(m, "SOURCE_HASH", CORE_SOURCE_HASH) < 0) {
+        Py_DECREF(m); return NULL;
+    }
+    return m;
+}
