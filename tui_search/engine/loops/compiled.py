@@ -19,6 +19,7 @@ import sys
 from array import array
 from collections.abc import Callable, Iterator
 from functools import cache, partial
+from importlib import import_module
 from pathlib import Path
 from types import ModuleType
 
@@ -60,20 +61,20 @@ def selected() -> tuple[ModuleType | None, str]:
     if choice == "python":
         return None, PYTHON
     try:
-        from tui_search.engine import _core  # type: ignore[attr-defined]
+        core = import_module("tui_search.engine._core")
     except ImportError:
         if choice == "compiled":
             raise CoreUnavailable(f"{CORE_ENV}=compiled, but the compiled search core is not "
                                   "built (pip install needs a C compiler)") from None
         return None, f"{PYTHON}; the compiled one is not built"
-    if SOURCE.exists() and source_hash() != _core.SOURCE_HASH:
+    if SOURCE.exists() and source_hash() != core.SOURCE_HASH:
         stale = "the compiled search core is stale (_core.c changed since it was built: " \
                 "pip install again)"
         if choice == "compiled":
             raise CoreUnavailable(stale)
         print(f"tui-search: {stale}; running the Python search core", file=sys.stderr)
         return None, f"{PYTHON}; the compiled one is stale"
-    return _core, COMPILED
+    return core, COMPILED
 
 
 def core_name() -> str:
