@@ -57,8 +57,23 @@ typedef struct {
     int *best_depth, *stamp;                  /* iterative deepening: per iteration */
     const int *base; Py_ssize_t base_n;       /* gen_node as recorded before this chunk */
     Py_ssize_t count, steps, head;
+    Py_ssize_t room;                          /* steps the scratch buffers hold, reserved */
     int started, limit, cut_off, iteration;
 } Search;
+
+/* Room in the scratch buffers for the next ROOM steps (each a root and a successor per move
+ * at most); a loop takes one step's room before each step. */
+#define ROOM 4096
+static int make_room(Search *s) {
+    Py_ssize_t events = ROOM * (Py_ssize_t)(s->nmoves + 1) * sizeof(int);
+    if (reserve(&s->node, events) < 0 || (s->loop == IDDFS && reserve(&s->depth, events) < 0)
+        || reserve(&s->end, ROOM * sizeof(int)) < 0 || reserve(&s->exp, ROOM * sizeof(int)) < 0
+        || reserve(&s->disc, ROOM * sizeof(int)) < 0 || reserve(&s->gs, ROOM * sizeof(double)) < 0)
+        return -1;
+    s->room = ROOM;
+    return 0;
+}
+#define TAKE_ROOM() do { if (!s->room && make_room(s) < 0) return -3; s->room--; } while (0)
 
 static inline int cell_of(Search *s, Py_ssize_t e) {
     return e < s->base_n ? s->base[e] : AT(s->node, int, e - s->base_n);
@@ -128,52 +143,80 @@ static Entry heap_pop(Search *s) {
 #define END_STEP() PUT(s->end, int, (int)count)
 
 /* A FIFO queue (the events in the order generated) or a LIFO stack of (event, cell): graph
- * search under either visit rule, or tree search (only the node's own path is skipped). */
+ * search under either visit rule, or tree search (only the node's own path is skipped).  The
+ * hot loop of the app: what it reads is in locals (a store to `closed` could alias any field)
+ * and it writes the record through cursors. */
+#define LOAD() (node = (int *)(s->node.a + s->node.n), end = (int *)(s->end.a + s->end.n), \
+                exp = (int *)(s->exp.a + s->exp.n), disc = (int *)(s->disc.a + s->disc.n), \
+                events = (const int *)s->node.a)
+#define SAVE() (s->node.n = (char *)node - s->node.a, s->end.n = (char *)end - s->end.a, \
+                s->exp.n = (char *)exp - s->exp.a, s->disc.n = (char *)disc - s->disc.a)
 static long run_queue(Search *s, Py_ssize_t chunk) {
     Py_ssize_t count = s->count, head = s->head, step = s->steps, stop = s->steps + chunk;
-    unsigned char *closed = s->closed;
-    int lifo = s->lifo, tree = s->tree, expand = s->visit_expand;
+    Py_ssize_t room = s->room, base_n = s->base_n;
+    unsigned char *const closed = s->closed;
+    const unsigned char *const walls = s->walls;
+    const int *const base = s->base;
+    const int lifo = s->lifo, tree = s->tree, expand = s->visit_expand, nm = s->nmoves;
+    const int on_push = s->goal_on_push, on_pop = s->goal_on_pop, limit = s->refused;
+    int off[8], sa[8], sb[8], *node, *end, *exp, *disc;
+    const int *events;
+    memcpy(off, s->off, sizeof off); memcpy(sa, s->side_a, sizeof sa);
+    memcpy(sb, s->side_b, sizeof sb);
+    LOAD();
     long result = PAUSED;
     while (step < stop) {
         int e, n;
+        if (!room) {
+            SAVE();
+            if (make_room(s) < 0) return -3;
+            LOAD();
+            room = s->room;
+        }
+        room--;
         if (lifo) {
             if (!s->stack.n) break;
             s->stack.n -= 2 * sizeof(int);
-            e = AT(s->stack, int, s->stack.n / sizeof(int));
-            n = AT(s->stack, int, s->stack.n / sizeof(int) + 1);
-            PUT(s->exp, int, e);
+            const int *top = (const int *)(s->stack.a + s->stack.n);
+            e = top[0]; n = top[1];
+            *exp++ = e;
         } else {
             if (head >= count) break;
             e = (int)head++;
-            n = cell_of(s, e);
+            n = e < base_n ? base[e] : events[e - base_n];
         }
         step++;
         if (expand) {
-            if (closed[n]) { PUT(s->disc, int, (int)step); END_STEP(); continue; }
+            if (closed[n]) { *disc++ = (int)step; *end++ = (int)count; continue; }
             closed[n] = 1;
         }
-        if (n == s->goal_on_pop) { result = e; END_STEP(); goto out; }
-        if (lifo && reserve(&s->stack, s->nmoves * 2 * sizeof(int)) < 0) return -3;
-        if (tree && reserve(&s->parent, s->nmoves * sizeof(int)) < 0) return -3;
-        for (int i = 0; i < s->nmoves; i++) {
-            int m = n + s->off[i];
-            if (closed[m] || refused(s, i, n)) continue;
+        if (n == on_pop) { result = e; *end++ = (int)count; goto out; }
+        if (lifo && reserve(&s->stack, nm * 2 * sizeof(int)) < 0) return -3;
+        if (tree && reserve(&s->parent, nm * sizeof(int)) < 0) return -3;
+        for (int i = 0; i < nm; i++) {
+            int m = n + off[i];
+            if (closed[m] || (sa[i] && walls[n + sa[i]] + walls[n + sb[i]] >= limit)) continue;
             if (tree) {
                 if (on_path(s, m, e)) continue;
                 PUT(s->parent, int, e);
             } else if (!expand) {
                 closed[m] = 1;
             }
-            if (lifo) { PUT(s->stack, int, (int)count); PUT(s->stack, int, m); }
-            PUT(s->node, int, m);
+            if (lifo) {
+                int *top = (int *)(s->stack.a + s->stack.n);
+                top[0] = (int)count; top[1] = m;
+                s->stack.n += 2 * sizeof(int);
+            }
+            *node++ = m;
             count++;
-            if (m == s->goal_on_push) { result = count - 1; END_STEP(); goto out; }
+            if (m == on_push) { result = count - 1; *end++ = (int)count; goto out; }
         }
-        END_STEP();
+        *end++ = (int)count;
     }
     if (lifo ? !s->stack.n : head >= count) result = NO_GOAL;
 out:
-    s->count = count; s->head = head; s->steps = step;
+    SAVE();
+    s->count = count; s->head = head; s->steps = step; s->room = room;
     return result;
 }
 
@@ -216,6 +259,7 @@ static long run_iddfs(Search *s, Py_ssize_t chunk) {
         if (s->start == s->goal_on_push) return (long)(count - 1);
     }
     while (step < stop) {
+        TAKE_ROOM();
         if (!s->stack.n) {
             if (!s->cut_off) { result = NO_GOAL; break; }
             s->limit++;
@@ -268,6 +312,7 @@ static long run_best(Search *s, Py_ssize_t chunk) {
     double *best = s->best;
     long result = PAUSED;
     while (step < stop && s->stack.n) {
+        TAKE_ROOM();
         Entry x = heap_pop(s);
         int e = x.e, n = x.n;
         double g = x.g;
@@ -318,13 +363,6 @@ static int append_bytes(PyObject *arr, Buf *b) {  /* the chunk's entries into th
 static PyObject *Search_advance(Search *s, PyObject *arg) {
     Py_ssize_t chunk = PyLong_AsSsize_t(arg);
     if (chunk < 1) { if (!PyErr_Occurred()) PyErr_SetString(PyExc_ValueError, "chunk < 1"); return NULL; }
-    if (reserve(&s->node, (chunk * s->nmoves + 2) * sizeof(int)) < 0
-        || reserve(&s->end, (chunk + 1) * sizeof(int)) < 0
-        || reserve(&s->exp, (chunk + 1) * sizeof(int)) < 0
-        || reserve(&s->disc, (chunk + 1) * sizeof(int)) < 0
-        || reserve(&s->gs, (chunk + 1) * sizeof(double)) < 0
-        || (s->loop == IDDFS && reserve(&s->depth, (chunk * (s->nmoves + 1) + 2) * sizeof(int)) < 0))
-        return NULL;
     Py_buffer view;
     if (PyObject_GetBuffer(s->r_node, &view, PyBUF_SIMPLE) < 0) return NULL;
     s->base = view.buf; s->base_n = view.len / (Py_ssize_t)sizeof(int);
@@ -403,7 +441,7 @@ static PyObject *Search_new(PyTypeObject *type, PyObject *args, PyObject *kw) {
         if (!s->best_depth || !s->stamp) { Py_DECREF(s); return PyErr_NoMemory(); }
         return (PyObject *)s;  /* each iteration pushes its own root */
     }
-    if (reserve(&s->node, sizeof(int)) < 0) { Py_DECREF(s); return NULL; }
+    if (make_room(s) < 0) { Py_DECREF(s); return NULL; }
     PUT(s->node, int, s->start);  /* the start, event 0: written by the first advance */
     s->count = 1;
     if (s->tree && reserve(&s->parent, sizeof(int)) == 0) PUT(s->parent, int, -1);
@@ -423,6 +461,33 @@ static PyObject *Search_new(PyTypeObject *type, PyObject *args, PyObject *kw) {
     }
     return (PyObject *)s;
 }
+
+/* The peak table's scan (tui_search/engine/peak.py): max(ends[j] - j - c for lo <= j < hi). */
+static PyObject *largest_size(PyObject *module, PyObject *args) {
+    (void)module;
+    PyObject *ends;
+    Py_ssize_t lo, hi, c;
+    if (!PyArg_ParseTuple(args, "Onnn", &ends, &lo, &hi, &c)) return NULL;
+    Py_buffer view;
+    if (PyObject_GetBuffer(ends, &view, PyBUF_FORMAT) < 0) return NULL;
+    if (view.itemsize != sizeof(int) || lo < 0 || hi > view.len / (Py_ssize_t)sizeof(int) || lo >= hi) {
+        PyBuffer_Release(&view);
+        PyErr_SetString(PyExc_ValueError, "largest_size: an int array and 0 <= lo < hi <= len");
+        return NULL;
+    }
+    const int *e = view.buf;
+    Py_ssize_t best = e[lo] - lo - c;
+    for (Py_ssize_t j = lo + 1; j < hi; j++)
+        if (e[j] - j - c > best) best = e[j] - j - c;
+    PyBuffer_Release(&view);
+    return PyLong_FromSsize_t(best);
+}
+
+static PyMethodDef module_functions[] = {
+    {"largest_size", largest_size, METH_VARARGS,
+     "largest_size(ends, lo, hi, c): the largest ends[j] - j - c over lo <= j < hi"},
+    {NULL}
+};
 
 static PyMethodDef Search_methods[] = {
     {"advance", (PyCFunction)Search_advance, METH_O,
@@ -444,7 +509,7 @@ static PyTypeObject SearchType = {
 
 static struct PyModuleDef core_module = {
     PyModuleDef_HEAD_INIT, "_core", "The compiled search core (see _core.c).", -1,
-    NULL, NULL, NULL, NULL, NULL
+    module_functions, NULL, NULL, NULL, NULL
 };
 
 PyMODINIT_FUNC PyInit__core(void) {
