@@ -56,6 +56,8 @@ def floor_search(grid: Grid, key: str, sem: Semantics) -> Callable[[], int]:
     moves are made before, outside the time."""
     lib = floor_library()
     algo = get_algorithm(key)
+    if sem.corners == "one":
+        raise ValueError("the floor knows the corner rules always and never")
     problem = Problem(grid, sem, sem.goal_test_for(algo))
     walls = (ctypes.c_ubyte * len(problem.walls)).from_buffer_copy(problem.walls)
     moves = _costed_moves(problem)
@@ -64,7 +66,7 @@ def floor_search(grid: Grid, key: str, sem: Semantics) -> Callable[[], int]:
     cost = (ctypes.c_double * n)(*(m[1] for m in moves))
     if algo.priority is None:
         return lambda: lib.floor_queue(walls, ctypes.c_long(len(walls)), problem.start,
-                                       problem.goal, off, n, int(key == "dfs"))
+                                       problem.goal, off, side_a, side_b, n, int(key == "dfs"))
     return lambda: lib.floor_best(walls, ctypes.c_long(len(walls)), problem.stride,
                                   problem.start, problem.goal, off, side_a, side_b, cost, n,
                                   int(algo.priority == "g+h"), ctypes.c_double(DIAGONAL_EXTRA))

@@ -13,9 +13,10 @@ static void *grow(Arr *x, long size) {  /* room for one more item of `size` byte
 }
 #define ADD(x, T, v) (*(T *)grow(&(x), sizeof(T)) = (v))
 
-/* BFS (lifo 0) or DFS (lifo 1): graph search, visited and goal-tested when generated. */
+/* BFS (lifo 0) or DFS (lifo 1): graph search, visited and goal-tested when generated; a
+ * diagonal refused when a side cell (sa, sb; 0 for a straight move or no corner rule) is a wall. */
 long floor_queue(const unsigned char *walls, long ncells, int start, int goal, const int *off,
-                 int nm, int lifo) {
+                 const int *sa, const int *sb, int nm, int lifo) {
     unsigned char *closed = malloc(ncells);
     memcpy(closed, walls, ncells);
     Arr node = {0}, end = {0}, exp = {0}, stack = {0};
@@ -28,7 +29,7 @@ long floor_queue(const unsigned char *walls, long ncells, int start, int goal, c
         steps++;
         for (int i = 0; i < nm; i++) {
             int m = n + off[i];
-            if (closed[m]) continue;
+            if (closed[m] || (sa[i] && (walls[n + sa[i]] | walls[n + sb[i]]))) continue;
             closed[m] = 1;
             if (lifo) ADD(stack, int, (int)node.n);
             ADD(node, int, m);
