@@ -1,10 +1,11 @@
-"""Builds the optional compiled search core, ``tui_search/engine/_core.c`` (the rest of the
+"""Builds the optional compiled search core, ``tui_search/engine/_core*.c`` (the rest of the
 package's metadata is in pyproject.toml).
 
 The extension is optional: where it does not build (no C compiler) ``pip install`` warns and
 the app runs its Python search loops (:mod:`tui_search.engine.loops.compiled` says which core
-runs).  The build embeds the source's SHA-256, so an editable install whose ``_core.c`` changed
-since is seen as stale.  Floats must sum as Python's do: no contraction into fused
+runs).  The build embeds the source's SHA-256, so an editable install whose C source changed since
+is seen as stale (the hash of its three files, as
+:func:`tui_search.engine.loops.compiled.source_hash` computes it).  Floats must sum as Python's do: no contraction into fused
 multiply-adds (``-ffp-contract=off``; ``/fp:strict`` under MSVC).
 """
 
@@ -16,7 +17,9 @@ from pathlib import Path
 from setuptools import Extension, setup
 from setuptools.command.build_ext import build_ext
 
-SOURCE = "tui_search/engine/_core.c"
+ENGINE = Path(__file__).parent / "tui_search" / "engine"
+#: The C source, in the order hashed; the header last (it is no compiled source).
+SOURCES = ("_core.c", "_core_loops.c", "_core.h")
 
 
 class BuildExt(build_ext):
@@ -30,9 +33,11 @@ class BuildExt(build_ext):
         super().build_extensions()
 
 
-digest = hashlib.sha256((Path(__file__).parent / SOURCE).read_bytes()).hexdigest()
+digest = hashlib.sha256(b"".join((ENGINE / name).read_bytes() for name in SOURCES)).hexdigest()
 setup(
-    ext_modules=[Extension("tui_search.engine._core", [SOURCE], optional=True,
+    ext_modules=[Extension("tui_search.engine._core",
+                           [f"tui_search/engine/{name}" for name in SOURCES[:2]],
+                           depends=[f"tui_search/engine/{SOURCES[2]}"], optional=True,
                            define_macros=[("CORE_SOURCE_HASH", f'"{digest}"')])],
     cmdclass={"build_ext": BuildExt},
 )

@@ -83,13 +83,14 @@ def test_the_sdist_and_the_wheel_carry_the_core_and_the_maps(tmp_path: Path) -> 
     (sdist,), (wheel,) = dist.glob("*.tar.gz"), dist.glob("*.whl")
     with tarfile.open(sdist) as tar:
         names = {name.split("/", 1)[1] for name in tar.getnames() if "/" in name}
-    assert {"setup.py", "tui_search/engine/_core.c", "maps/tutorial.txt",
+    assert {"setup.py", "tui_search/engine/_core.c", "tui_search/engine/_core_loops.c",
+            "tui_search/engine/_core.h", "maps/tutorial.txt",
             "tui_search/maps/tutorial.txt", "tui_search/tui/app.tcss"} <= names
     with zipfile.ZipFile(wheel) as whl:
         names = set(whl.namelist())
     assert {"tui_search/maps/tutorial.txt", "tui_search/tui/app.tcss"} <= names
-    assert any(name.startswith("tui_search/engine/_core.") for name in names - {
-        "tui_search/engine/_core.c"})
+    assert any(name.startswith("tui_search/engine/_core.") and not name.endswith((".c", ".h"))
+               for name in names)
     bin_dir = _venv(tmp_path)
     _pip_install(bin_dir, wheel)
     _check_the_app_runs(bin_dir, "compiled search core")

@@ -97,9 +97,9 @@ def test_a_stale_build_falls_back_to_python_and_says_so(capsys, monkeypatch, tmp
     """The C source changed since the build (an editable install not rebuilt): the Python
     loops run, stderr says why, and so does ``--version``."""
     pytest.importorskip("tui_search.engine._core")
-    edited = tmp_path / "_core.c"
-    edited.write_bytes(compiled.SOURCE.read_bytes() + b"/* edited */\n")
-    monkeypatch.setattr(compiled, "SOURCE", edited)
+    edited = tmp_path / "_core_loops.c"
+    edited.write_bytes(compiled.SOURCES[1].read_bytes() + b"/* edited */\n")
+    monkeypatch.setattr(compiled, "SOURCES", (compiled.SOURCES[0], edited, compiled.SOURCES[2]))
     monkeypatch.delenv(compiled.CORE_ENV, raising=False)
     compiled.selected.cache_clear()
     try:

@@ -1,10 +1,10 @@
 """The compiled search core: which core runs, and the loop that drives a compiled search.
 
-The compiled module (:file:`tui_search/engine/_core.c`, built at ``pip install`` as an optional
-extension) records every algorithm under every choice into the same
+The compiled module (``tui_search/engine/_core.c`` and ``_core_loops.c``, built at ``pip
+install`` as an optional extension) records every algorithm under every choice into the same
 :class:`~tui_search.engine.record.Record` the Python loops write, so nothing downstream knows
 which core ran.  It runs unless the environment variable ``TUI_SEARCH_CORE`` says ``python``,
-the module was not built (no compiler), or the build is stale (``_core.c`` changed since: an
+the module was not built (no compiler), or the build is stale (the C source changed since: an
 editable install that was not rebuilt) -- then the Python loops run, and a stale build says so
 on stderr.  ``TUI_SEARCH_CORE=compiled`` makes a missing or stale module an error
 (:class:`CoreUnavailable`).  The reference loop stays the specification: a hypothesis test in
@@ -33,9 +33,11 @@ from tui_search.engine.record import Record
 #: compiled one when it is built and fresh).
 CORE_ENV = "TUI_SEARCH_CORE"
 COMPILED, PYTHON = "compiled search core", "Python search core"
-SOURCE = Path(__file__).resolve().parents[1] / "_core.c"
+#: The C source, in the order ``setup.py`` hashes it.
+SOURCES = tuple(Path(__file__).resolve().parents[1] / name
+                for name in ("_core.c", "_core_loops.c", "_core.h"))
 
-# The C loops (_core.c's enum), the heuristics' codes and advance()'s "paused".
+# The C loops (_core.h's enum), the heuristics' codes and advance()'s "paused".
 _QUEUE, _IDDFS, _BEST = 0, 1, 2
 _HEURISTIC_CODE = {"octile": 0, "euclidean": 1, "manhattan": 2, "chebyshev": 3, "zero": 4}
 _PAUSED = -2
@@ -47,8 +49,8 @@ class CoreUnavailable(RuntimeError):
 
 
 def source_hash() -> str:
-    """The SHA-256 of ``_core.c`` as the build hashes it (setup.py embeds it in the module)."""
-    return hashlib.sha256(SOURCE.read_bytes()).hexdigest()
+    """The SHA-256 of the C source as the build hashes it (setup.py embeds it in the module)."""
+    return hashlib.sha256(b"".join(path.read_bytes() for path in SOURCES)).hexdigest()
 
 
 @cache
@@ -67,9 +69,9 @@ def selected() -> tuple[ModuleType | None, str]:
             raise CoreUnavailable(f"{CORE_ENV}=compiled, but the compiled search core is not "
                                   "built (pip install needs a C compiler)") from None
         return None, f"{PYTHON}; the compiled one is not built"
-    if SOURCE.exists() and source_hash() != core.SOURCE_HASH:
-        stale = "the compiled search core is stale (_core.c changed since it was built: " \
-                "pip install again)"
+    if all(path.exists() for path in SOURCES) and source_hash() != core.SOURCE_HASH:
+        stale = "the compiled search core is stale (its C source changed since it was " \
+                "built: pip install again)"
         if choice == "compiled":
             raise CoreUnavailable(stale)
         print(f"tui-search: {stale}; running the Python search core", file=sys.stderr)
