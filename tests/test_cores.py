@@ -8,14 +8,18 @@ import os
 import shutil
 import sys
 import sysconfig
+from array import array
 
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 from tests.engine.cores import using_core
 from tests.helpers import MAPS, MOVINGAI
 from tui_search.cli import main
 from tui_search.engine.algorithms import ALGORITHMS
 from tui_search.engine.loops import compiled
+from tui_search.engine.peak import _largest_size
 
 SMALL_MAPS = ["tutorial.txt", "exercise1-bfs-wins.txt", "exercise1-goal-moved.txt",
               "exercise2-dfs-longer.txt", "no-path.txt"]
@@ -58,6 +62,21 @@ def test_the_headless_json_is_the_same_under_both_cores(capsys, tmp_path, argv: 
     assert python == (_headless(capsys, "compiled", args),
                       trace.read_text() if trace.exists() else "")
     assert python[0][0] in (0, 1) and python[0][2] == ""
+
+
+@given(st.lists(st.integers(0, 3), min_size=1, max_size=300), st.data())
+def test_the_peak_tables_scan_is_the_same_in_c(steps: list[int], data) -> None:
+    """The compiled core's ``largest_size`` (the peak table's scan when it runs) is the
+    Python one's: the largest ``ends[j] - j - c`` over a range (c is 0 but for iterative
+    deepening), on the ends of a run: they never decrease, no frontier is below 0."""
+    core = pytest.importorskip("tui_search.engine._core")
+    ends, total = array("i", [1]), 1
+    for generated in steps:  # each step adds 0-3 events; the frontier never goes below 0
+        total += generated
+        ends.append(max(total, len(ends)))
+    lo = data.draw(st.integers(1, len(ends) - 1))
+    hi = data.draw(st.integers(lo + 1, len(ends)))
+    assert core.largest_size(ends, lo, hi, 0) == _largest_size(ends, lo, hi, 0)
 
 
 def test_a_compiler_builds_the_compiled_core() -> None:
