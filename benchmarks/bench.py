@@ -36,6 +36,7 @@ sys.path.insert(0, str(ROOT))
 from benchmarks.choices import bench_choices
 from benchmarks.class_load import bench_class_load
 from benchmarks.compare import bench_compare
+from benchmarks.core import bench_core
 from benchmarks.engine import bench_engine
 from benchmarks.harness import NOISE, med
 from benchmarks.informed import bench_informed
@@ -45,8 +46,8 @@ from benchmarks.step import bench_step
 from benchmarks.table import ROWS, Row, add, print_table
 
 #: The sections, in the order they run and print.
-SECTIONS = {"engine": bench_engine, "choices": bench_choices, "informed": bench_informed,
-            "jump": bench_jump, "step": bench_step, "compare": bench_compare,
+SECTIONS = {"core": bench_core, "engine": bench_engine, "choices": bench_choices,
+            "informed": bench_informed, "jump": bench_jump, "step": bench_step, "compare": bench_compare,
             "startup": bench_startup, "class_load": bench_class_load}
 
 

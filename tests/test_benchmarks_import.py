@@ -17,7 +17,7 @@ import pkgutil
 import pytest
 
 import benchmarks
-from benchmarks import bench, choices, harness, jump, step
+from benchmarks import bench, choices, core, harness, jump, step
 from benchmarks.baselines import (
     bare_bfs,
     bare_dfs,
@@ -47,9 +47,9 @@ def test_every_benchmark_module_imports() -> None:
         importlib.import_module(f"benchmarks.{name}")
 
 
-def test_the_entry_point_has_the_eight_sections_and_refuses_another(capsys) -> None:
-    assert list(bench.SECTIONS) == ["engine", "choices", "informed", "jump", "step", "compare",
-                                    "startup", "class_load"]
+def test_the_entry_point_has_the_nine_sections_and_refuses_another(capsys) -> None:
+    assert list(bench.SECTIONS) == ["core", "engine", "choices", "informed", "jump", "step",
+                                    "compare", "startup", "class_load"]
     with pytest.raises(SystemExit) as info:
         bench.main(["--only", "engine,nope"])
     assert info.value.code == 2 and "unknown section 'nope'" in capsys.readouterr().err
@@ -61,6 +61,17 @@ def test_the_compare_section_drives_compare_mode_to_the_end() -> None:
 
     _, steps = asyncio.run(jump._jump_once(SearchApp, load_map(TUTORIAL), compare="bfs,dfs"))
     assert steps == [22, 7]
+
+
+@pytest.mark.parametrize("key", ["bfs", "dfs", "astar", "ucs"])
+def test_the_c_floor_takes_the_engines_steps(key: str) -> None:
+    """The core section's floor (benchmarks/floor.c) runs the searches the rows time: as many
+    steps as the engine records, on the tutorial and on arena under MovingAI's corner rule."""
+    scen = load_scenario(MOVINGAI / "arena.map.scen", 3)
+    for grid, sem in ((load_map(TUTORIAL), Semantics()),
+                      (load_map(ARENA_MAP, start=scen.start, goal=scen.goal), core.NEVER)):
+        for g in (grid, walled_in(grid)) if key == "dfs" else (grid,):
+            assert core.floor_search(g, key, sem)() == core.recorded(g, key, sem).recorded
 
 
 def test_the_bare_baselines_find_the_engines_path_lengths() -> None:

@@ -19,6 +19,7 @@ from tui_search.engine.algorithms import ALGORITHMS, DEFAULT_ALGORITHM
 from tui_search.engine.exercises import QUOTES
 from tui_search.engine.grid import DEFAULT_ORDER, Grid
 from tui_search.engine.heuristics import DEFAULT_HEURISTIC, HEURISTICS
+from tui_search.engine.loops.compiled import CoreUnavailable, core_name
 from tui_search.engine.mapread import MapError
 from tui_search.engine.run import MAX_STEPS
 from tui_search.engine.semantics import CORNER_RULES, GOAL_TESTS, VISIT_RULES
@@ -46,7 +47,7 @@ def build_parser() -> argparse.ArgumentParser:
         epilog="Exit codes (headless): 0 path found, 1 no path, 2 bad input, 3 gave up (--max-steps).",
     )
     p.add_argument("map", nargs="?", help="a text map (.txt) or a MovingAI map (.map)")
-    p.add_argument("--version", action="version", version=f"tui-search {__version__}")
+    p.add_argument("--version", action="version", version=f"tui-search {__version__} ({core_name()})")
     p.add_argument("-a", "--algorithm", choices=list(ALGORITHMS), default=None,
                    help="; ".join(f"{a.key}: {a.name}" for a in ALGORITHMS.values()))
     p.add_argument("--start", metavar="X,Y", help="start cell (overrides the map's S)")
@@ -202,7 +203,7 @@ def main(argv: list[str] | None = None) -> int:
         if args.serve:
             return serve.serve(parser, args, title=path.name if path else BUILT_IN_TITLE)
         return run_app(args, grid, path)
-    except UsageError as exc:
+    except (UsageError, CoreUnavailable) as exc:
         print(f"tui-search: error: {exc}", file=sys.stderr)
         return EXIT_BAD_INPUT
     except MapError as exc:

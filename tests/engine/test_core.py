@@ -16,6 +16,7 @@ import pytest
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
+from tests.engine.cores import CORES, using_core
 from tests.engine.test_run import snapshot
 from tests.engine.test_search import random_grids
 from tests.helpers import TUTORIAL_ROWS, grid_from_rows, reference_distances
@@ -109,11 +110,15 @@ def recorded_arrays(run: Run) -> dict:
 core = settings(max_examples=200, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 
+@pytest.mark.parametrize("core_name", CORES)
 @core
 @given(random_grids(max_side=8), semantics())
-def test_every_recorded_loop_equals_the_reference(grid: Grid, choice) -> None:
+def test_every_recorded_loop_equals_the_reference(core_name: str, grid: Grid, choice) -> None:
+    """Both cores, the Python loops and the compiled one, array for array."""
     key, sem = choice
-    assert recorded_arrays(Run(grid, key, sem, LIMIT)) == reference_arrays(grid, key, sem, LIMIT)
+    with using_core(core_name):
+        recorded = recorded_arrays(Run(grid, key, sem, LIMIT))
+    assert recorded == reference_arrays(grid, key, sem, LIMIT)
 
 
 @core
@@ -136,15 +141,18 @@ def _record(grid: Grid, key: str, sem: Semantics, chunk: int) -> tuple:
             list(rec.discarded), rec.goal_gen, rec.done)
 
 
+@pytest.mark.parametrize("core_name", CORES)
 @core
 @given(random_grids(max_side=8), semantics(), st.integers(1, 4))
-def test_the_loops_record_the_same_in_chunks_of_any_size(grid: Grid, choice, chunk: int) -> None:
-    """The loops keep a chunk's events in lists and write them to the record at each pause:
-    the record is whole at every pause, and tiny chunks (a pause every step or few) record
-    exactly what one long chunk does."""
+def test_the_loops_record_the_same_in_chunks_of_any_size(core_name: str, grid: Grid, choice,
+                                                         chunk: int) -> None:
+    """The loops keep a chunk's events in lists (the compiled core in buffers) and write them
+    to the record at each pause: the record is whole at every pause, and tiny chunks (a pause
+    every step or few) record exactly what one long chunk does."""
     key, sem = choice
     assume(not sem.tree_search)  # exponential: compared with the reference under a limit above
-    assert _record(grid, key, sem, chunk) == _record(grid, key, sem, 10_000)
+    with using_core(core_name):
+        assert _record(grid, key, sem, chunk) == _record(grid, key, sem, 10_000)
 
 
 @pytest.mark.parametrize(
@@ -162,7 +170,8 @@ def test_the_loops_record_the_same_in_chunks_of_any_size(grid: Grid, choice, chu
 def test_the_tutorial_rules_take_the_fast_loops(key, sem, loop) -> None:
     """The hot loops serve the tutorial's rules under no corner rule (any order); the general
     loop every other choice -- the equality test above covers each of them."""
-    chosen = loop_for(get_algorithm(key), sem)
+    with using_core("python"):
+        chosen = loop_for(get_algorithm(key), sem)
     assert getattr(chosen, "func", chosen) is loop
 
 
@@ -342,10 +351,13 @@ def test_a_cell_is_expanded_from_its_real_expansion_at_any_step(grid, choice, ta
     assert_expanded_as_the_reference(grid, *choice, targets, rebuild)
 
 
+@pytest.mark.parametrize("core_name", CORES)
 @core
 @given(random_grids(max_side=7), semantics(), st.integers(1, 12))
-def test_a_small_step_limit_gives_up_alike(grid, choice, limit) -> None:
-    """Tiny limits make tiny chunks (a chunk is at most the limit): the recorded loops still
-    equal the reference, and give up at exactly the limit."""
+def test_a_small_step_limit_gives_up_alike(core_name, grid, choice, limit) -> None:
+    """Tiny limits make tiny chunks (a chunk is at most the limit): the recorded loops of
+    both cores still equal the reference, and give up at exactly the limit."""
     key, sem = choice
-    assert recorded_arrays(Run(grid, key, sem, limit)) == reference_arrays(grid, key, sem, limit)
+    with using_core(core_name):
+        recorded = recorded_arrays(Run(grid, key, sem, limit))
+    assert recorded == reference_arrays(grid, key, sem, limit)

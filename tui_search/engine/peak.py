@@ -2,7 +2,8 @@
 
 A run's statistics show the peak frontier at every position, and the headless summary at the
 end: a table of block maxima, extended as each chunk is recorded, keeps that to at most one
-block's sizes scanned, in whole-int arithmetic (:func:`_largest_size`).
+block's sizes scanned, in whole-int arithmetic (:func:`_largest_size`), or by the compiled
+core's ``largest_size`` when it runs.
 """
 
 from __future__ import annotations
@@ -13,6 +14,7 @@ from array import array
 from collections.abc import Callable, Iterator
 from functools import lru_cache
 
+from tui_search.engine.loops.compiled import selected
 from tui_search.engine.record import Record
 
 
@@ -80,11 +82,13 @@ class PeakTable:
             return max(floor, max(self._sizes(lo, hi)))
         c = rec.iter_root[it] - first + 1
         end, piece, best = rec.step_end, self.PEAK_PIECE, floor
+        core = selected()[0]
+        largest = _largest_size if core is None else core.largest_size
         b = hi
         while b > lo:  # from the last piece, where a growing frontier is largest
             a = max(lo, b - piece)
             if end[b - 1] - a - c > best:  # else no size of this piece beats the best
-                best = max(best, _largest_size(end, a, b, c))
+                best = max(best, largest(end, a, b, c))
             b = a
         return best
 

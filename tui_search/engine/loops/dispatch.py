@@ -1,5 +1,5 @@
-"""Which fast loop runs an algorithm under given choices: a table, from the loop's family and
-the rules in force.
+"""Which fast loop runs an algorithm under given choices: the compiled core's, or a table of
+the Python loops, from the loop's family and the rules in force.
 
 The family is the algorithm's frontier (a queue, a stack, a priority queue), or iterative
 deepening; the rules are tree search, graph search under the tutorial's rules with no corner
@@ -13,6 +13,7 @@ from functools import partial
 
 from tui_search.engine.algorithms import Algorithm
 from tui_search.engine.loops.best_first import best_first, best_first_tree
+from tui_search.engine.loops.compiled import compiled_loop
 from tui_search.engine.loops.general import general
 from tui_search.engine.loops.iddfs import iddfs
 from tui_search.engine.loops.tree import tree
@@ -58,7 +59,11 @@ def rules(algorithm: Algorithm, semantics: Semantics) -> str:
 
 
 def loop_for(algorithm: Algorithm, semantics: Semantics) -> Loop:
-    """The fastest loop that implements ``algorithm`` under ``semantics``."""
+    """The fastest loop that implements ``algorithm`` under ``semantics``: the compiled
+    core's when it runs (:mod:`~tui_search.engine.loops.compiled`), else the table's."""
+    compiled = compiled_loop(algorithm)
+    if compiled is not None:
+        return compiled
     loop = LOOPS[family(algorithm), rules(algorithm, semantics)]
     if algorithm.priority is not None:
         return partial(loop, priority=algorithm.priority)
