@@ -186,13 +186,14 @@ def test_keys_typed_in_the_page_reach_the_served_app_which_will_not_save() -> No
         assert "Saving and opening" in saved
 
 
-def test_the_page_sends_its_websocket_to_the_address_the_browser_used() -> None:
+def test_the_page_sends_its_websocket_to_the_address_the_browser_used(tmp_path: Path) -> None:
     """Served on ``localhost``, opened as 127.0.0.1 (as a classroom opens a 0.0.0.0 server by
-    the computer's address): the page's websocket goes to 127.0.0.1 too."""
-    with served("--host", "localhost", "--save-dir", str(MAPS)) as server:
+    the computer's address): the page's websocket goes to 127.0.0.1 too.  (The save folder is
+    a temporary one: the visitor's own folder is made in it.)"""
+    with served("--host", "localhost", "--save-dir", str(tmp_path)) as server:
         assert server.banner.startswith("Serving tui-search (tutorial (built-in)) on "
                                         "http://localhost:")
-        assert f"visitors may save and open maps in {MAPS.resolve()} only" in server.banner
+        assert f"visitors may save and open maps in {tmp_path.resolve()} only" in server.banner
         page, _ = asyncio.run(first_screen(server.url, "Quit"))
         assert f'data-session-websocket-url="ws://{server.url[7:]}ws"' in page
 
