@@ -7,6 +7,8 @@ from __future__ import annotations
 import contextlib
 
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 from tests.tui.test_app import TUTORIAL, sync, wait_until
 from tui_search.engine.mapfile import load_map
@@ -85,6 +87,35 @@ def test_one_pane_keeps_its_lists_beside_the_map_and_a_narrow_tall_one_under_it(
     # a map too big to fit keeps the lists beside it, and says it does not fit
     big = arrange(1, 140, 40, (512, 512))
     assert big.beside and not big.fits
+
+
+@pytest.mark.parametrize(("n", "width", "height", "map_size"), [
+    (1, 120, 30, (40, 16)),   # beside the lists 72 columns are left for its 82
+    (4, 160, 40, (30, 12)),
+    (4, 200, 52, (30, 12)),
+    (2, 120, 30, (28, 10)),
+])
+def test_a_map_that_fits_under_the_lists_is_not_clipped_beside_them(
+        n: int, width: int, height: int, map_size: tuple[int, int]) -> None:
+    """A wide pane keeps its lists beside the map only while the whole map fits beside them:
+    else they go under it, where it shows whole (it was clipped, with scrollbars, while it
+    fitted)."""
+    arrangement = arrange(n, width, height, map_size)
+    assert arrangement.fits and not arrangement.beside
+
+
+@given(st.integers(1, 4), st.integers(80, 200), st.integers(10, 60),
+       st.tuples(st.integers(1, 120), st.integers(1, 60)))
+def test_a_map_said_to_fit_has_the_room_for_its_smallest_cells(
+        n: int, width: int, height: int, map_size: tuple[int, int]) -> None:
+    """``fits`` is true only when the map's box holds the map at 2 characters by 1 line a
+    cell, in a border: beside the lists, or under them."""
+    a = arrange(n, width, height, map_size)
+    if a.fits:
+        box_w = a.pane_width - (a.lists_width if a.beside else 0)
+        assert 2 * map_size[0] + 2 <= box_w
+        if a.map_height:
+            assert map_size[1] + 2 <= a.map_height
 
 
 def test_a_status_line_that_wraps_takes_the_blank_lines_under_the_map_not_its_place() -> None:

@@ -139,15 +139,27 @@ def _steady(steady: Arrangement, pane: Arrangement, steady_h: int, pane_h: int,
 def _pane(columns: int, rows: int, table: bool, pane_stats: bool, pane_w: int, pane_h: int,
           map_size: tuple[int, int], fold_trees: bool) -> Arrangement:
     """One pane's inside: its lists beside the map when the pane is much wider than tall and
-    the map still fits beside them (or would not fit whole anyway); else under the map when
-    there is room for both."""
+    the whole map fits beside them (or would not fit whole under them either); else under
+    the map when there is room for both."""
     map_w, map_h = map_size
     need_w, need_h = 2 * map_w + 2, map_h + 2  # the smallest cells, in a border
     side = lists_width(pane_w)
     beside_w = max(min(need_w, MAP_MIN_WIDTH), STATS_MIN_WIDTH if pane_stats else 0)
     if pane_w >= 3 * pane_h and pane_w - side >= beside_w:
-        return Arrangement(columns, rows, table, pane_stats, True, side, 0, not fold_trees,
-                           0, need_h <= pane_h, pane_w)
+        beside = Arrangement(columns, rows, table, pane_stats, True, side, 0, not fold_trees,
+                             0, need_h <= pane_h and need_w <= pane_w - side, pane_w)
+        if beside.fits:
+            return beside
+        under = _under(columns, rows, table, pane_stats, pane_w, pane_h, map_size, fold_trees)
+        return under if under.fits else beside  # under the map when it shows whole there
+    return _under(columns, rows, table, pane_stats, pane_w, pane_h, map_size, fold_trees)
+
+
+def _under(columns: int, rows: int, table: bool, pane_stats: bool, pane_w: int, pane_h: int,
+           map_size: tuple[int, int], fold_trees: bool) -> Arrangement:
+    """One pane's inside with its lists under the map (or none, or the map scrolling)."""
+    map_w, map_h = map_size
+    need_w, need_h = 2 * map_w + 2, map_h + 2  # the smallest cells, in a border
     if need_h + LISTS_MIN_HEIGHT <= pane_h:
         # The map's box: as tall as the map at the biggest cells that fit the pane's width
         # and three fifths of its height; the lists get the rest.
