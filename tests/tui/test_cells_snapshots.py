@@ -17,7 +17,8 @@ def overview_after_steps(steps: int):
         app = pilot.app
         await pilot.pause()  # the screen mounted
         app.session.run.goto(steps)
-        app.main.action_first()  # a full redraw ...
+        app.main.action_first()  # a full redraw, done in slices: wait for its end ...
+        await wait_until(pilot, lambda: app.session.seek is None)
         app.session.run.goto(steps)
         await pilot.press("n", "z")
         await wait_until(pilot, lambda: app.query_one("GridView").overview)
