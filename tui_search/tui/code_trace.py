@@ -111,9 +111,45 @@ def lit_kinds(run: Run) -> frozenset[str]:
     return frozenset(kinds)
 
 
+#: How the narration says why a successor was skipped, by the kind of line (one, several).
+_SKIP_WORDS = {
+    "reached": ("is already visited", "are already visited"),
+    "on_path": ("is on the path to the node", "are on the path to the node"),
+    "corner": ("is past a blocked corner", "are past a blocked corner"),
+}
+_REACHED_WORDS = {"weighted": ("was reached as cheaply", "were reached as cheaply"),
+                  "iterative": ("was reached no deeper", "were reached no deeper")}
+
+
+def line_notes(run: Run) -> list[str]:
+    """What the step at ``run``'s position did by a line worth naming, for the narration:
+    "line 8: (0,1) is already visited, skipped", "line 5 discards it"; none for the skips
+    off the map or into an obstacle (every step has some)."""
+    code = code_of(run)
+    k = run.k
+    if k and run.steps.is_discarded(k):
+        return [f"line {code.number('discard')} discards it"]
+    cells: dict[str, list[str]] = {}
+    for skip in skipped(run, k):
+        if skip.kind != "blocked":
+            cells.setdefault(skip.kind, []).append(f"({skip.cell[0]},{skip.cell[1]})")
+    words = dict(_SKIP_WORDS)
+    if run.algo.weighted:
+        words["reached"] = _REACHED_WORDS["weighted"]
+    elif run.algo.iterative:
+        words["reached"] = _REACHED_WORDS["iterative"]
+    out = []
+    for kind, named in cells.items():
+        one, several = words[kind]
+        listed = named[0] if len(named) == 1 else f"{', '.join(named[:-1])} and {named[-1]}"
+        out.append(f"line {code.number(kind)}: {listed} "
+                   f"{one if len(named) == 1 else several}, skipped")
+    return out
+
+
 def lit_lines(run: Run) -> frozenset[int]:
     """The numbers of the lines of :func:`code_of` the step at ``run``'s position executed."""
     return code_of(run).numbers(lit_kinds(run))
 
 
-__all__ = ["Skip", "code_of", "lit_kinds", "lit_lines", "skipped"]
+__all__ = ["Skip", "code_of", "line_notes", "lit_kinds", "lit_lines", "skipped"]
