@@ -78,6 +78,19 @@ def pseudocode(algorithm: Algorithm, semantics: Semantics, *,
     return _generate(algorithm, semantics, move_cost)
 
 
+def _marks(tree: bool, weighted: bool, iterative: bool, on_expand: bool
+           ) -> tuple[str, str] | None:
+    """What pushing START and pushing a successor record: the best g, the depth reached, or
+    "visited"; None when a push records nothing (tree search, visit on expand)."""
+    if tree or on_expand:
+        return None
+    if weighted:
+        return "best g[START] ← 0", "best g[s] ← g"
+    if iterative:
+        return "mark START reached at depth 0", "mark s reached at depth node's + 1"
+    return "mark START visited", "mark s visited"
+
+
 @lru_cache(maxsize=64)
 def _generate(algorithm: Algorithm, semantics: Semantics, move_cost: str) -> Pseudocode:
     lines: list[CodeLine] = []
@@ -101,13 +114,9 @@ def _generate(algorithm: Algorithm, semantics: Semantics, move_cost: str) -> Pse
     holding = f"a {frontier.noun} by {order_by}, holding START" if weighted else (
         f"a {frontier.noun} holding START")
     add("init", 0, f"frontier ← {holding}")
-    if not tree:
-        if weighted:
-            add("mark_start", 0, "best g[START] ← 0")
-        elif iterative:
-            add("mark_start", 0, "mark START reached at depth 0")
-        elif not on_expand:
-            add("mark_start", 0, "mark START visited")
+    marks = _marks(tree, weighted, iterative, on_expand)  # what a push records, if anything
+    if marks:
+        add("mark_start", 0, marks[0])
     if goal_test == "generate":
         add("goal_start", 0, "goal test: if START is the goal, return its path")
     add("while", 0, "while the frontier is not empty:")
@@ -136,13 +145,8 @@ def _generate(algorithm: Algorithm, semantics: Semantics, move_cost: str) -> Pse
     else:
         add("reached", 2, "if s is already visited: skip s")
     add("push", 2, frontier.push_words(by))
-    if not tree:
-        if weighted:
-            add("mark_succ", 2, "best g[s] ← g")
-        elif iterative:
-            add("mark_succ", 2, "mark s reached at depth node's + 1")
-        elif not on_expand:
-            add("mark_succ", 2, "mark s visited")
+    if marks:
+        add("mark_succ", 2, marks[1])
     if goal_test == "generate":
         add("goal_succ", 2, "goal test: if s is the goal, return its path")
     if iterative:
