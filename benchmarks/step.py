@@ -17,15 +17,18 @@ from tests.textual_internals import DrawnLines
 from tui_search.engine.grid import Grid
 
 
-async def _presses(app, keys: list[str], warmup: int = 20
+async def _presses(app, keys: list[str], warmup: int = 20, opening: tuple[str, ...] = ()
                    ) -> tuple[list[float], float, float, float]:
     """Pressing ``keys`` in turn: the wall time of each press (key to repainted screen), the
     CPU seconds per press, the CPU seconds of the same waiting and repainting with no key
     (the Pilot's own cost, which grows with the number of widgets), and the lines drawn per
     press (counted in a second, untimed pass over the same keys: the keys go forwards and
-    back, so it replays the same steps)."""
+    back, so it replays the same steps).  ``opening``: keys pressed first (``v``: the Code
+    panel)."""
     async with app.run_test(size=TERMINAL) as pilot:
         await pilot.pause()
+        for key in opening:
+            await fast_press(pilot, key)
         for i in range(warmup):
             await fast_press(pilot, keys[i % len(keys)])
         walls = []
@@ -78,7 +81,8 @@ def bench_step(quick: bool) -> None:
     n = 100 if quick else 200
     reps = 3 if quick else 5
     names = ("trivial", "trivial-full", "trivial-same", "trivial-tut", "tutorial", "maze")
-    results: dict[str, list[tuple[list[float], float, float, float]]] = {k: [] for k in names}
+    results: dict[str, list[tuple[list[float], float, float, float]]] = {
+        k: [] for k in (*names, "tutorial-code")}
     tutorial = maze = None
     if app_cls is not None:
         from tui_search.engine.mapfile import load_map
@@ -103,6 +107,8 @@ def bench_step(quick: bool) -> None:
             # the tutorial run has 22 steps: go 8 forwards and back again, over and over
             results["tutorial"].append(asyncio.run(_presses(
                 app_cls(tutorial.copy()), step_keys(16) * (n // 16))))
+            results["tutorial-code"].append(asyncio.run(_presses(
+                app_cls(tutorial.copy()), step_keys(16) * (n // 16), opening=("v",))))
             if maze is not None:
                 results["maze"].append(asyncio.run(_presses(app_cls(maze.copy()), step_keys(n))))
 
@@ -134,6 +140,11 @@ def bench_step(quick: bool) -> None:
     uw, uc, ug = per_press("tutorial")
     add(Row("step", "n/p on tutorial 6×6 vs trivial app (CPU per press, net of Pilot)",
             cpu_text(uc, ug), f"trivial {fmt_time(tc)}", paired(uc, tc), "report"))
+    # Issue 25's target: the Code panel open costs a step at most a fifth more.
+    _, cc, cg = per_press("tutorial-code")
+    r = paired(cc, uc)
+    add(Row("step", "n/p on tutorial 6×6 with the Code panel (v) vs without",
+            cpu_text(cc, cg), f"without {fmt_time(uc)}", r, "≤ 1.2", r <= 1.2))
     # Issue 9's target: the trivial app redrawing as many lines as the step draws.
     _, stc, _ = per_press("trivial-tut")
     r = paired(uc, stc)

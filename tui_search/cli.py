@@ -24,7 +24,13 @@ from tui_search.engine.mapread import MapError
 from tui_search.engine.run import MAX_STEPS
 from tui_search.engine.semantics import CORNER_RULES, GOAL_TESTS, VISIT_RULES
 from tui_search.flags import UsageError, contenders_from, load_problem, semantics_from
-from tui_search.headless import EXIT_BAD_INPUT, run_compare, run_exercise, run_headless
+from tui_search.headless import (
+    EXIT_BAD_INPUT,
+    print_pseudocode,
+    run_compare,
+    run_exercise,
+    run_headless,
+)
 from tui_search.tui.themes import THEMES  # plain data: no Textual
 
 if TYPE_CHECKING:
@@ -90,6 +96,9 @@ def build_parser() -> argparse.ArgumentParser:
                    help="the app's colours for this run (the app remembers a theme chosen in "
                    "it with t or ctrl+p): " + "; ".join(f"{t.name}: {t.description}"
                                                          for t in THEMES.values()))
+    p.add_argument("--pseudocode", action="store_true",
+                   help="print the pseudocode of -a's search under the choice flags, one "
+                   "numbered line per line (for handouts), and exit")
     p.add_argument("--headless", action="store_true",
                    help="search without the app and print the result")
     p.add_argument("--json", action="store_true",
@@ -190,6 +199,8 @@ def main(argv: list[str] | None = None) -> int:
         if args.theme and args.headless:
             raise UsageError("--theme is for the app, not --headless")
         check_modes(args)
+        if args.pseudocode:
+            return print_pseudocode(args)
         grid, path = load_problem(args)
         if args.headless and args.compare:
             return run_compare(args, grid, path)

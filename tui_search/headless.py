@@ -35,6 +35,24 @@ if TYPE_CHECKING:
 EXIT_FOUND, EXIT_NO_PATH, EXIT_BAD_INPUT, EXIT_GAVE_UP = 0, 1, 2, 3
 
 
+def print_pseudocode(args: argparse.Namespace) -> int:
+    """``--pseudocode``: the code of ``-a``'s search under the flags' choices, numbered, on
+    stdout (:mod:`tui_search.engine.pseudocode`); exit 0."""
+    from tui_search.engine.pseudocode import pseudocode
+
+    for flag in ("compare", "exercise", "trace"):
+        if getattr(args, flag):
+            raise UsageError(f"--pseudocode prints one search's code: leave out "
+                             f"--{flag.replace('_', '-')}")
+    if args.headless or args.json:
+        raise UsageError("--pseudocode prints the code without a search: leave out "
+                         "--headless and --json")
+    code = pseudocode(get_algorithm(args.algorithm), semantics_from(args))
+    print(code.title)
+    print("\n".join(code.numbered()))
+    return EXIT_FOUND
+
+
 def trace_line(step: Step) -> str:
     """One JSON object per step: the node taken off and exactly the successors it added, in
     order; iterative deepening adds the depth limit, a discarded step says so."""

@@ -107,3 +107,12 @@ def test_no_start_or_goal(snap_compare) -> None:
 def test_quit_with_unsaved_edits_asks(snap_compare) -> None:
     """After an edit, q shows the 'Unsaved edits' question with Save / Quit / Stay."""
     assert snap_compare(tutorial_app(), press=["down", "o", "q"], terminal_size=SIZE)
+
+
+def test_bfs_after_four_steps_with_the_code_panel(snap_compare) -> None:
+    """BFS after four expansions with the Code panel (v) in the search tree's place: BFS's
+    pseudocode, lines 4-10 lit with ▶ and the lit colour (the while, the take-off, the loop
+    over successors, "off the map or an obstacle" and "already visited" skipping, push back,
+    mark visited); the narration adds 'line 8: (0,1), (0,2), (0,3) and (1,3) are already
+    visited, skipped'."""
+    assert snap_compare(tutorial_app(), press=["n"] * 4 + ["v"], terminal_size=SIZE)

@@ -24,6 +24,7 @@ from tui_search.tui.screens.open_map import OpenMapScreen
 from tui_search.tui.screens.save_as import SaveAsScreen
 from tui_search.tui.widgets.cell_readout import CellReadout
 from tui_search.tui.widgets.challenge import ChallengePanel
+from tui_search.tui.widgets.code_panel import CodePanel
 from tui_search.tui.widgets.compare_table import CompareTable
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.stats import Stats
@@ -81,6 +82,8 @@ CASES: dict[str, tuple[dict[str, object], list[str], Callable[[SearchApp], list[
     "exercise 1 solved": ({"exercise": 1}, ["j"] * 4 + ["g"], _verdict),
     "exercise 2 beside a comparison": ({"exercise": 2, "compare": "bfs,dfs"}, ["end"],
                                        _verdict),
+    "the code panel": ({"algorithm": "bfs"}, ["n"] * 4 + ["v"], _nothing),
+    "the code panels comparing": ({"compare": "bfs,astar"}, ["end", "v"], _nothing),
 }
 
 
@@ -98,7 +101,7 @@ def _whole_texts(widget: Widget) -> list[str]:
         return widget.text_lines
     if isinstance(widget, ChallengePanel):
         return [widget.text]
-    assert isinstance(widget, FrontierPanel)
+    assert isinstance(widget, FrontierPanel | CodePanel)
     return widget.lines()
 
 
@@ -113,7 +116,7 @@ def problems(app: SearchApp, screen: list[str], lesson: list[str]) -> list[str]:
     """What is cut on ``screen`` (its lines as text), and what of ``lesson`` is not on it."""
     found = []
     seen = []
-    kinds = (Stats, CellReadout, CompareTable, FrontierPanel, ChallengePanel)
+    kinds = (Stats, CellReadout, CompareTable, FrontierPanel, ChallengePanel, CodePanel)
     for widget in app.main.query("*"):
         if not isinstance(widget, kinds) or not widget.display or not widget.region.area:
             continue
@@ -255,6 +258,9 @@ MODES: dict[str, tuple[dict[str, object], list[str]]] = {
     "quiz": ({"algorithm": "astar"}, ["i"]),
     "quiz comparing 2": ({"compare": "bfs,dfs"}, ["i"]),
     "quiz comparing 4": ({"compare": "bfs,dfs,astar,iddfs"}, ["i"]),
+    "code panel": ({"algorithm": "iddfs"}, ["n"] * 3 + ["v"]),
+    "code panels comparing 2": ({"compare": "bfs,dfs"}, ["n"] * 3 + ["v"]),
+    "code panels comparing 4": ({"compare": "bfs,dfs,astar,iddfs"}, ["n"] * 3 + ["v"]),
 }
 
 

@@ -44,6 +44,16 @@ class Frontier(Enum):
         """What the panel writes beside its entries: the only one, the next out, the far end."""
         return _HINTS[self]
 
+    def take_words(self, priority: str = "") -> str:
+        """The pseudocode's words for taking the next entry off: "take off the front of the
+        queue (pop front)"; a priority queue's name the ``priority`` ("f")."""
+        return _TAKES[self].format(p=priority)
+
+    def push_words(self, priority: str = "") -> str:
+        """The pseudocode's words for putting successor ``s`` on: "push s at the back of the
+        queue (push back)"; a priority queue's say by what (``priority``: "f = g + h")."""
+        return _PUSHES[self].format(p=priority)
+
 
 _TITLES = {Frontier.FIFO: "Queue (FIFO)", Frontier.LIFO: "Stack (LIFO)",
            Frontier.PRIORITY: "Priority queue"}
@@ -56,6 +66,13 @@ _HINTS = {
     # none: the order is the priorities', shown on every line (and ▶ marks the next out)
     Frontier.PRIORITY: ("", "", ""),
 }
+
+_TAKES = {Frontier.FIFO: "take off the front of the queue (pop front)",
+          Frontier.LIFO: "take off the top of the stack (pop)",
+          Frontier.PRIORITY: "take off the entry of lowest {p} (pop min)"}
+_PUSHES = {Frontier.FIFO: "push s at the back of the queue (push back)",
+           Frontier.LIFO: "push s on top of the stack (push)",
+           Frontier.PRIORITY: "push s into the priority queue by {p}"}
 
 #: How an informed search orders its priority queue: what the panel's title and the narration
 #: call the priority, and what it adds up.

@@ -34,6 +34,7 @@ COMPARISONS = {
 ACTIONS = {
     "compare": "Compare searches side by side (on / off)",
     "settings": "Search settings",
+    "code": "Code panel: the search's pseudocode, the step's lines lit (on / off)",
     "undo": "Undo the last edit of the map",
     "redo": "Redo the edit undone",
     "save": "Save the map",

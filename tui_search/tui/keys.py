@@ -56,6 +56,9 @@ KEYS: list[BindingType] = [
             tooltip="Compare searches side by side in lockstep (again: one search)"),
     Binding("f", "fold_trees", "Trees", show=False,
             tooltip="Compare mode: fold the search trees away (again: show them)"),
+    Binding("v", "code", "Code", show=False,
+            tooltip="Code panel: the search's pseudocode, the step's lines lit ▶ (again: "
+            "the search tree)"),
     Binding("r", "reset", "Reset", tooltip="Restart the search at step 0"),
     Binding("comma", "settings", "Settings", key_display=",",
             tooltip="Search settings: moves, corners, visited, goal test, tree search"),

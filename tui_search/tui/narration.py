@@ -15,6 +15,7 @@ from tui_search.engine.algorithms import get_algorithm
 from tui_search.engine.diagnose import blocking_rule
 from tui_search.engine.grid import Cell, path_cost
 from tui_search.engine.run import Run
+from tui_search.tui.code_trace import line_notes
 
 
 def group_digits(n: int) -> str:
@@ -76,8 +77,17 @@ def _node_text(run: Run, g: int) -> str:
     return f"START {cell}" if run.nodes.parent(g) < 0 else cell
 
 
-def narrate(run: Run) -> str:
-    """One line about the step just taken (or, at step 0, about what happens next)."""
+def narrate(run: Run, code: bool = False) -> str:
+    """One line about the step just taken (or, at step 0, about what happens next); with
+    ``code`` (the Code panel shown), naming the lines that skipped a successor or discarded
+    the node: "...; line 8: (0,1) is already visited, skipped"."""
+    text = _narrate(run)
+    if code:
+        text = "; ".join([text, *line_notes(run)])
+    return text
+
+
+def _narrate(run: Run) -> str:
     word = frontier_word(run)
     k = run.k
     limit = run.steps.depth_limit() if run.algo.iterative else None

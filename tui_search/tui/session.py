@@ -85,6 +85,7 @@ class Session:
         self.quiz = Quiz()
         self.exercise = exercise
         self.fold_trees = False  # several panes: their trees folded away by the user
+        self.show_code = False  # the Code panel in the trees' place (the pseudocode, lit)
         self._benchmark = None if optimal_cost is None else (
             bytes(grid.blocked), grid.start, grid.goal, optimal_cost)
         self.new_runs()

@@ -41,10 +41,11 @@ class Status(NamedTuple):
 
 
 def search_status(run: Run | None, name: str, *, of_several: bool, playing: str = "",
-                  note: str = "", done: bool = False) -> Status:
+                  note: str = "", done: bool = False, code: bool = False) -> Status:
     """One search's lines: ``name`` names it; ``done`` adds "done at step k" (a run that
     ended before the others); ``note`` replaces the narration (e.g. the quiz's question, while
-    computing the end of a big run, or when the map lacks a start or a goal).
+    computing the end of a big run, or when the map lacks a start or a goal); ``code`` (the
+    Code panel shown) has the narration name the code's lines.
 
     ``of_several``: the lines of a pane among several, whose map comes first: at most
     :data:`PANE_ROWS`, and the path and the bound may go (the comparison table says them
@@ -76,7 +77,7 @@ def search_status(run: Run | None, name: str, *, of_several: bool, playing: str 
         line = []
     else:
         failed = run.at_end and not run.found and not run.gave_up  # "no path", in red
-        line = [Piece([(narrate(run), "stats--no-path" if failed else "stats--narration")])]
+        line = [Piece([(narrate(run, code), "stats--no-path" if failed else "stats--narration")])]
         if run.at_end and run.found:  # the path, and the bound: what the lesson is about
             # (a pane of several: the comparison table says them too, and the map comes
             # first: the bound goes first, the path after the counts)
@@ -112,7 +113,8 @@ def screen_status(session: Session, width: int) -> Status:
         return lockstep_status(session.labels, playing=playing_text(session),
                                note=session.note, sentence=sentence)
     return search_status(session.run, get_algorithm(session.algorithm).short,
-                         of_several=False, playing=playing_text(session), note=session.note)
+                         of_several=False, playing=playing_text(session), note=session.note,
+                         code=session.show_code)
 
 
 __all__ = ["MAX_ROWS", "PANE_ROWS", "Status", "lockstep_status", "playing_text",

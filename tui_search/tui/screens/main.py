@@ -93,6 +93,13 @@ class MainScreen(PanesScreen):
         self.session.fold_trees = not self.session.fold_trees
         self.fit_panes()
 
+    def action_code(self) -> None:
+        """The Code panel (the search's pseudocode, the step's lines lit) in the search
+        trees' place, or the trees again."""
+        self.session.show_code = not self.session.show_code
+        self.fit_panes()
+        self.present(changed=[])
+
     def action_settings(self) -> None:
         from tui_search.engine.algorithms import get_algorithm
         from tui_search.tui.screens.settings import SettingsScreen  # only when asked

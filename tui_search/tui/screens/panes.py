@@ -132,14 +132,15 @@ class PanesScreen(Screen[None]):
         grid = self.session.grid
         stats = max(pane.stats.outer_size.height for pane in self.panes)
         arrangement = arrange(len(self.panes), width, height, (grid.width, grid.height),
-                              table_height=table_height, fold_trees=self.session.fold_trees,
+                              table_height=table_height,
+                              fold_trees=self.session.fold_trees and not self.session.show_code,
                               stats_height=stats or PANE_STATS_HEIGHT,
                               wrapped=self.stats.wrapped)
         box.styles.grid_size_columns = arrangement.columns
         box.styles.grid_size_rows = arrangement.rows
         table.display = several and arrangement.table
         for pane in self.panes:
-            pane.lay_out(arrangement)
+            pane.lay_out(arrangement, code=self.session.show_code)
 
     def _check_size(self, width: int, height: int) -> None:
         small = width < MIN_WIDTH or height < MIN_HEIGHT

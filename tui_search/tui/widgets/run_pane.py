@@ -16,6 +16,7 @@ from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.run import Run
 from tui_search.tui.layout import Arrangement
 from tui_search.tui.status_lines import search_status
+from tui_search.tui.widgets.code_panel import CodePanel
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.search_tree import SearchTreePanel
@@ -36,6 +37,7 @@ class RunPane(Vertical):
         self.view = GridView(grid, classes="pane-map")
         self.frontier = FrontierPanel(classes="pane-frontier")
         self.tree_panel = SearchTreePanel(classes="pane-tree")
+        self.code_panel = CodePanel(classes="pane-code -folded")
         self.side_note = Static(note, classes="pane-note")
         self.map_box = Vertical(classes="pane-map-box")  # the room the map's cells fit
         self.lists = Vertical(classes="pane-lists")
@@ -44,14 +46,16 @@ class RunPane(Vertical):
         with self.lists:  # docked first: beside the map, it spans the pane's whole height
             yield self.frontier
             yield self.tree_panel
+            yield self.code_panel
             yield self.side_note
         yield self.stats
         with self.map_box:
             yield self.view
 
-    def lay_out(self, arrangement: Arrangement) -> None:
+    def lay_out(self, arrangement: Arrangement, code: bool = False) -> None:
         """Lay the pane out: its lists beside or under the map, or not at all; its trees and
-        its own status lines shown or not."""
+        its own status lines shown or not; with ``code``, the Code panel in the tree's place
+        (where the arrangement has room for a tree)."""
         self.set_class(arrangement.beside, "-beside")
         self.stats.display = arrangement.pane_stats
         lists = self.lists
@@ -65,7 +69,8 @@ class RunPane(Vertical):
             lists.styles.height = arrangement.lists_height or None
             self.map_box.styles.height = arrangement.map_height or "1fr"
         self.view.styles.max_height = arrangement.map_max_height or "100%"
-        self.tree_panel.set_class(not arrangement.trees, "-folded")
+        self.tree_panel.set_class(not arrangement.trees or code, "-folded")
+        self.code_panel.set_class(not (arrangement.trees and code), "-folded")
         # room for the map's title where the pane has it, else the map as narrow as it is
         self.view.styles.min_width = min(MAP_TITLE_WIDTH, max(0, arrangement.pane_width - 2))
 
@@ -79,11 +84,14 @@ class RunPane(Vertical):
         if run is not None:
             self.frontier.show(run, hide_order=hide_order)
             self.tree_panel.show(run)
+            if not self.code_panel.has_class("-folded"):
+                self.code_panel.show(run)
             node = run.now.current_node()
             if follow and node is not None:
                 view.follow(node)
             if self.stats.display:  # a pane's own status lines show only among several
-                status = search_status(run, self.label, of_several=True, done=run.at_end)
+                status = search_status(run, self.label, of_several=True, done=run.at_end,
+                                       code=not self.code_panel.has_class("-folded"))
                 self.stats.show(status.lines, status.max_rows)
         if view.border_title != title:  # setting it repaints the whole view
             view.border_title = title

@@ -1,0 +1,86 @@
+"""The Code panel: ``v`` (or the palette's command) shows the search's pseudocode in the
+search tree's place, the step's lines lit with ``▶``; each compare pane shows its own search's
+code; the narration names the lines while it is shown."""
+
+from __future__ import annotations
+
+from tests.tui.test_app import SIZE, sync, tutorial_app, wait_until
+from tui_search.engine.algorithms import ALGORITHMS
+from tui_search.engine.pseudocode import pseudocode
+from tui_search.engine.semantics import Semantics
+from tui_search.tui.app import SearchApp
+from tui_search.tui.code_trace import lit_lines
+from tui_search.tui.widgets.code_panel import LIT_MARK, CodePanel, code_rows
+from tui_search.tui.widgets.run_pane import RunPane
+
+
+def shown(pane: RunPane) -> bool:
+    panel = pane.code_panel
+    return bool(panel.display and not panel.has_class("-folded") and panel.region.area)
+
+
+def lit_numbers(panel: CodePanel) -> set[int]:
+    """The numbers of the lines the panel shows lit, read off its rows' text."""
+    return {int(panel.line_text(y).split()[1]) for y in panel.lit_rows()}
+
+
+@sync
+async def test_v_shows_the_code_in_the_tree_s_place_and_lights_the_step() -> None:
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        pane = app.main.panes[0]
+        await pilot.press("n", "n", "n", "n")
+        assert not shown(pane)
+        await pilot.press("v")
+        await wait_until(pilot, lambda: shown(pane))
+        assert not pane.tree_panel.display or pane.tree_panel.has_class("-folded")
+        panel = pane.code_panel
+        assert lit_numbers(panel) == set(lit_lines(app.session.run)) == {4, 5, 6, 7, 8, 9, 10}
+        assert panel.line_text(panel.lit_rows()[0]).startswith(LIT_MARK)
+        assert "line 8: (0,1), (0,2), (0,3) and (1,3) are already visited" in (
+            app.main.stats.narration_text)
+        await pilot.press("p", "p", "p")  # back to step 1: nothing was visited yet
+        await wait_until(pilot, lambda: app.session.run.k == 1 and 8 not in lit_numbers(panel))
+        assert lit_numbers(panel) == {4, 5, 6, 7, 9, 10}
+        await pilot.press("v")
+        await wait_until(pilot, lambda: not shown(pane) and pane.tree_panel.region.area > 0)
+        assert "line 8" not in app.main.stats.narration_text
+
+
+@sync
+async def test_each_compare_pane_shows_its_own_search_s_code() -> None:
+    app = SearchApp(tutorial_app().session.grid, compare="bfs,astar")
+    async with app.run_test(size=(120, 40)) as pilot:
+        await wait_until(pilot, lambda: len(app.main.panes) == 2)
+        await pilot.press("n", "v")
+        await wait_until(pilot, lambda: all(shown(p) for p in app.main.panes))
+        bfs, astar = (p.code_panel for p in app.main.panes)
+        assert bfs.code.lines[0].text == "frontier ← a queue holding START"
+        assert "f = g + h" in astar.code.lines[0].text
+        assert " ".join(" ".join(astar.lines()).split()).startswith("1 frontier ← a priority")
+        assert app.main.panes[1].stats.narration_text  # its own narration
+
+
+@sync
+async def test_the_palette_offers_the_code_panel() -> None:
+    from tui_search.tui.commands import SearchCommands
+
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        commands = {name: (run, help_text)
+                    for name, run, help_text in SearchCommands(app.screen).commands()}
+        name = next(n for n in commands if n.startswith("Code panel"))
+        assert "(key v)" in commands[name][1]
+        await commands[name][0]()  # the main screen's run_action
+        await wait_until(pilot, lambda: shown(app.main.panes[0]))
+
+
+def test_a_long_line_wraps_under_its_own_words_and_keeps_its_light() -> None:
+    code = pseudocode(ALGORITHMS["bfs"], Semantics())
+    rows = code_rows(code, frozenset({6}), 30)
+    texts = ["".join(text for text, _ in row) for row in rows]
+    assert all(len(text) <= 30 for text in texts)
+    start = next(i for i, text in enumerate(texts) if text.startswith(f"{LIT_MARK}  6 "))
+    assert texts[start + 1].startswith("      ") and "N,NW" in " ".join(texts[start:start + 4])
+    assert all(cls == "code-panel--lit" for _, cls in rows[start + 1])
+    assert sum(text.startswith(LIT_MARK) for text in texts) == 1
