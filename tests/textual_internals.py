@@ -9,9 +9,14 @@ The benchmarks import these too: one module holds every private name outside ``t
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from textual.app import App
-from textual.notifications import Notification
+from textual.notifications import Notification, Notifications
 from textual.pilot import Pilot
+
+if TYPE_CHECKING:
+    import pytest
 
 
 def composited(app: App) -> list[list[tuple]]:
@@ -83,6 +88,21 @@ class DrawnLines:
 
 
 def notifications(app: App) -> list[Notification]:
-    """The notifications the app has shown, their time on screen over or not (a loaded
-    machine can take longer than that to get to a test's check)."""
-    return list(app._notifications._notifications.values())
+    """Every notification the app has shown, in order, its time on screen over or not.
+
+    Textual drops the notifications whose time is over each time one is added, so on a
+    loaded machine a test that checks after the third of three could see only the last one:
+    :func:`keep_every_notification` (installed for the UI tests by their conftest) keeps a
+    log of each one added."""
+    return list(getattr(app._notifications, "every", []))
+
+
+def keep_every_notification(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Make Textual's collection of notifications also keep each one added, in ``every``."""
+    add = Notifications.add
+
+    def add_and_keep(self: Notifications, notification: Notification) -> Notifications:
+        self.__dict__.setdefault("every", []).append(notification)
+        return add(self, notification)
+
+    monkeypatch.setattr(Notifications, "add", add_and_keep)
