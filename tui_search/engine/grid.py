@@ -73,7 +73,9 @@ def is_diagonal(direction: str) -> bool:
 class Grid:
     """A ``width`` x ``height`` map; ``blocked[y * width + x]`` is 1 for an obstacle, and
     ``costs[y * width + x]`` (None: all 1) what entering the cell costs (> 0; 1 on an
-    obstacle).  An all-1 ``costs`` is stored as None, so two grids of the same map are equal."""
+    obstacle).  An all-1 ``costs`` is stored as None, so two grids of the same map are equal.
+    Edit cells with :meth:`set_blocked` and :meth:`set_cost` (or give ``costs`` a new array):
+    :meth:`lowest_cost` is remembered until then."""
 
     width: int
     height: int
@@ -85,6 +87,10 @@ class Grid:
     #: it back with only the edited cells changed.  Not part of the grid's value (``==``).
     source: MapSource | None = field(default=None, compare=False, repr=False)
     costs: array[float] | None = field(default=None, repr=False)
+    # lowest_cost's answer and the costs it is for: worked out again after an edit
+    # (set_cost, set_blocked) or when ``costs`` is another array.
+    _lowest: tuple[array[float], float] | None = field(
+        default=None, init=False, compare=False, repr=False)
 
     def __post_init__(self) -> None:
         if self.width < 1 or self.height < 1:
@@ -120,10 +126,13 @@ class Grid:
     def lowest_cost(self) -> float:
         """The lowest cost of a free cell (1 on a map without terrain, or with no free cell):
         the factor that keeps the heuristics admissible."""
-        if self.costs is None:
+        costs = self.costs
+        if costs is None:
             return 1.0
-        free = self.blocked.translate(_FREE)
-        return min(compress(self.costs, free), default=1.0)
+        if self._lowest is None or self._lowest[0] is not costs:
+            free = self.blocked.translate(_FREE)
+            self._lowest = costs, min(compress(costs, free), default=1.0)
+        return self._lowest[1]
 
     def path_cost(self, path: list[Cell]) -> float:
         """The cost of ``path``: each move's length times the cost of the cell it enters,
@@ -166,6 +175,7 @@ class Grid:
         """Block or free ``cell``; a blocked cell costs 1 (a freed one is plain floor)."""
         x, y = cell
         self.blocked[y * self.width + x] = 1 if value else 0
+        self._lowest = None
         if value and self.costs is not None:
             self.set_cost(cell, 1.0)
 
@@ -179,6 +189,7 @@ class Grid:
                 return
             self.costs = array("d", [1.0]) * (self.width * self.height)
         self.costs[y * self.width + x] = value
+        self._lowest = None
         if value == 1.0:
             self._all_ones()
 
@@ -188,10 +199,14 @@ class Grid:
             self.costs = None
 
     def copy(self) -> Grid:
-        return Grid(
-            self.width, self.height, bytearray(self.blocked), self.start, self.goal, self.source,
-            None if self.costs is None else array("d", self.costs),
+        grid = Grid(
+            self.width, self.height, bytearray(self.blocked), self.start, self.goal, self.source
         )
+        if self.costs is not None:  # already not all 1: no need to look again
+            grid.costs = array("d", self.costs)
+            # worked out here once, not once a copy: every search copies the grid it runs on
+            grid._lowest = grid.costs, self.lowest_cost()
+        return grid
 
     def free_count(self) -> int:
         return len(self.blocked) - self.blocked.count(1)
