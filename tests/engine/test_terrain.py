@@ -17,6 +17,7 @@ from tests.helpers import MAPS, reference_distances
 from tui_search.engine.grid import SQRT2, Cell, Grid
 from tui_search.engine.heuristics import HEURISTICS, admissible
 from tui_search.engine.mapfile import load_map
+from tui_search.engine.outcome import Outcome
 from tui_search.engine.run import Run, recording_of
 from tui_search.engine.semantics import CORNER_RULES, Semantics
 from tui_search.headless import json_summary
@@ -79,13 +80,20 @@ def _close(a: float, b: float) -> bool:
     return abs(a - b) <= 1e-9 * max(1.0, abs(b))
 
 
+def _run(grid: Grid, key: str, sem: Semantics, reached: dict[Cell, float]) -> Outcome:
+    """``key``'s outcome, found exactly when ``reached`` (an independent search's) has the
+    goal."""
+    out = Run(grid, key, sem, LIMIT).outcome()
+    assert out.found == (grid.goal in reached)
+    return out
+
+
 @prop
 @given(terrains())
 def test_uniform_cost_search_finds_the_cheapest_cost(problem) -> None:
     grid, sem = problem
-    out = Run(grid, "ucs", sem, LIMIT).outcome()
     best = dijkstra(grid, sem.order, sem.corners)
-    assert out.found == (grid.goal in best)
+    out = _run(grid, "ucs", sem, best)
     if out.found:
         assert _close(out.cost, best[grid.goal])
 
@@ -108,9 +116,8 @@ def test_a_star_with_an_admissible_heuristic_finds_the_same_cost(problem, name: 
 @given(terrains())
 def test_bfs_finds_the_fewest_moves_and_reports_their_cost(problem) -> None:
     grid, sem = problem
-    out = Run(grid, "bfs", sem, LIMIT).outcome()
     moves = reference_distances(grid, sem.corners, sem.order)
-    assert out.found == (grid.goal in moves)
+    out = _run(grid, "bfs", sem, moves)
     if out.found:
         assert out.length == moves[grid.goal]
         assert out.cost == grid.path_cost(out.path)
