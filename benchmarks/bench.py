@@ -14,7 +14,7 @@ The peers (``pip install -e .[bench]``: pathfinding, networkx, scipy) are option
 gives a "not installed" row.  See benchmarks/README.md for what each row means.
 
 This file is the entry point only: each section lives in its own module of this package
-(engine.py, choices.py, informed.py, jump.py, step.py, startup.py, class_load.py), on the shared table.py, harness.py and maps.py.
+(engine.py, choices.py, informed.py, jump.py, step.py, startup.py, class_load.py, terrain.py), on the shared table.py, harness.py and maps.py.
 """
 
 from __future__ import annotations
@@ -44,11 +44,12 @@ from benchmarks.jump import bench_jump
 from benchmarks.startup import bench_startup
 from benchmarks.step import bench_step
 from benchmarks.table import ROWS, Row, add, print_table
+from benchmarks.terrain import bench_terrain
 
 #: The sections, in the order they run and print.
 SECTIONS = {"core": bench_core, "engine": bench_engine, "choices": bench_choices,
             "informed": bench_informed, "jump": bench_jump, "step": bench_step, "compare": bench_compare,
-            "startup": bench_startup, "class_load": bench_class_load}
+            "startup": bench_startup, "class_load": bench_class_load, "terrain": bench_terrain}
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -58,6 +58,10 @@ def build_parser() -> argparse.ArgumentParser:
                    help="; ".join(f"{a.key}: {a.name}" for a in ALGORITHMS.values()))
     p.add_argument("--start", metavar="X,Y", help="start cell (overrides the map's S)")
     p.add_argument("--goal", metavar="X,Y", help="goal cell (overrides the map's G)")
+    p.add_argument("--terrain", metavar="FILE",
+                   help="a terrain table: lines 'CHAR COST' (a positive number) or 'CHAR "
+                   "blocked' naming the map's letters (f 5 in a text map; S, W, T in a .map); "
+                   "a text map's digits 1-9 cost themselves")
     p.add_argument("--scen", metavar="FILE", help="a MovingAI .scen file to take start and goal from")
     p.add_argument("--scen-row", metavar="N", type=int, default=None,
                    help="problem N of --scen, counted from 0 after the version line")

@@ -18,6 +18,7 @@ from tui_search.engine.heuristics import DEFAULT_HEURISTIC
 from tui_search.engine.mapfile import load_map, parse_cell, parse_map_text
 from tui_search.engine.scenarios import check_scenario_map, check_scenario_matches, load_scenario
 from tui_search.engine.semantics import Semantics
+from tui_search.engine.terrain import load_terrain
 
 TUTORIAL_NAME = "tutorial.txt"
 
@@ -41,13 +42,15 @@ def load_problem(args: argparse.Namespace) -> tuple[Grid, Path | None]:
     goal = _cell_arg("--goal", args.goal)
     if (args.scen is None) != (args.scen_row is None):
         raise UsageError("--scen and --scen-row go together")
+    terrain = load_terrain(args.terrain) if args.terrain is not None else None
     if args.map is None:
         if args.scen:
             raise UsageError("--scen needs a MAP")
         # The map ships inside the package (a plain file: importlib.resources would cost
         # ~10 ms of start-up to import).
         text = (Path(__file__).parent / "maps" / TUTORIAL_NAME).read_text("utf-8")
-        return parse_map_text(text, TUTORIAL_NAME, start=start, goal=goal), None
+        return parse_map_text(text, TUTORIAL_NAME, start=start, goal=goal,
+                              terrain=terrain), None
     path = Path(args.map)
     scen = None
     args.scenario = None
@@ -58,11 +61,12 @@ def load_problem(args: argparse.Namespace) -> tuple[Grid, Path | None]:
         check_scenario_map(scen, args.scen, path)
         start = start or scen.start
         goal = goal or scen.goal
-    grid = load_map(path, start=start, goal=goal)
+    grid = load_map(path, start=start, goal=goal, terrain=terrain)
     if scen is not None:
         check_scenario_matches(scen, grid, args.scen, str(path))
-        # Its optimal length is for its own start and goal: not when a flag moved one.
-        if (grid.start, grid.goal) == (scen.start, scen.goal):
+        # Its optimal length is for its own start and goal, every cell costing 1: not when a
+        # flag moved one, nor on terrain.
+        if (grid.start, grid.goal) == (scen.start, scen.goal) and grid.costs is None:
             args.scenario = scen
     return grid, path
 

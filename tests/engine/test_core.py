@@ -112,7 +112,7 @@ core = settings(max_examples=200, deadline=None, suppress_health_check=[HealthCh
 
 @pytest.mark.parametrize("core_name", CORES)
 @core
-@given(random_grids(max_side=8), semantics())
+@given(random_grids(max_side=8, costs=True), semantics())
 def test_every_recorded_loop_equals_the_reference(core_name: str, grid: Grid, choice) -> None:
     """Both cores, the Python loops and the compiled one, array for array."""
     key, sem = choice
@@ -122,7 +122,7 @@ def test_every_recorded_loop_equals_the_reference(core_name: str, grid: Grid, ch
 
 
 @core
-@given(random_grids(max_side=8), semantics())
+@given(random_grids(max_side=8, costs=True), semantics())
 def test_the_streamed_outcome_equals_the_recorded_one(grid: Grid, choice) -> None:
     """The headless command line streams the reference: same path and counts as the app."""
     key, sem = choice
@@ -143,7 +143,7 @@ def _record(grid: Grid, key: str, sem: Semantics, chunk: int) -> tuple:
 
 @pytest.mark.parametrize("core_name", CORES)
 @core
-@given(random_grids(max_side=8), semantics(), st.integers(1, 4))
+@given(random_grids(max_side=8, costs=True), semantics(), st.integers(1, 4))
 def test_the_loops_record_the_same_in_chunks_of_any_size(core_name: str, grid: Grid, choice,
                                                          chunk: int) -> None:
     """The loops keep a chunk's events in lists (the compiled core in buffers) and write them
@@ -179,7 +179,7 @@ def test_the_tutorial_rules_take_the_fast_loops(key, sem, loop) -> None:
 
 
 @core
-@given(random_grids(max_side=8), semantics(algorithm="bfs"))
+@given(random_grids(max_side=8, costs=True), semantics(algorithm="bfs"))
 def test_bfs_finds_the_fewest_moves_under_every_choice(grid: Grid, choice) -> None:
     _, sem = choice
     out = Run(grid, "bfs", sem, LIMIT).outcome()
@@ -191,7 +191,7 @@ def test_bfs_finds_the_fewest_moves_under_every_choice(grid: Grid, choice) -> No
 
 
 @core
-@given(random_grids(max_side=8), semantics())
+@given(random_grids(max_side=8, costs=True), semantics())
 def test_every_path_is_legal_under_its_rules(grid: Grid, choice) -> None:
     """Each move of the path is one of the order's moves, allowed by the corner rule; a
     tree-search path never repeats a cell (graph searches' paths cannot either)."""
@@ -207,7 +207,7 @@ def test_every_path_is_legal_under_its_rules(grid: Grid, choice) -> None:
 
 
 @core
-@given(random_grids(max_side=8), semantics())
+@given(random_grids(max_side=8, costs=True), semantics())
 def test_a_four_direction_order_never_moves_diagonally(grid: Grid, choice) -> None:
     key, sem = choice
     sem = replace(sem, order=("N", "W", "S", "E"))
@@ -283,7 +283,7 @@ def test_the_bound_is_the_tutorials() -> None:
 
 
 @settings(max_examples=200, deadline=None)
-@given(random_grids(max_side=6), semantics(),
+@given(random_grids(max_side=6, costs=True), semantics(),
        st.lists(st.integers(0, 400), min_size=1, max_size=5), st.sampled_from([0, 3, 10**9]))
 def test_moving_to_step_k_works_the_same_for_every_choice(grid, choice, targets, rebuild) -> None:
     """The run's frontier model and counters: a jump (stepping either way, or a bulk rebuild)
@@ -341,7 +341,7 @@ def assert_expanded_as_the_reference(grid: Grid, key: str, sem: Semantics, targe
 
 
 @settings(max_examples=200, deadline=None)
-@given(random_grids(max_side=6), semantics(),
+@given(random_grids(max_side=6, costs=True), semantics(),
        st.lists(st.integers(0, 400), min_size=1, max_size=6), st.sampled_from([0, 3, 10**9]))
 def test_a_cell_is_expanded_from_its_real_expansion_at_any_step(grid, choice, targets,
                                                                  rebuild) -> None:
@@ -353,7 +353,7 @@ def test_a_cell_is_expanded_from_its_real_expansion_at_any_step(grid, choice, ta
 
 @pytest.mark.parametrize("core_name", CORES)
 @core
-@given(random_grids(max_side=7), semantics(), st.integers(1, 12))
+@given(random_grids(max_side=7, costs=True), semantics(), st.integers(1, 12))
 def test_a_small_step_limit_gives_up_alike(core_name, grid, choice, limit) -> None:
     """Tiny limits make tiny chunks (a chunk is at most the limit): the recorded loops of
     both cores still equal the reference, and give up at exactly the limit."""

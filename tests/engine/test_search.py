@@ -149,10 +149,15 @@ def test_iddfs_steps_carry_the_depth_limit_and_restart_from_the_root() -> None:
 # -- properties on random maps -----------------------------------------------------------
 
 
+#: The cell costs random terrain draws from: below 1, whole, fractional, large.
+TERRAIN_COSTS = (0.5, 1.0, 1.0, 1.5, 2.0, 3.0, 5.0, 9.0, 0.25, 12.0)
+
+
 @st.composite
-def random_grids(draw, max_side: int = 9, walls_one_in: int = 2, min_side: int = 1) -> Grid:
+def random_grids(draw, max_side: int = 9, walls_one_in: int = 2, min_side: int = 1,
+                 costs: bool = False) -> Grid:
     """A map of ``min_side`` to ``max_side`` a side, about one cell in ``walls_one_in`` an
-    obstacle."""
+    obstacle; with ``costs``, as often as not, random terrain (every cell a random cost)."""
     w = draw(st.integers(min_side, max_side))
     h = draw(st.integers(min_side, max_side))
     cell = (st.booleans() if walls_one_in == 2
@@ -164,6 +169,11 @@ def random_grids(draw, max_side: int = 9, walls_one_in: int = 2, min_side: int =
     grid.set_blocked((sx, sy), False)
     grid.set_blocked((gx, gy), False)
     grid.start, grid.goal = (sx, sy), (gx, gy)
+    if costs and draw(st.booleans()):
+        values = draw(st.lists(st.sampled_from(TERRAIN_COSTS), min_size=w * h, max_size=w * h))
+        for i, value in enumerate(values):
+            if not grid.blocked[i]:
+                grid.set_cost((i % w, i // w), value)
     return grid
 
 

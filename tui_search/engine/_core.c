@@ -64,6 +64,7 @@ static void Search_dealloc(Search *s) {
     PyMem_RawFree(s->closed); PyMem_RawFree(s->best);
     PyMem_RawFree(s->best_depth); PyMem_RawFree(s->stamp);
     if (s->walls_view.obj) PyBuffer_Release(&s->walls_view);
+    if (s->terrain_view.obj) PyBuffer_Release(&s->terrain_view);
     PyObject *refs[] = {s->r_node, s->r_end, s->r_exp, s->r_g, s->r_disc, s->r_depth,
                         s->it_first, s->it_root, s->it_limit};
     for (size_t i = 0; i < sizeof refs / sizeof *refs; i++) Py_XDECREF(refs[i]);
@@ -74,14 +75,14 @@ static PyObject *Search_new(PyTypeObject *type, PyObject *args, PyObject *kw) {
     (void)kw;
     Search *s = (Search *)type->tp_alloc(type, 0);
     if (!s) return NULL;
-    PyObject *moves, *walls;
-    if (!PyArg_ParseTuple(args, "iiiiiiiiiiiidOO(OOOOOOOOO)iii", &s->loop, &s->lifo, &s->tree,
+    PyObject *moves, *walls, *terrain;
+    if (!PyArg_ParseTuple(args, "iiiiiiiiiiiidOO(OOOOOOOOO)iiiOdd", &s->loop, &s->lifo, &s->tree,
                           &s->visit_expand, &s->use_g, &s->use_h,
                           &s->heuristic, &s->close, &s->refused, &s->stride, &s->start,
                           &s->goal, &s->extra, &walls, &moves, &s->r_node, &s->r_end,
                           &s->r_exp, &s->r_g, &s->r_disc, &s->r_depth, &s->it_first,
                           &s->it_root, &s->it_limit, &s->goal_on_push, &s->goal_on_pop,
-                          &s->nmoves)) {
+                          &s->nmoves, &terrain, &s->scale, &s->cheaper)) {
         s->r_node = s->r_end = s->r_exp = s->r_g = s->r_disc = s->r_depth = NULL;
         s->it_first = s->it_root = s->it_limit = NULL;
         Py_DECREF(s); return NULL;
@@ -100,6 +101,14 @@ static PyObject *Search_new(PyTypeObject *type, PyObject *args, PyObject *kw) {
         }
     if (PyObject_GetBuffer(walls, &s->walls_view, PyBUF_SIMPLE) < 0) { Py_DECREF(s); return NULL; }
     s->walls = s->walls_view.buf; s->ncells = s->walls_view.len;
+    if (terrain != Py_None) {
+        if (PyObject_GetBuffer(terrain, &s->terrain_view, PyBUF_SIMPLE) < 0) { Py_DECREF(s); return NULL; }
+        if (s->terrain_view.len != s->ncells * (Py_ssize_t)sizeof(double)) {
+            PyErr_SetString(PyExc_ValueError, "terrain: a double per cell");
+            Py_DECREF(s); return NULL;
+        }
+        s->terrain = s->terrain_view.buf;
+    }
     if (core_start(s) < 0) { Py_DECREF(s); return NULL; }
     return (PyObject *)s;
 }

@@ -49,6 +49,11 @@ typedef struct {
     Py_ssize_t count, steps, head;
     Py_ssize_t room;                          /* steps the scratch buffers hold, reserved */
     int started, limit, cut_off, iteration;
+    /* terrain: each padded cell's cost (NULL: all 1), the heuristic's factor (the lowest
+     * cost) and how much cheaper a new g must be (CHEAPER_BY) */
+    Py_buffer terrain_view;
+    const double *terrain;
+    double scale, cheaper;
 } Search;
 
 /* _core_loops.c: a search's set-up before its first step, and its three loops; each loop

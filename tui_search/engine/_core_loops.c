@@ -46,6 +46,7 @@ static double priority(Search *s, double g, int m) {
     case H_CHEBYSHEV: h = (double)(dx > dy ? dx : dy); break;
     default: h = 0.0;
     }
+    if (s->scale != 1.0) h = s->scale * h;  /* terrain: times the lowest cell cost */
     return s->use_g ? g + h : h;
 }
 
@@ -247,11 +248,13 @@ out:
 }
 
 /* A priority queue of (priority, event, cell, g): graph search (an entry whose g is above its
- * cell's best is stale: a discarded step) or tree search. */
+ * cell's best is stale: a discarded step) or tree search.  A move costs its length times the
+ * cost of the cell it enters (terrain; its length alone without). */
 long core_run_best(Search *s, Py_ssize_t chunk) {
     Py_ssize_t count = s->count, step = s->steps, stop = s->steps + chunk;
     unsigned char *closed = s->closed;
     double *best = s->best;
+    const double *terrain = s->terrain;
     long result = PAUSED;
     while (step < stop && s->stack.n) {
         TAKE_ROOM();
@@ -267,13 +270,14 @@ long core_run_best(Search *s, Py_ssize_t chunk) {
         for (int i = 0; i < s->nmoves; i++) {
             int m = n + s->off[i];
             if (closed[m] || refused(s, i, n)) continue;
+            double cost = terrain ? s->cost[i] * terrain[m] : s->cost[i];
             if (s->tree) {
                 if (on_path(s, m, e)) continue;
                 PUT(s->parent, int, e);
-            } else if (g + s->margin[i] >= best[m]) {
+            } else if (terrain ? g + cost + s->cheaper >= best[m] : g + s->margin[i] >= best[m]) {
                 continue;
             }
-            double ng = g + s->cost[i];
+            double ng = g + cost;
             if (!s->tree) best[m] = ng;
             Entry y = {priority(s, ng, m), (int)count, m, ng};
             if (heap_push(s, y) < 0) return -3;

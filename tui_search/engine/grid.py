@@ -1,7 +1,10 @@
-"""The map model: size, obstacles, start and goal; the eight moves and their order.
+"""The map model: size, obstacles, each free cell's cost, start and goal; the eight moves
+and their order.
 
 Coordinates follow MovingAI: ``x`` is the column counted from 0 at the left, ``y`` the row
-counted from 0 at the top.  The grid is a plain, mutable value: editing it never touches a
+counted from 0 at the top.  A move costs its length (1 straight, sqrt(2) diagonal) times the
+cost of the cell it enters; a map whose every cell costs 1 keeps no costs at all (``costs``
+is None), so the plain maps pay nothing for terrain.  The grid is a plain, mutable value: editing it never touches a
 search, because every search copies what it needs when it starts (search state lives in the
 run, never on the grid).
 """
@@ -9,8 +12,9 @@ run, never on the grid).
 from __future__ import annotations
 
 import math
+from array import array
 from dataclasses import dataclass, field
-from itertools import pairwise
+from itertools import compress, pairwise
 
 from tui_search.engine.mapsource import MapSource
 
@@ -67,7 +71,11 @@ def is_diagonal(direction: str) -> bool:
 
 @dataclass
 class Grid:
-    """A ``width`` x ``height`` map; ``blocked[y * width + x]`` is 1 for an obstacle."""
+    """A ``width`` x ``height`` map; ``blocked[y * width + x]`` is 1 for an obstacle, and
+    ``costs[y * width + x]`` (None: all 1) what entering the cell costs (> 0; 1 on an
+    obstacle).  An all-1 ``costs`` is stored as None, so two grids of the same map are equal.
+    Edit cells with :meth:`set_blocked` and :meth:`set_cost` (or give ``costs`` a new array):
+    :meth:`lowest_cost` is remembered until then."""
 
     width: int
     height: int
@@ -78,6 +86,11 @@ class Grid:
     #: The file text the grid was read from (None for a grid built in code): saving writes
     #: it back with only the edited cells changed.  Not part of the grid's value (``==``).
     source: MapSource | None = field(default=None, compare=False, repr=False)
+    costs: array[float] | None = field(default=None, repr=False)
+    # lowest_cost's answer and the costs it is for: worked out again after an edit
+    # (set_cost, set_blocked) or when ``costs`` is another array.
+    _lowest: tuple[array[float], float] | None = field(
+        default=None, init=False, compare=False, repr=False)
 
     def __post_init__(self) -> None:
         if self.width < 1 or self.height < 1:
@@ -86,6 +99,10 @@ class Grid:
             self.blocked = bytearray(self.width * self.height)
         elif len(self.blocked) != self.width * self.height:
             raise ValueError("blocked has the wrong size")
+        if self.costs is not None:
+            if len(self.costs) != len(self.blocked):
+                raise ValueError("costs has the wrong size")
+            self._all_ones()
 
     # -- queries -------------------------------------------------------------------------
     def in_bounds(self, cell: Cell) -> bool:
@@ -98,6 +115,35 @@ class Grid:
 
     def is_free(self, cell: Cell) -> bool:
         return self.in_bounds(cell) and not self.is_blocked(cell)
+
+    def cost(self, cell: Cell) -> float:
+        """What entering ``cell`` costs (per unit of a move's length)."""
+        if self.costs is None:
+            return 1.0
+        x, y = cell
+        return self.costs[y * self.width + x]
+
+    def lowest_cost(self) -> float:
+        """The lowest cost of a free cell (1 on a map without terrain, or with no free cell):
+        the factor that keeps the heuristics admissible."""
+        costs = self.costs
+        if costs is None:
+            return 1.0
+        if self._lowest is None or self._lowest[0] is not costs:
+            free = self.blocked.translate(_FREE)
+            self._lowest = costs, min(compress(costs, free), default=1.0)
+        return self._lowest[1]
+
+    def path_cost(self, path: list[Cell]) -> float:
+        """The cost of ``path``: each move's length times the cost of the cell it enters,
+        summed from the start as the searches sum g (the start's own cost is never paid).
+        Without terrain, the octile length of its moves (:func:`path_cost`)."""
+        if self.costs is None:
+            return path_cost(path_moves(path))
+        g, costs, w = 0.0, self.costs, self.width
+        for (ax, ay), (bx, by) in pairwise(path):
+            g = g + (SQRT2 if ax != bx and ay != by else 1.0) * costs[by * w + bx]
+        return g
 
     def row(self, y: int) -> bytes:
         """The obstacle bytes of row ``y`` (fast path for drawing)."""
@@ -126,16 +172,48 @@ class Grid:
 
     # -- edits (the app owns the grid and calls these) ----------------------------------
     def set_blocked(self, cell: Cell, value: bool) -> None:
+        """Block or free ``cell``; a blocked cell costs 1 (a freed one is plain floor)."""
         x, y = cell
         self.blocked[y * self.width + x] = 1 if value else 0
+        self._lowest = None
+        if value and self.costs is not None:
+            self.set_cost(cell, 1.0)
+
+    def set_cost(self, cell: Cell, value: float) -> None:
+        """Make entering ``cell`` cost ``value`` (> 0)."""
+        if not (value > 0 and math.isfinite(value)):
+            raise ValueError(f"a cell's cost must be a positive number, not {value!r}")
+        x, y = cell
+        if self.costs is None:
+            if value == 1.0:
+                return
+            self.costs = array("d", [1.0]) * (self.width * self.height)
+        self.costs[y * self.width + x] = value
+        self._lowest = None
+        if value == 1.0:
+            self._all_ones()
+
+    def _all_ones(self) -> None:
+        """Keep no costs when every cell costs 1."""
+        if self.costs is not None and self.costs.count(1.0) == len(self.costs):
+            self.costs = None
 
     def copy(self) -> Grid:
-        return Grid(
+        grid = Grid(
             self.width, self.height, bytearray(self.blocked), self.start, self.goal, self.source
         )
+        if self.costs is not None:  # already not all 1: no need to look again
+            grid.costs = array("d", self.costs)
+            # worked out here once, not once a copy: every search copies the grid it runs on
+            grid._lowest = grid.costs, self.lowest_cost()
+        return grid
 
     def free_count(self) -> int:
         return len(self.blocked) - self.blocked.count(1)
+
+
+#: ``blocked.translate(_FREE)``: 1 for a free cell, 0 for an obstacle.
+_FREE = bytes.maketrans(b"\x00\x01", b"\x01\x00")
 
 
 def path_moves(path: list[Cell]) -> list[str]:

@@ -12,7 +12,9 @@ path.  A heuristic estimates the cost from a cell to the goal from the two offse
   lesson, not a bug (AIMA's ``GridProblem`` keeps it anyway);
 * ``zero``: no estimate at all: A* becomes uniform-cost search.
 
-The recorded loops and the reference loop call the same function, so a priority is the same
+On a map with terrain every estimate is multiplied by the map's lowest cell cost
+(:func:`scaled`): no move costs less than its length times that, so the estimates stay
+admissible (and consistent).  The recorded loops and the reference loop call the same function, so a priority is the same
 float whichever loop computed it (the frontier's order depends on it, ties and all).
 """
 
@@ -88,6 +90,19 @@ def admissible(name: str, order: tuple[str, ...]) -> bool:
     return True
 
 
+def scaled(heuristic: Heuristic, lowest: float) -> Heuristic:
+    """``heuristic`` times ``lowest``, the map's lowest cell cost (itself when that is 1:
+    multiplying by 1 changes no float, and a plain map pays nothing)."""
+    if lowest == 1.0:
+        return heuristic
+    return lambda dx, dy: lowest * heuristic(dx, dy)
+
+
+def heuristic_for(name: str, lowest: float = 1.0) -> Heuristic:
+    """The heuristic called ``name`` on a map whose lowest cell cost is ``lowest``."""
+    return scaled(HEURISTICS[name], lowest)
+
+
 def priority_of(priority: str, heuristic: Heuristic, goal: tuple[int, int]
                 ) -> Callable[[float, int, int], float]:
     """The priority of an entry with cost ``g`` at ``(x, y)``: ``g``, ``h`` or ``g + h`` (the
@@ -101,4 +116,4 @@ def priority_of(priority: str, heuristic: Heuristic, goal: tuple[int, int]
 
 
 __all__ = ["CHEAPER_BY", "DEFAULT_HEURISTIC", "EXPLAIN_HEURISTIC", "HEURISTICS", "INADMISSIBLE", "admissible",
-           "priority_of"]
+           "heuristic_for", "priority_of", "scaled"]

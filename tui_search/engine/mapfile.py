@@ -14,6 +14,7 @@ import re
 from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.mapread import MAX_DIGITS, check_cell, quoted, read_map_file
 from tui_search.engine.movingai import parse_movingai_map
+from tui_search.engine.terrain import Terrain
 from tui_search.engine.textmap import parse_text_map
 
 __all__ = ["load_map", "parse_cell", "parse_map_text"]
@@ -29,17 +30,21 @@ def _is_movingai(text: str) -> bool:
 
 
 def parse_map_text(
-    text: str, path: str = "<map>", *, start: Cell | None = None, goal: Cell | None = None
+    text: str, path: str = "<map>", *, start: Cell | None = None, goal: Cell | None = None,
+    terrain: Terrain | None = None,
 ) -> Grid:
     """Parse either format (a first line ``type ...`` means MovingAI).
 
     ``start``/``goal`` override the file's ``S``/``G`` (and make them optional), which is
-    how MovingAI maps, having none, get a start and goal.
+    how MovingAI maps, having none, get a start and goal.  ``terrain`` is a table of the
+    map's characters (``--terrain``; :mod:`tui_search.engine.terrain`).  A start or goal
+    placed on a costed cell keeps its cost.
     """
     if _is_movingai(text):
-        grid = parse_movingai_map(text, path)
+        grid = parse_movingai_map(text, path, terrain)
     else:
-        grid = parse_text_map(text, path, need_start=start is None, need_goal=goal is None)
+        grid = parse_text_map(text, path, need_start=start is None, need_goal=goal is None,
+                              terrain=terrain)
     for cell, what in ((start, "start"), (goal, "goal")):
         if cell is None:
             continue
@@ -52,7 +57,8 @@ def parse_map_text(
 
 
 def load_map(
-    path: str | os.PathLike[str], *, start: Cell | None = None, goal: Cell | None = None
+    path: str | os.PathLike[str], *, start: Cell | None = None, goal: Cell | None = None,
+    terrain: Terrain | None = None,
 ) -> Grid:
     """Read a map file of either format (see :func:`parse_map_text` for the overrides).
 
@@ -60,7 +66,7 @@ def load_map(
     tell whether someone else changed it since; loading again is how to reload."""
     where = os.fsdecode(path)
     text, stamp = read_map_file(where)
-    grid = parse_map_text(text, where, start=start, goal=goal)
+    grid = parse_map_text(text, where, start=start, goal=goal, terrain=terrain)
     if grid.source is not None:
         grid.source = grid.source._replace(stamp=stamp)
     return grid

@@ -48,6 +48,10 @@ class MapSource(NamedTuple):
     width: int
     bom: bool = False
     stamp: FileStamp | None = None
+    #: The terrain table given with the file (``--terrain``; a text map's own comment table
+    #: is in its lines): each character's cost, None for blocked.  Saving reads the file's
+    #: characters with it.
+    terrain: tuple[tuple[str, float | None], ...] = ()
 
     def text(self) -> str:
         return ("\ufeff" if self.bom else "") + "\n".join(self.lines)

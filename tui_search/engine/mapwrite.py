@@ -3,7 +3,10 @@
 Saving keeps the file: a map read from a file carries its text (``Grid.source``, a
 :class:`~tui_search.engine.mapsource.MapSource`), and :func:`save_map` writes that text back
 with only the characters of edited cells changed, so comments, the MovingAI header, CRLF
-line ends and a missing final newline all survive.  A save never loses someone's work: it
+line ends and a missing final newline all survive -- a text map's ``; terrain`` table among
+them, and every letter of a terrain table whose cell keeps its cost.  What a format cannot hold
+(a start or goal in a ``.map``; the cost under ``S`` or ``G`` in a text map; a cost no character
+writes) is said by :func:`save_notes`.  A save never loses someone's work: it
 refuses (a MapError subclass the app can ask about) to write a file that would not load, a
 read-only file, one changed on disk since it was read, or one with hard links.
 """
@@ -18,7 +21,8 @@ from tui_search.engine.grid import Grid
 from tui_search.engine.mapfile import parse_map_text
 from tui_search.engine.mapread import MapError, current_stamp, stamp_of
 from tui_search.engine.mapsource import MOVINGAI, TEXT, FileStamp, MapSource
-from tui_search.engine.movingai import movingai_rows
+from tui_search.engine.movingai import movingai_costs, movingai_rows
+from tui_search.engine.terrain import TEXT_OWN, Terrain, comment_table, lost_costs, text_costs
 from tui_search.engine.textmap import text_rows
 
 __all__ = [
@@ -30,6 +34,7 @@ __all__ = [
     "format_text_map",
     "kind_for_path",
     "save_map",
+    "save_notes",
     "save_text_map",
 ]
 
@@ -44,7 +49,9 @@ def _updated(source: MapSource, grid: Grid) -> MapSource:
         raise ValueError("the grid is not the size of the map file")
     w = source.width
     old = [source.lines[i][:w] for i in source.rows]
-    new = text_rows(grid) if source.kind == TEXT else movingai_rows(grid, old)
+    chars = characters(grid, source.kind, source)
+    new = (text_rows(grid, old, chars) if source.kind == TEXT
+           else movingai_rows(grid, old, chars))
     lines = list(source.lines)
     for i, before, after in zip(source.rows, old, new):
         if before != after:
@@ -55,14 +62,56 @@ def _updated(source: MapSource, grid: Grid) -> MapSource:
 def _fresh_source(grid: Grid, kind: str) -> MapSource:
     """A new file for ``grid``: its rows, one per line, ending with a newline (a MovingAI one
     after the ``type octile`` header)."""
+    chars = characters(grid, kind)
     if kind == TEXT:
         header: list[str] = []
-        rows = text_rows(grid)
+        rows = text_rows(grid, None, chars)
     else:
         header = ["type octile", f"height {grid.height}", f"width {grid.width}", "map"]
-        rows = movingai_rows(grid)
+        rows = movingai_rows(grid, None, chars)
     lines = (*header, *rows, "")
-    return MapSource(kind, lines, range(len(header), len(header) + len(rows)), grid.width)
+    return MapSource(kind, lines, range(len(header), len(header) + len(rows)), grid.width,
+                     terrain=given_table(grid, kind).pairs())
+
+
+def given_table(grid: Grid, kind: str) -> Terrain:
+    """The table given with the grid's file (``--terrain``) that a file of ``kind`` can use:
+    a text map's takes none of the text format's own characters."""
+    pairs = grid.source.terrain if grid.source is not None else ()
+    return Terrain({c: v for c, v in pairs if kind != TEXT or c not in TEXT_OWN}, {})
+
+
+def characters(grid: Grid, kind: str, source: MapSource | None = None
+               ) -> dict[str, float | None]:
+    """Every character a file of ``kind`` for ``grid`` may write, with what it means: the
+    format's own, the table given with the grid's file, and (``source``: the text file being
+    written back) its own comment table."""
+    table = given_table(grid, kind)
+    if kind != TEXT:
+        return movingai_costs(table)
+    if source is not None:
+        table = comment_table(source.lines, "<map>").merged(table)
+    return text_costs(table)
+
+
+def save_notes(grid: Grid, kind: str) -> list[str]:
+    """What a save of ``grid`` in format ``kind`` does not keep, one sentence each (the app
+    shows them beside "Saved"): the cost under a start or goal in a text map (``S`` and ``G``
+    cost 1), and costs no character of the format writes (written as 1)."""
+    notes = []
+    if kind == TEXT:
+        for cell, what in ((grid.start, "start"), (grid.goal, "goal")):
+            if cell is not None and grid.is_free(cell) and grid.cost(cell) != 1.0:
+                notes.append(f"text format: S and G cost 1, so the cost {grid.cost(cell):g} "
+                             f"under the {what} is not kept")
+    if grid.costs is not None:
+        source = grid.source if grid.source is not None and grid.source.kind == kind else None
+        free = [c for c, b in zip(grid.costs, grid.blocked) if not b]
+        lost = lost_costs(free, characters(grid, kind, source), "SG" if kind == TEXT else "")
+        if lost:
+            costs = ", ".join(f"{c:g}" for c in lost)
+            notes.append(f"no character of this format has cost {costs}: written as 1")
+    return notes
 
 
 def kind_for_path(path: str | os.PathLike[str]) -> str:
@@ -135,7 +184,7 @@ def save_map(
     source = format_map(grid, kind)
     text = source.text()
     try:
-        parse_map_text(text, target)
+        parse_map_text(text, target, terrain=given_table(grid, kind))
     except MapError as err:
         raise WouldNotLoad(target, f"cannot save: the file would not open again: {err.message}")
     data = text.encode("utf-8")

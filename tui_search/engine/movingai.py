@@ -3,12 +3,14 @@ a grid, and the grid's rows written as MovingAI cells.
 
 A MovingAI map has a header (``type octile``, ``height``, ``width``, ``map``) and rows of
 ``.``, ``G``, ``S`` (passable) and ``@``, ``O``, ``T``, ``W`` (blocked); it has no start or
-goal.
+goal.  A terrain table (:mod:`tui_search.engine.terrain`, ``--terrain``) gives its letters
+costs or blocks them (``S 3`` a swamp of cost 3, ``T 5`` trees one may walk through, at 5); a
+letter it does not name is passable or blocked as above.
 """
 
 from __future__ import annotations
 
-import re
+from array import array
 
 from tui_search.engine.grid import Grid
 from tui_search.engine.mapread import (
@@ -21,18 +23,30 @@ from tui_search.engine.mapread import (
     split_lines,
 )
 from tui_search.engine.mapsource import MOVINGAI, MapSource
+from tui_search.engine.terrain import EMPTY, Alphabet, Terrain, write_row
 
 __all__ = ["movingai_rows", "parse_movingai_map"]
 
-_MAI_BAD = re.compile(r"[^.GS@OTW]")
 _MAI_BLOCK = block_table("@OTW")
+#: MovingAI's characters and what they mean without a table (None: blocked).
+MAI_OWN: dict[str, float | None] = {".": 1.0, "G": 1.0, "S": 1.0, "@": None, "O": None,
+                                    "T": None, "W": None}
 
 
-def parse_movingai_map(text: str, path: str = "<map>") -> Grid:
-    """Parse a MovingAI map: ``.``, ``G``, ``S`` passable; ``@``, ``O``, ``T``, ``W`` blocked.
+def movingai_costs(table: Terrain) -> dict[str, float | None]:
+    """Every character of a MovingAI map with this table: its own and the table's."""
+    return {**MAI_OWN, **table.costs}
+
+
+def parse_movingai_map(text: str, path: str = "<map>", terrain: Terrain | None = None) -> Grid:
+    """Parse a MovingAI map: ``.``, ``G``, ``S`` passable; ``@``, ``O``, ``T``, ``W`` blocked
+    (unless the ``terrain`` table says otherwise).
 
     MovingAI maps carry no start or goal, so both are None.
     """
+    table = terrain or EMPTY
+    cells_of = Alphabet(movingai_costs(table))
+    costs: array[float] | None = None
     bom, split = split_lines(text)
     raw = tuple(split)  # kept in the grid's source: one copy of the lines, not two
     del split
@@ -87,36 +101,51 @@ def parse_movingai_map(text: str, path: str = "<map>") -> Grid:
             raise MapError(path, f"more rows than the height ({height}) in the header", number)
         if not line:
             raise MapError(path, "blank line inside the map", number)
-        bad = first_bad(line, _MAI_BAD)
+        bad = first_bad(line, cells_of.bad)
         if bad >= 0:
             raise MapError(path, f"unknown cell character {line[bad]!r}", number, bad + 1)
         if len(line) != width:
             raise MapError(path, f"row has {len(line)} cells, expected {width}", number)
-        blocked += line.encode("ascii").translate(_MAI_BLOCK)
+        costs = cells_of.add_row(line, blocked, costs)
     if last - i < height:
         found = f"{last - i} row" + ("" if last - i == 1 else "s")
         raise MapError(
             path, f"the header says height {height} but the map has {found}", height_line
         )
-    source = MapSource(MOVINGAI, raw, range(i, last), width, bom)
-    return Grid(width, height, blocked, source=source)
+    source = MapSource(MOVINGAI, raw, range(i, last), width, bom, terrain=table.pairs())
+    return Grid(width, height, blocked, source=source, costs=costs)
 
 
-def movingai_rows(grid: Grid, old_rows: list[str] | None = None) -> list[str]:
-    """The grid's rows as MovingAI cells.  With the rows of the file it was read from, every
-    cell whose passability did not change keeps its letter (``T`` stays a tree, ``S`` swamp);
-    a newly blocked cell becomes ``@``, a freed one ``.``."""
+def movingai_rows(grid: Grid, old_rows: list[str] | None = None,
+                  chars: dict[str, float | None] | None = None) -> list[str]:
+    """The grid's rows as MovingAI cells (``chars``: the format's characters with the map's
+    table).  With the rows of the file it was read from, every cell that still means what it
+    did keeps its letter (``T`` stays a tree, ``S`` swamp); a newly blocked cell becomes
+    ``@``, a freed one ``.``, a cell of a new cost the table's letter of that cost."""
     w = grid.width
+    chars = chars or MAI_OWN
+    block = Alphabet(chars).block
+    costs = grid.costs
     out = []
     for y in range(grid.height):
         blocked = grid.row(y)
         old = old_rows[y] if old_rows is not None else None
-        if old is not None and old.encode("ascii").translate(_MAI_BLOCK) == blocked:
-            out.append(old)
-            continue
-        cells = list(old) if old is not None else ["."] * w
-        for x in range(w):
-            if old is None or _MAI_BLOCK[ord(cells[x])] != blocked[x]:
-                cells[x] = "@" if blocked[x] else "."
-        out.append("".join(cells))
+        row_costs = costs[y * w : (y + 1) * w] if costs is not None else None
+        if row_costs is None or row_costs.count(1.0) == w:  # every cell costs 1
+            if old is None:
+                out.append(blocked.translate(_MAI_WRITE).decode("ascii"))
+                continue
+            if old.isascii() and old.encode("ascii").translate(block) == blocked and (
+                    not _costed_in(old, chars)):
+                out.append(old)
+                continue
+        out.append(write_row(blocked, row_costs or [1.0] * w, old, chars, "@", endpoints=""))
     return out
+
+
+#: A plain row's cells: ``.`` free, ``@`` blocked.
+_MAI_WRITE = bytes.maketrans(b"\x00\x01", b".@")
+
+
+def _costed_in(row: str, chars: dict[str, float | None]) -> bool:
+    return any(chars.get(c) not in (None, 1.0) for c in set(row))

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from typing import NamedTuple
 
-from tui_search.engine.grid import Cell, path_cost
+from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.semantics import Semantics
 
 
@@ -22,6 +22,9 @@ class Outcome(NamedTuple):
     generated: int  # pushes, the start (every iteration's root) included
     max_frontier: int
     gave_up: bool  # stopped at the step limit before the search ended
+    #: The path's cost: each move's length (1 straight, sqrt(2) diagonal) times the cost of
+    #: the cell it enters (:meth:`Grid.path_cost <tui_search.engine.grid.Grid.path_cost>`).
+    cost: float | None
 
     @property
     def found(self) -> bool:
@@ -37,7 +40,7 @@ class Outcome(NamedTuple):
         """Moves on the path."""
         return None if self.moves is None else len(self.moves)
 
-    @property
-    def cost(self) -> float | None:
-        """Octile cost of the path: 1 per straight move, sqrt(2) per diagonal."""
-        return None if self.moves is None else path_cost(self.moves)
+
+def cost_of(grid: Grid, path: list[Cell] | None) -> float | None:
+    """:attr:`Outcome.cost` of ``path`` on ``grid`` (None: no path)."""
+    return None if path is None else grid.path_cost(path)

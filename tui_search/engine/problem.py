@@ -3,11 +3,13 @@
 Cells are indices into a copy of the map padded with a border of walls, so the loops need no
 bounds checks: ``p = (y + 1) * (width + 2) + (x + 1)``.  The move order and the corner rule live
 here too, so no loop of :mod:`tui_search.engine.loops` tests corners: a cell's legal moves are
-``moves[mask[p]]``.
+``moves[mask[p]]``.  A map with terrain gives its costs padded alike (``terrain[p]``; None on a
+map whose every cell costs 1, which the loops then never read) and its lowest cell cost.
 """
 
 from __future__ import annotations
 
+from array import array
 from functools import cached_property
 
 from tui_search.engine.grid import DELTAS, DIR_CODE, Grid
@@ -43,6 +45,14 @@ class Problem:
             row = (y + 1) * stride + 1
             walls[row : row + w] = grid.blocked[y * w : (y + 1) * w]
         self.walls = walls
+        self.terrain: array[float] | None = None  # None: every cell costs 1
+        self.lowest = grid.lowest_cost()
+        if grid.costs is not None:
+            terrain = array("d", [1.0]) * len(walls)
+            for y in range(h):
+                row = (y + 1) * stride + 1
+                terrain[row : row + w] = grid.costs[y * w : (y + 1) * w]
+            self.terrain = terrain
         self.start = self.pad(grid.start)
         self.goal = self.pad(grid.goal)
         self.semantics = semantics

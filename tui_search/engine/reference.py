@@ -23,8 +23,9 @@ which entries taken off are thrown away (:class:`Visited`, :class:`Cheapest`,
             push the child; if goal test on generate and it is the goal: found
 
 BFS takes the oldest entry, DFS the newest.  Uniform-cost, greedy best-first and A* take the
-entry of lowest priority (g, h or g + h; ties in the order pushed).  A move costs 1 straight
-and sqrt(2) diagonally; a cell is pushed again whenever it is reached with a lower g than its
+entry of lowest priority (g, h or g + h; ties in the order pushed).  A move costs its length
+(1 straight, sqrt(2) diagonally) times the cost of the cell it enters (1 on a plain map), and
+the estimates h are scaled by the map's lowest cell cost; a cell is pushed again whenever it is reached with a lower g than its
 best so far (lower by more than ``CHEAPER_BY``, 1e-9: the floats' rounding is no cheaper path)
 (even after it was expanded: it is *re-opened*), and an entry taken off with a g above its
 cell's best is *stale*: a discarded step.  Tree search keeps no best g: a successor is skipped
@@ -49,8 +50,8 @@ from typing import Protocol
 from tui_search.engine.algorithms import Algorithm
 from tui_search.engine.algorithms import Frontier as FrontierKind
 from tui_search.engine.grid import DELTAS, Cell, Grid, move_cost
-from tui_search.engine.heuristics import CHEAPER_BY, HEURISTICS, priority_of
-from tui_search.engine.outcome import Outcome
+from tui_search.engine.heuristics import CHEAPER_BY, heuristic_for, priority_of
+from tui_search.engine.outcome import Outcome, cost_of
 from tui_search.engine.semantics import Semantics
 
 
@@ -63,7 +64,7 @@ class Node:
     parent: Node | None
     move: str | None  # the direction it was reached by (None for a root)
     depth: int
-    g: float = 0.0  # the path's cost from the root: 1 a straight move, sqrt(2) a diagonal
+    g: float = 0.0  # the path's cost from the root: each move's length times its cell's cost
 
     def path(self) -> list[Cell]:
         """Cells from the root down to this node."""
@@ -268,8 +269,9 @@ class ReferenceSearch:
         # Per cell, a bit per move of the order that is legal from it (-1: not worked out
         # yet): the moves never change during a search, and two bytes a cell keep it small.
         self._legal_bits = array("h", [-1]) * (grid.width * grid.height)
-        # A move costs 1 straight and sqrt(2) diagonally, to the searches ordered by cost; BFS,
-        # DFS and iterative deepening count moves, not costs: their g stays 0.
+        # A move costs its length (1 straight, sqrt(2) diagonally) times the cost of the cell
+        # it enters, to the searches ordered by cost; BFS, DFS and iterative deepening count
+        # moves, not costs: their g stays 0.
         self._order = [(move, DELTAS[move], move_cost(move) if algorithm.weighted else 0.0)
                        for move in semantics.order]
 
@@ -282,7 +284,7 @@ class ReferenceSearch:
         if self.algorithm.priority is not None:
             goal = self.grid.goal
             assert goal is not None  # checked in __init__
-            heuristic = HEURISTICS[self.semantics.heuristic]
+            heuristic = heuristic_for(self.semantics.heuristic, self.grid.lowest_cost())
             return PriorityQueue(priority_of(self.algorithm.priority, heuristic, goal))
         return Queue() if self.algorithm.frontier is FrontierKind.FIFO else Stack()
 
@@ -298,7 +300,7 @@ class ReferenceSearch:
     # -- moves -------------------------------------------------------------------------------
     def _legal(self, cell: Cell) -> list[tuple[str, Cell, float]]:
         """The legal moves from ``cell`` (``Grid.neighbours``), in order, with their cells and
-        costs."""
+        costs (the move's length times the cost of the cell it enters)."""
         x, y = cell
         i = y * self.grid.width + x
         bits = self._legal_bits[i]
@@ -307,8 +309,9 @@ class ReferenceSearch:
                 cell, self.semantics.order, self.semantics.corners)}
             bits = sum(1 << j for j, (move, _, _) in enumerate(self._order) if move in legal)
             self._legal_bits[i] = bits
-        return [(move, (x + dx, y + dy), cost)
-                for j, (move, (dx, dy), cost) in enumerate(self._order) if bits >> j & 1]
+        enter = self.grid.cost
+        return [(move, (x + dx, y + dy), length * enter((x + dx, y + dy)))
+                for j, (move, (dx, dy), length) in enumerate(self._order) if bits >> j & 1]
 
     def _push(self, frontier: Frontier, reached: Reached, cell: Cell, parent: Node | None,
               move: str | None, g: float) -> Node:
@@ -405,16 +408,18 @@ def stream(
         if on_step is not None:
             on_step(step)
     goal = None if gave_up else search.goal
+    path = goal.path() if goal else None
     return Outcome(
         algorithm=algorithm.key,
         semantics=semantics.for_algorithm(algorithm),
-        path=goal.path() if goal else None,
+        path=path,
         moves=goal.moves() if goal else None,
         expanded=expanded,
         discarded=discarded,
         generated=generated,
         max_frontier=peak,
         gave_up=gave_up,
+        cost=cost_of(grid, path),
     )
 
 

@@ -6,7 +6,9 @@ Text format::
     S#...#
     .#.##G
 
-``.`` free, ``#`` obstacle, ``S`` start, ``G`` goal.  A first row that is really another
+``.`` free, ``#`` obstacle, ``S`` start, ``G`` goal; ``1``-``9`` free cells of that cost, and
+the letters of a terrain table (:mod:`tui_search.engine.terrain`: ``--terrain FILE``, or the
+map's own ``; terrain f 5`` comment lines).  A first row that is really another
 format's first line (a scenario file, a MovingAI header without its ``type`` line) is named
 as such instead of as a bad cell.
 """
@@ -17,23 +19,33 @@ import re
 from array import array
 
 from tui_search.engine.grid import Cell, Grid
-from tui_search.engine.mapread import MapError, block_table, first_bad, quoted, split_lines
+from tui_search.engine.mapread import MapError, first_bad, quoted, split_lines
 from tui_search.engine.mapsource import TEXT, MapSource
+from tui_search.engine.terrain import (
+    EMPTY,
+    Alphabet,
+    Terrain,
+    comment_table,
+    text_costs,
+    write_row,
+)
 
 __all__ = ["parse_text_map", "text_rows"]
 
-_TEXT_BAD = re.compile(r"[^.#SG]")
-_TEXT_BLOCK = block_table("#")
-
-
 def parse_text_map(
-    text: str, path: str = "<map>", *, need_start: bool = True, need_goal: bool = True
+    text: str, path: str = "<map>", *, need_start: bool = True, need_goal: bool = True,
+    terrain: Terrain | None = None,
 ) -> Grid:
     """Parse our text format; the map must have exactly one ``S`` and one ``G`` (at most
-    one where ``need_start``/``need_goal`` is false)."""
+    one where ``need_start``/``need_goal`` is false).  ``terrain``: a table from elsewhere
+    (``--terrain``), which wins over the map's own comment table where both name a letter."""
     bom, split = split_lines(text)
     raw = tuple(split)  # kept in the grid's source: one copy of the lines, not two
     del split
+    table = comment_table(raw, path).merged(terrain or EMPTY)
+    table.check_text()
+    cells_of = Alphabet(text_costs(table))
+    costs: array[float] | None = None
     # Compact, as a big map has millions of rows: the cells, and where each row is in ``raw``.
     blocked = bytearray()
     row_lines = array("q")
@@ -51,7 +63,7 @@ def parse_text_map(
             continue
         if blank_line is not None:
             raise MapError(path, "blank line inside the map", blank_line)
-        bad = first_bad(line, _TEXT_BAD)
+        bad = first_bad(line, cells_of.bad)
         if bad >= 0:
             if not height:
                 _check_other_format(line, number, path)
@@ -78,7 +90,7 @@ def parse_text_map(
                 number,
                 x + 1,
             )
-        blocked += line.encode("ascii").translate(_TEXT_BLOCK)
+        costs = cells_of.add_row(line, blocked, costs)
         row_lines.append(number - 1)
         height += 1
     if not height:
@@ -89,8 +101,8 @@ def parse_text_map(
         raise MapError(path, "no goal 'G' in the map")
     first = row_lines[0]
     row_index = range(first, first + height) if row_lines[-1] == first + height - 1 else row_lines
-    source = MapSource(TEXT, raw, row_index, width, bom)
-    return Grid(width, height, blocked, cells.get("S"), cells.get("G"), source)
+    source = MapSource(TEXT, raw, row_index, width, bom, terrain=(terrain or EMPTY).pairs())
+    return Grid(width, height, blocked, cells.get("S"), cells.get("G"), source, costs)
 
 
 _SCEN_START = re.compile(r"version(?:\s|$)", re.IGNORECASE)
@@ -109,18 +121,34 @@ def _check_other_format(line: str, number: int, path: str) -> None:
         )
 
 
-def text_rows(grid: Grid) -> list[str]:
-    """The grid's rows in the text format: ``.`` free, ``#`` obstacle, ``S`` and ``G``.
+def text_rows(grid: Grid, old_rows: list[str] | None = None,
+              chars: dict[str, float | None] | None = None) -> list[str]:
+    """The grid's rows in the text format: ``.`` free, ``#`` obstacle, ``S`` and ``G``, and a
+    costed cell's digit or letter (``chars``: the format's characters with the map's table).
+    With the rows of the file it was read from, a cell that still means what it did keeps its
+    character (a table's letter stays).
 
     A grid without a start or goal has no ``S``/``G``; such a file loads only with
     ``--start``/``--goal`` overrides.  A start or goal on an obstacle is written as
-    ``S``/``G``, so it comes back free.
+    ``S``/``G``, so it comes back free; on a costed cell, so it comes back at cost 1.
     """
     w = grid.width
+    chars = chars or text_costs(EMPTY)
     text = bytes(grid.blocked).translate(bytes.maketrans(b"\x00\x01", b".#")).decode("ascii")
     rows = [text[y * w : (y + 1) * w] for y in range(grid.height)]
+    costs = grid.costs
+    for y in range(grid.height):
+        old = old_rows[y] if old_rows is not None else None
+        row_costs = costs[y * w : (y + 1) * w] if costs is not None else None
+        plain_costs = row_costs is None or row_costs.count(1.0) == w
+        if plain_costs and (old is None or _PLAIN_ROW.fullmatch(old)):
+            continue
+        rows[y] = write_row(grid.row(y), row_costs or [1.0] * w, old, chars, "#")
     for cell, letter in ((grid.start, "S"), (grid.goal, "G")):
         if cell is not None and grid.in_bounds(cell):
             x, y = cell
             rows[y] = rows[y][:x] + letter + rows[y][x + 1 :]
     return rows
+
+
+_PLAIN_ROW = re.compile(r"[.#SG]*")

@@ -36,6 +36,7 @@ from tui_search.engine.mapwrite import (
     ReadOnlyFile,
     kind_for_path,
     save_map,
+    save_notes,
 )
 from tui_search.tui.file_access import FileAccess, one_line
 from tui_search.tui.save_questions import Done, ask_in_place, changed_in_prompt, changed_on_ctrl_s
@@ -134,9 +135,11 @@ class FileCommands:
         except (OSError, ValueError) as exc:  # what no name may do: end the app
             done(MapError(os.fsdecode(path), f"cannot save: {exc}"))
             return
+        notes = ([NO_ENDPOINTS_IN_MAP] if kind == MOVINGAI else []) + save_notes(
+            self.host.session.grid, kind)
         self.host.session.grid.source = source
         self.host.session.saved(Path(path))
-        note = f" ({NO_ENDPOINTS_IN_MAP})" if kind == MOVINGAI else ""
+        note = f" ({'; '.join(notes)})" if notes else ""
         self.notify(f"Saved {describe_name(str(path))}{note}", timeout=6 if note else 3,
                     markup=False)
         self.host.show_map()

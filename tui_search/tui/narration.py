@@ -13,7 +13,7 @@ from weakref import WeakKeyDictionary
 
 from tui_search.engine.algorithms import get_algorithm
 from tui_search.engine.diagnose import blocking_rule
-from tui_search.engine.grid import Cell, path_cost
+from tui_search.engine.grid import Cell
 from tui_search.engine.run import Run
 from tui_search.tui.code_trace import line_notes
 
@@ -189,7 +189,7 @@ def result_text(run: Run) -> str:
     if not run.found:
         return "no path"
     moves = run.moves() or []
-    cost = path_cost(moves)
+    cost = run.grid.path_cost(run.path() or [])
     text = f"path: {len(moves)} moves, cost {cost:.2f}"
     lowest = lowest_cost(run)
     if lowest is not None:

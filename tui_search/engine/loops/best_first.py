@@ -14,8 +14,9 @@ reached with a lower g than its best so far (by more than
 best is stale: a discarded step ("lazy deletion": nothing is removed from the heap early).
 
 Besides the arrays every loop records, these record ``step_g``: the g of the entry each step
-took off.  An event's g is its generating step's plus its move's cost (1 or sqrt(2), from
-:func:`_costed_moves`): the very float sum ``g + cost`` the loop pushed, so nothing is stored per
+took off.  An event's g is its generating step's plus its move's cost (its length, 1 or
+sqrt(2) from :func:`_costed_moves`, times the cost of the cell it enters on a map with terrain,
+``problem.terrain``): the very float sum ``g + cost`` the loop pushed, so nothing is stored per
 event but its cell (a search that pushes five entries an expansion, as A* on an open map, keeps
 36 bytes an expansion where a g an event made it 68).  From it the app shows g, h and f and
 orders its frontier (:meth:`~tui_search.engine.queries.EventTree.gen_g`).
@@ -30,7 +31,7 @@ from struct import pack
 
 from tui_search.engine import heuristics
 from tui_search.engine.grid import DELTAS, SQRT2
-from tui_search.engine.heuristics import CHEAPER_BY, HEURISTICS
+from tui_search.engine.heuristics import CHEAPER_BY, heuristic_for
 from tui_search.engine.loops.tree import _on_path
 from tui_search.engine.problem import Problem
 from tui_search.engine.record import CHUNK, Record
@@ -83,7 +84,8 @@ def best_first(problem: Problem, rec: Record, chunk: int = CHUNK, priority: str 
     goal, start = problem.goal, problem.start
     goal_on_push = goal if problem.goal_test == "generate" else -1
     goal_on_pop = -1 if problem.goal_test == "generate" else goal
-    heuristic = HEURISTICS[problem.semantics.heuristic]
+    heuristic = heuristic_for(problem.semantics.heuristic, problem.lowest)
+    terrain = problem.terrain  # None: every cell costs 1, a move its length
     octile, extra = heuristic is heuristics.octile, heuristics.DIAGONAL_EXTRA
     gy, gx = divmod(goal, stride)
     use_h, use_g = "h" in priority, "g" in priority
@@ -150,9 +152,14 @@ def best_first(problem: Problem, rec: Record, chunk: int = CHUNK, priority: str 
                 # the corner rule refuses most diagonals of a maze
                 if closed[m] or side_a and walls[n + side_a] + walls[n + side_b] >= refused:
                     continue
-                if g + margin >= best[m]:
-                    continue
-                ng = g + cost
+                if terrain is None:
+                    if g + margin >= best[m]:
+                        continue
+                    ng = g + cost
+                else:
+                    ng = g + cost * terrain[m]
+                    if ng + CHEAPER_BY >= best[m]:
+                        continue
                 best[m] = ng
                 if astar_octile:  # inlined: the same float as ng + heuristics.octile(dx, dy)
                     y, x = divmod(m, stride)
@@ -188,7 +195,8 @@ def best_first_tree(problem: Problem, rec: Record, chunk: int = CHUNK, priority:
     refused = _blocked_sides_refused(problem)
     goal, start = problem.goal, problem.start
     test_on_push = problem.goal_test == "generate"
-    heuristic = HEURISTICS[problem.semantics.heuristic]
+    heuristic = heuristic_for(problem.semantics.heuristic, problem.lowest)
+    terrain = problem.terrain
     gy, gx = divmod(goal, stride)
     use_h, use_g = "h" in priority, "g" in priority
 
@@ -224,7 +232,7 @@ def best_first_tree(problem: Problem, rec: Record, chunk: int = CHUNK, priority:
                 continue
             if _on_path(m, e, gen_node, parent):
                 continue
-            ng = g + cost
+            ng = g + (cost if terrain is None else cost * terrain[m])
             heapq.heappush(heap, (key(ng, m), len(gen_node), m, ng))
             gen_node.append(m)
             parent.append(e)

@@ -116,7 +116,8 @@ def _run(core: ModuleType, algorithm: Algorithm, problem: Problem, rec: Record, 
         (rec.gen_node, rec.step_end, rec.step_exp if loop != _QUEUE or lifo else None,
          rec.step_g, rec.discarded, rec.gen_depth, rec.iter_first_step, rec.iter_root,
          rec.iter_limit),
-        problem.goal if on_push else -1, -1 if on_push else problem.goal, len(moves))
+        problem.goal if on_push else -1, -1 if on_push else problem.goal, len(moves),
+        problem.terrain, problem.lowest, CHEAPER_BY)
     while True:
         result = search.advance(chunk)
         if result != _PAUSED:

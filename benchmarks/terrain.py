@@ -1,0 +1,60 @@
+"""Section "terrain" (issue 22): searches that weigh costs on a map with terrain against the
+same searches on the same map with every cell costing 1.
+
+UCS and A* on maze512 (its ``.scen`` row 3, corners never), recorded to the end (``Run(...)``
+and ``advance()``, set-up included) on the core in use, once with seeded random costs 1-9 on
+every free cell and once without costs; and the record's bytes an expansion, which terrain
+does not change (a cost is read from the map, never stored per event).
+"""
+
+from __future__ import annotations
+
+import random
+import sys
+from array import array
+
+from benchmarks.core import MAZE_ROW, NEVER, maze_row, recorded
+from benchmarks.harness import CPU, fmt_time, interleaved, paired, series
+from benchmarks.maps import MAPS, MAZE
+from benchmarks.table import Row, add
+from tui_search.engine.grid import Grid
+from tui_search.engine.loops import compiled
+from tui_search.engine.run import recording_of
+
+
+def with_random_costs(grid: Grid, seed: int = 22) -> Grid:
+    """A copy of ``grid`` whose free cells cost 1 to 9, at random (seeded)."""
+    rng = random.Random(seed)
+    costed = grid.copy()
+    costed.costs = array("d", (float(rng.randint(1, 9)) for _ in range(len(grid.blocked))))
+    return costed
+
+
+def bench_terrain(quick: bool) -> None:
+    print("terrain ...", file=sys.stderr, flush=True)
+    plain = maze_row()
+    if plain is None:
+        add(Row("terrain", MAZE, "skipped", f"not found in {MAPS}"))
+        return
+    costed = with_random_costs(plain)
+    core = compiled.core_name()
+    repeats = 3 if quick else 7
+    for key in ("ucs", "astar"):
+        steps = {name: recorded(g, key, NEVER).recorded
+                 for name, g in (("plain", plain), ("costed", costed))}
+        t = interleaved({"plain": lambda k=key: recorded(plain, k, NEVER),
+                         "costed": lambda k=key: recorded(costed, k, NEVER)}, repeats, CPU)
+        for what, xs in t.items():
+            series(f"terrain maze512 {key} {what}", xs)
+        r = paired(t["costed"], t["plain"])
+        per_step = r * steps["plain"] / steps["costed"]  # the searches differ in length
+        add(Row("terrain", f"maze512 row {MAZE_ROW}, corners never, {key.upper()} with costs "
+                f"1-9 ({steps['costed']:,} steps) vs all 1 ({steps['plain']:,}), {core}; "
+                f"a step {per_step:.2f}x",
+                fmt_time(t["costed"]), f"all 1 {fmt_time(t['plain'])}", r, "≤ 1.2", r <= 1.2))
+        recs = {name: recording_of(recorded(g, key, NEVER)).rec
+                for name, g in (("plain", plain), ("costed", costed))}
+        size = {name: rec.nbytes() / rec.steps for name, rec in recs.items()}
+        add(Row("terrain", f"maze512 {key.upper()} record, bytes an expansion, costs 1-9",
+                f"{size['costed']:.2f} B", f"all 1 {size['plain']:.2f} B",
+                size["costed"] / size["plain"], "≤ 1", size["costed"] <= size["plain"] * 1.0001))
