@@ -24,6 +24,7 @@ from itertools import compress
 from typing import TYPE_CHECKING
 
 from tui_search.engine.algorithms import Frontier
+from tui_search.engine.rebuild import kernels
 
 if TYPE_CHECKING:
     from sortedcontainers import SortedList
@@ -116,9 +117,9 @@ def _open_events(root: int, end: int, expanded: Iterable[Sequence[int]],
     """Hand ``take`` the events ``root .. end - 1`` not in the pieces of ``expanded``, in
     generation order, a piece at a time, yielding the work done by each piece."""
     open_ = bytearray(b"\x01") * (end - root)
+    clear_events = kernels().clear_events
     for piece in expanded:
-        for g in piece:
-            open_[g - root] = 0
+        clear_events(open_, piece, root)
         yield len(piece)
     for lo in range(root, end, PIECE):
         hi = min(lo + PIECE, end)

@@ -35,7 +35,7 @@ CORE_ENV = "TUI_SEARCH_CORE"
 COMPILED, PYTHON = "compiled search core", "Python search core"
 #: The C source, in the order ``setup.py`` hashes it.
 SOURCES = tuple(Path(__file__).resolve().parents[1] / name
-                for name in ("_core.c", "_core_loops.c", "_core.h"))
+                for name in ("_core.c", "_core_loops.c", "_core_position.c", "_core.h"))
 
 # The C loops (_core.h's enum), the heuristics' codes and advance()'s "paused".
 _QUEUE, _IDDFS, _BEST = 0, 1, 2
