@@ -57,7 +57,10 @@ def test_the_c_rebuild_loops_write_what_the_python_ones_write(grid, choice, piec
         for events in expanded_pieces(run, piece):
             kernels.count_expanded(rec.gen_node, events, n_exp)
             kernels.clear_events(flags, events, 0)
-        written.append((n_gen, n_exp, latest, flags))
+        root = rec.iter_root[-1]  # the open events of the last iteration, listed in pieces
+        listed = [kernels.open_events(flags[root:], root, lo, min(lo + piece, end))
+                  for lo in range(root, end, piece)]
+        written.append((n_gen, n_exp, latest, flags, listed))
     assert written[0] == written[1]
 
 
@@ -72,6 +75,10 @@ def test_the_c_rebuild_loops_refuse_an_index_out_of_range() -> None:
         c_kernels.count_expanded(gen_node, range(2), counts)
     with pytest.raises(IndexError):
         c_kernels.clear_events(bytearray(2), array("i", [1, 2]), 0)
+    with pytest.raises(IndexError):
+        c_kernels.open_events(bytearray(2), 1, 0, 2)
+    with pytest.raises(IndexError):
+        c_kernels.open_events(bytearray(2), 0, 0, 3)
     with pytest.raises(TypeError):
         c_kernels.count_expanded(gen_node, array("l", [0]), counts)
 

@@ -127,6 +127,29 @@ static PyObject *clear_events(PyObject *module, PyObject *args) {
     Py_RETURN_NONE;
 }
 
+/* open_events(flags, root, lo, hi): the events g in lo .. hi - 1 whose flags[g - root] is not
+ * 0, in order, as a list. */
+static PyObject *open_events(PyObject *module, PyObject *args) {
+    (void)module;
+    PyObject *o_flags;
+    Py_ssize_t root, lo, hi;
+    if (!PyArg_ParseTuple(args, "Onnn", &o_flags, &root, &lo, &hi)) return NULL;
+    Py_buffer flags;
+    if (PyObject_GetBuffer(o_flags, &flags, PyBUF_SIMPLE) < 0) return NULL;
+    if (hi < lo) hi = lo;
+    if (lo - root < 0 || hi - root > flags.len) { PyBuffer_Release(&flags); return bad_index(); }
+    const unsigned char *f = flags.buf;
+    PyObject *out = PyList_New(0);
+    for (Py_ssize_t g = lo; out && g < hi; g++) {
+        if (!f[g - root]) continue;
+        PyObject *event = PyLong_FromSsize_t(g);
+        if (!event || PyList_Append(out, event) < 0) Py_CLEAR(out);
+        Py_XDECREF(event);
+    }
+    PyBuffer_Release(&flags);
+    return out;
+}
+
 PyMethodDef core_position_functions[] = {
     {"count_generated", count_generated, METH_VARARGS,
      "count_generated(gen_node, lo, hi, n_gen, latest): each event's cell counted, in order"},
@@ -134,5 +157,7 @@ PyMethodDef core_position_functions[] = {
      "count_expanded(gen_node, events, n_exp): each expanded event's cell counted"},
     {"clear_events", clear_events, METH_VARARGS,
      "clear_events(flags, events, root): flags[g - root] = 0 for each event g"},
+    {"open_events", open_events, METH_VARARGS,
+     "open_events(flags, root, lo, hi): the events g in lo .. hi - 1 with flags[g - root] set"},
     {NULL}
 };

@@ -184,7 +184,7 @@ class Position:
                  + frontier.rebuild_work(root, end, n_exp_events))
         done = 0.0
         n_gen, n_exp, latest = array("i"), array("i"), array("i")
-        count_generated, count_expanded, _ = self._kernels
+        loops = self._kernels
         for counters, fill in ((n_gen, 0), (n_exp, 0), (latest, -1)):
             for lo in range(0, size, cells):
                 counters.extend(array("i", [fill]) * min(cells, size - lo))
@@ -192,7 +192,7 @@ class Position:
                 yield done / total
         gen_node = rec.gen_node
         for lo in range(root, end, piece):
-            count_generated(gen_node, lo, min(lo + piece, end), n_gen, latest)
+            loops.count_generated(gen_node, lo, min(lo + piece, end), n_gen, latest)
             done += 2 * min(piece, end - lo)
             yield done / total
 
@@ -204,7 +204,7 @@ class Position:
         for lo in range(first, last + 1, piece):
             hi = min(lo + piece, last + 1)
             events = self._expanded_events(lo, hi - 1)
-            count_expanded(gen_node, events, n_exp)
+            loops.count_expanded(gen_node, events, n_exp)
             for s in discarded[bisect_left(discarded, lo) : bisect_left(discarded, hi)]:
                 n_exp[gen_node[step_exp[s]]] -= 1  # taken off, but not expanded
             done += len(events)

@@ -1,5 +1,6 @@
 """The bulk loops of a long jump's rebuild (``end``): each event's cell counted, each
-expanded event's cell counted, events struck off a frontier's list of open ones.
+expanded event's cell counted, events struck off a frontier's flags of open ones, and the
+open ones listed.
 
 A position (:mod:`~tui_search.engine.position`) and the frontier models
 (:mod:`~tui_search.engine.frontier`) rebuild in pieces through these three loops.  When the
@@ -11,6 +12,7 @@ from __future__ import annotations
 
 from array import array
 from collections.abc import Callable, Sequence
+from itertools import compress
 from typing import NamedTuple
 
 from tui_search.engine.loops.compiled import selected
@@ -38,15 +40,21 @@ def clear_events(flags: bytearray, events: Sequence[int], root: int) -> None:
         flags[g - root] = 0
 
 
+def open_events(flags: bytearray, root: int, lo: int, hi: int) -> list[int]:
+    """The events ``g`` in ``lo .. hi - 1`` whose ``flags[g - root]`` is set, in order."""
+    return list(compress(range(lo, hi), flags[lo - root : hi - root]))
+
+
 class Kernels(NamedTuple):
-    """The three loops, from one core."""
+    """The four loops, from one core."""
 
     count_generated: Callable[[array[int], int, int, array[int], array[int]], None]
     count_expanded: Callable[[array[int], Sequence[int], array[int]], None]
     clear_events: Callable[[bytearray, Sequence[int], int], None]
+    open_events: Callable[[bytearray, int, int, int], list[int]]
 
 
-PYTHON = Kernels(count_generated, count_expanded, clear_events)
+PYTHON = Kernels(count_generated, count_expanded, clear_events, open_events)
 
 
 def kernels() -> Kernels:
@@ -54,4 +62,5 @@ def kernels() -> Kernels:
     core = selected()[0]
     if core is None:
         return PYTHON
-    return Kernels(core.count_generated, core.count_expanded, core.clear_events)
+    return Kernels(core.count_generated, core.count_expanded, core.clear_events,
+                   core.open_events)
