@@ -97,3 +97,30 @@ def test_a_rebuild_lands_on_the_same_state_under_either_core(grid, choice, k, pi
                 pass
             states.append(snapshot(run))
     assert states[0] == states[1]
+
+
+@checks
+@given(random_grids(max_side=7), semantics())
+def test_the_c_walk_up_the_parents_is_the_python_one(grid, choice) -> None:
+    """``ancestors`` of every event (the path, the tree panel's chain) under either core."""
+    key, sem = choice
+    chains, moves = [], []
+    for core in ("python", "compiled"):
+        with using_core(core):
+            run = Run(grid, key, sem, LIMIT)
+            run.advance()
+            chains.append([run.nodes.ancestors(g) for g in range(-1, run.now.generated)])
+            moves.append(run.moves())
+    assert chains[0] == chains[1] and moves[0] == moves[1]
+    if moves[0] is not None:  # each move the one gen_dir gives the event it reached
+        assert moves[0] == [run.nodes.move(g) for g in run.nodes.path()[1:]]
+
+
+def test_the_c_walk_refuses_a_record_out_of_range() -> None:
+    core = pytest.importorskip("tui_search.engine._core")
+    with pytest.raises(IndexError):
+        core.ancestors(array("i", [1, 3]), None, 0, 5)
+    with pytest.raises(IndexError):
+        core.ancestors(array("i", [1, 3]), array("i", [-1]), 0, 2)
+    assert core.ancestors(array("i", [1, 3]), None, 0, 2) == [0, 2]
+    assert core.ancestors(array("i", [1]), None, 0, -1) == []

@@ -1,9 +1,10 @@
-/* The compiled core's part of a long jump: the bulk loops of a position's rebuild
- * (tui_search/engine/rebuild.py holds their Python twins, and tests/engine holds the two equal,
- * array for array).  Each takes the record's gen_node and a position's per-cell counters as
- * int arrays (any buffer of C ints) and does one piece of the rebuild; events are given as an
- * int array or a range.  Every index is checked: a bad one raises IndexError, nothing is
- * written out of bounds. */
+/* The compiled core's part of reading a record: the bulk loops of a position's rebuild (a long
+ * jump; tui_search/engine/rebuild.py holds their Python twins) and the walk up an event's
+ * parents (EventTree.ancestors in tui_search/engine/queries.py); tests/engine holds each equal
+ * to its Python twin, array for array.  They take the record's arrays and a position's
+ * per-cell counters as int arrays (any buffer of C ints); events are given as an int array or
+ * a range.  Every index is checked: a bad one raises IndexError, nothing is written out of
+ * bounds. */
 #include "_core.h"
 
 typedef struct { Py_buffer view; int *a; Py_ssize_t n; } Ints;
@@ -150,6 +151,42 @@ static PyObject *open_events(PyObject *module, PyObject *args) {
     return out;
 }
 
+/* ancestors(step_end, step_exp, root, g): the events from root down to g, each the parent of
+ * the next: the event expanded (step_exp[k], or k - 1 where step_exp is None: a queue's) by
+ * the step k that generated it, the first k with step_end[k] > g. */
+static PyObject *ancestors(PyObject *module, PyObject *args) {
+    (void)module;
+    PyObject *o_end, *o_exp;
+    Py_ssize_t root, g;
+    if (!PyArg_ParseTuple(args, "OOnn", &o_end, &o_exp, &root, &g)) return NULL;
+    PyObject *chain = PyList_New(0);
+    if (!chain || g < 0) return chain;
+    Ints end, exp = {0};
+    if (ints(o_end, &end, 0) < 0) { Py_DECREF(chain); return NULL; }
+    if (o_exp != Py_None && ints(o_exp, &exp, 0) < 0) {
+        PyBuffer_Release(&end.view); Py_DECREF(chain); return NULL;
+    }
+    int ok = 1;
+    for (;;) {
+        PyObject *event = PyLong_FromSsize_t(g);
+        if (!event || PyList_Append(chain, event) < 0) { Py_XDECREF(event); ok = -1; break; }
+        Py_DECREF(event);
+        if (g <= root) { ok = g == root; break; }
+        Py_ssize_t lo = 0, hi = end.n;  /* the first k with end[k] > g */
+        while (lo < hi) {
+            Py_ssize_t mid = lo + (hi - lo) / 2;
+            if (end.a[mid] > g) hi = mid; else lo = mid + 1;
+        }
+        if (lo >= end.n || lo < 1 || (o_exp != Py_None && lo >= exp.n)) { ok = 0; break; }
+        g = o_exp == Py_None ? lo - 1 : exp.a[lo];
+    }
+    PyBuffer_Release(&end.view);
+    if (o_exp != Py_None) PyBuffer_Release(&exp.view);
+    if (ok == 1 && PyList_Reverse(chain) == 0) return chain;
+    Py_DECREF(chain);
+    return ok ? NULL : bad_index();
+}
+
 PyMethodDef core_position_functions[] = {
     {"count_generated", count_generated, METH_VARARGS,
      "count_generated(gen_node, lo, hi, n_gen, latest): each event's cell counted, in order"},
@@ -159,5 +196,7 @@ PyMethodDef core_position_functions[] = {
      "clear_events(flags, events, root): flags[g - root] = 0 for each event g"},
     {"open_events", open_events, METH_VARARGS,
      "open_events(flags, root, lo, hi): the events g in lo .. hi - 1 with flags[g - root] set"},
+    {"ancestors", ancestors, METH_VARARGS,
+     "ancestors(step_end, step_exp, root, g): the events from root down to g"},
     {NULL}
 };
