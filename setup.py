@@ -4,7 +4,7 @@ package's metadata is in pyproject.toml).
 The extension is optional: where it does not build (no C compiler) ``pip install`` warns and
 the app runs its Python search loops (:mod:`tui_search.engine.loops.compiled` says which core
 runs).  The build embeds the source's SHA-256, so an editable install whose C source changed since
-is seen as stale (the hash of its three files, as
+is seen as stale (the hash of its four files, as
 :func:`tui_search.engine.loops.compiled.source_hash` computes it).  Floats must sum as Python's do: no contraction into fused
 multiply-adds (``-ffp-contract=off``; ``/fp:strict`` under MSVC).
 """
@@ -19,7 +19,7 @@ from setuptools.command.build_ext import build_ext
 
 ENGINE = Path(__file__).parent / "tui_search" / "engine"
 #: The C source, in the order hashed; the header last (it is no compiled source).
-SOURCES = ("_core.c", "_core_loops.c", "_core.h")
+SOURCES = ("_core.c", "_core_loops.c", "_core_position.c", "_core.h")
 
 
 class BuildExt(build_ext):
@@ -36,8 +36,8 @@ class BuildExt(build_ext):
 digest = hashlib.sha256(b"".join((ENGINE / name).read_bytes() for name in SOURCES)).hexdigest()
 setup(
     ext_modules=[Extension("tui_search.engine._core",
-                           [f"tui_search/engine/{name}" for name in SOURCES[:2]],
-                           depends=[f"tui_search/engine/{SOURCES[2]}"], optional=True,
+                           [f"tui_search/engine/{name}" for name in SOURCES[:-1]],
+                           depends=[f"tui_search/engine/{SOURCES[-1]}"], optional=True,
                            define_macros=[("CORE_SOURCE_HASH", f'"{digest}"')])],
     cmdclass={"build_ext": BuildExt},
 )

@@ -14,7 +14,8 @@ The peers (``pip install -e .[bench]``: pathfinding, networkx, scipy) are option
 gives a "not installed" row.  See benchmarks/README.md for what each row means.
 
 This file is the entry point only: each section lives in its own module of this package
-(engine.py, choices.py, informed.py, jump.py, step.py, startup.py, class_load.py, terrain.py), on the shared table.py, harness.py and maps.py.
+(core.py, fallback.py, engine.py, choices.py, informed.py, jump.py, step.py, startup.py,
+class_load.py, terrain.py), on the shared table.py, harness.py and maps.py.
 """
 
 from __future__ import annotations
@@ -38,6 +39,7 @@ from benchmarks.class_load import bench_class_load
 from benchmarks.compare import bench_compare
 from benchmarks.core import bench_core
 from benchmarks.engine import bench_engine
+from benchmarks.fallback import bench_fallback
 from benchmarks.harness import NOISE, med
 from benchmarks.informed import bench_informed
 from benchmarks.jump import bench_jump
@@ -47,9 +49,10 @@ from benchmarks.table import ROWS, Row, add, print_table
 from benchmarks.terrain import bench_terrain
 
 #: The sections, in the order they run and print.
-SECTIONS = {"core": bench_core, "engine": bench_engine, "choices": bench_choices,
-            "informed": bench_informed, "jump": bench_jump, "step": bench_step, "compare": bench_compare,
-            "startup": bench_startup, "class_load": bench_class_load, "terrain": bench_terrain}
+SECTIONS = {"core": bench_core, "fallback": bench_fallback, "engine": bench_engine,
+            "choices": bench_choices, "informed": bench_informed, "jump": bench_jump,
+            "step": bench_step, "compare": bench_compare, "startup": bench_startup,
+            "class_load": bench_class_load, "terrain": bench_terrain}
 
 
 def main(argv: list[str] | None = None) -> int:

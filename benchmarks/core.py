@@ -31,7 +31,7 @@ from tui_search.engine.heuristics import DIAGONAL_EXTRA
 from tui_search.engine.loops import compiled
 from tui_search.engine.loops.best_first import _costed_moves
 from tui_search.engine.problem import Problem
-from tui_search.engine.run import Run
+from tui_search.engine.run import Run, recording_of
 from tui_search.engine.semantics import Semantics
 
 FLOOR_SOURCE = Path(__file__).with_name("floor.c")
@@ -149,7 +149,7 @@ def bench_record_memory() -> None:
         for core in ("python", "compiled"):
             os.environ[compiled.CORE_ENV] = core
             compiled.selected.cache_clear()
-            rec = recorded(g, key, Semantics()).recording.rec
+            rec = recording_of(recorded(g, key, Semantics())).rec
             per_step[core] = rec.nbytes() / rec.steps
         os.environ.pop(compiled.CORE_ENV, None)
         compiled.selected.cache_clear()

@@ -19,10 +19,12 @@ def first_frame(argv: list[str], timeout: float = 60.0) -> float:
     return first_frame_times(argv, timeout)[0]
 
 
-def first_frame_times(argv: list[str], timeout: float = 60.0) -> tuple[float, float]:
+def first_frame_times(argv: list[str], timeout: float = 60.0,
+                      env: dict[str, str] | None = None) -> tuple[float, float]:
     """``first_frame``'s seconds, and the CPU seconds (user + system) the process had used when
     it was killed just after that frame: on a shared machine with more runnable processes than
-    CPUs the wall clock also counts the waits for a CPU, the CPU time does not."""
+    CPUs the wall clock also counts the waits for a CPU, the CPU time does not.  ``env``: more
+    environment variables for the process."""
     import fcntl
     import struct
     import termios
@@ -30,7 +32,8 @@ def first_frame_times(argv: list[str], timeout: float = 60.0) -> tuple[float, fl
     cols, rows = TERMINAL
     master, slave = os.openpty()
     fcntl.ioctl(slave, termios.TIOCSWINSZ, struct.pack("HHHH", rows, cols, 0, 0))
-    env = {k: v for k, v in os.environ.items() if not k.startswith("TEXTUAL")}
+    extra, env = env or {}, {k: v for k, v in os.environ.items() if not k.startswith("TEXTUAL")}
+    env.update(extra)
     env.update(TERM="xterm-256color", COLORTERM="truecolor", COLUMNS=str(cols), LINES=str(rows))
     marker = f"\x1b[{rows};1H".encode()
     t0 = time.perf_counter()

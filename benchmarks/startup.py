@@ -60,9 +60,10 @@ def bench_startup(quick: bool) -> None:
     app_cls, why = search_app_class()
     cpu: dict[str, list[float]] = {}  # each start's CPU seconds, beside its wall time
 
-    def probe(key: str, argv: list[str]) -> Callable[[], float]:
+    def probe(key: str, argv: list[str], env: dict[str, str] | None = None
+              ) -> Callable[[], float]:
         def start() -> float:
-            wall, used = first_frame_times(argv)
+            wall, used = first_frame_times(argv, env=env)
             cpu.setdefault(key, []).append(used)
             return wall
         return start
@@ -72,6 +73,9 @@ def bench_startup(quick: bool) -> None:
            "trivial-28": probe("trivial-28", [py, str(TRIVIAL_APP), "28"])}
     if app_cls is not None:
         fns["tutorial"] = probe("tutorial", cli + [str(TUTORIAL)])
+        # issue 26: the first frame is the same whichever search core runs
+        fns["tutorial-python"] = probe("tutorial-python", cli + [str(TUTORIAL)],
+                                       {"TUI_SEARCH_CORE": "python"})
         fns["compare"] = probe("compare", cli + [str(TUTORIAL), "--compare", "bfs,dfs"])
         if (MAPS / MAZE).exists():
             fns["maze"] = probe("maze", cli + maze_cli_args())
@@ -97,6 +101,11 @@ def bench_startup(quick: bool) -> None:
                     f"trivial {fmt_time(times['trivial'])}", r, f"≤ {limit}", r <= limit))
 
     against_trivial("tutorial", "tui-search maps/tutorial.txt → first frame vs trivial app", 1.4)
+    for times, what in ((t, ""), (cpu, ", CPU time")):
+        r = paired(times["tutorial"], times["tutorial-python"])
+        add(Row("startup", f"tui-search maps/tutorial.txt → first frame{what}: compiled core vs "
+                "Python core", fmt_time(times["tutorial"]),
+                f"Python core {fmt_time(times['tutorial-python'])}", r, "report"))
     r = paired(t["trivial-28"], base)
     add(Row("startup", "trivial Textual app with 28 bordered widgets (compare mode's count) → "
             "first frame", fmt_time(t["trivial-28"]), f"trivial {fmt_time(base)}", r, "report"))

@@ -17,7 +17,7 @@ import pkgutil
 import pytest
 
 import benchmarks
-from benchmarks import bench, choices, core, harness, jump, step
+from benchmarks import bench, choices, core, fallback, harness, jump, step
 from benchmarks.baselines import (
     bare_bfs,
     bare_dfs,
@@ -47,12 +47,18 @@ def test_every_benchmark_module_imports() -> None:
         importlib.import_module(f"benchmarks.{name}")
 
 
-def test_the_entry_point_has_the_ten_sections_and_refuses_another(capsys) -> None:
-    assert list(bench.SECTIONS) == ["core", "engine", "choices", "informed", "jump", "step",
-                                    "compare", "startup", "class_load", "terrain"]
+def test_the_entry_point_has_the_eleven_sections_and_refuses_another(capsys) -> None:
+    assert list(bench.SECTIONS) == ["core", "fallback", "engine", "choices", "informed", "jump",
+                                    "step", "compare", "startup", "class_load", "terrain"]
     with pytest.raises(SystemExit) as info:
         bench.main(["--only", "engine,nope"])
     assert info.value.code == 2 and "unknown section 'nope'" in capsys.readouterr().err
+
+
+def test_the_fallback_sections_probe_compiles() -> None:
+    """The probe each engine runs in a process of its own is Python (untimed, not run)."""
+    compile(fallback.PROBE, "probe", "exec")
+    assert {key for _, key in fallback.CASES} == {"bfs", "dfs", "astar", "ucs", "edit"}
 
 
 def test_the_compare_section_drives_compare_mode_to_the_end() -> None:

@@ -84,6 +84,7 @@ def test_the_sdist_and_the_wheel_carry_the_core_and_the_maps(tmp_path: Path) -> 
     with tarfile.open(sdist) as tar:
         names = {name.split("/", 1)[1] for name in tar.getnames() if "/" in name}
     assert {"setup.py", "tui_search/engine/_core.c", "tui_search/engine/_core_loops.c",
+            "tui_search/engine/_core_position.c",
             "tui_search/engine/_core.h", "maps/tutorial.txt",
             "tui_search/maps/tutorial.txt", "tui_search/tui/app.tcss"} <= names
     with zipfile.ZipFile(wheel) as whl:

@@ -4,7 +4,7 @@
  * step_exp, step_g, discarded, gen_depth and the iteration lists), a chunk of steps per
  * advance(): the chunk's new entries go to scratch buffers and into the arrays in one
  * frombytes each.  This file is the Python type; _core_loops.c the loops, _core.h what they
- * share.  The reference loop (tui_search/engine/reference.py) is the specification;
+ * share, _core_position.c the bulk loops of a position's rebuild (a long jump).  The reference loop (tui_search/engine/reference.py) is the specification;
  * tests/engine holds this core equal to it, array for array.  Three loops serve every
  * algorithm and choice: a queue or a stack (graph or tree search, either visit rule), iterative
  * deepening, and a priority queue.  Floats are summed in Python's order; the build turns off
@@ -158,6 +158,8 @@ static PyTypeObject SearchType = {
     .tp_methods = Search_methods,
 };
 
+extern PyMethodDef core_position_functions[];  /* _core_position.c */
+
 static struct PyModuleDef core_module = {
     PyModuleDef_HEAD_INIT, "_core", "The compiled search core (see _core.c).", -1,
     module_functions, NULL, NULL, NULL, NULL
@@ -168,7 +170,8 @@ PyMODINIT_FUNC PyInit__core(void) {
     PyObject *m = PyModule_Create(&core_module);
     if (!m) return NULL;
     Py_INCREF(&SearchType);
-    if (PyModule_AddObject(m, "Search", (PyObject *)&SearchType) < 0
+    if (PyModule_AddFunctions(m, core_position_functions) < 0
+        || PyModule_AddObject(m, "Search", (PyObject *)&SearchType) < 0
         || PyModule_AddStringConstant(m, "SOURCE_HASH", CORE_SOURCE_HASH) < 0) {
         Py_DECREF(m); return NULL;
     }

@@ -20,10 +20,10 @@ runs.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator, Sequence
-from itertools import compress
 from typing import TYPE_CHECKING
 
 from tui_search.engine.algorithms import Frontier
+from tui_search.engine.rebuild import kernels
 
 if TYPE_CHECKING:
     from sortedcontainers import SortedList
@@ -112,17 +112,17 @@ class LifoFrontier:
 
 
 def _open_events(root: int, end: int, expanded: Iterable[Sequence[int]],
-                 take: Callable[[Iterator[int]], object]) -> Iterator[int]:
+                 take: Callable[[list[int]], object]) -> Iterator[int]:
     """Hand ``take`` the events ``root .. end - 1`` not in the pieces of ``expanded``, in
     generation order, a piece at a time, yielding the work done by each piece."""
     open_ = bytearray(b"\x01") * (end - root)
+    loops = kernels()
     for piece in expanded:
-        for g in piece:
-            open_[g - root] = 0
+        loops.clear_events(open_, piece, root)
         yield len(piece)
     for lo in range(root, end, PIECE):
         hi = min(lo + PIECE, end)
-        take(compress(range(lo, hi), open_[lo - root : hi - root]))
+        take(loops.open_events(open_, root, lo, hi))
         yield hi - lo
 
 
@@ -165,8 +165,7 @@ class PriorityFrontier:
         keys = self.keys
         entries: list[tuple[float, int]] = []
 
-        def take(events: Iterator[int]) -> None:
-            open_ = list(events)
+        def take(open_: list[int]) -> None:
             entries.extend(zip(keys(open_), open_))
 
         yield from _open_events(root, end, expanded, take)

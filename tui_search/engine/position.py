@@ -9,7 +9,8 @@ Moving one step either way costs time proportional to that step's successors -- 
 map or the run -- because the position is kept as counters per cell that a step increments and
 its reversal decrements.  The only exception is crossing an iteration boundary of iterative
 deepening backwards, which replays the previous iteration.  Memory: three counters per cell of
-the map.
+the map, allocated on first use (a run recorded and never moved or drawn pays for none).  A
+long jump rebuilds them in bulk, in pieces, through :mod:`~tui_search.engine.rebuild`'s loops.
 """
 
 from __future__ import annotations
@@ -22,6 +23,7 @@ from enum import IntEnum
 from tui_search.engine.frontier import FrontierModel, frontier_model
 from tui_search.engine.grid import Cell
 from tui_search.engine.queries import EventTree
+from tui_search.engine.rebuild import kernels
 from tui_search.engine.recording import Recording
 
 
@@ -47,20 +49,32 @@ class Position:
         self._succ_range = recording.succ_range
         self._is_discarded = recording.is_discarded
         self._previous_same = tree.previous_same
-        size = len(self._problem.walls)
+        self._kernels = kernels()  # the rebuild's bulk loops
         # Per-cell counters at the current position: generation events and expansions.  A
         # discarded step is no expansion: visit on expand takes off a cell expanded before, but
         # greedy best-first takes equal h in push order, so a cell's stale (costlier) entry can
         # come off before its cheaper one is ever expanded -- the cell is not expanded yet.
-        # (``array * n`` fills in C: a third of the time of copying ``bytes(4 * n)`` in)
-        self._n_gen = array("i", [0]) * size
-        self._n_exp = array("i", [0]) * size
-        # Per cell: the latest event of it at the position, in the current iteration (-1: none).
-        self._last = array("i", [-1]) * size
+        # Per cell too: the latest event of it at the position, in the current iteration (-1:
+        # none).  Empty until first used (_hold); until then the position is step 0.
+        self._n_gen, self._n_exp, self._last = array("i"), array("i"), array("i")
+        self._held = False
         self._frontier = self._new_frontier()
         #: The position: steps taken (0: none, only the start is on the frontier).
         self.k = 0
-        self._enter_iteration(0)
+        self._frontier.reset(self._rec.iter_root[0])
+
+    def _hold(self) -> None:
+        """Allocate the counters, at step 0: only the start is generated."""
+        size = len(self._problem.walls)
+        # (``array * n`` fills in C: a third of the time of copying ``bytes(4 * n)`` in)
+        self._n_gen = array("i", [0]) * size
+        self._n_exp = array("i", [0]) * size
+        self._last = array("i", [-1]) * size
+        self._held = True
+        root = self._rec.iter_root[0]
+        node = self._rec.gen_node[root]
+        self._n_gen[node] += 1
+        self._last[node] = root
 
     def _new_frontier(self) -> FrontierModel:
         return frontier_model(self._recording.algo.frontier, self._tree.priority_keys)
@@ -133,6 +147,8 @@ class Position:
 
     def step_to(self, k: int) -> None:
         """Move the position to recorded step ``k`` a step at a time."""
+        if not self._held:
+            self._hold()
         while self.k < k:
             self._forward()
         while self.k > k:
@@ -168,6 +184,7 @@ class Position:
                  + frontier.rebuild_work(root, end, n_exp_events))
         done = 0.0
         n_gen, n_exp, latest = array("i"), array("i"), array("i")
+        loops = self._kernels
         for counters, fill in ((n_gen, 0), (n_exp, 0), (latest, -1)):
             for lo in range(0, size, cells):
                 counters.extend(array("i", [fill]) * min(cells, size - lo))
@@ -175,10 +192,7 @@ class Position:
                 yield done / total
         gen_node = rec.gen_node
         for lo in range(root, end, piece):
-            for p in gen_node[lo : min(lo + piece, end)]:
-                n_gen[p] += 1
-            for g in range(lo, min(lo + piece, end)):
-                latest[gen_node[g]] = g
+            loops.count_generated(gen_node, lo, min(lo + piece, end), n_gen, latest)
             done += 2 * min(piece, end - lo)
             yield done / total
 
@@ -190,8 +204,7 @@ class Position:
         for lo in range(first, last + 1, piece):
             hi = min(lo + piece, last + 1)
             events = self._expanded_events(lo, hi - 1)
-            for g in events:
-                n_exp[gen_node[g]] += 1
+            loops.count_expanded(gen_node, events, n_exp)
             for s in discarded[bisect_left(discarded, lo) : bisect_left(discarded, hi)]:
                 n_exp[gen_node[step_exp[s]]] -= 1  # taken off, but not expanded
             done += len(events)
@@ -200,10 +213,12 @@ class Position:
             done += work
             yield done / total
         self._n_gen, self._n_exp, self._last = n_gen, n_exp, latest
-        self._frontier, self.k = frontier, k
+        self._frontier, self.k, self._held = frontier, k, True
 
     def forward(self) -> bool:
         """One step forwards; False when already at the end."""
+        if not self._held:
+            self._hold()
         if self.k >= self._rec.steps:
             self._recording.advance(self.k + 1)
             if self.k >= self._rec.steps:
@@ -214,12 +229,14 @@ class Position:
     def backward(self) -> bool:
         """One step backwards; False at step 0."""
         if self.k == 0:
-            return False
+            return False  # (so the counters are held: only a step forwards leaves step 0)
         self._backward()
         return True
 
     def reset(self) -> None:
         """Back to step 0 (all counters cleared)."""
+        if not self._held:
+            return  # at step 0 already
         it = self._iteration_of(self.k)
         self._clear_iteration(it, self.k)
         self.k = 0
@@ -230,6 +247,8 @@ class Position:
         return self._rec.done and self.k == self._rec.steps
 
     def cell_state(self, cell: Cell) -> CellState:
+        if not self._held:
+            self._hold()
         p = self._problem.pad(cell)
         if self.at_end and self._rec.found and p in self._tree.path_set():
             return CellState.PATH
@@ -243,6 +262,8 @@ class Position:
 
     def row_states(self, y: int, x0: int = 0, x1: int | None = None) -> list[int]:
         """States of cells ``x0 .. x1-1`` of row ``y`` (the fast path for drawing a line)."""
+        if not self._held:
+            self._hold()
         x1 = self._recording.grid.width if x1 is None else x1
         base = (y + 1) * self._problem.stride + 1
         n_gen, n_exp = self._n_gen, self._n_exp
@@ -274,12 +295,16 @@ class Position:
     def times_reached(self, cell: Cell) -> tuple[int, int]:
         """How often ``cell`` was generated and expanded (discarded steps not counted), up to
         the position, in the iteration shown."""
+        if not self._held:
+            self._hold()
         p = self._problem.pad(cell)
         return self._n_gen[p], self._n_exp[p]
 
     def last_event(self, cell: Cell) -> int | None:
         """The latest generation event of ``cell`` at the position, in the iteration shown
         (None: not reached): the event that decides its came-from arrow and its depth."""
+        if not self._held:
+            self._hold()
         g = self._last[self._problem.pad(cell)]
         return g if g >= 0 else None
 

@@ -8,11 +8,13 @@ from __future__ import annotations
 from array import array
 from bisect import bisect_left, bisect_right
 from collections.abc import Iterator, Sequence
+from itertools import pairwise
 
 from tui_search.engine.algorithms import Frontier
 from tui_search.engine.grid import DIRECTIONS, Cell
 from tui_search.engine.heuristics import admissible, heuristic_for, priority_of
 from tui_search.engine.loops.best_first import move_costs
+from tui_search.engine.loops.compiled import selected
 from tui_search.engine.outcome import Outcome, cost_of
 from tui_search.engine.record import ROOT_DIR
 from tui_search.engine.recording import Recording, Step
@@ -38,6 +40,8 @@ class EventTree:
         self._next_same = array("i")  # event -> the next event of the same cell (-1: none)
         self._prev_same = array("i")  # event -> the previous event of the same cell (-1: none)
         self._depths: dict[int, int] = {}  # gen_depth's answers where a chain was walked
+        core = selected()[0]
+        self._walk = None if core is None else core.ancestors  # ancestors' loop in C
         self._last_of_cell: dict[int, int] = {}
         goal = recording.grid.goal
         assert goal is not None  # the problem checked it
@@ -250,7 +254,14 @@ class EventTree:
         return step if step > 0 else None
 
     def ancestors(self, g: int) -> list[int]:
-        """Events from the root down to ``g``."""
+        """Events from the root down to ``g`` (the compiled core's walk, when it runs, is
+        this loop's twin: ``tests/engine/test_rebuild.py``)."""
+        if self._walk is not None and g >= 0:
+            rec = self._rec
+            root = rec.iter_root[bisect_right(rec.iter_root, g) - 1]
+            exp = rec.step_exp if isinstance(rec.step_exp, array) else None
+            chain: list[int] = self._walk(rec.step_end, exp, root, g)
+            return chain
         chain = []
         while g >= 0:
             chain.append(g)
@@ -282,7 +293,10 @@ class EventTree:
     def moves(self) -> list[str] | None:
         if not self._rec.found:
             return None
-        return [self.gen_dir(g) for g in self.path_gens()[1:]]
+        # gen_dir of each event but the start, its parent the event before it on the path
+        node, dir_of = self._rec.gen_node, self._problem.dir_of_offset
+        gens = self.path_gens()
+        return [DIR_NAMES[dir_of[node[b] - node[a]]] for a, b in pairwise(gens)]
 
     def outcome(self) -> Outcome:
         """The result of the whole search (records it all first)."""

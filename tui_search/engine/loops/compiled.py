@@ -3,7 +3,7 @@
 The compiled module (``tui_search/engine/_core.c`` and ``_core_loops.c``, built at ``pip
 install`` as an optional extension) records every algorithm under every choice into the same
 :class:`~tui_search.engine.record.Record` the Python loops write, so nothing downstream knows
-which core ran.  It runs unless the environment variable ``TUI_SEARCH_CORE`` says ``python``,
+which core ran; its ``_core_position.c`` reads a record in bulk (:mod:`~tui_search.engine.rebuild`).  It runs unless the environment variable ``TUI_SEARCH_CORE`` says ``python``,
 the module was not built (no compiler), or the build is stale (the C source changed since: an
 editable install that was not rebuilt) -- then the Python loops run, and a stale build says so
 on stderr.  ``TUI_SEARCH_CORE=compiled`` makes a missing or stale module an error
@@ -35,7 +35,7 @@ CORE_ENV = "TUI_SEARCH_CORE"
 COMPILED, PYTHON = "compiled search core", "Python search core"
 #: The C source, in the order ``setup.py`` hashes it.
 SOURCES = tuple(Path(__file__).resolve().parents[1] / name
-                for name in ("_core.c", "_core_loops.c", "_core.h"))
+                for name in ("_core.c", "_core_loops.c", "_core_position.c", "_core.h"))
 
 # The C loops (_core.h's enum), the heuristics' codes and advance()'s "paused".
 _QUEUE, _IDDFS, _BEST = 0, 1, 2
