@@ -15,7 +15,7 @@ gives a "not installed" row.  See benchmarks/README.md for what each row means.
 
 This file is the entry point only: each section lives in its own module of this package
 (core.py, fallback.py, engine.py, choices.py, informed.py, jump.py, step.py, startup.py,
-class_load.py, terrain.py), on the shared table.py, harness.py and maps.py.
+class_load.py, terrain.py, big_map.py), on the shared table.py, harness.py and maps.py.
 """
 
 from __future__ import annotations
@@ -34,6 +34,7 @@ ROOT = HERE.parent
 sys.path[:] = [p for p in sys.path if Path(p or ".").resolve() != HERE]
 sys.path.insert(0, str(ROOT))
 
+from benchmarks.big_map import bench_big_map
 from benchmarks.choices import bench_choices
 from benchmarks.class_load import bench_class_load
 from benchmarks.compare import bench_compare
@@ -52,7 +53,7 @@ from benchmarks.terrain import bench_terrain
 SECTIONS = {"core": bench_core, "fallback": bench_fallback, "engine": bench_engine,
             "choices": bench_choices, "informed": bench_informed, "jump": bench_jump,
             "step": bench_step, "compare": bench_compare, "startup": bench_startup,
-            "class_load": bench_class_load, "terrain": bench_terrain}
+            "class_load": bench_class_load, "terrain": bench_terrain, "big_map": bench_big_map}
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -19,7 +19,7 @@ from typing import BinaryIO
 
 from tui_search.engine.atomic import os_reason
 from tui_search.engine.grid import Cell, Grid
-from tui_search.engine.mapsource import FileStamp
+from tui_search.engine.mapsource import FileStamp, Lines
 
 __all__ = [
     "MAX_DIGITS",
@@ -73,12 +73,12 @@ class MapError(Exception):
         return f"{where}: {self.message}"
 
 
-def split_lines(text: str) -> tuple[bool, list[str]]:
+def split_lines(text: str) -> tuple[bool, Lines]:
     """Whether the text starts with a BOM, and its lines split on ``\\n`` only (not
     ``str.splitlines``, which also splits on form feeds and other separators, so that line
     numbers match what an editor shows), each as written: a CRLF line keeps its ``\\r``."""
     bom = text.startswith("\ufeff")
-    return bom, (text[1:] if bom else text).split("\n")
+    return bom, Lines(text[1:] if bom else text)
 
 
 def stripped_lines(text: str) -> list[str]:

@@ -22,7 +22,7 @@ from tui_search.engine.mapread import (
     quoted,
     split_lines,
 )
-from tui_search.engine.mapsource import MOVINGAI, MapSource
+from tui_search.engine.mapsource import MOVINGAI, Lines, MapSource
 from tui_search.engine.terrain import EMPTY, Alphabet, Terrain, write_row
 
 __all__ = ["movingai_rows", "parse_movingai_map"]
@@ -47,10 +47,8 @@ def parse_movingai_map(text: str, path: str = "<map>", terrain: Terrain | None =
     table = terrain or EMPTY
     cells_of = Alphabet(movingai_costs(table))
     costs: array[float] | None = None
-    bom, split = split_lines(text)
-    raw = tuple(split)  # kept in the grid's source: one copy of the lines, not two
-    del split
-    lines = [line.rstrip() for line in raw]
+    bom, raw = split_lines(text)  # kept in the grid's source (the text itself, not a copy)
+    lines = _Stripped(raw)  # each line without trailing whitespace, made when read
     n = len(lines)
     i = 0
     while i < n and not lines[i]:
@@ -149,3 +147,17 @@ _MAI_WRITE = bytes.maketrans(b"\x00\x01", b".@")
 
 def _costed_in(row: str, chars: dict[str, float | None]) -> bool:
     return any(chars.get(c) not in (None, 1.0) for c in set(row))
+
+
+class _Stripped:
+    """The lines of a map without their trailing whitespace (a CRLF's ``\\r`` too), each made
+    when asked for, so a map of millions of rows holds no second copy of them."""
+
+    def __init__(self, lines: Lines) -> None:
+        self._lines = lines
+
+    def __len__(self) -> int:
+        return len(self._lines)
+
+    def __getitem__(self, index: int) -> str:
+        return self._lines[index].rstrip()
