@@ -228,3 +228,14 @@ def test_the_readmes_error_example_is_what_the_cli_prints(capsys, monkeypatch) -
     code, out, err = run_cli(capsys, "maps/broken.txt", "--headless")
     assert code == 2 and out == "" and err == printed + "\n"
     assert ":4:7: " in printed  # a line and a column, as the README says
+
+
+def test_a_file_name_with_escape_sequences_is_shown_escaped_never_run(capsys, tmp_path) -> None:
+    good, bad = tmp_path / "ok\x1b[2J\u202e.txt", tmp_path / "bad\x1b[31m.txt"
+    good.write_text("S.\n.G\n")
+    bad.write_text("S.\n.x\n")
+    code, out, _ = run_cli(capsys, str(good), "--headless")
+    assert code == 0 and "\x1b" not in out and "\u202e" not in out
+    assert "ok\\x1b[2J\\u202e.txt: path found" in out
+    code, out, err = run_cli(capsys, str(bad), "--headless", "--exercise", "1")
+    assert code == 2 and "\x1b" not in err and "bad\\x1b[31m.txt:2:2: unknown cell" in err

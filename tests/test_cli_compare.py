@@ -109,6 +109,18 @@ def test_grading_a_map_with_no_path_and_a_bad_map(capsys, tmp_path) -> None:
     assert code == 2 and out == "" and f"{bad}:2:2" in err
 
 
+def test_grading_a_search_that_gives_up_is_not_called_no_path(capsys, tmp_path) -> None:
+    long = tmp_path / "long.txt"
+    long.write_text("S\n" + ".\n" * 50 + "G\n")
+    code, out, _ = run_cli(capsys, str(long), "--headless", "--exercise", "1",
+                           "--max-steps", "10")
+    assert code == 3 and "no path" not in out
+    assert "not solved — not graded: BFS and DFS gave up at 10 steps" in out
+    code, out, _ = run_cli(capsys, str(long), "--headless", "--exercise", "1", "--json",
+                           "--max-steps", "10")
+    assert code == 3 and json.loads(out)["bfs"]["gave_up"] is True
+
+
 def test_grading_json_gives_the_figures(capsys) -> None:
     code, out, _ = run_cli(capsys, str(MAPS / "exercise2-dfs-longer.txt"), "--headless",
                            "--json", "--exercise", "2")

@@ -20,6 +20,7 @@ from tui_search.engine.compare import (
     table_lines,
 )
 from tui_search.engine.exercises import Verdict, check, tutorial_grid
+from tui_search.engine.filenames import describe_name
 from tui_search.engine.grid import Grid
 from tui_search.engine.heuristics import INADMISSIBLE, admissible
 from tui_search.engine.mapread import MapError
@@ -199,7 +200,7 @@ def human_summary(
 def run_headless(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
     if args.trace == "-" and args.json:
         raise UsageError("--trace - and --json both want stdout; give --trace a file")
-    where = str(path or TUTORIAL_NAME)
+    where = describe_name(str(path or TUTORIAL_NAME))  # escape sequences shown, not run
     _need_endpoints(grid, where)
     semantics = semantics_from(args)
 
@@ -240,7 +241,7 @@ def compare_table(labels: list[str], outcomes: list[Outcome]) -> str:
 
 
 def run_compare(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
-    where = str(path or TUTORIAL_NAME)
+    where = describe_name(str(path or TUTORIAL_NAME))  # escape sequences shown, not run
     _need_endpoints(grid, where)
     contenders = contenders_from(args)
     outcomes = [search_headless(grid, c.algorithm, c.semantics, args.max_steps, None)
@@ -258,7 +259,7 @@ def run_compare(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
 
 def run_exercise(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
     """Grade the map on an exercise: ``solved`` or ``not solved`` with the figures."""
-    where = str(path or TUTORIAL_NAME)
+    where = describe_name(str(path or TUTORIAL_NAME))  # escape sequences shown, not run
     _need_endpoints(grid, where)
     verdict: Verdict = check(args.exercise, grid, tutorial_grid(), args.max_steps)
     if args.json:
@@ -268,6 +269,8 @@ def run_exercise(args: argparse.Namespace, grid: Grid, path: Path | None) -> int
               f"{'solved' if verdict.solved else 'not solved'} — {verdict.reason}")
         if verdict.hint:
             print(f"  hint: {verdict.hint}")
+    if verdict.bfs.gave_up or verdict.dfs.gave_up:
+        return EXIT_GAVE_UP
     return EXIT_FOUND if verdict.solved else EXIT_NO_PATH
 
 

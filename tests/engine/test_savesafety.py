@@ -6,7 +6,10 @@ from __future__ import annotations
 
 import os
 import pwd
+import signal
 import stat
+import subprocess
+import sys
 import tempfile
 import time
 from pathlib import Path
@@ -291,6 +294,22 @@ def test_a_map_that_would_not_load_is_not_written(
     assert load_map(tmp_path / "m.map").blocked == grid.blocked
 
 
+def test_a_file_over_the_size_a_map_may_be_is_not_written(tmp_path: Path, monkeypatch) -> None:
+    from tui_search.engine import mapread, mapwrite
+
+    path = write(tmp_path, "m.txt", TUTORIAL)
+    grid = load_map(path)
+    limit = len(TUTORIAL.encode()) + 8  # the text fits; the .map's header does not
+    monkeypatch.setattr(mapwrite, "MAX_MAP_BYTES", limit)
+    monkeypatch.setattr(mapread, "MAX_MAP_BYTES", limit)
+    target = tmp_path / "m.map"
+    error = raised(save_map, grid, target, MOVINGAI)
+    assert isinstance(error, WouldNotLoad) and not target.exists()
+    assert "cannot save: the file would not open again: file is" in str(error)
+    save_map(grid, path, overwrite=True)  # the text map itself still saves
+    assert path.read_text() == TUTORIAL
+
+
 cells = st.one_of(st.none(), st.tuples(st.integers(0, 11), st.integers(0, 11)))
 
 
@@ -343,3 +362,37 @@ def test_stale_temporary_files_of_this_map_are_removed_at_its_next_save(tmp_path
     assert left == {"m.txt", *kept, ".m.txt.89abcdef.tmp", ".m.txt.00000000.tmp",
                     ".m.txt.11111111.tmp"}
     assert path.read_text() == TUTORIAL
+
+
+KILLED_SAVER = """
+import sys
+from tui_search.engine.mapfile import load_map
+from tui_search.engine.mapwrite import save_map
+grid = load_map(sys.argv[1])
+while True:
+    save_map(grid, sys.argv[1], overwrite=True)
+"""
+
+
+def test_a_save_killed_midway_leaves_the_old_file_and_its_temporary_file_goes_later(
+        tmp_path: Path) -> None:
+    text = "S" + "." * 1999 + "\n" + ("." * 2000 + "\n") * 1998 + "." * 1999 + "G\n"
+    path = write(tmp_path, "big.txt", text)
+    saver = subprocess.Popen([sys.executable, "-c", KILLED_SAVER, str(path)])
+    temps: list[str] = []
+    deadline = time.monotonic() + 60
+    try:
+        while not temps and time.monotonic() < deadline and saver.poll() is None:
+            temps = [n for n in os.listdir(tmp_path) if n.endswith(".tmp")]
+            time.sleep(0.002)  # polling for the temporary file of a save under way
+    finally:
+        saver.send_signal(signal.SIGKILL)
+        saver.wait()
+    assert temps, "no save was seen under way"
+    assert path.read_text() == text  # the old file (or the same bytes, renamed in): whole
+    left = [n for n in os.listdir(tmp_path) if n.endswith(".tmp")]
+    old = time.time() - atomic.STALE_TEMP_SECONDS - 5
+    for name in left:
+        os.utime(tmp_path / name, (old, old))
+    save_map(load_map(path), path)
+    assert [n for n in os.listdir(tmp_path) if n.endswith(".tmp")] == []

@@ -272,3 +272,20 @@ async def test_opening_a_fifo_says_not_a_regular_file(tmp_path: Path) -> None:
         await pilot.press("ctrl+o")
         await type_name(pilot, str(fifo))
         assert app.screen.error == f"{fifo}: not a regular file"
+
+
+@sync
+async def test_reload_reads_the_map_with_the_terrain_table_it_was_opened_with(
+        tmp_path: Path) -> None:
+    from tui_search.engine.terrain import parse_terrain
+
+    path = tmp_path / "swamp.txt"
+    path.write_text("S.f\n..G\n")
+    app = SearchApp(load_map(path, terrain=parse_terrain("f 5")), path=path)
+    async with app.run_test(size=SIZE) as pilot:
+        path.write_text("S.f\nf.G\n")  # someone adds a second f
+        await pilot.press("ctrl+s")
+        await answer(pilot, ChangedOnDiskScreen, "r")
+        await wait_until(pilot, lambda: app.session.grid.costs is not None
+                         and app.session.grid.costs[3] == 5.0)
+        assert not [n for n in notifications(app) if "Not reloaded" in str(n.title)]

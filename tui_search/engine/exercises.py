@@ -61,7 +61,7 @@ class Verdict(NamedTuple):
     def as_json(self) -> dict[str, object]:
         def figures(out: Outcome) -> dict[str, object]:
             return {"found": out.found, "moves": out.length, "expanded": out.expanded,
-                    "generated": out.generated}
+                    "generated": out.generated, "gave_up": out.gave_up}
 
         return {"exercise": self.exercise, "solved": self.solved, "reason": self.reason,
                 "hint": self.hint or None, "bfs": figures(self.bfs), "dfs": figures(self.dfs)}
@@ -77,6 +77,11 @@ def check(exercise: int, grid: Grid, tutorial: Grid | None = None,
     bfs = Run(grid, "bfs", DEFAULT_SEMANTICS, max_steps).outcome()
     dfs = Run(grid, "dfs", DEFAULT_SEMANTICS, max_steps).outcome()
     both = f"BFS expanded {bfs.expanded:,} nodes, DFS {dfs.expanded:,}"
+    quitters = [name for name, out in (("BFS", bfs), ("DFS", dfs)) if out.gave_up]
+    if quitters:  # not "no path": the map may well have one, further than the steps allowed
+        who = " and ".join(quitters)
+        return Verdict(exercise, False, f"not graded: {who} gave up at {max_steps:,} steps "
+                       f"before finding the goal ({both})", bfs, dfs)
     if not (bfs.found and dfs.found):
         return Verdict(exercise, False, f"no path to the goal ({both})", bfs, dfs)
     assert bfs.length is not None and dfs.length is not None

@@ -18,6 +18,7 @@ import stat
 from typing import BinaryIO
 
 from tui_search.engine.atomic import os_reason
+from tui_search.engine.filenames import describe_name
 from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.mapsource import FileStamp, Lines
 
@@ -36,6 +37,7 @@ __all__ = [
     "split_lines",
     "stamp_of",
     "stripped_lines",
+    "too_big",
 ]
 
 #: Bigger files are refused before reading: a 512x512 MovingAI map is 257 KB, so anything
@@ -65,7 +67,7 @@ class MapError(Exception):
         self.col = col
 
     def __str__(self) -> str:
-        where = self.path
+        where = describe_name(self.path)  # a terminal shows an escape sequence, never runs it
         if self.line is not None:
             where += f":{self.line}"
         if self.col is not None:
@@ -143,7 +145,7 @@ def _check_kind(path: str, st: os.stat_result) -> None:
     if not stat.S_ISREG(st.st_mode):
         raise MapError(path, "not a regular file")
     if st.st_size > MAX_MAP_BYTES:
-        raise MapError(path, _too_big(st.st_size))
+        raise MapError(path, too_big(st.st_size))
 
 
 def _read_regular(path: str) -> tuple[bytes, os.stat_result]:
@@ -166,7 +168,7 @@ def _read_regular(path: str) -> tuple[bytes, os.stat_result]:
     except OSError as err:
         raise MapError(path, os_reason(err)) from None
     if len(data) > MAX_MAP_BYTES:
-        raise MapError(path, _too_big(len(data)))
+        raise MapError(path, too_big(len(data)))
     return data, st
 
 
@@ -193,7 +195,7 @@ def _read_capped(handle: BinaryIO, expected: int) -> bytes:
     return b"".join(chunks)
 
 
-def _too_big(size: int) -> str:
+def too_big(size: int) -> str:
     # Round up to a tenth so a file just over the limit never reads as "64.0 MB".
     mb = math.ceil(size * 10 / (1024 * 1024)) / 10
     limit = MAX_MAP_BYTES // (1024 * 1024)

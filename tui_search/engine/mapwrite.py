@@ -19,7 +19,7 @@ import stat
 from tui_search.engine.atomic import os_reason, write_atomically, write_in_place
 from tui_search.engine.grid import Grid
 from tui_search.engine.mapfile import parse_map_text
-from tui_search.engine.mapread import MapError, current_stamp, stamp_of
+from tui_search.engine.mapread import MAX_MAP_BYTES, MapError, current_stamp, stamp_of, too_big
 from tui_search.engine.mapsource import MOVINGAI, TEXT, FileStamp, MapSource
 from tui_search.engine.movingai import movingai_costs, movingai_rows
 from tui_search.engine.terrain import TEXT_OWN, Terrain, comment_table, lost_costs, text_costs
@@ -188,6 +188,9 @@ def save_map(
     except MapError as err:
         raise WouldNotLoad(target, f"cannot save: the file would not open again: {err.message}")
     data = text.encode("utf-8")
+    if len(data) > MAX_MAP_BYTES:  # (a .map's header, or costs written out, can add bytes)
+        raise WouldNotLoad(target, f"cannot save: the file would not open again: "
+                           f"{too_big(len(data))}")
     real = os.path.realpath(target)
     old = _existing(target, real)
     if old is not None and not overwrite:

@@ -38,6 +38,7 @@ from tui_search.engine.mapwrite import (
     save_map,
     save_notes,
 )
+from tui_search.engine.terrain import Terrain
 from tui_search.tui.file_access import FileAccess, one_line
 from tui_search.tui.save_questions import Done, ask_in_place, changed_in_prompt, changed_on_ctrl_s
 from tui_search.tui.session import Session
@@ -191,8 +192,10 @@ class FileCommands:
 
     def reload(self, path: Path) -> None:
         """Read the map's file again, dropping the app's edits (the caller asked first)."""
+        source = self.host.session.grid.source
+        given = source.terrain if source is not None else ()  # --terrain's table, if any
         try:
-            grid = load_map(path)
+            grid = load_map(path, terrain=Terrain(dict(given), {}) if given else None)
         except MapError as exc:
             self.notify(one_line(exc), title="Not reloaded", severity="error", timeout=8,
                         markup=False)
