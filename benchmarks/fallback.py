@@ -18,6 +18,7 @@ import subprocess
 import sys
 import tarfile
 import tempfile
+import time
 from io import BytesIO
 from pathlib import Path
 
@@ -134,3 +135,34 @@ def bench_fallback(quick: bool) -> None:
                     fmt_time(python), f"before {fmt_time(old)}", r, "≤ 1.5", r <= 1.5))
         add(Row("fallback", f"{label}: Python core vs compiled core", fmt_time(python),
                 f"compiled {fmt_time(compiled)}", med(python) / med(compiled), "report"))
+    _reference_alone(times, "before" if before is not None else "python")
+
+
+def _reference_alone(times: dict[str, dict[str, list[float]]], base: str) -> None:
+    """Is the reference loop alone a good enough fallback (issue 26: then the Python fast loops
+    retire)?  It runs each maze512 case to its end in this process, iterating its steps and
+    keeping no record (less than a fallback would have to do), against ``base``'s recorded
+    runs: the engine before the compiled core, within 1.5x of which a fallback must stay."""
+    from benchmarks.baselines import walled_in
+    from benchmarks.core import maze_row
+    from tui_search.engine.algorithms import get_algorithm
+    from tui_search.engine.reference import ReferenceSearch
+    from tui_search.engine.semantics import Semantics
+
+    grid = maze_row()
+    if grid is None:
+        return
+    sem = Semantics(corners="never")
+    for key in ("bfs", "dfs", "astar", "ucs"):
+        case = f"maze512 row 3, corners never {key}"
+        if case not in times[base]:
+            continue
+        g = walled_in(grid) if key == "dfs" else grid
+        t = time.process_time()
+        steps = sum(1 for _ in ReferenceSearch(g, get_algorithm(key), sem))
+        ref = time.process_time() - t
+        r = ref / med(times[base][case])
+        add(Row("fallback", f"maze512 {key.upper()} ({steps:,} steps): the reference loop alone, "
+                f"no record, vs {'the engine before the compiled core' if base == 'before' else 'the Python core'}",
+                fmt_time(ref), f"{base} {fmt_time(times[base][case])}", r,
+                "report: ≤ 1.5 retires the fast loops"))

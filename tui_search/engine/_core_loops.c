@@ -247,6 +247,9 @@ out:
     return result;
 }
 
+/* The priority queue's mark, beside `closed`'s 1 in the same byte: the cell's best g is set. */
+#define SEEN 2
+
 /* A priority queue of (priority, event, cell, g): graph search (an entry whose g is above its
  * cell's best is stale: a discarded step) or tree search.  A move costs its length times the
  * cost of the cell it enters (terrain; its length alone without). */
@@ -265,20 +268,21 @@ long core_run_best(Search *s, Py_ssize_t chunk) {
         step++;
         if (!s->tree && g > best[n]) { END_STEP(); PUT(s->disc, int, (int)step); continue; }
         if (n == s->goal_on_pop) { result = e; END_STEP(); goto out; }
-        if (!s->tree) closed[n] = (unsigned char)s->close;
+        if (!s->tree) closed[n] |= (unsigned char)s->close;
         if (s->tree && reserve(&s->parent, s->nmoves * sizeof(int)) < 0) return -3;
         for (int i = 0; i < s->nmoves; i++) {
             int m = n + s->off[i];
-            if (closed[m] || refused(s, i, n)) continue;
+            if ((closed[m] & 1) || refused(s, i, n)) continue;
             double cost = terrain ? s->cost[i] * terrain[m] : s->cost[i];
             if (s->tree) {
                 if (on_path(s, m, e)) continue;
                 PUT(s->parent, int, e);
-            } else if (terrain ? g + cost + s->cheaper >= best[m] : g + s->margin[i] >= best[m]) {
+            } else if ((closed[m] & SEEN)
+                       && (terrain ? g + cost + s->cheaper >= best[m] : g + s->margin[i] >= best[m])) {
                 continue;
             }
             double ng = g + cost;
-            if (!s->tree) best[m] = ng;
+            if (!s->tree) { best[m] = ng; closed[m] |= SEEN; }
             Entry y = {priority(s, ng, m), (int)count, m, ng};
             if (heap_push(s, y) < 0) return -3;
             PUT(s->node, int, m);
@@ -314,10 +318,13 @@ int core_start(Search *s) {
         PUT(s->parent, int, -1);
     }
     if (s->loop == BEST) {
+        /* not filled: a cell's best is read only once set (SEEN), so the pages of a big map
+         * that the search never reaches are never touched (A* across open 1024x1024 reaches
+         * a few thousand of its million cells) */
         s->best = PyMem_RawMalloc(s->ncells * sizeof(double));
         if (!s->best) { PyErr_NoMemory(); return -1; }
-        for (Py_ssize_t i = 0; i < s->ncells; i++) s->best[i] = HUGE_VAL;
         s->best[s->start] = 0.0;
+        s->closed[s->start] |= SEEN;
         Entry root = {priority(s, 0.0, s->start), 0, s->start, 0.0};
         return heap_push(s, root);
     }

@@ -78,7 +78,14 @@ class PeakTable:
         rec = self._rec
         it = self._iteration_of(lo)
         first = rec.iter_first_step[it]
-        if lo < first or self._iteration_of(hi - 1) != it:
+        if lo < first:  # the steps before the iteration's first (step 0: the start alone)
+            cut = min(first, hi)
+            floor, lo = max(floor, max(self._sizes(lo, cut))), cut
+            if lo == hi:
+                return floor
+            it = self._iteration_of(lo)
+            first = rec.iter_first_step[it]
+        if self._iteration_of(hi - 1) != it:
             return max(floor, max(self._sizes(lo, hi)))
         c = rec.iter_root[it] - first + 1
         end, piece, best = rec.step_end, self.PEAK_PIECE, floor
