@@ -232,11 +232,11 @@ def run_headless(args: argparse.Namespace, grid: Grid, path: Path | None) -> int
     return EXIT_FOUND if outcome.found else EXIT_NO_PATH
 
 
-def compare_table(labels: list[str], outcomes: list[Outcome]) -> str:
+def compare_table(labels: list[str], outcomes: list[Outcome], terrain: bool = False) -> str:
     """The comparison as text: a row a search, marks on the fewest expanded and the
-    cheapest path, and the tutorial's sentence."""
+    cheapest path, and the tutorial's sentence (with the paths' costs on ``terrain``)."""
     rows = comparison(labels, outcomes)
-    lines = table_lines(table_cells(rows)) + [MARKS_KEY, summary_sentence(rows)]
+    lines = table_lines(table_cells(rows)) + [MARKS_KEY, summary_sentence(rows, terrain)]
     return "\n".join("  " + line for line in lines)
 
 
@@ -251,7 +251,7 @@ def run_compare(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
                                    for o in outcomes]}))
     else:
         print(f"Comparison on {where}:")
-        print(compare_table([c.label for c in contenders], outcomes))
+        print(compare_table([c.label for c in contenders], outcomes, grid.costs is not None))
     if any(o.gave_up for o in outcomes):
         return EXIT_GAVE_UP
     return EXIT_FOUND if all(o.found for o in outcomes) else EXIT_NO_PATH

@@ -8,6 +8,7 @@ no panel's border title or legend is cut with "…" (a shorter wording shows ins
 from __future__ import annotations
 
 from collections.abc import Callable
+from pathlib import Path
 
 import pytest
 from textual.pilot import Pilot
@@ -69,7 +70,17 @@ def _verdict(app: SearchApp) -> list[str]:
     return [QUOTES[app.session.exercise], verdict.reason]
 
 
-#: Each case: how the app opens, the keys, and the texts that must be on the screen whole.
+def _terrain_note(app: SearchApp) -> list[str]:
+    """UCS on the mud: the narration's words for what a cell's cost adds to g."""
+    narration = app.main.query_one(Stats).narration_text
+    assert "costs 9: g" in narration
+    return [narration.rpartition("; ")[2]]
+
+
+MUD = TUTORIAL.parent / "terrain-mud.txt"
+
+#: Each case: how the app opens (``path``: a map other than the tutorial's), the keys, and
+#: the texts that must be on the screen whole.
 CASES: dict[str, tuple[dict[str, object], list[str], Callable[[SearchApp], list[str]]]] = {
     "bfs at the end": ({"algorithm": "bfs"}, ["end"], _bound),
     "dfs mid-run": ({"algorithm": "dfs"}, ["n"] * 4, _nothing),
@@ -84,6 +95,10 @@ CASES: dict[str, tuple[dict[str, object], list[str], Callable[[SearchApp], list[
                                        _verdict),
     "the code panel": ({"algorithm": "bfs"}, ["n"] * 4 + ["v"], _nothing),
     "the code panels comparing": ({"compare": "bfs,astar"}, ["end", "v"], _nothing),
+    "terrain: ucs says what the mud adds": ({"path": MUD, "algorithm": "ucs"}, ["n"] * 5,
+                                            _terrain_note),
+    "terrain: compare says each path's cost": ({"path": MUD, "compare": "bfs,ucs"}, ["end"],
+                                               _nothing),
 }
 
 
@@ -142,7 +157,10 @@ def problems(app: SearchApp, screen: list[str], lesson: list[str]) -> list[str]:
 @sync
 async def test_teaching_text_wraps_and_is_on_the_screen_whole(case: str) -> None:
     options, keys, lesson_of = CASES[case]
-    app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, **options)  # type: ignore[arg-type]
+    options = dict(options)
+    path = options.pop("path", TUTORIAL)
+    assert isinstance(path, Path)
+    app = SearchApp(load_map(path), path=path, **options)  # type: ignore[arg-type]
     async with app.run_test(size=SIZES[0]) as pilot:
         await pilot.press(*keys)
         await wait_until(pilot, lambda: not app.session.seeking)

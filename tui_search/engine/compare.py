@@ -117,8 +117,10 @@ def table_lines(cells: list[tuple[str, ...]]) -> list[str]:
     return ["  ".join(c.ljust(w) for c, w in zip(row, widths)).rstrip() for row in cells]
 
 
-def summary_sentence(rows: list[TableRow]) -> str:
-    """In the tutorial's terms: "DFS expanded 7 nodes, BFS 22; both paths have 7 moves"."""
+def summary_sentence(rows: list[TableRow], terrain: bool = False) -> str:
+    """In the tutorial's terms: "DFS expanded 7 nodes, BFS 22; both paths have 7 moves".  On
+    a map with ``terrain`` each path's cost too, where the costs differ: "BFS's path has 7
+    moves, cost 32.11; UCS's 8 moves, cost 9.24" -- the fewest moves is not the cheapest."""
     first, *rest = rows
     expanded = f"{first.label} expanded {first.outcome.expanded:,} nodes" + "".join(
         f", {r.label} {r.outcome.expanded:,}" for r in rest)
@@ -129,7 +131,16 @@ def summary_sentence(rows: list[TableRow]) -> str:
             return f"{expanded}; no path found, {', '.join(gave_up)} stopped at the step limit"
         return f"{expanded}; no path"
     lengths = {r.outcome.length for r in found}
-    if len(found) == len(rows) and len(lengths) == 1:
+    costs = {round(r.outcome.cost or 0.0, 6) for r in found}
+    if terrain and len(costs) > 1:
+        said: list[str] = []
+        for r in rows:
+            o = r.outcome
+            what = f"{o.length} moves, cost {o.cost or 0.0:.2f}"
+            said.append(f"{r.label} found none" if not o.found else
+                        f"{r.label}'s {what}" if said else f"{r.label}'s path has {what}")
+        paths = "; ".join(said)
+    elif len(found) == len(rows) and len(lengths) == 1:
         n = found[0].outcome.length
         paths = f"{'both' if len(rows) == 2 else 'all'} paths have {n} moves"
     else:

@@ -7,7 +7,8 @@ A cell ``width`` x ``height`` characters (4x2 or more) is laid out as::
 
     ●  17      glyph top left, the first number right-aligned on the first line
       ↗        the arrow in the middle line
-       31      the second number (f), right-aligned on the last line when there is one free
+    5  31      the second number (f), right-aligned on the last line when there is one free;
+               the cell's terrain cost (when not 1) on the last line: right, else left
 """
 
 from __future__ import annotations
@@ -55,8 +56,10 @@ def label(run: Run, cell: Cell, mode: str) -> tuple[str, list[float]]:
 
 
 def cell_line(run: Run | None, cell: Cell, width: int, height: int, sub: int, mode: str,
-              glyph: str, wall: bool) -> str:
-    """Line ``sub`` (0 .. height-1) of ``cell`` drawn ``width`` characters wide."""
+              glyph: str, wall: bool, cost: str | None = None) -> str:
+    """Line ``sub`` (0 .. height-1) of ``cell`` drawn ``width`` characters wide; ``cost``
+    (the cell's terrain cost, when it is not 1) on the last line, right-aligned when no
+    number is there, else at its left."""
     if wall:
         return "█" * width
     arrow, numbers = label(run, cell, mode) if run is not None else ("", [])
@@ -67,12 +70,17 @@ def cell_line(run: Run | None, cell: Cell, width: int, height: int, sub: int, mo
     if arrow and sub == middle:
         text[(width - 1) // 2] = arrow
     slots = [0] + ([height - 1] if height > 1 and (height - 1 != middle or not arrow) else [])
+    right_free = True  # nothing right-aligned on this line yet
     for line, value in zip(slots, numbers):
         if line != sub:
             continue
         shown = number_text(value, width - 2)
         if shown is not None:
             text[width - len(shown):] = shown
+            right_free = False
+    if cost is not None and height > 1 and sub == height - 1:
+        at = width - len(cost) if right_free else 0
+        text[at:at + len(cost)] = cost
     return "".join(text)
 
 

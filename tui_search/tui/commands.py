@@ -1,5 +1,5 @@
 """The app's own commands in Textual's command palette (``ctrl+p``), beside Textual's: each
-algorithm of the registry, each theme, and the actions a key does (settings, save, save as,
+algorithm of the registry, each theme, each cost of the terrain brush, and the actions a key does (settings, save, save as,
 open, overview, zoom, cell labels, help).
 
 A command runs the same action as its key (the main screen's ``run_action``), so the palette
@@ -20,6 +20,7 @@ from tui_search.engine.algorithms import ALGORITHMS
 from tui_search.engine.compare import parse_compare
 from tui_search.engine.exercises import QUOTES
 from tui_search.tui.keys import KEYS
+from tui_search.tui.map_edits import BRUSHES, brush_name
 from tui_search.tui.themes import THEMES
 
 #: Comparisons offered by name: the tutorial's, the next lesson's, and A*'s heuristics.
@@ -75,6 +76,9 @@ class SearchCommands(Provider):
             found.append((f"Compare: {' · '.join(labels)}",
                           partial(main.run_action, f"show_compare({spec_text!r})"),
                           f"{why} (side by side, in lockstep; key c toggles)"))
+        for cost in (*BRUSHES, 0.0):
+            found.append((f"Terrain brush: {brush_name(cost) if cost else 'off'}", partial(main.run_action, f"brush({cost})"),
+                          "m or a mouse drag paints it (key b cycles the brush)"))
         bindings = {b.action: b for b in Binding.make_bindings(KEYS)}
         for action, name in ACTIONS.items():
             binding = bindings[action]

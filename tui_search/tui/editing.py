@@ -1,6 +1,6 @@
-"""Edits of the map: the cursor, start/goal/obstacle keys and mouse strokes.
+"""Edits of the map: the cursor, start/goal/obstacle/terrain keys and mouse strokes.
 
-:func:`place` and :func:`set_wall` edit a grid and return ``None``, or a one-line reason they
+:func:`place`, :func:`set_wall` and :func:`paint_terrain` edit a grid and return ``None``, or a one-line reason they
 refused (start on an obstacle, an obstacle on the goal ...).  The session
 (:class:`~tui_search.tui.session.Session`) records every edit that happens (undo, redo, the
 title's "modified": :mod:`~tui_search.tui.history`) and starts new runs at step 0.
@@ -42,4 +42,14 @@ def set_wall(grid: Grid, cell: Cell, blocked: bool) -> str | None:
     if grid.is_blocked(cell) == blocked:
         return f"{cell_text(cell)} is already {'an obstacle' if blocked else 'free'}"
     grid.set_blocked(cell, blocked)
+    return None
+
+
+def paint_terrain(grid: Grid, cell: Cell, cost: float) -> str | None:
+    """Make ``cell`` cost ``cost`` (the terrain brush; 1 is plain floor)."""
+    if grid.is_blocked(cell):
+        return f"Cannot paint terrain on an obstacle at {cell_text(cell)}"
+    if grid.cost(cell) == cost:
+        return f"{cell_text(cell)} already costs {cost:g}"
+    grid.set_cost(cell, cost)
     return None

@@ -1,7 +1,8 @@
 """The map's edit history: undo and redo, and whether the map differs from its file.
 
 An :class:`Edit` is what one key or one mouse stroke changed: each obstacle cell with what it
-was and became, and the start and goal before and after.  :class:`History` keeps the last
+was and became, each cell the terrain brush painted with its cost before and after, and the
+start and goal before and after.  :class:`History` keeps the last
 :data:`MAX_EDITS` of them and where the map stands among them, so undo and redo re-apply the
 changes to the grid, and "modified" is a comparison of two positions (where the map is, and
 where it was read or last saved) rather than of two grids: a mouse stroke on a big map is an
@@ -28,17 +29,21 @@ Ends = tuple[Cell | None, Cell | None]
 @dataclass
 class Edit:
     """One edit: ``walls`` lists ``(cell, blocked before, blocked after)`` in the order the
-    cells changed; ``ends`` is the start and goal before and after (None: they stayed)."""
+    cells changed, ``costs`` ``(cell, cost before, cost after)`` (the terrain brush); ``ends``
+    is the start and goal before and after (None: they stayed)."""
 
     walls: list[tuple[Cell, bool, bool]] = field(default_factory=list)
     ends: tuple[Ends, Ends] | None = None
+    costs: list[tuple[Cell, float, float]] = field(default_factory=list)
 
     def apply(self, grid: Grid, undo: bool) -> Cell:
         """Put ``grid`` as it was before this edit (``undo``) or after it; the cell the edit
-        is about, for the cursor: its first obstacle cell, else where the end that moved is
+        is about, for the cursor: its first obstacle (or painted) cell, else where the end that moved is
         now (or was, when it left the map)."""
         for cell, before, after in reversed(self.walls) if undo else self.walls:
             grid.set_blocked(cell, before if undo else after)
+        for cell, cost_before, cost_after in reversed(self.costs) if undo else self.costs:
+            grid.set_cost(cell, cost_before if undo else cost_after)
         if self.ends is not None:
             now, then = self.ends if undo else self.ends[::-1]
             grid.start, grid.goal = now
@@ -46,7 +51,9 @@ class Edit:
                      for c in pair if c is not None]
             if moved:
                 return moved[0]
-        return self.walls[0][0] if self.walls else grid.start or (0, 0)
+        if self.walls:
+            return self.walls[0][0]
+        return self.costs[0][0] if self.costs else grid.start or (0, 0)
 
 
 class History:
@@ -76,6 +83,7 @@ class History:
         """Record ``edit``, just made: a new edit, or the next cell of the mouse stroke."""
         if self._stroke_edit is not None:
             self._stroke_edit.walls.extend(edit.walls)
+            self._stroke_edit.costs.extend(edit.costs)
             return
         del self._edits[self._done:]  # what was undone can't be redone after a new edit
         if self._saved is not None and self._saved > self._done:

@@ -18,7 +18,7 @@ from tui_search.tui.themes import THEMES
 KEY_IMPORTANCE = {
     "help": 10, "quit": 10, "stop_seek": 9, "next": 8, "play": 7, "pause": 7, "algorithm": 6,
     "compare": 6, "undo": 5, "settings": 5, "reset": 4, "save": 3, "quiz": 2, "overview": 2,
-    "zoom": 1,
+    "zoom": 1, "paint": 5,
     "pick": 7,  # the frontier panel's, while it has the focus in the quiz
 }
 STEP = Binding.Group("Step", compact=True)
@@ -48,6 +48,11 @@ KEYS: list[BindingType] = [
     Binding("s", "place('start')", "Start", show=False, tooltip="Start at the cursor"),
     Binding("g", "place('goal')", "Goal", show=False, tooltip="Goal at the cursor"),
     Binding("o", "toggle_wall", "Wall", show=False, tooltip="Obstacle on/off at the cursor"),
+    Binding("b", "brush", "Brush", show=False,
+            tooltip="Terrain brush: the next cost (2, 3, 5, 9, 1 plain floor, off); a mouse "
+            "drag paints it"),
+    # Shown only while the brush is on, as "Paint cost 5" (the key bar says the brush).
+    Binding("m", "paint", "Paint", tooltip="Paint the terrain brush's cost at the cursor"),
     # Shown once the map has an edit to undo or redo (the title says "modified" then too).
     Binding("ctrl+z", "undo", "Undo", group=UNDO,
             tooltip="Undo the last edit of the map (a mouse stroke is one edit)"),

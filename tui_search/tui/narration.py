@@ -71,6 +71,29 @@ def _reopened(run: Run, added: range) -> list[str]:
     return out
 
 
+#: At most this many successors' terrain costs said in one step's narration.
+TERRAIN_NOTES = 3
+
+
+def _terrain(run: Run, expanded: int, added: range) -> list[str]:
+    """What the terrain added to the step's successors' g: "(3,4) costs 5: g 7.41 → 12.41"
+    (the expanded node's g, then the successor's), for those that do not cost 1."""
+    costs = run.nodes.costs(expanded)
+    grid = run.grid
+    if costs is None or grid.costs is None:
+        return []
+    out = []
+    for h in added:
+        cell = run.nodes.cell(h)
+        reached = run.nodes.costs(h)
+        if grid.cost(cell) != 1.0 and reached is not None:
+            out.append(f"{cell_text(cell)} costs {grid.cost(cell):g}: "
+                       f"g {costs[0]:.2f} → {reached[0]:.2f}")
+    if len(out) > TERRAIN_NOTES:
+        out[TERRAIN_NOTES:] = [f"{len(out) - TERRAIN_NOTES} more on terrain"]
+    return out
+
+
 def _node_text(run: Run, g: int) -> str:
     """An event as the tutorial names it: START, or the cell (and the move that reached it)."""
     cell = cell_text(run.nodes.cell(g))
@@ -123,6 +146,9 @@ def _narrate(run: Run) -> str:
         reopened = _reopened(run, added)
         if reopened:
             text += "; " + ", ".join(reopened)
+        terrain = _terrain(run, expanded, added)
+        if terrain:
+            text += "; " + ", ".join(terrain)
     elif dirs:
         text = f"{prefix}Expanded {node}: added {', '.join(dirs)} to the {word}"
     elif limit is not None and run.nodes.depth(expanded) >= limit:

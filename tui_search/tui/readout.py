@@ -1,5 +1,5 @@
 """Ask the map: what the run knows of one cell, in a line -- "(12,40): expanded at step 345,
-depth 17, reached by NE from (11,41)" (no Textual: the readout widget shows the string)."""
+depth 17, reached by NE from (11,41)", "(3,4) costs 5: never reached" (no Textual: the readout widget shows the string)."""
 
 from __future__ import annotations
 
@@ -13,11 +13,19 @@ def _number(value: float) -> str:
     return f"{value:.2f}".rstrip("0").rstrip(".")
 
 
+def cell_head(grid: Grid, cell: Cell) -> str:
+    """``(3,4)``, or ``(3,4) costs 5`` on terrain (a free cell that does not cost 1)."""
+    cost = grid.cost(cell)
+    if cost == 1.0 or grid.is_blocked(cell):
+        return cell_text(cell)
+    return f"{cell_text(cell)} costs {_number(cost)}"
+
+
 def describe(run: Run | None, grid: Grid, cell: Cell) -> str:
     """``cell``'s coordinates and what it is: an obstacle, never reached, on the frontier
     since a step, expanded at a step, with its depth, costs and the move that reached it
     (of its latest event at the run's position)."""
-    head = cell_text(cell)
+    head = cell_head(grid, cell)
     if grid.is_blocked(cell):
         return f"{head}: obstacle"
     parts = []
@@ -69,8 +77,8 @@ def describe_each(runs: list[Run], labels: list[str], grid: Grid, cell: Cell) ->
     if len(runs) < 2 or grid.is_blocked(cell):
         return describe(runs[0] if runs else None, grid, cell)
     bodies = [describe(run, grid, cell).partition(": ")[2] for run in runs]
-    return f"{cell_text(cell)}: " + " │ ".join(
+    return f"{cell_head(grid, cell)}: " + " │ ".join(
         f"{label} {body}" for label, body in zip(labels, bodies))
 
 
-__all__ = ["describe", "describe_each"]
+__all__ = ["cell_head", "describe", "describe_each"]

@@ -19,8 +19,8 @@ from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.run import MAX_STEPS, Run
 from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
 from tui_search.tui import playback
-from tui_search.tui.editing import place, set_wall
-from tui_search.tui.history import Edit, History
+from tui_search.tui.history import History
+from tui_search.tui.map_edits import BRUSHES, NO_BRUSH, MapEdits
 from tui_search.tui.quiz import NO_RUN, Quiz, verdict
 from tui_search.tui.seek import Seek
 
@@ -38,18 +38,24 @@ LOCKSTEP_SHORT = "Lockstep: n, p and end move every search · 1-6 add or take ou
 Before = list[tuple[int, bool]]
 
 
+def map_key(grid: Grid) -> tuple[bytes, bytes | None]:
+    """The map's obstacles and terrain as they are (a benchmark's optimum holds while they
+    stay so: an obstacle or a cost painted lapses it)."""
+    return bytes(grid.blocked), None if grid.costs is None else bytes(grid.costs)
+
+
 def normal_spec(spec: str) -> str:
     """``bfs, dfs,`` as ``bfs,dfs``: the searches of a spec, no blanks."""
     return ",".join(part.strip() for part in spec.split(",") if part.strip())
 
 
-class Session:
+class Session(MapEdits):
     """The state behind the screen.  ``compare`` (``bfs,dfs``, as ``--compare`` spells it)
     opens with those searches side by side; else one pane runs ``algorithm``.
 
     ``optimal_cost`` is a benchmark's lowest cost for this map, start and goal (a MovingAI
-    ``.scen`` row: 8 moves, no corner cutting), shown beside a path's cost while the map, its
-    ends and those rules stay as they are.  ``exercise`` is the tutorial's exercise 1 or 2
+    ``.scen`` row: 8 moves, no corner cutting), shown beside a path's cost while the map (its
+    obstacles and terrain costs), its ends and those rules stay as they are.  ``exercise`` is the tutorial's exercise 1 or 2
     shown as a live challenge.
     """
 
@@ -86,8 +92,9 @@ class Session:
         self.exercise = exercise
         self.fold_trees = False  # several panes: their trees folded away by the user
         self.show_code = False  # the Code panel in the trees' place (the pseudocode, lit)
+        self.brush: float | None = None  # the terrain brush's cost (None: off)
         self._benchmark = None if optimal_cost is None else (
-            bytes(grid.blocked), grid.start, grid.goal, optimal_cost)
+            map_key(grid), grid.start, grid.goal, optimal_cost)
         self.new_runs()
 
     # -- what is shown -------------------------------------------------------------------
@@ -164,9 +171,9 @@ class Session:
         """The benchmark's lowest cost, if it applies to the map and the rules as they are."""
         if self._benchmark is None:
             return None
-        blocked, start, goal, cost = self._benchmark
+        key, start, goal, cost = self._benchmark
         grid, sem = self.grid, self.semantics
-        same_map = (grid.start, grid.goal) == (start, goal) and bytes(grid.blocked) == blocked
+        same_map = (grid.start, grid.goal) == (start, goal) and map_key(grid) == key
         rules = sem.corners == "never" and len(sem.order) == 8
         return cost if same_map and rules else None
 
@@ -230,44 +237,7 @@ class Session:
         else:
             self.new_runs()
 
-    # -- the map -------------------------------------------------------------------------
-    def _edited(self, refusal: str | None, edit: Edit) -> str | None:
-        if refusal is None:
-            self.history.add(edit)
-            self.new_runs()
-        return refusal
-
-    def place(self, what: str) -> str | None:
-        """The start or the goal at the cursor: None, or why not."""
-        grid = self.grid
-        before = (grid.start, grid.goal)
-        refusal = place(grid, what, self.cursor)
-        return self._edited(refusal, Edit(ends=(before, (grid.start, grid.goal))))
-
-    def toggle_wall(self) -> str | None:
-        return self._set_wall(self.cursor, not self.grid.is_blocked(self.cursor))
-
-    def _set_wall(self, cell: Cell, wall: bool) -> str | None:
-        return self._edited(set_wall(self.grid, cell, wall), Edit([(cell, not wall, wall)]))
-
-    def paint(self, cell: Cell, wall: bool) -> bool:
-        """A mouse stroke over ``cell``: an obstacle or free (start and goal stay).  True
-        when it changed the map."""
-        if cell in (self.grid.start, self.grid.goal) or self.grid.is_blocked(cell) == wall:
-            return False
-        return self._set_wall(cell, wall) is None
-
-    def undo(self, redo: bool = False) -> str | None:
-        """Undo the last edit of the map (``redo``: make the last one undone again), the
-        cursor on it, from step 0: None, or why nothing changed."""
-        history = self.history
-        cell = history.redo(self.grid) if redo else history.undo(self.grid)
-        if cell is None:
-            return "Nothing to redo" if redo else "Nothing to undo"
-        self.cursor = cell
-        self.new_runs()
-        return None
-
+    # -- the map (its edits: MapEdits) ----------------------------------------------------
     def move_cursor(self, cell: Cell) -> bool:
         if not self.grid.in_bounds(cell):
             return False
@@ -392,4 +362,4 @@ class Session:
         return check(self.exercise, self.grid, tutorial_grid(), self.max_steps)
 
 
-__all__ = ["DEFAULT_COMPARE", "LOCKSTEP", "LOCKSTEP_SHORT", "NEEDS_ENDPOINTS", "Session", "normal_spec"]
+__all__ = ["BRUSHES", "DEFAULT_COMPARE", "LOCKSTEP", "LOCKSTEP_SHORT", "NEEDS_ENDPOINTS", "NO_BRUSH", "Session", "normal_spec"]

@@ -51,6 +51,15 @@ class ThemeSpec:
 
 DEFAULT_THEME = "dark"
 
+
+def ramp(*steps: str, text: str) -> dict[str, str]:
+    """The terrain ramp's variables: ``$map-cost-1`` ... (a free cell's cost, the lowest step
+    first; each step further from the background in lightness, so the ramp reads in every
+    vision and in monochrome), and ``$map-cost-text`` for the glyphs on them."""
+    return {**{f"map-cost-{n}": colour for n, colour in enumerate(steps, start=1)},
+            "map-cost-text": text}
+
+
 #: Every theme by name, in the order ``t`` cycles through them.
 THEMES: dict[str, ThemeSpec] = {
     t.name: t
@@ -75,6 +84,7 @@ THEMES: dict[str, ThemeSpec] = {
                    "map-expanded": "#8fb8f0", "map-expanded-text": "#0b2a5c",
                    "map-current": "#1450b8", "map-current-text": "#ffffff",
                    "map-path": "#0d5c28", "map-path-text": "#ffffff",
+                   **ramp("#f1e4cc", "#e0c89c", "#c9a66a", "#a8823e", text="#111111"),
                    "footer-key-foreground": "#1450b8", "border-blurred": "#8a94a6"},
                   dark=False),
         # Okabe and Ito's palette for colour-blind viewers: meaning rides on the blue-orange
@@ -93,7 +103,8 @@ THEMES: dict[str, ThemeSpec] = {
                    "map-goal": "#F0E442", "map-goal-text": "#000000",
                    "map-expanded": "#004a75",
                    "map-current": "#56B4E9", "map-current-text": "#000000",
-                   "map-path": "#D55E00", "map-path-text": "#000000"}),
+                   "map-path": "#D55E00", "map-path-text": "#000000",
+                   **ramp("#3d3526", "#615233", "#8a7440", "#b3984f", text="#e0e0e0")}),
     )
 }
 
@@ -126,4 +137,5 @@ def map_defaults(variables: dict[str, str]) -> dict[str, str]:
         "map-expanded": v["primary-darken-2"], "map-expanded-text": f"{v['foreground']} 70%",
         "map-current": v["primary-lighten-1"], "map-current-text": v["text"],
         "map-path": v["success-darken-2"], "map-path-text": v["success-lighten-2"],
+        **ramp("#3a3020", "#5c4a2a", "#7f6535", "#a68242", text=v["foreground"]),
     }

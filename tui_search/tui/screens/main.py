@@ -9,6 +9,7 @@ from textual.binding import BindingType
 
 from tui_search.tui import playback
 from tui_search.tui.keys import KEYS
+from tui_search.tui.map_edits import brush_name
 from tui_search.tui.screens.panes import PanesScreen
 from tui_search.tui.screens.settings_choice import SettingsChoice
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
@@ -175,6 +176,31 @@ class MainScreen(PanesScreen):
     def action_toggle_wall(self) -> None:
         self._edited(self.session.toggle_wall())
 
+    # -- the terrain brush -------------------------------------------------------------------
+    def action_brush(self, cost: float | None = None) -> None:
+        """The brush's next cost (``b``), or ``cost`` (the palette's; 0: off)."""
+        session = self.session
+        if cost is None:
+            session.cycle_brush()
+        else:
+            session.brush = cost or None
+        self.show_brush()
+
+    def show_brush(self) -> None:
+        """The key bar says the brush (``m Paint cost 5``) while it is on, and a note says
+        what changed."""
+        cost = self.session.brush
+        bar = self.query_one(KeyBar)
+        bar.relabel("paint", None if cost is None else f"Paint {brush_name(cost)}")
+        bar.raise_hint("paint", cost is not None)
+        self.refresh_bindings()
+        self.notify("Terrain brush off" if cost is None else
+                    f"Terrain brush: {brush_name(cost)} (m or a mouse drag paints it)",
+                    timeout=3)
+
+    def action_paint(self) -> None:
+        self._edited(self.session.paint_cost())
+
     def action_undo(self) -> None:
         """Undo the last edit (a mouse stroke is one): the cursor on it, the searches anew."""
         self._undone(self.session.undo())
@@ -193,8 +219,13 @@ class MainScreen(PanesScreen):
         self.move_cursor(message.cell)
         self._stroke = None
         grid, cell = self.session.grid, message.cell
-        if message.button == 1 and not self.views[0].overview and cell not in (
-                grid.start, grid.goal):
+        if message.button != 1 or self.views[0].overview:
+            return
+        if self.session.brush is not None:  # the terrain brush: the stroke paints its cost
+            self._stroke = "brush"
+            self.session.history.begin_stroke()
+            self._stroked(self.session.stroke_cost(cell))
+        elif cell not in (grid.start, grid.goal):
             self._stroke = not grid.is_blocked(cell)
             self.session.history.begin_stroke()  # the cells of this stroke: one edit
             self._edited(self.session.toggle_wall())
@@ -202,9 +233,15 @@ class MainScreen(PanesScreen):
     def on_grid_view_cell_dragged(self, message: GridView.CellDragged) -> None:
         if self._stroke is not None:
             self.move_cursor(message.cell)
-            if self.session.paint(message.cell, self._stroke):
-                self._timer.pause()
-                self.new_runs_shown()
+            session = self.session
+            stroke = self._stroke
+            self._stroked(session.paint(message.cell, stroke) if isinstance(stroke, bool)
+                          else session.stroke_cost(message.cell))
+
+    def _stroked(self, changed: bool) -> None:
+        if changed:
+            self._timer.pause()
+            self.new_runs_shown()
 
     def on_grid_view_stroke_ended(self, message: GridView.StrokeEnded) -> None:
         self._stroke = None
@@ -292,4 +329,5 @@ class MainScreen(PanesScreen):
         state["undo"] = (history.can_undo() or None) if edited else False
         state["redo"] = (history.can_redo() or None) if edited else False
         state["last"], state["first"] = state["next"], state["prev"]
+        state["paint"] = session.brush is not None
         return state.get(action, True)

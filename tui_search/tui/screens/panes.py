@@ -63,8 +63,10 @@ class PanesScreen(Screen[None]):
         self.file_access = file_access
         self.files = FileCommands(self)
         self.panes = self._new_panes()
-        self._stroke: bool | None = None  # what a mouse drag paints: True wall, False free
+        # what a mouse drag paints: True wall, False free, "brush" the terrain brush's cost
+        self._stroke: bool | str | None = None
         self._bindings_key: tuple[object, ...] = ()
+        self._terrain = session.grid.costs is not None  # what the legend was drawn for
 
     # -- layout ----------------------------------------------------------------------------
     def compose(self) -> ComposeResult:
@@ -175,6 +177,11 @@ class PanesScreen(Screen[None]):
                 pane.view.set_view_state(state)  # zoom, labels, overview: as the others
             self.call_later(self._panes_changed, removing, mounting)
         self._check_exercise()
+        terrain = session.grid.costs is not None
+        if terrain != self._terrain:  # the legend shows the ramp, or no longer
+            self._terrain = terrain
+            self.legend.refresh(layout=True)
+            self.fit_panes()
         self.present()
 
     async def _panes_changed(self, removing: list[AwaitRemove],

@@ -33,19 +33,17 @@ from textual.strip import Strip
 
 from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.run import Run
-from tui_search.tui.cell_codes import (
-    BY_RANK,
-    COMPONENTS,
-    FREE,
-    GLYPHS,
-    GOAL,
-    RANK,
-    START,
-    WALL,
-    half_blocks,
-)
-from tui_search.tui.cell_labels import LABEL_MODES, cell_line
+from tui_search.tui.cell_codes import COMPONENTS, half_blocks
+from tui_search.tui.cell_labels import LABEL_MODES
 from tui_search.tui.geometry import Geometry, snapped
+from tui_search.tui.widgets.cell_style import (
+    RAMP_COMPONENTS,
+    CellLooks,
+    block_codes,
+    row_codes,
+    row_costs,
+    swatches,
+)
 from tui_search.tui.widgets.line_panel import CachedStyles, QuietScrollbars, window_strip
 
 
@@ -79,7 +77,8 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
 
         cell: Cell | None
 
-    COMPONENT_CLASSES = {f"grid-view--{name}" for name in COMPONENTS} | {"grid-view--cursor"}
+    COMPONENT_CLASSES = {f"grid-view--{name}" for name in COMPONENTS + RAMP_COMPONENTS} | {
+        "grid-view--cursor"}
 
     DEFAULT_CSS = """
     GridView {
@@ -96,6 +95,11 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
                                   text-style: bold; }
         & > .grid-view--path { background: $map-path; color: $map-path-text; text-style: bold; }
         & > .grid-view--cursor { text-style: reverse; }
+        /* Terrain: a free cell's cost, light to dark (tui_search/tui/widgets/cell_style.py). */
+        & > .grid-view--cost-1 { background: $map-cost-1; color: $map-cost-text; }
+        & > .grid-view--cost-2 { background: $map-cost-2; color: $map-cost-text; }
+        & > .grid-view--cost-3 { background: $map-cost-3; color: $map-cost-text; }
+        & > .grid-view--cost-4 { background: $map-cost-4; color: $map-cost-text; }
     }
     """
 
@@ -114,7 +118,7 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         self.labels = LABEL_MODES[0]
         self._stroke = False  # the mouse went down on the map and is not up yet
         self._last: Cell | None = None  # the cell the stroke is on
-        self._looks: list[tuple[str, Style]] | None = None  # cells: code + 8 * cursor
+        self._looks: CellLooks | None = None  # cells: code + 8 * cursor, and terrain
         self._swatches: list[Style] | None = None  # the overview's: a colour per code
 
     # -- what to show (attributes pushed down by the screen) --------------------------------
@@ -289,49 +293,19 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         self._looks = None
         self._swatches = None
 
-    def _cell_looks(self) -> list[tuple[str, Style]]:
-        """Glyph and style of each drawing code (``code + len(COMPONENTS)``: under the
-        cursor)."""
+    def _cell_looks(self) -> CellLooks:
+        """Glyph and style of each drawing code and terrain (see :class:`CellLooks`)."""
         if self._looks is None:
-            cursor = self.get_component_rich_style("grid-view--cursor")
-            styles = [self.get_component_rich_style(f"grid-view--{n}") for n in COMPONENTS]
-            self._looks = [(GLYPHS[i], styles[i]) for i in range(len(COMPONENTS))] + [
-                (GLYPHS[i], styles[i] + cursor) for i in range(len(COMPONENTS))
-            ]
+            self._looks = CellLooks(self.get_component_rich_style)
         return self._looks
 
     def swatch(self, code: int) -> Style:
         """The one colour a kind of cell has in the overview (and in the legend)."""
         if self._swatches is None:
-            base = self.rich_style
-            swatches = []
-            for i, name in enumerate(COMPONENTS):
-                style = self.get_component_rich_style(f"grid-view--{name}")
-                colour = style.bgcolor
-                if i in (FREE, WALL) or colour is None or colour == base.bgcolor:
-                    colour = style.color if i == WALL else (colour or base.bgcolor)
-                swatches.append(Style(color=colour))
-            self._swatches = swatches
+            self._swatches = swatches(self.get_component_rich_style, self.rich_style)
         return self._swatches[code]
 
     # -- drawing ----------------------------------------------------------------------------
-    def _codes(self, y: int, x0: int, x1: int) -> list[int]:
-        """Drawing codes of cells ``x0 .. x1-1`` of map row ``y``."""
-        g = self.grid
-        run = self.run
-        codes = run.now.row_states(y, x0, x1) if run is not None else [FREE] * (x1 - x0)
-        w = g.width
-        blocked = g.blocked
-        base = y * w
-        if blocked.find(1, base + x0, base + x1) >= 0:
-            for i in range(x1 - x0):
-                if blocked[base + x0 + i]:
-                    codes[i] = WALL
-        for cell, code in ((g.start, START), (g.goal, GOAL)):
-            if cell is not None and cell[1] == y and x0 <= cell[0] < x1:
-                codes[cell[0] - x0] = code
-        return codes
-
     def render_line(self, y: int) -> Strip:
         sx, sy = self.scroll_offset
         width = self.scrollable_content_region.width
@@ -346,40 +320,30 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         row = rows[0]
         columns = geo.visible_columns(sx, width)
         x0, x1 = columns.start, columns.stop
-        codes = self._codes(row, x0, x1)
+        codes = row_codes(self.grid, self.run, row, x0, x1)
         cx, cy = self.cursor
         if cy == row and x0 <= cx < x1:
             codes[cx - x0] += len(COMPONENTS)
         looks = self._cell_looks()
+        costs = row_costs(self.grid, row, x0, x1)
         segments = [Segment(" " * self.pad_x, background)]  # the padding that centres the map
-        if geo.cell_width == 2:  # one segment per run of like cells
+        if geo.cell_width == 2 and costs is None:  # one segment per run of like cells
             for code, like in groupby(codes):
-                glyph, style = looks[code]
+                glyph, style = looks.codes[code]
                 segments.append(Segment(glyph * len(list(like)), style))
+        elif geo.cell_width == 2:
+            for (text, look), alike in groupby(map(looks.terrain, codes, costs or ())):
+                segments.append(Segment(text * len(list(alike)), look))
         else:
-            sub = line - row * geo.cell_height
-            run = self.run
-            for x, code in zip(columns, codes):
-                base = code % len(COMPONENTS)
-                text = cell_line(run, (x, row), geo.cell_width, geo.cell_height, sub,
-                                 self.labels, GLYPHS[base][0], base == WALL)
-                segments.append(Segment(text, looks[code][1]))
+            segments += looks.big_cells(self.run, row, columns, codes, costs, geo.cell_width,
+                                        geo.cell_height, line - row * geo.cell_height,
+                                        self.labels)
         return window_strip(segments, sx - x0 * geo.cell_width, width, background)
 
     def _block_codes(self, rows: range, x0: int, x1: int) -> list[int] | None:
         """For each block of the overview's columns ``x0 .. x1-1`` over map rows ``rows``:
         the code of highest rank in it (None for no rows: a half below the map)."""
-        if not rows:
-            return None
-        b = self.geometry.across
-        best: list[int] | None = None
-        for y in rows:
-            ranks = [RANK[code] for code in self._codes(y, x0, x1)]
-            if b > 1:
-                ranks = [max(ranks[i : i + b]) for i in range(0, len(ranks), b)]
-            best = ranks if best is None else list(map(max, best, ranks))
-        assert best is not None
-        return [BY_RANK[rank] for rank in best]
+        return block_codes(self.grid, self.run, rows, x0, x1, self.geometry.across)
 
     def _overview_line(self, line: int, sx: int, width: int) -> Strip:
         background = self.cached_style()

@@ -69,7 +69,18 @@ class KeyBar(Widget):
         #: Actions whose hint matters most for now (a mode that is on: its key ends it), kept
         #: in sight before all but the ones of importance 10 (help and quit).
         self.raised: frozenset[str] = frozenset()
+        #: Descriptions that say a state (``Paint cost 5``), by action, over the bindings'.
+        self.labels: dict[str, str] = {}
         self._spans: list[tuple[int, int, str]] = []  # (start, end, key) of each hint drawn
+
+    def relabel(self, action: str, description: str | None) -> None:
+        """Describe ``action``'s hint as ``description`` (None: the binding's again)."""
+        if self.labels.get(action) != description:
+            if description is None:
+                self.labels.pop(action, None)
+            else:
+                self.labels[action] = description
+            self.refresh()
 
     def raise_hint(self, action: str, raised: bool) -> None:
         """Keep ``action``'s hint in sight (``raised``), or back to its own importance."""
@@ -116,7 +127,8 @@ class KeyBar(Widget):
                 hint = (keys, group.description, any(a.enabled for a in members))
                 hints.append((hint, actions[0]))
             else:
-                hints.extend((([key], a.binding.description, a.enabled), action)
+                hints.extend((([key], self.labels.get(action, a.binding.description),
+                               a.enabled), action)
                              for key, a, action in zip(keys, members, actions))
         return hints
 

@@ -1,5 +1,6 @@
 """The legend: every kind of cell drawn exactly as the map draws it (same glyph, same style, read
-from the map's own component classes), so a theme change changes both."""
+from the map's own component classes), so a theme change changes both; on a map with terrain,
+the ramp that shades a free cell by its cost too."""
 
 from __future__ import annotations
 
@@ -19,6 +20,7 @@ from tui_search.tui.cell_codes import (
     START,
     WALL,
 )
+from tui_search.tui.widgets.cell_style import RAMP_COMPONENTS, RAMP_NAMES
 from tui_search.tui.widgets.grid_view import GridView
 
 ENTRIES = (
@@ -56,6 +58,10 @@ class Legend(Widget):
         cursor = view.get_component_rich_style("grid-view--cursor")
         free = view.get_component_rich_style(f"grid-view--{COMPONENTS[FREE]}")
         out.append(Text.assemble((GLYPHS[FREE], free + cursor), " cursor"))
+        if view.grid.costs is not None:  # terrain: the ramp that shades a free cell's cost
+            out.append(Text.assemble(*(
+                (f" {name} ", view.get_component_rich_style(f"grid-view--{component}"))
+                for name, component in zip(RAMP_NAMES, RAMP_COMPONENTS)), " cost"))
         return out
 
     def _lines(self, width: int) -> Text:

@@ -1,0 +1,161 @@
+"""How each map cell looks: its drawing code (a search state, or what the grid says), its glyph
+and style, and its terrain -- a cell that costs more than 1 is shaded by a ramp of
+:data:`RAMP_LEVELS` steps (the themes' ``$map-cost-1`` ... variables: light to dark, so the
+ramp reads in every theme and in monochrome) and carries its cost's digit beside its glyph.
+
+The grid view draws with these; the legend shows the same looks.  No widget here: the styles
+come from the view's component classes through ``style_of``, so a theme change restyles both.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Sequence
+
+from rich.segment import Segment
+from rich.style import Style
+
+from tui_search.engine.grid import Grid
+from tui_search.engine.run import Run
+from tui_search.tui.cell_codes import BY_RANK, COMPONENTS, FREE, GLYPHS, GOAL, RANK, START, WALL
+from tui_search.tui.cell_labels import cell_line, number_text
+
+#: The ramp's steps: costs up to 3, 5, 7, and above (a cost of 1 or less is not shaded).
+RAMP_LEVELS = 4
+#: What each step of the ramp stands for, as the legend says it.
+RAMP_NAMES = ("2-3", "4-5", "6-7", "8+")
+#: The component classes of the ramp's steps (``grid-view--cost-1`` ...).
+RAMP_COMPONENTS = tuple(f"cost-{n}" for n in range(1, RAMP_LEVELS + 1))
+
+
+def cost_level(cost: float) -> int:
+    """The ramp's step for ``cost`` (0: not shaded, a cost of 1 or less)."""
+    if cost <= 1.0:
+        return 0
+    return min(RAMP_LEVELS, math.ceil((cost - 1.0) / 2))
+
+
+def cost_mark(cost: float) -> str:
+    """The character beside a 2-wide cell's glyph: the cost's digit for 2 to 9, else blank
+    (1, a fraction, or more than one digit: bigger cells write those)."""
+    if cost != 1.0 and cost.is_integer() and 0 < cost < 10:
+        return str(int(cost))
+    return " "
+
+
+def cost_text(cost: float, width: int) -> str | None:
+    """A big cell's cost, written at its bottom left (None: a cost of 1, or no room)."""
+    if cost == 1.0:
+        return None
+    return number_text(cost, 1 if width < 6 else width // 3)
+
+
+def row_codes(grid: Grid, run: Run | None, y: int, x0: int, x1: int) -> list[int]:
+    """Drawing codes of cells ``x0 .. x1-1`` of map row ``y``."""
+    codes = run.now.row_states(y, x0, x1) if run is not None else [FREE] * (x1 - x0)
+    blocked = grid.blocked
+    base = y * grid.width
+    if blocked.find(1, base + x0, base + x1) >= 0:
+        for i in range(x1 - x0):
+            if blocked[base + x0 + i]:
+                codes[i] = WALL
+    for cell, code in ((grid.start, START), (grid.goal, GOAL)):
+        if cell is not None and cell[1] == y and x0 <= cell[0] < x1:
+            codes[cell[0] - x0] = code
+    return codes
+
+
+def row_costs(grid: Grid, y: int, x0: int, x1: int) -> Sequence[float] | None:
+    """The costs of cells ``x0 .. x1-1`` of row ``y`` (None: the map has no terrain)."""
+    costs = grid.costs
+    if costs is None:
+        return None
+    base = y * grid.width
+    return costs[base + x0: base + x1]
+
+
+class CellLooks:
+    """The glyph and style of each drawing code, and each step of the ramp, plain and under
+    the cursor (``code + len(COMPONENTS)``)."""
+
+    def __init__(self, style_of: Callable[[str], Style]) -> None:
+        cursor = style_of("grid-view--cursor")
+        n = len(COMPONENTS)
+        styles = [style_of(f"grid-view--{name}") for name in COMPONENTS]
+        self.codes: list[tuple[str, Style]] = [(GLYPHS[i], styles[i]) for i in range(n)] + [
+            (GLYPHS[i], styles[i] + cursor) for i in range(n)]
+        ramp = [styles[FREE]] + [style_of(f"grid-view--{name}") for name in RAMP_COMPONENTS]
+        self.ramp: list[Style] = ramp + [style + cursor for style in ramp]
+
+    def terrain(self, code: int, cost: float) -> tuple[str, Style]:
+        """A cell of ``code`` (cursor included) that costs ``cost``: a free cell shaded by
+        the ramp, any cell but an obstacle with its cost's digit beside its glyph."""
+        glyph, style = self.codes[code]
+        base = code % len(COMPONENTS)
+        if base == WALL:
+            return glyph, style
+        if base == FREE:
+            style = self.ramp[cost_level(cost) + (RAMP_LEVELS + 1) * (code != base)]
+        return glyph[0] + cost_mark(cost), style
+
+    def big_cells(self, run: Run | None, row: int, columns: range, codes: list[int],
+                  costs: Sequence[float] | None, width: int, height: int, sub: int,
+                  labels: str) -> list[Segment]:
+        """Line ``sub`` of the cells ``columns`` of map row ``row``, each ``width`` x
+        ``height`` characters: glyph, label (:func:`cell_line`) and terrain cost."""
+        out = []
+        for i, (x, code) in enumerate(zip(columns, codes)):
+            base = code % len(COMPONENTS)
+            style = self.codes[code][1]
+            cost = None
+            if costs is not None:
+                style = self.terrain(code, costs[i])[1]
+                cost = cost_text(costs[i], width)
+            text = cell_line(run, (x, row), width, height, sub, labels, GLYPHS[base][0],
+                             base == WALL, cost)
+            out.append(Segment(text, style))
+        return out
+
+
+def swatches(style_of: Callable[[str], Style], base: Style) -> list[Style]:
+    """The one colour each kind of cell has in the overview (and in the legend): its fill,
+    an obstacle's glyph colour, a free cell the background."""
+    out = []
+    for i, name in enumerate(COMPONENTS):
+        style = style_of(f"grid-view--{name}")
+        colour = style.bgcolor
+        if i in (FREE, WALL) or colour is None or colour == base.bgcolor:
+            colour = style.color if i == WALL else (colour or base.bgcolor)
+        out.append(Style(color=colour))
+    return out
+
+
+def block_codes(grid: Grid, run: Run | None, rows: range, x0: int, x1: int, across: int
+                ) -> list[int] | None:
+    """For each block of ``across`` of the overview's columns ``x0 .. x1-1`` over map rows
+    ``rows``: the code of highest rank in it (None for no rows: a half below the map)."""
+    if not rows:
+        return None
+    best: list[int] | None = None
+    for y in rows:
+        ranks = [RANK[code] for code in row_codes(grid, run, y, x0, x1)]
+        if across > 1:
+            ranks = [max(ranks[i : i + across]) for i in range(0, len(ranks), across)]
+        best = ranks if best is None else list(map(max, best, ranks))
+    assert best is not None
+    return [BY_RANK[rank] for rank in best]
+
+
+__all__ = [
+    "RAMP_COMPONENTS",
+    "RAMP_LEVELS",
+    "RAMP_NAMES",
+    "CellLooks",
+    "block_codes",
+    "cost_level",
+    "cost_mark",
+    "cost_text",
+    "row_codes",
+    "row_costs",
+    "swatches",
+]
