@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from tui_search.engine.algorithms import DEFAULT_ALGORITHM, get_algorithm
 from tui_search.engine.compare import Contender, parse_compare
@@ -23,6 +24,9 @@ from tui_search.tui.editing import place, set_wall
 from tui_search.tui.history import Edit, History
 from tui_search.tui.quiz import NO_RUN, Quiz, verdict
 from tui_search.tui.seek import Seek
+
+if TYPE_CHECKING:
+    from tui_search.tui.lesson_play import LessonPlay
 
 #: The searches ``c`` compares until the settings pick others.
 DEFAULT_COMPARE = "bfs,dfs"
@@ -86,6 +90,7 @@ class Session:
         self.exercise = exercise
         self.fold_trees = False  # several panes: their trees folded away by the user
         self.show_code = False  # the Code panel in the trees' place (the pseudocode, lit)
+        self.lesson: LessonPlay | None = None  # --lesson: the lesson shown beside the panes
         self._benchmark = None if optimal_cost is None else (
             bytes(grid.blocked), grid.start, grid.goal, optimal_cost)
         self.new_runs()
@@ -304,6 +309,12 @@ class Session:
             latest = max(r.k for r in runs)
             moved = [r.k == latest and r.backward() for r in runs]
         return before if any(moved) else None
+
+    def goto(self, k: int | None) -> None:
+        """Every run at step ``k`` (None: its end), from where it is."""
+        self.stop()
+        for run in self.runs:
+            run.goto(self.max_steps if k is None else k)
 
     def step(self, forward: bool) -> Before | None:
         self.stop()
