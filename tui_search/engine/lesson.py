@@ -45,18 +45,20 @@ KEYS: dict[str, str] = {
     "exercise": "1, 2, off",
     "code": "on, off",
 }
+_FIELDS = {"compare": "searches"}  # a block's key: its State field, where the names differ
 _FENCE = re.compile(r"^( {0,3})(`{3,}|~{3,})\s*([^`\s]*)")
 
 
 @dataclass(frozen=True)
 class State:
     """What a section shows: ``step`` None is the end of the search; ``map`` None keeps the
-    map shown; ``compare`` None shows ``algorithm`` alone."""
+    map shown; ``searches`` (the block's ``compare``), when set, are shown a pane each, else
+    ``algorithm`` alone."""
 
     map: Path | None = None
     algorithm: str = DEFAULT_ALGORITHM
     step: int | None = 0
-    compare: str | None = None
+    searches: str | None = None
     order: tuple[str, ...] = DEFAULT_ORDER
     corners: str = "always"
     visit: str = "generate"
@@ -75,7 +77,7 @@ class State:
     @property
     def spec(self) -> str:
         """The searches shown, as ``--compare`` spells them (one key: one pane)."""
-        return self.compare or self.algorithm
+        return self.searches or self.algorithm
 
 
 @dataclass(frozen=True)
@@ -174,15 +176,16 @@ def _block(lines: list[str], first: int, base: Path, name: str, state: State) ->
             at = raw.index(":") + 2 + len(rest) - len(rest.lstrip())
             raise MapError(name, f"{key} {text!r}: {exc}", n, at) from None
         seen[key] = value
-    return replace(state, **{key.replace("-", "_"): value for key, value in seen.items()})
+    return replace(state, **{_FIELDS.get(key, key.replace("-", "_")): value
+                             for key, value in seen.items()})
 
 
 def _check(state: State, name: str, line: int) -> None:
     """Refuse a combination of choices that makes no sense (the block's line)."""
     try:
         sem = state.semantics
-        if state.compare:
-            parse_compare(state.compare, sem, fit=True)
+        if state.searches:
+            parse_compare(state.searches, sem, fit=True)
         else:
             sem.check(get_algorithm(state.algorithm))
     except ValueError as exc:

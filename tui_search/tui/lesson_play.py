@@ -64,8 +64,6 @@ def apply_state(session: Session, state: State) -> None:
     session.semantics = state.semantics
     session.exercise = state.exercise
     session.show_code = state.code
-    if state.compare:
-        session.comparison = state.compare
     refusal = session.show_searches(state.spec)
     assert refusal is None, refusal  # checked when the lesson was read
     session.goto(state.step)
