@@ -194,6 +194,7 @@ async def test_pgdn_and_pgup_move_between_sections_and_other_keys_act_on_the_app
 
 
 def test_start_up_without_a_lesson_does_not_load_the_markdown_widget() -> None:
+    """Nor the lesson's own modules: start-up without ``--lesson`` imports what it did."""
     code = ("import asyncio, sys\n"
             "from tests.tui.test_app import tutorial_app\n"
             "async def main():\n"
@@ -201,7 +202,25 @@ def test_start_up_without_a_lesson_does_not_load_the_markdown_widget() -> None:
             "    async with app.run_test(size=(100, 32)) as pilot:\n"
             "        await pilot.pause()\n"
             "asyncio.run(main())\n"
-            "print([m for m in sys.modules if 'markdown' in m.lower()])\n")
+            "print([m for m in sys.modules if 'markdown' in m.lower() or 'lesson' in m])\n")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          check=True).stdout
     assert out.strip() == "[]"
+
+
+@sync
+async def test_the_command_line_opens_a_lesson_file_beside_the_panes() -> None:
+    from tui_search.cli import build_app, build_parser, open_lesson
+    from tui_search.flags import load_problem
+
+    args = build_parser().parse_args(["--lesson", str(TEACHER)])
+    assert not open_lesson(args)
+    args.algorithm = "bfs"
+    grid, path = load_problem(args)
+    app = build_app(args, grid, path)
+    async with app.run_test(size=(120, 40)) as pilot:
+        panel = app.main.query_one(".lesson")
+        await wait_until(pilot, lambda: "teacher 1/6" in str(panel.border_title))
+        assert app.session.map_name == "discard.txt" and app.session.labels == ["DFS"]
+        await wait_until(pilot, lambda: app.main.panes[0].code_panel.display)
+        assert panel.outer_size.width == 48  # two fifths of 120
