@@ -103,6 +103,10 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--pseudocode", action="store_true",
                    help="print the pseudocode of -a's search under the choice flags, one "
                    "numbered line per line (for handouts), and exit")
+    p.add_argument("--lesson", metavar="NAME|FILE.md", nargs="?", const="",
+                   help="open a lesson beside the panes: a built-in one by name (tutorial, "
+                   "choices) or a Markdown file (its format: the README); pgdn and pgup move "
+                   "between its sections. With no name, list the built-in lessons")
     p.add_argument("--headless", action="store_true",
                    help="search without the app and print the result")
     p.add_argument("--json", action="store_true",
@@ -133,13 +137,14 @@ def build_app(args: argparse.Namespace, grid: Grid, path: Path | None) -> Search
     from tui_search.tui.config import Config
 
     scenario = getattr(args, "scenario", None)
+    lesson = getattr(args, "lesson_read", None)
     return SearchApp(grid, path=path, algorithm=args.algorithm,
                      semantics=semantics_from(args), max_steps=args.max_steps,
                      unsaved_name=BUILT_IN_TITLE, theme=args.theme,
                      optimal_cost=scenario.optimal_length if scenario is not None else None,
                      exercise=args.exercise, compare=args.compare,
                      file_access=file_access(args),
-                     config=Config.in_memory() if args.served else None)
+                     config=Config.in_memory() if args.served else None, lesson=lesson)
 
 
 def run_app(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
@@ -191,6 +196,22 @@ def check_modes(args: argparse.Namespace) -> None:
     args.algorithm = args.algorithm or DEFAULT_ALGORITHM
 
 
+def open_lesson(args: argparse.Namespace) -> bool:
+    """``--lesson``: read the lesson (a bad one is a MapError: exit 2), or with no name print
+    the built-in lessons (True: done)."""
+    from tui_search.engine.lesson import built_in, find_lesson, read_lesson
+
+    if args.headless or args.serve:
+        raise UsageError("--lesson is for the app, not --headless or --serve")
+    if not args.lesson:
+        for name, title in built_in().items():
+            print(f"{name:10} {title}")
+        return True
+    args.lesson_read = read_lesson(find_lesson(args.lesson),
+                                   None if args.lesson.endswith(".md") else args.lesson)
+    return False
+
+
 def main(argv: list[str] | None = None) -> int:
     try:
         parser = build_parser()
@@ -205,6 +226,8 @@ def main(argv: list[str] | None = None) -> int:
         check_modes(args)
         if args.pseudocode:
             return print_pseudocode(args)
+        if args.lesson is not None and open_lesson(args):
+            return 0
         grid, path = load_problem(args)
         if args.headless and args.compare:
             return run_compare(args, grid, path)

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import os
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from textual.app import App
 from textual.command import Provider
@@ -23,6 +24,9 @@ from tui_search.tui.file_access import FileAccess
 from tui_search.tui.screens.main import MainScreen
 from tui_search.tui.session import Session
 from tui_search.tui.themes import DEFAULT_THEME, THEMES, map_defaults, textual_themes
+
+if TYPE_CHECKING:
+    from tui_search.engine.lesson import Lesson
 
 
 def _search_commands() -> type[Provider]:
@@ -53,16 +57,23 @@ class SearchApp(App[int]):
         exercise: int | None = None,
         compare: str | None = None,
         file_access: FileAccess | None = None,
+        lesson: Lesson | None = None,
     ) -> None:
         """The session's arguments (:class:`~tui_search.tui.session.Session`), and: ``theme``
         for this run only (``--theme``; without it, the one the config file remembers);
         ``config``, the user's file by default (:func:`~tui_search.tui.config.config_path`);
         ``file_access``, where saving and opening may go
         (:class:`~tui_search.tui.file_access.FileAccess`: anywhere by default; the served
-        app's is narrower)."""
+        app's is narrower); ``lesson``, a lesson shown beside the panes from its first
+        section."""
         super().__init__()
         self.session = Session(grid, path, algorithm, semantics, max_steps, unsaved_name,
                                optimal_cost, exercise, compare)
+        if lesson is not None:
+            from tui_search.tui.lesson_play import LessonPlay  # only for a lesson
+
+            self.session.lesson = LessonPlay(lesson)
+            self.session.lesson.open(self.session)
         self.file_access = file_access or FileAccess()
         self.config = Config.load() if config is None else config
         self._config_noted = False  # a config problem is said once a run

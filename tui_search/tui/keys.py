@@ -18,12 +18,13 @@ from tui_search.tui.themes import THEMES
 KEY_IMPORTANCE = {
     "help": 10, "quit": 10, "stop_seek": 9, "next": 8, "play": 7, "pause": 7, "algorithm": 6,
     "compare": 6, "undo": 5, "settings": 5, "reset": 4, "save": 3, "quiz": 2, "overview": 2,
-    "zoom": 1, "paint": 5,
+    "zoom": 1, "paint": 5, "lesson": 9,
     "pick": 7,  # the frontier panel's, while it has the focus in the quiz
 }
 STEP = Binding.Group("Step", compact=True)
 ZOOM = Binding.Group("Zoom", compact=True)
 UNDO = Binding.Group("Undo/Redo", compact=True)
+LESSON = Binding.Group("Lesson", compact=True)
 ALGO = Binding.Group("/".join(a.tag for a in ALGORITHMS.values()), compact=True)
 
 KEYS: list[BindingType] = [
@@ -75,6 +76,11 @@ KEYS: list[BindingType] = [
             tooltip="Smaller cells (out of the smallest: the whole map)"),
     Binding("a", "labels", "Labels", show=False,
             tooltip="Cell labels: arrows and depth/cost, depth/cost only, none"),
+    # With a lesson open (--lesson), pgdn and pgup move between its sections instead.
+    Binding("pagedown", "lesson(1)", "Next section", group=LESSON, key_display="pgdn",
+            tooltip="Lesson: the next section"),
+    Binding("pageup", "lesson(-1)", "Section back", group=LESSON, key_display="pgup",
+            tooltip="Lesson: the section before"),
     Binding("pageup", "page(-1)", "Page up", show=False, key_display="pgup",
             tooltip="Cursor a page up"),
     Binding("pagedown", "page(1)", "Page down", show=False, key_display="pgdn",

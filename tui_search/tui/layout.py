@@ -179,4 +179,12 @@ def _under(columns: int, rows: int, table: bool, pane_stats: bool, pane_w: int, 
                        pane_w)
 
 
-__all__ = ["Arrangement", "arrange", "pane_grid"]
+
+
+def lesson_width(screen_width: int) -> int:
+    """The lesson's column beside the panes (``--lesson``): two fifths of the screen, 28
+    columns at least and 56 at most."""
+    return max(28, min(56, screen_width * 2 // 5))
+
+
+__all__ = ["Arrangement", "arrange", "lesson_width", "pane_grid"]

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from tui_search.engine.algorithms import DEFAULT_ALGORITHM, get_algorithm
 from tui_search.engine.compare import Contender, parse_compare
@@ -23,6 +24,9 @@ from tui_search.tui.history import History
 from tui_search.tui.map_edits import BRUSHES, NO_BRUSH, MapEdits
 from tui_search.tui.quiz import NO_RUN, Quiz, verdict
 from tui_search.tui.seek import Seek
+
+if TYPE_CHECKING:
+    from tui_search.tui.lesson_play import LessonPlay
 
 #: The searches ``c`` compares until the settings pick others.
 DEFAULT_COMPARE = "bfs,dfs"
@@ -93,6 +97,7 @@ class Session(MapEdits):
         self.fold_trees = False  # several panes: their trees folded away by the user
         self.show_code = False  # the Code panel in the trees' place (the pseudocode, lit)
         self.brush: float | None = None  # the terrain brush's cost (None: off)
+        self.lesson: LessonPlay | None = None  # --lesson: the lesson shown beside the panes
         self._benchmark = None if optimal_cost is None else (
             map_key(grid), grid.start, grid.goal, optimal_cost)
         self.new_runs()
@@ -274,6 +279,12 @@ class Session(MapEdits):
             latest = max(r.k for r in runs)
             moved = [r.k == latest and r.backward() for r in runs]
         return before if any(moved) else None
+
+    def goto(self, k: int | None) -> None:
+        """Every run at step ``k`` (None: its end), from where it is."""
+        self.stop()
+        for run in self.runs:
+            run.goto(self.max_steps if k is None else k)
 
     def step(self, forward: bool) -> Before | None:
         self.stop()

@@ -101,6 +101,15 @@ class MainScreen(PanesScreen):
         self.fit_panes()
         self.present(changed=[])
 
+    def action_lesson(self, by: int) -> None:
+        """The lesson's next (1) or previous (-1) section: its text, and the session in the
+        state it sets."""
+        play = self.session.lesson
+        if play is not None and play.move(self.session, by):
+            self._timer.pause()
+            self.show_map()
+            self.show_lesson()
+
     def action_settings(self) -> None:
         from tui_search.engine.algorithms import get_algorithm
         from tui_search.tui.screens.settings import SettingsScreen  # only when asked
@@ -311,6 +320,13 @@ class MainScreen(PanesScreen):
         runs = session.runs
         if self.too_small:
             return action in ("quit", "help_quit")
+        play = session.lesson
+        if action == "page":  # pgdn and pgup: a page of cells, or a lesson's sections
+            return play is None
+        if action == "lesson":
+            if play is None:
+                return False
+            return 0 <= play.index + int(str(parameters[0])) < len(play.lesson.sections) or None
         playing = session.playing
         state: dict[str, bool | None] = {
             "play": False if playing else (None if not runs else True),

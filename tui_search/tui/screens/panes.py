@@ -11,6 +11,7 @@ high speeds; ``end`` and ``home`` on a big run move in time-boxed slices
 from __future__ import annotations
 
 from time import sleep
+from typing import TYPE_CHECKING, cast
 
 from textual import events
 from textual.app import ComposeResult
@@ -29,7 +30,7 @@ from tui_search.tui import playback
 from tui_search.tui.file_access import FileAccess
 from tui_search.tui.files import FileCommands
 from tui_search.tui.keys import KEY_IMPORTANCE
-from tui_search.tui.layout import PANE_STATS_HEIGHT, arrange
+from tui_search.tui.layout import PANE_STATS_HEIGHT, arrange, lesson_width
 from tui_search.tui.narration import group_digits
 from tui_search.tui.readout import describe_each
 from tui_search.tui.session import NEEDS_ENDPOINTS, Before, Session
@@ -43,6 +44,9 @@ from tui_search.tui.widgets.key_bar import KeyBar
 from tui_search.tui.widgets.legend import Legend
 from tui_search.tui.widgets.run_pane import RunPane
 from tui_search.tui.widgets.stats import Stats
+
+if TYPE_CHECKING:
+    from tui_search.tui.widgets.lesson_panel import LessonPanel
 
 MIN_WIDTH, MIN_HEIGHT = 60, 20
 #: On a map too big to check an exercise at each edit, the check waits for the edits to pause
@@ -80,6 +84,10 @@ class PanesScreen(Screen[None]):
         yield self.readout
         self.legend = Legend(self.panes[0].view, id="legend")
         yield self.legend
+        if self.session.lesson is not None:
+            from tui_search.tui.widgets.lesson_panel import LessonPanel  # only for a lesson
+
+            yield LessonPanel(classes="lesson")
         self.pane_box = PaneBox(*self.panes, id="panes")
         yield self.pane_box
         yield Static(id="too-small")
@@ -101,6 +109,7 @@ class PanesScreen(Screen[None]):
         for view in self.views:
             view.set_cursor(self.session.cursor)
         self._check_exercise()
+        self.show_lesson()
         self.fit_panes()  # reckoned: the first frame is laid out already
         self.present()
         self.call_after_refresh(self.fit_panes)  # measured
@@ -128,6 +137,8 @@ class PanesScreen(Screen[None]):
                 table.outer_size.height if table.display else 0)
         else:  # the key bar, the status lines, the readout, the legend, the challenge
             width = self.size.width
+            if self.session.lesson is not None:
+                width -= lesson_width(width)
             legend = self.legend.get_content_height(self.size, self.size, max(1, width - 2))
             challenge = CHALLENGE_LINES if self.session.exercise is not None else 0
             height = self.size.height - 4 - legend - challenge
@@ -145,6 +156,8 @@ class PanesScreen(Screen[None]):
             pane.lay_out(arrangement, code=self.session.show_code)
 
     def _check_size(self, width: int, height: int) -> None:
+        for lesson in self.query(".lesson"):
+            lesson.styles.width = lesson_width(width)
         small = width < MIN_WIDTH or height < MIN_HEIGHT
         if small != self.too_small:
             self.set_class(small, "-too-small")
@@ -195,6 +208,14 @@ class PanesScreen(Screen[None]):
             self.views[0].focus()
         self.fit_panes()
         self.present()
+
+    def show_lesson(self) -> None:
+        """The lesson's section shown (``--lesson``), and its keys."""
+        play = self.session.lesson
+        for panel in self.query(".lesson"):
+            assert play is not None
+            cast("LessonPanel", panel).show(play.where, play.section.text)
+        self.refresh_bindings()
 
     def show_map(self) -> None:
         """The map was replaced or saved: every view on it, then show."""

@@ -1,0 +1,103 @@
+"""Lessons read without the app (:mod:`tui_search.engine.lesson`): sections at ``## ``, a
+``lesson`` block's keys carried on from section to section, every block kind, and a bad block
+as one line naming the file, line and column (exit 2 from the command line)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from tests.helpers import ROOT
+from tests.test_cli import run_cli
+from tui_search.engine.lesson import KEYS, built_in, find_lesson, parse_lesson, read_lesson
+from tui_search.engine.mapread import MapError
+
+LESSONS = ROOT / "tests" / "data" / "lessons"
+TEACHER = LESSONS / "teacher.md"
+
+
+def test_the_teacher_s_lesson_uses_every_key_and_each_block_carries_the_rest_on() -> None:
+    lesson = read_lesson(TEACHER)
+    assert lesson.title == "A teacher's lesson"
+    assert [s.title for s in lesson.sections] == [
+        "The map and a search", "Heuristics and the goal test", "No block",
+        "Moves, corners and tree search", "Side by side, with an exercise", "Back to one"]
+    used = {line.partition(":")[0] for line in TEACHER.read_text().splitlines()
+            if line.partition(":")[0] in KEYS}
+    assert used == set(KEYS)
+    first, informed, none, moves, side, back = (s.state for s in lesson.sections)
+    assert none is None  # no block: the app stays as it is
+    assert first is not None and first.map == LESSONS.resolve() / "discard.txt"
+    assert (first.algorithm, first.visit, first.code, first.step) == ("dfs", "expand", True, 4)
+    assert informed is not None and informed.map == first.map  # carried on
+    assert (informed.heuristic, informed.goal_test, informed.step, informed.code) == (
+        "manhattan", "generate", None, False)
+    assert moves is not None and moves.order == ("N", "W", "S", "E")
+    assert (moves.corners, moves.tree_search, moves.goal_test, moves.spec) == (
+        "never", True, None, "bfs")
+    assert side is not None and (side.spec, side.exercise, side.corners) == ("bfs,dfs", 2, "one")
+    assert back is not None and (back.spec, back.exercise, back.step) == ("ucs", None, 1)
+
+
+def test_a_section_shows_its_text_without_its_block_and_fences_hide_headings() -> None:
+    side = read_lesson(TEACHER).sections[4]
+    assert side.text.startswith("## Side by side, with an exercise\n")
+    assert "```lesson" not in side.text and "## not a heading" in side.text
+    assert side.line == 48
+    assert read_lesson(TEACHER).sections[0].text.startswith("# A teacher's lesson")
+
+
+def test_the_built_in_lessons_are_listed_and_found_by_name() -> None:
+    assert set(built_in()) == {"tutorial", "choices"}
+    assert len(read_lesson(find_lesson("tutorial")).sections) == 10
+    choices = read_lesson(find_lesson("choices"))
+    assert len(choices.sections) == 5
+    assert all(s.state is not None and s.state.code for s in choices.sections)
+
+
+BAD = [
+    ("## A\n```lesson\nspeed: 3\n```\n", "lesson.md:3:1: unknown key 'speed'"),
+    ("## A\n```lesson\n  step: soon\n```\n", "lesson.md:3:9: step 'soon': use a step number"),
+    ("## A\n```lesson\nalgorithm bfs\n```\n", "lesson.md:3:1: expected 'key: value'"),
+    ("## A\n```lesson\nstep: 1\nstep: 2\n```\n", "lesson.md:4:1: step is set twice"),
+    ("## A\n```lesson\norder: N,UP\n```\n", "lesson.md:3:8: order 'N,UP': unknown direction"),
+    ("## A\n```lesson\ncompare: bfs\n```\n", "lesson.md:3:10: compare 'bfs': compare two"),
+    ("## A\n```lesson\ncode: yes\n```\n", "lesson.md:3:7: code 'yes': use on or off"),
+    ("## A\n```lesson\nexercise: 3\n```\n", "lesson.md:3:11: exercise '3': use 1, 2, off"),
+    ("## A\n```lesson\nmap: nowhere.txt\n```\n", "lesson.md:3:6: map 'nowhere.txt': "),
+    ("## A\n```lesson\nalgorithm: iddfs\nvisit: expand\n```\n",
+     "lesson.md:2: the visit rule does not apply to IDDFS"),
+    ("## A\n```lesson\ntree-search: on\nvisit: expand\n```\n",
+     "lesson.md:2: tree search has no visited set"),
+    ("## A\ntext\n```lesson\nstep: 1\n```\n",
+     "lesson.md:3:1: a lesson block must come first in its section"),
+    ("## A\n```lesson\nstep: 1\n", "lesson.md: a fenced block is not closed"),
+    ("# Only a title\ntext\n", "lesson.md:1: no sections"),
+]
+
+
+@pytest.mark.parametrize(("text", "expected"), BAD)
+def test_a_bad_block_is_one_line_naming_file_line_and_column(text: str, expected: str,
+                                                            tmp_path: Path) -> None:
+    with pytest.raises(MapError) as info:
+        parse_lesson(text, tmp_path / "lesson.md", "lesson.md")
+    message = str(info.value).replace(str(tmp_path / "lesson.md"), "lesson.md")
+    assert message.startswith(expected) and "\n" not in message
+
+
+def test_the_command_line_lists_the_lessons_and_refuses_a_bad_one(capsys,
+                                                                   tmp_path: Path) -> None:
+    code, out, err = run_cli(capsys, "--lesson")
+    assert code == 0 and err == ""
+    assert [line.split()[0] for line in out.splitlines()] == ["choices", "tutorial"]
+    bad = tmp_path / "bad.md"
+    bad.write_text("## One\n\n```lesson\nalgorithm: quick\n```\n")
+    code, out, err = run_cli(capsys, "--lesson", str(bad))
+    assert (code, out) == (2, "")
+    assert err == f"tui-search: {bad}:4:12: algorithm 'quick': use bfs, dfs, iddfs, ucs, " \
+        "greedy, astar\n"
+    code, _, err = run_cli(capsys, "--lesson", "no-such-lesson")
+    assert code == 2 and "no such lesson (built in: choices, tutorial)" in err
+    code, _, err = run_cli(capsys, "--lesson", "tutorial", "--headless")
+    assert code == 2 and err.count("\n") == 1 and "--lesson is for the app" in err
