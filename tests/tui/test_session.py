@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from tests.tui.test_app import TUTORIAL
+from tests.helpers import TUTORIAL
 from tui_search.engine.exercises import check, tutorial_grid
 from tui_search.engine.grid import Grid
 from tui_search.engine.mapfile import load_map

@@ -4,7 +4,7 @@ narration, several searches' names and the lockstep's sentence, the note and the
 
 from __future__ import annotations
 
-from tests.tui.test_app import TUTORIAL
+from tests.helpers import TUTORIAL
 from tui_search.engine.heuristics import INADMISSIBLE
 from tui_search.engine.mapfile import load_map
 from tui_search.engine.run import Run
