@@ -54,8 +54,11 @@ def test_a_refused_spec_changes_nothing() -> None:
 
 def test_the_visit_rule_falls_back_where_it_does_not_apply() -> None:
     session = tutorial(semantics=replace(DEFAULT_SEMANTICS, visit="expand"))
-    session.choose_algorithm("iddfs")
-    assert session.semantics.visit == "generate" and "does not apply to ID" in session.note
+    session.choose_algorithm("iddfs")  # the setting stays for the next search it applies to
+    assert session.semantics.visit == "expand" and "does not apply to ID" in session.note
+    assert session.contenders[0].semantics.visit == "generate"
+    session.choose_algorithm("bfs")
+    assert session.contenders[0].semantics.visit == "expand" and session.note == ""
     session = tutorial(semantics=replace(DEFAULT_SEMANTICS, visit="expand"), compare="bfs,iddfs")
     assert "Visit on expand does not apply to ID" in session.note
     assert [c.semantics.visit for c in session.contenders] == ["expand", "generate"]
