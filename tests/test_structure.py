@@ -59,28 +59,35 @@ def _counts_panes(node: ast.AST) -> bool:
             and _named(node.args[0]) in PANE_LISTS)
 
 
+def _asks_for_a_comma(node: ast.Compare) -> bool:
+    """``"," in spec``: whether a spec names several searches."""
+    return (any(isinstance(op, ast.In | ast.NotIn) for op in node.ops)
+            and isinstance(node.left, ast.Constant) and node.left.value == ","
+            and any(_named(side).endswith("spec") for side in node.comparators))
+
+
+def _asks_how_many_panes(node: ast.Compare) -> bool:
+    """``len(self.runs) > 1``, ``2 <= len(labels)``: how many panes, against none, one or two."""
+    sides = [node.left, *node.comparators]
+    return (any(_counts_panes(side) for side in sides)
+            and any(isinstance(side, ast.Constant) and side.value in (0, 1, 2) for side in sides))
+
+
 def compare_flags(source: str) -> list[int]:
     """Lines that ask "compare or not", however spelled: a mode attribute (``self.compare``,
     ``screen.several``); whether a spec names several searches (``"," in self.spec``); how
     many panes there are against one or two (``len(self.runs) > 1``, ``len(labels) == 1``),
     unless the line says why that is a rule over the number of panes (:data:`RULE_OVER_N`)."""
     lines = source.splitlines()
-    found = []
-    for node in ast.walk(ast.parse(source)):
-        if isinstance(node, ast.Attribute) and node.attr in MODE_FLAGS:
-            found.append(node.lineno)
-        elif isinstance(node, ast.Compare):
-            sides = [node.left, *node.comparators]
-            if (any(isinstance(op, ast.In | ast.NotIn) for op in node.ops)
-                    and isinstance(node.left, ast.Constant) and node.left.value == ","
-                    and any(_named(side).endswith("spec") for side in sides[1:])):
-                found.append(node.lineno)
-            elif (any(_counts_panes(side) for side in sides)
-                  and any(isinstance(side, ast.Constant) and side.value in (0, 1, 2)
-                          for side in sides)
-                  and RULE_OVER_N not in lines[node.lineno - 1]):
-                found.append(node.lineno)
-    return sorted(set(found))
+
+    def asks(node: ast.AST) -> bool:
+        if isinstance(node, ast.Attribute):
+            return node.attr in MODE_FLAGS
+        return isinstance(node, ast.Compare) and (
+            _asks_for_a_comma(node)
+            or (_asks_how_many_panes(node) and RULE_OVER_N not in lines[node.lineno - 1]))
+
+    return sorted({node.lineno for node in ast.walk(ast.parse(source)) if asks(node)})
 
 
 def ui_sources() -> list[Path]:
