@@ -57,6 +57,8 @@ def test_the_visit_rule_falls_back_where_it_does_not_apply() -> None:
     session.choose_algorithm("iddfs")  # the setting stays for the next search it applies to
     assert session.semantics.visit == "expand" and "does not apply to ID" in session.note
     assert session.contenders[0].semantics.visit == "generate"
+    session.new_runs()  # said once: an edit or r shows the narration again
+    assert session.note == "" and session.contenders[0].semantics.visit == "generate"
     session.choose_algorithm("bfs")
     assert session.contenders[0].semantics.visit == "expand" and session.note == ""
     session = tutorial(semantics=replace(DEFAULT_SEMANTICS, visit="expand"), compare="bfs,iddfs")

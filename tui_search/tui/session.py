@@ -86,6 +86,7 @@ class Session:
         self.exercise = exercise
         self.fold_trees = False  # the panes' trees folded away by the user
         self.show_code = False  # the Code panel in the trees' place (the pseudocode, lit)
+        self._fitted = ""  # the note on a setting fitted to a search, once said
         self._benchmark = None if optimal_cost is None else (
             bytes(grid.blocked), grid.start, grid.goal, optimal_cost)
         self.new_runs()
@@ -150,7 +151,8 @@ class Session:
         goal)."""
         self.stop()
         self.contenders, why = self._contenders(self.spec)
-        self.note = note or why
+        self.note = note or (why if why != self._fitted else "")  # said once, not at each edit
+        self._fitted = why
         grid = self.grid
         if grid.start is None or grid.goal is None:
             self.runs = []
