@@ -9,6 +9,8 @@ from tui_search.engine.grid import Grid
 
 ROOT = Path(__file__).resolve().parents[1]
 MAPS = ROOT / "maps"
+#: The tutorial's map, for the tests of the app and of its Textual-free parts alike.
+TUTORIAL = MAPS / "tutorial.txt"
 #: Real MovingAI benchmark files copied into the repository (maps byte for byte, big .scen files
 #: trimmed to a spread of rows; their origins are in SOURCES.md there), so a fresh clone and CI
 #: run every test that reads one.

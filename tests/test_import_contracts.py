@@ -27,6 +27,7 @@ from tests.import_graph import (
     reach,
     read_package,
     runtime_graph,
+    targets,
 )
 
 PACKAGE = ROOT / "tui_search"
@@ -111,6 +112,18 @@ def test_the_modules_without_textual_import_none_even_indirectly() -> None:
 def test_no_import_circles() -> None:
     found = cycles(runtime_graph(package()))
     assert not found, "import circles (imports in functions count):\n" + "\n".join(
+        " -> ".join(c) for c in found)
+
+
+def test_no_circles_through_type_checking_imports_either() -> None:
+    """A dependency goes one way even for the type checker: a module a ``TYPE_CHECKING``
+    import names does not import its importer back (files/save_questions, app/commands were
+    tied so)."""
+    modules = package()
+    graph = {name: set().union(*(targets(m, imp, modules) for imp in m.imports))
+             for name, m in modules.items()}
+    found = cycles(graph)
+    assert not found, "import circles (TYPE_CHECKING imports included):\n" + "\n".join(
         " -> ".join(c) for c in found)
 
 

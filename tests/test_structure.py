@@ -1,6 +1,6 @@
 """The structure issue 20 asked for, held by tests: files by job (none over 450 lines), a thin
-app (at most 300 lines, no mixins), and no "compare or not" flag in the app: every search is a
-pane."""
+app (at most 300 lines, no mixins), and no "compare or not" asked in the app, however spelled:
+every search is a pane, and the few rules over the number of panes say so."""
 
 from __future__ import annotations
 
@@ -38,23 +38,94 @@ def test_the_app_is_thin_and_has_no_mixins() -> None:
     assert not (PACKAGE / "tui" / "mixin.py").exists()
 
 
+#: Attributes that would be a "compare or not" flag, whatever reads them.
+MODE_FLAGS = {"compare", "comparing", "several", "single"}
+#: What holds the panes, their runs or their searches: asking how many (one? two?) of these
+#: is asking "compare or not".
+PANE_LISTS = {"runs", "panes", "labels", "names", "contenders", "views", "parts", "searches"}
+#: A comparison asked this way is a rule over the number of panes only on a line that says so.
+RULE_OVER_N = "# rule over N:"
+
+
+def _named(node: ast.AST) -> str:
+    if isinstance(node, ast.Attribute):
+        return node.attr
+    return node.id if isinstance(node, ast.Name) else ""
+
+
+def _counts_panes(node: ast.AST) -> bool:
+    """``len(runs)``, ``len(self.panes)``, ...: how many panes."""
+    return (isinstance(node, ast.Call) and _named(node.func) == "len" and len(node.args) == 1
+            and _named(node.args[0]) in PANE_LISTS)
+
+
+def _asks_for_a_comma(node: ast.Compare) -> bool:
+    """``"," in spec``: whether a spec names several searches."""
+    return (any(isinstance(op, ast.In | ast.NotIn) for op in node.ops)
+            and isinstance(node.left, ast.Constant) and node.left.value == ","
+            and any(_named(side).endswith("spec") for side in node.comparators))
+
+
+def _asks_how_many_panes(node: ast.Compare) -> bool:
+    """``len(self.runs) > 1``, ``2 <= len(labels)``: how many panes, against none, one or two."""
+    sides = [node.left, *node.comparators]
+    return (any(_counts_panes(side) for side in sides)
+            and any(isinstance(side, ast.Constant) and side.value in (0, 1, 2) for side in sides))
+
+
 def compare_flags(source: str) -> list[int]:
-    """Lines that read or set ``self.compare``: the old flag of "comparing or not"."""
-    return [node.lineno for node in ast.walk(ast.parse(source))
-            if isinstance(node, ast.Attribute) and node.attr == "compare"
-            and isinstance(node.value, ast.Name) and node.value.id == "self"]
+    """Lines that ask "compare or not", however spelled: a mode attribute (``self.compare``,
+    ``screen.several``); whether a spec names several searches (``"," in self.spec``); how
+    many panes there are against one or two (``len(self.runs) > 1``, ``len(labels) == 1``),
+    unless the line says why that is a rule over the number of panes (:data:`RULE_OVER_N`)."""
+    lines = source.splitlines()
+
+    def asks(node: ast.AST) -> bool:
+        if isinstance(node, ast.Attribute):
+            return node.attr in MODE_FLAGS
+        return isinstance(node, ast.Compare) and (
+            _asks_for_a_comma(node)
+            or (_asks_how_many_panes(node) and RULE_OVER_N not in lines[node.lineno - 1]))
+
+    return sorted({node.lineno for node in ast.walk(ast.parse(source)) if asks(node)})
+
+
+def ui_sources() -> list[Path]:
+    """The app's modules (the command line's ``args.compare`` is a flag's value, not a mode)."""
+    return sorted((PACKAGE / "tui").rglob("*.py"))
 
 
 def test_no_module_keeps_a_compare_or_not_flag() -> None:
-    found = {str(p.relative_to(PACKAGE)): lines for p in sources()
+    assert len(ui_sources()) > 30
+    found = {str(p.relative_to(PACKAGE)): lines for p in ui_sources()
              if (lines := compare_flags(p.read_text(encoding="utf-8")))}
-    assert found == {}, f"'self.compare' (every search is a pane; no mode flag): {found}"
+    assert found == {}, f"'compare or not' asked (every search is a pane; no mode): {found}"
     assert not any("self.compare" in p.read_text(encoding="utf-8") for p in sources())
+
+
+def test_the_rules_over_the_number_of_panes_are_few_and_said() -> None:
+    """Where the number of panes matters it is said, and there are four such rules: the
+    layout's (a pane's own lines and the table), the names a line gives the runs, what a
+    number key does, and what c goes between."""
+    rules = {f"{p.relative_to(PACKAGE)}:{n}": line.split(RULE_OVER_N)[1].strip()
+             for p in ui_sources()
+             for n, line in enumerate(p.read_text(encoding="utf-8").splitlines(), 1)
+             if RULE_OVER_N in line}
+    assert len(rules) == 4 and all(rules.values()), rules
 
 
 def test_the_checks_see_what_they_forbid() -> None:
     assert compare_flags("class A:\n    def f(self):\n        return self.compare\n") == [3]
-    assert compare_flags("x = other.compare\nself.comparison = 1\n") == []
+    assert compare_flags("x = other.compare\nself.comparison = 1\n") == [1]
+    assert compare_flags("y = screen.several\n") == [1]
+    assert compare_flags('a = "," in self.spec\nb = "," not in spec\n') == [1, 2]
+    assert compare_flags("if len(self.runs) > 1:\n    pass\nz = 2 <= len(labels)\n") == [1, 3]
+    assert compare_flags("w = len(parts) == 1\nv = len(self.panes) != 0\n") == [1, 2]
+    # not asked: what a string holds, how many of something else, against a named bound,
+    # and a rule over N that says so
+    assert compare_flags('a = "," in text\nb = len(word) == 1\nc = len(parts) == MAX\n'
+                         'd = self.comparison\n') == []
+    assert compare_flags("e = len(labels) > 1  # rule over N: naming\n") == []
 
 
 TESTS = Path(__file__).parent

@@ -19,6 +19,7 @@ from typing import Any
 import pytest
 from textual import events
 
+from tests.helpers import MAPS, TUTORIAL
 from tests.textual_internals import composited, notifications, repainted, settle
 from tui_search.engine.grid import Grid
 from tui_search.engine.mapfile import load_map
@@ -39,10 +40,8 @@ from tui_search.tui.widgets.key_bar import KeyBar
 from tui_search.tui.widgets.search_tree import SearchTreePanel
 from tui_search.tui.widgets.stats import Stats
 
-MAPS = Path(__file__).parents[2] / "maps"
 #: Small MovingAI files copied into the repository (see their SOURCES.md).
 ARENA = Path(__file__).parents[1] / "data" / "movingai" / "arena.map"
-TUTORIAL = MAPS / "tutorial.txt"
 SIZE = (100, 32)
 
 

@@ -195,6 +195,19 @@ async def test_narrow_terminals_stack_the_panes_and_short_ones_fold_the_trees() 
 
 
 @sync
+async def test_f_folds_the_trees_of_one_pane_too() -> None:
+    """One search is one pane: f folds its tree away as it folds those of several."""
+    app = SearchApp(load_map(TUTORIAL), path=TUTORIAL)
+    async with app.run_test(size=SIZE) as pilot:
+        tree = app.main.panes[0].tree_panel
+        await wait_until(pilot, lambda: tree.display and tree.region.area > 0)
+        await pilot.press("f")
+        await wait_until(pilot, lambda: not tree.display)
+        await pilot.press("f")
+        await wait_until(pilot, lambda: tree.display)
+
+
+@sync
 async def test_end_on_a_big_map_computes_each_run_in_slices_and_esc_stops(monkeypatch) -> None:
     recorded = slices_of_one_chunk(monkeypatch)
     app = SearchApp(open_grid(30, 30), compare="iddfs,bfs")  # iddfs: 67,105 steps, 17 chunks

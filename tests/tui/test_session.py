@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from tests.tui.test_app import TUTORIAL
+from tests.helpers import TUTORIAL
 from tui_search.engine.exercises import check, tutorial_grid
 from tui_search.engine.grid import Grid
 from tui_search.engine.mapfile import load_map
@@ -54,8 +54,13 @@ def test_a_refused_spec_changes_nothing() -> None:
 
 def test_the_visit_rule_falls_back_where_it_does_not_apply() -> None:
     session = tutorial(semantics=replace(DEFAULT_SEMANTICS, visit="expand"))
-    session.choose_algorithm("iddfs")
-    assert session.semantics.visit == "generate" and "does not apply to ID" in session.note
+    session.choose_algorithm("iddfs")  # the setting stays for the next search it applies to
+    assert session.semantics.visit == "expand" and "does not apply to ID" in session.note
+    assert session.contenders[0].semantics.visit == "generate"
+    session.new_runs()  # said once: an edit or r shows the narration again
+    assert session.note == "" and session.contenders[0].semantics.visit == "generate"
+    session.choose_algorithm("bfs")
+    assert session.contenders[0].semantics.visit == "expand" and session.note == ""
     session = tutorial(semantics=replace(DEFAULT_SEMANTICS, visit="expand"), compare="bfs,iddfs")
     assert "Visit on expand does not apply to ID" in session.note
     assert [c.semantics.visit for c in session.contenders] == ["expand", "generate"]

@@ -140,7 +140,7 @@ async def test_switching_to_iddfs_drops_visit_on_expand_and_says_so() -> None:
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("3")
         await wait_until(pilot, lambda: app.session.run.algorithm == "iddfs")
-        assert app.session.semantics.visit == "generate"
+        assert app.session.run.semantics.visit == "generate"
         assert "does not apply to IDDFS" in stats(app)[1]
 
 

@@ -4,7 +4,7 @@ narration, several searches' names and the lockstep's sentence, the note and the
 
 from __future__ import annotations
 
-from tests.tui.test_app import TUTORIAL
+from tests.helpers import TUTORIAL
 from tui_search.engine.heuristics import INADMISSIBLE
 from tui_search.engine.mapfile import load_map
 from tui_search.engine.run import Run
@@ -82,8 +82,8 @@ def test_no_start_or_goal_the_screen_names_the_search_and_says_what_is_missing()
 
 def test_a_pane_among_several_says_done_at_step_k_and_its_map_comes_first() -> None:
     run = to_end(tutorial().runs[0])
-    pane = search_status(run, "BFS", of_several=True, done=True)
-    alone = search_status(run, "BFS", of_several=False)
+    pane = search_status(run, "BFS", in_pane=True, done=True)
+    alone = search_status(run, "BFS", in_pane=False)
     assert pane.max_rows == PANE_ROWS and alone.max_rows == MAX_ROWS
     assert texts(pane)[0].startswith("BFS │ done at step 22 │ step 22/22")
     assert "done at step" not in texts(alone)[0]
@@ -98,7 +98,7 @@ def test_a_pane_among_several_says_done_at_step_k_and_its_map_comes_first() -> N
 def test_an_inadmissible_heuristic_is_always_said() -> None:
     session = tutorial(algorithm="astar", semantics=Semantics(heuristic="manhattan"))
     for status in (screen_status(session, 100),
-                   search_status(session.run, "A*", of_several=True)):
+                   search_status(session.run, "A*", in_pane=True)):
         assert f"A* · heuristic manhattan · {INADMISSIBLE} │ step 0/13" in texts(status)[0]
         for width in (20, 40, 60):  # rank 0: never dropped, wrapped word by word
             assert INADMISSIBLE.split()[-1] in " ".join(rows(status, width))

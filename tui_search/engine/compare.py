@@ -32,16 +32,17 @@ class Contender(NamedTuple):
 
 
 def parse_compare(text: str, semantics: Semantics = DEFAULT_SEMANTICS,
-                  fit: bool = False) -> list[Contender]:
-    """``bfs,dfs`` or ``astar:manhattan,ucs``: two to four registry keys, each informed one
-    with an optional heuristic.  ``ValueError`` (one line) for anything else -- or, with
-    ``fit``, for a choice that does not apply to one of them, that one visits on generate
-    (the app's settings apply to every pane where they can)."""
+                  fit: bool = False, fewest: int = 2) -> list[Contender]:
+    """``bfs,dfs`` or ``astar:manhattan,ucs``: ``fewest`` (two; the app's panes: one) to four
+    registry keys, each informed one with an optional heuristic.  ``ValueError`` (one line)
+    for anything else -- or, with ``fit``, for a choice that does not apply to one of them,
+    that one visits on generate (the app's settings apply to every pane where they can)."""
     from tui_search.engine.heuristics import HEURISTICS
 
     parts = [p.strip() for p in text.split(",") if p.strip()]
-    if not 2 <= len(parts) <= 4:
-        raise ValueError(f"compare two to four searches, not {len(parts)} ({text!r})")
+    if not fewest <= len(parts) <= 4:
+        words = {1: "one", 2: "two"}.get(fewest, str(fewest))
+        raise ValueError(f"compare {words} to four searches, not {len(parts)} ({text!r})")
     out = []
     for part in parts:
         key, _, heuristic = part.partition(":")

@@ -79,6 +79,10 @@ class FileCommands:
     def file_access(self) -> FileAccess:
         return self.host.file_access
 
+    @property
+    def dirty(self) -> bool:
+        return self.host.session.dirty
+
     def notify(self, message: str, **options: Any) -> None:
         self.host.notify(message, **options)
 

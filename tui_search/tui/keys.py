@@ -61,7 +61,7 @@ KEYS: list[BindingType] = [
     Binding("c", "compare", "Compare",
             tooltip="Compare searches side by side in lockstep (again: one search)"),
     Binding("f", "fold_trees", "Trees", show=False,
-            tooltip="Compare mode: fold the search trees away (again: show them)"),
+            tooltip="Fold the search trees away (again: show them)"),
     Binding("v", "code", "Code", show=False,
             tooltip="Code panel: the search's pseudocode, the step's lines lit ▶ (again: "
             "the search tree)"),

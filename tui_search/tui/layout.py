@@ -33,6 +33,14 @@ STATS_MIN_WIDTH = 40
 PANE_STATS_HEIGHT = 2
 
 
+def own_lines(n: int) -> bool:
+    """Whether each of ``n`` panes may have status lines of its own, and the screen the
+    comparison table and the lockstep's lines under them: the layout's one rule over the
+    number of panes.  One pane's lines are the screen's own, and one search has nothing to
+    be compared with."""
+    return n > 1  # rule over N: what one pane shows under the map, several in each pane
+
+
 class Arrangement(NamedTuple):
     """How ``n`` panes are laid out: a ``columns`` x ``rows`` grid of panes; each pane's map
     box gets ``map_height`` lines (0: all that is left), its lists ``lists_height`` (0: none),
@@ -87,12 +95,12 @@ def arrange(n: int, width: int, height: int, map_size: tuple[int, int], *,
     take ``wrapped`` rows more than their least: the map is placed as in the room they would
     leave (:func:`_steady`)."""
     candidates = []
-    for table in ((True, False) if table_height else (False,)):
+    own = own_lines(n)
+    for table in ((True, False) if table_height and own else (False,)):
         room = height - (table_height if table else 0)
         preferred = pane_grid(n, width, room)[0]
-        # one pane: the status line under it is its own; several: each its own, which give
-        # way last
-        for stats in ((stats_height, 0) if n > 1 else (0,)):
+        # each pane's own status lines (where it has them) give way last
+        for stats in ((stats_height, 0) if own else (0,)):
             for columns in range(1, n + 1):
                 rows = -(-n // columns)
                 pane_w, pane_h = width // columns, max(0, room // rows - stats)
@@ -103,7 +111,7 @@ def arrange(n: int, width: int, height: int, map_size: tuple[int, int], *,
                     steady = _pane(columns, rows, table, stats > 0, pane_w, steady_h,
                                    map_size, fold_trees)
                     pane = _steady(steady, pane, steady_h, pane_h, map_size, fold_trees)
-                candidates.append(((pane.fits, pane.pane_stats or n == 1, pane.lists,
+                candidates.append(((pane.fits, pane.pane_stats or not own, pane.lists,
                                     pane.trees or fold_trees, columns == preferred, table),
                                    pane))
     # What gives way first: the table, then the grid's best proportions, then the trees,
@@ -187,4 +195,4 @@ def lesson_width(screen_width: int) -> int:
     return max(28, min(56, screen_width * 2 // 5))
 
 
-__all__ = ["Arrangement", "arrange", "lesson_width", "pane_grid"]
+__all__ = ["Arrangement", "arrange", "lesson_width", "own_lines", "pane_grid"]

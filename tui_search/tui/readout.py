@@ -71,14 +71,14 @@ def describe(run: Run | None, grid: Grid, cell: Cell) -> str:
     return f"{head}: {', '.join(parts)}"
 
 
-def describe_each(runs: list[Run], labels: list[str], grid: Grid, cell: Cell) -> str:
+def describe_each(runs: list[Run], names: list[str], grid: Grid, cell: Cell) -> str:
     """What each run knows of ``cell``, in a line -- "(3,4): BFS expanded at step 5, depth 3 …
-    │ DFS never reached"; a run alone is not named."""
-    if len(runs) < 2 or grid.is_blocked(cell):
+    │ DFS never reached"; ``names`` name the runs ("": not named).  An obstacle is said once."""
+    if not runs or grid.is_blocked(cell):
         return describe(runs[0] if runs else None, grid, cell)
     bodies = [describe(run, grid, cell).partition(": ")[2] for run in runs]
     return f"{cell_head(grid, cell)}: " + " │ ".join(
-        f"{label} {body}" for label, body in zip(labels, bodies))
+        f"{name} {body}".lstrip() for name, body in zip(names, bodies))
 
 
 __all__ = ["cell_head", "describe", "describe_each"]

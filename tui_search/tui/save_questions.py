@@ -11,19 +11,37 @@ from __future__ import annotations
 import os
 from collections.abc import Callable
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any, Protocol
 
 from tui_search.engine.filenames import describe_name
 from tui_search.engine.mapread import MapError
 
 if TYPE_CHECKING:
-    from tui_search.tui.files import FileCommands
+    from textual.screen import Screen
 
 #: What a save calls when it is over: with None once saved, else with why not.
 Done = Callable[[MapError | None], None]
 
 
-def changed_on_ctrl_s(files: FileCommands, path: Path, kind: str, done: Done, *,
+class SaveCommands(Protocol):
+    """What the questions call back: the file commands
+    (:class:`tui_search.tui.files.FileCommands`, which import this module, not the reverse)."""
+
+    @property
+    def dirty(self) -> bool:
+        """True while the map has edits not saved."""
+
+    def write_map(self, path: Path, kind: str, done: Done, *, in_prompt: bool = False,
+                  overwrite: bool = False, in_place: bool = False) -> None: ...
+
+    def ask_save_as(self, then: Callable[[], None] | None = None, error: str = "") -> None: ...
+
+    def reload(self, path: Path) -> None: ...
+
+    def push_screen(self, screen: Screen[Any], callback: Callable[[Any], None]) -> None: ...
+
+
+def changed_on_ctrl_s(files: SaveCommands, path: Path, kind: str, done: Done, *,
                       in_place: bool = False) -> None:
     """ctrl+s found the file changed on disk: overwrite it, reload it (asking again before
     the app's edits are dropped), save as another name, or cancel."""
@@ -40,9 +58,9 @@ def changed_on_ctrl_s(files: FileCommands, path: Path, kind: str, done: Done, *,
     files.push_screen(ChangedOnDiskScreen(describe_name(str(path))), answer)
 
 
-def confirm_reload(files: FileCommands, path: Path) -> None:
+def confirm_reload(files: SaveCommands, path: Path) -> None:
     """Read ``path`` again; with unsaved edits, only once the user says to drop them."""
-    if not files.host.session.dirty:
+    if not files.dirty:
         files.reload(path)
         return
     from tui_search.tui.screens.save_refused import YES, DropEditsScreen
@@ -54,7 +72,7 @@ def confirm_reload(files: FileCommands, path: Path) -> None:
     files.push_screen(DropEditsScreen(describe_name(str(path))), answer)
 
 
-def changed_in_prompt(files: FileCommands, path: Path, kind: str, done: Done, *,
+def changed_in_prompt(files: SaveCommands, path: Path, kind: str, done: Done, *,
                       in_place: bool = False) -> None:
     """Save-as onto the map's own file, which changed on disk: replace it, or back to the
     prompt for another name."""
@@ -77,7 +95,7 @@ def other_names(path: Path) -> int:
         return 0
 
 
-def ask_in_place(files: FileCommands, path: Path, kind: str, done: Done, *,
+def ask_in_place(files: SaveCommands, path: Path, kind: str, done: Done, *,
                  in_prompt: bool = False, overwrite: bool = False) -> None:
     """The file has hard links: write it in place (all its names change), or don't save."""
     from tui_search.tui.screens.save_refused import YES, InPlaceScreen

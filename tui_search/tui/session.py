@@ -9,7 +9,6 @@ a search or a setting changes or ``r`` is pressed, so no search state outlives i
 
 from __future__ import annotations
 
-from dataclasses import replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -30,8 +29,8 @@ if TYPE_CHECKING:
 
 #: The searches ``c`` compares until the settings pick others.
 DEFAULT_COMPARE = "bfs,dfs"
-#: Panes: one at least, four at most.
-MAX_PANES = 4
+#: Panes: one at least, four at most; the number keys take none out of fewer than two.
+MIN_COMPARED, MAX_PANES = 2, 4
 NEEDS_ENDPOINTS = "Place a start (s) and a goal (g) to search"
 LOCKSTEP = ("Lockstep: n steps every search not done yet, p steps back the latest, "
             "end runs them all to the end · 1-6 add or take out a search · c one search")
@@ -80,11 +79,12 @@ class Session(MapEdits):
         self.unsaved_name = unsaved_name  # the title of a map with no file
         self.history = History()  # the map's edits: undo, redo, and "modified"
         self.max_steps = max_steps
-        self.algorithm = algorithm  # the search a single pane runs
         self.semantics = semantics
-        spec = normal_spec(compare) if compare else ""
-        self.spec = spec or algorithm  # the searches shown, a pane each
-        self.comparison = spec or DEFAULT_COMPARE  # what c compares
+        self.algorithm = algorithm  # what c shows alone
+        self.comparison = DEFAULT_COMPARE  # what c compares
+        self.spec = algorithm  # the searches shown, a pane each
+        if compare:
+            self._remember(normal_spec(compare))
         self.contenders: list[Contender] = []
         self.runs: list[Run] = []
         self.cursor: Cell = grid.start or (0, 0)
@@ -94,10 +94,11 @@ class Session(MapEdits):
         self.note = ""
         self.quiz = Quiz()
         self.exercise = exercise
-        self.fold_trees = False  # several panes: their trees folded away by the user
+        self.fold_trees = False  # the panes' trees folded away by the user
         self.show_code = False  # the Code panel in the trees' place (the pseudocode, lit)
         self.brush: float | None = None  # the terrain brush's cost (None: off)
         self.lesson: LessonPlay | None = None  # --lesson: the lesson shown beside the panes
+        self._fitted = ""  # the note on a setting fitted to a search, once said
         self._benchmark = None if optimal_cost is None else (
             map_key(grid), grid.start, grid.goal, optimal_cost)
         self.new_runs()
@@ -141,13 +142,17 @@ class Session(MapEdits):
     def at_end(self) -> bool:
         return all(r.at_end for r in self.runs)
 
+    @property
+    def names(self) -> list[str]:
+        """The panes' names where one line speaks of every pane (the readout, a seek's
+        progress): names tell runs apart, so a run alone goes unnamed."""
+        labels = self.labels
+        return labels if len(labels) > 1 else [""] * len(labels)  # rule over N: naming
+
     def _contenders(self, spec: str) -> tuple[list[Contender], str]:
         """The searches of ``spec`` under the settings in force, and a note when a setting
         does not apply to one of them (the visit rule: that one visits on generate)."""
-        parts = spec.split(",")
-        if len(parts) == 1:
-            return [Contender(parts[0], self.semantics)], ""
-        contenders = parse_compare(spec, self.semantics, fit=True)
+        contenders = parse_compare(spec, self.semantics, fit=True, fewest=1)
         fitted = [c.label for c in contenders if c.semantics.visit != self.semantics.visit]
         note = (f"Visit on expand does not apply to {', '.join(fitted)}: visit on generate "
                 "there" if fitted else "")
@@ -158,7 +163,8 @@ class Session(MapEdits):
         goal)."""
         self.stop()
         self.contenders, why = self._contenders(self.spec)
-        self.note = note or why
+        self.note = note or (why if why != self._fitted else "")  # said once, not at each edit
+        self._fitted = why
         grid = self.grid
         if grid.start is None or grid.goal is None:
             self.runs = []
@@ -184,24 +190,15 @@ class Session(MapEdits):
 
     # -- the searches shown --------------------------------------------------------------
     def choose_algorithm(self, key: str) -> str | None:
-        """One pane: run ``key`` there.  Several: add it, or take it out (one stays, four at
+        """One pane: run ``key`` there.  Several: add it, or take it out (two stay, four at
         most).  None, or a warning why nothing changed."""
         parts = self.spec.split(",")
-        if len(parts) == 1:
-            self.algorithm = key
-            note = ""
-            algo = get_algorithm(key)
-            if self.semantics.visit != "generate" and (algo.iterative or algo.weighted):
-                # The visit rule does not apply to iterative deepening: back to the default.
-                self.semantics = replace(self.semantics, visit="generate")
-                note = f"Visit on expand does not apply to {algo.short}: back to visit on generate"
-            self.spec = key
-            self.new_runs(note)
-            return None
         keys = [p.partition(":")[0] for p in parts]
         name = get_algorithm(key).short
-        if key in keys:
-            if len(parts) == 2:
+        if len(parts) == 1:  # rule over N: a key picks one pane's search, adds to several
+            parts = [key]
+        elif key in keys:
+            if len(parts) == MIN_COMPARED:
                 return f"Compare keeps two searches at least: {name} stays (c for one search)"
             del parts[keys.index(key)]
         elif len(parts) == MAX_PANES:
@@ -215,30 +212,39 @@ class Session(MapEdits):
         """Show the searches of ``spec`` (``bfs,dfs``; one key: one pane) from step 0.  None,
         or the one-line reason the spec is refused (nothing changes then)."""
         spec = normal_spec(spec)
-        if "," in spec:
-            try:
-                parse_compare(spec, self.semantics, fit=True)
-            except ValueError as exc:
-                return f"Cannot compare {spec}: {exc}"
-            self.comparison = spec
-        self.spec = spec
+        try:
+            parse_compare(spec, self.semantics, fit=True, fewest=1)
+        except ValueError as exc:
+            return f"Cannot compare {spec}: {exc}"
+        self._remember(spec)
         self.new_runs()
         return None
 
+    def _remember(self, spec: str) -> None:
+        """Show ``spec`` and remember it for c: c goes between the last search shown alone
+        and the last ones side by side (the settings' pick)."""
+        self.spec = spec
+        searches = spec.split(",")
+        if len(searches) == 1:  # rule over N: c's two memories, told apart by what they name
+            self.algorithm = spec
+        else:
+            self.comparison = spec
+
     def toggle_compare(self) -> str | None:
-        """Several panes (the searches last compared), or one again (the last single one)."""
-        return self.show_searches(self.algorithm if "," in self.spec else self.comparison)
+        """c: the searches remembered that are not shown (one search, or those compared)."""
+        return self.show_searches(
+            next(spec for spec in (self.comparison, self.algorithm) if spec != self.spec))
 
     def choose_settings(self, semantics: Semantics, compare: str) -> None:
-        """The settings screen's choice: the rules, and what ``c`` compares."""
-        pick_changed = compare != self.comparison
+        """The settings screen's choice: the rules, and what ``c`` compares (shown at once
+        where the old pick is shown)."""
+        spec = compare if self.spec == self.comparison else self.spec
         self.comparison = compare
-        several = "," in self.spec
-        if semantics == self.semantics and not (pick_changed and several):
+        if (semantics, spec) == (self.semantics, self.spec):
             return
         self.semantics = semantics
-        if several and pick_changed:
-            self.show_searches(compare)
+        if spec != self.spec:
+            self.show_searches(spec)
         else:
             self.new_runs()
 
@@ -304,8 +310,7 @@ class Session(MapEdits):
         """Move every run to its end (or step 0) in slices: :meth:`Seek.work`."""
         self.stop()
         targets = [(run, None if to_end else 0) for run in self.runs]
-        labels = self.labels if len(self.runs) > 1 else [""] * len(self.runs)
-        self.seek = Seek(targets, labels, self.where(), then_play)
+        self.seek = Seek(targets, self.names, self.where(), then_play)
 
     def seek_done(self) -> Before:
         """The seek has arrived: where the runs were when it started (play if asked)."""

@@ -1,13 +1,13 @@
 """What the status lines say, built from the session without Textual: the screen's under the
-panes (one search: its run's counts and narration; several: the searches shown and how the
-lockstep goes) and a pane's own among several (its search's counts), as
+panes (where the panes have no lines of their own: the run's counts and narration; else the
+searches shown and how the lockstep goes) and a pane's own (its search's counts), as
 :class:`~tui_search.tui.pieces.Line` s that :class:`~tui_search.tui.widgets.stats.Stats`
 draws.
 
 The counts are pieces ranked by what a student can do without, so that when the rows run out
 the playing speed, the frontier's peak, ... go first, never the narration or the bound (see
-:func:`~tui_search.tui.pieces.lay_out`).  Whether the screen shows one search or several is
-asked here only, in :func:`screen_status`.
+:func:`~tui_search.tui.pieces.lay_out`).  Which lines go under the panes is the layout's rule
+over the number of panes, :func:`~tui_search.tui.layout.own_lines`.
 """
 
 from __future__ import annotations
@@ -18,14 +18,15 @@ from tui_search.engine.algorithms import get_algorithm
 from tui_search.engine.heuristics import INADMISSIBLE
 from tui_search.engine.run import Run
 from tui_search.tui import playback
+from tui_search.tui.layout import own_lines
 from tui_search.tui.narration import frontier_word, narrate, result_text, status_parts
 from tui_search.tui.pieces import Line, Piece
 from tui_search.tui.session import LOCKSTEP, LOCKSTEP_SHORT, Session
 
 #: Between two counts on a row.
 SEP = (" │ ", "stats--label")
-#: At most this many rows while some piece can go; a pane's, one of several, at most
-#: PANE_ROWS (its map comes first).
+#: At most this many rows while some piece can go; a pane's own, at most PANE_ROWS (its map
+#: comes first).
 MAX_ROWS, PANE_ROWS = 4, 3
 #: What goes first when the rows run out (the highest rank; 0 never goes).
 BOUND_RANK, PLAYING_RANK, PEAK_RANK, DONE_RANK, PATH_RANK = 8, 7, 6, 5, 2
@@ -40,16 +41,17 @@ class Status(NamedTuple):
     max_rows: int
 
 
-def search_status(run: Run | None, name: str, *, of_several: bool, playing: str = "",
+def search_status(run: Run | None, name: str, *, in_pane: bool, playing: str = "",
                   note: str = "", done: bool = False, code: bool = False) -> Status:
     """One search's lines: ``name`` names it; ``done`` adds "done at step k" (a run that
     ended before the others); ``note`` replaces the narration (e.g. the quiz's question, while
     computing the end of a big run, or when the map lacks a start or a goal); ``code`` (the
     Code panel shown) has the narration name the code's lines.
 
-    ``of_several``: the lines of a pane among several, whose map comes first: at most
-    :data:`PANE_ROWS`, and the path and the bound may go (the comparison table says them
-    too); else at most :data:`MAX_ROWS`, and they never go."""
+    ``in_pane``: a pane's own lines, under which its map comes first: at most
+    :data:`PANE_ROWS`, and the path and the bound may go (the comparison table under the panes
+    says them too); else the lines under the panes, at most :data:`MAX_ROWS`, and they never
+    go."""
     status = [Piece([(name, "stats--value")])]
     if done and run is not None:
         status.append(Piece([(f"done at step {run.k:,}", "stats--result")], DONE_RANK, SEP))
@@ -79,12 +81,12 @@ def search_status(run: Run | None, name: str, *, of_several: bool, playing: str 
         failed = run.at_end and not run.found and not run.gave_up  # "no path", in red
         line = [Piece([(narrate(run, code), "stats--no-path" if failed else "stats--narration")])]
         if run.at_end and run.found:  # the path, and the bound: what the lesson is about
-            # (a pane of several: the comparison table says them too, and the map comes
-            # first: the bound goes first, the path after the counts)
-            ranks = (PATH_RANK, BOUND_RANK) if of_several else (0, 0)
+            # (a pane's own: the comparison table says them too, and the map comes first:
+            # the bound goes first, the path after the counts)
+            ranks = (PATH_RANK, BOUND_RANK) if in_pane else (0, 0)
             line += [Piece([(text, "stats--result")], rank, (" · ", "stats--label"))
                      for text, rank in zip(result_text(run).split(" · "), ranks)]
-    return Status([Line(status), Line(line, prose=True)], PANE_ROWS if of_several else MAX_ROWS)
+    return Status([Line(status), Line(line, prose=True)], PANE_ROWS if in_pane else MAX_ROWS)
 
 
 def lockstep_status(labels: list[str], *, playing: str = "", note: str = "",
@@ -105,16 +107,17 @@ def playing_text(session: Session) -> str:
 
 
 def screen_status(session: Session, width: int) -> Status:
-    """The status lines under the panes, ``width`` cells wide: one search, its run's (and the
-    session's note); several, the lockstep's (the short sentence where the long one would
-    take two lines: the panes need them more)."""
-    if len(session.labels) > 1:
+    """The status lines under the panes, ``width`` cells wide: where the panes have lines of
+    their own, the lockstep's (the short sentence where the long one would take two lines:
+    the panes need them more); else the run's (and the session's note)."""
+    labels = session.labels
+    if own_lines(len(labels)):
         sentence = LOCKSTEP if len(LOCKSTEP) + 2 <= width else LOCKSTEP_SHORT
-        return lockstep_status(session.labels, playing=playing_text(session),
-                               note=session.note, sentence=sentence)
-    return search_status(session.run, get_algorithm(session.algorithm).short,
-                         of_several=False, playing=playing_text(session), note=session.note,
-                         code=session.show_code)
+        return lockstep_status(labels, playing=playing_text(session), note=session.note,
+                               sentence=sentence)
+    name = get_algorithm(session.contenders[0].algorithm).short  # its heuristic: said after
+    return search_status(session.run, name, in_pane=False, playing=playing_text(session),
+                         note=session.note, code=session.show_code)
 
 
 __all__ = ["MAX_ROWS", "PANE_ROWS", "Status", "lockstep_status", "playing_text",

@@ -34,7 +34,7 @@ KEYS = (
     (" ".join(a.app_key for a in ALGORITHMS.values()),
      " / ".join(a.short for a in ALGORITHMS.values()) + " (a new search, same map)"),
     ("c", "compare searches side by side, in lockstep; 1-6 add / remove"),
-    ("f", "compare mode: fold the search trees away / show them"),
+    ("f", "fold the search trees away / show them"),
     ("v", "Code panel: the search's pseudocode, the step's lines lit ▶"),
     ("r", "restart the search at step 0"),
     (",", "settings: moves, corners, visit, goal test, tree, heuristic"),

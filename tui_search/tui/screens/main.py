@@ -123,7 +123,7 @@ class MainScreen(PanesScreen):
     def _settings_chosen(self, chosen: SettingsChoice | None) -> None:
         if chosen is not None:
             before = (self.session.semantics, self.session.spec, self.session.runs)
-            self.session.choose_settings(chosen.semantics, chosen.compare)
+            self.session.choose_settings(chosen.semantics, chosen.comparison)
             if (self.session.semantics, self.session.spec, self.session.runs) != before:
                 self.new_runs_shown()
 
@@ -336,7 +336,6 @@ class MainScreen(PanesScreen):
             "prev": None if not runs or session.at_start() else True,
             "reset": None if not runs else True,
             "answer": session.quiz.on and bool(runs),
-            "fold_trees": len(self.panes) > 1,
             "faster": None if session.speed_index == len(playback.SPEEDS) - 1 else True,
             "slower": None if session.speed_index == 0 else True,
         }

@@ -128,10 +128,9 @@ class PanesScreen(Screen[None]):
         the first layout that room is reckoned from the screen's size, so the first frame is
         laid out as the next ones."""
         table, box = self.table, self.pane_box
-        several = len(self.panes) > 1
         measured = table.outer_size.height if table.display else 0
-        table_height = max(measured, len(self.panes) + 5) if several else 0  # a line a search,
-        # its head, two more and its border; more when its sentence wraps
+        table_height = max(measured, len(self.panes) + 5)  # a line a search, its head, two
+        # more and its border; more when its sentence wraps (the layout says if it shows)
         if box.size.area:
             width, height = box.size.width, box.size.height + (
                 table.outer_size.height if table.display else 0)
@@ -151,7 +150,9 @@ class PanesScreen(Screen[None]):
                               wrapped=self.stats.wrapped)
         box.styles.grid_size_columns = arrangement.columns
         box.styles.grid_size_rows = arrangement.rows
-        table.display = several and arrangement.table
+        if arrangement.table and not table.display:
+            table.show(self.session.labels, self.session.runs)  # not kept up while hidden
+        table.display = arrangement.table
         for pane in self.panes:
             pane.lay_out(arrangement, code=self.session.show_code)
 
@@ -238,7 +239,7 @@ class PanesScreen(Screen[None]):
                           per_run[i] if per_run is not None else changed, follow=follow,
                           hide_order=session.quiz.on and i == 0,
                           title=escape(describe_name(session.title)))  # a file's name: not markup
-        if len(self.panes) > 1:
+        if self.table.display:
             self.table.show(session.labels, runs)
         self.show_pick()
         self.show_status()
@@ -265,7 +266,7 @@ class PanesScreen(Screen[None]):
         cell, label = (hover, "Mouse") if hover is not None else (session.cursor, "Cursor")
         if not session.grid.in_bounds(cell):
             cell, label = session.cursor, "Cursor"
-        self.readout.show(label, describe_each(session.runs, session.labels, session.grid, cell))
+        self.readout.show(label, describe_each(session.runs, session.names, session.grid, cell))
 
     @property
     def quiz_panel(self) -> FrontierPanel:

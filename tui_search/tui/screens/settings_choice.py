@@ -9,10 +9,10 @@ from tui_search.engine.semantics import Semantics
 
 
 class SettingsChoice(NamedTuple):
-    """The search choices, and the searches compare mode compares (``bfs,dfs``)."""
+    """The search choices, and the searches c compares (``bfs,dfs``)."""
 
     semantics: Semantics
-    compare: str
+    comparison: str
 
 
 __all__ = ["SettingsChoice"]

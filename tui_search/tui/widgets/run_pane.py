@@ -89,8 +89,8 @@ class RunPane(Vertical):
             node = run.now.current_node()
             if follow and node is not None:
                 view.follow(node)
-            if self.stats.display:  # a pane's own status lines show only among several
-                status = search_status(run, self.label, of_several=True, done=run.at_end,
+            if self.stats.display:  # its own status lines, where the layout gives it some
+                status = search_status(run, self.label, in_pane=True, done=run.at_end,
                                        code=not self.code_panel.has_class("-folded"))
                 self.stats.show(status.lines, status.max_rows)
         if view.border_title != title:  # setting it repaints the whole view
