@@ -141,8 +141,7 @@ def parse_recipe(text: str) -> Recipe:
     if len(parts) < 3:
         raise ValueError(f"{text.strip()!r}: expected KIND WxH SEED, e.g. maze 15x15 7")
     kind, size, seed = parts
-    if seed.startswith("seed "):
-        seed = seed[5:]
+    seed = seed.removeprefix("seed ")
     return make_recipe(kind, size, seed)
 
 
