@@ -52,8 +52,8 @@ def test_a_dangling_link_is_not_followed(capsys, tmp_path: Path) -> None:
 
 
 @pytest.mark.parametrize(("argv", "message"), [
-    (["--generate", "blob"], "--generate: unknown kind 'blob' (kinds: random:P, maze, prim, "
-     "kruskal, division, rooms)"),
+    (["--generate", "blob"], ("--generate: unknown kind 'blob' (kinds: random:P, maze, prim, "
+                              "kruskal, division, rooms)")),
     (["--generate", "maze", "--size", "2x2"], "--generate: size 2x2: maze needs at least 3x3"),
     (["--generate", "maze", "--size", "1000x10"], "--generate: size 1000x10: at most 999x999"),
     (["--generate", "random:100.5"], "--generate: random:100.5: P must be a number from 0 to 100"),

@@ -63,7 +63,7 @@ def test_splitmix64_gives_the_reference_numbers() -> None:
 def test_seeds_are_whole_numbers_or_the_sha256_of_text() -> None:
     assert seed_value("7") == seed_value("007") == seed_value(" +7 ") == 7
     assert seed_value("-1") == 2**64 - 1
-    digest = hashlib.sha256("alice".encode()).digest()
+    digest = hashlib.sha256(b"alice").digest()
     assert seed_value("alice") == int.from_bytes(digest[:8], "big") == 0x2BD806C97F0E00AF
 
 
