@@ -99,3 +99,11 @@ def test_headless_names_the_recipe(capsys) -> None:
                            "--order", "N,E,S,W")
     assert code == 0
     assert out.splitlines()[0] == "Breadth-first search on maze 9x9 seed 1: path found"
+
+
+def test_the_help_says_the_maze_is_dfs(capsys) -> None:
+    with pytest.raises(SystemExit):
+        main(["--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    assert "maze: recursive backtracker: depth-first search carving a maze" in text
+    assert "random: random:P, P% (0-100) of cells obstacles" in text

@@ -103,7 +103,7 @@ def build_parser() -> argparse.ArgumentParser:
                    "exit 0 solved, 1 not solved, 2 a bad map")
     p.add_argument("--generate", metavar="KIND",
                    help="make a map instead of reading one: " + "; ".join(
-                       f"{k.name}: {k.help}" for k in KINDS.values())
+                       f"{k.name}: {k.help}".replace("%", "%%") for k in KINDS.values())
                    + " (with --output FILE, write it and exit; else open it in the app)")
     p.add_argument("--size", metavar="WxH",
                    help=f"with --generate: the map's size (default {DEFAULT_SIZE}, at most "

@@ -61,7 +61,7 @@ class Kind(NamedTuple):
 
 
 KINDS: dict[str, Kind] = {k.name: k for k in (
-    Kind("random", (2, 2), "random:P, P% obstacles (0-100) each cell, S and G joined", False),
+    Kind("random", (2, 2), "random:P, P% (0-100) of cells obstacles, S and G joined", False),
     Kind("maze", (3, 3), "recursive backtracker: depth-first search carving a maze", True),
     Kind("prim", (3, 3), "randomised Prim: a tree grown from one cell", True),
     Kind("kruskal", (3, 3), "randomised Kruskal: passages opened in random order", True),

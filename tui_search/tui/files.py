@@ -268,8 +268,7 @@ class FileCommands:
         from tui_search.tui.screens.confirm_quit import generating
         from tui_search.tui.screens.generate_map import GenerateScreen
 
-        grid = self.host.session.grid
-        now = recipe_of(grid) if self.host.session.map_path is None else None
+        now = recipe_of(self.host.session.grid)  # a generated map's, saved or not
         nxt = make_recipe("maze") if now is None else next_recipe(now)
 
         def chosen(recipe: Recipe | None) -> None:
