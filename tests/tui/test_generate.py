@@ -6,9 +6,11 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
 from textual.widgets import Input
 
 from tests.tui.test_app import MAPS, SIZE, screen_shown, sync, wait_until
+from tests.tui.test_dialogs_fit import assert_fits
 from tests.tui.test_files import answer, copy
 from tui_search.engine.generate import generate, make_recipe
 from tui_search.engine.mapfile import load_map
@@ -94,3 +96,15 @@ async def test_the_palette_offers_it_with_its_key() -> None:
         assert "(key m)" in commands[name][1] and "DFS" in commands[name][1]
         await commands[name][0]()  # the main screen's run_action
         await screen_shown(pilot, GenerateScreen)
+
+
+@pytest.mark.parametrize("size", [(80, 24), (120, 40)])
+@sync
+async def test_the_prompt_fits_with_an_error_shown(size: tuple[int, int]) -> None:
+    app = SearchApp(load_map(TUTORIAL))
+    async with app.run_test(size=size) as pilot:
+        prompt, _ = await generate_with(pilot, "blob 9x9 1")
+        assert prompt.error.startswith("unknown kind 'blob'")
+        await assert_fits(pilot, GenerateScreen)
+        field = prompt.query_one(Input).region
+        assert app.screen.region.intersection(field) == field and field.area
