@@ -17,13 +17,21 @@ from tui_search import __version__
 from tui_search.collector import collector_paused
 from tui_search.engine.algorithms import ALGORITHMS, DEFAULT_ALGORITHM
 from tui_search.engine.exercises import QUOTES
+from tui_search.engine.generate import DEFAULT_SEED, DEFAULT_SIZE, KINDS, MAX_SIDE
 from tui_search.engine.grid import DEFAULT_ORDER, Grid
 from tui_search.engine.heuristics import DEFAULT_HEURISTIC, HEURISTICS
 from tui_search.engine.loops.compiled import CoreUnavailable, core_name
 from tui_search.engine.mapread import MapError
 from tui_search.engine.run import MAX_STEPS
 from tui_search.engine.semantics import CORNER_RULES, GOAL_TESTS, VISIT_RULES
-from tui_search.flags import UsageError, contenders_from, load_problem, semantics_from
+from tui_search.flags import (
+    UsageError,
+    check_generate,
+    contenders_from,
+    load_problem,
+    semantics_from,
+    write_generated,
+)
 from tui_search.headless import (
     EXIT_BAD_INPUT,
     print_pseudocode,
@@ -93,6 +101,18 @@ def build_parser() -> argparse.ArgumentParser:
                    "--headless, grade the map on it (1: BFS "
                    "expands fewer nodes than DFS; 2: DFS's path has more moves than BFS's): "
                    "exit 0 solved, 1 not solved, 2 a bad map")
+    p.add_argument("--generate", metavar="KIND",
+                   help="make a map instead of reading one: " + "; ".join(
+                       f"{k.name}: {k.help}".replace("%", "%%") for k in KINDS.values())
+                   + " (with --output FILE, write it and exit; else open it in the app)")
+    p.add_argument("--size", metavar="WxH",
+                   help=f"with --generate: the map's size (default {DEFAULT_SIZE}, at most "
+                   f"{MAX_SIDE}x{MAX_SIDE})")
+    p.add_argument("--seed", metavar="SEED",
+                   help=f"with --generate: a whole number or any text (default {DEFAULT_SEED}); "
+                   "the same kind, size and seed make the same map everywhere")
+    p.add_argument("--output", metavar="FILE",
+                   help="with --generate: write the map to FILE (never over an existing file)")
     p.add_argument("--max-steps", metavar="N", type=_positive, default=MAX_STEPS,
                    help=f"give up after N expansions (default {MAX_STEPS:,}: iterative "
                    "deepening on a big map can take billions)")
@@ -140,11 +160,18 @@ def build_app(args: argparse.Namespace, grid: Grid, path: Path | None) -> Search
     lesson = getattr(args, "lesson_read", None)
     return SearchApp(grid, path=path, algorithm=args.algorithm,
                      semantics=semantics_from(args), max_steps=args.max_steps,
-                     unsaved_name=BUILT_IN_TITLE, theme=args.theme,
+                     unsaved_name=app_title(args),
+                     theme=args.theme,
                      optimal_cost=scenario.optimal_length if scenario is not None else None,
                      exercise=args.exercise, compare=args.compare,
                      file_access=file_access(args),
                      config=Config.in_memory() if args.served else None, lesson=lesson)
+
+
+def app_title(args: argparse.Namespace) -> str:
+    """The app's title for a map with no file: a generated map's recipe, or the tutorial."""
+    recipe = getattr(args, "recipe", None)
+    return recipe.title if recipe is not None else BUILT_IN_TITLE
 
 
 def run_app(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
@@ -224,6 +251,9 @@ def main(argv: list[str] | None = None) -> int:
         if args.theme and args.headless:
             raise UsageError("--theme is for the app, not --headless")
         check_modes(args)
+        check_generate(args)
+        if args.output is not None:
+            return write_generated(args)
         if args.pseudocode:
             return print_pseudocode(args)
         if args.lesson is not None and open_lesson(args):
@@ -239,7 +269,7 @@ def main(argv: list[str] | None = None) -> int:
         if args.compare:
             contenders_from(args)
         if args.serve:
-            return serve.serve(parser, args, title=path.name if path else BUILT_IN_TITLE)
+            return serve.serve(parser, args, title=path.name if path else app_title(args))
         return run_app(args, grid, path)
     except (UsageError, CoreUnavailable) as exc:
         print(f"tui-search: error: {exc}", file=sys.stderr)

@@ -13,9 +13,19 @@ from pathlib import Path
 
 from tui_search.engine.algorithms import ALGORITHMS, DEFAULT_ALGORITHM, get_algorithm
 from tui_search.engine.compare import Contender, parse_compare
+from tui_search.engine.filenames import describe_name
+from tui_search.engine.generate import (
+    DEFAULT_SEED,
+    DEFAULT_SIZE,
+    generate,
+    generated_text,
+    make_recipe,
+)
 from tui_search.engine.grid import Cell, Grid, parse_order
 from tui_search.engine.heuristics import DEFAULT_HEURISTIC
 from tui_search.engine.mapfile import load_map, parse_cell, parse_map_text
+from tui_search.engine.mapread import MapError
+from tui_search.engine.mapwrite import save_new
 from tui_search.engine.scenarios import check_scenario_map, check_scenario_matches, load_scenario
 from tui_search.engine.semantics import Semantics
 from tui_search.engine.terrain import load_terrain
@@ -43,6 +53,12 @@ def load_problem(args: argparse.Namespace) -> tuple[Grid, Path | None]:
     if (args.scen is None) != (args.scen_row is None):
         raise UsageError("--scen and --scen-row go together")
     terrain = load_terrain(args.terrain) if args.terrain is not None else None
+    recipe = getattr(args, "recipe", None)
+    if recipe is not None:
+        if args.scen:
+            raise UsageError("--scen needs a MAP, not --generate")
+        text = generated_text(recipe)
+        return parse_map_text(text, recipe.title, start=start, goal=goal, terrain=terrain), None
     if args.map is None:
         if args.scen:
             raise UsageError("--scen needs a MAP")
@@ -69,6 +85,44 @@ def load_problem(args: argparse.Namespace) -> tuple[Grid, Path | None]:
         if (grid.start, grid.goal) == (scen.start, scen.goal) and grid.costs is None:
             args.scenario = scen
     return grid, path
+
+
+def map_name(args: argparse.Namespace, path: Path | None) -> str:
+    """What a headless run calls the map: its file, a generated map's recipe, or the
+    tutorial's file name."""
+    recipe = getattr(args, "recipe", None)
+    return str(path) if path is not None else recipe.title if recipe else TUTORIAL_NAME
+
+
+def check_generate(args: argparse.Namespace) -> None:
+    """``--generate``'s recipe in ``args.recipe`` (None without it); its companions without
+    it, or a MAP with it, are a UsageError."""
+    args.recipe = None
+    if args.generate is None:
+        for flag in ("size", "seed", "output"):
+            if getattr(args, flag) is not None:
+                raise UsageError(f"--{flag} goes with --generate")
+        return
+    if args.map is not None:
+        raise UsageError("--generate makes the map: leave out MAP")
+    if args.output is not None:
+        for flag in ("headless", "pseudocode", "serve"):
+            if getattr(args, flag, False):
+                raise UsageError(f"--output writes the map and exits: leave out --{flag}")
+    try:
+        args.recipe = make_recipe(args.generate, args.size or DEFAULT_SIZE,
+                                  args.seed or DEFAULT_SEED)
+    except ValueError as exc:
+        raise UsageError(f"--generate: {exc}") from None
+
+
+def write_generated(args: argparse.Namespace) -> int:
+    """--generate with --output: write the map to a new file (never over one), exit 0."""
+    try:
+        save_new(generate(args.recipe, args.output), args.output)
+    except MapError as exc:
+        raise UsageError(f"--output {describe_name(args.output)}: {exc.message}") from None
+    return 0
 
 
 def semantics_from(args: argparse.Namespace, checked: bool = True) -> Semantics:

@@ -28,7 +28,7 @@ from tui_search.engine.outcome import Outcome
 from tui_search.engine.run import Run, Step
 from tui_search.engine.scenarios import Scenario
 from tui_search.engine.semantics import Semantics
-from tui_search.flags import TUTORIAL_NAME, UsageError, contenders_from, semantics_from
+from tui_search.flags import UsageError, contenders_from, map_name, semantics_from
 
 if TYPE_CHECKING:
     from tui_search.engine.reference import Expansion
@@ -200,7 +200,7 @@ def human_summary(
 def run_headless(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
     if args.trace == "-" and args.json:
         raise UsageError("--trace - and --json both want stdout; give --trace a file")
-    where = describe_name(str(path or TUTORIAL_NAME))  # escape sequences shown, not run
+    where = describe_name(map_name(args, path))  # escape sequences shown, not run
     _need_endpoints(grid, where)
     semantics = semantics_from(args)
 
@@ -241,7 +241,7 @@ def compare_table(labels: list[str], outcomes: list[Outcome], terrain: bool = Fa
 
 
 def run_compare(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
-    where = describe_name(str(path or TUTORIAL_NAME))  # escape sequences shown, not run
+    where = describe_name(map_name(args, path))  # escape sequences shown, not run
     _need_endpoints(grid, where)
     contenders = contenders_from(args)
     outcomes = [search_headless(grid, c.algorithm, c.semantics, args.max_steps, None)
@@ -259,7 +259,7 @@ def run_compare(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
 
 def run_exercise(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
     """Grade the map on an exercise: ``solved`` or ``not solved`` with the figures."""
-    where = describe_name(str(path or TUTORIAL_NAME))  # escape sequences shown, not run
+    where = describe_name(map_name(args, path))  # escape sequences shown, not run
     _need_endpoints(grid, where)
     verdict: Verdict = check(args.exercise, grid, tutorial_grid(), args.max_steps)
     if args.json:

@@ -34,6 +34,7 @@ __all__ = [
     "format_text_map",
     "kind_for_path",
     "save_map",
+    "save_new",
     "save_notes",
     "save_text_map",
 ]
@@ -139,6 +140,26 @@ def format_text_map(grid: Grid) -> str:
 def save_text_map(grid: Grid, path: str | os.PathLike[str]) -> None:
     """:func:`save_map` in the text format."""
     save_map(grid, path, TEXT)
+
+
+def save_new(grid: Grid, path: str | os.PathLike[str]) -> None:
+    """Write ``grid`` as a text map to a file that does not exist yet: an existing file (or
+    a link, even a dangling one) is never replaced, but refused with a MapError, as is any
+    other failure (saying why).  The file is created exclusively, so no other program's
+    file made in the meantime is replaced either."""
+    target = os.fsdecode(path)
+    data = format_text_map(grid).encode("utf-8")
+    try:
+        with open(target, "xb") as out:
+            out.write(data)
+    except FileExistsError:
+        raise MapError(target, "the file exists; a generated map never replaces a file "
+                       "(choose another name)") from None
+    except FileNotFoundError:
+        raise MapError(target, "cannot save: the folder does not exist") from None
+    except (OSError, ValueError) as err:
+        reason = os_reason(err) if isinstance(err, OSError) else str(err)
+        raise MapError(target, f"cannot save: {reason}") from None
 
 
 class ReadOnlyFile(MapError):

@@ -41,6 +41,7 @@ ACTIONS = {
     "save": "Save the map",
     "save_as": "Save the map as…",
     "open": "Open a map…",
+    "generate": "Generate a map: maze, prim, kruskal, division, rooms, random…",
     "overview": "Overview: the whole map",
     "zoom(1)": "Zoom in: bigger cells",
     "zoom(-1)": "Zoom out: smaller cells",

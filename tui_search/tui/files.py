@@ -26,6 +26,7 @@ from textual.notifications import SeverityLevel
 from textual.screen import Screen
 
 from tui_search.engine.filenames import describe_name
+from tui_search.engine.generate import Recipe, generate, make_recipe, next_recipe, recipe_of
 from tui_search.engine.grid import Grid
 from tui_search.engine.mapfile import load_map
 from tui_search.engine.mapread import MapError
@@ -69,8 +70,8 @@ class Host(Protocol):
 
 
 class FileCommands:
-    """ctrl+s saves, w saves as, ctrl+o opens a map; q and a new map ask first when there
-    are unsaved edits (:meth:`confirm_discard`, :meth:`replace_map`)."""
+    """ctrl+s saves, w saves as, ctrl+o opens a map, ctrl+n generates one; q and a new map ask
+    first when there are unsaved edits (:meth:`confirm_discard`, :meth:`replace_map`)."""
 
     def __init__(self, host: Host) -> None:
         self.host = host
@@ -263,6 +264,25 @@ class FileCommands:
         new_name = name or (describe_name(path.name) if path is not None else "the new map")
         self.confirm_discard(lambda: self._use_map(grid, path), replacing(new_name))
 
-    def _use_map(self, grid: Grid, path: Path | None) -> None:
-        self.host.session.use_map(grid, path)
+    def _use_map(self, grid: Grid, path: Path | None, untitled: str | None = None) -> None:
+        self.host.session.use_map(grid, path, untitled)
         self.host.show_map()
+
+    # -- generating a map -----------------------------------------------------------------
+    def generate(self) -> None:
+        """``m``: ask for a recipe (the current one's next seed suggested), then show its
+        map, untitled -- asking first when the current map has unsaved edits."""
+        from tui_search.tui.screens.confirm_quit import generating
+        from tui_search.tui.screens.generate_map import GenerateScreen
+
+        now = recipe_of(self.host.session.grid)  # a generated map's, saved or not
+        nxt = make_recipe("maze") if now is None else next_recipe(now)
+
+        def chosen(recipe: Recipe | None) -> None:
+            if recipe is not None:
+                self.confirm_discard(
+                    lambda: self._use_map(generate(recipe), None, recipe.title),
+                    generating(recipe.title))
+
+        self.push_screen(GenerateScreen(f"{nxt.spec} {nxt.width}x{nxt.height} {nxt.seed}"),
+                         chosen)

@@ -100,6 +100,9 @@ KEYS: list[BindingType] = [
     Binding("ctrl+s", "save", "Save", tooltip="Save the map"),
     Binding("w", "save_as", "Save as", show=False, tooltip="Save the map as a new file"),
     Binding("ctrl+o", "open", "Open", show=False, tooltip="Open a map…"),
+    Binding("ctrl+n", "generate", "Generate", show=False,
+            tooltip="Generate a map: maze (DFS carving its own maze), prim, kruskal, division, "
+            "rooms or random:P, from a seed (asks first when there are unsaved edits)"),
     Binding("question_mark", "help", "Help", key_display="?", tooltip="Help"),
     Binding("q", "quit", "Quit", tooltip="Quit (asks first when there are unsaved edits)"),
 ]

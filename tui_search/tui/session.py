@@ -255,8 +255,11 @@ class Session(MapEdits):
         self.cursor = cell
         return True
 
-    def use_map(self, grid: Grid, path: Path | None) -> None:
-        """Show ``grid`` (read from ``path``) instead, from step 0."""
+    def use_map(self, grid: Grid, path: Path | None, untitled: str | None = None) -> None:
+        """Show ``grid`` (read from ``path``) instead, from step 0; ``untitled``: the title of
+        a map with no file (a generated map's recipe)."""
+        if untitled is not None:
+            self.unsaved_name = untitled
         self.grid = grid
         self.map_path = Path(path) if path is not None else None
         self.history = History()

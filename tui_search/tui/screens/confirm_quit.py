@@ -35,6 +35,11 @@ def replacing(new_name: str) -> Leaving:
     return Leaving(f"Open {new_name} anyway?", "Save, then open", "Discard edits", "Cancel")
 
 
+def generating(title: str) -> Leaving:
+    """The words for replacing the map with the generated map ``title``."""
+    return Leaving(f"Generate {title} anyway?", "Save, then generate", "Discard edits", "Cancel")
+
+
 class ConfirmQuitScreen(QuestionScreen):
     """``s`` saves then goes on, ``y`` goes on without saving, ``n`` or escape stays."""
 

@@ -51,6 +51,7 @@ KEYS = (
     ("ctrl+s", "save the map (to its file, in its format)"),
     ("w", "save the map as … (asks before replacing a file)"),
     ("ctrl+o", "open a map … (asks first when there are unsaved edits)"),
+    ("ctrl+n", "generate a maze (DFS carves it) or a random map, from a seed"),
     ("ctrl+p", "command palette: every command by name (algorithms, themes, …)"),
     ("?", "this help"),
     ("q", "quit (asks first when there are unsaved edits)"),

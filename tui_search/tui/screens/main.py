@@ -303,6 +303,9 @@ class MainScreen(PanesScreen):
     def action_open(self) -> None:
         self.files.open()
 
+    def action_generate(self) -> None:
+        self.files.generate()
+
     def action_quit(self) -> None:
         self.files.quit()
 

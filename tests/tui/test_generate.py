@@ -1,0 +1,110 @@
+"""``ctrl+n`` (and the palette's "Generate a map"): a generated map replaces the current one,
+untitled, after asking when there are unsaved edits; the prompt suggests the next seed and
+keeps a bad recipe open with the reason."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from textual.widgets import Input
+
+from tests.tui.test_app import MAPS, SIZE, screen_shown, sync, wait_until
+from tests.tui.test_dialogs_fit import assert_fits
+from tests.tui.test_files import answer, copy
+from tui_search.engine.generate import generate, make_recipe
+from tui_search.engine.mapfile import load_map
+from tui_search.tui.app import SearchApp
+from tui_search.tui.commands import SearchCommands
+from tui_search.tui.screens.confirm_quit import ConfirmQuitScreen
+from tui_search.tui.screens.generate_map import GenerateScreen
+
+TUTORIAL = MAPS / "tutorial.txt"
+
+
+async def generate_with(pilot, typed: str | None = None) -> tuple[GenerateScreen, str]:
+    """Press m, type ``typed`` (None: keep the suggestion) and enter; back once the prompt
+    has answered (closed, or an error shown), with the prompt and what it suggested."""
+    await pilot.press("ctrl+n")
+    prompt = await screen_shown(pilot, GenerateScreen)
+    suggested = prompt.query_one(Input).value
+    if typed is not None:
+        prompt.query_one(Input).value = typed
+        await wait_until(pilot, lambda: prompt.query_one(Input).value == typed)
+    await pilot.press("enter")
+    await wait_until(pilot, lambda: pilot.app.screen is not prompt or bool(prompt.error))
+    await pilot.pause()
+    return prompt, suggested
+
+
+@sync
+async def test_m_generates_a_map_untitled_and_suggests_the_next_seed() -> None:
+    app = SearchApp(load_map(TUTORIAL))
+    async with app.run_test(size=SIZE) as pilot:
+        _, suggested = await generate_with(pilot)
+        assert suggested == "maze 21x15 1"
+        session = app.session
+        assert session.grid == generate(make_recipe("maze", "21x15", "1"))
+        assert session.title == "maze 21x15 seed 1" and session.map_path is None
+        assert session.run is not None and session.run.k == 0
+        assert app.main.views[0].grid is session.grid
+        _, suggested = await generate_with(pilot)
+        assert suggested == "maze 21x15 2"
+        assert session.title == "maze 21x15 seed 2"
+
+
+@sync
+async def test_a_bad_recipe_keeps_the_prompt_open_with_the_reason() -> None:
+    app = SearchApp(load_map(TUTORIAL))
+    async with app.run_test(size=SIZE) as pilot:
+        prompt, _ = await generate_with(pilot, "maze 2x2 1")
+        assert app.screen is prompt
+        assert prompt.error == "size 2x2: maze needs at least 3x3"
+        await pilot.press("escape")
+        await wait_until(pilot, lambda: app.screen is not prompt)
+        assert app.session.grid == load_map(TUTORIAL)
+
+
+@sync
+async def test_generating_over_unsaved_edits_asks_first(tmp_path: Path) -> None:
+    path = copy(TUTORIAL, tmp_path)
+    app = SearchApp(load_map(path), path=path)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("down", "o")
+        await wait_until(pilot, lambda: app.session.dirty)
+        await generate_with(pilot, "random:30 12x8 alice")
+        question = await screen_shown(pilot, ConfirmQuitScreen)
+        assert "Generate random:30 12x8 seed alice anyway?" in str(
+            question.query_one("Label").content)
+        await answer(pilot, ConfirmQuitScreen, "n")  # cancel: the edit stays
+        assert app.session.map_path == path and app.session.dirty
+        await generate_with(pilot, "random:30 12x8 alice")
+        await answer(pilot, ConfirmQuitScreen, "y")  # discard the edit
+        await wait_until(pilot, lambda: app.session.map_path is None)
+        assert app.session.grid == generate(make_recipe("random:30", "12x8", "alice"))
+        assert not app.session.dirty and app.session.title == "random:30 12x8 seed alice"
+    assert path.read_bytes() == TUTORIAL.read_bytes()
+
+
+@sync
+async def test_the_palette_offers_it_with_its_key() -> None:
+    app = SearchApp(load_map(TUTORIAL))
+    async with app.run_test(size=SIZE) as pilot:
+        commands = {name: (run, help_text)
+                    for name, run, help_text in SearchCommands(app.screen).commands()}
+        name = next(n for n in commands if n.startswith("Generate a map"))
+        assert "(key ^n)" in commands[name][1] and "DFS" in commands[name][1]
+        await commands[name][0]()  # the main screen's run_action
+        await screen_shown(pilot, GenerateScreen)
+
+
+@pytest.mark.parametrize("size", [(80, 24), (120, 40)])
+@sync
+async def test_the_prompt_fits_with_an_error_shown(size: tuple[int, int]) -> None:
+    app = SearchApp(load_map(TUTORIAL))
+    async with app.run_test(size=size) as pilot:
+        prompt, _ = await generate_with(pilot, "blob 9x9 1")
+        assert prompt.error.startswith("unknown kind 'blob'")
+        await assert_fits(pilot, GenerateScreen)
+        field = prompt.query_one(Input).region
+        assert app.screen.region.intersection(field) == field and field.area
