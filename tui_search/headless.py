@@ -28,7 +28,13 @@ from tui_search.engine.outcome import Outcome
 from tui_search.engine.run import Run, Step
 from tui_search.engine.scenarios import Scenario
 from tui_search.engine.semantics import Semantics
-from tui_search.flags import UsageError, contenders_from, map_name, semantics_from
+from tui_search.flags import (
+    UsageError,
+    contenders_from,
+    load_problem,
+    map_name,
+    semantics_from,
+)
 
 if TYPE_CHECKING:
     from tui_search.engine.reference import Expansion
@@ -39,7 +45,7 @@ EXIT_FOUND, EXIT_NO_PATH, EXIT_BAD_INPUT, EXIT_GAVE_UP = 0, 1, 2, 3
 def print_pseudocode(args: argparse.Namespace) -> int:
     """``--pseudocode``: the code of ``-a``'s search under the flags' choices, numbered, on
     stdout (:mod:`tui_search.engine.pseudocode`); exit 0."""
-    from tui_search.engine.pseudocode import pseudocode
+    from tui_search.engine.pseudocode import MOVE_COST, TERRAIN_MOVE_COST, pseudocode
 
     for flag in ("compare", "exercise", "trace"):
         if getattr(args, flag):
@@ -48,7 +54,11 @@ def print_pseudocode(args: argparse.Namespace) -> int:
     if args.headless or args.json:
         raise UsageError("--pseudocode prints the code without a search: leave out "
                          "--headless and --json")
-    code = pseudocode(get_algorithm(args.algorithm), semantics_from(args))
+    costed = False
+    if args.map is not None or args.terrain is not None:  # the code of a search on this map
+        costed = load_problem(args)[0].costs is not None
+    code = pseudocode(get_algorithm(args.algorithm), semantics_from(args),
+                      move_cost=TERRAIN_MOVE_COST if costed else MOVE_COST)
     print(code.title)
     print("\n".join(code.numbered()))
     return EXIT_FOUND
