@@ -82,7 +82,7 @@ def apply_state(session: Session, state: State) -> None:
             problem = str(exc)
     session.algorithm = state.algorithm
     session.semantics = state.semantics
-    session.exercise = state.exercise
+    session.show_exercise(state.exercise)
     session.show_code = state.code
     refusal = session.show_searches(state.spec)
     assert refusal is None, refusal  # checked when the lesson was read
