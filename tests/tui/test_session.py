@@ -164,3 +164,17 @@ def test_the_settings_pick_what_c_compares_and_apply_their_rules() -> None:
     session.toggle_compare()
     session.choose_settings(corners, "dfs,astar")  # one pane: only what c compares changes
     assert session.labels == ["BFS"] and session.comparison == "dfs,astar"
+
+
+def test_x_cycles_through_an_exercise_file_given_at_start() -> None:
+    from tests.helpers import ROOT
+    from tui_search.engine.exercise_file import load_exercise
+
+    mine = load_exercise(ROOT / "tests" / "data" / "exercises" / "greedy-not-optimal.toml")
+    session = tutorial(exercise=mine)
+    assert session.verdict().exercise is mine and not session.verdict().solved
+    seen = []
+    for _ in range(4):
+        session.cycle_exercise()
+        seen.append(session.exercise)
+    assert seen == [built_in_exercise(1), built_in_exercise(2), None, mine]
