@@ -10,8 +10,8 @@ from __future__ import annotations
 import argparse
 import gc
 import sys
-from pathlib import Path
 from collections.abc import Sequence
+from pathlib import Path
 from typing import TYPE_CHECKING, NoReturn
 
 from tui_search import __version__

@@ -81,8 +81,8 @@ def test_an_undefined_figure_fails_every_comparison() -> None:
 
 @pytest.mark.parametrize(("text", "message", "offset"), [
     ("", "the condition is empty", 0),
-    ("bfs.expanded <", "expected a number, a name like bfs.expanded, 'not' or '(', "
-     "not the end", 14),
+    ("bfs.expanded <", ("expected a number, a name like bfs.expanded, 'not' or '(', "
+     "not the end"), 14),
     ("bfs.expanded < < 3", "expected a number", 15),
     ("(1 + 2", "'(' is never closed", 0),
     ("(1 + 2 3", "expected ')', not '3'", 7),

@@ -17,12 +17,12 @@ from tui_search.engine.mapread import MapError
 #: reasons the tutorial's exercises gave then.
 TODAY = {
     "tutorial.txt": (False, False, "BFS expanded 22 nodes, DFS 7; both paths have 7 moves"),
-    "exercise1-bfs-wins.txt": (True, True, "BFS expanded 5 nodes, DFS 20; BFS's path has 2 "
-                               "moves, DFS's 17"),
-    "exercise1-goal-moved.txt": (True, True, "BFS expanded 5 nodes, DFS 18; BFS's path has 4 "
-                                 "moves, DFS's 8"),
-    "exercise2-dfs-longer.txt": (False, True, "BFS expanded 32 nodes, DFS 9; BFS's path has 5 "
-                                 "moves, DFS's 8"),
+    "exercise1-bfs-wins.txt": (True, True, ("BFS expanded 5 nodes, DFS 20; BFS's path has 2 "
+                               "moves, DFS's 17")),
+    "exercise1-goal-moved.txt": (True, True, ("BFS expanded 5 nodes, DFS 18; BFS's path has 4 "
+                                 "moves, DFS's 8")),
+    "exercise2-dfs-longer.txt": (False, True, ("BFS expanded 32 nodes, DFS 9; BFS's path has 5 "
+                                 "moves, DFS's 8")),
     "no-path.txt": (False, False, "no path to the goal (BFS expanded 30 nodes, DFS 30)"),
 }
 
