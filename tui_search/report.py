@@ -127,8 +127,8 @@ def _print_one(row: Graded, json: bool) -> None:
         return
     word = "solved" if verdict.solved else "not solved"
     print(f"{row.where}: {verdict.exercise.name} {word} — {verdict.reason}")
-    if verdict.hint:
-        print(f"  hint: {verdict.hint}")
+    if verdict.hints:
+        print(f"  hint: {verdict.hints}")
 
 
 __all__ = ["Graded", "run_exercise", "summary"]

@@ -69,7 +69,8 @@ def test_a_teacher_s_exercise(tmp_path: Path) -> None:
     assert ex.fields == ("greedy.found", "astar_manhattan.found", "greedy.cost",
                          "astar_manhattan.cost")
     verdict = grade(ex, ex.grid.copy())
-    assert not verdict.solved and verdict.hint == "Greedy looks only at h."
+    assert not verdict.solved and verdict.hints == "Greedy looks only at h." == ex.hint
+    assert verdict.hint == ""
     assert verdict.reason == "both found the goal; both paths cost 8.66"
     assert verdict.figures["greedy.cost"] == verdict.figures["astar_manhattan.cost"]
 

@@ -40,19 +40,26 @@ class Verdict(NamedTuple):
     reason: str  # one line in the tutorial's terms
     outcomes: tuple[tuple[str, str, Outcome], ...]  # (the condition's name, label, outcome)
     figures: dict[str, Value | None]  # the condition's SEARCH.FIELD -> its value
-    hint: str = ""  # edits the exercise hints at, and the exercise's own hint
+    hint: str = ""  # what else changed, when the exercise hints at it (other_edits = "hint")
     graded: bool = True  # False: a search gave up before the end (--max-steps)
 
     @property
     def status(self) -> str:
         return "not graded" if not self.graded else "solved" if self.solved else "not solved"
 
+    @property
+    def hints(self) -> str:
+        """What the app and a one-map grading say under the verdict: the edits' hint, and the
+        exercise's own hint while it is not solved."""
+        own = self.exercise.hint if not self.solved else ""
+        return "; ".join(h for h in (self.hint, own) if h)
+
     def as_json(self) -> dict[str, object]:
         ex = self.exercise
         runs = {name: _figures(out) for name, _, out in self.outcomes}
         return {"exercise": ex.number if ex.number is not None else ex.path,
                 "title": ex.title, "solved": self.solved, "verdict": self.status,
-                "reason": self.reason, "hint": self.hint or None,
+                "reason": self.reason, "hint": self.hints or None,
                 "figures": dict(self.figures), **runs}
 
 
@@ -153,17 +160,15 @@ def grade(exercise: Exercise, grid: Grid, max_steps: int = MAX_STEPS) -> Verdict
         reason = f"no path to the goal{whose}" + (f" ({'; '.join(shown)})" if shown else "")
     else:
         reason = "; ".join(figure_phrase(f, labelled) for f in exercise.figures)
-    hints = []
+    hint = ""
     other = _not_allowed(exercise, grid)
     if other and exercise.other_edits == "fail":
         solved = False
         reason = f"changed {_words(other)}, which the exercise does not allow"
     elif other:
         allowed = _words(sorted(exercise.edits)) if exercise.edits else "nothing"
-        hints.append(f"the exercise changes only {allowed}: here {_words(other)} changed")
-    if exercise.hint and not solved:
-        hints.append(exercise.hint)
-    return Verdict(exercise, solved, reason, tuple(runs), figures, "; ".join(hints))
+        hint = f"the exercise changes only {allowed}: here {_words(other)} changed"
+    return Verdict(exercise, solved, reason, tuple(runs), figures, hint)
 
 
 __all__ = ["LIVE_CELLS", "Verdict", "changes", "figure_phrase", "grade"]

@@ -66,8 +66,8 @@ class ChallengePanel(Static):
             else:
                 out.append("Not solved yet: ", style("challenge--unsolved"))
             out.append(verdict.reason)
-            if verdict.hint:
-                out.append(f"\nHint: {verdict.hint}", style("challenge--hint"))
+            if verdict.hints:
+                out.append(f"\nHint: {verdict.hints}", style("challenge--hint"))
         self.text = out.plain
         self.update(out)
 
