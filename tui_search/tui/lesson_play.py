@@ -24,7 +24,6 @@ class Session(Protocol):
 
     algorithm: str
     semantics: Semantics
-    exercise: int | None
     show_code: bool
     note: str
 
@@ -32,6 +31,7 @@ class Session(Protocol):
     def use_map(self, grid: Grid, path: Path | None, untitled: str | None = None) -> None: ...
     def show_searches(self, spec: str) -> str | None: ...
     def goto(self, k: int | None) -> None: ...
+    def show_exercise(self, exercise: int | None) -> None: ...
 
 
 class LessonPlay:
