@@ -119,6 +119,11 @@ def test_exercise_without_headless_opens_the_app(monkeypatch) -> None:
     monkeypatch.setattr(SearchApp, "run", fake_run)
     assert main(["--exercise", "2"]) == 0
     assert seen == {"exercise": 2, "title": "tutorial (built-in)"}
+    teacher = MAPS.parent / "tests" / "data" / "exercises" / "greedy-not-optimal.toml"
+    monkeypatch.setattr(SearchApp, "run", lambda self, *a, **k: seen.update(
+        title=self.session.exercise.title))
+    assert main(["--exercise", str(teacher)]) == 0
+    assert seen["title"] == "Greedy is not optimal"
 
 
 @sync
