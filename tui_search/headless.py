@@ -19,7 +19,6 @@ from tui_search.engine.compare import (
     table_cells,
     table_lines,
 )
-from tui_search.engine.exercises import Verdict, check, tutorial_grid
 from tui_search.engine.filenames import describe_name
 from tui_search.engine.grid import Grid
 from tui_search.engine.heuristics import INADMISSIBLE, admissible
@@ -211,7 +210,7 @@ def run_headless(args: argparse.Namespace, grid: Grid, path: Path | None) -> int
     if args.trace == "-" and args.json:
         raise UsageError("--trace - and --json both want stdout; give --trace a file")
     where = describe_name(map_name(args, path))  # escape sequences shown, not run
-    _need_endpoints(grid, where)
+    need_endpoints(grid, where)
     semantics = semantics_from(args)
 
     def search(out: IO[str] | None) -> Outcome:
@@ -252,7 +251,7 @@ def compare_table(labels: list[str], outcomes: list[Outcome], terrain: bool = Fa
 
 def run_compare(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
     where = describe_name(map_name(args, path))  # escape sequences shown, not run
-    _need_endpoints(grid, where)
+    need_endpoints(grid, where)
     contenders = contenders_from(args)
     outcomes = [search_headless(grid, c.algorithm, c.semantics, args.max_steps, None)
                 for c in contenders]
@@ -267,24 +266,7 @@ def run_compare(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
     return EXIT_FOUND if all(o.found for o in outcomes) else EXIT_NO_PATH
 
 
-def run_exercise(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
-    """Grade the map on an exercise: ``solved`` or ``not solved`` with the figures."""
-    where = describe_name(map_name(args, path))  # escape sequences shown, not run
-    _need_endpoints(grid, where)
-    verdict: Verdict = check(args.exercise, grid, tutorial_grid(), args.max_steps)
-    if args.json:
-        print(to_json({"map": where, **verdict.as_json()}))
-    else:
-        print(f"{where}: exercise {verdict.exercise} "
-              f"{'solved' if verdict.solved else 'not solved'} — {verdict.reason}")
-        if verdict.hint:
-            print(f"  hint: {verdict.hint}")
-    if verdict.bfs.gave_up or verdict.dfs.gave_up:
-        return EXIT_GAVE_UP
-    return EXIT_FOUND if verdict.solved else EXIT_NO_PATH
-
-
-def _need_endpoints(grid: Grid, where: str) -> None:
+def need_endpoints(grid: Grid, where: str) -> None:
     missing = [name for name in ("start", "goal") if getattr(grid, name) is None]
     if missing:
         raise MapError(where, f"the map has no {' or '.join(missing)}: give --start X,Y "

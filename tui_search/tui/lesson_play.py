@@ -24,7 +24,6 @@ class Session(Protocol):
 
     algorithm: str
     semantics: Semantics
-    exercise: int | None
     show_code: bool
     note: str
 
@@ -32,6 +31,7 @@ class Session(Protocol):
     def use_map(self, grid: Grid, path: Path | None, untitled: str | None = None) -> None: ...
     def show_searches(self, spec: str) -> str | None: ...
     def goto(self, k: int | None) -> None: ...
+    def show_exercise(self, exercise: int | None) -> None: ...
 
 
 class LessonPlay:
@@ -82,7 +82,7 @@ def apply_state(session: Session, state: State) -> None:
             problem = str(exc)
     session.algorithm = state.algorithm
     session.semantics = state.semantics
-    session.exercise = state.exercise
+    session.show_exercise(state.exercise)
     session.show_code = state.code
     refusal = session.show_searches(state.spec)
     assert refusal is None, refusal  # checked when the lesson was read
