@@ -251,3 +251,21 @@ def test_the_class_load_floor_is_measured_on_the_fork_server() -> None:
 
     (cpu,) = floor_cpu(1)
     assert 0 < cpu < 60
+
+
+def test_the_startup_floors_count_the_screens_widgets() -> None:
+    """The start-up floors are the trivial app with as many bordered widgets as the app's first
+    screen (counted, not written down: the count follows the app), and that app starts."""
+    from benchmarks.startup import screen_widgets
+
+    one = screen_widgets([str(TUTORIAL)])
+    two = screen_widgets([str(TUTORIAL), "--compare", "bfs,dfs"])
+    assert 1 < one < two  # a second pane adds its widgets
+
+    async def count() -> int:
+        app = TrivialApp(widgets=one)
+        async with app.run_test() as pilot:
+            await pilot.pause()
+            return len(app.query(Lines))
+
+    assert asyncio.run(count()) == one

@@ -155,3 +155,22 @@ async def test_the_map_stays_put_while_the_status_line_wraps_to_more_rows(
             # map's top is where it was (a map moved a row would not come back)
             await wait_until(pilot, lambda: view.region.y == top, seconds=5)
         assert len(rows) > 1  # the status line did wrap anew
+
+
+@pytest.mark.parametrize("size", [SIZES[0], (160, 50)])
+@sync
+async def test_the_first_layouts_classes_are_styled(size: tuple[int, int]) -> None:
+    """The first (reckoned) fit sets the panes' classes without restyling them, leaving it to
+    the screen's restyle before the first frame (start-up time): the styles follow the
+    classes all the same."""
+    from tui_search.tui.widgets.run_pane import RunPane
+
+    app = SearchApp(load_map(TUTORIAL), path=TUTORIAL)
+    async with app.run_test(size=size) as pilot:
+        await pilot.pause()
+        pane = app.screen.query_one(RunPane)
+        beside = pane.has_class("-beside")
+        assert pane.lists.styles.layout is not None
+        assert pane.lists.styles.layout.name == ("vertical" if beside else "horizontal")
+        for panel in (pane.tree_panel, pane.code_panel):
+            assert panel.styles.display == ("none" if panel.has_class("-folded") else "block")

@@ -111,7 +111,10 @@ class PanesScreen(Screen[None]):
             view.set_cursor(self.session.cursor)
         self._check_exercise()
         self.show_lesson()
-        self.fit_panes()  # reckoned: the first frame is laid out already
+        # reckoned: the first frame is laid out already.  The classes it sets are not restyled
+        # here: the ScreenResume that follows the mount restyles the whole screen before the
+        # first frame (restyling the pane here as well was ~10 ms of a ~350 ms start)
+        self.fit_panes(restyle=False)
         self.present()
         self.call_after_refresh(self.fit_panes)  # measured
 
@@ -124,10 +127,11 @@ class PanesScreen(Screen[None]):
         the room that leaves."""
         self.call_after_refresh(self.fit_panes)
 
-    def fit_panes(self) -> None:
+    def fit_panes(self, restyle: bool = True) -> None:
         """Fit the panes to the room the other lines leave (:func:`layout.arrange`).  Before
         the first layout that room is reckoned from the screen's size, so the first frame is
-        laid out as the next ones."""
+        laid out as the next ones.  ``restyle=False``: the classes set are not restyled now
+        (the screen is restyled whole next)."""
         table, box = self.table, self.pane_box
         measured = table.outer_size.height if table.display else 0
         table_height = max(measured, len(self.panes) + 5)  # a line a search, its head, two
@@ -155,7 +159,7 @@ class PanesScreen(Screen[None]):
             table.show(self.session.labels, self.session.runs)  # not kept up while hidden
         table.display = arrangement.table
         for pane in self.panes:
-            pane.lay_out(arrangement, code=self.session.show_code)
+            pane.lay_out(arrangement, code=self.session.show_code, restyle=restyle)
 
     def _check_size(self, width: int, height: int) -> None:
         for lesson in self.query(".lesson"):

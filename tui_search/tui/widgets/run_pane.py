@@ -53,11 +53,13 @@ class RunPane(Vertical):
         with self.map_box:
             yield self.view
 
-    def lay_out(self, arrangement: Arrangement, code: bool = False) -> None:
+    def lay_out(self, arrangement: Arrangement, code: bool = False,
+                restyle: bool = True) -> None:
         """Lay the pane out: its lists beside or under the map, or not at all; its trees and
         its own status lines shown or not; with ``code``, the Code panel in the tree's place
-        (where the arrangement has room for a tree)."""
-        self.set_class(arrangement.beside, "-beside")
+        (where the arrangement has room for a tree).  ``restyle=False``: the classes are set
+        and left for the next restyle of the screen."""
+        self.set_class(arrangement.beside, "-beside", update=restyle)
         self.stats.display = arrangement.pane_stats
         lists = self.lists
         lists.display = arrangement.lists
@@ -70,8 +72,8 @@ class RunPane(Vertical):
             lists.styles.height = arrangement.lists_height or None
             self.map_box.styles.height = arrangement.map_height or "1fr"
         self.view.styles.max_height = arrangement.map_max_height or "100%"
-        self.tree_panel.set_class(not arrangement.trees or code, "-folded")
-        self.code_panel.set_class(not (arrangement.trees and code), "-folded")
+        self.tree_panel.set_class(not arrangement.trees or code, "-folded", update=restyle)
+        self.code_panel.set_class(not (arrangement.trees and code), "-folded", update=restyle)
         if self._run is not None and not self.code_panel.has_class("-folded"):
             self.code_panel.show(self._run)  # folded, it was not kept up to date
         # room for the map's title where the pane has it, else the map as narrow as it is
