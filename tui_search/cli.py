@@ -39,6 +39,7 @@ from tui_search.headless import (
     run_exercise,
     run_headless,
 )
+from tui_search.trace_cli import run_check_trace
 from tui_search.tui.themes import THEMES  # plain data: no Textual
 
 if TYPE_CHECKING:
@@ -134,6 +135,10 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--trace", metavar="FILE",
                    help="with --headless: write one JSON line per expansion to FILE "
                    "('-' for stdout, without --json)")
+    p.add_argument("--check-trace", metavar="FILE",
+                   help="with --headless and -a: compare a trace another program wrote (the "
+                   "--trace format) with -a's search under the choice flags, step by step: "
+                   "exit 0 a match, 1 a difference, 2 a malformed trace")
     from tui_search import serve  # the flags of --serve (textual-serve only when serving)
 
     serve.add_arguments(p)
@@ -246,10 +251,11 @@ def main(argv: list[str] | None = None) -> int:
         from tui_search import serve
 
         serve.check_args(args)
-        if (args.json or args.trace) and not args.headless:
-            raise UsageError("--json and --trace go with --headless")
+        if (args.json or args.trace or args.check_trace) and not args.headless:
+            raise UsageError("--json, --trace and --check-trace go with --headless")
         if args.theme and args.headless:
             raise UsageError("--theme is for the app, not --headless")
+        algorithm_given = args.algorithm is not None
         check_modes(args)
         check_generate(args)
         if args.output is not None:
@@ -261,6 +267,8 @@ def main(argv: list[str] | None = None) -> int:
         grid, path = load_problem(args)
         if args.headless and args.compare:
             return run_compare(args, grid, path)
+        if args.check_trace is not None:
+            return run_check_trace(args, grid, path, algorithm_given)
         if args.headless and args.exercise:
             return run_exercise(args, grid, path)
         if args.headless:
