@@ -93,3 +93,9 @@ def test_bad_input_is_one_line_and_exit_2(capsys, tmp_path: Path, monkeypatch, a
     assert code == 2 and out == ""
     assert err.startswith(expected), err
     assert err.count("\n") == 1
+
+
+def test_the_readme_shows_the_example_and_its_trace_is_current(student_trace: Path) -> None:
+    readme = (ROOT / "README.md").read_text()
+    assert f"```python\n{EXAMPLE.read_text()}```" in readme
+    assert (ROOT / "examples" / "student_bfs.jsonl").read_text() == student_trace.read_text()

@@ -138,8 +138,12 @@ class _Checker:
 
     def expand_difference(self, n: int, k: int, t: TraceStep, e: Step) -> Difference:
         later = self.later_step(n, k, t.node)
-        where = (f"which {self.name} would expand at step {later}" if later is not None
-                 else f"which {self.name} does not expand next or later")
+        if later is not None:
+            where = f"which {self.name} would expand at step {later}"
+        elif self.run.done:
+            where = f"which {self.name} never expands"
+        else:
+            where = f"which {self.name} does not expand in its next {LOOK_AHEAD:,} steps"
         return Difference(n, t.line, "expand",
                           f"step {n}: {self.name} expands {show(e.node)} next "
                           f"({_next_words(self.algo)}); your trace expands {show(t.node)}, "
