@@ -78,7 +78,9 @@ def test_the_apps_own_trace_of_the_tutorial(capsys, tmp_path: Path) -> None:
 
 @pytest.mark.parametrize("argv, expected", [
     (["--check-trace", "T"], "tui-search: error: --json, --trace and --check-trace go with"),
-    (["--headless", "--check-trace", "T"], "tui-search: error: --check-trace needs -a ALGO"),
+    (["--headless", "--check-trace", "T", "--visit", "expand"],
+     ("tui-search: error: without -a, --check-trace tries every search and choice: give -a "
+      "to check --visit")),
     (["--headless", "-a", "bfs", "--check-trace", "T", "--trace", "U"],
      "tui-search: error: --check-trace checks one search: leave out --trace"),
     (["--headless", "-a", "bfs", "--check-trace", "T"], "tui-search: T:2:10: not JSON: Expecting value"),
@@ -99,3 +101,16 @@ def test_the_readme_shows_the_example_and_its_trace_is_current(student_trace: Pa
     readme = (ROOT / "README.md").read_text()
     assert f"```python\n{EXAMPLE.read_text()}```" in readme
     assert (ROOT / "examples" / "student_bfs.jsonl").read_text() == student_trace.read_text()
+
+
+def test_without_a_it_says_which_search_the_trace_is(capsys, student_trace: Path) -> None:
+    code, out, _ = run_cli(capsys, MAP, "--headless", "--check-trace", str(student_trace))
+    assert code == 0
+    assert out.splitlines()[0] == ("your trace is BFS (order N,W,S,E; visit on generate; goal "
+                                   "test on generate), for all 35 steps")
+    code, out, _ = run_cli(capsys, MAP, "--headless", "--json", "--check-trace",
+                           str(student_trace))
+    obj = json.loads(out)
+    assert code == 0 and obj["verdict"] == "match" and len(obj["candidates"]) == 3
+    assert obj["candidates"][0]["algorithm"] == "bfs"
+    assert obj["candidates"][0]["matched_steps"] == 35

@@ -26,6 +26,7 @@ from tui_search.engine.run import MAX_STEPS
 from tui_search.engine.semantics import CORNER_RULES, GOAL_TESTS, VISIT_RULES
 from tui_search.flags import (
     UsageError,
+    changed_choice_flags,
     check_generate,
     contenders_from,
     load_problem,
@@ -136,9 +137,10 @@ def build_parser() -> argparse.ArgumentParser:
                    help="with --headless: write one JSON line per expansion to FILE "
                    "('-' for stdout, without --json)")
     p.add_argument("--check-trace", metavar="FILE",
-                   help="with --headless and -a: compare a trace another program wrote (the "
-                   "--trace format) with -a's search under the choice flags, step by step: "
-                   "exit 0 a match, 1 a difference, 2 a malformed trace")
+                   help="with --headless: compare a trace another program wrote (the --trace "
+                   "format) with -a's search under the choice flags, step by step, or without "
+                   "-a find the searches it matches longest: exit 0 a match, 1 a difference, "
+                   "2 a malformed trace")
     from tui_search import serve  # the flags of --serve (textual-serve only when serving)
 
     serve.add_arguments(p)
@@ -197,11 +199,6 @@ def run_app(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
     return app.return_code or 0
 
 
-#: The search flags an exercise leaves at the tutorial's defaults (it grades BFS and DFS as
-#: the tutorial runs them).
-_SEARCH_FLAGS = ("corners", "visit", "goal_test", "heuristic")
-
-
 def check_modes(args: argparse.Namespace) -> None:
     """Refuse the combinations of --compare, --exercise and the rest that make no sense; then
     resolve ``-a``'s default."""
@@ -217,11 +214,7 @@ def check_modes(args: argparse.Namespace) -> None:
         if args.trace:
             raise UsageError(f"--trace is for one search, not {flag}")
     if args.exercise is not None:
-        changed = [f"--{f.replace('_', '-')}" for f in _SEARCH_FLAGS
-                   if getattr(args, f) is not None]
-        changed += [flag for flag, on in (("--order", args.order != ",".join(DEFAULT_ORDER)),
-                                          ("--no-corner-cutting", args.no_corner_cutting),
-                                          ("--tree-search", args.tree_search)) if on]
+        changed = changed_choice_flags(args)
         if changed:
             raise UsageError(f"--exercise grades with the tutorial's rules: leave out "
                              f"{', '.join(changed)}")

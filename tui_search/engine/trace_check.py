@@ -108,8 +108,8 @@ def _next_words(algo: Algorithm) -> str:
 class _Checker:
     """One comparison: the trace's steps against the run's, in lockstep."""
 
-    def __init__(self, trace: Trace, run: Run) -> None:
-        self.trace, self.run = trace, run
+    def __init__(self, trace: Trace, run: Run, look_ahead: int) -> None:
+        self.trace, self.run, self.look_ahead = trace, run, look_ahead
         self.algo = run.algo
         self.name = run.algo.short
         self.counts_discarded: bool | None = None  # does the trace list the discarded pops?
@@ -124,7 +124,7 @@ class _Checker:
         """The trace's step number at which the search would expand ``cell``, looking from
         its step ``k`` (the trace's step ``n``); None when it never does (soon)."""
         at = n
-        for k2 in range(k, k + LOOK_AHEAD):
+        for k2 in range(k, k + self.look_ahead):
             step = self.engine_step(k2)
             if step is None:
                 return None
@@ -140,10 +140,11 @@ class _Checker:
         later = self.later_step(n, k, t.node)
         if later is not None:
             where = f"which {self.name} would expand at step {later}"
-        elif self.run.done:
+        elif self.run.done and not self.run.gave_up and self.look_ahead:
             where = f"which {self.name} never expands"
         else:
-            where = f"which {self.name} does not expand in its next {LOOK_AHEAD:,} steps"
+            where = (f"which {self.name} does not expand in its first "
+                     f"{self.run.recorded:,} steps")
         return Difference(n, t.line, "expand",
                           f"step {n}: {self.name} expands {show(e.node)} next "
                           f"({_next_words(self.algo)}); your trace expands {show(t.node)}, "
@@ -241,10 +242,12 @@ class _Checker:
 
 
 def check_trace(trace: Trace, grid: Grid, algorithm: str, semantics: Semantics,
-                max_steps: int | None = None) -> Verdict:
-    """Compare ``trace`` with ``algorithm`` under ``semantics`` on ``grid``, step by step."""
+                max_steps: int | None = None, look_ahead: int = LOOK_AHEAD) -> Verdict:
+    """Compare ``trace`` with ``algorithm`` under ``semantics`` on ``grid``, step by step
+    (``look_ahead``: how many of the search's steps to look through for the step at which it
+    would expand the cell the trace took instead; 0 leaves that out)."""
     limit = max_steps if max_steps is not None else 4 * len(trace.steps) + LOOK_AHEAD
-    return _Checker(trace, Run(grid, algorithm, semantics, limit)).check()
+    return _Checker(trace, Run(grid, algorithm, semantics, limit), look_ahead).check()
 
 
 __all__ = ["Difference", "Verdict", "check_trace", "choices_text"]

@@ -1,0 +1,62 @@
+"""Diagnosing a trace without -a: student-style searches (tests/engine/student_searches.py)
+get the search they are, or the closest ones and where they part."""
+
+from __future__ import annotations
+
+import time
+
+from tests.engine.student_searches import bfs, bfs_visit_on_expand, dfs_stack
+from tests.helpers import grid_from_rows
+from tui_search.engine.trace_diagnose import diagnose, inferred_orders
+from tui_search.engine.trace_read import read_trace
+
+ROWS = ["S.....", ".##.#.", "...#..", ".#...#", "...#.G", "......"]
+GRID = grid_from_rows(ROWS)
+
+
+def diagnosis_of(text: str) -> list[str]:
+    return diagnose(read_trace(text, GRID, "t"), GRID).text().splitlines()
+
+
+def test_bfs_with_its_order_and_the_moves_it_never_made() -> None:
+    lines = diagnosis_of(bfs(ROWS, "N,E,S,W"))
+    assert lines[0] == ("your trace is BFS (order E,S,W; visit on generate; goal test on "
+                        "generate), for all 25 steps")
+    assert ("  note: the trace never moves N: where in the order, or whether at all, cannot "
+            "be told") in lines
+
+
+def test_bfs_visiting_on_expand() -> None:
+    lines = diagnosis_of(bfs_visit_on_expand(ROWS, "E,S,W,N"))
+    assert lines[0] == ("your trace is BFS (order E,S,W,N; visit on expand; goal test on "
+                        "generate), for all 25 steps")
+    assert lines[1].startswith("  next: BFS (order E,S,W,N; visit on expand; goal test on "
+                               "expand) up to step 24")
+
+
+def test_a_stack_dfs_with_another_order() -> None:
+    lines = diagnosis_of(dfs_stack(ROWS, "S,E,N,W"))
+    assert lines[0] == ("your trace is DFS (order S,E,W,N; visit on generate; goal test on "
+                        "generate), for all 23 steps")
+    assert any(line.startswith("  note: DFS matches as long with order S,E,N,W")
+               for line in lines)
+
+
+def test_a_bfs_that_takes_the_newest_entry_once_is_closest_to_bfs() -> None:
+    lines = diagnosis_of(bfs(ROWS, "N,E,S,W", bug_at=6))
+    assert lines[0] == "closest:"
+    assert lines[1] == ("  BFS (order E,S,W; visit on generate; goal test on generate) up to "
+                        "step 5; then step 6: BFS expands (3,0) next (the queue's front); your "
+                        "trace expands (0,3), which BFS would expand at step 8")
+
+
+def test_orders_follow_the_order_successors_were_added() -> None:
+    text = '{"node": [0, 0], "successors": [[1, 0], [0, 1]]}\n'
+    assert inferred_orders(read_trace(text, GRID, "t")) == [("E", "S")]
+
+
+def test_a_6x6_map_is_diagnosed_within_two_seconds() -> None:
+    text = dfs_stack(ROWS, "S,E,N,W")
+    began = time.process_time()  # CPU time: a busy machine does not fail it
+    diagnose(read_trace(text, GRID, "t"), GRID)
+    assert time.process_time() - began < 2.0

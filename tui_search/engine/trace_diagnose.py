@@ -1,0 +1,184 @@
+"""Which of the app's searches is a trace?  Try every registry algorithm under every choice that
+can tell them apart, with the move order inferred from the order the trace added successors,
+and rank them by how many steps each matches before it parts from the trace.
+
+Each candidate is checked by :func:`~tui_search.engine.trace_check.check_trace`, which stops
+at its first difference (and records its run only that far), so the candidates that disagree
+early cost little.  The best three are then checked again with the look-ahead that says where
+the search would have expanded the cell the trace took.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from dataclasses import dataclass, replace
+
+from tui_search.engine.algorithms import ALGORITHMS
+from tui_search.engine.grid import DELTAS, Cell, Grid
+from tui_search.engine.heuristics import DEFAULT_HEURISTIC, HEURISTICS
+from tui_search.engine.semantics import CORNER_RULES, Semantics
+from tui_search.engine.trace_check import Verdict, check_trace
+from tui_search.engine.trace_read import Trace
+
+#: The most move orders tried when the trace leaves their order open.
+MAX_ORDERS = 24
+
+#: Candidates listed.
+BEST = 3
+
+
+def _move(node: Cell, cell: Cell) -> str | None:
+    delta = (cell[0] - node[0], cell[1] - node[1])
+    return next((d for d, v in DELTAS.items() if v == delta), None)
+
+
+def inferred_orders(trace: Trace) -> list[tuple[str, ...]]:
+    """The move orders consistent with the order in which each step added its successors:
+    the moves the trace used, ordered every way the trace allows (at most
+    :data:`MAX_ORDERS`; the order first seen first).  When the trace contradicts itself (E
+    before N in one step, N before E in another), the order first seen alone."""
+    used: list[str] = []
+    after: dict[str, set[str]] = {}
+    for step in trace.steps:
+        moves = [m for m in (_move(step.node, c) for c in step.successors) if m is not None]
+        for m in moves:
+            if m not in used:
+                used.append(m)
+                after[m] = set()
+        for i, a in enumerate(moves):
+            after[a].update(b for b in moves[i + 1:] if b != a)
+    if not used:
+        return [("N", "W", "S", "E")]
+    orders = list(_linear(used, after, ()))
+    return orders or [tuple(used)]
+
+
+def _linear(used: list[str], after: dict[str, set[str]],
+            done: tuple[str, ...]) -> Iterator[tuple[str, ...]]:
+    """Every order of ``used`` that keeps each ``a`` before everything in ``after[a]`` (the
+    first :data:`MAX_ORDERS` of them)."""
+    if len(done) == len(used):
+        yield done
+        return
+    count = 0
+    for m in used:
+        if m in done or any(m in after[o] for o in used if o not in done and o != m):
+            continue
+        for order in _linear(used, after, (*done, m)):
+            yield order
+            count += 1
+            if count >= MAX_ORDERS:
+                return
+
+
+def candidates(orders: list[tuple[str, ...]]) -> Iterator[tuple[str, Semantics]]:
+    """Every (algorithm, choices) worth telling apart, the plainest first."""
+    for key, algo in ALGORITHMS.items():
+        heuristics = list(HEURISTICS) if algo.informed else [DEFAULT_HEURISTIC]
+        heuristics.sort(key=lambda h: h != DEFAULT_HEURISTIC)
+        visits = ["generate"] if algo.iterative or algo.weighted else ["generate", "expand"]
+        for order in orders:
+            for tree in (False, True):
+                for visit in (["generate"] if tree else visits):
+                    for goal_test in (algo.goal_test, "generate" if algo.goal_test == "expand"
+                                      else "expand"):
+                        for corners in CORNER_RULES:
+                            for heuristic in heuristics:
+                                yield key, Semantics(order=order, corners=corners,
+                                                     visit=visit, goal_test=goal_test,
+                                                     tree_search=tree, heuristic=heuristic)
+
+
+def order_notes(orders: list[tuple[str, ...]]) -> list[str]:
+    """What the inferred order leaves open: moves the trace never made, and other orders the
+    trace allows as well."""
+    used = set(orders[0])
+    straight = ("N", "E", "S", "W")
+    moves = straight if used <= set(straight) else tuple(DELTAS)
+    notes = []
+    never = [m for m in moves if m not in used]
+    if never:
+        notes.append(f"the trace never moves {', '.join(never)}: where in the order, or "
+                     "whether at all, cannot be told")
+    return notes
+
+
+def _other_orders(scored: list[tuple[int, int, str, Semantics]]) -> list[str]:
+    """The orders besides the best candidate's with which the same search, with the same
+    other choices, matches as long."""
+    minus, _, key, sem = scored[0]
+    same = [s.order for m, _, k, s in scored[1:]
+            if m == minus and k == key and replace(s, order=sem.order) == sem]
+    if not same:
+        return []
+    return [f"{ALGORITHMS[key].short} matches as long with order "
+            + " or ".join(",".join(o) for o in same[:5]) + (" or more" if len(same) > 5 else "")]
+
+
+@dataclass(frozen=True)
+class Diagnosis:
+    """The best candidates, the longest match first, and whether the first matches it all."""
+
+    best: list[Verdict]
+    tried: int
+    notes: tuple[str, ...] = ()
+
+    @property
+    def matches(self) -> bool:
+        return bool(self.best) and self.best[0].matches
+
+    def text(self) -> str:
+        lines = []
+        if self.matches:
+            top = self.best[0]
+            lines.append(f"your trace is {top.choices}, for all {top.steps} steps")
+            for v in self.best[1:]:
+                if v.matches:
+                    lines.append(f"  also {v.choices}, for all {v.steps} steps")
+                elif v.matched == v.steps:
+                    lines.append(f"  next: {v.choices}, all {v.steps} steps, but it does not "
+                                 "stop there")
+                else:
+                    lines.append(f"  next: {v.choices} up to step {v.matched}")
+        else:
+            lines.append("closest:")
+            for v in self.best:
+                assert v.difference is not None
+                lines.append(f"  {v.choices} up to step {v.matched}; then "
+                             f"{v.difference.message}")
+        lines += [f"  note: {note}" for note in self.notes]
+        lines.append(f"  ({self.tried} searches and choices tried)")
+        return "\n".join(lines)
+
+    def as_json(self) -> dict[str, object]:
+        return {"verdict": "match" if self.matches else "closest", "tried": self.tried,
+                "candidates": [v.as_json() for v in self.best], "notes": list(self.notes)}
+
+
+def diagnose(trace: Trace, grid: Grid) -> Diagnosis:
+    """The :data:`BEST` searches that match ``trace`` longest on ``grid``.  Candidates that
+    behave alike on this trace (a corner rule on a map with no corner to cut) are told apart
+    by the plainest first; only one of each matched length and algorithm is kept."""
+    limit = 4 * len(trace.steps) + 64
+    scored: list[tuple[int, int, str, Semantics]] = []
+    tried = 0
+    orders = inferred_orders(trace)
+    for i, (key, sem) in enumerate(candidates(orders)):
+        tried += 1
+        verdict = check_trace(trace, grid, key, sem, max_steps=limit, look_ahead=0)
+        scored.append((-verdict.matched, i, key, sem))
+    scored.sort()
+    best: list[Verdict] = []
+    seen: set[tuple[str, int]] = set()
+    for minus_matched, _, key, sem in scored:
+        if (key, minus_matched) in seen:
+            continue
+        seen.add((key, minus_matched))
+        best.append(check_trace(trace, grid, key, sem, max_steps=limit))
+        if len(best) == BEST:
+            break
+    notes = order_notes(orders) + _other_orders(scored)
+    return Diagnosis(best, tried, tuple(notes))
+
+
+__all__ = ["Diagnosis", "candidates", "diagnose", "inferred_orders", "order_notes"]
