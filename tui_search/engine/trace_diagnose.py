@@ -11,7 +11,7 @@ the search would have expanded the cell the trace took.
 from __future__ import annotations
 
 from collections.abc import Iterator
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 from tui_search.engine.algorithms import ALGORITHMS
 from tui_search.engine.grid import DELTAS, Cell, Grid
@@ -100,19 +100,13 @@ def order_notes(orders: list[tuple[str, ...]]) -> list[str]:
     if never:
         notes.append(f"the trace never moves {', '.join(never)}: where in the order, or "
                      "whether at all, cannot be told")
+    if len(orders) > 1:
+        more = " or more" if len(orders) >= MAX_ORDERS else ""
+        others = " or ".join(",".join(o) for o in orders[1:4])
+        notes.append(f"{len(orders)}{more} orders of its moves fit the order it added them in, "
+                     f"and match alike: {','.join(orders[0])} or {others}"
+                     + (" or ..." if len(orders) > 4 else ""))
     return notes
-
-
-def _other_orders(scored: list[tuple[int, int, str, Semantics]]) -> list[str]:
-    """The orders besides the best candidate's with which the same search, with the same
-    other choices, matches as long."""
-    minus, _, key, sem = scored[0]
-    same = [s.order for m, _, k, s in scored[1:]
-            if m == minus and k == key and replace(s, order=sem.order) == sem]
-    if not same:
-        return []
-    return [f"{ALGORITHMS[key].short} matches as long with order "
-            + " or ".join(",".join(o) for o in same[:5]) + (" or more" if len(same) > 5 else "")]
 
 
 @dataclass(frozen=True)
@@ -163,7 +157,10 @@ def diagnose(trace: Trace, grid: Grid) -> Diagnosis:
     scored: list[tuple[int, int, str, Semantics]] = []
     tried = 0
     orders = inferred_orders(trace)
-    for i, (key, sem) in enumerate(candidates(orders)):
+    # Every order that keeps each step's successors in the order the trace added them makes
+    # the same search of this trace up to its first difference (the same successors, pushed
+    # in the same order, so the same ties): one of them stands for all.
+    for i, (key, sem) in enumerate(candidates(orders[:1])):
         tried += 1
         verdict = check_trace(trace, grid, key, sem, max_steps=limit, look_ahead=0)
         scored.append((-verdict.matched, i, key, sem))
@@ -177,8 +174,7 @@ def diagnose(trace: Trace, grid: Grid) -> Diagnosis:
         best.append(check_trace(trace, grid, key, sem, max_steps=limit))
         if len(best) == BEST:
             break
-    notes = order_notes(orders) + _other_orders(scored)
-    return Diagnosis(best, tried, tuple(notes))
+    return Diagnosis(best, tried, tuple(order_notes(orders)))
 
 
 __all__ = ["Diagnosis", "candidates", "diagnose", "inferred_orders", "order_notes"]
