@@ -53,3 +53,34 @@ def bfs_visit_on_expand(rows: list[str], order: str) -> str:
 def dfs_stack(rows: list[str], order: str) -> str:
     """DFS with a stack, marking cells visited when pushed."""
     return _search(rows, order, lambda q, n: q.pop())
+
+
+def astar_ties_on_h(rows: list[str], order: str) -> str:
+    """A* with the Manhattan distance that breaks ties of f on the lower h (the app's takes
+    the oldest entry); a cell taken off again after a cheaper push is left out."""
+    import heapq
+
+    cells = {(x, y): ch for y, row in enumerate(rows) for x, ch in enumerate(row)}
+    start = next(c for c, ch in cells.items() if ch == "S")
+    goal = next(c for c, ch in cells.items() if ch == "G")
+
+    def h(c: tuple) -> int:
+        return abs(c[0] - goal[0]) + abs(c[1] - goal[1])
+
+    heap, best, done, out, n = [(h(start), h(start), 0, start)], {start: 0}, set(), [], 0
+    while heap:
+        _, _, _, node = heapq.heappop(heap)
+        if node in done:
+            continue
+        done.add(node)
+        added = []
+        for d in order.split(",") if node != goal else []:
+            nxt = (node[0] + MOVES[d][0], node[1] + MOVES[d][1])
+            if cells.get(nxt, "#") != "#" and best[node] + 1 < best.get(nxt, 1 << 30):
+                best[nxt], n = best[node] + 1, n + 1
+                heapq.heappush(heap, (best[nxt] + h(nxt), h(nxt), n, nxt))
+                added.append(nxt)
+        out.append(json.dumps({"node": list(node), "successors": [list(c) for c in added]}))
+        if node == goal:
+            break
+    return "\n".join(out) + "\n"

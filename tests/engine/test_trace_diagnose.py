@@ -9,7 +9,7 @@ import time
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from tests.engine.student_searches import bfs, bfs_visit_on_expand, dfs_stack
+from tests.engine.student_searches import astar_ties_on_h, bfs, bfs_visit_on_expand, dfs_stack
 from tests.engine.test_search import random_grids
 from tests.helpers import grid_from_rows
 from tui_search.engine.algorithms import ALGORITHMS
@@ -39,15 +39,15 @@ def test_bfs_visiting_on_expand() -> None:
     lines = diagnosis_of(bfs_visit_on_expand(ROWS, "E,S,W,N"))
     assert lines[0] == ("your trace is BFS (order E,S,W,N; visit on expand; goal test on "
                         "generate), for all 25 steps")
-    assert lines[1].startswith("  next: BFS (order E,S,W,N; visit on expand; goal test on "
-                               "expand) up to step 24")
+    assert lines[1].startswith("  next: UCS (order E,S,W,N; tree search; goal test on "
+                               "expand) up to step 18")
 
 
 def test_a_stack_dfs_with_another_order() -> None:
     lines = diagnosis_of(dfs_stack(ROWS, "S,E,N,W"))
     assert lines[0] == ("your trace is DFS (order S,E,W,N; visit on generate; goal test on "
                         "generate), for all 23 steps")
-    assert ("  note: 6 orders of its moves fit the order it added them in, and match alike: "
+    assert ("  note: 6 orders of its moves fit the order it added them in, as well: "
             "S,E,W,N or S,E,N,W or S,W,E,N or S,W,N,E or ...") in lines
 
 
@@ -84,3 +84,24 @@ def test_the_apps_own_trace_is_diagnosed_as_a_full_match(grid: Grid, key: str, v
         return  # gave up (the trace is cut short), or the start is the goal
     diagnosis = diagnose(read_trace(out.getvalue(), grid, "t"), grid)
     assert diagnosis.matches, diagnosis.text()
+
+
+def test_an_astar_breaking_ties_on_h_is_named_with_the_tie() -> None:
+    lines = diagnosis_of(astar_ties_on_h(ROWS, "N,E,S,W"))
+    assert lines[0] == "closest:"
+    assert lines[1].startswith("  Greedy (order E,S,W; goal test on expand; heuristic "
+                               "manhattan) up to step 8; then step 9:")
+    assert lines[2] == ("  A* (order E,S,W; goal test on expand; heuristic octile) up to step "
+                        "2; then step 3: A* expands (0,1) next (the lowest f in the priority "
+                        "queue); your trace expands (2,0), which A* would expand at step 4; f "
+                        "ties at 7.24: your trace took the lower h (5.24, not 6.24)")
+
+
+def test_with_a_the_tie_is_named_too() -> None:
+    from tui_search.engine.trace_check import check_trace
+
+    verdict = check_trace(read_trace(astar_ties_on_h(ROWS, "N,E,S,W"), GRID, "t"), GRID,
+                          "astar", Semantics(order=("N", "E", "S", "W"), heuristic="manhattan"))
+    assert verdict.difference is not None and verdict.difference.tie == "h"
+    assert verdict.difference.message.endswith(
+        "f ties at 9.00: your trace took the lower h (7.00, not 8.00)")

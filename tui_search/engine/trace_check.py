@@ -51,12 +51,15 @@ class Difference:
     message: str
     expected: Cell | None = None
     got: Cell | None = None
+    #: The search parts from the trace at a tie of its priority: "h" where the trace took
+    #: the lower or higher h of an f tie, "entry" where it took another entry; "" no tie.
+    tie: str = ""
 
     def as_json(self) -> dict[str, object]:
         return {"step": self.step, "line": self.line, "kind": self.kind,
                 "message": self.message,
                 "expected": None if self.expected is None else list(self.expected),
-                "got": None if self.got is None else list(self.got)}
+                "got": None if self.got is None else list(self.got), "tie": self.tie or None}
 
 
 @dataclass(frozen=True)
@@ -145,10 +148,35 @@ class _Checker:
         else:
             where = (f"which {self.name} does not expand in its first "
                      f"{self.run.recorded:,} steps")
+        tie, tie_kind = self.tie_words(k, e, t) if self.algo.priority is not None else ("", "")
         return Difference(n, t.line, "expand",
                           f"step {n}: {self.name} expands {show(e.node)} next "
                           f"({_next_words(self.algo)}); your trace expands {show(t.node)}, "
-                          f"{where}", e.node, t.node)
+                          f"{where}{tie}", e.node, t.node, tie_kind)
+
+    def tie_words(self, k: int, e: Step, t: TraceStep) -> tuple[str, str]:
+        """When the cell the trace took ties with the search's on its priority: "; f ties
+        at 4.83: your trace took the lower h (1.00, not 2.00)" and the kind of tie ("h" or
+        "entry"); ("", "") when they do not tie."""
+        run = self.run
+        run.goto(k - 1)
+        now, cell, costs = run.now, run.nodes.cell, run.nodes.costs
+        mine = theirs = None
+        for g in now.frontier():
+            if now.is_stale(g):
+                continue
+            if mine is None and cell(g) == t.node:
+                mine = costs(g)
+            if theirs is None and cell(g) == e.node:
+                theirs = costs(g)
+        if mine is None or theirs is None or abs(mine[2] - theirs[2]) > 1e-9:
+            return "", ""
+        name = self.algo.priority_name
+        words = f"; {name} ties at {theirs[2]:.2f}: your trace took "
+        if name == "f" and abs(mine[1] - theirs[1]) > 1e-9:
+            lower = "lower" if mine[1] < theirs[1] else "higher"
+            return words + f"the {lower} h ({mine[1]:.2f}, not {theirs[1]:.2f})", "h"
+        return words + f"another entry ({self.name} takes the oldest of a tie)", "entry"
 
     def successor_difference(self, n: int, t: TraceStep, e: Step) -> Difference | None:
         got, want = list(t.successors), [c for _, c in e.successors]

@@ -11,9 +11,9 @@ the search would have expanded the cell the trace took.
 from __future__ import annotations
 
 from collections.abc import Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
-from tui_search.engine.algorithms import ALGORITHMS
+from tui_search.engine.algorithms import ALGORITHMS, get_algorithm
 from tui_search.engine.grid import DELTAS, Cell, Grid
 from tui_search.engine.heuristics import DEFAULT_HEURISTIC, HEURISTICS
 from tui_search.engine.semantics import CORNER_RULES, Semantics
@@ -32,13 +32,18 @@ def _move(node: Cell, cell: Cell) -> str | None:
     return next((d for d, v in DELTAS.items() if v == delta), None)
 
 
-def inferred_orders(trace: Trace) -> list[tuple[str, ...]]:
+def inferred_orders(trace: Trace, goal: Cell | None = None) -> list[tuple[str, ...]]:
     """The move orders consistent with the order in which each step added its successors:
     the moves the trace used, ordered every way the trace allows (at most
     :data:`MAX_ORDERS`; the order first seen first).  When the trace contradicts itself (E
-    before N in one step, N before E in another), the order first seen alone."""
+    before N in one step, N before E in another), the order first seen alone.
+
+    A step that stops at the ``goal`` (its last successor) says nothing of the moves after
+    the goal's, so the goal's move is put before every move that step did not add, wherever
+    no other step says otherwise: the search then stops there too."""
     used: list[str] = []
     after: dict[str, set[str]] = {}
+    goal_steps: list[list[str]] = []
     for step in trace.steps:
         moves = [m for m in (_move(step.node, c) for c in step.successors) if m is not None]
         for m in moves:
@@ -47,10 +52,28 @@ def inferred_orders(trace: Trace) -> list[tuple[str, ...]]:
                 after[m] = set()
         for i, a in enumerate(moves):
             after[a].update(b for b in moves[i + 1:] if b != a)
+        if moves and step.successors[-1] == goal:
+            goal_steps.append(moves)
+    for moves in goal_steps:
+        for m in used:
+            if m not in moves and not _reaches(after, m, moves[-1]):
+                after[moves[-1]].add(m)
     if not used:
         return [("N", "W", "S", "E")]
     orders = list(_linear(used, after, ()))
     return orders or [tuple(used)]
+
+
+def _reaches(after: dict[str, set[str]], a: str, b: str) -> bool:
+    """Must ``a`` come before ``b`` (a chain of ``after`` from one to the other)?"""
+    todo, seen = [a], {a}
+    while todo:
+        m = todo.pop()
+        if m == b:
+            return True
+        todo += [n for n in after[m] if n not in seen]
+        seen.update(after[m])
+    return False
 
 
 def _linear(used: list[str], after: dict[str, set[str]],
@@ -104,7 +127,7 @@ def order_notes(orders: list[tuple[str, ...]]) -> list[str]:
         more = " or more" if len(orders) >= MAX_ORDERS else ""
         others = " or ".join(",".join(o) for o in orders[1:4])
         notes.append(f"{len(orders)}{more} orders of its moves fit the order it added them in, "
-                     f"and match alike: {','.join(orders[0])} or {others}"
+                     f"as well: {','.join(orders[0])} or {others}"
                      + (" or ..." if len(orders) > 4 else ""))
     return notes
 
@@ -133,7 +156,10 @@ class Diagnosis:
                     lines.append(f"  next: {v.choices}, all {v.steps} steps, but it does not "
                                  "stop there")
                 else:
-                    lines.append(f"  next: {v.choices} up to step {v.matched}")
+                    assert v.difference is not None
+                    tie = (f", where {get_algorithm(v.algorithm).priority_name} ties"
+                           if v.difference.tie else "")
+                    lines.append(f"  next: {v.choices} up to step {v.matched}{tie}")
         else:
             lines.append("closest:")
             for v in self.best:
@@ -152,25 +178,44 @@ class Diagnosis:
 def diagnose(trace: Trace, grid: Grid) -> Diagnosis:
     """The :data:`BEST` searches that match ``trace`` longest on ``grid``.  Candidates that
     behave alike on this trace (a corner rule on a map with no corner to cut) are told apart
-    by the plainest first; only one of each matched length and algorithm is kept."""
+    by the plainest first; only the best of each algorithm is kept (greedy best-first can
+    match a trace of A* longer than A* with the wrong tie rule does: both are listed)."""
     limit = 4 * len(trace.steps) + 64
-    scored: list[tuple[int, int, str, Semantics]] = []
+    scored: list[tuple[int, bool, int, str, Semantics]] = []
     tried = 0
+    goal = trace.goal or grid.goal
     orders = inferred_orders(trace)
     # Every order that keeps each step's successors in the order the trace added them makes
     # the same search of this trace up to its first difference (the same successors, pushed
-    # in the same order, so the same ties): one of them stands for all.
+    # in the same order, so the same ties): one of them stands for all -- but for a step
+    # that stopped at the goal, which says nothing of the moves after the goal's.  Where a
+    # candidate parts there, it is tried again with the goal's move before those.
+    stopping = inferred_orders(trace, goal)[0]
+    goal_steps = {n for n, step in enumerate(trace.steps, 1)
+                  if step.successors and step.successors[-1] == goal}
     for i, (key, sem) in enumerate(candidates(orders[:1])):
         tried += 1
         verdict = check_trace(trace, grid, key, sem, max_steps=limit, look_ahead=0)
-        scored.append((-verdict.matched, i, key, sem))
+        if (verdict.difference is not None and verdict.difference.step in goal_steps
+                and stopping != sem.order):
+            tried += 1
+            again = check_trace(trace, grid, key, replace(sem, order=stopping),
+                                max_steps=limit, look_ahead=0)
+            if again.matched > verdict.matched:
+                verdict, sem = again, replace(sem, order=stopping)
+        # Of those matching as long, an A* whose f tied where the trace took the lower (or
+        # higher) h first: the trace is that search with another tie rule.  (Other ties --
+        # uniform-cost's g wherever moves cost alike, any entry of equal priority -- say
+        # little, and keep the plainest first.)
+        tie = verdict.difference is not None and verdict.difference.tie == "h"
+        scored.append((-verdict.matched, not tie, i, key, sem))
     scored.sort()
     best: list[Verdict] = []
-    seen: set[tuple[str, int]] = set()
-    for minus_matched, _, key, sem in scored:
-        if (key, minus_matched) in seen:
+    seen: set[str] = set()
+    for _, _, _, key, sem in scored:
+        if key in seen:
             continue
-        seen.add((key, minus_matched))
+        seen.add(key)
         best.append(check_trace(trace, grid, key, sem, max_steps=limit))
         if len(best) == BEST:
             break
