@@ -84,3 +84,23 @@ def astar_ties_on_h(rows: list[str], order: str) -> str:
         if node == goal:
             break
     return "\n".join(out) + "\n"
+
+
+def dfs_recursive(rows: list[str], order: str) -> str:
+    """DFS by recursion: a cell is visited when entered, and its line lists the neighbours
+    not yet visited then (some are visited deeper down before the loop comes to them)."""
+    cells = {(x, y): ch for y, row in enumerate(rows) for x, ch in enumerate(row)}
+    start = next(c for c, ch in cells.items() if ch == "S")
+    goal = next(c for c, ch in cells.items() if ch == "G")
+    visited, out = set(), []
+
+    def visit(node: tuple) -> bool:
+        visited.add(node)
+        around = [(node[0] + MOVES[d][0], node[1] + MOVES[d][1]) for d in order.split(",")]
+        todo = [] if node == goal else [
+            c for c in around if cells.get(c, "#") != "#" and c not in visited]
+        out.append(json.dumps({"node": list(node), "successors": [list(c) for c in todo]}))
+        return node == goal or any(visit(c) for c in todo if c not in visited)
+
+    visit(start)
+    return "\n".join(out) + "\n"

@@ -9,7 +9,13 @@ import time
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from tests.engine.student_searches import astar_ties_on_h, bfs, bfs_visit_on_expand, dfs_stack
+from tests.engine.student_searches import (
+    astar_ties_on_h,
+    bfs,
+    bfs_visit_on_expand,
+    dfs_recursive,
+    dfs_stack,
+)
 from tests.engine.test_search import random_grids
 from tests.helpers import grid_from_rows
 from tui_search.engine.algorithms import ALGORITHMS
@@ -47,7 +53,7 @@ def test_a_stack_dfs_with_another_order() -> None:
     lines = diagnosis_of(dfs_stack(ROWS, "S,E,N,W"))
     assert lines[0] == ("your trace is DFS (order S,E,W,N; visit on generate; goal test on "
                         "generate), for all 23 steps")
-    assert ("  note: 6 orders of its moves fit the order it added them in, as well: "
+    assert ("  note: 6 orders of its moves fit the order it added them in: "
             "S,E,W,N or S,E,N,W or S,W,E,N or S,W,N,E or ...") in lines
 
 
@@ -105,3 +111,11 @@ def test_with_a_the_tie_is_named_too() -> None:
     assert verdict.difference is not None and verdict.difference.tie == "h"
     assert verdict.difference.message.endswith(
         "f ties at 9.00: your trace took the lower h (7.00, not 8.00)")
+
+
+def test_a_recursive_dfs_is_recognised() -> None:
+    lines = diagnosis_of(dfs_recursive(ROWS, "S,E,N,W"))
+    assert lines[0] == ("your trace is a recursive DFS (order S,E,N; goal test on expand), for "
+                        "all 12 steps")
+    assert any(line.startswith("  note: no stack DFS explains it past step ")
+               and line.endswith("; a recursive DFS does") for line in lines)

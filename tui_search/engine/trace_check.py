@@ -72,6 +72,8 @@ class Verdict:
     steps: int  # the trace's expansions
     matched: int
     difference: Difference | None
+    #: What the search is called when not by its choices ("a recursive DFS (order S,E,N,W)").
+    label: str = ""
 
     @property
     def matches(self) -> bool:
@@ -79,7 +81,7 @@ class Verdict:
 
     @property
     def choices(self) -> str:
-        return choices_text(get_algorithm(self.algorithm), self.semantics)
+        return self.label or choices_text(get_algorithm(self.algorithm), self.semantics)
 
     def text(self) -> str:
         """The verdict in words, a line or two."""

@@ -126,8 +126,8 @@ def order_notes(orders: list[tuple[str, ...]]) -> list[str]:
     if len(orders) > 1:
         more = " or more" if len(orders) >= MAX_ORDERS else ""
         others = " or ".join(",".join(o) for o in orders[1:4])
-        notes.append(f"{len(orders)}{more} orders of its moves fit the order it added them in, "
-                     f"as well: {','.join(orders[0])} or {others}"
+        notes.append(f"{len(orders)}{more} orders of its moves fit the order it added them "
+                     f"in: {','.join(orders[0])} or {others}"
                      + (" or ..." if len(orders) > 4 else ""))
     return notes
 
@@ -209,6 +209,16 @@ def diagnose(trace: Trace, grid: Grid) -> Diagnosis:
         # little, and keep the plainest first.)
         tie = verdict.difference is not None and verdict.difference.tie == "h"
         scored.append((-verdict.matched, not tie, i, key, sem))
+    # A recursive DFS is listed when its pattern is seen: when it matches longer than every
+    # search of the registry (else it would crowd out the searches the trace is nearer).
+    stack = max(-m for m, _, _, key, _ in scored if key == "dfs")
+    longest = -min(m for m, *_ in scored)
+    mirror = mirrored(trace)
+    for i, sem in enumerate(_recursive_candidates(mirror), len(scored)):
+        tried += 1
+        verdict = check_trace(mirror, grid, "dfs", sem, max_steps=limit, look_ahead=0)
+        if verdict.matched > longest:
+            scored.append((-verdict.matched, True, i, RECURSIVE, sem))
     scored.sort()
     best: list[Verdict] = []
     seen: set[str] = set()
@@ -216,10 +226,47 @@ def diagnose(trace: Trace, grid: Grid) -> Diagnosis:
         if key in seen:
             continue
         seen.add(key)
-        best.append(check_trace(trace, grid, key, sem, max_steps=limit))
+        if key == RECURSIVE:
+            verdict = check_trace(mirror, grid, "dfs", sem, max_steps=limit)
+            best.append(replace(verdict, label=recursive_label(sem)))
+        else:
+            best.append(check_trace(trace, grid, key, sem, max_steps=limit))
         if len(best) == BEST:
             break
-    return Diagnosis(best, tried, tuple(order_notes(orders)))
+    notes = order_notes(orders)
+    if best[0].label:
+        notes.append(f"no stack DFS explains it past step {stack}; a recursive DFS does")
+    return Diagnosis(best, tried, tuple(notes))
 
 
-__all__ = ["Diagnosis", "candidates", "diagnose", "inferred_orders", "order_notes"]
+#: The key a recursive DFS is scored under (not a registry algorithm: a stack DFS run on the
+#: trace mirrored).
+RECURSIVE = "dfs-recursive"
+
+
+def mirrored(trace: Trace) -> Trace:
+    """The trace with each step's successors in reverse order.  A recursive DFS that marks a
+    cell visited when it enters it, and lists the neighbours not yet visited, expands its
+    cells in the order a stack DFS does that visits on expand and pushes them in reverse
+    order (the cells it skips are the stack's discarded pops): its mirror is that search's
+    trace."""
+    steps = tuple(replace(s, successors=s.successors[::-1]) for s in trace.steps)
+    return replace(trace, steps=steps)
+
+
+def _recursive_candidates(mirror: Trace) -> Iterator[Semantics]:
+    order = inferred_orders(mirror)[0]
+    for goal_test in ("expand", "generate"):
+        for corners in CORNER_RULES:
+            yield Semantics(order=order, corners=corners, visit="expand", goal_test=goal_test)
+
+
+def recursive_label(sem: Semantics) -> str:
+    """A recursive DFS named by the student's order (the mirror's, reversed)."""
+    parts = [f"order {','.join(reversed(sem.order))}", f"goal test on {sem.goal_test}"]
+    if sem.corners != "always":
+        parts.append(f"corners {sem.corners}")
+    return f"a recursive DFS ({'; '.join(parts)})"
+
+
+__all__ = ["Diagnosis", "candidates", "diagnose", "inferred_orders", "mirrored", "order_notes"]
