@@ -37,7 +37,7 @@ def run_check_trace(args: argparse.Namespace, grid: Grid, path: Path | None,
         return _diagnose(args, grid, where)
     semantics = semantics_from(args)
     trace = load_trace(args.check_trace, grid)
-    verdict = check_trace(trace, grid, args.algorithm, semantics)
+    verdict = check_trace(trace, grid, args.algorithm, semantics, max_steps=args.max_steps)
     if args.json:
         print(to_json({"trace": describe_name(args.check_trace), "map": where,
                        **verdict.as_json()}))
@@ -56,7 +56,7 @@ def _diagnose(args: argparse.Namespace, grid: Grid, where: str) -> int:
     if given:
         raise UsageError(f"without -a, --check-trace tries every search and choice: give -a "
                          f"to check {', '.join(given)}")
-    diagnosis = diagnose(load_trace(args.check_trace, grid), grid)
+    diagnosis = diagnose(load_trace(args.check_trace, grid), grid, args.max_steps)
     if args.json:
         print(to_json({"trace": describe_name(args.check_trace), "map": where,
                        **diagnosis.as_json()}))

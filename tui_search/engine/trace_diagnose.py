@@ -175,12 +175,14 @@ class Diagnosis:
                 "candidates": [v.as_json() for v in self.best], "notes": list(self.notes)}
 
 
-def diagnose(trace: Trace, grid: Grid) -> Diagnosis:
+def diagnose(trace: Trace, grid: Grid, max_steps: int | None = None) -> Diagnosis:
     """The :data:`BEST` searches that match ``trace`` longest on ``grid``.  Candidates that
     behave alike on this trace (a corner rule on a map with no corner to cut) are told apart
     by the plainest first; only the best of each algorithm is kept (greedy best-first can
     match a trace of A* longer than A* with the wrong tie rule does: both are listed)."""
-    limit = 4 * len(trace.steps) + 64
+    limit = 4 * len(trace.steps) + 64  # a search that gives up (max_steps) stops there too
+    if max_steps is not None:
+        limit = min(limit, max_steps)
     scored: list[tuple[int, bool, int, str, Semantics]] = []
     tried = 0
     goal = trace.goal or grid.goal
