@@ -118,13 +118,13 @@ def test_without_a_it_says_which_search_the_trace_is(capsys, student_trace: Path
 
 def test_a_trace_cut_at_max_steps_matches_with_the_same_limit(capsys, tmp_path: Path) -> None:
     trace = tmp_path / "t.jsonl"
-    argv = [TUTORIAL, "--headless", "-a", "dfs", "--tree-search", "--max-steps", "40"]
+    argv = [TUTORIAL, "--headless", "-a", "bfs", "--tree-search", "--max-steps", "40"]
     assert main([*argv, "--trace", str(trace)]) == 3  # gave up
     capsys.readouterr()
     code, out, _ = run_cli(capsys, *argv, "--check-trace", str(trace))
     assert code == 0 and out.endswith("for all 40 steps\n")
     code, out, _ = run_cli(capsys, TUTORIAL, "--headless", "--max-steps", "40", "--check-trace",
                            str(trace))
-    assert code == 0 and out.startswith("your trace is DFS (")
+    assert code == 0 and out.startswith("your trace is BFS (")
     code, out, _ = run_cli(capsys, *argv[:-2], "--check-trace", str(trace))
-    assert code == 1 and out.startswith("step 41: your trace ends after step 40; DFS goes on")
+    assert code == 1 and out.startswith("step 41: your trace ends after step 40; BFS goes on")
