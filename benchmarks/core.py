@@ -52,8 +52,9 @@ def floor_library() -> ctypes.CDLL:
 
 
 def floor_search(grid: Grid, key: str, sem: Semantics) -> Callable[[], int]:
-    """The floor's search of ``grid`` (a call returns its steps); the map's padded walls and
-    moves are made before, outside the time."""
+    """The floor's search of ``grid`` (a call returns its steps); the map's padded walls,
+    terrain (a map with costs: UCS and A* weigh them) and moves are made before, outside the
+    time."""
     lib = floor_library()
     algo = get_algorithm(key)
     if sem.corners == "one":
@@ -64,12 +65,15 @@ def floor_search(grid: Grid, key: str, sem: Semantics) -> Callable[[], int]:
     n = len(moves)
     off, side_a, side_b = ((ctypes.c_int * n)(*(m[i] for m in moves)) for i in (0, 2, 3))
     cost = (ctypes.c_double * n)(*(m[1] for m in moves))
+    terrain = None if problem.terrain is None else (
+        (ctypes.c_double * len(problem.terrain)).from_buffer_copy(problem.terrain))
     if algo.priority is None:
         return lambda: lib.floor_queue(walls, ctypes.c_long(len(walls)), problem.start,
                                        problem.goal, off, side_a, side_b, n, int(key == "dfs"))
     return lambda: lib.floor_best(walls, ctypes.c_long(len(walls)), problem.stride,
                                   problem.start, problem.goal, off, side_a, side_b, cost, n,
-                                  int(algo.priority == "g+h"), ctypes.c_double(DIAGONAL_EXTRA))
+                                  int(algo.priority == "g+h"), ctypes.c_double(DIAGONAL_EXTRA),
+                                  terrain, ctypes.c_double(problem.lowest))
 
 
 def recorded(grid: Grid, key: str, sem: Semantics) -> Run:

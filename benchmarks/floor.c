@@ -1,4 +1,5 @@
-/* The C floor of the core section (benchmarks/core.py): the searches of the compiled core
+/* The C floor of the core section (benchmarks/core.py) and of the terrain section's floor row
+ * (benchmarks/terrain.py): the searches of the compiled core
  * with the least record that lets the app move to any step -- each event's cell, each step's
  * end, the event it expanded (a stack's or a priority queue's), its g and the discarded steps
  * (a priority queue's) -- in arrays that double, and no more.  Built by benchmarks/core.py
@@ -46,10 +47,13 @@ typedef struct { double f; int e, n; double g; } Entry;
 static int before(const Entry *a, const Entry *b) { return a->f < b->f || (a->f == b->f && a->e < b->e); }
 
 /* A* (octile, use_h 1) or UCS (use_h 0) with MovingAI's corner rule (sa, sb: the diagonals'
- * side cells, 0 for a straight move), the goal tested when taken off, stale entries skipped. */
+ * side cells, 0 for a straight move), the goal tested when taken off, stale entries skipped.
+ * Terrain as the compiled core has it (NULL: every cell costs 1): a move costs its length
+ * times the cost of the (padded) cell it enters, and the heuristic is times `scale`, the
+ * map's lowest cell cost. */
 long floor_best(const unsigned char *walls, long ncells, int stride, int start, int goal,
                 const int *off, const int *sa, const int *sb, const double *cost, int nm,
-                int use_h, double extra) {
+                int use_h, double extra, const double *terrain, double scale) {
     unsigned char *closed = malloc(ncells);
     memcpy(closed, walls, ncells);
     double *best = malloc(ncells * sizeof(double));
@@ -77,11 +81,16 @@ long floor_best(const unsigned char *walls, long ncells, int stride, int start, 
         for (int k = 0; k < nm; k++) {
             int m = x.n + off[k];
             if (closed[m] || (sa[k] && (walls[x.n + sa[k]] | walls[x.n + sb[k]]))) continue;
-            if (x.g + (cost[k] + 1e-9) >= best[m]) continue;
-            double ng = x.g + cost[k];
+            double c = terrain ? cost[k] * terrain[m] : cost[k];
+            if (terrain ? x.g + c + 1e-9 >= best[m] : x.g + (cost[k] + 1e-9) >= best[m]) continue;
+            double ng = x.g + c;
             best[m] = ng;
-            int dx = abs(m % stride - gx), dy = abs(m / stride - gy);
-            double f = use_h ? ng + (dx >= dy ? dx + extra * dy : dy + extra * dx) : ng;
+            double f = ng;
+            if (use_h) {
+                int dx = abs(m % stride - gx), dy = abs(m / stride - gy);
+                double h = dx >= dy ? dx + extra * dy : dy + extra * dx;
+                f = ng + (scale != 1.0 ? scale * h : h);
+            }
             Entry y = {f, (int)node.n, m, ng};
             long j = heap.n;
             grow(&heap, sizeof(Entry)); h = heap.a;

@@ -13,11 +13,12 @@ import asyncio
 import importlib
 import json
 import pkgutil
+from array import array
 
 import pytest
 
 import benchmarks
-from benchmarks import bench, choices, core, fallback, harness, jump, step
+from benchmarks import bench, choices, core, fallback, harness, jump, step, terrain
 from benchmarks.baselines import (
     bare_bfs,
     bare_dfs,
@@ -78,6 +79,22 @@ def test_the_c_floor_takes_the_engines_steps(key: str) -> None:
     for grid, sem in ((load_map(TUTORIAL), Semantics()),
                       (load_map(ARENA_MAP, start=scen.start, goal=scen.goal), core.NEVER)):
         for g in (grid, walled_in(grid)) if key == "dfs" else (grid,):
+            assert core.floor_search(g, key, sem)() == core.recorded(g, key, sem).recorded
+
+
+@pytest.mark.parametrize("key", ["astar", "ucs"])
+def test_the_c_floor_weighs_terrain_as_the_engine_does(key: str) -> None:
+    """The terrain section's floor row: with random costs 1-9 (and with costs from 0.5, so
+    the heuristic is scaled by the lowest), the floor takes as many steps as the engine (arena's
+    row 60: some 2,000 steps, which terrain changes)."""
+    scen = load_scenario(MOVINGAI / "arena.map.scen", 60)
+    for grid, sem in ((load_map(TUTORIAL), Semantics()),
+                      (load_map(ARENA_MAP, start=scen.start, goal=scen.goal), core.NEVER)):
+        costed = terrain.with_random_costs(grid)
+        halved = costed.copy()
+        assert costed.costs is not None
+        halved.costs = array("d", (c / 2 for c in costed.costs))
+        for g in (costed, halved):
             assert core.floor_search(g, key, sem)() == core.recorded(g, key, sem).recorded
 
 

@@ -91,7 +91,8 @@ def test_the_sdist_and_the_wheel_carry_the_core_and_the_maps(tmp_path: Path) -> 
         names = set(whl.namelist())
     assert {"tui_search/maps/tutorial.txt", "tui_search/tui/app.tcss",
             "tui_search/lessons/tutorial.md", "tui_search/lessons/choices.md",
-            "tui_search/lessons/dfs-longer.txt"} <= names
+            "tui_search/lessons/dfs-longer.txt", "tui_search/exercises/1-bfs-expands-less.toml",
+            "tui_search/exercises/2-dfs-not-optimal.toml"} <= names
     assert any(name.startswith("tui_search/engine/_core.") and not name.endswith((".c", ".h"))
                for name in names)
     bin_dir = _venv(tmp_path)

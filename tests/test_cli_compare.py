@@ -65,7 +65,7 @@ def test_compare_exits_3_when_any_run_gives_up(capsys) -> None:
         (["--compare", "bfs,dfs", "--exercise", "1"], "--compare and --exercise: choose one"),
         (["--exercise", "1", "--corners", "never"], "leave out --corners"),
         (["--exercise", "2", "--order", "N,W,S,E"], "leave out --order"),
-        (["--exercise", "3"], "argument --exercise: invalid choice"),
+        (["--exercise", "3"], "--exercise 3: the tutorial has exercises 1 and 2"),
     ],
 )
 def test_refused_combinations(capsys, argv, expected) -> None:
@@ -96,7 +96,7 @@ def test_exercise_one_hints_when_more_than_the_goal_moved(capsys) -> None:
     assert "hint" not in out
     _, out, _ = run_cli(capsys, str(MAPS / "exercise1-bfs-wins.txt"), "--headless",
                         "--exercise", "1")
-    assert "  hint: the exercise moves only the target: here more than the goal changed" in (
+    assert "  hint: the exercise changes only the goal: here the map's size changed" in (
         out.splitlines())
 
 

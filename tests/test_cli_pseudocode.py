@@ -90,3 +90,12 @@ def test_bad_combinations_are_one_line_exit_2(capsys, argv: tuple[str, ...],
                                                error: str) -> None:
     code, out, err = run_cli(capsys, "--pseudocode", *argv)
     assert code == 2 and out == "" and error in err and err.count("\n") == 1
+
+
+def test_the_code_of_a_search_on_a_map_with_terrain_adds_the_cell_s_cost(capsys) -> None:
+    from tests.helpers import MAPS
+
+    code, out, _ = run_cli(capsys, str(MAPS / "terrain-mud.txt"), "--pseudocode", "-a", "ucs")
+    assert code == 0 and "× the cost of the cell it enters" in out
+    code, out, _ = run_cli(capsys, "--pseudocode", "-a", "ucs")
+    assert code == 0 and "cell it enters" not in out and "the move's cost" in out

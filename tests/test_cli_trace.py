@@ -77,7 +77,7 @@ def test_the_apps_own_trace_of_the_tutorial(capsys, tmp_path: Path) -> None:
 
 
 @pytest.mark.parametrize("argv, expected", [
-    (["--check-trace", "T"], "tui-search: error: --json, --trace and --check-trace go with"),
+    (["--check-trace", "T"], "tui-search: error: --json, --csv, --trace and --check-trace go"),
     (["--headless", "--check-trace", "T", "--visit", "expand"],
      ("tui-search: error: without -a, --check-trace tries every search and choice: give -a "
       "to check --visit")),

@@ -73,7 +73,7 @@ def test_the_served_apps_command_line_carries_the_apps_flags_and_none_of_the_ser
     app_args = parse(*words)
     assert app_args.served and app_args.save_dir == str((tmp_path / "saves").resolve())
     for dest, value in vars(args).items():
-        if dest in ("map", "served", *SERVER_FLAGS):
+        if dest in ("map", "maps", "served", *SERVER_FLAGS):
             continue
         assert getattr(app_args, dest) == value, dest
     assert not app_args.serve and app_args.host is None and app_args.port is None

@@ -10,13 +10,13 @@ from __future__ import annotations
 import argparse
 import gc
 import sys
+from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, NoReturn
 
 from tui_search import __version__
 from tui_search.collector import collector_paused
 from tui_search.engine.algorithms import ALGORITHMS, DEFAULT_ALGORITHM
-from tui_search.engine.exercises import QUOTES
 from tui_search.engine.generate import DEFAULT_SEED, DEFAULT_SIZE, KINDS, MAX_SIDE
 from tui_search.engine.grid import DEFAULT_ORDER, Grid
 from tui_search.engine.heuristics import DEFAULT_HEURISTIC, HEURISTICS
@@ -37,13 +37,14 @@ from tui_search.headless import (
     EXIT_BAD_INPUT,
     print_pseudocode,
     run_compare,
-    run_exercise,
     run_headless,
 )
+from tui_search.report import run_exercise
 from tui_search.trace_cli import run_check_trace
 from tui_search.tui.themes import THEMES  # plain data: no Textual
 
 if TYPE_CHECKING:
+    from tui_search.engine.exercise_file import Exercise
     from tui_search.tui.app import SearchApp
 
 BUILT_IN_TITLE = "tutorial (built-in)"  # the app's title for the map with no file
@@ -52,6 +53,14 @@ BUILT_IN_TITLE = "tutorial (built-in)"  # the app's title for the map with no fi
 class _Parser(argparse.ArgumentParser):
     def error(self, message: str) -> NoReturn:  # one line, not argparse's usage + message
         raise UsageError(f"{message} (see tui-search --help)")
+
+    def parse_known_args(  # type: ignore[override]
+        self, args: Sequence[str] | None = None, namespace: argparse.Namespace | None = None,
+    ) -> tuple[argparse.Namespace, list[str]]:
+        """The arguments, ``map`` the one MAP (:func:`split_maps`)."""
+        parsed, extra = super().parse_known_args(args, namespace)
+        split_maps(parsed)
+        return parsed, extra
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -62,7 +71,9 @@ def build_parser() -> argparse.ArgumentParser:
         "the tutorial's 6x6 map.",
         epilog="Exit codes (headless): 0 path found, 1 no path, 2 bad input, 3 gave up (--max-steps).",
     )
-    p.add_argument("map", nargs="?", help="a text map (.txt) or a MovingAI map (.map)")
+    p.add_argument("map", nargs="*", default=None, metavar="MAP",
+                   help="a text map (.txt) or a MovingAI map (.map); several only with "
+                   "--exercise E --headless (the class report)")
     p.add_argument("--version", action="version", version=f"tui-search {__version__} ({core_name()})")
     p.add_argument("-a", "--algorithm", choices=list(ALGORITHMS), default=None,
                    help="; ".join(f"{a.key}: {a.name}" for a in ALGORITHMS.values()))
@@ -98,11 +109,12 @@ def build_parser() -> argparse.ArgumentParser:
                    help="two to four searches side by side in the app (compare mode); with "
                    "--headless, run them on the map and print a table (e.g. bfs,dfs or "
                    "astar:manhattan,ucs: an informed search may name its heuristic)")
-    p.add_argument("--exercise", metavar="N", type=int, choices=sorted(QUOTES),
-                   help="the tutorial's exercise N as a live challenge in the app; with "
-                   "--headless, grade the map on it (1: BFS "
-                   "expands fewer nodes than DFS; 2: DFS's path has more moves than BFS's): "
-                   "exit 0 solved, 1 not solved, 2 a bad map")
+    p.add_argument("--exercise", metavar="N|FILE",
+                   help="the tutorial's exercise N or an exercise FILE (TOML: see the README) "
+                   "as a live challenge in the app; with --headless, grade the maps on it (1: "
+                   "BFS expands fewer nodes than DFS; 2: DFS's path has more moves than "
+                   "BFS's): exit 0 all solved, 1 not, 2 bad input, 3 a search gave up (one "
+                   "map); several maps print the class report")
     p.add_argument("--generate", metavar="KIND",
                    help="make a map instead of reading one: " + "; ".join(
                        f"{k.name}: {k.help}".replace("%", "%%") for k in KINDS.values())
@@ -133,6 +145,9 @@ def build_parser() -> argparse.ArgumentParser:
                    help="search without the app and print the result")
     p.add_argument("--json", action="store_true",
                    help="with --headless: print the result as one JSON object")
+    p.add_argument("--csv", action="store_true",
+                   help="with --exercise E --headless: print the grades as CSV (file, verdict, "
+                   "then a column per field the exercise's condition names)")
     p.add_argument("--trace", metavar="FILE",
                    help="with --headless: write one JSON line per expansion to FILE "
                    "('-' for stdout, without --json)")
@@ -170,7 +185,7 @@ def build_app(args: argparse.Namespace, grid: Grid, path: Path | None) -> Search
                      unsaved_name=app_title(args),
                      theme=args.theme,
                      optimal_cost=scenario.optimal_length if scenario is not None else None,
-                     exercise=args.exercise, compare=args.compare,
+                     exercise=getattr(args, "exercise_read", None), compare=args.compare,
                      file_access=file_access(args),
                      config=Config.in_memory() if args.served else None, lesson=lesson)
 
@@ -213,12 +228,34 @@ def check_modes(args: argparse.Namespace) -> None:
             raise UsageError(f"{flag} chooses the searches: leave out -a")
         if args.trace:
             raise UsageError(f"--trace is for one search, not {flag}")
+    args.exercise_read = None
     if args.exercise is not None:
+        args.exercise_read = read_exercise(args.exercise)
         changed = changed_choice_flags(args)
         if changed:
             raise UsageError(f"--exercise grades with the tutorial's rules: leave out "
                              f"{', '.join(changed)}")
     args.algorithm = args.algorithm or DEFAULT_ALGORITHM
+
+
+def read_exercise(name: str) -> Exercise:
+    """``--exercise``'s exercise: 1, 2 or a file (a bad file: MapError, exit 2)."""
+    from tui_search.engine.exercise_file import find_exercise
+
+    try:
+        return find_exercise(name)
+    except ValueError as exc:
+        raise UsageError(f"--exercise {name}: {exc} (or give an exercise file)") from None
+
+
+def split_maps(args: argparse.Namespace) -> None:
+    """``args.maps``, every MAP given; ``args.map``, the one map (None: none).  Several
+    maps are only for the class report (``--exercise E --headless``)."""
+    args.maps = list(args.map or [])
+    if len(args.maps) > 1 and not (args.exercise and args.headless):
+        raise UsageError("one MAP at a time (several only with --exercise E --headless: "
+                         "the class report)")
+    args.map = args.maps[0] if args.maps else None
 
 
 def open_lesson(args: argparse.Namespace) -> bool:
@@ -244,8 +281,10 @@ def main(argv: list[str] | None = None) -> int:
         from tui_search import serve
 
         serve.check_args(args)
-        if (args.json or args.trace or args.check_trace) and not args.headless:
-            raise UsageError("--json, --trace and --check-trace go with --headless")
+        if (args.json or args.trace or args.csv or args.check_trace) and not args.headless:
+            raise UsageError("--json, --csv, --trace and --check-trace go with --headless")
+        if args.csv and (args.json or not args.exercise):
+            raise UsageError("--csv is for --exercise E --headless, without --json")
         if args.theme and args.headless:
             raise UsageError("--theme is for the app, not --headless")
         algorithm_given = args.algorithm is not None
@@ -257,13 +296,13 @@ def main(argv: list[str] | None = None) -> int:
             return print_pseudocode(args)
         if args.lesson is not None and open_lesson(args):
             return 0
+        if args.headless and args.exercise:
+            return run_exercise(args)
         grid, path = load_problem(args)
         if args.headless and args.compare:
             return run_compare(args, grid, path)
         if args.check_trace is not None:
             return run_check_trace(args, grid, path, algorithm_given)
-        if args.headless and args.exercise:
-            return run_exercise(args, grid, path)
         if args.headless:
             return run_headless(args, grid, path)
         semantics_from(args)  # report bad choices before the screen changes

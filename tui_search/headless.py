@@ -19,7 +19,6 @@ from tui_search.engine.compare import (
     table_cells,
     table_lines,
 )
-from tui_search.engine.exercises import Verdict, check, tutorial_grid
 from tui_search.engine.filenames import describe_name
 from tui_search.engine.grid import Grid
 from tui_search.engine.heuristics import INADMISSIBLE, admissible
@@ -28,7 +27,13 @@ from tui_search.engine.outcome import Outcome
 from tui_search.engine.run import Run, Step
 from tui_search.engine.scenarios import Scenario
 from tui_search.engine.semantics import Semantics
-from tui_search.flags import UsageError, contenders_from, map_name, semantics_from
+from tui_search.flags import (
+    UsageError,
+    contenders_from,
+    load_problem,
+    map_name,
+    semantics_from,
+)
 
 if TYPE_CHECKING:
     from tui_search.engine.reference import Expansion
@@ -39,7 +44,7 @@ EXIT_FOUND, EXIT_NO_PATH, EXIT_BAD_INPUT, EXIT_GAVE_UP = 0, 1, 2, 3
 def print_pseudocode(args: argparse.Namespace) -> int:
     """``--pseudocode``: the code of ``-a``'s search under the flags' choices, numbered, on
     stdout (:mod:`tui_search.engine.pseudocode`); exit 0."""
-    from tui_search.engine.pseudocode import pseudocode
+    from tui_search.engine.pseudocode import MOVE_COST, TERRAIN_MOVE_COST, pseudocode
 
     for flag in ("compare", "exercise", "trace"):
         if getattr(args, flag):
@@ -48,7 +53,11 @@ def print_pseudocode(args: argparse.Namespace) -> int:
     if args.headless or args.json:
         raise UsageError("--pseudocode prints the code without a search: leave out "
                          "--headless and --json")
-    code = pseudocode(get_algorithm(args.algorithm), semantics_from(args))
+    costed = False
+    if args.map is not None or args.terrain is not None:  # the code of a search on this map
+        costed = load_problem(args)[0].costs is not None
+    code = pseudocode(get_algorithm(args.algorithm), semantics_from(args),
+                      move_cost=TERRAIN_MOVE_COST if costed else MOVE_COST)
     print(code.title)
     print("\n".join(code.numbered()))
     return EXIT_FOUND
@@ -201,7 +210,7 @@ def run_headless(args: argparse.Namespace, grid: Grid, path: Path | None) -> int
     if args.trace == "-" and args.json:
         raise UsageError("--trace - and --json both want stdout; give --trace a file")
     where = describe_name(map_name(args, path))  # escape sequences shown, not run
-    _need_endpoints(grid, where)
+    need_endpoints(grid, where)
     semantics = semantics_from(args)
 
     def search(out: IO[str] | None) -> Outcome:
@@ -242,7 +251,7 @@ def compare_table(labels: list[str], outcomes: list[Outcome], terrain: bool = Fa
 
 def run_compare(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
     where = describe_name(map_name(args, path))  # escape sequences shown, not run
-    _need_endpoints(grid, where)
+    need_endpoints(grid, where)
     contenders = contenders_from(args)
     outcomes = [search_headless(grid, c.algorithm, c.semantics, args.max_steps, None)
                 for c in contenders]
@@ -257,24 +266,7 @@ def run_compare(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
     return EXIT_FOUND if all(o.found for o in outcomes) else EXIT_NO_PATH
 
 
-def run_exercise(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
-    """Grade the map on an exercise: ``solved`` or ``not solved`` with the figures."""
-    where = describe_name(map_name(args, path))  # escape sequences shown, not run
-    _need_endpoints(grid, where)
-    verdict: Verdict = check(args.exercise, grid, tutorial_grid(), args.max_steps)
-    if args.json:
-        print(to_json({"map": where, **verdict.as_json()}))
-    else:
-        print(f"{where}: exercise {verdict.exercise} "
-              f"{'solved' if verdict.solved else 'not solved'} — {verdict.reason}")
-        if verdict.hint:
-            print(f"  hint: {verdict.hint}")
-    if verdict.bfs.gave_up or verdict.dfs.gave_up:
-        return EXIT_GAVE_UP
-    return EXIT_FOUND if verdict.solved else EXIT_NO_PATH
-
-
-def _need_endpoints(grid: Grid, where: str) -> None:
+def need_endpoints(grid: Grid, where: str) -> None:
     missing = [name for name in ("start", "goal") if getattr(grid, name) is None]
     if missing:
         raise MapError(where, f"the map has no {' or '.join(missing)}: give --start X,Y "

@@ -101,3 +101,19 @@ def test_the_command_line_lists_the_lessons_and_refuses_a_bad_one(capsys,
     assert code == 2 and "no such lesson (built in: choices, tutorial)" in err
     code, _, err = run_cli(capsys, "--lesson", "tutorial", "--headless")
     assert code == 2 and err.count("\n") == 1 and "--lesson is for the app" in err
+
+
+def test_a_number_key_a_built_in_lesson_names_is_that_search_s_key() -> None:
+    import re
+
+    from tui_search.engine.algorithms import ALGORITHMS
+
+    by_key = {a.app_key: a for a in ALGORITHMS.values()}
+    named = []
+    for name in built_in():
+        text = find_lesson(name).read_text("utf-8")
+        for key, search in re.findall(r"`([1-9])` for (\w+)", text):
+            named.append((name, key, search))
+            assert key in by_key and search.upper() in (by_key[key].short.upper(),
+                                                         by_key[key].key.upper()), (name, key)
+    assert named  # the check has something to check

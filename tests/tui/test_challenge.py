@@ -8,7 +8,8 @@ import pytest
 
 from tests.tui.test_app import MAPS, TUTORIAL, sync, tutorial_app, wait_until
 from tui_search.cli import main
-from tui_search.engine.exercises import LIVE_CELLS, check, tutorial_grid
+from tui_search.engine.exercise_file import built_in_exercise
+from tui_search.engine.exercises import LIVE_CELLS, grade
 from tui_search.engine.grid import Grid
 from tui_search.engine.mapfile import load_map
 from tui_search.tui.app import SearchApp
@@ -16,6 +17,11 @@ from tui_search.tui.screens import panes
 from tui_search.tui.widgets.challenge import ChallengePanel
 
 SIZE = (120, 36)
+
+
+def number(app: SearchApp) -> int | None:
+    """The tutorial's exercise shown (None: none, or a file's)."""
+    return app.session.exercise.number if app.session.exercise is not None else None
 
 
 def challenge(app: SearchApp) -> ChallengePanel:
@@ -46,7 +52,7 @@ async def test_exercise_one_hints_when_more_than_the_goal_changed() -> None:
     app = SearchApp(load_map(MAPS / "exercise1-bfs-wins.txt"), exercise=1)
     async with app.run_test(size=SIZE):
         assert challenge(app).verdict.solved
-        assert "Hint: the exercise moves only the target" in challenge(app).text
+        assert "Hint: the exercise changes only the goal" in challenge(app).text
 
 
 @sync
@@ -55,9 +61,9 @@ async def test_x_cycles_the_exercises_and_hides_the_panel() -> None:
     async with app.run_test(size=SIZE) as pilot:
         assert not challenge(app).display
         await pilot.press("x")
-        assert app.session.exercise == 1 and challenge(app).display
+        assert number(app) == 1 and challenge(app).display
         await pilot.press("x")
-        assert app.session.exercise == 2 and "Exercise 2" == challenge(app).border_title
+        assert number(app) == 2 and "Exercise 2" == challenge(app).border_title
         assert "Not solved yet: both paths have 7 moves" in challenge(app).text
         await pilot.press("x")
         assert app.session.exercise is None and not challenge(app).display
@@ -87,9 +93,9 @@ async def test_a_big_map_is_checked_in_the_background_once_the_edits_pause(
         assert challenge(big).verdict is None and "Checking" in challenge(big).text
         gate.set()
         await wait_until(pilot, lambda: challenge(big).verdict is not None)
-        want = check(1, grid.copy(), tutorial_grid())
+        want = grade(built_in_exercise(1), grid.copy())
         assert challenge(big).verdict == want
-        assert f"{want.bfs.expanded:,}" in challenge(big).text
+        assert f"{want.outcomes[0][2].expanded:,}" in challenge(big).text
         # two edits in a row (the goal moved next to the start, then one further): the first
         # one's check is cancelled or its verdict stale; the verdict is the last map's
         gate.clear()
@@ -99,7 +105,7 @@ async def test_a_big_map_is_checked_in_the_background_once_the_edits_pause(
         assert big.session.grid.goal == (2, 0)
         gate.set()
         await wait_until(pilot, lambda: challenge(big).verdict is not None)
-        edited = check(1, big.session.grid.copy(), tutorial_grid())
+        edited = grade(built_in_exercise(1), big.session.grid.copy())
         assert challenge(big).verdict == edited and edited != want
 
 
@@ -107,12 +113,17 @@ def test_exercise_without_headless_opens_the_app(monkeypatch) -> None:
     seen = {}
 
     def fake_run(self, *args, **kwargs):
-        seen["exercise"] = self.session.exercise
+        seen["exercise"] = self.session.exercise.number
         seen["title"] = self.session.map_name
 
     monkeypatch.setattr(SearchApp, "run", fake_run)
     assert main(["--exercise", "2"]) == 0
     assert seen == {"exercise": 2, "title": "tutorial (built-in)"}
+    teacher = MAPS.parent / "tests" / "data" / "exercises" / "greedy-not-optimal.toml"
+    monkeypatch.setattr(SearchApp, "run", lambda self, *a, **k: seen.update(
+        title=self.session.exercise.title))
+    assert main(["--exercise", str(teacher)]) == 0
+    assert seen["title"] == "Greedy is not optimal"
 
 
 @sync
@@ -124,10 +135,10 @@ async def test_the_palette_turns_the_exercises_on_and_off() -> None:
     async with app.run_test(size=SIZE) as pilot:
         assert app.session.exercise is None and not challenge(app).display
         await palette_run(pilot, "Exercise 1")
-        assert app.session.exercise == 1 and challenge(app).display
+        assert number(app) == 1 and challenge(app).display
         assert challenge(app).border_title == "Exercise 1"
         assert "Not solved yet: BFS expanded 22 nodes, DFS 7" in challenge(app).text
         await palette_run(pilot, "Exercise 2")
-        assert app.session.exercise == 2 and challenge(app).border_title == "Exercise 2"
+        assert number(app) == 2 and challenge(app).border_title == "Exercise 2"
         await palette_run(pilot, "Exercise: off", best=True)  # exercise 1's quote matches too
         assert app.session.exercise is None and not challenge(app).display

@@ -2,9 +2,12 @@
 
 from __future__ import annotations
 
+from tests.helpers import ROOT
 from tests.tui.test_app import MAPS
 from tui_search.engine.mapfile import load_map
 from tui_search.tui.app import SearchApp
+
+EXERCISES = ROOT / "tests" / "data" / "exercises"
 
 
 def test_an_exercise_solved(snap_compare) -> None:
@@ -13,4 +16,16 @@ def test_an_exercise_solved(snap_compare) -> None:
     4 moves, DFS's 8'."""
     path = MAPS / "exercise1-goal-moved.txt"
     app = SearchApp(load_map(path), path=path, exercise=1)
+    assert snap_compare(app, terminal_size=(100, 30))
+
+
+def test_a_teacher_s_exercise(snap_compare) -> None:
+    """A teacher's exercise file on the tutorial's map: the panel is titled 'Greedy is not
+    optimal', quotes its text and says 'Not solved yet: both found the goal; both paths cost
+    8.66', then the file's hint."""
+    from tui_search.engine.exercise_file import load_exercise
+
+    exercise = load_exercise(EXERCISES / "greedy-not-optimal.toml")
+    path = MAPS / "tutorial.txt"
+    app = SearchApp(load_map(path), path=path, exercise=exercise)
     assert snap_compare(app, terminal_size=(100, 30))

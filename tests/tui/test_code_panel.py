@@ -84,3 +84,30 @@ def test_a_long_line_wraps_under_its_own_words_and_keeps_its_light() -> None:
     assert texts[start + 1].startswith("      ") and "N,NW" in " ".join(texts[start:start + 4])
     assert all(cls == "code-panel--lit" for _, cls in rows[start + 1])
     assert sum(text.startswith(LIT_MARK) for text in texts) == 1
+
+
+@sync
+async def test_a_code_panel_unfolded_by_a_bigger_terminal_shows_the_run_at_once() -> None:
+    app = SearchApp(tutorial_app().session.grid, compare="bfs,astar")
+    async with app.run_test(size=(80, 24)) as pilot:
+        await wait_until(pilot, lambda: len(app.main.panes) == 2)
+        await pilot.press("n", "n", "v")  # no room for the panels at 80x24: folded
+        await pilot.resize_terminal(120, 40)
+        await wait_until(pilot, lambda: all(shown(p) for p in app.main.panes))
+        bfs, astar = (p.code_panel for p in app.main.panes)
+        assert bfs.code is not None and "queue" in bfs.code.lines[0].text
+        assert astar.code is not None and "f = g + h" in astar.code.lines[0].text
+        assert bfs.lit == lit_lines(app.session.runs[0])  # lit for the run's step 2
+
+
+def test_on_a_map_with_terrain_g_adds_the_cost_of_the_cell_entered() -> None:
+    from tests.helpers import MAPS
+    from tui_search.engine.mapfile import load_map
+    from tui_search.engine.run import Run
+    from tui_search.tui.code_trace import code_of
+
+    mud = load_map(MAPS / "terrain-mud.txt")
+    text = "\n".join(line.text for line in code_of(Run(mud, "ucs")).lines)
+    assert "× the cost of the cell it enters" in text
+    plain = "\n".join(line.text for line in code_of(tutorial_app().session.runs[0]).lines)
+    assert "cell it enters" not in plain

@@ -6,7 +6,8 @@ from __future__ import annotations
 from dataclasses import replace
 
 from tests.helpers import TUTORIAL
-from tui_search.engine.exercises import check, tutorial_grid
+from tui_search.engine.exercise_file import built_in_exercise
+from tui_search.engine.exercises import grade
 from tui_search.engine.grid import Grid
 from tui_search.engine.mapfile import load_map
 from tui_search.engine.semantics import DEFAULT_SEMANTICS
@@ -147,9 +148,9 @@ def test_a_seek_says_how_far_it_is_and_stop_abandons_it() -> None:
 
 def test_the_exercise_verdict_is_the_headless_one() -> None:
     session = tutorial(exercise=1)
-    assert session.verdict() == check(1, session.grid, tutorial_grid(), session.max_steps)
+    assert session.verdict() == grade(built_in_exercise(1), session.grid, session.max_steps)
     session.cycle_exercise()
-    assert session.exercise == 2
+    assert session.exercise is built_in_exercise(2)
     session.cycle_exercise()
     assert session.exercise is None
 
@@ -163,3 +164,17 @@ def test_the_settings_pick_what_c_compares_and_apply_their_rules() -> None:
     session.toggle_compare()
     session.choose_settings(corners, "dfs,astar")  # one pane: only what c compares changes
     assert session.labels == ["BFS"] and session.comparison == "dfs,astar"
+
+
+def test_x_cycles_through_an_exercise_file_given_at_start() -> None:
+    from tests.helpers import ROOT
+    from tui_search.engine.exercise_file import load_exercise
+
+    mine = load_exercise(ROOT / "tests" / "data" / "exercises" / "greedy-not-optimal.toml")
+    session = tutorial(exercise=mine)
+    assert session.verdict().exercise is mine and not session.verdict().solved
+    seen = []
+    for _ in range(4):
+        session.cycle_exercise()
+        seen.append(session.exercise)
+    assert seen == [built_in_exercise(1), built_in_exercise(2), None, mine]

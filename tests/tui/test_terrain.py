@@ -18,6 +18,8 @@ from tui_search.engine.mapfile import load_map
 from tui_search.engine.run import Run
 from tui_search.engine.semantics import DEFAULT_SEMANTICS
 from tui_search.tui.app import SearchApp
+from tui_search.tui.cell_codes import GOAL, START, WALL
+from tui_search.tui.geometry import Geometry
 from tui_search.tui.map_edits import BRUSHES
 from tui_search.tui.narration import narrate
 from tui_search.tui.readout import describe
@@ -85,6 +87,45 @@ async def test_the_ramp_reads_in_every_theme_and_vision() -> None:
             base = seen(background, vision)[0]
             distances = [abs(seen(s, vision)[0] - base) for s in steps if s is not None]
             assert all(b - a >= 7 for a, b in itertools.pairwise(distances)), (theme, distances)
+
+
+@sync
+async def test_the_overview_shades_a_free_block_by_its_dearest_cell() -> None:
+    """z on a map with terrain: a free block takes the ramp's colour of the dearest cell in it
+    (one 9 among 1s: the last step; a 3 among 2s: the first); an obstacle's block still draws
+    the obstacle, the start's and the goal's theirs.  On the mud map, z shows the mud."""
+    grid = Grid(25, 5, start=(0, 0), goal=(24, 4))
+    grid.set_cost((7, 3), 9.0)
+    for x in range(10, 15):
+        grid.set_cost((x, 1), 2.0)
+    grid.set_cost((12, 4), 3.0)
+    grid.set_cost((16, 2), 9.0)
+    grid.set_blocked((17, 2), True)
+    app = SearchApp(grid)
+    async with app.run_test(size=SIZE) as pilot:
+        view = app.query_one(GridView)
+        await pilot.press("z")
+        await wait_until(pilot, lambda: view.overview)
+        view.geometry = Geometry(25, 5, 1, 5)  # the fit would choose 1; blocks of 5 here
+        ramp = [view.get_component_rich_style(f"grid-view--{c}").bgcolor
+                for c in RAMP_COMPONENTS]
+        shown = view._block_swatches(range(5), 0, 25)
+        assert shown is not None and shown[0] == START and shown[3:] == [WALL, GOAL]
+        assert [view.swatch(i).color for i in shown[1:3]] == [ramp[3], ramp[0]]
+        line = view.render_line(0)  # the blocks' upper halves (the cursor's is the start's)
+        colours = [seg.style.color for seg in line if seg.style
+                   for _ in range(seg.cell_length)][view.pad_x:]
+        assert colours[1:3] == [ramp[3], ramp[0]]
+    app = mud_app()
+    async with app.run_test(size=SIZE) as pilot:
+        view = app.query_one(GridView)
+        await pilot.press("z")
+        await wait_until(pilot, lambda: view.overview)
+        mud = view.get_component_rich_style("grid-view--cost-4").bgcolor
+        segments = [seg for y in range(view.geometry.size[1]) for seg in view.render_line(y)]
+        assert mud is not None and any(
+            seg.style is not None and mud in (seg.style.color, seg.style.bgcolor)
+            for seg in segments)
 
 
 # -- the brush --------------------------------------------------------------------------------

@@ -17,7 +17,6 @@ from textual.widgets import Input, Label, Static
 
 from tests.textual_internals import repainted
 from tests.tui.test_app import TUTORIAL, sync, wait_until
-from tui_search.engine.exercises import QUOTES
 from tui_search.engine.mapfile import load_map
 from tui_search.tui.app import SearchApp
 from tui_search.tui.pieces import Line, Parts, Piece, lay_out, text_of, wrap
@@ -67,7 +66,7 @@ def _verdict(app: SearchApp) -> list[str]:
     """An exercise: its words, and the verdict with BFS's and DFS's figures."""
     verdict = app.main.query_one(ChallengePanel).verdict
     assert verdict is not None and app.session.exercise is not None
-    return [QUOTES[app.session.exercise], verdict.reason]
+    return [app.session.exercise.text, verdict.reason]
 
 
 def _terrain_note(app: SearchApp) -> list[str]:

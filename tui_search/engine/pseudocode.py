@@ -26,6 +26,8 @@ from tui_search.engine.semantics import Semantics
 #: What a move costs, as the line that adds it to g says it.  Terrain costs land here: the
 #: engine's cost of a move, in words (a keyword of :func:`pseudocode`).
 MOVE_COST = "the move's cost (1 straight, √2 diagonal)"
+#: The same on a map with terrain (a move costs its length times the cost of the cell it enters).
+TERRAIN_MOVE_COST = "the move's length (1 straight, √2 diagonal) × the cost of the cell it enters"
 
 #: The lines that may skip a successor, and the lines that end a step early, by kind.
 SKIP_KINDS = ("blocked", "corner", "reached", "on_path")

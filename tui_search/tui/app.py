@@ -26,6 +26,7 @@ from tui_search.tui.session import Session
 from tui_search.tui.themes import DEFAULT_THEME, THEMES, map_defaults, textual_themes
 
 if TYPE_CHECKING:
+    from tui_search.engine.exercise_file import Exercise
     from tui_search.engine.lesson import Lesson
 
 
@@ -54,7 +55,7 @@ class SearchApp(App[int]):
         theme: str | None = None,
         config: Config | None = None,
         optimal_cost: float | None = None,
-        exercise: int | None = None,
+        exercise: Exercise | int | None = None,
         compare: str | None = None,
         file_access: FileAccess | None = None,
         lesson: Lesson | None = None,

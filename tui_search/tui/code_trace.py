@@ -13,7 +13,7 @@ from __future__ import annotations
 from typing import NamedTuple
 
 from tui_search.engine.grid import DELTAS, Cell
-from tui_search.engine.pseudocode import Pseudocode, pseudocode
+from tui_search.engine.pseudocode import MOVE_COST, TERRAIN_MOVE_COST, Pseudocode, pseudocode
 from tui_search.engine.run import Run
 from tui_search.engine.semantics import corner_allowed
 
@@ -27,8 +27,10 @@ class Skip(NamedTuple):
 
 
 def code_of(run: Run) -> Pseudocode:
-    """The pseudocode of ``run``'s search (generated once per algorithm and choices)."""
-    return pseudocode(run.algo, run.semantics)
+    """The pseudocode of ``run``'s search (generated once per algorithm and choices); on a
+    map with terrain, g adds the cost of the cell a move enters."""
+    move_cost = TERRAIN_MOVE_COST if run.grid.costs is not None else MOVE_COST
+    return pseudocode(run.algo, run.semantics, move_cost=move_cost)
 
 
 def skipped(run: Run, k: int | None = None) -> list[Skip]:

@@ -18,7 +18,7 @@ from textual.command import DiscoveryHit, Hit, Hits, Provider
 
 from tui_search.engine.algorithms import ALGORITHMS
 from tui_search.engine.compare import parse_compare
-from tui_search.engine.exercises import QUOTES
+from tui_search.engine.exercise_file import BUILT_IN_FILES, built_in_exercise
 from tui_search.tui.keys import KEYS
 from tui_search.tui.map_edits import BRUSHES, brush_name
 from tui_search.tui.themes import THEMES
@@ -67,8 +67,8 @@ class SearchCommands(Provider):
             now = " · the theme now" if app.theme == spec.name else ""
             found.append((f"Theme: {spec.title}", partial(setattr, app, "theme", spec.name),
                           f"{spec.description} · t cycles the themes{now}"))
-        for n, quote in QUOTES.items():
-            found.append((f"Exercise {n}: {quote}", partial(main.run_action, f"show_exercise({n})"),
+        for n in BUILT_IN_FILES:
+            found.append((f"Exercise {n}: {built_in_exercise(n).text}", partial(main.run_action, f"show_exercise({n})"),
                           "the tutorial's exercise, checked live as you edit (key x cycles)"))
         found.append(("Exercise: off", partial(main.run_action, "show_exercise(0)"),
                       "hide the challenge panel (key x)"))

@@ -94,7 +94,7 @@ KEYS: list[BindingType] = [
             tooltip="Quiz: the node under the cursor (or the frontier entry picked) "
             "comes off next"),
     Binding("x", "exercise", "Exercise", show=False,
-            tooltip="The tutorial's exercises as live challenges: 1, 2, off"),
+            tooltip="The exercises as live challenges: --exercise FILE's, 1, 2, off"),
     Binding("t", "app.next_theme", "Theme", show=False,
             tooltip="Next colour theme: " + ", ".join(t.title.lower() for t in THEMES.values())),
     Binding("ctrl+s", "save", "Save", tooltip="Save the map"),

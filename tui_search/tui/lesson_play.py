@@ -8,10 +8,30 @@ as it shows it after any other change.
 
 from __future__ import annotations
 
+from pathlib import Path
+from typing import Protocol
+
+from tui_search.engine.grid import Grid
 from tui_search.engine.lesson import Lesson, Section, State
 from tui_search.engine.mapfile import load_map
 from tui_search.engine.mapread import MapError
-from tui_search.tui.session import Session
+from tui_search.engine.semantics import Semantics
+
+
+class Session(Protocol):
+    """What a lesson sets of the session (:class:`~tui_search.tui.session.Session`, which
+    holds the lesson: named here, not imported, so the two modules make no circle)."""
+
+    algorithm: str
+    semantics: Semantics
+    show_code: bool
+    note: str
+
+    def stop(self) -> None: ...
+    def use_map(self, grid: Grid, path: Path | None, untitled: str | None = None) -> None: ...
+    def show_searches(self, spec: str) -> str | None: ...
+    def goto(self, k: int | None) -> None: ...
+    def show_exercise(self, exercise: int | None) -> None: ...
 
 
 class LessonPlay:
@@ -62,7 +82,7 @@ def apply_state(session: Session, state: State) -> None:
             problem = str(exc)
     session.algorithm = state.algorithm
     session.semantics = state.semantics
-    session.exercise = state.exercise
+    session.show_exercise(state.exercise)
     session.show_code = state.code
     refusal = session.show_searches(state.spec)
     assert refusal is None, refusal  # checked when the lesson was read

@@ -14,7 +14,8 @@ from typing import TYPE_CHECKING
 
 from tui_search.engine.algorithms import DEFAULT_ALGORITHM, get_algorithm
 from tui_search.engine.compare import Contender, parse_compare
-from tui_search.engine.exercises import Verdict, check, tutorial_grid
+from tui_search.engine.exercise_file import Exercise, built_in_exercise
+from tui_search.engine.exercises import Verdict, grade
 from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.run import MAX_STEPS, Run
 from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
@@ -58,8 +59,8 @@ class Session(MapEdits):
 
     ``optimal_cost`` is a benchmark's lowest cost for this map, start and goal (a MovingAI
     ``.scen`` row: 8 moves, no corner cutting), shown beside a path's cost while the map (its
-    obstacles and terrain costs), its ends and those rules stay as they are.  ``exercise`` is the tutorial's exercise 1 or 2
-    shown as a live challenge.
+    obstacles and terrain costs), its ends and those rules stay as they are.  ``exercise`` is an exercise (or the
+    tutorial's number 1 or 2) shown as a live challenge.
     """
 
     def __init__(
@@ -71,7 +72,7 @@ class Session(MapEdits):
         max_steps: int = MAX_STEPS,
         unsaved_name: str = "untitled",
         optimal_cost: float | None = None,
-        exercise: int | None = None,
+        exercise: Exercise | int | None = None,
         compare: str | None = None,
     ) -> None:
         self.grid = grid
@@ -93,7 +94,10 @@ class Session(MapEdits):
         self.seek: Seek | None = None
         self.note = ""
         self.quiz = Quiz()
-        self.exercise = exercise
+        self.exercise: Exercise | None = None
+        self.show_exercise(exercise)
+        #: What x cycles through: the exercise given at start (a file), the tutorial's two.
+        self._exercises = [e for e in (self.exercise,) if e is not None and e.number is None]
         self.fold_trees = False  # the panes' trees folded away by the user
         self.show_code = False  # the Code panel in the trees' place (the pseudocode, lit)
         self.brush: float | None = None  # the terrain brush's cost (None: off)
@@ -372,13 +376,21 @@ class Session(MapEdits):
         return before
 
     # -- the exercise ----------------------------------------------------------------------
+    def show_exercise(self, exercise: Exercise | int | None) -> None:
+        """Show ``exercise`` (1 or 2: the tutorial's) as the live challenge; None: none."""
+        self.exercise = (built_in_exercise(exercise) if isinstance(exercise, int)
+                         else exercise)
+
     def cycle_exercise(self) -> None:
-        self.exercise = {None: 1, 1: 2, 2: None}[self.exercise]
+        """The next challenge: the exercise file given at start, exercise 1, 2, none."""
+        cycle: list[Exercise | None] = [*self._exercises, built_in_exercise(1),
+                                        built_in_exercise(2), None]
+        self.exercise = cycle[(cycle.index(self.exercise) + 1) % len(cycle)]
 
     def verdict(self) -> Verdict:
-        """The exercise's verdict on the map as it is (two whole searches)."""
+        """The exercise's verdict on the map as it is (its searches, whole)."""
         assert self.exercise is not None
-        return check(self.exercise, self.grid, tutorial_grid(), self.max_steps)
+        return grade(self.exercise, self.grid, self.max_steps)
 
 
 __all__ = ["BRUSHES", "DEFAULT_COMPARE", "LOCKSTEP", "LOCKSTEP_SHORT", "NEEDS_ENDPOINTS", "NO_BRUSH", "Session", "normal_spec"]

@@ -46,7 +46,7 @@ KEYS = (
     ("mouse over", "the line under the map says what the run knows of that cell"),
     ("i  enter", "quiz: predict the node that comes off next (cursor, enter)"),
     ("click, tab ↑↓", "quiz: pick the frontier entry instead (double click: answer)"),
-    ("x", "the tutorial's exercises as live challenges: 1, 2, off"),
+    ("x", "the exercises as live challenges: --exercise FILE's, 1, 2, off"),
     ("t", "next colour theme: " + ", ".join(t.title.lower() for t in THEMES.values())),
     ("ctrl+s", "save the map (to its file, in its format)"),
     ("w", "save the map as … (asks before replacing a file)"),

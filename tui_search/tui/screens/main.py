@@ -129,13 +129,13 @@ class MainScreen(PanesScreen):
 
     # -- the exercise and the quiz ---------------------------------------------------------
     def action_exercise(self) -> None:
-        """Cycle the challenge: exercise 1, exercise 2, none."""
+        """Cycle the challenge: the exercise file given at start, exercise 1, 2, none."""
         self.session.cycle_exercise()
         self._check_exercise()
 
     def action_show_exercise(self, exercise: int) -> None:
         """Show exercise 1 or 2 as a live challenge on the map (0: none)."""
-        self.session.exercise = exercise or None
+        self.session.show_exercise(exercise or None)
         self._check_exercise()
 
     def action_quiz(self) -> None:

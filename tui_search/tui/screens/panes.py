@@ -23,7 +23,8 @@ from textual.widget import AwaitMount
 from textual.widgets import Static
 from textual.worker import get_current_worker
 
-from tui_search.engine.exercises import LIVE_CELLS, Verdict, check, tutorial_grid
+from tui_search.engine.exercise_file import Exercise
+from tui_search.engine.exercises import LIVE_CELLS, Verdict, grade
 from tui_search.engine.filenames import describe_name
 from tui_search.engine.grid import Cell, Grid
 from tui_search.tui import playback
@@ -290,7 +291,7 @@ class PanesScreen(Screen[None]):
 
     # -- the exercise ----------------------------------------------------------------------
     def _check_exercise(self) -> None:
-        """The challenge panel's verdict on the map as it is now: two whole searches, at once
+        """The challenge panel's verdict on the map as it is now: its whole searches, at once
         on a map of at most ``LIVE_CELLS`` cells, else in a thread once the edits pause."""
         session = self.session
         exercise = session.exercise
@@ -313,19 +314,19 @@ class PanesScreen(Screen[None]):
         else:
             panel.show(exercise, session.verdict())
 
-    def _check_big(self, exercise: int, grid: Grid) -> None:
+    def _check_big(self, exercise: Exercise, grid: Grid) -> None:
         """(In a thread.)  Check ``exercise`` on ``grid``, a copy of the map as it was, once
         no edit has come for a moment (each edit starts a new check and cancels this one), and
         show the verdict if the map and the exercise are still the same."""
         sleep(EXERCISE_PAUSE)
         if get_current_worker().is_cancelled:
             return
-        verdict = check(exercise, grid, tutorial_grid(), self.session.max_steps)
+        verdict = grade(exercise, grid, self.session.max_steps)
         self.app.call_from_thread(self._show_big_verdict, exercise, grid, verdict)
 
-    def _show_big_verdict(self, exercise: int, grid: Grid, verdict: Verdict) -> None:
+    def _show_big_verdict(self, exercise: Exercise, grid: Grid, verdict: Verdict) -> None:
         now = self.session.grid
-        if exercise == self.session.exercise and (grid.start, grid.goal) == (
+        if exercise is self.session.exercise and (grid.start, grid.goal) == (
                 now.start, now.goal) and grid.blocked == now.blocked:
             self.query_one(ChallengePanel).show(exercise, verdict)
 

@@ -119,7 +119,8 @@ class CellLooks:
 
 def swatches(style_of: Callable[[str], Style], base: Style) -> list[Style]:
     """The one colour each kind of cell has in the overview (and in the legend): its fill,
-    an obstacle's glyph colour, a free cell the background."""
+    an obstacle's glyph colour, a free cell the background; then the ramp's steps, their
+    fill (a free block with terrain: :func:`shaded`)."""
     out = []
     for i, name in enumerate(COMPONENTS):
         style = style_of(f"grid-view--{name}")
@@ -127,7 +128,8 @@ def swatches(style_of: Callable[[str], Style], base: Style) -> list[Style]:
         if i in (FREE, WALL) or colour is None or colour == base.bgcolor:
             colour = style.color if i == WALL else (colour or base.bgcolor)
         out.append(Style(color=colour))
-    return out
+    return out + [Style(color=style_of(f"grid-view--{name}").bgcolor)
+                  for name in RAMP_COMPONENTS]
 
 
 def block_codes(grid: Grid, run: Run | None, rows: range, x0: int, x1: int, across: int
@@ -146,16 +148,51 @@ def block_codes(grid: Grid, run: Run | None, rows: range, x0: int, x1: int, acro
     return [BY_RANK[rank] for rank in best]
 
 
+def block_costs(grid: Grid, rows: range, x0: int, x1: int, across: int) -> list[float] | None:
+    """For each block of ``across`` of the overview's columns ``x0 .. x1-1`` over map rows
+    ``rows``: the highest cost of a free cell in it (None: no terrain, or no rows).
+
+    The highest, not the mean: as a block shows its most important state (:data:`RANK`), it
+    shows its dearest cell, so a band of mud one cell wide across a 512x512 map stays seen
+    (a mean would wash it out among the cheap cells of its blocks)."""
+    costs = grid.costs
+    if costs is None or not rows:
+        return None
+    blocked, width = grid.blocked, grid.width
+    best: list[float] | None = None
+    for y in rows:
+        a, b = y * width + x0, y * width + x1
+        row: Sequence[float] = costs[a:b]
+        if blocked.find(1, a, b) >= 0:  # an obstacle's cost is never paid: not shown
+            row = [0.0 if wall else cost for cost, wall in zip(row, blocked[a:b])]
+        if across > 1:
+            row = [max(row[i : i + across]) for i in range(0, len(row), across)]
+        best = list(row) if best is None else list(map(max, best, row))
+    return best
+
+
+def shaded(codes: list[int], costs: list[float] | None) -> list[int]:
+    """The overview's swatch (:func:`swatches`) of each block of ``codes``: its code, or, for
+    a free block with terrain, the ramp's step of its dearest cell (``costs``: :func:`block_costs`)."""
+    if costs is None:
+        return codes
+    ramp = len(COMPONENTS) - 1
+    return [ramp + level if code == FREE and (level := cost_level(cost)) else code
+            for code, cost in zip(codes, costs)]
+
+
 __all__ = [
     "RAMP_COMPONENTS",
     "RAMP_LEVELS",
     "RAMP_NAMES",
     "CellLooks",
     "block_codes",
+    "block_costs",
     "cost_level",
     "cost_mark",
     "cost_text",
     "row_codes",
     "row_costs",
+    "shaded",
     "swatches",
 ]

@@ -1,6 +1,7 @@
-"""The challenge panel: one of the tutorial's exercises, checked live on the map being edited.
+"""The challenge panel: an exercise (the tutorial's or a teacher's file), checked live on the map
+being edited.
 
-It quotes the exercise, shows BFS's and DFS's figures on the map as it is now, and says
+It quotes the exercise under its title, shows its searches' figures on the map as it is now, and says
 **Solved** the moment an edit satisfies the exercise -- or that an edit unsolved it.  What the
 figures are and whether they solve it comes from :mod:`tui_search.engine.exercises`; the app
 pushes each new verdict with :meth:`ChallengePanel.show`.
@@ -13,7 +14,8 @@ from typing import ClassVar
 from rich.text import Text
 from textual.widgets import Static
 
-from tui_search.engine.exercises import QUOTES, Verdict
+from tui_search.engine.exercise_file import Exercise
+from tui_search.engine.exercises import Verdict
 
 
 class ChallengePanel(Static):
@@ -44,16 +46,16 @@ class ChallengePanel(Static):
         self.was_solved = False  # the verdict before the last edit
         self.text = ""  # what it says, as plain text (for tests)
 
-    def show(self, exercise: int, verdict: Verdict | None, note: str = "") -> None:
+    def show(self, exercise: Exercise, verdict: Verdict | None, note: str = "") -> None:
         """The exercise's verdict on the map as it is now (None, with ``note`` saying why,
         when it cannot be checked)."""
         before = self.verdict.solved if self.verdict is not None else None
         self.was_solved = bool(before)
         self.verdict = verdict
-        self.border_title = f"Exercise {exercise}"
+        self.border_title = exercise.title
         style = self.get_component_rich_style
         out = Text()
-        out.append(QUOTES[exercise] + "\n", style("challenge--quote"))
+        out.append(exercise.text + "\n", style("challenge--quote"))
         if verdict is None:
             out.append(note, style("challenge--hint"))
         else:
@@ -64,8 +66,8 @@ class ChallengePanel(Static):
             else:
                 out.append("Not solved yet: ", style("challenge--unsolved"))
             out.append(verdict.reason)
-            if verdict.hint:
-                out.append(f"\nHint: {verdict.hint}", style("challenge--hint"))
+            if verdict.hints:
+                out.append(f"\nHint: {verdict.hints}", style("challenge--hint"))
         self.text = out.plain
         self.update(out)
 

@@ -11,7 +11,8 @@ mouse, the scrolling and the overview share:
   the cell and, where there is room, its depth or its costs;
 * **overview** -- half blocks (``▀`` with a foreground and a background colour), each half
   standing for a block of cells drawn by the state that matters most in it (see :data:`~tui_search.tui.cell_codes.RANK`), so
-  every row and column of a 512x512 map shows in a 140x45 terminal.
+  every row and column of a 512x512 map shows in a 140x45 terminal; a free block on a map with
+  terrain takes the ramp's colour of its dearest cell (:func:`~tui_search.tui.widgets.cell_style.block_costs`).
 
 The widget only draws what it is told (``show_run``, ``set_cursor``, ``set_grid``) and posts
 what the mouse did (``CellClicked``, ...); the screen decides what an edit means.
@@ -40,8 +41,10 @@ from tui_search.tui.widgets.cell_style import (
     RAMP_COMPONENTS,
     CellLooks,
     block_codes,
+    block_costs,
     row_codes,
     row_costs,
+    shaded,
     swatches,
 )
 from tui_search.tui.widgets.line_panel import CachedStyles, QuietScrollbars, window_strip
@@ -345,6 +348,12 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         the code of highest rank in it (None for no rows: a half below the map)."""
         return block_codes(self.grid, self.run, rows, x0, x1, self.geometry.across)
 
+    def _block_swatches(self, rows: range, x0: int, x1: int) -> list[int] | None:
+        """The swatch of each block: its code, a free block shaded by its dearest cell."""
+        codes = self._block_codes(rows, x0, x1)
+        costs = block_costs(self.grid, rows, x0, x1, self.geometry.across)
+        return None if codes is None else shaded(codes, costs)
+
     def _overview_line(self, line: int, sx: int, width: int) -> Strip:
         background = self.cached_style()
         geo = self.geometry
@@ -352,9 +361,9 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         if not upper_rows:
             return Strip.blank(width, background)
         columns = geo.visible_columns(sx, width)
-        upper = self._block_codes(upper_rows, columns.start, columns.stop)
+        upper = self._block_swatches(upper_rows, columns.start, columns.stop)
         assert upper is not None
-        lower = self._block_codes(lower_rows, columns.start, columns.stop)
+        lower = self._block_swatches(lower_rows, columns.start, columns.stop)
         x, y, _, _ = geo.cell_region(self.cursor)  # the cursor's character
         cursor_x = x - sx if y == line else -1
         cursor_upper = self.cursor[1] in upper_rows

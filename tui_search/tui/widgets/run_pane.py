@@ -41,6 +41,7 @@ class RunPane(Vertical):
         self.side_note = Static(note, classes="pane-note")
         self.map_box = Vertical(classes="pane-map-box")  # the room the map's cells fit
         self.lists = Vertical(classes="pane-lists")
+        self._run: Run | None = None  # the run last shown: the Code panel shows it on unfolding
 
     def compose(self) -> ComposeResult:
         with self.lists:  # docked first: beside the map, it spans the pane's whole height
@@ -71,6 +72,8 @@ class RunPane(Vertical):
         self.view.styles.max_height = arrangement.map_max_height or "100%"
         self.tree_panel.set_class(not arrangement.trees or code, "-folded")
         self.code_panel.set_class(not (arrangement.trees and code), "-folded")
+        if self._run is not None and not self.code_panel.has_class("-folded"):
+            self.code_panel.show(self._run)  # folded, it was not kept up to date
         # room for the map's title where the pane has it, else the map as narrow as it is
         self.view.styles.min_width = min(MAP_TITLE_WIDTH, max(0, arrangement.pane_width - 2))
 
@@ -79,6 +82,7 @@ class RunPane(Vertical):
         """Push ``run`` at its position to the map and the panels (``changed``: the cells
         whose look changed, None for all); ``title`` is the map's border title."""
         view = self.view
+        self._run = run
         view.show_run(run, changed)
         self.set_class(run is None, "-no-run")
         if run is not None:

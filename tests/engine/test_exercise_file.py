@@ -1,0 +1,135 @@
+"""Exercise files: the tutorial's two as shipped, a teacher's own, its errors, and edits the
+exercise does not allow."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from tests.helpers import MAPS
+from tui_search.engine.exercise_file import built_in_exercise, find_exercise, load_exercise
+from tui_search.engine.exercises import grade
+from tui_search.engine.mapfile import load_map
+from tui_search.engine.mapread import MapError
+
+#: Today's verdicts (before exercise files): map -> (exercise 1, exercise 2) solved, and the
+#: reasons the tutorial's exercises gave then.
+TODAY = {
+    "tutorial.txt": (False, False, "BFS expanded 22 nodes, DFS 7; both paths have 7 moves"),
+    "exercise1-bfs-wins.txt": (True, True, ("BFS expanded 5 nodes, DFS 20; BFS's path has 2 "
+                               "moves, DFS's 17")),
+    "exercise1-goal-moved.txt": (True, True, ("BFS expanded 5 nodes, DFS 18; BFS's path has 4 "
+                                 "moves, DFS's 8")),
+    "exercise2-dfs-longer.txt": (False, True, ("BFS expanded 32 nodes, DFS 9; BFS's path has 5 "
+                                 "moves, DFS's 8")),
+    "no-path.txt": (False, False, "no path to the goal (BFS expanded 30 nodes, DFS 30)"),
+}
+
+GREEDY = """\
+title = "Greedy is not optimal"
+text = "Move obstacles so that greedy best-first's path costs more than A*'s."
+map = "tutorial.txt"
+searches = ["greedy", "astar:manhattan"]
+edits = ["obstacles"]
+solved = "greedy.found and astar_manhattan.found and greedy.cost > astar_manhattan.cost"
+hint = "Greedy looks only at h."
+"""
+
+
+@pytest.mark.parametrize("name", TODAY)
+def test_the_shipped_files_give_today_s_verdicts(name: str) -> None:
+    one, two, reason = TODAY[name]
+    grid = load_map(MAPS / name)
+    first, second = grade(built_in_exercise(1), grid), grade(built_in_exercise(2), grid)
+    assert (first.solved, second.solved) == (one, two)
+    assert first.reason == reason
+    assert built_in_exercise(1).title == "Exercise 1" and find_exercise("2").number == 2
+
+
+def test_exercise_one_hints_at_more_than_the_goal_and_two_allows_anything() -> None:
+    moved = grade(built_in_exercise(1), load_map(MAPS / "exercise1-goal-moved.txt"))
+    assert moved.solved and moved.hint == ""
+    wins = grade(built_in_exercise(1), load_map(MAPS / "exercise1-bfs-wins.txt"))
+    assert wins.solved and wins.hint == (
+        "the exercise changes only the goal: here the map's size changed")
+    assert grade(built_in_exercise(2), load_map(MAPS / "exercise1-bfs-wins.txt")).hint == ""
+
+
+def write(tmp_path: Path, text: str, name: str = "greedy.toml") -> Path:
+    (tmp_path / "tutorial.txt").write_text((MAPS / "tutorial.txt").read_text())
+    path = tmp_path / name
+    path.write_text(text)
+    return path
+
+
+def test_a_teacher_s_exercise(tmp_path: Path) -> None:
+    ex = load_exercise(write(tmp_path, GREEDY))
+    assert ex.title == "Greedy is not optimal" and ex.name == "exercise greedy"
+    assert ex.fields == ("greedy.found", "astar_manhattan.found", "greedy.cost",
+                         "astar_manhattan.cost")
+    verdict = grade(ex, ex.grid.copy())
+    assert not verdict.solved and verdict.hints == "Greedy looks only at h." == ex.hint
+    assert verdict.hint == ""
+    assert verdict.reason == "both found the goal; both paths cost 8.66"
+    assert verdict.figures["greedy.cost"] == verdict.figures["astar_manhattan.cost"]
+
+
+def test_an_edit_outside_edits_fails_the_exercise(tmp_path: Path) -> None:
+    ex = load_exercise(write(tmp_path, GREEDY))
+    grid = ex.grid.copy()
+    grid.start = (0, 1)
+    grid.set_blocked((3, 0), True)  # an obstacle: allowed
+    verdict = grade(ex, grid)
+    assert not verdict.solved and verdict.reason == (
+        "changed the start, which the exercise does not allow")
+    grid.goal = (0, 5)
+    assert grade(ex, grid).reason == (
+        "changed the start and the goal, which the exercise does not allow")
+    hinted = load_exercise(write(tmp_path, GREEDY + 'other_edits = "hint"\n'))
+    verdict = grade(hinted, grid)
+    assert verdict.hint.startswith("the exercise changes only the obstacles: here the start "
+                                   "and the goal changed")
+    bigger = load_map(MAPS / "exercise1-bfs-wins.txt")
+    assert grade(ex, bigger).reason == (
+        "changed the map's size, which the exercise does not allow")
+
+
+def test_a_generated_map(tmp_path: Path) -> None:
+    text = GREEDY.replace('map = "tutorial.txt"', 'generate = "maze 15x11 7"')
+    ex = load_exercise(write(tmp_path, text))
+    assert (ex.grid.width, ex.grid.height) == (15, 11) and ex.grid.start is not None
+
+
+@pytest.mark.parametrize(("change", "where", "message"), [
+    (("solved = \"greedy.found and", "solved = \"greedy.fund and"), ":6:18",
+     "solved: 'greedy.fund': unknown field 'fund'"),
+    (("solved = \"greedy.found and", "solved = \"ucs.found and"), ":6:11",
+     "solved: 'ucs' is not one of the exercise's searches (greedy, astar_manhattan)"),
+    (("greedy.cost >", "greedy.cost >>"), ":6:67", "solved: expected a number"),
+    (("title = ", "title "), ":1:7", "not TOML: Expected '=' after a key"),
+    (('searches = ["greedy", ', 'searches = ["nope", '), ":4:12",
+     "searches: unknown algorithm 'nope'"),
+    (('edits = ["obstacles"]', 'edits = ["walls"]'), ":5:9", "edits: unknown edit 'walls'"),
+    (('map = "tutorial.txt"', 'map = "gone.txt"'), ":3:7", "map: "),
+    (('map = "tutorial.txt"', 'generate = "maze 1x1 1"'), ":3:12", "generate: "),
+    (('map = "tutorial.txt"', 'mop = "tutorial.txt"'), ":3:7", "mop: unknown key"),
+    (('edits = ["obstacles"]', 'edits = 3'), ":5:9", "edits: expected a list of strings"),
+    (('title = "Greedy is not optimal"', ''), "", "the exercise has no title"),
+])
+def test_a_bad_file_names_its_line_and_column(tmp_path: Path, change: tuple[str, str],
+                                               where: str, message: str) -> None:
+    path = write(tmp_path, GREEDY.replace(*change))
+    with pytest.raises(MapError) as caught:
+        load_exercise(path)
+    assert str(caught.value).startswith(f"{path}{where}: {message}"), str(caught.value)
+
+
+def test_a_multi_line_condition_names_the_line_it_is_on(tmp_path: Path) -> None:
+    text = GREEDY.replace('solved = "greedy.found and astar_manhattan.found and',
+                          'solved = """\ngreedy.found and\n  astar_manhattan.fund and')
+    text = text.replace('astar_manhattan.cost"\n', 'astar_manhattan.cost"""\n')
+    path = write(tmp_path, text)
+    with pytest.raises(MapError) as caught:
+        load_exercise(path)
+    assert str(caught.value).startswith(f"{path}:8:19: solved: 'astar_manhattan.fund'")

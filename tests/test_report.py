@@ -1,0 +1,142 @@
+"""The class report: ``--exercise E --headless MAP...`` grades a folder of maps, a line a map
+and a summary, ``--json`` a list, ``--csv`` a table; one bad map never stops it."""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import shutil
+from pathlib import Path
+
+import pytest
+
+from tests.helpers import MAPS
+from tests.test_cli import run_cli
+
+GREEDY = """\
+title = "Greedy is not optimal"
+text = "Move obstacles so that greedy best-first's path costs more than A*'s."
+map = "tutorial.txt"
+searches = ["greedy", "astar"]
+edits = ["obstacles"]
+solved = "greedy.found and astar.found and greedy.cost > astar.cost"
+"""
+
+
+@pytest.fixture
+def folder(tmp_path: Path) -> list[str]:
+    """A class's maps for exercise 1: two solved, one not, one unreadable, one with no goal."""
+    for name in ("exercise1-goal-moved.txt", "exercise1-bfs-wins.txt", "tutorial.txt",
+                 "broken.txt"):
+        shutil.copy(MAPS / name, tmp_path / name)
+    (tmp_path / "no-goal.txt").write_text("S..\n...\n")
+    return sorted(str(p) for p in tmp_path.glob("*.txt"))
+
+
+def test_a_line_a_map_and_the_summary(capsys, folder: list[str]) -> None:
+    code, out, err = run_cli(capsys, "--exercise", "1", "--headless", *folder)
+    lines = out.splitlines()
+    assert code == 1 and err == "" and len(lines) == len(folder) + 1
+    by_name = {Path(line.split(": ")[0]).name: line for line in lines[:-1]}
+    assert by_name["broken.txt"].endswith(
+        "broken.txt: unreadable — line 4, column 7: unknown cell character 'q'")
+    assert "no-goal.txt: unreadable — no goal 'G' in the map" in by_name["no-goal.txt"]
+    assert by_name["exercise1-goal-moved.txt"].endswith(
+        ": solved — BFS expanded 5 nodes, DFS 18; BFS's path has 4 moves, DFS's 8")
+    assert by_name["exercise1-bfs-wins.txt"].endswith(
+        "(hint: the exercise changes only the goal: here the map's size changed)")
+    assert ": not solved — BFS expanded 22 nodes" in by_name["tutorial.txt"]
+    assert lines[-1] == "2 of 5 solved, 1 not solved, 2 unreadable"
+
+
+def test_exit_0_only_when_every_map_is_solved(capsys, folder: list[str]) -> None:
+    solved = [f for f in folder if "exercise1" in f]
+    code, out, _ = run_cli(capsys, "--exercise", "1", "--headless", *solved)
+    assert code == 0 and out.splitlines()[-1] == "2 of 2 solved"
+
+
+def test_json_is_a_list_an_object_a_map(capsys, folder: list[str]) -> None:
+    code, out, _ = run_cli(capsys, "--exercise", "1", "--headless", "--json", *folder)
+    rows = json.loads(out)
+    assert code == 1 and [Path(r["map"]).name for r in rows] == [Path(f).name for f in folder]
+    verdicts = {Path(r["map"]).name: r["verdict"] for r in rows}
+    assert verdicts == {"broken.txt": "unreadable", "exercise1-bfs-wins.txt": "solved",
+                        "exercise1-goal-moved.txt": "solved", "no-goal.txt": "unreadable",
+                        "tutorial.txt": "not solved"}
+    moved = next(r for r in rows if r["map"].endswith("goal-moved.txt"))
+    assert moved["figures"] == {"bfs.found": True, "dfs.found": True, "bfs.expanded": 5,
+                                "dfs.expanded": 18}
+    assert moved["bfs"]["moves"] == 4 and moved["solved"] is True
+
+
+def test_csv_has_a_column_per_condition_field(capsys, folder: list[str]) -> None:
+    code, out, _ = run_cli(capsys, "--exercise", "1", "--headless", "--csv", *folder)
+    rows = list(csv.reader(io.StringIO(out)))
+    assert code == 1
+    assert rows[0] == ["file", "verdict", "bfs.found", "dfs.found", "bfs.expanded",
+                       "dfs.expanded"]
+    table = {Path(r[0]).name: r[1:] for r in rows[1:]}
+    assert table["exercise1-goal-moved.txt"] == ["solved", "true", "true", "5", "18"]
+    assert table["tutorial.txt"] == ["not solved", "true", "true", "22", "7"]
+    assert table["broken.txt"] == ["unreadable", "", "", "", ""]
+
+
+def test_a_teacher_s_exercise_file_grades_a_class(capsys, tmp_path: Path) -> None:
+    shutil.copy(MAPS / "tutorial.txt", tmp_path / "tutorial.txt")
+    exercise = tmp_path / "greedy.toml"
+    exercise.write_text(GREEDY)
+    moved = tmp_path / "moved-start.txt"
+    moved.write_text((MAPS / "tutorial.txt").read_text().replace("S#...#", ".#...#").replace(
+        "......\n", "S.....\n"))
+    code, out, _ = run_cli(capsys, "--exercise", str(exercise), "--headless",
+                           str(tmp_path / "tutorial.txt"), str(moved))
+    assert code == 1
+    assert out.splitlines()[1] == (f"{moved}: not solved — changed the start, which the "
+                                   "exercise does not allow")
+    assert out.splitlines()[-1] == "0 of 2 solved, 2 not solved"
+
+
+def test_a_bad_exercise_file_is_bad_input(capsys, tmp_path: Path) -> None:
+    exercise = tmp_path / "bad.toml"
+    exercise.write_text(GREEDY.replace("greedy.cost >", "greedy.cost > >"))
+    code, out, err = run_cli(capsys, "--exercise", str(exercise), "--headless")
+    assert code == 2 and out == ""
+    assert err.startswith(f"tui-search: {exercise}:6:58: solved: expected a number")
+    assert err.count("\n") == 1
+
+
+@pytest.mark.parametrize(("argv", "message"), [
+    (["--headless", "a.txt", "b.txt"], "one MAP at a time"),
+    (["--exercise", "1", "a.txt", "b.txt"], "one MAP at a time"),
+    (["--headless", "--csv"], "--csv is for --exercise E --headless"),
+    (["--exercise", "1", "--csv"], "--json, --csv and --trace go with --headless"),
+])
+def test_several_maps_and_csv_only_for_the_report(capsys, argv: list[str],
+                                                  message: str) -> None:
+    code, out, err = run_cli(capsys, *argv)
+    assert code == 2 and out == "" and message in err
+
+
+def test_two_hundred_tutorial_maps_grade_well_within_three_seconds(tmp_path: Path) -> None:
+    """The report's speed: 200 tutorial-sized maps graded in one process (the README says
+    about 0.5 s for the whole command, start-up included, on the project's 2-core machine)."""
+    import time
+
+    from tui_search.engine.exercise_file import built_in_exercise
+    from tui_search.engine.exercises import grade
+    from tui_search.engine.mapfile import load_map
+
+    rows = [r for r in (MAPS / "tutorial.txt").read_text().splitlines() if r[0] != ";"]
+    names = []
+    for i in range(200):
+        cells = [list(r.replace("G", ".")) for r in rows]
+        free = [(x, y) for y, r in enumerate(cells) for x, c in enumerate(r) if c == "."]
+        x, y = free[i % len(free)]
+        cells[y][x] = "G"
+        names.append(tmp_path / f"student{i:03}.txt")
+        names[-1].write_text("\n".join("".join(r) for r in cells) + "\n")
+    began = time.perf_counter()
+    verdicts = [grade(built_in_exercise(1), load_map(n)) for n in names]
+    assert time.perf_counter() - began < 3
+    assert 0 < sum(v.solved for v in verdicts) < 200
