@@ -105,7 +105,7 @@ def test_bfs_cost_matches_the_scenario_optimum_when_corners_are_respected(capsys
         ([TUTORIAL, "--headless", "--start", "x"], "tui-search: error: --start 'x'"),
         ([TUTORIAL, "--headless", "--start", "9,9"], f"tui-search: {TUTORIAL}"),
         ([TUTORIAL, "--headless", "--goal", "1,0"], f"tui-search: {TUTORIAL}"),
-        ([TUTORIAL, "--json"], "tui-search: error: --json, --csv and --trace go with --headless"),
+        ([TUTORIAL, "--json"], "tui-search: error: --json, --csv, --trace and --check-trace go"),
         ([TUTORIAL, "--headless", "--scen", "x.scen"], "tui-search: error: --scen and --scen-row"),
         ([TUTORIAL, "--headless", "--json", "--trace", "-"], "tui-search: error: --trace -"),
         ([str(MAPS), "--headless"], f"tui-search: {MAPS}"),

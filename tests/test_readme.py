@@ -59,7 +59,7 @@ def expected_exit(shown: list[str]) -> int:
     first = shown[0]
     if first.startswith("tui-search:"):
         return EXIT_BAD_INPUT
-    if ": no path" in first or '"found": false' in first:
+    if ": no path" in first or '"found": false' in first or first.startswith("step "):
         return EXIT_NO_PATH
     return EXIT_FOUND
 

@@ -26,6 +26,7 @@ from tui_search.engine.run import MAX_STEPS
 from tui_search.engine.semantics import CORNER_RULES, GOAL_TESTS, VISIT_RULES
 from tui_search.flags import (
     UsageError,
+    changed_choice_flags,
     check_generate,
     contenders_from,
     load_problem,
@@ -39,6 +40,7 @@ from tui_search.headless import (
     run_headless,
 )
 from tui_search.report import run_exercise
+from tui_search.trace_cli import run_check_trace
 from tui_search.tui.themes import THEMES  # plain data: no Textual
 
 if TYPE_CHECKING:
@@ -149,6 +151,11 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--trace", metavar="FILE",
                    help="with --headless: write one JSON line per expansion to FILE "
                    "('-' for stdout, without --json)")
+    p.add_argument("--check-trace", metavar="FILE",
+                   help="with --headless: compare a trace another program wrote (the --trace "
+                   "format) with -a's search under the choice flags, step by step, or without "
+                   "-a find the searches it matches longest: exit 0 a match, 1 a difference, "
+                   "2 a malformed trace")
     from tui_search import serve  # the flags of --serve (textual-serve only when serving)
 
     serve.add_arguments(p)
@@ -207,11 +214,6 @@ def run_app(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
     return app.return_code or 0
 
 
-#: The search flags an exercise leaves at the tutorial's defaults (it grades BFS and DFS as
-#: the tutorial runs them).
-_SEARCH_FLAGS = ("corners", "visit", "goal_test", "heuristic")
-
-
 def check_modes(args: argparse.Namespace) -> None:
     """Refuse the combinations of --compare, --exercise and the rest that make no sense; then
     resolve ``-a``'s default."""
@@ -229,11 +231,7 @@ def check_modes(args: argparse.Namespace) -> None:
     args.exercise_read = None
     if args.exercise is not None:
         args.exercise_read = read_exercise(args.exercise)
-        changed = [f"--{f.replace('_', '-')}" for f in _SEARCH_FLAGS
-                   if getattr(args, f) is not None]
-        changed += [flag for flag, on in (("--order", args.order != ",".join(DEFAULT_ORDER)),
-                                          ("--no-corner-cutting", args.no_corner_cutting),
-                                          ("--tree-search", args.tree_search)) if on]
+        changed = changed_choice_flags(args)
         if changed:
             raise UsageError(f"--exercise grades with the tutorial's rules: leave out "
                              f"{', '.join(changed)}")
@@ -283,12 +281,13 @@ def main(argv: list[str] | None = None) -> int:
         from tui_search import serve
 
         serve.check_args(args)
-        if (args.json or args.trace or args.csv) and not args.headless:
-            raise UsageError("--json, --csv and --trace go with --headless")
+        if (args.json or args.trace or args.csv or args.check_trace) and not args.headless:
+            raise UsageError("--json, --csv, --trace and --check-trace go with --headless")
         if args.csv and (args.json or not args.exercise):
             raise UsageError("--csv is for --exercise E --headless, without --json")
         if args.theme and args.headless:
             raise UsageError("--theme is for the app, not --headless")
+        algorithm_given = args.algorithm is not None
         check_modes(args)
         check_generate(args)
         if args.output is not None:
@@ -302,6 +301,8 @@ def main(argv: list[str] | None = None) -> int:
         grid, path = load_problem(args)
         if args.headless and args.compare:
             return run_compare(args, grid, path)
+        if args.check_trace is not None:
+            return run_check_trace(args, grid, path, algorithm_given)
         if args.headless:
             return run_headless(args, grid, path)
         semantics_from(args)  # report bad choices before the screen changes

@@ -21,7 +21,7 @@ from tui_search.engine.generate import (
     generated_text,
     make_recipe,
 )
-from tui_search.engine.grid import Cell, Grid, parse_order
+from tui_search.engine.grid import DEFAULT_ORDER, Cell, Grid, parse_order
 from tui_search.engine.heuristics import DEFAULT_HEURISTIC
 from tui_search.engine.mapfile import load_map, parse_cell, parse_map_text
 from tui_search.engine.mapread import MapError
@@ -123,6 +123,19 @@ def write_generated(args: argparse.Namespace) -> int:
     except MapError as exc:
         raise UsageError(f"--output {describe_name(args.output)}: {exc.message}") from None
     return 0
+
+
+#: The choice flags whose default is None (not given).
+_CHOICE_FLAGS = ("corners", "visit", "goal_test", "heuristic")
+
+
+def changed_choice_flags(args: argparse.Namespace) -> list[str]:
+    """The choice flags given a value other than their default (``--visit``, ``--order``)."""
+    changed = [f"--{f.replace('_', '-')}" for f in _CHOICE_FLAGS if getattr(args, f) is not None]
+    changed += [flag for flag, on in (("--order", args.order != ",".join(DEFAULT_ORDER)),
+                                      ("--no-corner-cutting", args.no_corner_cutting),
+                                      ("--tree-search", args.tree_search)) if on]
+    return changed
 
 
 def semantics_from(args: argparse.Namespace, checked: bool = True) -> Semantics:

@@ -1,0 +1,121 @@
+"""Diagnosing a trace without -a: student-style searches (tests/engine/student_searches.py)
+get the search they are, or the closest ones and where they part."""
+
+from __future__ import annotations
+
+import io
+import time
+
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from tests.engine.student_searches import (
+    astar_ties_on_h,
+    bfs,
+    bfs_visit_on_expand,
+    dfs_recursive,
+    dfs_stack,
+)
+from tests.engine.test_search import random_grids
+from tests.helpers import grid_from_rows
+from tui_search.engine.algorithms import ALGORITHMS
+from tui_search.engine.grid import Grid
+from tui_search.engine.semantics import Semantics
+from tui_search.engine.trace_diagnose import diagnose, inferred_orders
+from tui_search.engine.trace_read import read_trace
+from tui_search.headless import search_headless
+
+ROWS = ["S.....", ".##.#.", "...#..", ".#...#", "...#.G", "......"]
+GRID = grid_from_rows(ROWS)
+
+
+def diagnosis_of(text: str) -> list[str]:
+    return diagnose(read_trace(text, GRID, "t"), GRID).text().splitlines()
+
+
+def test_bfs_with_its_order_and_the_moves_it_never_made() -> None:
+    lines = diagnosis_of(bfs(ROWS, "N,E,S,W"))
+    assert lines[0] == ("your trace is BFS (order E,S,W; visit on generate; goal test on "
+                        "generate), for all 25 steps")
+    assert ("  note: the trace never moves N: where in the order, or whether at all, cannot "
+            "be told") in lines
+
+
+def test_bfs_visiting_on_expand() -> None:
+    lines = diagnosis_of(bfs_visit_on_expand(ROWS, "E,S,W,N"))
+    assert lines[0] == ("your trace is BFS (order E,S,W,N; visit on expand; goal test on "
+                        "generate), for all 25 steps")
+    assert lines[1].startswith("  next: UCS (order E,S,W,N; tree search; goal test on "
+                               "expand) up to step 18")
+
+
+def test_a_stack_dfs_with_another_order() -> None:
+    lines = diagnosis_of(dfs_stack(ROWS, "S,E,N,W"))
+    assert lines[0] == ("your trace is DFS (order S,E,W,N; visit on generate; goal test on "
+                        "generate), for all 23 steps")
+    assert ("  note: 6 orders of its moves fit the order it added them in: "
+            "S,E,W,N or S,E,N,W or S,W,E,N or S,W,N,E or ...") in lines
+
+
+def test_a_bfs_that_takes_the_newest_entry_once_is_closest_to_bfs() -> None:
+    lines = diagnosis_of(bfs(ROWS, "N,E,S,W", bug_at=6))
+    assert lines[0] == "closest:"
+    assert lines[1] == ("  BFS (order E,S,W; visit on generate; goal test on generate) up to "
+                        "step 5; then step 6: BFS expands (3,0) next (the queue's front); your "
+                        "trace expands (0,3), which BFS would expand at step 8")
+
+
+def test_orders_follow_the_order_successors_were_added() -> None:
+    text = '{"node": [0, 0], "successors": [[1, 0], [0, 1]]}\n'
+    assert inferred_orders(read_trace(text, GRID, "t")) == [("E", "S")]
+
+
+def test_a_6x6_map_is_diagnosed_within_two_seconds() -> None:
+    text = dfs_stack(ROWS, "S,E,N,W")
+    began = time.process_time()  # CPU time: a busy machine does not fail it
+    diagnose(read_trace(text, GRID, "t"), GRID)
+    assert time.process_time() - began < 2.0
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(random_grids(max_side=5), st.sampled_from(list(ALGORITHMS)),
+       st.sampled_from(["generate", "expand"]), st.sampled_from(["always", "never"]))
+def test_the_apps_own_trace_is_diagnosed_as_a_full_match(grid: Grid, key: str, visit: str,
+                                                         corners: str) -> None:
+    algo = ALGORITHMS[key]
+    sem = Semantics(corners=corners,
+                    visit="generate" if algo.iterative or algo.weighted else visit)
+    out = io.StringIO()
+    if search_headless(grid, key, sem, 300, out).gave_up or not out.getvalue():
+        return  # gave up (the trace is cut short), or the start is the goal
+    diagnosis = diagnose(read_trace(out.getvalue(), grid, "t"), grid)
+    assert diagnosis.matches, diagnosis.text()
+
+
+def test_an_astar_breaking_ties_on_h_is_named_with_the_tie() -> None:
+    lines = diagnosis_of(astar_ties_on_h(ROWS, "N,E,S,W"))
+    assert lines[0] == "closest:"
+    assert lines[1].startswith("  Greedy (order E,S,W; goal test on expand; heuristic "
+                               "manhattan) up to step 8; then step 9:")
+    assert lines[2] == ("  A* (order E,S,W; goal test on expand; heuristic octile) up to step "
+                        "2; then step 3: A* expands (0,1) next (the lowest f in the priority "
+                        "queue); your trace expands (2,0), which A* would expand at step 4; f "
+                        "ties at 7.24: your trace took the lower h (5.24, not 6.24)")
+
+
+def test_with_a_the_tie_is_named_too() -> None:
+    from tui_search.engine.trace_check import check_trace
+
+    verdict = check_trace(read_trace(astar_ties_on_h(ROWS, "N,E,S,W"), GRID, "t"), GRID,
+                          "astar", Semantics(order=("N", "E", "S", "W"), heuristic="manhattan"))
+    assert verdict.difference is not None and verdict.difference.tie == "h"
+    assert verdict.difference.message.endswith(
+        "f ties at 9.00: your trace took the lower h (7.00, not 8.00)")
+
+
+def test_a_recursive_dfs_is_recognised() -> None:
+    lines = diagnosis_of(dfs_recursive(ROWS, "S,E,N,W"))
+    assert lines[0] == ("your trace is a recursive DFS (order S,E,N; goal test on expand), for "
+                        "all 12 steps")
+    assert any(line.startswith("  note: no stack DFS explains it past step ")
+               and line.endswith("; a recursive DFS does") for line in lines)

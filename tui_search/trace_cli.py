@@ -1,0 +1,65 @@
+"""``--check-trace FILE``: compare a trace another program wrote with one of the app's searches
+(:mod:`tui_search.engine.trace_check`) and print the verdict as text or JSON.
+
+No Textual or Rich here (the headless path).
+"""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from tui_search.engine.filenames import describe_name
+from tui_search.engine.grid import Grid
+from tui_search.engine.mapread import MapError
+from tui_search.flags import UsageError, changed_choice_flags, map_name, semantics_from
+
+EXIT_MATCH, EXIT_DIFFERENCE = 0, 1
+
+
+def run_check_trace(args: argparse.Namespace, grid: Grid, path: Path | None,
+                    algorithm_given: bool) -> int:
+    """Read the trace, check it against ``-a``'s search, print the verdict; exit 0 on a
+    match, 1 on a difference (a malformed trace is a MapError: exit 2)."""
+    from tui_search.engine.trace_check import check_trace
+    from tui_search.engine.trace_read import load_trace
+    from tui_search.headless import to_json
+
+    for flag in ("trace", "compare", "exercise"):
+        if getattr(args, flag):
+            raise UsageError(f"--check-trace checks one search: leave out --{flag}")
+    where = describe_name(map_name(args, path))
+    missing = [name for name in ("start", "goal") if getattr(grid, name) is None]
+    if missing:
+        raise MapError(where, f"the map has no {' or '.join(missing)}: give --start X,Y "
+                       "--goal X,Y")
+    if not algorithm_given:
+        return _diagnose(args, grid, where)
+    semantics = semantics_from(args)
+    trace = load_trace(args.check_trace, grid)
+    verdict = check_trace(trace, grid, args.algorithm, semantics, max_steps=args.max_steps)
+    if args.json:
+        print(to_json({"trace": describe_name(args.check_trace), "map": where,
+                       **verdict.as_json()}))
+    else:
+        print(verdict.text())
+    return EXIT_MATCH if verdict.matches else EXIT_DIFFERENCE
+
+
+def _diagnose(args: argparse.Namespace, grid: Grid, where: str) -> int:
+    """Without ``-a``: the searches and choices that match the trace longest."""
+    from tui_search.engine.trace_diagnose import diagnose
+    from tui_search.engine.trace_read import load_trace
+    from tui_search.headless import to_json
+
+    given = changed_choice_flags(args)
+    if given:
+        raise UsageError(f"without -a, --check-trace tries every search and choice: give -a "
+                         f"to check {', '.join(given)}")
+    diagnosis = diagnose(load_trace(args.check_trace, grid), grid, args.max_steps)
+    if args.json:
+        print(to_json({"trace": describe_name(args.check_trace), "map": where,
+                       **diagnosis.as_json()}))
+    else:
+        print(diagnosis.text())
+    return EXIT_MATCH if diagnosis.matches else EXIT_DIFFERENCE
