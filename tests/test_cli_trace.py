@@ -128,3 +128,12 @@ def test_a_trace_cut_at_max_steps_matches_with_the_same_limit(capsys, tmp_path: 
     assert code == 0 and out.startswith("your trace is BFS (")
     code, out, _ = run_cli(capsys, *argv[:-2], "--check-trace", str(trace))
     assert code == 1 and out.startswith("step 41: your trace ends after step 40; BFS goes on")
+
+
+@pytest.mark.parametrize("flag", [["--exercise", "1"], ["--compare", "bfs,dfs"]])
+def test_check_trace_with_an_exercise_or_a_comparison_is_refused(capsys, tmp_path, flag) -> None:
+    trace = tmp_path / "t.jsonl"
+    trace.write_text('{"node": [0, 0], "successors": []}\n')
+    code, out, err = run_cli(capsys, str(MAPS / "tutorial.txt"), "--headless", "--check-trace",
+                             str(trace), *flag)
+    assert code == 2 and out == "" and "--check-trace checks one trace" in err

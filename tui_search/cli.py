@@ -287,6 +287,9 @@ def main(argv: list[str] | None = None) -> int:
             raise UsageError("--csv is for --exercise E --headless, without --json")
         if args.theme and args.headless:
             raise UsageError("--theme is for the app, not --headless")
+        if args.check_trace is not None and (args.exercise or args.compare):
+            raise UsageError("--check-trace checks one trace against one search: leave out "
+                             f"--{'exercise' if args.exercise else 'compare'}")
         algorithm_given = args.algorithm is not None
         check_modes(args)
         check_generate(args)
