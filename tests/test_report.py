@@ -110,7 +110,7 @@ def test_a_bad_exercise_file_is_bad_input(capsys, tmp_path: Path) -> None:
     (["--headless", "a.txt", "b.txt"], "one MAP at a time"),
     (["--exercise", "1", "a.txt", "b.txt"], "one MAP at a time"),
     (["--headless", "--csv"], "--csv is for --exercise E --headless"),
-    (["--exercise", "1", "--csv"], "--json, --csv and --trace go with --headless"),
+    (["--exercise", "1", "--csv"], "--json, --csv, --trace and --check-trace go with --headless"),
 ])
 def test_several_maps_and_csv_only_for_the_report(capsys, argv: list[str],
                                                   message: str) -> None:
