@@ -80,6 +80,17 @@ def test_the_served_apps_command_line_carries_the_apps_flags_and_none_of_the_ser
     assert app_args.app_memory is None and app_args.visitor is None
 
 
+@pytest.mark.parametrize("exercise", ["1", "class.toml"])
+def test_the_served_apps_get_the_terrain_and_exercise_files_as_absolute_paths(
+        tmp_path, monkeypatch, exercise: str) -> None:
+    monkeypatch.chdir(tmp_path)
+    words = served_args(build_parser(), parse("--terrain", "t.txt", "--exercise", exercise,
+                                              "--serve"))
+    app_args = parse(*words)
+    assert app_args.terrain == str(tmp_path / "t.txt")
+    assert app_args.exercise == (exercise if exercise == "1" else str(tmp_path / exercise))
+
+
 def test_the_web_extra_is_found_without_importing_it() -> None:
     from tui_search.serve import web_extra_installed
 

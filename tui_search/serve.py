@@ -41,8 +41,9 @@ DEFAULT_PORT = 8000
 MAX_VISITORS = 60
 #: The flags that configure the server, not the visitors' apps.
 SERVER_FLAGS = ("serve", "host", "port", "save_dir", "shared_save_dir", "app_memory")
-#: Flags whose value is a file: given to the visitors' apps as absolute paths.
-FILE_FLAGS = ("map", "scen")
+#: Flags whose value is a file: given to the visitors' apps as absolute paths (``--exercise``
+#: only when it names a file, not the tutorial's ``1`` or ``2``).
+FILE_FLAGS = ("map", "scen", "terrain")
 #: What the served app cannot do (the flags it refuses).
 NOT_SERVED = {"headless": "--headless", "json": "--json", "trace": "--trace"}
 #: A visitor's app using more memory than this (MB) is ended: the tutorial's uses ~40, and a
@@ -159,7 +160,7 @@ def served_args(parser: argparse.ArgumentParser, args: argparse.Namespace) -> li
         value = getattr(args, dest, None)
         if value is None or value is False or value == action.default:
             continue
-        if dest in FILE_FLAGS:
+        if dest in FILE_FLAGS or (dest == "exercise" and str(value) not in ("1", "2")):
             value = os.path.abspath(value)
         if not action.option_strings:
             positional.append(str(value))

@@ -147,3 +147,11 @@ def test_a_movingai_save_keeps_its_terrain_letters(tmp_path) -> None:
     save_map(grid, path, MOVINGAI)
     assert path.read_text().endswith("map\nS@T\nGSW\n")
     assert costs_of(load_map(path, terrain=table)) == costs_of(grid)
+
+
+def test_a_comment_that_only_begins_with_terrain_stays_a_comment() -> None:
+    text = "; terrain is rough here\n; terrain f 5\n;terrain\nSf.\n..G\n"
+    grid = parse_map_text(text, "m.txt")
+    assert grid.costs is not None and grid.costs[1] == 5.0
+    with pytest.raises(MapError, match=r"m.txt:1:\d+: bad cost"):
+        parse_map_text("; terrain f five\nSf.\n..G\n", "m.txt")

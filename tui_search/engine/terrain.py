@@ -28,7 +28,9 @@ _COST = re.compile(r"[0-9]+(?:\.[0-9]*)?|\.[0-9]+")
 #: Costs above this are refused: a typo, not a terrain (and no sum of them loses precision).
 MAX_COST = 1e9
 #: A comment line of a text map that is a table line: ``; terrain f 5``.
-_COMMENT_TABLE = re.compile(r"\s*;\s*terrain\s+(.*)$")
+#: A comment line that is a table's line: ``; terrain CHAR COST`` (one character, one word).
+#: Any other comment, ``; terrain is rough here`` included, stays a comment.
+_COMMENT_TABLE = re.compile(r"\s*;\s*terrain\s+(\S\s+\S+)\s*$")
 
 #: The text format's own characters and what they mean (None: blocked), which no table
 #: redefines: the digits cost themselves.
