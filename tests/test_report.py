@@ -140,3 +140,19 @@ def test_two_hundred_tutorial_maps_grade_well_within_three_seconds(tmp_path: Pat
     verdicts = [grade(built_in_exercise(1), load_map(n)) for n in names]
     assert time.perf_counter() - began < 3
     assert 0 < sum(v.solved for v in verdicts) < 200
+
+
+def test_a_teachers_exercise_without_a_map_starts_on_its_own_map(capsys, tmp_path) -> None:
+    from tui_search.cli import build_parser, check_modes
+    from tui_search.flags import load_problem
+
+    exercise = tmp_path / "maze.toml"
+    exercise.write_text('title = "Maze"\ntext = "Fewer for DFS."\ngenerate = "maze 15x11 7"\n'
+                        'searches = ["bfs", "dfs"]\nedits = ["obstacles"]\n'
+                        'solved = "dfs.expanded < bfs.expanded"\n')
+    code, out, _ = run_cli(capsys, "--exercise", str(exercise), "--headless")
+    assert code == 0 and out.startswith("maze.toml's map: exercise maze solved")
+    args = build_parser().parse_args(["--exercise", str(exercise)])
+    check_modes(args)
+    grid, path = load_problem(args)  # what the app opens
+    assert (grid.width, grid.height, path) == (15, 11, None)

@@ -25,11 +25,13 @@ from tui_search.engine.mapread import MapError
 from tui_search.engine.run import MAX_STEPS
 from tui_search.engine.semantics import CORNER_RULES, GOAL_TESTS, VISIT_RULES
 from tui_search.flags import (
+    TUTORIAL_NAME,
     UsageError,
     changed_choice_flags,
     check_generate,
     contenders_from,
     load_problem,
+    map_name,
     semantics_from,
     write_generated,
 )
@@ -191,9 +193,10 @@ def build_app(args: argparse.Namespace, grid: Grid, path: Path | None) -> Search
 
 
 def app_title(args: argparse.Namespace) -> str:
-    """The app's title for a map with no file: a generated map's recipe, or the tutorial."""
-    recipe = getattr(args, "recipe", None)
-    return recipe.title if recipe is not None else BUILT_IN_TITLE
+    """The app's title for a map with no file: a generated map's recipe, a teacher's
+    exercise's own map, or the tutorial."""
+    name = map_name(args, None)
+    return BUILT_IN_TITLE if name == TUTORIAL_NAME else name
 
 
 def run_app(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import argparse
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from tui_search.engine.algorithms import ALGORITHMS, DEFAULT_ALGORITHM, get_algorithm
 from tui_search.engine.compare import Contender, parse_compare
@@ -29,6 +30,9 @@ from tui_search.engine.mapwrite import save_new
 from tui_search.engine.scenarios import check_scenario_map, check_scenario_matches, load_scenario
 from tui_search.engine.semantics import Semantics
 from tui_search.engine.terrain import load_terrain
+
+if TYPE_CHECKING:
+    from tui_search.engine.exercise_file import Exercise
 
 TUTORIAL_NAME = "tutorial.txt"
 
@@ -59,6 +63,13 @@ def load_problem(args: argparse.Namespace) -> tuple[Grid, Path | None]:
             raise UsageError("--scen needs a MAP, not --generate")
         text = generated_text(recipe)
         return parse_map_text(text, recipe.title, start=start, goal=goal, terrain=terrain), None
+    own = _teachers_exercise(args)
+    if args.map is None and own is not None:  # a teacher's exercise starts on its own map
+        if args.scen:
+            raise UsageError("--scen needs a MAP")
+        grid = own.grid.copy()
+        grid.start, grid.goal = start or grid.start, goal or grid.goal
+        return grid, None
     if args.map is None:
         if args.scen:
             raise UsageError("--scen needs a MAP")
@@ -87,11 +98,23 @@ def load_problem(args: argparse.Namespace) -> tuple[Grid, Path | None]:
     return grid, path
 
 
+def _teachers_exercise(args: argparse.Namespace) -> Exercise | None:
+    """``--exercise FILE``'s exercise (read by the command line), None for none or the
+    tutorial's 1 and 2 (whose map is the tutorial's)."""
+    exercise = getattr(args, "exercise_read", None)
+    return exercise if exercise is not None and exercise.number is None else None
+
+
 def map_name(args: argparse.Namespace, path: Path | None) -> str:
-    """What a headless run calls the map: its file, a generated map's recipe, or the
-    tutorial's file name."""
+    """What a headless run calls the map: its file, a generated map's recipe, a teacher's
+    exercise's own map, or the tutorial's file name."""
     recipe = getattr(args, "recipe", None)
-    return str(path) if path is not None else recipe.title if recipe else TUTORIAL_NAME
+    own = _teachers_exercise(args)
+    if path is not None:
+        return str(path)
+    if recipe is not None:
+        return str(recipe.title)
+    return f"{Path(own.path).name}'s map" if own is not None else TUTORIAL_NAME
 
 
 def check_generate(args: argparse.Namespace) -> None:

@@ -115,7 +115,7 @@ def test_the_same_recipe_gives_the_same_bytes_and_says_so(kind: str, seed: str) 
     assert generated_text(recipe) == text
     assert text.splitlines()[0] == f"; generated: {recipe.title}"
     assert recipe_of(generate(recipe)) == recipe  # made again from its first line
-    assert generated_text(next_recipe(recipe)) != text
+    assert generated_text(next_recipe(recipe)).splitlines()[1:] != text.splitlines()[1:]
 
 
 @pytest.mark.parametrize("golden", sorted(GOLDEN.glob("*.txt")), ids=lambda p: p.stem)

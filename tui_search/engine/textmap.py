@@ -130,8 +130,9 @@ def _plain_map(raw: Lines, cells_of: Alphabet, path: str, *, need_start: bool,
     if re.search("[^" + re.escape(allowed) + "]", body):
         return None  # also any "\r", space or tab
     height = (len(body) + 1) // (width + 1)
-    if height * (width + 1) - 1 != len(body) or body[width :: width + 1] != "\n" * (height - 1):
-        return None  # rows of other widths, or blank lines
+    if (height * (width + 1) - 1 != len(body) or body.count("\n") != height - 1
+            or body[width :: width + 1] != "\n" * (height - 1)):
+        return None  # rows of other widths, or blank lines: each newline where a row ends
     cells: dict[str, Cell] = {}
     for letter in "SG":
         at = body.find(letter)

@@ -270,7 +270,7 @@ class FileCommands:
 
     # -- generating a map -----------------------------------------------------------------
     def generate(self) -> None:
-        """``m``: ask for a recipe (the current one's next seed suggested), then show its
+        """``ctrl+n``: ask for a recipe (the current one's next seed suggested), then show its
         map, untitled -- asking first when the current map has unsaved edits."""
         from tui_search.tui.screens.confirm_quit import generating
         from tui_search.tui.screens.generate_map import GenerateScreen
