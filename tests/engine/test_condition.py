@@ -77,6 +77,15 @@ def test_an_undefined_figure_fails_every_comparison() -> None:
         assert value(f"dfs.moves {op} bfs.moves", dfs__moves=None, bfs__moves=7) is False
     assert value("bfs.moves / 0 > 1", bfs__moves=3) is False  # division by zero: undefined
     assert value("bfs.found and not dfs.found", bfs__found=True, dfs__found=False) is True
+    # used bare, an undefined figure is false too, never true as NaN would be in Python
+    assert value("dfs.moves and 1", dfs__moves=None) is False
+    assert value("dfs.moves or 0", dfs__moves=None) is False
+    assert value("not dfs.moves", dfs__moves=None) is True
+
+
+def test_a_number_too_large_to_print_back_is_refused() -> None:
+    with pytest.raises(ConditionError, match="too large"):
+        parse("bfs.expanded < 1e999")
 
 
 @pytest.mark.parametrize(("text", "message", "offset"), [

@@ -142,3 +142,21 @@ async def test_the_palette_turns_the_exercises_on_and_off() -> None:
         assert number(app) == 2 and challenge(app).border_title == "Exercise 2"
         await palette_run(pilot, "Exercise: off", best=True)  # exercise 1's quote matches too
         assert app.session.exercise is None and not challenge(app).display
+
+
+@sync
+async def test_a_teachers_exercise_fails_an_edit_it_does_not_allow() -> None:
+    from tui_search.engine.exercise_file import load_exercise
+
+    teacher = load_exercise(MAPS.parent / "tests" / "data" / "exercises" /
+                            "greedy-not-optimal.toml")  # edits = ["obstacles"]
+    app = SearchApp(teacher.grid.copy(), exercise=teacher)
+    async with app.run_test(size=SIZE) as pilot:
+        panel = challenge(app)
+        assert panel.display and "Greedy is not optimal" in str(panel.border_title)
+        app.main.views[0].set_cursor((0, 1))
+        app.session.cursor = (0, 1)
+        await pilot.press("s")  # the start moved: not an edit this exercise allows
+        await wait_until(pilot, lambda: "changed the start" in panel.text)
+        assert not panel.verdict.solved
+        assert "changed the start, which the exercise does not allow" in panel.text

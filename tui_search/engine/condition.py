@@ -187,8 +187,11 @@ class _Parser:
                 raise self.expected("')'")
             return node
         if tok.kind == "number":
+            value = float(tok.text)
+            if math.isinf(value):  # it would print back as "inf", which is no number here
+                raise ConditionError(f"the number {tok.text} is too large", tok.offset)
             self.i += 1
-            return Num(float(tok.text))
+            return Num(value)
         if tok.kind == "name":
             self.i += 1
             return self.name(tok)
@@ -298,6 +301,12 @@ def _compare(op: str, a: float, b: float) -> bool:
     return not math.isnan(a) and not math.isnan(b) and a != b  # undefined: false too
 
 
+def _truth(value: Value) -> bool:
+    """A value as a condition: an undefined figure (no path's moves, a division by 0) is
+    false, as every comparison with it is."""
+    return bool(value) and not (isinstance(value, float) and math.isnan(value))
+
+
 def evaluate(node: Node, figures: Mapping[str, Value | None]) -> Value:
     """The condition's value on ``figures`` (``bfs.expanded`` -> 22; None: undefined)."""
     if isinstance(node, Num):
@@ -308,7 +317,7 @@ def evaluate(node: Node, figures: Mapping[str, Value | None]) -> Value:
     if isinstance(node, Neg):
         return -float(evaluate(node.operand, figures))
     if isinstance(node, Not):
-        return not evaluate(node.operand, figures)
+        return not _truth(evaluate(node.operand, figures))
     if isinstance(node, Compare):
         left = float(evaluate(node.first, figures))
         for op, operand in zip(node.ops, node.rest):
@@ -318,9 +327,9 @@ def evaluate(node: Node, figures: Mapping[str, Value | None]) -> Value:
             left = right
         return True
     if node.op == "and":
-        return bool(evaluate(node.left, figures)) and bool(evaluate(node.right, figures))
+        return _truth(evaluate(node.left, figures)) and _truth(evaluate(node.right, figures))
     if node.op == "or":
-        return bool(evaluate(node.left, figures)) or bool(evaluate(node.right, figures))
+        return _truth(evaluate(node.left, figures)) or _truth(evaluate(node.right, figures))
     a, b = float(evaluate(node.left, figures)), float(evaluate(node.right, figures))
     if node.op == "+":
         return a + b
