@@ -156,3 +156,12 @@ def test_a_teachers_exercise_without_a_map_starts_on_its_own_map(capsys, tmp_pat
     check_modes(args)
     grid, path = load_problem(args)  # what the app opens
     assert (grid.width, grid.height, path) == (15, 11, None)
+
+
+def test_csv_of_one_bad_map_is_still_a_table(capsys, tmp_path) -> None:
+    bad = tmp_path / "student.txt"
+    bad.write_text("S..\n.x.\n..G\n")
+    code, out, _ = run_cli(capsys, "--exercise", "1", "--headless", "--csv", str(bad))
+    rows = list(csv.reader(io.StringIO(out)))
+    assert code == 1 and rows[0][:2] == ["file", "verdict"] and len(rows) == 2
+    assert rows[1][0] == str(bad) and rows[1][1] == "unreadable"

@@ -93,7 +93,9 @@ def _cell(value: object) -> str:
 def run_exercise(args: argparse.Namespace) -> int:
     """Grade ``args.maps`` (none: the tutorial's map, or --generate's) on ``--exercise``."""
     exercise: Exercise = args.exercise_read
-    if len(args.maps) <= 1:
+    # A report (a line or a CSV row a map, a bad map one of them) for several maps, and for
+    # one under --csv, so that a spreadsheet gets its table whatever the folder holds.
+    if len(args.maps) <= 1 and not (args.csv and args.maps):
         grid, path = load_problem(args)  # a bad map is bad input: exit 2
         where = describe_name(map_name(args, path))
         need_endpoints(grid, where)
