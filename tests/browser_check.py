@@ -15,6 +15,7 @@ import argparse
 import asyncio
 import base64
 import json
+import os
 import re
 import shutil
 import struct
@@ -105,7 +106,10 @@ def judge(png: bytes) -> str | None:
 
 def screenshot(browser: str, url: str, timeout: float = 40.0) -> bytes:
     """Open ``url`` in headless Chromium and take a screenshot once the app has drawn."""
-    with tempfile.TemporaryDirectory(prefix="tui-search-chromium-") as profile:
+    # Chromium's helper processes may still be writing the profile as the browser exits: its
+    # removal waits for them (_remove_profile), and a folder left behind is not an error.
+    with tempfile.TemporaryDirectory(prefix="tui-search-chromium-",
+                                     ignore_cleanup_errors=True) as profile:
         process = subprocess.Popen(
             [browser, *FLAGS, f"--user-data-dir={profile}", f"--window-size={WIDTH},{HEIGHT}",
              "--remote-debugging-port=0", "about:blank"],
@@ -129,6 +133,16 @@ def screenshot(browser: str, url: str, timeout: float = 40.0) -> bytes:
             except subprocess.TimeoutExpired:
                 process.kill()
                 process.wait()
+            _remove_profile(profile)
+
+
+def _remove_profile(profile: str, timeout: float = 10.0) -> None:
+    """Remove Chromium's profile folder, again while its last helpers still write in it."""
+    deadline = time.monotonic() + timeout
+    while os.path.exists(profile) and time.monotonic() < deadline:
+        shutil.rmtree(profile, ignore_errors=True)
+        if os.path.exists(profile):
+            time.sleep(0.1)  # polling: the helpers exit on their own
 
 
 async def capture(browser_ws: str, url: str, deadline: float) -> bytes:
