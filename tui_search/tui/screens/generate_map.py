@@ -10,9 +10,10 @@ from textual.app import ComposeResult
 from textual.binding import Binding, BindingType
 from textual.containers import Vertical
 from textual.screen import ModalScreen
-from textual.widgets import Input, Label, Static
+from textual.widgets import Input, Label
 
 from tui_search.engine.generate import MAX_SIDE, Recipe, parse_recipe
+from tui_search.tui.widgets.error_line import ErrorLine
 
 KINDS_TEXT = ("Kinds: maze (the recursive backtracker: DFS carving its maze), prim, kruskal, "
               f"division, rooms, random:P (P% obstacles). At most {MAX_SIDE}x{MAX_SIDE}; the "
@@ -37,8 +38,6 @@ class GenerateScreen(ModalScreen[Recipe | None]):
             padding: 0 1;
         }
         & Label { width: 100%; height: auto; }
-        & #error { color: $text-error; display: none; width: 100%; height: auto; }
-        & #error.-shown { display: block; }
         & .hint { color: $text-muted; }
     }
     """
@@ -52,18 +51,16 @@ class GenerateScreen(ModalScreen[Recipe | None]):
             box.border_title = "Generate a map"
             yield Label("KIND WxH SEED, e.g. maze 21x15 7:")
             yield Input(value=self.suggestion, id="recipe")
-            yield Static(id="error", markup=False)  # the seed in it is typed
+            yield ErrorLine()
             yield Label(KINDS_TEXT, classes="hint")
             yield Label("enter to generate · escape to cancel", classes="hint")
 
     @property
     def error(self) -> str:
-        return str(self.query_one("#error", Static).content)
+        return self.query_one(ErrorLine).message
 
     def show_error(self, message: str) -> None:
-        error = self.query_one("#error", Static)
-        error.update(message)
-        error.set_class(bool(message), "-shown")
+        self.query_one(ErrorLine).say(message)
 
     def on_input_submitted(self, event: Input.Submitted) -> None:
         try:

@@ -18,9 +18,10 @@ from textual.app import ComposeResult
 from textual.binding import Binding, BindingType
 from textual.containers import Horizontal, Vertical
 from textual.screen import ModalScreen
-from textual.widgets import DirectoryTree, Input, Label, Static
+from textual.widgets import DirectoryTree, Input, Label
 
 from tui_search.tui.file_access import FileAccess, name_or_problem, one_line
+from tui_search.tui.widgets.error_line import ErrorLine
 from tui_search.tui.widgets.map_tree import MapTree
 
 T = TypeVar("T")
@@ -48,8 +49,6 @@ class PathPrompt(ModalScreen[T]):
         & Horizontal { height: auto; }
         & MapTree { margin-right: 1; }
         & #fields { width: 1fr; height: auto; }
-        & #error { color: $text-error; display: none; width: 100%; height: auto; }
-        & #error.-shown { display: block; }
         & .hint { color: $text-muted; margin: 0; }
     }
     """
@@ -83,7 +82,7 @@ class PathPrompt(ModalScreen[T]):
                     yield MapTree(self.folder, flat=self.served, id="picker")
                 with Vertical(id="fields"):
                     yield Input(value=self.suggestion, id="filename")
-                    yield Static(id="error", markup=False)  # names in it are typed
+                    yield ErrorLine()
                     yield Label(self.HINT_TEXT, classes="hint")
 
     def on_mount(self) -> None:
@@ -93,12 +92,10 @@ class PathPrompt(ModalScreen[T]):
     @property
     def error(self) -> str:
         """The error shown in the prompt ("" when none)."""
-        return str(self.query_one("#error", Static).content)
+        return self.query_one(ErrorLine).message
 
     def show_error(self, message: str) -> None:
-        error = self.query_one("#error", Static)
-        error.update(message)
-        error.set_class(bool(message), "-shown")
+        self.query_one(ErrorLine).say(message)
         field = self.query_one("#filename", Input)
         self.error_about = field.value if message else None
         field.focus()
