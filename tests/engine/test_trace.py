@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import io
 import json
+from collections.abc import Callable
 
 import pytest
 from hypothesis import HealthCheck, given, settings
@@ -162,13 +163,21 @@ CHOICES = st.builds(
 )
 
 
-@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(random_grids(max_side=6), st.sampled_from(["bfs", "dfs", "iddfs", "ucs", "greedy",
-                                                   "astar"]),
-       CHOICES, st.sampled_from(["generate", "expand", "tree"]))
-def test_the_apps_own_trace_checks_as_a_full_match_of_its_choices(
-        grid: Grid, key: str, sem: Semantics, visit: str) -> None:
+#: The app's own searches and choices, for traces held equal to them: a map, an algorithm,
+#: its choices, and "generate", "expand" (the visit rule) or "tree" (tree search).
+APP_SEARCHES = (random_grids(max_side=6),
+                st.sampled_from(["bfs", "dfs", "iddfs", "ucs", "greedy", "astar"]), CHOICES,
+                st.sampled_from(["generate", "expand", "tree"]))
+
+
+def app_case(grid: Grid, key: str, sem: Semantics, visit: str,
+             limit: int) -> tuple[Semantics, str]:
+    """``sem`` with the visit rule or tree search of ``visit`` where it applies to ``key``,
+    and the app's trace of that search (up to ``limit`` steps; "" when the start is the
+    goal: hypothesis drops the case)."""
     from dataclasses import replace
+
+    from hypothesis import assume
 
     from tui_search.engine.algorithms import get_algorithm
 
@@ -177,10 +186,22 @@ def test_the_apps_own_trace_checks_as_a_full_match_of_its_choices(
         sem = replace(sem, tree_search=True)
     elif visit == "expand" and not (algo.iterative or algo.weighted):
         sem = replace(sem, visit="expand")
-    limit = 300
     text = app_trace(grid, key, sem, limit)
-    if not text:
-        return  # the start is the goal: no expansion
+    assume(text)
+    return sem, text
+
+
+def over_app_searches(test: Callable[..., None]) -> Callable[..., None]:
+    """``test`` run on :data:`APP_SEARCHES` (150 cases)."""
+    return settings(max_examples=150, deadline=None,
+                    suppress_health_check=[HealthCheck.too_slow])(given(*APP_SEARCHES)(test))
+
+
+@over_app_searches
+def test_the_apps_own_trace_checks_as_a_full_match_of_its_choices(
+        grid: Grid, key: str, sem: Semantics, visit: str) -> None:
+    limit = 300
+    sem, text = app_case(grid, key, sem, visit, limit)
     verdict = check_trace(read_trace(text, grid, "t"), grid, key, sem, max_steps=limit)
     assert verdict.matches, verdict.text()
     assert verdict.matched == len(text.splitlines())

@@ -19,6 +19,9 @@ class Frontier(Enum):
     FIFO = "fifo"  # a queue: the oldest entry comes out first
     LIFO = "lifo"  # a stack: the newest entry comes out first
     PRIORITY = "priority"  # a priority queue: the lowest priority first, ties oldest first
+    #: what a replayed trace added and has not expanded, in the order added: any one may
+    #: leave next (a trace does not say its discipline)
+    ADDED = "added"
 
     @property
     def title(self) -> str:
@@ -56,23 +59,30 @@ class Frontier(Enum):
 
 
 _TITLES = {Frontier.FIFO: "Queue (FIFO)", Frontier.LIFO: "Stack (LIFO)",
-           Frontier.PRIORITY: "Priority queue"}
-_NOUNS = {Frontier.FIFO: "queue", Frontier.LIFO: "stack", Frontier.PRIORITY: "priority queue"}
-_ENDS = {Frontier.FIFO: "front", Frontier.LIFO: "top", Frontier.PRIORITY: "front"}
-_PREPOSITIONS = {Frontier.FIFO: "in", Frontier.LIFO: "on", Frontier.PRIORITY: "in"}
+           Frontier.PRIORITY: "Priority queue", Frontier.ADDED: "Frontier, as added"}
+_NOUNS = {Frontier.FIFO: "queue", Frontier.LIFO: "stack", Frontier.PRIORITY: "priority queue",
+          Frontier.ADDED: "frontier"}
+_ENDS = {Frontier.FIFO: "front", Frontier.LIFO: "top", Frontier.PRIORITY: "front",
+         Frontier.ADDED: "oldest end"}
+_PREPOSITIONS = {Frontier.FIFO: "in", Frontier.LIFO: "on", Frontier.PRIORITY: "in",
+                 Frontier.ADDED: "on"}
 _HINTS = {
     Frontier.FIFO: ("← front and back", "← front (next out)", "← back (newest)"),
     Frontier.LIFO: ("← top and bottom", "← top (next out)", "← bottom (oldest)"),
     # none: the order is the priorities', shown on every line (and ▶ marks the next out)
     Frontier.PRIORITY: ("", "", ""),
+    # a trace's: the order added, not the order out (the trace does not say it)
+    Frontier.ADDED: ("← the only one", "← oldest", "← newest"),
 }
 
 _TAKES = {Frontier.FIFO: "take off the front of the queue (pop front)",
           Frontier.LIFO: "take off the top of the stack (pop)",
-          Frontier.PRIORITY: "take off the entry of lowest {p} (pop min)"}
+          Frontier.PRIORITY: "take off the entry of lowest {p} (pop min)",
+          Frontier.ADDED: "take off the entry the trace expanded (its rule unknown)"}
 _PUSHES = {Frontier.FIFO: "push s at the back of the queue (push back)",
            Frontier.LIFO: "push s on top of the stack (push)",
-           Frontier.PRIORITY: "push s into the priority queue by {p}"}
+           Frontier.PRIORITY: "push s into the priority queue by {p}",
+           Frontier.ADDED: "add s to the frontier"}
 
 #: How an informed search orders its priority queue: what the panel's title and the narration
 #: call the priority, and what it adds up.

@@ -13,6 +13,9 @@ time proportional to the step, and to rebuild itself in bulk for a long jump:
   kept sorted by ``(priority, event)`` in a :class:`sortedcontainers.SortedList`, so a step
   costs O(log n) in the frontier's size and the panel reads any window without sorting.
 
+* :class:`AddedFrontier` (a replayed trace's, :mod:`~tui_search.engine.trace_run`): the
+  events generated and not yet taken off, in the order added; any of them may leave next.
+
 The run is the same for every discipline: it asks its frontier model, never which algorithm it
 runs.
 """
@@ -184,7 +187,69 @@ class PriorityFrontier:
         return place
 
 
-FrontierModel = FifoFrontier | LifoFrontier | PriorityFrontier
+class AddedFrontier:
+    """What a replayed trace added and has not taken off, in the order added (oldest first):
+    the trace does not say its discipline, so any entry may be the next out.  A step that
+    takes off an event no longer on it (a trace that expands a cell twice) is counted in
+    ``absent``, so that stepping back leaves it off again."""
+
+    def __init__(self) -> None:
+        from sortedcontainers import SortedList
+
+        self._sorted = SortedList
+        self.events: SortedList = SortedList()
+        self.absent: dict[int, int] = {}
+
+    def reset(self, root: int) -> None:
+        self.events = self._sorted([root])
+        self.absent = {}
+
+    def forward(self, g: int, succ: range) -> None:
+        if g in self.events:
+            self.events.remove(g)
+        else:
+            self.absent[g] = self.absent.get(g, 0) + 1
+        self.events.update(succ)
+
+    def backward(self, g: int, succ: range) -> None:
+        events = self.events
+        for h in succ:
+            events.discard(h)
+        if self.absent.get(g):
+            self.absent[g] -= 1
+        else:
+            events.add(g)
+
+    @staticmethod
+    def rebuild_work(root: int, end: int, expanded: int) -> int:
+        return expanded + (end - root)
+
+    def rebuild_pieces(self, root: int, end: int, expanded: Iterable[Sequence[int]]) -> Iterator[int]:
+        """Become the events of ``root .. end - 1`` not in the pieces of ``expanded`` (an
+        event taken off more than once counted absent for each time after the first)."""
+        events: list[int] = []
+        seen: set[int] = set()
+        absent: dict[int, int] = {}
+
+        def watched() -> Iterator[Sequence[int]]:
+            for piece in expanded:
+                for g in piece:
+                    if g in seen:
+                        absent[g] = absent.get(g, 0) + 1
+                    seen.add(g)
+                yield piece
+
+        yield from _open_events(root, end, watched(), events.extend)
+        self.events, self.absent = self._sorted(events), absent
+
+    def __len__(self) -> int:
+        return len(self.events)
+
+    def entries(self, start: int, stop: int) -> list[int]:
+        return list(self.events.islice(start, stop))
+
+
+FrontierModel = FifoFrontier | LifoFrontier | PriorityFrontier | AddedFrontier
 
 
 def frontier_model(kind: Frontier, keys: Callable[[Sequence[int]], list[float]] | None = None
@@ -194,5 +259,7 @@ def frontier_model(kind: Frontier, keys: Callable[[Sequence[int]], list[float]] 
         return FifoFrontier()
     if kind is Frontier.LIFO:
         return LifoFrontier()
+    if kind is Frontier.ADDED:
+        return AddedFrontier()
     assert keys is not None, "a priority queue needs its events' priorities"
     return PriorityFrontier(keys)

@@ -13,11 +13,11 @@ from array import array
 from bisect import bisect_right
 from collections.abc import Generator, Iterator
 from dataclasses import dataclass
-from typing import cast
+from typing import NamedTuple, cast
 
-from tui_search.engine.algorithms import get_algorithm
+from tui_search.engine.algorithms import Algorithm, get_algorithm
 from tui_search.engine.grid import Cell, Grid
-from tui_search.engine.loops.dispatch import loop_for
+from tui_search.engine.loops.dispatch import Loop, loop_for
 from tui_search.engine.peak import PeakTable
 from tui_search.engine.problem import Problem
 from tui_search.engine.record import CHUNK, Record
@@ -43,17 +43,28 @@ class Step:
 MAX_STEPS = 5000 * CHUNK
 
 
+class Source(NamedTuple):
+    """Where a recording's steps come from when they are not a registry search's: what the
+    run is (its description: not in the registry, so no key, menu or setting offers it) and
+    the loop that fills its record (a replayed trace: :mod:`~tui_search.engine.trace_run`)."""
+
+    algo: Algorithm
+    loop: Loop
+
+
 class Recording:
     """A search on a snapshot of a grid, recorded lazily in chunks.
 
     The grid is copied: editing the original afterwards never changes this run.
     """
 
-    def __init__(self, grid: Grid, algorithm: str, semantics: Semantics, max_steps: int) -> None:
+    def __init__(self, grid: Grid, algorithm: str, semantics: Semantics, max_steps: int,
+                 source: Source | None = None) -> None:
         """Record ``grid`` (copied) searched with ``algorithm`` (its key) under ``semantics``,
         up to ``max_steps`` expansions (a :class:`~tui_search.engine.run.Run` gives the
-        defaults)."""
-        self.algo = algo = get_algorithm(algorithm)
+        defaults); ``source``: the steps come from its loop instead, and ``algorithm`` is
+        its description's key."""
+        self.algo = algo = get_algorithm(algorithm) if source is None else source.algo
         semantics.check(algo)
         if max_steps < 1:
             raise ValueError("max_steps must be at least 1")
@@ -65,8 +76,9 @@ class Recording:
         self.rec = Record()
         self.max_steps = max_steps
         # The loops are generator functions: close() ends one that gives up.
+        loop = loop_for(algo, semantics) if source is None else source.loop
         self._loop = cast(Generator[int, None, None],
-                          loop_for(algo, semantics)(self.problem, self.rec, min(CHUNK, max_steps)))
+                          loop(self.problem, self.rec, min(CHUNK, max_steps)))
         self._peak = PeakTable(self.rec, self.iteration_of)
         self._advance_once()  # records the start (and the answer, when start == goal)
 
@@ -209,4 +221,4 @@ class Recording:
             yield step_exp[j], range(step_end[j - 1], step_end[j])
 
 
-__all__ = ["MAX_STEPS", "Recording", "Step"]
+__all__ = ["MAX_STEPS", "Recording", "Source", "Step"]

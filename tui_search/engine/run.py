@@ -22,7 +22,7 @@ from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.outcome import Outcome
 from tui_search.engine.position import Position
 from tui_search.engine.queries import EventTree
-from tui_search.engine.recording import MAX_STEPS, Recording, Step
+from tui_search.engine.recording import MAX_STEPS, Recording, Source, Step
 from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
 
 
@@ -60,11 +60,14 @@ class Run:
         algorithm: str = DEFAULT_ALGORITHM,
         semantics: Semantics = DEFAULT_SEMANTICS,
         max_steps: int = MAX_STEPS,
+        source: Source | None = None,
     ) -> None:
         """Search ``grid`` (copied) with ``algorithm`` (a key of the algorithm table) under
-        ``semantics``, giving up after ``max_steps`` expansions."""
+        ``semantics``, giving up after ``max_steps`` expansions.  ``source``: take the steps
+        from its loop instead (a replayed trace, :func:`~tui_search.engine.trace_run.
+        trace_run`), a run like any other to every query."""
         # The loop and the raw record: the engine's own checks reach it by recording_of(run).
-        self._recording = recording = Recording(grid, algorithm, semantics, max_steps)
+        self._recording = recording = Recording(grid, algorithm, semantics, max_steps, source)
         self._rec = recording.rec  # the same record as long as the recording lives
         self._tree = tree = EventTree(recording)
         self._position = position = Position(recording, tree)
@@ -72,7 +75,7 @@ class Run:
         self.steps = Steps(recording, tree, position)  #: the recorded steps, by number
         self.now = Now(position)  #: the state of the search at the position
         self.grid = recording.grid  #: the run's own copy of the grid
-        self.algorithm = algorithm  #: the algorithm's key
+        self.algorithm = recording.algo.key  #: the algorithm's key
         self.algo = recording.algo  #: the algorithm's description
         self.semantics = recording.semantics  #: the rules in force for this algorithm
         self.max_steps = max_steps  #: the step limit
@@ -191,4 +194,4 @@ def recording_of(run: Run) -> Recording:
     return run._recording
 
 
-__all__ = ["MAX_STEPS", "Run", "Step", "recording_of"]
+__all__ = ["MAX_STEPS", "Run", "Source", "Step", "recording_of"]
