@@ -42,7 +42,7 @@ from tui_search.headless import (
     run_headless,
 )
 from tui_search.report import run_exercise
-from tui_search.trace_cli import run_check_trace
+from tui_search.trace_cli import read_replay, run_check_trace
 from tui_search.tui.themes import THEMES  # plain data: no Textual
 
 if TYPE_CHECKING:
@@ -158,6 +158,10 @@ def build_parser() -> argparse.ArgumentParser:
                    "format) with -a's search under the choice flags, step by step, or without "
                    "-a find the searches it matches longest: exit 0 a match, 1 a difference, "
                    "2 a malformed trace")
+    p.add_argument("--replay", metavar="FILE",
+                   help="open the app on a trace another program wrote (the --trace format), "
+                   "beside -a's search under the choice flags (without -a: the search it "
+                   "matches best) in lockstep, its first difference marked (d: to it and back)")
     from tui_search import serve  # the flags of --serve (textual-serve only when serving)
 
     serve.add_arguments(p)
@@ -182,8 +186,10 @@ def build_app(args: argparse.Namespace, grid: Grid, path: Path | None) -> Search
 
     scenario = getattr(args, "scenario", None)
     lesson = getattr(args, "lesson_read", None)
-    return SearchApp(grid, path=path, algorithm=args.algorithm,
-                     semantics=semantics_from(args), max_steps=args.max_steps,
+    replay = getattr(args, "replay_read", None)  # its search and choices are the panes'
+    return SearchApp(grid, path=path, algorithm=replay.algorithm if replay else args.algorithm,
+                     semantics=replay.semantics if replay else semantics_from(args),
+                     max_steps=args.max_steps, replay=replay,
                      unsaved_name=app_title(args),
                      theme=args.theme,
                      optimal_cost=scenario.optimal_length if scenario is not None else None,
@@ -241,6 +247,20 @@ def check_modes(args: argparse.Namespace) -> None:
     args.algorithm = args.algorithm or DEFAULT_ALGORITHM
 
 
+def refuse_with_traces(args: argparse.Namespace) -> None:
+    """``--check-trace`` and ``--replay`` take one trace and one search: no ``--exercise`` or
+    ``--compare``; ``--replay`` is the app's, and not a lesson's either."""
+    if args.check_trace is not None and (args.exercise or args.compare):
+        raise UsageError("--check-trace checks one trace against one search: leave out "
+                         f"--{'exercise' if args.exercise else 'compare'}")
+    if args.replay is None:
+        return
+    for flag in ("exercise", "compare", "lesson", "check_trace", "trace", "headless", "serve"):
+        if getattr(args, flag, None) not in (None, False):
+            raise UsageError("--replay shows one trace beside one search in the app: leave "
+                             f"out --{flag.replace('_', '-')}")
+
+
 def read_exercise(name: str) -> Exercise:
     """``--exercise``'s exercise: 1, 2 or a file (a bad file: MapError, exit 2)."""
     from tui_search.engine.exercise_file import find_exercise
@@ -284,15 +304,13 @@ def main(argv: list[str] | None = None) -> int:
         from tui_search import serve
 
         serve.check_args(args)
+        refuse_with_traces(args)
         if (args.json or args.trace or args.csv or args.check_trace) and not args.headless:
             raise UsageError("--json, --csv, --trace and --check-trace go with --headless")
         if args.csv and (args.json or not args.exercise):
             raise UsageError("--csv is for --exercise E --headless, without --json")
         if args.theme and args.headless:
             raise UsageError("--theme is for the app, not --headless")
-        if args.check_trace is not None and (args.exercise or args.compare):
-            raise UsageError("--check-trace checks one trace against one search: leave out "
-                             f"--{'exercise' if args.exercise else 'compare'}")
         algorithm_given = args.algorithm is not None
         check_modes(args)
         check_generate(args)
@@ -316,6 +334,8 @@ def main(argv: list[str] | None = None) -> int:
             contenders_from(args)
         if args.serve:
             return serve.serve(parser, args, title=path.name if path else app_title(args))
+        if args.replay is not None:
+            args.replay_read = read_replay(args, grid, path, algorithm_given)
         return run_app(args, grid, path)
     except (UsageError, CoreUnavailable) as exc:
         print(f"tui-search: error: {exc}", file=sys.stderr)

@@ -8,13 +8,50 @@ from __future__ import annotations
 
 import argparse
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from tui_search.engine.filenames import describe_name
 from tui_search.engine.grid import Grid
 from tui_search.engine.mapread import MapError
 from tui_search.flags import UsageError, changed_choice_flags, map_name, semantics_from
 
+if TYPE_CHECKING:
+    from tui_search.engine.trace_replay import Replay
+
 EXIT_MATCH, EXIT_DIFFERENCE = 0, 1
+
+
+def _needs_ends(args: argparse.Namespace, grid: Grid, path: Path | None) -> str:
+    """The map's name as the messages say it; a map with no start or goal is an error."""
+    where = describe_name(map_name(args, path))
+    missing = [name for name in ("start", "goal") if getattr(grid, name) is None]
+    if missing:
+        raise MapError(where, f"the map has no {' or '.join(missing)}: give --start X,Y "
+                       "--goal X,Y")
+    return where
+
+
+def _no_choices_without_a(flag: str, what: str, verb: str, args: argparse.Namespace) -> None:
+    """Without ``-a`` the choices are found, not given: a choice flag is a usage error."""
+    given = changed_choice_flags(args)
+    if given:
+        raise UsageError(f"without -a, {flag} {what}: give -a to {verb} {', '.join(given)}")
+
+
+def read_replay(args: argparse.Namespace, grid: Grid, path: Path | None,
+                algorithm_given: bool) -> Replay:
+    """``--replay FILE``: the trace beside ``-a``'s search under the choice flags, else the
+    search the diagnosis finds it nearest (a malformed trace is a MapError: exit 2)."""
+    from tui_search.engine.trace_read import load_trace
+    from tui_search.engine.trace_replay import replay_of
+
+    _needs_ends(args, grid, path)
+    if not algorithm_given:
+        _no_choices_without_a("--replay", "replays beside the search it matches best",
+                              "replay beside", args)
+    trace = load_trace(args.replay, grid)
+    return replay_of(trace, grid, args.algorithm if algorithm_given else None,
+                     semantics_from(args), args.max_steps)
 
 
 def run_check_trace(args: argparse.Namespace, grid: Grid, path: Path | None,
@@ -28,11 +65,7 @@ def run_check_trace(args: argparse.Namespace, grid: Grid, path: Path | None,
     for flag in ("trace", "compare", "exercise"):
         if getattr(args, flag):
             raise UsageError(f"--check-trace checks one search: leave out --{flag}")
-    where = describe_name(map_name(args, path))
-    missing = [name for name in ("start", "goal") if getattr(grid, name) is None]
-    if missing:
-        raise MapError(where, f"the map has no {' or '.join(missing)}: give --start X,Y "
-                       "--goal X,Y")
+    where = _needs_ends(args, grid, path)
     if not algorithm_given:
         return _diagnose(args, grid, where)
     semantics = semantics_from(args)
@@ -52,10 +85,7 @@ def _diagnose(args: argparse.Namespace, grid: Grid, where: str) -> int:
     from tui_search.engine.trace_read import load_trace
     from tui_search.headless import to_json
 
-    given = changed_choice_flags(args)
-    if given:
-        raise UsageError(f"without -a, --check-trace tries every search and choice: give -a "
-                         f"to check {', '.join(given)}")
+    _no_choices_without_a("--check-trace", "tries every search and choice", "check", args)
     diagnosis = diagnose(load_trace(args.check_trace, grid), grid, args.max_steps)
     if args.json:
         print(to_json({"trace": describe_name(args.check_trace), "map": where,

@@ -43,6 +43,11 @@ class Frontier(Enum):
         return f"{n} {_PREPOSITIONS[self]} the {self.noun}"
 
     @property
+    def next_known(self) -> bool:
+        """Is it known which entry leaves next (all but a replayed trace's)?"""
+        return self is not Frontier.ADDED
+
+    @property
     def end_hints(self) -> tuple[str, str, str]:
         """What the panel writes beside its entries: the only one, the next out, the far end."""
         return _HINTS[self]

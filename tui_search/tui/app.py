@@ -28,6 +28,7 @@ from tui_search.tui.themes import DEFAULT_THEME, THEMES, map_defaults, textual_t
 if TYPE_CHECKING:
     from tui_search.engine.exercise_file import Exercise
     from tui_search.engine.lesson import Lesson
+    from tui_search.engine.trace_replay import Replay
 
 
 def _search_commands() -> type[Provider]:
@@ -59,6 +60,7 @@ class SearchApp(App[int]):
         compare: str | None = None,
         file_access: FileAccess | None = None,
         lesson: Lesson | None = None,
+        replay: Replay | None = None,
     ) -> None:
         """The session's arguments (:class:`~tui_search.tui.session.Session`), and: ``theme``
         for this run only (``--theme``; without it, the one the config file remembers);
@@ -66,10 +68,10 @@ class SearchApp(App[int]):
         ``file_access``, where saving and opening may go
         (:class:`~tui_search.tui.file_access.FileAccess`: anywhere by default; the served
         app's is narrower); ``lesson``, a lesson shown beside the panes from its first
-        section."""
+        section; ``replay``, a trace beside the search it matches (``--replay``)."""
         super().__init__()
         self.session = Session(grid, path, algorithm, semantics, max_steps, unsaved_name,
-                               optimal_cost, exercise, compare)
+                               optimal_cost, exercise, compare, replay)
         if lesson is not None:
             from tui_search.tui.lesson_play import LessonPlay  # only for a lesson
 

@@ -18,7 +18,7 @@ from tui_search.tui.themes import THEMES
 KEY_IMPORTANCE = {
     "help": 10, "quit": 10, "stop_seek": 9, "next": 8, "play": 7, "pause": 7, "algorithm": 6,
     "compare": 6, "undo": 5, "settings": 5, "reset": 4, "save": 3, "quiz": 2, "overview": 2,
-    "zoom": 1, "paint": 5, "lesson": 9,
+    "zoom": 1, "paint": 5, "lesson": 9, "difference": 8,
     "pick": 7,  # the frontier panel's, while it has the focus in the quiz
 }
 STEP = Binding.Group("Step", compact=True)
@@ -89,6 +89,10 @@ KEYS: list[BindingType] = [
     Binding("G", "jump('goal')", "To goal", show=False, tooltip="Cursor to the goal"),
     Binding("e", "jump('current')", "To node", show=False,
             tooltip="Cursor to the node being expanded"),
+    # Shown only in a replay (--replay) whose trace parts from its search.
+    Binding("d", "difference", "Difference",
+            tooltip="Replay: every pane to the step where your trace first differs from the "
+            "search (again: back to where you were)"),
     Binding("i", "quiz", "Quiz", tooltip="Predict the next node: a quiz (again to stop)"),
     Binding("enter", "answer", "Answer", show=False,
             tooltip="Quiz: the node under the cursor (or the frontier entry picked) "

@@ -23,9 +23,11 @@ from tui_search.tui import playback
 from tui_search.tui.history import History
 from tui_search.tui.map_edits import BRUSHES, NO_BRUSH, MapEdits
 from tui_search.tui.quiz import NO_RUN, Quiz, verdict
+from tui_search.tui.replay_jumps import LOCKSTEP, LOCKSTEP_SHORT, REPLAY_ENDED, ReplayJumps
 from tui_search.tui.seek import Seek
 
 if TYPE_CHECKING:
+    from tui_search.engine.trace_replay import Replay
     from tui_search.tui.lesson_play import LessonPlay
 
 #: The searches ``c`` compares until the settings pick others.
@@ -33,10 +35,6 @@ DEFAULT_COMPARE = "bfs,dfs"
 #: Panes: one at least, four at most; the number keys take none out of fewer than two.
 MIN_COMPARED, MAX_PANES = 2, 4
 NEEDS_ENDPOINTS = "Place a start (s) and a goal (g) to search"
-LOCKSTEP = ("Lockstep: n steps every search not done yet, p steps back the latest, "
-            "end runs them all to the end · 1-6 add or take out a search · c one search")
-#: The same where the long one would take two lines (the panes need them more).
-LOCKSTEP_SHORT = "Lockstep: n, p and end move every search · 1-6 add or take out · c one"
 
 #: Where each run was before a move: its step, and whether it was at its end.
 Before = list[tuple[int, bool]]
@@ -53,7 +51,7 @@ def normal_spec(spec: str) -> str:
     return ",".join(part.strip() for part in spec.split(",") if part.strip())
 
 
-class Session(MapEdits):
+class Session(MapEdits, ReplayJumps):
     """The state behind the screen.  ``compare`` (``bfs,dfs``, as ``--compare`` spells it)
     opens with those searches side by side; else one pane runs ``algorithm``.
 
@@ -74,6 +72,7 @@ class Session(MapEdits):
         optimal_cost: float | None = None,
         exercise: Exercise | int | None = None,
         compare: str | None = None,
+        replay: Replay | None = None,
     ) -> None:
         self.grid = grid
         self.map_path = Path(path) if path is not None else None
@@ -105,6 +104,7 @@ class Session(MapEdits):
         self._fitted = ""  # the note on a setting fitted to a search, once said
         self._benchmark = None if optimal_cost is None else (
             map_key(grid), grid.start, grid.goal, optimal_cost)
+        self.replay = replay  # --replay: until the map, the rules or the searches change
         self.new_runs()
 
     # -- what is shown -------------------------------------------------------------------
@@ -116,6 +116,8 @@ class Session(MapEdits):
     @property
     def labels(self) -> list[str]:
         """The panes' names, in order."""
+        if self.replay is not None:
+            return self.replay.labels
         return [c.label for c in self.contenders]
 
     @property
@@ -175,8 +177,11 @@ class Session(MapEdits):
             self.note = note or NEEDS_ENDPOINTS
         else:
             known = self._benchmark_cost()
-            self.runs = [Run(grid, c.algorithm, c.semantics, self.max_steps)
-                         for c in self.contenders]
+            if self.replay is not None and not self.replay.fits(grid):
+                self.replay, self.note = None, note or REPLAY_ENDED
+            self.runs = (self.replay.runs(grid, self.max_steps) if self.replay is not None
+                         else [Run(grid, c.algorithm, c.semantics, self.max_steps)
+                               for c in self.contenders])
             for run in self.runs:
                 run.known_lowest = known
         if self.runs and self.quiz.on and not self.note:
@@ -220,6 +225,7 @@ class Session(MapEdits):
             parse_compare(spec, self.semantics, fit=True, fewest=1)
         except ValueError as exc:
             return f"Cannot compare {spec}: {exc}"
+        self.replay = None  # other searches: the replay is over
         self._remember(spec)
         self.new_runs()
         return None
@@ -246,6 +252,7 @@ class Session(MapEdits):
         self.comparison = compare
         if (semantics, spec) == (self.semantics, self.spec):
             return
+        self.replay = None  # other rules: the replay is over
         self.semantics = semantics
         if spec != self.spec:
             self.show_searches(spec)
@@ -268,6 +275,7 @@ class Session(MapEdits):
         self.map_path = Path(path) if path is not None else None
         self.history = History()
         self.cursor = grid.start or (0, 0)
+        self.replay = None
         self.new_runs()
 
     def saved(self, path: Path) -> None:

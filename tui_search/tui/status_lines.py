@@ -21,7 +21,7 @@ from tui_search.tui import playback
 from tui_search.tui.layout import own_lines
 from tui_search.tui.narration import frontier_word, narrate, result_text, status_parts
 from tui_search.tui.pieces import Line, Piece
-from tui_search.tui.session import LOCKSTEP, LOCKSTEP_SHORT, Session
+from tui_search.tui.session import Session
 
 #: Between two counts on a row.
 SEP = (" │ ", "stats--label")
@@ -112,9 +112,8 @@ def screen_status(session: Session, width: int) -> Status:
     the panes need them more); else the run's (and the session's note)."""
     labels = session.labels
     if own_lines(len(labels)):
-        sentence = LOCKSTEP if len(LOCKSTEP) + 2 <= width else LOCKSTEP_SHORT
         return lockstep_status(labels, playing=playing_text(session), note=session.note,
-                               sentence=sentence)
+                               sentence=session.lockstep_sentence(width))
     name = get_algorithm(session.contenders[0].algorithm).short  # its heuristic: said after
     return search_status(session.run, name, in_pane=False, playing=playing_text(session),
                          note=session.note, code=session.show_code)

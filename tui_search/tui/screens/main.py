@@ -47,6 +47,12 @@ class MainScreen(PanesScreen):
             self.stop()
             self.present(changed=[])
 
+    def action_difference(self) -> None:
+        """A replay: to the step where the trace first parts from its search, and back."""
+        self._timer.pause()
+        self.session.to_difference()
+        self.present()
+
     def action_reset(self) -> None:
         self.session.new_runs()
         self.new_runs_shown()
@@ -348,4 +354,5 @@ class MainScreen(PanesScreen):
         state["redo"] = (history.can_redo() or None) if edited else False
         state["last"], state["first"] = state["next"], state["prev"]
         state["paint"] = session.brush is not None
+        state["difference"] = session.difference_step is not None
         return state.get(action, True)

@@ -238,12 +238,14 @@ class PanesScreen(Screen[None]):
         repaint (``per_run``: a list of changed cells for each run)."""
         session = self.session
         runs = session.runs
+        marks = session.marks()
         for i, pane in enumerate(self.panes):
             if pane.is_mounted:  # else shown whole once mounted (_panes_changed)
                 pane.show(runs[i] if runs else None,
                           per_run[i] if per_run is not None else changed, follow=follow,
                           hide_order=session.quiz.on and i == 0,
-                          title=escape(describe_name(session.title)))  # a file's name: not markup
+                          title=escape(describe_name(session.title)),  # a file's name: not markup
+                          mark=marks[i] if i < len(marks) else None)
         if self.table.display:
             self.table.show(session.labels, runs)
         self.show_pick()

@@ -74,18 +74,24 @@ def row_costs(grid: Grid, y: int, x0: int, x1: int) -> Sequence[float] | None:
     return costs[base + x0: base + x1]
 
 
+#: What a drawing code adds to say the cell is under the cursor, or marked (a replay's first
+#: difference: ``grid-view--marked``), or both.
+CURSOR, MARKED = len(COMPONENTS), 2 * len(COMPONENTS)
+
+
 class CellLooks:
-    """The glyph and style of each drawing code, and each step of the ramp, plain and under
-    the cursor (``code + len(COMPONENTS)``)."""
+    """The glyph and style of each drawing code, and each step of the ramp: plain, under
+    the cursor (``code + CURSOR``), marked (``code + MARKED``) and both."""
 
     def __init__(self, style_of: Callable[[str], Style]) -> None:
-        cursor = style_of("grid-view--cursor")
+        cursor, marked = style_of("grid-view--cursor"), style_of("grid-view--marked")
         n = len(COMPONENTS)
         styles = [style_of(f"grid-view--{name}") for name in COMPONENTS]
-        self.codes: list[tuple[str, Style]] = [(GLYPHS[i], styles[i]) for i in range(n)] + [
-            (GLYPHS[i], styles[i] + cursor) for i in range(n)]
+        looks = (Style(), cursor, marked, marked + cursor)
+        self.codes: list[tuple[str, Style]] = [
+            (GLYPHS[i], styles[i] + look) for look in looks for i in range(n)]
         ramp = [styles[FREE]] + [style_of(f"grid-view--{name}") for name in RAMP_COMPONENTS]
-        self.ramp: list[Style] = ramp + [style + cursor for style in ramp]
+        self.ramp: list[Style] = [style + look for look in looks for style in ramp]
 
     def terrain(self, code: int, cost: float) -> tuple[str, Style]:
         """A cell of ``code`` (cursor included) that costs ``cost``: a free cell shaded by
@@ -95,7 +101,7 @@ class CellLooks:
         if base == WALL:
             return glyph, style
         if base == FREE:
-            style = self.ramp[cost_level(cost) + (RAMP_LEVELS + 1) * (code != base)]
+            style = self.ramp[cost_level(cost) + (RAMP_LEVELS + 1) * (code // CURSOR)]
         return glyph[0] + cost_mark(cost), style
 
     def big_cells(self, run: Run | None, row: int, columns: range, codes: list[int],
@@ -182,6 +188,8 @@ def shaded(codes: list[int], costs: list[float] | None) -> list[int]:
 
 
 __all__ = [
+    "CURSOR",
+    "MARKED",
     "RAMP_COMPONENTS",
     "RAMP_LEVELS",
     "RAMP_NAMES",

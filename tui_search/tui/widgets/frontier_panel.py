@@ -57,6 +57,8 @@ if TYPE_CHECKING:
 #: The bottom legend's wordings, longest first (a narrow panel shows a shorter one); in the
 #: quiz, whose order is hidden: HIDDEN_LEGENDS.
 LEGENDS = ("▶ next out  + just added", "▶ next out + just added", "▶ next + added")
+#: A frontier whose next out is not known (a replayed trace's): no ``▶``.
+ADDED_LEGENDS = ("+ just added · any one may leave next", "+ just added", "+ added")
 HIDDEN_LEGENDS = ("+ just added · click picks", "+ added · click picks", "click picks")
 #: Cells between an entry and its end hint (at least).
 HINT_GAP = 2
@@ -215,7 +217,7 @@ class FrontierPanel(LinePanel):
         if hide_order:
             events = run.now.frontier(0, self.QUIZ_ENTRIES)
             self._by_cell = sorted(events, key=lambda g: run.nodes.cell(g)[::-1])
-        legends = HIDDEN_LEGENDS if hide_order else LEGENDS
+        legends = HIDDEN_LEGENDS if hide_order else LEGENDS if kind.next_known else ADDED_LEGENDS
         self.show_titles(titles(run.algo, hide_order), legends if n else ())
         if n:
             self._empty_text = ""
@@ -360,7 +362,7 @@ class FrontierPanel(LinePanel):
         else:
             (g,) = run.now.frontier(y, y + 1)
         x, cy = run.nodes.cell(g)
-        first = y == 0 and self._by_cell is None
+        first = y == 0 and self._by_cell is None and self._kind.next_known
         main = "frontier-panel--next" if first else "frontier-panel--entry"
         added = g in self._added
         parts = [

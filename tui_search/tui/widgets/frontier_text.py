@@ -15,7 +15,9 @@ if TYPE_CHECKING:
 
 #: The frontier's names, shortest last, after its full title (``Frontier.title``).
 SHORT_NAMES = {Frontier.FIFO: ("Queue", "Q"), Frontier.LIFO: ("Stack", "S"),
-               Frontier.PRIORITY: ("Priority queue", "PQ")}
+               Frontier.PRIORITY: ("Priority queue", "PQ"), Frontier.ADDED: ("Frontier", "F")}
+#: What the title adds while there is room: a replayed trace's frontier is only its order added.
+TITLE_NOTES = {Frontier.ADDED: "your trace doesn't say its discipline"}
 
 
 def titles(algo: Algorithm, hide_order: bool = False) -> tuple[str, ...]:
@@ -24,8 +26,11 @@ def titles(algo: Algorithm, hide_order: bool = False) -> tuple[str, ...]:
     + h)" ... "PQ (f)", "PQ"); in the quiz, that the order is hidden ("Queue (FIFO) · order
     hidden", "Queue (FIFO) · hidden", "Queue · hidden", then the plain wordings)."""
     name, letters = SHORT_NAMES[algo.frontier]
+    note = TITLE_NOTES.get(algo.frontier)
     if algo.priority is None:
         plain = [algo.frontier_title, name, letters]
+        if note:
+            plain.insert(0, f"{algo.frontier_title}: {note}")
     else:
         by, what = algo.priority_name, PRIORITIES[algo.priority]
         plain = [algo.frontier_title, f"{name} ({what})", f"{name} ({by})", name,

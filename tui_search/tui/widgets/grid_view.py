@@ -38,6 +38,8 @@ from tui_search.tui.cell_codes import COMPONENTS, half_blocks
 from tui_search.tui.cell_labels import LABEL_MODES
 from tui_search.tui.geometry import Geometry, snapped
 from tui_search.tui.widgets.cell_style import (
+    CURSOR,
+    MARKED,
     RAMP_COMPONENTS,
     CellLooks,
     block_codes,
@@ -81,7 +83,7 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         cell: Cell | None
 
     COMPONENT_CLASSES = {f"grid-view--{name}" for name in COMPONENTS + RAMP_COMPONENTS} | {
-        "grid-view--cursor"}
+        "grid-view--cursor", "grid-view--marked"}
 
     DEFAULT_CSS = """
     GridView {
@@ -98,6 +100,8 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
                                   text-style: bold; }
         & > .grid-view--path { background: $map-path; color: $map-path-text; text-style: bold; }
         & > .grid-view--cursor { text-style: reverse; }
+        /* A replay's first difference: the cell each run expands where they part. */
+        & > .grid-view--marked { color: $text-error; text-style: bold underline; }
         /* Terrain: a free cell's cost, light to dark (tui_search/tui/widgets/cell_style.py). */
         & > .grid-view--cost-1 { background: $map-cost-1; color: $map-cost-text; }
         & > .grid-view--cost-2 { background: $map-cost-2; color: $map-cost-text; }
@@ -111,6 +115,7 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         self.grid = grid
         self.run: Run | None = None
         self.cursor: Cell = grid.start or (0, 0)
+        self.mark: Cell | None = None  # a cell drawn marked (a replay's first difference)
         self.hover: Cell | None = None  # the cell under the mouse, no button down
         #: Where each cell is on screen; until the user zooms, the largest size that fits.
         self.geometry = Geometry(grid.width, grid.height)
@@ -138,6 +143,12 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
             self.refresh()
         else:
             self.refresh_cells(changed)
+
+    def set_mark(self, cell: Cell | None) -> None:
+        """Draw ``cell`` marked (None: no cell)."""
+        if cell != self.mark:
+            old, self.mark = self.mark, cell
+            self.refresh_cells([c for c in (old, cell) if c is not None])
 
     def set_cursor(self, cell: Cell) -> None:
         old, self.cursor = self.cursor, cell
@@ -326,7 +337,9 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         codes = row_codes(self.grid, self.run, row, x0, x1)
         cx, cy = self.cursor
         if cy == row and x0 <= cx < x1:
-            codes[cx - x0] += len(COMPONENTS)
+            codes[cx - x0] += CURSOR
+        if self.mark is not None and self.mark[1] == row and x0 <= self.mark[0] < x1:
+            codes[self.mark[0] - x0] += MARKED
         looks = self._cell_looks()
         costs = row_costs(self.grid, row, x0, x1)
         segments = [Segment(" " * self.pad_x, background)]  # the padding that centres the map

@@ -80,11 +80,13 @@ class RunPane(Vertical):
         self.view.styles.min_width = min(MAP_TITLE_WIDTH, max(0, arrangement.pane_width - 2))
 
     def show(self, run: Run | None, changed: list[Cell] | None, *, follow: bool = True,
-             hide_order: bool = False, title: str = "") -> None:
+             hide_order: bool = False, title: str = "", mark: Cell | None = None) -> None:
         """Push ``run`` at its position to the map and the panels (``changed``: the cells
-        whose look changed, None for all); ``title`` is the map's border title."""
+        whose look changed, None for all); ``title`` is the map's border title, ``mark`` a
+        cell the map marks."""
         view = self.view
         self._run = run
+        view.set_mark(mark)
         view.show_run(run, changed)
         self.set_class(run is None, "-no-run")
         if run is not None:

@@ -1,0 +1,84 @@
+"""``--replay FILE`` driven by Pilot: the trace and its search in lockstep, the frontier as
+added, the first difference marked on both maps and in the status line, and the key that
+jumps there and back."""
+
+from __future__ import annotations
+
+from tests.engine.student_searches import bfs
+from tests.helpers import TUTORIAL, TUTORIAL_ROWS
+from tests.tui.test_app import sync, wait_until
+from tui_search.engine.mapfile import load_map
+from tui_search.engine.semantics import Semantics
+from tui_search.engine.trace_read import read_trace
+from tui_search.engine.trace_replay import replay_of
+from tui_search.tui.app import SearchApp
+from tui_search.tui.widgets.frontier_panel import FrontierPanel
+from tui_search.tui.widgets.grid_view import GridView
+from tui_search.tui.widgets.run_pane import RunPane
+from tui_search.tui.widgets.stats import Stats
+
+NWSE = Semantics(order=("N", "W", "S", "E"))
+
+
+def replay_app(bug_at: int | None = 9) -> SearchApp:
+    """The app replaying a student's BFS (order N,W,S,E) that takes the newest entry once, at
+    step ``bug_at``, beside the app's BFS with that order."""
+    grid = load_map(TUTORIAL)
+    trace = read_trace(bfs(TUTORIAL_ROWS, "N,W,S,E", bug_at=bug_at), grid, "trace.jsonl")
+    replay = replay_of(trace, grid, "bfs", NWSE)
+    return SearchApp(grid, path=TUTORIAL, algorithm="bfs", semantics=NWSE, replay=replay)
+
+
+def status(app: SearchApp) -> str:
+    stats = app.screen.query_one("#stats", Stats)
+    return stats.status_text + " " + stats.narration_text
+
+
+@sync
+async def test_replay_steps_both_ways_in_lockstep_and_jumps_to_the_difference() -> None:
+    app = replay_app()
+    async with app.run_test(size=(120, 40)) as pilot:
+        session = app.session
+        panes = list(app.screen.query(RunPane))
+        assert [p.label for p in panes] == ["your trace", "BFS"]
+        trace_run, bfs_run = session.runs
+        assert trace_run.algo.short == "your trace"
+        # the first difference: in the status line from the start, and marked on both maps
+        assert "step 9: your trace expands" in status(app)
+        got, expected = session.replay.marks()
+        assert got is not None and expected is not None and got != expected
+        assert [p.view.mark for p in panes] == [got, expected]
+        # stepping: both runs, both ways
+        await pilot.press("n", "n")
+        assert (trace_run.k, bfs_run.k) == (2, 2)
+        await pilot.press("p")
+        assert (trace_run.k, bfs_run.k) == (1, 1)
+        # the trace's narration says what its step did in the app's own words
+        trace_words = panes[0].stats.narration_text
+        assert trace_words.replace("frontier", "queue") == panes[1].stats.narration_text
+        # its frontier panel: in the order added, and says the trace gives no discipline
+        frontier = panes[0].query_one(FrontierPanel)
+        assert "as added" in str(frontier.border_title)
+        # d: to the first difference, and back to where it was
+        await pilot.press("d")
+        await wait_until(pilot, lambda: trace_run.k == 9)
+        assert bfs_run.k == 9
+        assert trace_run.steps.at(9).node == got and bfs_run.steps.at(9).node == expected
+        await pilot.press("d")
+        await wait_until(pilot, lambda: trace_run.k == 1)
+        assert bfs_run.k == 1
+
+
+@sync
+async def test_a_trace_that_matches_has_no_difference_key_and_an_edit_ends_the_replay() -> None:
+    app = replay_app(bug_at=None)
+    async with app.run_test(size=(120, 40)) as pilot:
+        session = app.session
+        assert "your trace matches BFS" in status(app)
+        assert session.difference_step is None
+        assert app.screen.check_action("difference", ()) is False
+        assert all(v.mark is None for v in app.screen.query(GridView))
+        await pilot.press("down", "o")  # an obstacle under the trace: the replay is over
+        await wait_until(pilot, lambda: session.replay is None)
+        await wait_until(pilot, lambda: [p.label for p in app.screen.query(RunPane)] == ["BFS"])
+        assert "replay of your trace is over" in status(app)

@@ -1,0 +1,100 @@
+"""``--replay FILE``: a trace another program wrote beside the search it is matched with, two
+runs for the app's lockstep, and where they first part.
+
+The search is ``-a``'s under the choice flags, else the diagnosis's best candidate
+(:func:`~tui_search.engine.trace_diagnose.diagnose`); the first difference is the check's
+(:func:`~tui_search.engine.trace_check.check_trace`), numbered as the trace numbers its steps.
+No Textual here: the app's session holds a :class:`Replay` and asks it for its runs, their
+names, the cells to mark and the sentence to show.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from tui_search.engine.algorithms import get_algorithm
+from tui_search.engine.grid import Cell, Grid
+from tui_search.engine.run import MAX_STEPS, Run
+from tui_search.engine.semantics import Semantics
+from tui_search.engine.trace_check import Verdict, check_trace
+from tui_search.engine.trace_read import Trace, show
+from tui_search.engine.trace_run import TRACE_ALGORITHM, trace_run
+
+#: What the app calls the trace's pane.
+TRACE_LABEL = TRACE_ALGORITHM.short
+
+
+@dataclass(frozen=True)
+class Replay:
+    """A trace, the search it is replayed beside (``algorithm`` under ``semantics``) and how
+    the two compare (``verdict``), on the map as it was read (``where``: its obstacles, start
+    and goal; an edit that changes them ends the replay)."""
+
+    trace: Trace
+    algorithm: str
+    semantics: Semantics
+    verdict: Verdict
+    where: tuple[bytes, Cell | None, Cell | None]
+
+    @property
+    def labels(self) -> list[str]:
+        """The panes' names: the trace's, the search's."""
+        return [TRACE_LABEL, get_algorithm(self.algorithm).short]
+
+    def fits(self, grid: Grid) -> bool:
+        """Does the trace still apply to ``grid`` (the same obstacles, start and goal)?"""
+        return self.where == _where(grid)
+
+    def runs(self, grid: Grid, max_steps: int = MAX_STEPS) -> list[Run]:
+        """The trace as a run, and the search's run, each at step 0."""
+        return [trace_run(self.trace, grid, self.algorithm, self.semantics, max_steps),
+                Run(grid, self.algorithm, self.semantics, max_steps)]
+
+    @property
+    def step(self) -> int | None:
+        """The trace's step at which it first parts from the search (None: it never does)."""
+        difference = self.verdict.difference
+        return None if difference is None else difference.step
+
+    def marks(self) -> list[Cell | None]:
+        """The cell each pane's run expands (or adds) where they first part: the trace's,
+        the search's (None where one has none, or they never part)."""
+        difference = self.verdict.difference
+        if difference is None:
+            return [None, None]
+        return [difference.got, difference.expected]
+
+    def sentence(self) -> str:
+        """The first difference in a line: "step 9: your trace expands (3,2); BFS expands
+        (2,3)", or that they match all through."""
+        difference = self.verdict.difference
+        name = get_algorithm(self.algorithm).short
+        if difference is None:
+            return f"your trace matches {self.verdict.choices} for all {self.verdict.steps} steps"
+        if difference.kind == "expand" and difference.got and difference.expected:
+            return (f"step {difference.step}: your trace expands {show(difference.got)}; "
+                    f"{name} expands {show(difference.expected)}")
+        return difference.message
+
+
+def _where(grid: Grid) -> tuple[bytes, Cell | None, Cell | None]:
+    return bytes(grid.blocked), grid.start, grid.goal
+
+
+def replay_of(trace: Trace, grid: Grid, algorithm: str | None, semantics: Semantics,
+              max_steps: int = MAX_STEPS) -> Replay:
+    """``trace`` beside ``algorithm`` under ``semantics`` (as ``--check-trace -a`` checks
+    it), or with no ``algorithm`` beside the diagnosis's best candidate."""
+    if algorithm is None:
+        from tui_search.engine.trace_diagnose import diagnose
+
+        best = diagnose(trace, grid, max_steps).best[0]
+        if best.label:  # a recursive DFS: matched on the trace mirrored; checked as it is
+            best = check_trace(trace, grid, best.algorithm, best.semantics, max_steps)
+        algorithm, semantics, verdict = best.algorithm, best.semantics, best
+    else:
+        verdict = check_trace(trace, grid, algorithm, semantics, max_steps)
+    return Replay(trace, algorithm, semantics, verdict, _where(grid))
+
+
+__all__ = ["TRACE_LABEL", "Replay", "replay_of"]
