@@ -85,6 +85,8 @@ class CellLooks:
 
     def __init__(self, style_of: Callable[[str], Style]) -> None:
         cursor, marked = style_of("grid-view--cursor"), style_of("grid-view--marked")
+        # the mark's colour and weight over the cell's own background (its state's)
+        marked = Style(color=marked.color, bold=marked.bold, underline=marked.underline)
         n = len(COMPONENTS)
         styles = [style_of(f"grid-view--{name}") for name in COMPONENTS]
         looks = (Style(), cursor, marked, marked + cursor)

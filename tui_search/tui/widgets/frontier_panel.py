@@ -57,8 +57,10 @@ if TYPE_CHECKING:
 #: The bottom legend's wordings, longest first (a narrow panel shows a shorter one); in the
 #: quiz, whose order is hidden: HIDDEN_LEGENDS.
 LEGENDS = ("▶ next out  + just added", "▶ next out + just added", "▶ next + added")
-#: A frontier whose next out is not known (a replayed trace's): no ``▶``.
-ADDED_LEGENDS = ("+ just added · any one may leave next", "+ just added", "+ added")
+#: A frontier whose next out is not known (a replayed trace's): no ``▶``, and it says why.
+ADDED_LEGENDS = ("+ just added · your trace doesn't say its discipline",
+                 "your trace doesn't say its discipline", "+ added · no discipline given",
+                 "no discipline given")
 HIDDEN_LEGENDS = ("+ just added · click picks", "+ added · click picks", "click picks")
 #: Cells between an entry and its end hint (at least).
 HINT_GAP = 2
