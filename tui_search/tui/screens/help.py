@@ -47,6 +47,7 @@ KEYS = (
     ("i  enter", "quiz: predict the node that comes off next (cursor, enter)"),
     ("click, tab ↑↓", "quiz: pick the frontier entry instead (double click: answer)"),
     ("x", "the exercises as live challenges: --exercise FILE's, 1, 2, off"),
+    ("d", "--replay: to the step where your trace first differs / back"),
     ("t", "next colour theme: " + ", ".join(t.title.lower() for t in THEMES.values())),
     ("ctrl+s", "save the map (to its file, in its format)"),
     ("w", "save the map as … (asks before replacing a file)"),
