@@ -82,3 +82,21 @@ async def test_a_trace_that_matches_has_no_difference_key_and_an_edit_ends_the_r
         await wait_until(pilot, lambda: session.replay is None)
         await wait_until(pilot, lambda: [p.label for p in app.screen.query(RunPane)] == ["BFS"])
         assert "replay of your trace is over" in status(app)
+
+
+def test_the_session_jumps_to_the_difference_and_back_from_anywhere() -> None:
+    """Without Textual: d from step 4 goes to step 9, again back to 4; from step 9 itself (no
+    step to go back to) it stays; another search ends the replay."""
+    session = replay_app().session
+    session.goto(4)
+    session.to_difference()
+    assert [r.k for r in session.runs] == [9, 9]
+    session.to_difference()
+    assert [r.k for r in session.runs] == [4, 4]
+    session.goto(9)
+    session.to_difference()
+    assert [r.k for r in session.runs] == [9, 9]
+    assert session.lockstep_sentence(80).endswith("· d: to it and back")
+    session.choose_algorithm("dfs")
+    assert session.replay is None and session.labels == ["DFS"]
+    assert session.marks() == [None] and session.difference_step is None
