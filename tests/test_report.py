@@ -107,7 +107,8 @@ def test_a_teacher_s_exercise_file_grades_a_class(capsys, tmp_path: Path) -> Non
                            str(tmp_path / "tutorial.txt"), str(moved))
     assert code == 1
     assert out.splitlines()[1] == (f"{moved}: not solved — changed the start, which the "
-                                   "exercise does not allow")
+                                   "exercise does not allow; both found the goal; Greedy's "
+                                   "path costs 11.07, A*'s 9.66")
     assert out.splitlines()[-1] == "0 of 2 solved, 2 not solved"
 
 

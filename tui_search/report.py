@@ -36,8 +36,8 @@ class Graded(NamedTuple):
         v = self.verdict
         if v is None:
             return f"{self.where}: unreadable — {self.error}"
-        text = (f"{self.where}: {v.reason}" if not v.graded
-                else f"{self.where}: {v.status} — {v.reason}")
+        text = (f"{self.where}: {v.said}" if not v.graded
+                else f"{self.where}: {v.status} — {v.said}")
         return text + (f" (hint: {v.hint})" if v.hint else "")
 
     def as_json(self) -> dict[str, object]:
@@ -126,7 +126,7 @@ def _print_one(row: Graded) -> None:
     verdict = row.verdict
     assert verdict is not None
     word = "solved" if verdict.solved else "not solved"
-    print(f"{row.where}: {verdict.exercise.name} {word} — {verdict.reason}")
+    print(f"{row.where}: {verdict.exercise.name} {word} — {verdict.said}")
     if verdict.hints:
         print(f"  hint: {verdict.hints}")
 

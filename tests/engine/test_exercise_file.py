@@ -83,6 +83,8 @@ def test_an_edit_outside_edits_fails_the_exercise(tmp_path: Path) -> None:
     verdict = grade(ex, grid)
     assert not verdict.solved and verdict.reason == (
         "changed the start, which the exercise does not allow")
+    assert verdict.said == ("changed the start, which the exercise does not allow; "
+                            "no path to the goal")  # what the searches did, as if allowed
     grid.goal = (0, 5)
     assert grade(ex, grid).reason == (
         "changed the start and the goal, which the exercise does not allow")
