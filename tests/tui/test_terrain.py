@@ -11,6 +11,8 @@ import shutil
 from dataclasses import replace
 from pathlib import Path
 
+import pytest
+
 from tests.tui.test_app import MAPS, SIZE, at, sync, wait_until
 from tests.tui.test_themes import DEUTAN, NORMAL, PROTAN, palette_run, seen
 from tui_search.engine.grid import Grid
@@ -235,6 +237,33 @@ def test_the_narration_says_what_the_terrain_adds_to_g() -> None:
     bfs = Run(load_map(MUD), "bfs")
     while bfs.forward():
         assert "costs" not in narrate(bfs)  # BFS ignores costs when choosing
+
+
+@pytest.mark.parametrize(("algorithm", "expected"), [
+    # A*: f's g is the costed g, and each successor's g adds the cost of the cell it enters
+    ("astar", [("Expanded (2,2) f = 7.83 (g 1.41 + h 6.41): added SW, S, SE, E, NE; (3,3) "
+                "costs 9: g 1.41 → 14.14, (3,2) costs 9: g 1.41 → 10.41, (3,1) costs 9: g 1.41 "
+                "→ 14.14"),
+               "(3,1) reached with a lower g; (3,1) costs 9: g 1.00 → 10.00"]),
+    # greedy chooses by h alone but still says what g the terrain gives (diagonal: 9 x √2)
+    ("greedy", [("Expanded (3,3) h = 5.00 (g 14.14): added SW, S, SE, E, NE; (3,4) costs 9: "
+                 "g 14.14 → 23.14, (4,4) costs 9: g 14.14 → 26.87, (4,3) costs 9: g 14.14 → "
+                 "23.14, 1 more on terrain")]),
+])
+def test_a_star_and_greedy_narrate_the_terrain_too(algorithm: str, expected: list[str]) -> None:
+    run = Run(load_map(MUD), algorithm)
+    said = []
+    while run.forward():
+        said.append(narrate(run))
+    for text in expected:
+        assert any(text in line for line in said), (text, said)
+
+
+@pytest.mark.parametrize("algorithm", ["dfs", "iddfs"])
+def test_the_uninformed_searches_do_not_narrate_costs(algorithm: str) -> None:
+    run = Run(load_map(MUD), algorithm)  # they ignore costs when choosing, as BFS does
+    while run.forward():
+        assert "costs" not in narrate(run)
 
 
 def test_the_readout_names_a_cells_cost() -> None:
