@@ -27,6 +27,18 @@ def test_output_writes_the_map_and_exits_0(capsys, tmp_path: Path) -> None:
     assert out.read_text("utf-8").startswith("; generated: maze 15x9 seed 7\nS")
 
 
+def test_output_dash_is_standard_output(capsys, tmp_path: Path, monkeypatch) -> None:
+    """``--output -`` prints the map (the convention, as --trace -): no file named ``-``;
+    ``./-`` still names one."""
+    monkeypatch.chdir(tmp_path)
+    code, stdout, err = run_cli(capsys, "--generate", "maze", "--size", "15x9", "--seed", "7",
+                                "--output", "-")
+    assert (code, err) == (0, "") and not (tmp_path / "-").exists()
+    assert stdout == generated_text(make_recipe("maze", "15x9", "7"))
+    assert run_cli(capsys, "--generate", "maze", "--output", "./-")[:2] == (0, "")
+    assert (tmp_path / "-").read_text("utf-8").startswith("; generated: maze 21x15 seed 1\n")
+
+
 def test_text_seeds_and_the_defaults(capsys, tmp_path: Path) -> None:
     out = tmp_path / "a.txt"
     assert run_cli(capsys, "--generate", "random:25", "--seed", "alice", "--output",

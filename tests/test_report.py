@@ -70,6 +70,20 @@ def test_json_is_a_list_an_object_a_map(capsys, folder: list[str]) -> None:
     assert moved["bfs"]["moves"] == 4 and moved["solved"] is True
 
 
+@pytest.mark.parametrize("picked", [["exercise1-goal-moved.txt"], ["broken.txt"], []])
+def test_json_is_a_list_whatever_the_folder_holds(capsys, folder: list[str],
+                                                  picked: list[str]) -> None:
+    """One map (even a bad one) or none (the exercise's own map) is still a list, as --csv is
+    always a table: a gradebook script reads one shape."""
+    maps = [f for f in folder if Path(f).name in picked]
+    code, out, _ = run_cli(capsys, "--exercise", "1", "--headless", "--json", *maps)
+    rows = json.loads(out)
+    assert isinstance(rows, list) and len(rows) == 1
+    expected = {"exercise1-goal-moved.txt": ("solved", 0), "broken.txt": ("unreadable", 1)}
+    verdict, exit_code = expected[picked[0]] if picked else ("not solved", 1)
+    assert rows[0]["verdict"] == verdict and code == exit_code
+
+
 def test_csv_has_a_column_per_condition_field(capsys, folder: list[str]) -> None:
     code, out, _ = run_cli(capsys, "--exercise", "1", "--headless", "--csv", *folder)
     rows = list(csv.reader(io.StringIO(out)))
@@ -93,7 +107,8 @@ def test_a_teacher_s_exercise_file_grades_a_class(capsys, tmp_path: Path) -> Non
                            str(tmp_path / "tutorial.txt"), str(moved))
     assert code == 1
     assert out.splitlines()[1] == (f"{moved}: not solved — changed the start, which the "
-                                   "exercise does not allow")
+                                   "exercise does not allow; both found the goal; Greedy's "
+                                   "path costs 11.07, A*'s 9.66")
     assert out.splitlines()[-1] == "0 of 2 solved, 2 not solved"
 
 

@@ -128,7 +128,8 @@ def build_parser() -> argparse.ArgumentParser:
                    help=f"with --generate: a whole number or any text (default {DEFAULT_SEED}); "
                    "the same kind, size and seed make the same map everywhere")
     p.add_argument("--output", metavar="FILE",
-                   help="with --generate: write the map to FILE (never over an existing file)")
+                   help="with --generate: write the map to FILE (never over an existing file; "
+                   "- for standard output)")
     p.add_argument("--max-steps", metavar="N", type=_positive, default=MAX_STEPS,
                    help=f"give up after N expansions (default {MAX_STEPS:,}: iterative "
                    "deepening on a big map can take billions)")

@@ -9,6 +9,7 @@ and the server (:mod:`tui_search.serve`), so that none of them imports another.
 from __future__ import annotations
 
 import argparse
+import sys
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -140,7 +141,11 @@ def check_generate(args: argparse.Namespace) -> None:
 
 
 def write_generated(args: argparse.Namespace) -> int:
-    """--generate with --output: write the map to a new file (never over one), exit 0."""
+    """--generate with --output: write the map to a new file (never over one), or with
+    ``--output -`` to standard output (``./-`` names a file called ``-``), exit 0."""
+    if args.output == "-":
+        sys.stdout.write(generated_text(args.recipe))  # the bytes a file would get
+        return 0
     try:
         save_new(generate(args.recipe, args.output), args.output)
     except MapError as exc:

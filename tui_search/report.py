@@ -1,6 +1,6 @@
 """Maps graded on an exercise, headless (``--exercise E --headless MAP...``): one map as a line
-(or a JSON object), or the **class report** of many -- a line a map and a summary, ``--json`` a
-list, ``--csv`` a table for a spreadsheet.  One bad map never stops the report: it is a line
+or the **class report** of many -- a line a map and a summary.  ``--json`` is always a list (an
+object a map) and ``--csv`` always a table, whatever the folder holds.  One bad map never stops the report: it is a line
 saying why it is unreadable.
 
 No Textual or Rich here.
@@ -36,8 +36,8 @@ class Graded(NamedTuple):
         v = self.verdict
         if v is None:
             return f"{self.where}: unreadable — {self.error}"
-        text = (f"{self.where}: {v.reason}" if not v.graded
-                else f"{self.where}: {v.status} — {v.reason}")
+        text = (f"{self.where}: {v.said}" if not v.graded
+                else f"{self.where}: {v.status} — {v.said}")
         return text + (f" (hint: {v.hint})" if v.hint else "")
 
     def as_json(self) -> dict[str, object]:
@@ -93,9 +93,10 @@ def _cell(value: object) -> str:
 def run_exercise(args: argparse.Namespace) -> int:
     """Grade ``args.maps`` (none: the tutorial's map, or --generate's) on ``--exercise``."""
     exercise: Exercise = args.exercise_read
-    # A report (a line or a CSV row a map, a bad map one of them) for several maps, and for
-    # one under --csv, so that a spreadsheet gets its table whatever the folder holds.
-    if len(args.maps) <= 1 and not (args.csv and args.maps):
+    # A report (a line, a CSV row or a JSON object a map, a bad map one of them) for several
+    # maps, and for one under --csv or --json, so that a spreadsheet gets its table and a
+    # gradebook script its list whatever the folder holds.
+    if len(args.maps) <= 1 and not ((args.csv or args.json) and args.maps):
         grid, path = load_problem(args)  # a bad map is bad input: exit 2
         where = describe_name(map_name(args, path))
         need_endpoints(grid, where)
@@ -107,10 +108,10 @@ def run_exercise(args: argparse.Namespace) -> int:
                 for name in args.maps]
     if args.csv:
         write_csv(rows, exercise)
-    elif len(rows) == 1:
-        _print_one(rows[0], args.json)
     elif args.json:
         print(to_json([row.as_json() for row in rows]))
+    elif len(rows) == 1:
+        _print_one(rows[0])
     else:
         for row in rows:
             print(row.line())
@@ -120,15 +121,12 @@ def run_exercise(args: argparse.Namespace) -> int:
     return EXIT_FOUND if all(row.status == "solved" for row in rows) else EXIT_NO_PATH
 
 
-def _print_one(row: Graded, json: bool) -> None:
+def _print_one(row: Graded) -> None:
     """One map, as before the report: the exercise named, and the hint on its own line."""
     verdict = row.verdict
     assert verdict is not None
-    if json:
-        print(to_json(row.as_json()))
-        return
     word = "solved" if verdict.solved else "not solved"
-    print(f"{row.where}: {verdict.exercise.name} {word} — {verdict.reason}")
+    print(f"{row.where}: {verdict.exercise.name} {word} — {verdict.said}")
     if verdict.hints:
         print(f"  hint: {verdict.hints}")
 

@@ -3,11 +3,14 @@ exercise does not allow."""
 
 from __future__ import annotations
 
+import sys
+import types
 from pathlib import Path
 
 import pytest
 
 from tests.helpers import MAPS
+from tui_search.engine import exercise_file
 from tui_search.engine.exercise_file import built_in_exercise, find_exercise, load_exercise
 from tui_search.engine.exercises import grade
 from tui_search.engine.mapfile import load_map
@@ -83,6 +86,8 @@ def test_an_edit_outside_edits_fails_the_exercise(tmp_path: Path) -> None:
     verdict = grade(ex, grid)
     assert not verdict.solved and verdict.reason == (
         "changed the start, which the exercise does not allow")
+    assert verdict.said == ("changed the start, which the exercise does not allow; "
+                            "no path to the goal")  # what the searches did, as if allowed
     grid.goal = (0, 5)
     assert grade(ex, grid).reason == (
         "changed the start and the goal, which the exercise does not allow")
@@ -133,3 +138,25 @@ def test_a_multi_line_condition_names_the_line_it_is_on(tmp_path: Path) -> None:
     with pytest.raises(MapError) as caught:
         load_exercise(path)
     assert str(caught.value).startswith(f"{path}:8:19: solved: 'astar_manhattan.fund'")
+
+
+def test_python_3_10_reads_exercises_with_tomli(monkeypatch, tmp_path: Path) -> None:
+    """Without ``tomllib`` (Python 3.10) the loader takes ``tomli``, which pyproject.toml
+    requires there; a bad file is still one line at its line and column."""
+    real = exercise_file.toml_parser()  # tomllib, or tomli when the tests run on 3.10
+    calls: list[str] = []
+    tomli = types.ModuleType("tomli")
+    tomli.TOMLDecodeError = real.TOMLDecodeError  # type: ignore[attr-defined]
+    tomli.loads = lambda text: calls.append(text) or real.loads(text)  # type: ignore[attr-defined]
+    monkeypatch.setitem(sys.modules, "tomllib", None)  # `import tomllib` raises ImportError
+    monkeypatch.setitem(sys.modules, "tomli", tomli)
+    chosen = exercise_file.toml_parser()
+    assert chosen is tomli
+    monkeypatch.setattr(exercise_file, "_toml", chosen)
+    assert load_exercise(write(tmp_path, GREEDY)).title == "Greedy is not optimal"
+    assert calls == [GREEDY]
+    with pytest.raises(MapError) as bad:
+        load_exercise(write(tmp_path, GREEDY.replace("title = ", "title "), "bad.toml"))
+    assert (bad.value.line, bad.value.col) == (1, 7)
+    pyproject = real.loads((Path(__file__).parents[2] / "pyproject.toml").read_text())
+    assert 'tomli>=1.1; python_version < "3.11"' in pyproject["project"]["dependencies"]

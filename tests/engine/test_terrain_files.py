@@ -4,6 +4,9 @@ and says."""
 
 from __future__ import annotations
 
+import json
+from pathlib import Path
+
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
@@ -14,7 +17,7 @@ from tui_search.engine.mapfile import load_map, parse_map_text
 from tui_search.engine.mapread import MapError
 from tui_search.engine.mapsource import MOVINGAI, TEXT
 from tui_search.engine.mapwrite import format_map, save_map, save_notes
-from tui_search.engine.terrain import load_terrain, parse_terrain
+from tui_search.engine.terrain import MIN_COST, load_terrain, parse_terrain
 
 
 def costs_of(grid: Grid) -> list[list[float]]:
@@ -70,6 +73,10 @@ def test_movingai_terrain_letters_take_a_table() -> None:
     ("S.f\n..G\n", "f  abc\n", "t.terrain:1:4: bad cost 'abc'"),
     ("S.f\n..G\n", "f 0\n", "t.terrain:1:3: bad cost '0': it must be above 0"),
     ("S.f\n..G\n", "f 1e99\n", "t.terrain:1:3: bad cost '1e99'"),
+    ("S.f\n..G\n", "f 0.001\n", ("t.terrain:1:3: bad cost '0.001': at least 0.01 (costs show "
+                              "to 2 decimals: it would show as 0.00)")),
+    ("; terrain f 0.0000000001\nS.f\n..G\n", None,
+     "m.txt:1:13: bad cost '0.0000000001': at least 0.01"),
     ("S.f\n..G\n", "ff 3\n", "t.terrain:1:1: a terrain names one character, not 'ff'"),
     ("S.f\n..G\n", "f\n", "t.terrain:1:1: expected 'CHAR COST' or 'CHAR blocked', found 'f'"),
     ("S.f\n..G\n", "f 1\n  f 2\n", "t.terrain:2:3: 'f' is given twice (first at line 1)"),
@@ -155,3 +162,22 @@ def test_a_comment_that_only_begins_with_terrain_stays_a_comment() -> None:
     assert grid.costs is not None and grid.costs[1] == 5.0
     with pytest.raises(MapError, match=r"m.txt:1:\d+: bad cost"):
         parse_map_text("; terrain f five\nSf.\n..G\n", "m.txt")
+
+
+def test_the_least_cost_shows_as_itself_and_a_smaller_one_is_one_line_exit_2(
+        tmp_path: Path, capsys) -> None:
+    """Every cost is above 0 and the app shows costs to 2 decimals: 0.01 is the least a table
+    gives (the JSON's cost is then not 0.0); 1e-10 would show as 0.00, so it is bad input."""
+    from tests.test_cli import run_cli
+
+    game = tmp_path / "m.txt"
+    game.write_text("SfG\n")
+    table = tmp_path / "t.terrain"
+    table.write_text(f"f {MIN_COST}\n")
+    code, out, _ = run_cli(capsys, str(game), "--terrain", str(table), "--headless", "--json",
+                           "-a", "ucs")
+    assert code == 0 and json.loads(out)["cost"] == 1.01  # 0.01 into f, 1 into G
+    table.write_text("f 0.0000000001\n")
+    code, out, err = run_cli(capsys, str(game), "--terrain", str(table), "--headless", "--json")
+    assert code == 2 and out == "" and err.count("\n") == 1
+    assert f"{table}:1:3: bad cost '0.0000000001': at least 0.01" in err

@@ -4,12 +4,15 @@ code; the narration names the lines while it is shown."""
 
 from __future__ import annotations
 
+from tests.textual_internals import notifications
 from tests.tui.test_app import SIZE, sync, tutorial_app, wait_until
 from tui_search.engine.algorithms import ALGORITHMS
+from tui_search.engine.grid import Grid
 from tui_search.engine.pseudocode import pseudocode
 from tui_search.engine.semantics import Semantics
 from tui_search.tui.app import SearchApp
 from tui_search.tui.code_trace import lit_lines
+from tui_search.tui.layout import CODE_MIN_HEIGHT, TREES_MIN_HEIGHT
 from tui_search.tui.widgets.code_panel import LIT_MARK, CodePanel, code_rows
 from tui_search.tui.widgets.run_pane import RunPane
 
@@ -86,12 +89,71 @@ def test_a_long_line_wraps_under_its_own_words_and_keeps_its_light() -> None:
     assert sum(text.startswith(LIT_MARK) for text in texts) == 1
 
 
+def lit_in_view(panel: CodePanel) -> bool:
+    """The first lit line is among the rows the panel shows, with a row besides it."""
+    top, rows = panel.scroll_offset.y, panel.scrollable_content_region.height
+    lit = panel.lit_rows()
+    return bool(lit) and top <= lit[0] < top + rows and rows >= 2
+
+
+@sync
+async def test_at_80x24_each_compare_pane_shows_its_code_in_fewer_lines_than_a_tree() -> None:
+    app = SearchApp(tutorial_app().session.grid, compare="bfs,dfs")
+    async with app.run_test(size=(80, 24)) as pilot:
+        await wait_until(pilot, lambda: len(app.main.panes) == 2)
+        await pilot.press("n", "n", "v")
+        await wait_until(pilot, lambda: all(shown(p) for p in app.main.panes))
+        for pane, run in zip(app.main.panes, app.session.runs, strict=True):
+            panel = pane.code_panel
+            assert CODE_MIN_HEIGHT <= panel.outer_size.height < TREES_MIN_HEIGHT
+            await wait_until(pilot, lambda panel=panel: lit_in_view(panel))
+            assert panel.lit == lit_lines(run) and pane.frontier.region.area > 0
+        await pilot.press("v")  # the trees have no room: the frontier alone, as before
+        await wait_until(pilot, lambda: not any(shown(p) for p in app.main.panes))
+        assert all(not p.tree_panel.region.area for p in app.main.panes)
+
+
+@sync
+async def test_at_80x24_beside_the_tutorial_lesson_the_code_shows() -> None:
+    from tests.tui.test_lesson import lesson_app
+
+    app = lesson_app("tutorial")
+    async with app.run_test(size=(80, 24)) as pilot:
+        panel = app.main.query_one(".lesson")
+        await pilot.press("pagedown")  # section 2: BFS at step 4
+        await wait_until(pilot, lambda: "2/10" in str(panel.border_title))
+        pane = app.main.panes[0]
+        await pilot.press("v")
+        await wait_until(pilot, lambda: shown(pane) and lit_in_view(pane.code_panel))
+        assert pane.code_panel.lit == lit_lines(app.session.runs[0])
+
+
+def big_map() -> Grid:
+    """An open 60x40 map: two panes of it at 80x24 leave no lines for the lists."""
+    big = Grid(60, 40)
+    big.start, big.goal = (0, 0), (59, 39)
+    return big
+
+
+@sync
+async def test_where_no_pane_has_room_for_the_code_v_says_so() -> None:
+    app = SearchApp(big_map(), compare="bfs,dfs")
+    async with app.run_test(size=(80, 24)) as pilot:
+        await wait_until(pilot, lambda: len(app.main.panes) == 2)
+        await pilot.press("n", "v")
+        await wait_until(pilot, lambda: any("No room for the Code panel" in n.message
+                                            for n in notifications(app)))
+        assert not any(shown(p) for p in app.main.panes)
+
+
 @sync
 async def test_a_code_panel_unfolded_by_a_bigger_terminal_shows_the_run_at_once() -> None:
-    app = SearchApp(tutorial_app().session.grid, compare="bfs,astar")
+    app = SearchApp(big_map(), compare="bfs,astar")
     async with app.run_test(size=(80, 24)) as pilot:
         await wait_until(pilot, lambda: len(app.main.panes) == 2)
         await pilot.press("n", "n", "v")  # no room for the panels at 80x24: folded
+        await wait_until(pilot, lambda: app.session.show_code)
+        assert not any(shown(p) for p in app.main.panes)
         await pilot.resize_terminal(120, 40)
         await wait_until(pilot, lambda: all(shown(p) for p in app.main.panes))
         bfs, astar = (p.code_panel for p in app.main.panes)

@@ -13,7 +13,7 @@ from hypothesis import strategies as st
 from tests.tui.test_app import TUTORIAL, sync, wait_until
 from tui_search.engine.mapfile import load_map
 from tui_search.tui.app import SearchApp
-from tui_search.tui.layout import arrange
+from tui_search.tui.layout import CODE_MIN_HEIGHT, arrange
 from tui_search.tui.widgets.grid_view import GridView
 
 SIZES = [(80, 24), (100, 30), (120, 40), (160, 48), (200, 60)]
@@ -126,7 +126,7 @@ def test_a_status_line_that_wraps_takes_the_blank_lines_under_the_map_not_its_pl
     steady = arrange(1, 100, 23, (6, 6), wrapped=2)
     assert now.beside and now.map_height == 0
     assert steady.map_height == 25 and steady.map_max_height == 21
-    assert (*steady[:8], 0, *steady[9:11], 0) == now
+    assert (*steady[:8], 0, *steady[9:11], 0, now.code) == now
     under = arrange(1, 60, 29, (6, 6), wrapped=2)  # lists under the map: they give the rows
     assert under.map_height == arrange(1, 60, 31, (6, 6)).map_height
     assert under.lists_height == arrange(1, 60, 31, (6, 6)).lists_height - 2
@@ -174,3 +174,15 @@ async def test_the_first_layouts_classes_are_styled(size: tuple[int, int]) -> No
         assert pane.lists.styles.layout.name == ("vertical" if beside else "horizontal")
         for panel in (pane.tree_panel, pane.code_panel):
             assert panel.styles.display == ("none" if panel.has_class("-folded") else "block")
+
+
+def test_the_code_panel_needs_fewer_lines_than_a_tree() -> None:
+    """Two panes at 80x24 on the tutorial: no room for the trees under the maps, but room for
+    the Code panel in their place (and with it on, the lists keep CODE_MIN_HEIGHT lines where
+    they would need LISTS_MIN_HEIGHT); beside a map too short for it, none."""
+    room = arrange(2, 80, 17, (6, 6), stats_height=4)
+    assert not room.lists and not room.code  # the lists give way, as ever
+    code = arrange(2, 80, 17, (6, 6), stats_height=4, code=True)
+    assert code.lists_height == CODE_MIN_HEIGHT and code.code and not code.trees
+    assert not arrange(1, 80, 6, (60, 40), code=True).code
+    assert arrange(1, 100, 25, (6, 6), code=True).code  # beside, in a tall enough pane

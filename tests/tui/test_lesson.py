@@ -8,6 +8,8 @@ import subprocess
 import sys
 from collections.abc import Callable
 
+from textual.geometry import Region
+
 from tests.engine.test_lesson import LESSONS, TEACHER
 from tests.tui.test_app import TUTORIAL, sync, wait_until
 from tui_search.engine.exercise_file import built_in_exercise
@@ -226,3 +228,34 @@ async def test_the_command_line_opens_a_lesson_file_beside_the_panes() -> None:
         assert app.session.map_name == "discard.txt" and app.session.labels == ["DFS"]
         await wait_until(pilot, lambda: app.main.panes[0].code_panel.display)
         assert panel.outer_size.width == 48  # two fifths of 120
+
+
+def glyphs_in(app: SearchApp, region: Region) -> str:
+    """The text the terminal shows inside ``region``."""
+    from tests.textual_internals import composited
+
+    rows = composited(app)[region.y:region.bottom]
+    return "\n".join("".join(text for text, _ in row)[region.x:region.right] for row in rows)
+
+
+@sync
+async def test_at_80x24_sections_6_and_8_name_what_is_on_screen() -> None:
+    """Without the comparison table (no room at 80x24), the paths drawn (◆ between S and G)
+    and the expanded cells (●) say what sections 6 and 8 claim."""
+    app = lesson_app("tutorial")
+    async with app.run_test(size=(80, 24)) as pilot:
+        panel = app.main.query_one(".lesson")
+        seen = {}
+        for section in (6, 8):
+            while f"{section}/10" not in str(panel.border_title):
+                await pilot.press("pagedown")
+                await pilot.pause()
+            await wait_until(pilot, lambda: all(r.at_end for r in app.session.runs))
+            await pilot.pause()
+            assert not app.main.table.display  # the table: no room
+            seen[section] = [glyphs_in(app, p.view.region) for p in app.main.panes]
+        bfs, dfs = seen[6]  # 5 moves against 8: 4 and 7 cells between S and G
+        assert (bfs.count("◆"), dfs.count("◆")) == (4, 7)
+        bfs, dfs = seen[8]  # both 7 moves; DFS expanded only its path, BFS 22 cells
+        assert (bfs.count("◆"), dfs.count("◆")) == (6, 6)
+        assert dfs.count("●") == 0 and bfs.count("●") == 22 - 7

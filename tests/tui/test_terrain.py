@@ -11,6 +11,8 @@ import shutil
 from dataclasses import replace
 from pathlib import Path
 
+import pytest
+
 from tests.tui.test_app import MAPS, SIZE, at, sync, wait_until
 from tests.tui.test_themes import DEUTAN, NORMAL, PROTAN, palette_run, seen
 from tui_search.engine.grid import Grid
@@ -237,6 +239,33 @@ def test_the_narration_says_what_the_terrain_adds_to_g() -> None:
         assert "costs" not in narrate(bfs)  # BFS ignores costs when choosing
 
 
+@pytest.mark.parametrize(("algorithm", "expected"), [
+    # A*: f's g is the costed g, and each successor's g adds the cost of the cell it enters
+    ("astar", [("Expanded (2,2) f = 7.83 (g 1.41 + h 6.41): added SW, S, SE, E, NE; (3,3) "
+                "costs 9: g 1.41 → 14.14, (3,2) costs 9: g 1.41 → 10.41, (3,1) costs 9: g 1.41 "
+                "→ 14.14"),
+               "(3,1) reached with a lower g; (3,1) costs 9: g 1.00 → 10.00"]),
+    # greedy chooses by h alone but still says what g the terrain gives (diagonal: 9 x √2)
+    ("greedy", [("Expanded (3,3) h = 5.00 (g 14.14): added SW, S, SE, E, NE; (3,4) costs 9: "
+                 "g 14.14 → 23.14, (4,4) costs 9: g 14.14 → 26.87, (4,3) costs 9: g 14.14 → "
+                 "23.14, 1 more on terrain")]),
+])
+def test_a_star_and_greedy_narrate_the_terrain_too(algorithm: str, expected: list[str]) -> None:
+    run = Run(load_map(MUD), algorithm)
+    said = []
+    while run.forward():
+        said.append(narrate(run))
+    for text in expected:
+        assert any(text in line for line in said), (text, said)
+
+
+@pytest.mark.parametrize("algorithm", ["dfs", "iddfs"])
+def test_the_uninformed_searches_do_not_narrate_costs(algorithm: str) -> None:
+    run = Run(load_map(MUD), algorithm)  # they ignore costs when choosing, as BFS does
+    while run.forward():
+        assert "costs" not in narrate(run)
+
+
 def test_the_readout_names_a_cells_cost() -> None:
     grid = load_map(MUD)
     assert describe(None, grid, (4, 2)) == "(4,2) costs 9: free"
@@ -254,3 +283,32 @@ async def test_the_comparison_says_each_paths_moves_and_cost() -> None:
         assert table.text_lines[-1].endswith(
             "BFS's path has 7 moves, cost 32.11; UCS's 8 moves, cost 9.24")
     assert math.isclose(Run(load_map(MUD), "ucs").outcome().cost or 0, 9.2426, abs_tol=1e-3)
+
+
+@sync
+async def test_start_and_goal_put_on_costed_cells_with_the_keys_keep_their_costs() -> None:
+    """The issue's rule: a move costs the cell it enters, the start's own cost is never paid,
+    and a start or goal placed on a digit keeps that cell's cost while the app runs."""
+    from tui_search.engine.mapfile import parse_map_text
+
+    grid = parse_map_text("S9.4G\n")
+    app = SearchApp(grid, algorithm="ucs")
+    async with app.run_test(size=SIZE) as pilot:
+        session = app.session
+        await pilot.press("right", "s")  # the start on the 9
+        await pilot.press("right", "right", "g")  # the goal on the 4
+        await wait_until(pilot, lambda: (session.grid.start, session.grid.goal)
+                         == ((1, 0), (3, 0)))
+        assert (session.grid.cost((1, 0)), session.grid.cost((3, 0))) == (9.0, 4.0)
+        await pilot.press("end")
+        await wait_until(pilot, lambda: session.run.at_end)
+        out = session.run.outcome()
+        assert out.found and out.path == [(1, 0), (2, 0), (3, 0)]
+        assert out.cost == 5.0  # 1 into (2,0), 4 into the goal; the start's 9 not paid
+        await wait_until(pilot, lambda: "cost 5.00" in app.main.stats.narration_text)
+        await pilot.press("left", "left", "left", "s")  # the start back: the 9 is still there
+        await wait_until(pilot, lambda: session.grid.start == (0, 0))
+        await pilot.press("end")
+        await wait_until(pilot, lambda: session.run.at_end)
+        assert session.run.outcome().cost == 14.0  # 9 + 1 + 4
+        assert session.grid.cost((1, 0)) == 9.0

@@ -15,11 +15,12 @@ line and the column.  Plain Python, no UI.
 
 from __future__ import annotations
 
+import importlib
 import re
-import sys
 from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
+from types import ModuleType
 from typing import Any
 
 from tui_search.engine.compare import Contender, parse_compare
@@ -27,10 +28,18 @@ from tui_search.engine.condition import ConditionError, Node, names, parse_condi
 from tui_search.engine.grid import Grid
 from tui_search.engine.mapread import MapError
 
-if sys.version_info >= (3, 11):
-    import tomllib
-else:  # pragma: no cover - Python 3.10
-    import tomli as tomllib
+
+def toml_parser() -> ModuleType:
+    """The TOML parser: the standard library's ``tomllib`` (Python 3.11 on), else ``tomli``, the
+    same parser as a package (Python 3.10; pyproject.toml requires it there).  A function, so a
+    test can take ``tomllib`` away and see ``tomli`` chosen."""
+    try:
+        return importlib.import_module("tomllib")
+    except ImportError:  # Python 3.10
+        return importlib.import_module("tomli")
+
+
+_toml = toml_parser()
 
 #: What a student may be allowed to change.
 EDITS = ("start", "goal", "obstacles", "terrain")
@@ -163,8 +172,8 @@ def _grid(reader: _Reader) -> Grid:
 def parse_exercise(text: str, path: str, number: int | None = None) -> Exercise:
     """The exercise ``text`` (the file ``path``'s contents) says; MapError when it is bad."""
     try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
+        data: dict[str, Any] = _toml.loads(text)
+    except _toml.TOMLDecodeError as exc:
         raise _toml_error(path, exc) from None
     reader = _Reader(path, text, data)
     unknown = [k for k in data if k not in _KEYS]

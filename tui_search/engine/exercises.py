@@ -42,6 +42,13 @@ class Verdict(NamedTuple):
     figures: dict[str, Value | None]  # the condition's SEARCH.FIELD -> its value
     hint: str = ""  # what else changed, when the exercise hints at it (other_edits = "hint")
     graded: bool = True  # False: a search gave up before the end (--max-steps)
+    measured: str = ""  # the figures' phrase, when ``reason`` is something else (an edit refused)
+
+    @property
+    def said(self) -> str:
+        """The reason with the figures: a verdict failed for an edit still shows what the
+        searches did, as a teacher needs them most there."""
+        return f"{self.reason}; {self.measured}" if self.measured else self.reason
 
     @property
     def status(self) -> str:
@@ -162,13 +169,14 @@ def grade(exercise: Exercise, grid: Grid, max_steps: int = MAX_STEPS) -> Verdict
         reason = "; ".join(figure_phrase(f, labelled) for f in exercise.figures)
     hint = ""
     other = _not_allowed(exercise, grid)
+    measured = ""
     if other and exercise.other_edits == "fail":
-        solved = False
+        solved, measured = False, reason
         reason = f"changed {_words(other)}, which the exercise does not allow"
     elif other:
         allowed = _words(sorted(exercise.edits)) if exercise.edits else "nothing"
         hint = f"the exercise changes only {allowed}: here {_words(other)} changed"
-    return Verdict(exercise, solved, reason, tuple(runs), figures, hint)
+    return Verdict(exercise, solved, reason, tuple(runs), figures, hint, measured=measured)
 
 
 __all__ = ["LIVE_CELLS", "Verdict", "changes", "figure_phrase", "grade"]

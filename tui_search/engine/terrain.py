@@ -1,6 +1,6 @@
 """Terrain tables: which map characters are free cells of a cost, and which are blocked.
 
-A table is a file of lines ``CHAR COST`` (a positive number: ``0.5``, ``19``, ``99``) or
+A table is a file of lines ``CHAR COST`` (a number from 0.01 on: ``0.5``, ``19``, ``99``) or
 ``CHAR blocked``, with ``;`` comment lines, given with ``--terrain FILE``.  It names the
 characters of a map: letters in text maps (``f 5``, ``w 12``) and MovingAI's terrain letters
 (``S`` swamp, ``W`` water, ``T`` trees) in ``.map`` files.  A text map may also carry its table
@@ -20,13 +20,16 @@ from typing import NamedTuple
 
 from tui_search.engine.mapread import MapError, block_table, quoted, read_text
 
-__all__ = ["EMPTY", "TEXT_OWN", "Alphabet", "Terrain", "char_for", "comment_table",
+__all__ = ["EMPTY", "MIN_COST", "TEXT_OWN", "Alphabet", "Terrain", "char_for", "comment_table",
            "load_terrain", "lost_costs", "parse_terrain", "text_costs", "write_row"]
 
 #: A cost as a table writes it: digits with at most one decimal point.
 _COST = re.compile(r"[0-9]+(?:\.[0-9]*)?|\.[0-9]+")
 #: Costs above this are refused: a typo, not a terrain (and no sum of them loses precision).
 MAX_COST = 1e9
+#: Costs below this are refused: the app shows costs to 2 decimals, so a smaller one would
+#: show as 0.00 (and a path of them cost 0.0 in the JSON), against "every cost is above 0".
+MIN_COST = 0.01
 #: A comment line of a text map that is a table line: ``; terrain f 5``.
 #: A comment line that is a table's line: ``; terrain CHAR COST`` (one character, one word).
 #: Any other comment, ``; terrain is rough here`` included, stays a comment.
@@ -128,6 +131,9 @@ def _cost(value: str, path: str, line: int, col: int) -> float | None:
     if not 0 < cost <= MAX_COST or not math.isfinite(cost):
         raise MapError(path, f"bad cost {quoted(value, 12)}: it must be above 0 and at most "
                        f"{MAX_COST:.0e}", line, col)
+    if cost < MIN_COST:
+        raise MapError(path, f"bad cost {quoted(value, 12)}: at least {MIN_COST} (costs show "
+                       "to 2 decimals: it would show as 0.00)", line, col)
     return cost
 
 

@@ -25,6 +25,9 @@ PANE_MIN_WIDTH, PANE_MIN_HEIGHT = 50, 16
 LISTS_MIN_HEIGHT, LISTS_MIN_WIDTH, LISTS_MAX_WIDTH = 6, 38, 56
 #: The trees show under a map when the lists get at least this many lines.
 TREES_MIN_HEIGHT = 9
+#: The Code panel (in the trees' place) needs fewer: its border and a few lines, the lit one
+#: and its neighbours, where the lists get at least this many lines.
+CODE_MIN_HEIGHT = 5
 #: Beside the lists, a map that cannot fit whole gets at least this many columns.
 MAP_MIN_WIDTH = 20
 #: A pane's own status lines share the map's column beside the lists: at least this wide.
@@ -59,6 +62,7 @@ class Arrangement(NamedTuple):
     pane_width: int = 0
     map_max_height: int = 0  # the map's box is taller than the pane by rows under the map
     # kept blank: the map is at most this tall, so it stays in view (0: as tall as its box)
+    code: bool = False  # room for the Code panel in the trees' place: CODE_MIN_HEIGHT lines
 
     @property
     def lists(self) -> bool:
@@ -87,13 +91,16 @@ def lists_width(pane_width: int) -> int:
 
 def arrange(n: int, width: int, height: int, map_size: tuple[int, int], *,
             table_height: int = 0, fold_trees: bool = False,
-            stats_height: int = PANE_STATS_HEIGHT, wrapped: int = 0) -> Arrangement:
+            stats_height: int = PANE_STATS_HEIGHT, wrapped: int = 0,
+            code: bool = False) -> Arrangement:
     """Lay ``n`` panes out in ``width`` x ``height`` (the room under and beside the fixed
     lines, the table's ``table_height`` lines included when there is one) for a map of
     ``map_size`` cells, whose smallest cells are 2 characters by 1 line, in a border; a
     pane's own status lines take ``stats_height`` lines.  The status lines under the panes
     take ``wrapped`` rows more than their least: the map is placed as in the room they would
-    leave (:func:`_steady`)."""
+    leave (:func:`_steady`).  With ``code`` (the Code panel in the trees' place) the lists
+    under a map need only CODE_MIN_HEIGHT lines."""
+    lists_min = CODE_MIN_HEIGHT if code else LISTS_MIN_HEIGHT
     candidates = []
     own = own_lines(n)
     for table in ((True, False) if table_height and own else (False,)):
@@ -105,12 +112,13 @@ def arrange(n: int, width: int, height: int, map_size: tuple[int, int], *,
                 rows = -(-n // columns)
                 pane_w, pane_h = width // columns, max(0, room // rows - stats)
                 pane = _pane(columns, rows, table, stats > 0, pane_w, pane_h, map_size,
-                             fold_trees)
+                             fold_trees, lists_min)
                 if wrapped:
                     steady_h = max(0, (room + wrapped) // rows - stats)
                     steady = _pane(columns, rows, table, stats > 0, pane_w, steady_h,
-                                   map_size, fold_trees)
-                    pane = _steady(steady, pane, steady_h, pane_h, map_size, fold_trees)
+                                   map_size, fold_trees, lists_min)
+                    pane = _steady(steady, pane, steady_h, pane_h, map_size, fold_trees,
+                                   lists_min)
                 candidates.append(((pane.fits, pane.pane_stats or not own, pane.lists,
                                     pane.trees or fold_trees, columns == preferred, table),
                                    pane))
@@ -120,7 +128,7 @@ def arrange(n: int, width: int, height: int, map_size: tuple[int, int], *,
 
 
 def _steady(steady: Arrangement, pane: Arrangement, steady_h: int, pane_h: int,
-            map_size: tuple[int, int], fold_trees: bool) -> Arrangement:
+            map_size: tuple[int, int], fold_trees: bool, lists_min: int) -> Arrangement:
     """``steady``, laid out in a pane ``steady_h`` lines tall, in the ``pane_h`` lines
     ``pane`` is laid out in, when the whole map still shows there at the same cells and
     place: the lists under the map give up the lines, or the map's box (the pane's height)
@@ -131,7 +139,7 @@ def _steady(steady: Arrangement, pane: Arrangement, steady_h: int, pane_h: int,
     more = steady_h - pane_h
     if steady.lists_height:  # the map's box keeps its height, the lists are shorter
         lists_h = steady.lists_height - more
-        if lists_h < LISTS_MIN_HEIGHT:
+        if lists_h < lists_min:
             return pane
         return Arrangement(*steady[:6], lists_h, lists_h >= TREES_MIN_HEIGHT and not fold_trees,
                            *steady[8:])
@@ -141,11 +149,11 @@ def _steady(steady: Arrangement, pane: Arrangement, steady_h: int, pane_h: int,
     most = steady_h - 2 * more
     if Geometry.fit(*map_size, box_w - 2, steady_h - 2).size[1] + 2 > most:
         return pane
-    return Arrangement(*steady[:8], steady_h, *steady[9:11], most)
+    return Arrangement(*steady[:8], steady_h, *steady[9:11], most, pane.code)
 
 
 def _pane(columns: int, rows: int, table: bool, pane_stats: bool, pane_w: int, pane_h: int,
-          map_size: tuple[int, int], fold_trees: bool) -> Arrangement:
+          map_size: tuple[int, int], fold_trees: bool, lists_min: int) -> Arrangement:
     """One pane's inside: its lists beside the map when the pane is much wider than tall and
     the whole map fits beside them (or would not fit whole under them either); else under
     the map when there is room for both."""
@@ -155,36 +163,40 @@ def _pane(columns: int, rows: int, table: bool, pane_stats: bool, pane_w: int, p
     beside_w = max(min(need_w, MAP_MIN_WIDTH), STATS_MIN_WIDTH if pane_stats else 0)
     if pane_w >= 3 * pane_h and pane_w - side >= beside_w:
         beside = Arrangement(columns, rows, table, pane_stats, True, side, 0, not fold_trees,
-                             0, need_h <= pane_h and need_w <= pane_w - side, pane_w)
+                             0, need_h <= pane_h and need_w <= pane_w - side, pane_w,
+                             code=pane_h * 2 // 3 >= CODE_MIN_HEIGHT)  # 2fr of the column
         if beside.fits:
             return beside
-        under = _under(columns, rows, table, pane_stats, pane_w, pane_h, map_size, fold_trees)
+        under = _under(columns, rows, table, pane_stats, pane_w, pane_h, map_size, fold_trees,
+                       lists_min)
         return under if under.fits else beside  # under the map when it shows whole there
-    return _under(columns, rows, table, pane_stats, pane_w, pane_h, map_size, fold_trees)
+    return _under(columns, rows, table, pane_stats, pane_w, pane_h, map_size, fold_trees,
+                  lists_min)
 
 
 def _under(columns: int, rows: int, table: bool, pane_stats: bool, pane_w: int, pane_h: int,
-           map_size: tuple[int, int], fold_trees: bool) -> Arrangement:
-    """One pane's inside with its lists under the map (or none, or the map scrolling)."""
+           map_size: tuple[int, int], fold_trees: bool, lists_min: int) -> Arrangement:
+    """One pane's inside with its lists under the map (or none, or the map scrolling): at
+    least ``lists_min`` lines."""
     map_w, map_h = map_size
     need_w, need_h = 2 * map_w + 2, map_h + 2  # the smallest cells, in a border
-    if need_h + LISTS_MIN_HEIGHT <= pane_h:
+    if need_h + lists_min <= pane_h:
         # The map's box: as tall as the map at the biggest cells that fit the pane's width
         # and three fifths of its height; the lists get the rest.
         fitted = Geometry.fit(map_w, map_h, pane_w - 2, max(1, pane_h * 3 // 5 - 2)).size[1]
-        box_h = min(pane_h - LISTS_MIN_HEIGHT, max(need_h, fitted + 2))
+        box_h = min(pane_h - lists_min, max(need_h, fitted + 2))
         lists_h = pane_h - box_h
         return Arrangement(columns, rows, table, pane_stats, False, 0, lists_h,
                            lists_h >= TREES_MIN_HEIGHT and not fold_trees, box_h,
-                           need_w <= pane_w, pane_w)
+                           need_w <= pane_w, pane_w, code=lists_h >= CODE_MIN_HEIGHT)
     if need_h <= pane_h:  # the whole map, without the lists
         return Arrangement(columns, rows, table, pane_stats, False, 0, 0, False, pane_h,
                            need_w <= pane_w, pane_w)
     # Too big to fit: the map scrolls (z: the overview); the lists keep their share.
-    lists_h = pane_h * 2 // 5 if pane_h * 2 // 5 >= LISTS_MIN_HEIGHT else 0
+    lists_h = pane_h * 2 // 5 if pane_h * 2 // 5 >= lists_min else 0
     return Arrangement(columns, rows, table, pane_stats, False, 0, lists_h,
                        lists_h >= TREES_MIN_HEIGHT and not fold_trees, pane_h - lists_h, False,
-                       pane_w)
+                       pane_w, code=lists_h >= CODE_MIN_HEIGHT)
 
 
 
@@ -195,4 +207,4 @@ def lesson_width(screen_width: int) -> int:
     return max(28, min(56, screen_width * 2 // 5))
 
 
-__all__ = ["Arrangement", "arrange", "lesson_width", "own_lines", "pane_grid"]
+__all__ = ["CODE_MIN_HEIGHT", "Arrangement", "arrange", "lesson_width", "own_lines", "pane_grid"]

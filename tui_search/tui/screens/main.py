@@ -16,6 +16,9 @@ from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.key_bar import KeyBar
 
+#: What ``v`` says when no pane has room for the Code panel (no lists under a map this big).
+NO_ROOM_FOR_CODE = ("No room for the Code panel here: a taller terminal, or fewer panes, "
+                    "shows it (v hides it)")
 
 class MainScreen(PanesScreen):
     """The panes, and every key of :mod:`~tui_search.tui.keys`."""
@@ -106,6 +109,8 @@ class MainScreen(PanesScreen):
         self.session.show_code = not self.session.show_code
         self.fit_panes()
         self.present(changed=[])
+        if self.session.show_code and all(p.code_panel.has_class("-folded") for p in self.panes):
+            self.warn(NO_ROOM_FOR_CODE, timeout=6)
 
     def action_lesson(self, by: int) -> None:
         """The lesson's next (1) or previous (-1) section: its text, and the session in the

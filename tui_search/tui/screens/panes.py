@@ -152,7 +152,7 @@ class PanesScreen(Screen[None]):
                               table_height=table_height,
                               fold_trees=self.session.fold_trees and not self.session.show_code,
                               stats_height=stats or PANE_STATS_HEIGHT,
-                              wrapped=self.stats.wrapped)
+                              wrapped=self.stats.wrapped, code=self.session.show_code)
         box.styles.grid_size_columns = arrangement.columns
         box.styles.grid_size_rows = arrangement.rows
         if arrangement.table and not table.display:

@@ -65,7 +65,7 @@ class ChallengePanel(Static):
                 out.append("Not solved any more: ", style("challenge--unsolved"))
             else:
                 out.append("Not solved yet: ", style("challenge--unsolved"))
-            out.append(verdict.reason)
+            out.append(verdict.said)
             if verdict.hints:
                 out.append(f"\nHint: {verdict.hints}", style("challenge--hint"))
         self.text = out.plain

@@ -57,7 +57,7 @@ class RunPane(Vertical):
                 restyle: bool = True) -> None:
         """Lay the pane out: its lists beside or under the map, or not at all; its trees and
         its own status lines shown or not; with ``code``, the Code panel in the tree's place
-        (where the arrangement has room for a tree).  ``restyle=False``: the classes are set
+        (where the arrangement has room for it: fewer lines than a tree needs).  ``restyle=False``: the classes are set
         and left for the next restyle of the screen."""
         self.set_class(arrangement.beside, "-beside", update=restyle)
         self.stats.display = arrangement.pane_stats
@@ -73,7 +73,10 @@ class RunPane(Vertical):
             self.map_box.styles.height = arrangement.map_height or "1fr"
         self.view.styles.max_height = arrangement.map_max_height or "100%"
         self.tree_panel.set_class(not arrangement.trees or code, "-folded", update=restyle)
-        self.code_panel.set_class(not (arrangement.trees and code), "-folded", update=restyle)
+        self.code_panel.set_class(not (arrangement.code and code), "-folded", update=restyle)
+        # in lines too few for a tree, the code takes three fifths of the row: its lines are long
+        self.set_class(code and arrangement.code and not arrangement.trees, "-code-short",
+                       update=restyle)
         if self._run is not None and not self.code_panel.has_class("-folded"):
             self.code_panel.show(self._run)  # folded, it was not kept up to date
         # room for the map's title where the pane has it, else the map as narrow as it is
