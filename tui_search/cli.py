@@ -41,7 +41,6 @@ from tui_search.headless import (
     run_compare,
     run_headless,
 )
-from tui_search.report import run_exercise
 from tui_search.trace_cli import run_check_trace
 from tui_search.tui.themes import THEMES  # plain data: no Textual
 
@@ -306,6 +305,8 @@ def main(argv: list[str] | None = None) -> int:
         if args.lesson is not None and open_lesson(args):
             return 0
         if args.headless and args.exercise:
+            from tui_search.report import run_exercise  # not the app's: its start does without
+
             return run_exercise(args)
         grid, path = load_problem(args)
         if args.headless and args.compare:
