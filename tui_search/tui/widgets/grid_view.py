@@ -296,8 +296,9 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         self._looks = None
         self._swatches = None
 
-    def _cell_looks(self) -> CellLooks:
-        """Glyph and style of each drawing code and terrain (see :class:`CellLooks`)."""
+    def cell_looks(self) -> CellLooks:
+        """Glyph and style of each drawing code and terrain (see :class:`CellLooks`), read once
+        a restyle (the legend shows the same)."""
         if self._looks is None:
             self._looks = CellLooks(self.get_component_rich_style)
         return self._looks
@@ -327,7 +328,7 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         cx, cy = self.cursor
         if cy == row and x0 <= cx < x1:
             codes[cx - x0] += len(COMPONENTS)
-        looks = self._cell_looks()
+        looks = self.cell_looks()
         costs = row_costs(self.grid, row, x0, x1)
         segments = [Segment(" " * self.pad_x, background)]  # the padding that centres the map
         if geo.cell_width == 2 and costs is None:  # one segment per run of like cells
