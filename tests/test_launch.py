@@ -94,3 +94,27 @@ def test_the_collector_is_on_again_once_the_first_frame_is_drawn(monkeypatch) ->
     finally:
         gc.unfreeze()
     assert seen == [False, True]
+
+
+def test_the_first_frame_imports_no_module_only_a_key_needs() -> None:
+    # The exercise modules, the pseudocode and the class report are imported on first use
+    # (benchmarks/README.md, "startup", session 12): the tutorial's first frame, in a fresh
+    # process, goes without them.
+    probe = ("import asyncio, sys\n"
+             "from tui_search import cli\n"
+             "args = cli.build_parser().parse_args(['maps/tutorial.txt'])\n"
+             "cli.check_modes(args)\n"
+             "app = cli.build_app(args, *cli.load_problem(args))\n"
+             "async def first_frame():\n"
+             "    async with app.run_test(size=(160, 50)) as pilot:\n"
+             "        await pilot.pause()\n"
+             "asyncio.run(first_frame())\n"
+             "print(' '.join(sorted(m for m in sys.modules if m.startswith('tui_search'))))\n")
+    out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True,
+                         check=False, cwd=_repo())
+    assert out.returncode == 0, out.stderr
+    loaded = set(out.stdout.split())
+    assert "tui_search.tui.app" in loaded
+    late = {"tui_search.engine.exercise_file", "tui_search.engine.exercises",
+            "tui_search.engine.condition", "tui_search.engine.pseudocode", "tui_search.report"}
+    assert not loaded & late
