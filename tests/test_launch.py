@@ -1,5 +1,5 @@
 """The ``tui-search`` command's entry point: the collector is paused only while modules are
-imported, and left as it was found."""
+imported, and while the app is built and draws its first frame, and left as it was found."""
 
 from __future__ import annotations
 
@@ -53,7 +53,7 @@ def _repo() -> str:
     return str(Path(__file__).resolve().parents[1])
 
 
-def test_the_app_runs_with_the_collector_on_and_its_start_frozen(monkeypatch) -> None:
+def test_the_app_starts_with_the_collector_off_and_frozen_and_it_is_on_after(monkeypatch) -> None:
     from tui_search import cli
     from tui_search.tui.app import SearchApp
 
@@ -65,4 +65,56 @@ def test_the_app_runs_with_the_collector_on_and_its_start_frozen(monkeypatch) ->
     finally:
         gc.unfreeze()
     [(on, frozen)] = seen
-    assert on and frozen > 10_000  # Textual's modules and the app, out of the collector's way
+    assert not on and frozen > 10_000  # Textual's modules and the app, out of the collector's way
+    assert gc.isenabled()  # on again once the app is done, however it ended
+
+
+def test_the_collector_is_on_again_once_the_first_frame_is_drawn(monkeypatch) -> None:
+    import asyncio
+
+    from tui_search import cli
+    from tui_search.tui.app import SearchApp
+
+    seen: list[bool] = []
+
+    def run(self: SearchApp, *a: object, **k: object) -> None:
+        async def first_frame() -> None:
+            async with self.run_test() as pilot:
+                seen.append(gc.isenabled())  # the first frame is not drawn yet
+                for _ in range(50):
+                    if gc.isenabled():
+                        break
+                    await pilot.pause()
+                seen.append(gc.isenabled())
+        asyncio.run(first_frame())
+
+    monkeypatch.setattr(SearchApp, "run", run)
+    try:
+        assert cli.main([f"{_repo()}/maps/tutorial.txt"]) == 0
+    finally:
+        gc.unfreeze()
+    assert seen == [False, True]
+
+
+def test_the_first_frame_imports_no_module_only_a_key_needs() -> None:
+    # The exercise modules, the pseudocode and the class report are imported on first use
+    # (benchmarks/README.md, "startup", session 12): the tutorial's first frame, in a fresh
+    # process, goes without them.
+    probe = ("import asyncio, sys\n"
+             "from tui_search import cli\n"
+             "args = cli.build_parser().parse_args(['maps/tutorial.txt'])\n"
+             "cli.check_modes(args)\n"
+             "app = cli.build_app(args, *cli.load_problem(args))\n"
+             "async def first_frame():\n"
+             "    async with app.run_test(size=(160, 50)) as pilot:\n"
+             "        await pilot.pause()\n"
+             "asyncio.run(first_frame())\n"
+             "print(' '.join(sorted(m for m in sys.modules if m.startswith('tui_search'))))\n")
+    out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True,
+                         check=False, cwd=_repo())
+    assert out.returncode == 0, out.stderr
+    loaded = set(out.stdout.split())
+    assert "tui_search.tui.app" in loaded
+    late = {"tui_search.engine.exercise_file", "tui_search.engine.exercises",
+            "tui_search.engine.condition", "tui_search.engine.pseudocode", "tui_search.report"}
+    assert not loaded & late

@@ -15,7 +15,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, NoReturn
 
 from tui_search import __version__
-from tui_search.collector import collector_paused
+from tui_search.collector import collector_held
 from tui_search.engine.algorithms import ALGORITHMS, DEFAULT_ALGORITHM
 from tui_search.engine.generate import DEFAULT_SEED, DEFAULT_SIZE, KINDS, MAX_SIDE
 from tui_search.engine.grid import DEFAULT_ORDER, Grid
@@ -41,7 +41,6 @@ from tui_search.headless import (
     run_compare,
     run_headless,
 )
-from tui_search.report import run_exercise
 from tui_search.trace_cli import read_replay, run_check_trace
 from tui_search.tui.themes import THEMES  # plain data: no Textual
 
@@ -207,7 +206,9 @@ def app_title(args: argparse.Namespace) -> str:
 
 
 def run_app(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
-    with collector_paused():  # Textual's import and the app's build (tui_search/collector.py)
+    # The collector off for Textual's import, the app's build and its first frame, on again
+    # once that frame is drawn (tui_search/collector.py).
+    with collector_held() as resume:
         app = build_app(args, grid, path)
         # What is imported and built by now lives as long as the app.  Without this, the
         # cyclic collector's first full pass (over Textual's ~60,000 objects) fell in the
@@ -215,12 +216,13 @@ def run_app(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
         # "startup").  Objects still go when their last reference does; only cycles among
         # them are left to the end.
         gc.freeze()
-    if args.served:
-        from tui_search.serve import exit_with_server, greet_visitor
+        app.call_after_refresh(resume)
+        if args.served:
+            from tui_search.serve import exit_with_server, greet_visitor
 
-        exit_with_server(app)
-        greet_visitor(app, args)
-    app.run()
+            exit_with_server(app)
+            greet_visitor(app, args)
+        app.run()
     return app.return_code or 0
 
 
@@ -322,6 +324,8 @@ def main(argv: list[str] | None = None) -> int:
         if args.lesson is not None and open_lesson(args):
             return 0
         if args.headless and args.exercise:
+            from tui_search.report import run_exercise  # not the app's: its start does without
+
             return run_exercise(args)
         grid, path = load_problem(args)
         if args.headless and args.compare:

@@ -45,6 +45,10 @@ def preload(app_args: list[str]) -> None:
     with collector_paused():
         import textual.drivers.web_driver  # noqa: F401  (the served app's driver)
 
+        # What the app imports on first use, not before its first frame (an exercise shown,
+        # code shown): imported here once, for every visitor.
+        import tui_search.engine.exercises
+        import tui_search.engine.pseudocode  # noqa: F401
         from tui_search.cli import build_app, build_parser, check_modes
         from tui_search.flags import load_problem
 

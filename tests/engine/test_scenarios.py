@@ -7,6 +7,8 @@ import random
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from tests.engine.map_helpers import TUTORIAL, error_of, write, write_512_map
 from tests.helpers import MOVINGAI
@@ -14,6 +16,8 @@ from tui_search.engine.mapfile import load_map
 from tui_search.engine.mapread import MapError
 from tui_search.engine.scenarios import (
     Scenario,
+    _parse_row,
+    _read_rows,
     check_scenario_matches,
     load_scenario,
     parse_scenarios,
@@ -237,3 +241,41 @@ def test_a_2011_scenario_file_names_a_path_and_matches_by_basename(tmp_path: Pat
     assert str(info.value) == (
         f"{scen_path}:2: arena.map.scen is for arena.map, not den201d.map"
     )
+
+
+# -- the quick path for plain rows ---------------------------------------------------------
+
+# Mostly plain words (the quick path's rows), some odd ones (the rows it leaves to the rest).
+_PLAIN = ["0", "5", "6", "7", "00", "007", "512"]
+_ODD = ["-1", "x", "", " 6", "1234567890", "0001234567", "12345678901", "1e2", "inf", "nan"]
+_NUMBER = st.sampled_from(_PLAIN * 6 + _ODD)
+_NAME = st.sampled_from(["a.map"] * 6 + ["", " a.map", "a.map ", "sub dir/a.map", "6"])
+_LENGTH = st.sampled_from(["3", "9.41421356", "0.5"] * 4 + ["1e2", "nan", "-1", "x", "5."])
+_ROW = st.tuples(_NUMBER, _NAME, *[_NUMBER] * 6, _LENGTH, st.integers(-1, 1)).map(
+    lambda t: [*t[:8 + min(t[9], 0) + 1], *['1'] * max(t[9], 0)])  # now and then a field fewer or more
+
+
+@given(st.lists(_ROW, max_size=6), st.sampled_from(["\t"] * 4 + [" ", "\t\t"]))
+@settings(max_examples=300, deadline=None)
+def test_plain_rows_read_as_every_row_is_read(rows: list[list[str]], sep: str) -> None:
+    """Rows the quick path reads (tab-separated, plain numbers) give the same problems, and
+    other rows the same errors, as reading every row field by field does."""
+    text = "version 1\n" + "".join(sep.join(row) + "\n" for row in rows)
+    lines = text.splitlines()
+
+    def field_by_field() -> list[Scenario]:
+        return [_parse_row(line.rstrip(), n, "s.scen")
+                for n, line in enumerate(lines[1:], start=2) if line.strip()]
+
+    try:
+        expected: list[Scenario] | str = field_by_field()
+    except MapError as exc:
+        expected = str(exc)
+    try:
+        got: list[Scenario] | str = parse_scenarios(text, "s.scen")
+    except MapError as exc:
+        got = str(exc)
+    assert got == expected
+    if isinstance(expected, list):
+        for row, scen in enumerate(expected):
+            assert _read_rows(text, "s.scen", row) == ([scen], len(expected))

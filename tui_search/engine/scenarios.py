@@ -61,62 +61,95 @@ def read_scenarios(path: str | os.PathLike[str]) -> list[Scenario]:
 
 def parse_scenarios(text: str, path: str = "<scen>") -> list[Scenario]:
     """Every problem in the text of a ``.scen`` file (``path`` is only for messages)."""
+    return _read_rows(text, path)[0]
+
+
+def _read_rows(text: str, path: str, only: int | None = None) -> tuple[list[Scenario], int]:
+    """The problems in the text of a ``.scen`` file, or only problem number ``only`` (every
+    row is checked all the same), and how many there are."""
     lines = stripped_lines(text)
     if not _VERSION.fullmatch(lines[0].strip()):
         found = quoted(lines[0]) if lines[0] else "an empty line"
         raise MapError(path, f"expected 'version 1' on the first line, found {found}", 1)
     out = []
+    count = 0
+    fast = _PLAIN_ROW.fullmatch
     for number, line in enumerate(lines[1:], start=2):
-        if not line.strip():
-            continue
-        fields = [f.strip() for f in line.split("\t")]
-        if len(fields) != 9:
-            fields = line.split()
-        if len(fields) != 9:
+        m = fast(line)
+        if m is not None:  # the common row, checked at once (12,000 rows: 95 -> ~35 ms)
+            b, name, w, h, sx, sy, gx, gy, length = m.groups()
+            width, height = int(w), int(h)
+            start, goal = (int(sx), int(sy)), (int(gx), int(gy))
+            if name == name.strip() and 0 < width and 0 < height and start[0] < width \
+                    and goal[0] < width and start[1] < height and goal[1] < height:
+                if only is None or only == count:
+                    out.append(Scenario(int(b), name, width, height, start, goal,
+                                        float(length), number))
+                count += 1
+                continue
+        if line.strip():  # any other row, read field by field: each error said exactly
+            row = _parse_row(line, number, path)
+            if only is None or only == count:
+                out.append(row)
+            count += 1
+    return out, count
+
+
+#: A row as the files write it: tab-separated, whole numbers of at most MAX_DIGITS digits, a
+#: plain decimal length.  Any other row goes through ``_parse_row``, which reads it the same
+#: way or says what is wrong.
+_N = f"([0-9]{{1,{MAX_DIGITS}}})"
+_PLAIN_ROW = re.compile("\t".join([_N, "([^\t]+)", *[_N] * 6, r"([0-9]+(?:\.[0-9]+)?)"]))
+
+
+def _parse_row(line: str, number: int, path: str) -> Scenario:
+    """The problem on ``line`` (line ``number`` of the file), or a MapError saying why not."""
+    fields = [f.strip() for f in line.split("\t")]
+    if len(fields) != 9:
+        fields = line.split()
+    if len(fields) != 9:
+        raise MapError(
+            path,
+            f"expected 9 fields ({', '.join(_FIELDS)}), found {len(fields)}",
+            number,
+        )
+    ints = []
+    for k in (0, 2, 3, 4, 5, 6, 7):
+        word = fields[k]
+        if not NUMBER.fullmatch(word) or len(word.lstrip("0")) > MAX_DIGITS:
             raise MapError(
-                path,
-                f"expected 9 fields ({', '.join(_FIELDS)}), found {len(fields)}",
-                number,
+                path, f"{_FIELDS[k]} is not a whole number >= 0: {quoted(word)}", number
             )
-        ints = []
-        for k in (0, 2, 3, 4, 5, 6, 7):
-            word = fields[k]
-            if not NUMBER.fullmatch(word) or len(word.lstrip("0")) > MAX_DIGITS:
-                raise MapError(
-                    path, f"{_FIELDS[k]} is not a whole number >= 0: {quoted(word)}", number
-                )
-            ints.append(int(word))
-        bucket, width, height, sx, sy, gx, gy = ints
-        try:
-            length = float(fields[8])
-        except ValueError:
-            length = math.nan
-        if not (math.isfinite(length) and length >= 0):
+        ints.append(int(word))
+    bucket, width, height, sx, sy, gx, gy = ints
+    try:
+        length = float(fields[8])
+    except ValueError:
+        length = math.nan
+    if not (math.isfinite(length) and length >= 0):
+        raise MapError(
+            path, f"optimal length is not a number >= 0: {quoted(fields[8])}", number
+        )
+    if not fields[1]:
+        raise MapError(path, "the map name is empty", number)
+    if width < 1 or height < 1:
+        raise MapError(path, f"map size {width}x{height} is empty", number)
+    for what, (x, y) in (("start", (sx, sy)), ("goal", (gx, gy))):
+        if x >= width or y >= height:
             raise MapError(
-                path, f"optimal length is not a number >= 0: {quoted(fields[8])}", number
+                path, f"{what} ({x},{y}) is outside the {width}x{height} map", number
             )
-        if not fields[1]:
-            raise MapError(path, "the map name is empty", number)
-        if width < 1 or height < 1:
-            raise MapError(path, f"map size {width}x{height} is empty", number)
-        for what, (x, y) in (("start", (sx, sy)), ("goal", (gx, gy))):
-            if x >= width or y >= height:
-                raise MapError(
-                    path, f"{what} ({x},{y}) is outside the {width}x{height} map", number
-                )
-        out.append(Scenario(bucket, fields[1], width, height, (sx, sy), (gx, gy), length, number))
-    return out
+    return Scenario(bucket, fields[1], width, height, (sx, sy), (gx, gy), length, number)
 
 
 def load_scenario(path: str | os.PathLike[str], row: int) -> Scenario:
     """Problem number ``row`` (from 0, after the version line) of a ``.scen`` file."""
     where = os.fsdecode(path)
-    scenarios = read_scenarios(where)
-    if 0 <= row < len(scenarios):
-        return scenarios[row]
-    if not scenarios:
+    found, count = _read_rows(read_text(where), where, row)
+    if found:
+        return found[0]
+    if not count:
         raise MapError(where, f"no row {row}: the file has no scenario rows")
-    count = len(scenarios)
     rows = "1 row (row 0)" if count == 1 else f"{count} rows (0 to {count - 1})"
     raise MapError(where, f"no row {row}: the file has {rows}")
 

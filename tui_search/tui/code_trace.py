@@ -10,12 +10,14 @@ Stepping back lights that earlier step's lines: everything here is computed from
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
 from tui_search.engine.grid import DELTAS, Cell
-from tui_search.engine.pseudocode import MOVE_COST, TERRAIN_MOVE_COST, Pseudocode, pseudocode
 from tui_search.engine.run import Run
 from tui_search.engine.semantics import corner_allowed
+
+if TYPE_CHECKING:  # imported by code_of: the first frame shows no code (~2 ms of import)
+    from tui_search.engine.pseudocode import Pseudocode
 
 
 class Skip(NamedTuple):
@@ -29,6 +31,8 @@ class Skip(NamedTuple):
 def code_of(run: Run) -> Pseudocode:
     """The pseudocode of ``run``'s search (generated once per algorithm and choices); on a
     map with terrain, g adds the cost of the cell a move enters."""
+    from tui_search.engine.pseudocode import MOVE_COST, TERRAIN_MOVE_COST, pseudocode
+
     move_cost = TERRAIN_MOVE_COST if run.grid.costs is not None else MOVE_COST
     return pseudocode(run.algo, run.semantics, move_cost=move_cost)
 

@@ -14,8 +14,6 @@ from typing import TYPE_CHECKING
 
 from tui_search.engine.algorithms import DEFAULT_ALGORITHM, get_algorithm
 from tui_search.engine.compare import Contender, parse_compare
-from tui_search.engine.exercise_file import Exercise, built_in_exercise
-from tui_search.engine.exercises import Verdict, grade
 from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.run import MAX_STEPS, Run
 from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
@@ -27,6 +25,10 @@ from tui_search.tui.replay_jumps import LOCKSTEP, LOCKSTEP_SHORT, REPLAY_ENDED, 
 from tui_search.tui.seek import Seek
 
 if TYPE_CHECKING:
+    # Imported where used: exercises are read and graded only once one is shown, so the first
+    # frame does without their modules (~8 ms: benchmarks/README.md, "startup").
+    from tui_search.engine.exercise_file import Exercise
+    from tui_search.engine.exercises import Verdict
     from tui_search.engine.trace_replay import Replay
     from tui_search.tui.lesson_play import LessonPlay
 
@@ -386,17 +388,24 @@ class Session(MapEdits, ReplayJumps):
     # -- the exercise ----------------------------------------------------------------------
     def show_exercise(self, exercise: Exercise | int | None) -> None:
         """Show ``exercise`` (1 or 2: the tutorial's) as the live challenge; None: none."""
-        self.exercise = (built_in_exercise(exercise) if isinstance(exercise, int)
-                         else exercise)
+        if isinstance(exercise, int):
+            from tui_search.engine.exercise_file import built_in_exercise
+
+            exercise = built_in_exercise(exercise)
+        self.exercise = exercise
 
     def cycle_exercise(self) -> None:
         """The next challenge: the exercise file given at start, exercise 1, 2, none."""
+        from tui_search.engine.exercise_file import built_in_exercise
+
         cycle: list[Exercise | None] = [*self._exercises, built_in_exercise(1),
                                         built_in_exercise(2), None]
         self.exercise = cycle[(cycle.index(self.exercise) + 1) % len(cycle)]
 
     def verdict(self) -> Verdict:
         """The exercise's verdict on the map as it is (its searches, whole)."""
+        from tui_search.engine.exercises import grade
+
         assert self.exercise is not None
         return grade(self.exercise, self.grid, self.max_steps)
 

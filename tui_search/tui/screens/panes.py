@@ -23,8 +23,6 @@ from textual.widget import AwaitMount
 from textual.widgets import Static
 from textual.worker import get_current_worker
 
-from tui_search.engine.exercise_file import Exercise
-from tui_search.engine.exercises import LIVE_CELLS, Verdict, grade
 from tui_search.engine.filenames import describe_name
 from tui_search.engine.grid import Cell, Grid
 from tui_search.tui import playback
@@ -47,6 +45,8 @@ from tui_search.tui.widgets.run_pane import RunPane
 from tui_search.tui.widgets.stats import Stats
 
 if TYPE_CHECKING:
+    from tui_search.engine.exercise_file import Exercise
+    from tui_search.engine.exercises import Verdict
     from tui_search.tui.widgets.lesson_panel import LessonPanel
 
 MIN_WIDTH, MIN_HEIGHT = 60, 20
@@ -307,6 +307,8 @@ class PanesScreen(Screen[None]):
             self.call_after_refresh(self.fit_panes)
         if exercise is None:
             return
+        from tui_search.engine.exercises import LIVE_CELLS  # as Session: only once one is shown
+
         panel = self.query_one(ChallengePanel)
         grid = session.grid
         if grid.start is None or grid.goal is None:
@@ -327,6 +329,8 @@ class PanesScreen(Screen[None]):
         sleep(EXERCISE_PAUSE)
         if get_current_worker().is_cancelled:
             return
+        from tui_search.engine.exercises import grade
+
         verdict = grade(exercise, grid, self.session.max_steps)
         self.app.call_from_thread(self._show_big_verdict, exercise, grid, verdict)
 

@@ -9,13 +9,14 @@ pushes each new verdict with :meth:`ChallengePanel.show`.
 
 from __future__ import annotations
 
-from typing import ClassVar
+from typing import TYPE_CHECKING, ClassVar
 
 from rich.text import Text
 from textual.widgets import Static
 
-from tui_search.engine.exercise_file import Exercise
-from tui_search.engine.exercises import Verdict
+if TYPE_CHECKING:  # the exercise modules: imported once one is shown (tui/session.py)
+    from tui_search.engine.exercise_file import Exercise
+    from tui_search.engine.exercises import Verdict
 
 
 class ChallengePanel(Static):

@@ -19,12 +19,12 @@ from typing import TYPE_CHECKING, Any, ClassVar
 
 from textual.geometry import Region, Size
 
-from tui_search.engine.pseudocode import Pseudocode
 from tui_search.tui.code_trace import code_of, lit_lines
 from tui_search.tui.pieces import Parts
 from tui_search.tui.widgets.line_panel import LinePanel, set_virtual_size
 
 if TYPE_CHECKING:
+    from tui_search.engine.pseudocode import Pseudocode
     from tui_search.engine.run import Run
 
 #: The mark of a lit line, and the room a line's number takes after it.

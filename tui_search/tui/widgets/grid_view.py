@@ -307,8 +307,9 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         self._looks = None
         self._swatches = None
 
-    def _cell_looks(self) -> CellLooks:
-        """Glyph and style of each drawing code and terrain (see :class:`CellLooks`)."""
+    def cell_looks(self) -> CellLooks:
+        """Glyph and style of each drawing code and terrain (see :class:`CellLooks`), read once
+        a restyle (the legend shows the same)."""
         if self._looks is None:
             self._looks = CellLooks(self.get_component_rich_style)
         return self._looks
@@ -340,7 +341,7 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
             codes[cx - x0] += CURSOR
         if self.mark is not None and self.mark[1] == row and x0 <= self.mark[0] < x1:
             codes[self.mark[0] - x0] += MARKED
-        looks = self._cell_looks()
+        looks = self.cell_looks()
         costs = row_costs(self.grid, row, x0, x1)
         segments = [Segment(" " * self.pad_x, background)]  # the padding that centres the map
         if geo.cell_width == 2 and costs is None:  # one segment per run of like cells

@@ -14,13 +14,12 @@ from tui_search.tui.cell_codes import (
     EXPANDED,
     FREE,
     FRONTIER,
-    GLYPHS,
     GOAL,
     PATH,
     START,
     WALL,
 )
-from tui_search.tui.widgets.cell_style import RAMP_COMPONENTS, RAMP_NAMES
+from tui_search.tui.widgets.cell_style import RAMP_NAMES
 from tui_search.tui.widgets.grid_view import GridView
 
 ENTRIES = (
@@ -50,18 +49,14 @@ class Legend(Widget):
         self.view = view
 
     def entries(self) -> list[Text]:
-        view = self.view
-        out = []
-        for code, name in ENTRIES:
-            style = view.get_component_rich_style(f"grid-view--{COMPONENTS[code]}")
-            out.append(Text.assemble((GLYPHS[code], style), f" {name}"))
-        cursor = view.get_component_rich_style("grid-view--cursor")
-        free = view.get_component_rich_style(f"grid-view--{COMPONENTS[FREE]}")
-        out.append(Text.assemble((GLYPHS[FREE], free + cursor), " cursor"))
-        if view.grid.costs is not None:  # terrain: the ramp that shades a free cell's cost
+        """The entries, in the looks the map draws with (read once a restyle, by the map)."""
+        looks = self.view.cell_looks()
+        out = [Text.assemble(looks.codes[code], f" {name}") for code, name in ENTRIES]
+        out.append(Text.assemble(looks.codes[FREE + len(COMPONENTS)], " cursor"))
+        if self.view.grid.costs is not None:  # terrain: the ramp that shades a free cell's cost
             out.append(Text.assemble(*(
-                (f" {name} ", view.get_component_rich_style(f"grid-view--{component}"))
-                for name, component in zip(RAMP_NAMES, RAMP_COMPONENTS)), " cost"))
+                (f" {name} ", style) for name, style in zip(RAMP_NAMES, looks.ramp[1:])),
+                " cost"))
         return out
 
     def _lines(self, width: int) -> Text:
