@@ -209,6 +209,9 @@ class Grid:
         if not (value > 0 and math.isfinite(value)):
             raise ValueError(f"a cell's cost must be a positive number, not {value!r}")
         x, y = cell
+        i = y * self.width + x
+        known = self._lowest[1] if self._lowest is not None and self.costs is not None \
+            and self._lowest[0] is self.costs else None
         if self.costs is None:
             if value == 1.0:
                 return
@@ -216,9 +219,13 @@ class Grid:
         elif self._costs_shared:  # a copy's too: write into one of its own
             self.costs = array("d", self.costs)
         self._costs_shared = False
-        self.costs[y * self.width + x] = value
+        old, self.costs[i] = self.costs[i], value
         self._lowest = None
         self._derived = {}
+        # The lowest free cost follows a free cell's edit with no scan of the map (~5 ms on
+        # 512x512), unless the cell was the lowest and is dearer now (another may be as low).
+        if known is not None and not self.blocked[i] and (value <= known or old != known):
+            self._lowest = self.costs, min(known, value)
         if value == 1.0:
             self._all_ones()
 
