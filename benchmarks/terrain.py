@@ -6,7 +6,9 @@ and ``advance()``, set-up included) on the core in use, once with seeded random 
 every free cell and once without costs, beside the same pair run by the C floor
 (``benchmarks/floor.c``, which weighs costs as the compiled core does), all four interleaved in
 CPU time: a target below the floor's ratio says so; the run's set-up alone (``Run(...)``, which
-the floor makes before its time); and the record's bytes an expansion, which terrain does not
+the floor makes before its time), on the map as it is (its padded walls and costs shared by
+every run of it: ``Grid.derived``) and right after an edit (padded again, its costs copied);
+and the record's bytes an expansion, which terrain does not
 change (a cost is read from the map, never stored per event).
 """
 
@@ -34,6 +36,12 @@ def with_random_costs(grid: Grid, seed: int = 22) -> Grid:
     return costed
 
 
+def _edited_run(grid: Grid, cell: tuple[int, int], key: str) -> Run:
+    """A run right after an edit (a cost painted again): nothing worked out is shared."""
+    grid.set_cost(cell, grid.cost(cell))
+    return Run(grid, key, NEVER)
+
+
 def bench_terrain(quick: bool) -> None:
     print("terrain ...", file=sys.stderr, flush=True)
     plain = maze_row()
@@ -48,11 +56,15 @@ def bench_terrain(quick: bool) -> None:
                  for name, g in (("plain", plain), ("costed", costed))}
         floors = {name: floor_search(g, key, NEVER) for name, g in (("plain", plain),
                                                                     ("costed", costed))}
+        edited = costed.copy()
+        cell = next((x, y) for y in range(edited.height) for x in range(edited.width)
+                    if edited.is_free((x, y)))
         t = interleaved({"plain": lambda k=key: recorded(plain, k, NEVER),
                          "costed": lambda k=key: recorded(costed, k, NEVER),
                          "floor plain": floors["plain"], "floor costed": floors["costed"],
                          "set-up plain": partial(Run, plain, key, NEVER),
-                         "set-up costed": partial(Run, costed, key, NEVER)},
+                         "set-up costed": partial(Run, costed, key, NEVER),
+                         "set-up edited": partial(_edited_run, edited, cell, key)},
                         repeats, CPU)
         for what, xs in t.items():
             series(f"terrain maze512 {key} {what}", xs)
@@ -65,13 +77,17 @@ def bench_terrain(quick: bool) -> None:
                 f"{floor * steps['plain'] / steps['costed']:.2f}x",
                 fmt_time(t["floor costed"]), f"all 1 {fmt_time(t['floor plain'])}", floor,
                 "report"))
-        # The floor's set-up is made before its time; a run's is in it: the grid copied and
-        # its costs padded for the loops (2 MB each on maze512, fresh memory), which a map
-        # without costs skips.
-        add(Row("terrain", f"maze512 {key.upper()} set-up (Run(): the grid copied, its costs "
-                f"padded, the start recorded), costs 1-9 vs all 1", fmt_time(t["set-up costed"]),
+        # The floor's set-up is made before its time; a run's is in it: the grid copied (its
+        # costs and padded arrays shared while the map is not edited) and the first chunk.
+        # After an edit the costs are copied and padded again (2 MB each on maze512).
+        add(Row("terrain", f"maze512 {key.upper()} set-up (Run(): the grid copied, the first "
+                f"4,096 steps recorded), costs 1-9 vs all 1", fmt_time(t["set-up costed"]),
                 f"all 1 {fmt_time(t['set-up plain'])}",
                 paired(t["set-up costed"], t["set-up plain"]), "report"))
+        add(Row("terrain", f"maze512 {key.upper()} set-up right after an edit (its costs "
+                f"copied and padded again), costs 1-9 vs all 1", fmt_time(t["set-up edited"]),
+                f"all 1 {fmt_time(t['set-up plain'])}",
+                paired(t["set-up edited"], t["set-up plain"]), "report"))
         r = paired(t["costed"], t["plain"])
         per_step = r * steps["plain"] / steps["costed"]  # the searches differ in length
         add(Row("terrain", f"maze512 row {MAZE_ROW}, corners never, {key.upper()} with costs "

@@ -6,19 +6,24 @@ counted from 0 at the top.  A move costs its length (1 straight, sqrt(2) diagona
 cost of the cell it enters; a map whose every cell costs 1 keeps no costs at all (``costs``
 is None), so the plain maps pay nothing for terrain.  The grid is a plain, mutable value: editing it never touches a
 search, because every search copies what it needs when it starts (search state lives in the
-run, never on the grid).
+run, never on the grid).  A copy shares what is worked out from the cells (the padded arrays
+of :mod:`~tui_search.engine.problem`: :meth:`Grid.derived`) and its costs, until either grid
+is edited: a search started on an unedited map pays neither again.
 """
 
 from __future__ import annotations
 
 import math
 from array import array
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from itertools import compress, pairwise
+from typing import TypeVar
 
 from tui_search.engine.mapsource import MapSource
 
 Cell = tuple[int, int]
+_T = TypeVar("_T")
 
 #: Every direction the robot can move in, with its (dx, dy).  The tuple's order is only the
 #: numbering of direction codes; the order in which successors are generated is ``order``.
@@ -74,8 +79,9 @@ class Grid:
     """A ``width`` x ``height`` map; ``blocked[y * width + x]`` is 1 for an obstacle, and
     ``costs[y * width + x]`` (None: all 1) what entering the cell costs (> 0; 1 on an
     obstacle).  An all-1 ``costs`` is stored as None, so two grids of the same map are equal.
-    Edit cells with :meth:`set_blocked` and :meth:`set_cost` (or give ``costs`` a new array):
-    :meth:`lowest_cost` is remembered until then."""
+    Edit cells with :meth:`set_blocked` and :meth:`set_cost` (or give ``costs`` a new array),
+    never by writing into ``blocked`` or ``costs``: :meth:`lowest_cost` and :meth:`derived`
+    are remembered until then, and a copy shares ``costs`` until one of the two sets a cost."""
 
     width: int
     height: int
@@ -91,6 +97,12 @@ class Grid:
     # (set_cost, set_blocked) or when ``costs`` is another array.
     _lowest: tuple[array[float], float] | None = field(
         default=None, init=False, compare=False, repr=False)
+    # derived()'s answers, shared with this grid's copies: an edit gives the edited grid a new,
+    # empty dict (never clears the shared one), so the others keep theirs.
+    _derived: dict[str, tuple[array[float] | None, object]] = field(
+        default_factory=dict, init=False, compare=False, repr=False)
+    # costs is one array with a copy's (or the grid copied): set_cost copies it before writing.
+    _costs_shared: bool = field(default=False, init=False, compare=False, repr=False)
 
     def __post_init__(self) -> None:
         if self.width < 1 or self.height < 1:
@@ -134,6 +146,18 @@ class Grid:
             self._lowest = costs, min(compress(costs, free), default=1.0)
         return self._lowest[1]
 
+    def derived(self, key: str, make: Callable[[Grid], _T]) -> _T:
+        """``make(self)``, remembered under ``key`` until the grid is edited (shared with its
+        copies while neither is): what a search works out from the cells alone, such as the
+        padded walls and costs of :class:`~tui_search.engine.problem.Problem`.  What ``make``
+        returns is shared, so no one may change it."""
+        found = self._derived.get(key)
+        if found is not None and found[0] is self.costs:
+            return found[1]  # type: ignore[return-value]
+        value = make(self)
+        self._derived[key] = (self.costs, value)
+        return value
+
     def path_cost(self, path: list[Cell]) -> float:
         """The cost of ``path``: each move's length times the cost of the cell it enters,
         summed from the start as the searches sum g (the start's own cost is never paid).
@@ -176,6 +200,7 @@ class Grid:
         x, y = cell
         self.blocked[y * self.width + x] = 1 if value else 0
         self._lowest = None
+        self._derived = {}
         if value and self.costs is not None:
             self.set_cost(cell, 1.0)
 
@@ -184,12 +209,23 @@ class Grid:
         if not (value > 0 and math.isfinite(value)):
             raise ValueError(f"a cell's cost must be a positive number, not {value!r}")
         x, y = cell
+        i = y * self.width + x
+        known = self._lowest[1] if self._lowest is not None and self.costs is not None \
+            and self._lowest[0] is self.costs else None
         if self.costs is None:
             if value == 1.0:
                 return
             self.costs = array("d", [1.0]) * (self.width * self.height)
-        self.costs[y * self.width + x] = value
+        elif self._costs_shared:  # a copy's too: write into one of its own
+            self.costs = array("d", self.costs)
+        self._costs_shared = False
+        old, self.costs[i] = self.costs[i], value
         self._lowest = None
+        self._derived = {}
+        # The lowest free cost follows a free cell's edit with no scan of the map (~5 ms on
+        # 512x512), unless the cell was the lowest and is dearer now (another may be as low).
+        if known is not None and not self.blocked[i] and (value <= known or old != known):
+            self._lowest = self.costs, min(known, value)
         if value == 1.0:
             self._all_ones()
 
@@ -203,9 +239,12 @@ class Grid:
             self.width, self.height, bytearray(self.blocked), self.start, self.goal, self.source
         )
         if self.costs is not None:  # already not all 1: no need to look again
-            grid.costs = array("d", self.costs)
+            # shared until either grid sets a cost (set_cost copies it then)
+            grid.costs = self.costs
+            grid._costs_shared = self._costs_shared = True
             # worked out here once, not once a copy: every search copies the grid it runs on
             grid._lowest = grid.costs, self.lowest_cost()
+        grid._derived = self._derived
         return grid
 
     def free_count(self) -> int:

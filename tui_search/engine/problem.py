@@ -40,19 +40,9 @@ class Problem:
         w, h = grid.width, grid.height
         self.width, self.height = w, h
         self.stride = stride = w + 2
-        walls = bytearray(b"\x01") * (stride * (h + 2))
-        for y in range(h):
-            row = (y + 1) * stride + 1
-            walls[row : row + w] = grid.blocked[y * w : (y + 1) * w]
-        self.walls = walls
-        self.terrain: array[float] | None = None  # None: every cell costs 1
+        # Shared with every search of this map until it is edited (Grid.derived): never written.
+        self.walls, self.terrain = grid.derived("padded", padded)
         self.lowest = grid.lowest_cost()
-        if grid.costs is not None:
-            terrain = array("d", [1.0]) * len(walls)
-            for y in range(h):
-                row = (y + 1) * stride + 1
-                terrain[row : row + w] = grid.costs[y * w : (y + 1) * w]
-            self.terrain = terrain
         self.start = self.pad(grid.start)
         self.goal = self.pad(grid.goal)
         self.semantics = semantics
@@ -114,6 +104,22 @@ class Problem:
     def unpad(self, p: int) -> tuple[int, int]:
         y, x = divmod(p, self.stride)
         return (x - 1, y - 1)
+
+
+def padded(grid: Grid) -> tuple[bytes, array[float] | None]:
+    """``grid``'s walls with a border of walls, and its costs (None: all 1) with a border of 1:
+    the walls' rows joined by the two border cells between them, in one ``join``."""
+    w, size = grid.width, len(grid.blocked)
+    edge = b"\x01" * (w + 1)  # with the separator: the top border row and a left border
+    cells = memoryview(grid.blocked)
+    walls = b"\x01\x01".join([edge, *(cells[i : i + w] for i in range(0, size, w)), edge])
+    if grid.costs is None:
+        return walls, None
+    stride, costs = w + 2, grid.costs
+    terrain = array("d", [1.0]) * len(walls)
+    for y, i in enumerate(range(0, size, w), start=1):
+        terrain[y * stride + 1 : y * stride + 1 + w] = costs[i : i + w]
+    return walls, terrain
 
 
 def corner_free(semantics: Semantics) -> bool:

@@ -75,17 +75,23 @@ class Recording:
         #: The raw record: read by the run's parts (tree, position) and by checks, never the app.
         self.rec = Record()
         self.max_steps = max_steps
-        # The loops are generator functions: close() ends one that gives up.
+        # The loops are generator functions: close() ends one that gives up.  The compiled
+        # core's takes the steps a chunk may run (sent: None for its own); the others ignore it.
         loop = loop_for(algo, semantics) if source is None else source.loop
-        self._loop = cast(Generator[int, None, None],
+        self._loop = cast(Generator[int, int | None, None],
                           loop(self.problem, self.rec, min(CHUNK, max_steps)))
         self._peak = PeakTable(self.rec, self.iteration_of)
         self._advance_once()  # records the start (and the answer, when start == goal)
 
-    def _advance_once(self) -> None:
+    def _advance_once(self, steps: int | None = None) -> None:
+        """Record a chunk: up to ``steps`` more when the loop takes that, never past
+        ``max_steps`` (the compiled core's runs on in C, with no pause between chunks)."""
         rec = self.rec
         if not rec.done:
-            next(self._loop, None)
+            try:
+                self._loop.send(steps)  # None for the first: a generator starts so
+            except StopIteration:
+                pass
             if rec.steps > self.max_steps or (not rec.done and rec.steps == self.max_steps):
                 self._give_up()
             self._peak.extend(rec.steps)  # kept as it is recorded: the end costs no scan
@@ -119,8 +125,9 @@ class Recording:
         """Record more of the search: at least up to ``until_step`` (all of it when None), in
         chunks.  Returns True once the whole search is recorded."""
         rec = self.rec
+        target = self.max_steps if until_step is None else min(until_step, self.max_steps)
         while not rec.done and (until_step is None or rec.steps < until_step):
-            self._advance_once()
+            self._advance_once(max(CHUNK, target - rec.steps) if rec.steps < target else None)
         return rec.done
 
     def advance_some(self) -> bool:

@@ -17,7 +17,7 @@ import hashlib
 import os
 import sys
 from array import array
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Generator
 from functools import cache, partial
 from importlib import import_module
 from pathlib import Path
@@ -84,16 +84,18 @@ def core_name() -> str:
     return selected()[1]
 
 
-def compiled_loop(algorithm: Algorithm) -> Callable[[Problem, Record, int], Iterator[int]] | None:
+def compiled_loop(algorithm: Algorithm
+                  ) -> Callable[[Problem, Record, int], Generator[int, int | None, None]] | None:
     """The compiled loop of ``algorithm`` (any choice), or None when the Python loops run."""
     core = selected()[0]
     return None if core is None else partial(_run, core, algorithm)
 
 
 def _run(core: ModuleType, algorithm: Algorithm, problem: Problem, rec: Record, chunk: int
-         ) -> Iterator[int]:
+         ) -> Generator[int, int | None, None]:
     """Record ``problem`` searched with ``algorithm``: a chunk of steps per ``advance``, with
-    a pause after each as the Python loops pause."""
+    a pause after each as the Python loops pause; a number sent in is the next chunk's steps
+    (a long advance runs on in C, with no round trip every ``chunk`` steps)."""
     sem = problem.semantics
     loop = _IDDFS if algorithm.iterative else _BEST if algorithm.priority else _QUEUE
     lifo = algorithm.frontier is Frontier.LIFO
@@ -118,12 +120,13 @@ def _run(core: ModuleType, algorithm: Algorithm, problem: Problem, rec: Record, 
          rec.iter_limit),
         problem.goal if on_push else -1, -1 if on_push else problem.goal, len(moves),
         problem.terrain, problem.lowest, CHEAPER_BY)
+    steps = chunk
     while True:
-        result = search.advance(chunk)
+        result = search.advance(steps)
         if result != _PAUSED:
             rec.goal_gen, rec.done = result, True
             return
-        yield rec.steps
+        steps = (yield rec.steps) or chunk
 
 
 __all__ = ["CORE_ENV", "CoreUnavailable", "compiled_loop", "core_name", "selected"]
