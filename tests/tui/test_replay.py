@@ -20,13 +20,14 @@ from tui_search.tui.widgets.stats import Stats
 NWSE = Semantics(order=("N", "W", "S", "E"))
 
 
-def replay_app(bug_at: int | None = 9) -> SearchApp:
+def replay_app(bug_at: int | None = 9, theme: str | None = None) -> SearchApp:
     """The app replaying a student's BFS (order N,W,S,E) that takes the newest entry once, at
-    step ``bug_at``, beside the app's BFS with that order."""
+    step ``bug_at``, beside the app's BFS with that order (in ``theme``: None, the default)."""
     grid = load_map(TUTORIAL)
     trace = read_trace(bfs(TUTORIAL_ROWS, "N,W,S,E", bug_at=bug_at), grid, "trace.jsonl")
     replay = replay_of(trace, grid, "bfs", NWSE)
-    return SearchApp(grid, path=TUTORIAL, algorithm="bfs", semantics=NWSE, replay=replay)
+    return SearchApp(grid, path=TUTORIAL, algorithm="bfs", semantics=NWSE, replay=replay,
+                     theme=theme)
 
 
 def status(app: SearchApp) -> str:
