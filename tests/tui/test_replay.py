@@ -44,6 +44,10 @@ async def test_replay_steps_both_ways_in_lockstep_and_jumps_to_the_difference() 
         assert [p.label for p in panes] == ["your trace", "BFS"]
         trace_run, bfs_run = session.runs
         assert trace_run.algo.short == "your trace"
+        # the trace's line names its file, not the moves of the search it is beside
+        assert "trace.jsonl" in panes[0].stats.status_text
+        assert "moves" not in panes[0].stats.status_text
+        assert "moves N,W,S,E" in panes[1].stats.status_text
         # the first difference: in the status line from the start, and marked on both maps
         assert "step 9: your trace expands" in status(app)
         got, expected = session.replay.marks()

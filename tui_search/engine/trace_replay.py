@@ -11,8 +11,10 @@ names, the cells to mark and the sentence to show.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from pathlib import PurePath
 
 from tui_search.engine.algorithms import get_algorithm
+from tui_search.engine.filenames import describe_name
 from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.run import MAX_STEPS, Run
 from tui_search.engine.semantics import Semantics
@@ -35,6 +37,8 @@ class Replay:
     semantics: Semantics
     verdict: Verdict
     where: tuple[bytes, Cell | None, Cell | None]
+    #: Was the search found by the diagnosis (its order inferred from the trace), not given?
+    inferred: bool = False
 
     @property
     def labels(self) -> list[str]:
@@ -47,8 +51,18 @@ class Replay:
 
     def runs(self, grid: Grid, max_steps: int = MAX_STEPS) -> list[Run]:
         """The trace as a run, and the search's run, each at step 0."""
-        return [trace_run(self.trace, grid, self.algorithm, self.semantics, max_steps),
+        return [trace_run(self.trace, grid, self.algorithm, self.semantics, max_steps,
+                          self.notes()),
                 Run(grid, self.algorithm, self.semantics, max_steps)]
+
+    def notes(self) -> tuple[str, ...]:
+        """What the trace's status line says of it: its file's name, and the order of the
+        moves when the diagnosis inferred it from the trace ("order N,W,S,E inferred").  Not
+        the search's choices: the trace never declares them (the search's pane says those)."""
+        name = describe_name(PurePath(self.trace.name).name)
+        if not self.inferred:
+            return (name,)
+        return (name, f"order {','.join(self.semantics.order)} inferred")
 
     @property
     def step(self) -> int | None:
@@ -85,6 +99,7 @@ def replay_of(trace: Trace, grid: Grid, algorithm: str | None, semantics: Semant
               max_steps: int = MAX_STEPS) -> Replay:
     """``trace`` beside ``algorithm`` under ``semantics`` (as ``--check-trace -a`` checks
     it), or with no ``algorithm`` beside the diagnosis's best candidate."""
+    inferred = algorithm is None
     if algorithm is None:
         from tui_search.engine.trace_diagnose import diagnose
 
@@ -94,7 +109,7 @@ def replay_of(trace: Trace, grid: Grid, algorithm: str | None, semantics: Semant
         algorithm, semantics, verdict = best.algorithm, best.semantics, best
     else:
         verdict = check_trace(trace, grid, algorithm, semantics, max_steps)
-    return Replay(trace, algorithm, semantics, verdict, _where(grid))
+    return Replay(trace, algorithm, semantics, verdict, _where(grid), inferred)
 
 
 __all__ = ["TRACE_LABEL", "Replay", "replay_of"]
