@@ -10,7 +10,7 @@ names, the cells to mark and the sentence to show.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import PurePath
 
 from tui_search.engine.algorithms import get_algorithm
@@ -19,7 +19,7 @@ from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.run import MAX_STEPS, Run
 from tui_search.engine.semantics import Semantics
 from tui_search.engine.trace_check import Verdict, check_trace
-from tui_search.engine.trace_read import Trace, show
+from tui_search.engine.trace_read import Trace, TraceStep, show
 from tui_search.engine.trace_run import TRACE_ALGORITHM, trace_run
 
 #: What the app calls the trace's pane.
@@ -98,18 +98,48 @@ def _where(grid: Grid) -> tuple[bytes, Cell | None, Cell | None]:
 def replay_of(trace: Trace, grid: Grid, algorithm: str | None, semantics: Semantics,
               max_steps: int = MAX_STEPS) -> Replay:
     """``trace`` beside ``algorithm`` under ``semantics`` (as ``--check-trace -a`` checks
-    it), or with no ``algorithm`` beside the diagnosis's best candidate."""
-    inferred = algorithm is None
+    it), or with no ``algorithm`` beside the diagnosis's best candidate.  The search's
+    discarded pops that the trace left out are put back where the search discards them
+    (:func:`with_discards`), so that both panes number their steps alike."""
+    inferred, label = algorithm is None, ""
     if algorithm is None:
         from tui_search.engine.trace_diagnose import diagnose
 
         best = diagnose(trace, grid, max_steps).best[0]
-        if best.label:  # a recursive DFS: matched on the trace mirrored; checked as it is
-            best = check_trace(trace, grid, best.algorithm, best.semantics, max_steps)
-        algorithm, semantics, verdict = best.algorithm, best.semantics, best
-    else:
-        verdict = check_trace(trace, grid, algorithm, semantics, max_steps)
-    return Replay(trace, algorithm, semantics, verdict, _where(grid), inferred)
+        algorithm, semantics, label = best.algorithm, best.semantics, best.label
+    aligned = with_discards(trace, _check(trace, grid, algorithm, semantics, label,
+                                          max_steps).left_out)
+    verdict = _check(aligned, grid, algorithm, semantics, label, max_steps)
+    return Replay(aligned, algorithm, semantics, verdict, _where(grid), inferred)
 
 
-__all__ = ["TRACE_LABEL", "Replay", "replay_of"]
+def _check(trace: Trace, grid: Grid, algorithm: str, semantics: Semantics, label: str,
+           max_steps: int) -> Verdict:
+    """:func:`~tui_search.engine.trace_check.check_trace`; for a recursive DFS (``label``
+    names it) the trace mirrored, as the diagnosis matched it, the verdict named so."""
+    if not label:
+        return check_trace(trace, grid, algorithm, semantics, max_steps)
+    from tui_search.engine.trace_diagnose import mirrored
+
+    return replace(check_trace(mirrored(trace), grid, algorithm, semantics, max_steps),
+                   label=label)
+
+
+def with_discards(trace: Trace, left_out: tuple[tuple[int, Cell], ...]) -> Trace:
+    """``trace`` with the discarded pops it left out (a verdict's ``left_out``) put in where
+    the search discards them, each ``"discarded": true`` on the line of the step it comes
+    before (after the last step: its line)."""
+    if not left_out:
+        return trace
+    steps: list[TraceStep] = []
+    pending = list(left_out)[::-1]
+    for i, step in enumerate((*trace.steps, None)):
+        while pending and pending[-1][0] == i:
+            line = step.line if step is not None else trace.steps[-1].line
+            steps.append(TraceStep(line, pending.pop()[1], (), discarded=True))
+        if step is not None:
+            steps.append(step)
+    return replace(trace, steps=tuple(steps))
+
+
+__all__ = ["TRACE_LABEL", "Replay", "replay_of", "with_discards"]
