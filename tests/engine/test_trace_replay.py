@@ -3,7 +3,7 @@ says of it, its steps beside its search's, and a recursive DFS's pattern named."
 
 from __future__ import annotations
 
-from tests.engine.student_searches import _search, bfs, bfs_visit_on_expand
+from tests.engine.student_searches import _search, bfs, bfs_visit_on_expand, dfs_recursive
 from tests.engine.test_trace import app_trace
 from tests.helpers import TUTORIAL, TUTORIAL_ROWS
 from tui_search.engine.mapfile import load_map
@@ -78,3 +78,19 @@ def test_a_difference_after_left_out_pops_is_numbered_as_the_search_numbers_it()
         run.goto(replay.step)
     assert replay.marks() == [ours.now.current_node(), theirs.now.current_node()]
     assert replay.sentence().startswith(f"step {replay.step}: ")
+
+
+def test_a_recursive_dfs_that_parts_says_it_was_matched_against_a_recursive_dfs() -> None:
+    """A recursive DFS's trace cut short: the difference is said, then that it was matched
+    against a recursive DFS's pattern, and what the DFS beside it is."""
+    lines = dfs_recursive(TUTORIAL_ROWS, "E,S,W,N").splitlines()
+    trace = read_trace("\n".join(lines[:-3]) + "\n", GRID, "rec.jsonl")
+    replay = replay_of(trace, GRID, None, Semantics())
+    assert replay.recursive and replay.labels == ["your trace", "DFS (recursive)"]
+    assert replay.algorithm == "dfs" and replay.semantics.order == ("N", "W", "S", "E")
+    assert replay.step == len(trace.steps) + 1
+    assert replay.sentence() == (
+        f"step {replay.step}: your trace ends after step {replay.step - 1}; DFS goes on and "
+        "expands (0,4) (the stack's top) · matched against a recursive DFS (order E,S,W,N; "
+        "goal test on expand): beside it, the stack DFS that expands as a recursive one does "
+        "(visit on expand, order N,W,S,E: your order reversed)")

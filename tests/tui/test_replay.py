@@ -4,7 +4,7 @@ jumps there and back."""
 
 from __future__ import annotations
 
-from tests.engine.student_searches import bfs
+from tests.engine.student_searches import bfs, dfs_recursive
 from tests.helpers import TUTORIAL, TUTORIAL_ROWS
 from tests.tui.test_app import sync, wait_until
 from tui_search.engine.mapfile import load_map
@@ -105,3 +105,32 @@ def test_the_session_jumps_to_the_difference_and_back_from_anywhere() -> None:
     session.choose_algorithm("dfs")
     assert session.replay is None and session.labels == ["DFS"]
     assert session.marks() == [None] and session.difference_step is None
+
+
+@sync
+async def test_a_recursive_dfs_is_said_to_be_matched_against_a_recursive_dfss_pattern() -> None:
+    """A student's recursive DFS (order E,S,W,N) replayed without -a: the search's pane is
+    named 'DFS (recursive)', the line under the panes says it is a recursive DFS and that the
+    DFS beside it is the stack DFS that expands as one does; the trace's line says the order
+    it inferred, the student's; the panes keep in step, a cell the same at every step."""
+    grid = load_map(TUTORIAL)
+    trace = read_trace(dfs_recursive(TUTORIAL_ROWS, "E,S,W,N"), grid, "rec.jsonl")
+    app = SearchApp(grid, path=TUTORIAL, replay=replay_of(trace, grid, None, Semantics()))
+    async with app.run_test(size=(120, 40)) as pilot:
+        panes = list(app.screen.query(RunPane))
+        assert [p.label for p in panes] == ["your trace", "DFS (recursive)"]
+        said = status(app)
+        assert "your trace matches a recursive DFS (order E,S,W,N" in said
+        assert "the stack DFS that expands as a recursive one does" in said
+        assert "order N,W,S,E: your order reversed" in said
+        assert "rec.jsonl" in panes[0].stats.status_text
+        assert "order E,S,W,N inferred" in panes[0].stats.status_text
+        assert "DFS (recursive)" in panes[1].stats.status_text
+        assert "visit on expand" in panes[1].stats.status_text
+        assert app.screen.check_action("difference", ()) is False
+        ours, theirs = app.session.runs
+        await pilot.press("end")
+        await wait_until(pilot, lambda: ours.at_end and theirs.at_end)
+        assert ours.k == theirs.k == 27  # the 22 lines and the 5 pops the stack DFS discards
+        assert [(s.node, s.discarded) for s in ours.steps.all()] == [
+            (s.node, s.discarded) for s in theirs.steps.all()]

@@ -24,6 +24,9 @@ from tui_search.engine.trace_run import TRACE_ALGORITHM, trace_run
 
 #: What the app calls the trace's pane.
 TRACE_LABEL = TRACE_ALGORITHM.short
+#: What it calls the search's pane when the trace is matched against a recursive DFS's
+#: pattern (a stack DFS that visits on expand and pushes the moves in reverse order).
+RECURSIVE_LABEL = "DFS (recursive)"
 
 
 @dataclass(frozen=True)
@@ -41,9 +44,22 @@ class Replay:
     inferred: bool = False
 
     @property
+    def recursive(self) -> bool:
+        """Is the trace matched against a recursive DFS's pattern (the diagnosis's
+        :func:`~tui_search.engine.trace_diagnose.mirrored` match), not a search of the app?"""
+        return bool(self.verdict.label)
+
+    @property
     def labels(self) -> list[str]:
         """The panes' names: the trace's, the search's."""
-        return [TRACE_LABEL, get_algorithm(self.algorithm).short]
+        return [TRACE_LABEL,
+                RECURSIVE_LABEL if self.recursive else get_algorithm(self.algorithm).short]
+
+    @property
+    def order(self) -> tuple[str, ...]:
+        """The moves in the order the trace adds them (a recursive DFS's: the stack DFS's,
+        which pushes them in reverse, reversed)."""
+        return self.semantics.order[::-1] if self.recursive else self.semantics.order
 
     def fits(self, grid: Grid) -> bool:
         """Does the trace still apply to ``grid`` (the same obstacles, start and goal)?"""
@@ -62,7 +78,7 @@ class Replay:
         name = describe_name(PurePath(self.trace.name).name)
         if not self.inferred:
             return (name,)
-        return (name, f"order {','.join(self.semantics.order)} inferred")
+        return (name, f"order {','.join(self.order)} inferred")
 
     @property
     def step(self) -> int | None:
@@ -80,15 +96,23 @@ class Replay:
 
     def sentence(self) -> str:
         """The first difference in a line: "step 9: your trace expands (3,2); BFS expands
-        (2,3)", or that they match all through."""
+        (2,3)", or that they match all through; matched against a recursive DFS's pattern,
+        it says so, and what the search beside the trace is."""
         difference = self.verdict.difference
-        name = get_algorithm(self.algorithm).short
+        name = self.labels[1]
         if difference is None:
-            return f"your trace matches {self.verdict.choices} for all {self.verdict.steps} steps"
-        if difference.kind == "expand" and difference.got and difference.expected:
-            return (f"step {difference.step}: your trace expands {show(difference.got)}; "
+            text = f"your trace matches {self.verdict.choices} for all {self.verdict.steps} steps"
+        elif difference.kind == "expand" and difference.got and difference.expected:
+            text = (f"step {difference.step}: your trace expands {show(difference.got)}; "
                     f"{name} expands {show(difference.expected)}")
-        return difference.message
+        else:
+            text = difference.message
+        if not self.recursive:
+            return text
+        matched = "" if difference is None else f"matched against {self.verdict.label}: "
+        return (f"{text} · {matched}beside it, the stack DFS that expands as a recursive one "
+                f"does (visit on expand, order {','.join(self.semantics.order)}: your order "
+                f"reversed)")
 
 
 def _where(grid: Grid) -> tuple[bytes, Cell | None, Cell | None]:
@@ -142,4 +166,4 @@ def with_discards(trace: Trace, left_out: tuple[tuple[int, Cell], ...]) -> Trace
     return replace(trace, steps=tuple(steps))
 
 
-__all__ = ["TRACE_LABEL", "Replay", "replay_of", "with_discards"]
+__all__ = ["RECURSIVE_LABEL", "TRACE_LABEL", "Replay", "replay_of", "with_discards"]
