@@ -12,6 +12,7 @@ from tui_search.engine.semantics import Semantics
 from tui_search.engine.trace_read import read_trace
 from tui_search.engine.trace_replay import replay_of
 from tui_search.tui.app import SearchApp
+from tui_search.tui.narration import narrate
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.run_pane import RunPane
@@ -134,3 +135,18 @@ async def test_a_recursive_dfs_is_said_to_be_matched_against_a_recursive_dfss_pa
         assert ours.k == theirs.k == 27  # the 22 lines and the 5 pops the stack DFS discards
         assert [(s.node, s.discarded) for s in ours.steps.all()] == [
             (s.node, s.discarded) for s in theirs.steps.all()]
+
+
+def test_a_trace_that_stops_with_cells_left_does_not_say_its_frontier_is_empty() -> None:
+    """A trace cut short ends with cells on its frontier: its last narration says it stops
+    there, not that the frontier is empty, nor that moves it never declared block the way."""
+    grid = load_map(TUTORIAL)
+    lines = dfs_recursive(TUTORIAL_ROWS, "E,S,W,N").splitlines()
+    trace = read_trace("\n".join(lines[:-3]) + "\n", grid, "rec.jsonl")
+    ours, _ = replay_of(trace, grid, None, Semantics()).runs(grid)
+    ours.advance()
+    ours.goto(ours.total)
+    said = narrate(ours)
+    assert said.endswith(f"It stops here, {ours.now.frontier_len()} still on the frontier: "
+                         "no path found")
+    assert "empty" not in said and "block" not in said
