@@ -4,7 +4,7 @@ jumps there and back."""
 
 from __future__ import annotations
 
-from tests.engine.student_searches import bfs
+from tests.engine.student_searches import bfs, dfs_recursive
 from tests.helpers import TUTORIAL, TUTORIAL_ROWS
 from tests.tui.test_app import sync, wait_until
 from tui_search.engine.mapfile import load_map
@@ -12,6 +12,7 @@ from tui_search.engine.semantics import Semantics
 from tui_search.engine.trace_read import read_trace
 from tui_search.engine.trace_replay import replay_of
 from tui_search.tui.app import SearchApp
+from tui_search.tui.narration import narrate
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.run_pane import RunPane
@@ -20,13 +21,14 @@ from tui_search.tui.widgets.stats import Stats
 NWSE = Semantics(order=("N", "W", "S", "E"))
 
 
-def replay_app(bug_at: int | None = 9) -> SearchApp:
+def replay_app(bug_at: int | None = 9, theme: str | None = None) -> SearchApp:
     """The app replaying a student's BFS (order N,W,S,E) that takes the newest entry once, at
-    step ``bug_at``, beside the app's BFS with that order."""
+    step ``bug_at``, beside the app's BFS with that order (in ``theme``: None, the default)."""
     grid = load_map(TUTORIAL)
     trace = read_trace(bfs(TUTORIAL_ROWS, "N,W,S,E", bug_at=bug_at), grid, "trace.jsonl")
     replay = replay_of(trace, grid, "bfs", NWSE)
-    return SearchApp(grid, path=TUTORIAL, algorithm="bfs", semantics=NWSE, replay=replay)
+    return SearchApp(grid, path=TUTORIAL, algorithm="bfs", semantics=NWSE, replay=replay,
+                     theme=theme)
 
 
 def status(app: SearchApp) -> str:
@@ -43,6 +45,10 @@ async def test_replay_steps_both_ways_in_lockstep_and_jumps_to_the_difference() 
         assert [p.label for p in panes] == ["your trace", "BFS"]
         trace_run, bfs_run = session.runs
         assert trace_run.algo.short == "your trace"
+        # the trace's line names its file, not the moves of the search it is beside
+        assert "trace.jsonl" in panes[0].stats.status_text
+        assert "moves" not in panes[0].stats.status_text
+        assert "moves N,W,S,E" in panes[1].stats.status_text
         # the first difference: in the status line from the start, and marked on both maps
         assert "step 9: your trace expands" in status(app)
         got, expected = session.replay.marks()
@@ -100,3 +106,47 @@ def test_the_session_jumps_to_the_difference_and_back_from_anywhere() -> None:
     session.choose_algorithm("dfs")
     assert session.replay is None and session.labels == ["DFS"]
     assert session.marks() == [None] and session.difference_step is None
+
+
+@sync
+async def test_a_recursive_dfs_is_said_to_be_matched_against_a_recursive_dfss_pattern() -> None:
+    """A student's recursive DFS (order E,S,W,N) replayed without -a: the search's pane is
+    named 'DFS (recursive)', the line under the panes says it is a recursive DFS and that the
+    DFS beside it is the stack DFS that expands as one does; the trace's line says the order
+    it inferred, the student's; the panes keep in step, a cell the same at every step."""
+    grid = load_map(TUTORIAL)
+    trace = read_trace(dfs_recursive(TUTORIAL_ROWS, "E,S,W,N"), grid, "rec.jsonl")
+    app = SearchApp(grid, path=TUTORIAL, replay=replay_of(trace, grid, None, Semantics()))
+    async with app.run_test(size=(120, 40)) as pilot:
+        panes = list(app.screen.query(RunPane))
+        assert [p.label for p in panes] == ["your trace", "DFS (recursive)"]
+        said = status(app)
+        assert "your trace matches a recursive DFS (order E,S,W,N" in said
+        assert "the stack DFS that expands as a recursive one does" in said
+        assert "order N,W,S,E: your order reversed" in said
+        assert "rec.jsonl" in panes[0].stats.status_text
+        assert "order E,S,W,N inferred" in panes[0].stats.status_text
+        assert "DFS (recursive)" in panes[1].stats.status_text
+        assert "visit on expand" in panes[1].stats.status_text
+        assert app.screen.check_action("difference", ()) is False
+        ours, theirs = app.session.runs
+        await pilot.press("end")
+        await wait_until(pilot, lambda: ours.at_end and theirs.at_end)
+        assert ours.k == theirs.k == 27  # the 22 lines and the 5 pops the stack DFS discards
+        assert [(s.node, s.discarded) for s in ours.steps.all()] == [
+            (s.node, s.discarded) for s in theirs.steps.all()]
+
+
+def test_a_trace_that_stops_with_cells_left_does_not_say_its_frontier_is_empty() -> None:
+    """A trace cut short ends with cells on its frontier: its last narration says it stops
+    there, not that the frontier is empty, nor that moves it never declared block the way."""
+    grid = load_map(TUTORIAL)
+    lines = dfs_recursive(TUTORIAL_ROWS, "E,S,W,N").splitlines()
+    trace = read_trace("\n".join(lines[:-3]) + "\n", grid, "rec.jsonl")
+    ours, _ = replay_of(trace, grid, None, Semantics()).runs(grid)
+    ours.advance()
+    ours.goto(ours.total)
+    said = narrate(ours)
+    assert said.endswith(f"It stops here, {ours.now.frontier_len()} still on the frontier: "
+                         "no path found")
+    assert "empty" not in said and "block" not in said

@@ -328,9 +328,10 @@ def seen(colour: Color, vision) -> tuple[float, float, float]:
     return 116 * f(y) - 16, 500 * (f(x) - f(y)), 200 * (f(y) - f(z))
 
 
-async def least_difference(theme: str) -> tuple[float, str]:
+async def least_difference(theme: str, of: str | None = None) -> tuple[float, str]:
     """The two kinds of cell whose fills (an obstacle's glyph colour) are closest, as drawn
-    by the running app in ``theme``, in normal, protanopic or deuteranopic vision."""
+    by the running app in ``theme``, in normal, protanopic or deuteranopic vision (``of``:
+    only the pairs with that kind, e.g. ``"marked"`` against every kind and a free cell)."""
     import itertools
     import math
 
@@ -341,9 +342,13 @@ async def least_difference(theme: str) -> tuple[float, str]:
         for kind in ("wall", "start", "goal", "frontier", "expanded", "current", "path"):
             style = view.get_component_rich_style(f"grid-view--{kind}")
             fills[kind] = style.color if kind == "wall" else style.bgcolor
+        if of is not None:
+            fills["free"] = view.rich_style.bgcolor
+            fills[of] = view.get_component_rich_style(f"grid-view--{of}").bgcolor
     return min((math.dist(seen(a, v), seen(b, v)), f"{ka}/{kb} {name}")
                for name, v in (("normal", NORMAL), ("protan", PROTAN), ("deutan", DEUTAN))
-               for (ka, a), (kb, b) in itertools.combinations(fills.items(), 2))
+               for (ka, a), (kb, b) in itertools.combinations(fills.items(), 2)
+               if of is None or of in (ka, kb))
 
 
 @sync
@@ -358,3 +363,13 @@ async def test_the_default_theme_is_what_the_colour_blind_check_catches() -> Non
     green path nearly alike."""
     difference, pair = await least_difference(DEFAULT_THEME)
     assert difference < SAFE_DIFFERENCE and pair == "wall/path deutan"
+
+
+@pytest.mark.parametrize("name", list(THEMES))
+@sync
+async def test_a_replays_mark_stands_apart_from_every_kind_of_cell(name) -> None:
+    """The first difference of a replay is filled with a colour of its own, far from every
+    state's, the obstacles' and a free cell's in every theme and vision: it cannot hide on
+    the light blue of the cell being expanded, nor pass for an obstacle."""
+    difference, pair = await least_difference(name, of="marked")
+    assert difference >= SAFE_DIFFERENCE, pair

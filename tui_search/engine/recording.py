@@ -50,6 +50,9 @@ class Source(NamedTuple):
 
     algo: Algorithm
     loop: Loop
+    #: What the status line says of its rules, in a few words each, instead of how they
+    #: differ from the defaults (a trace never declares them: its file, what was inferred).
+    notes: tuple[str, ...] = ()
 
 
 class Recording:
@@ -65,6 +68,7 @@ class Recording:
         defaults); ``source``: the steps come from its loop instead, and ``algorithm`` is
         its description's key."""
         self.algo = algo = get_algorithm(algorithm) if source is None else source.algo
+        self.source = source
         semantics.check(algo)
         if max_steps < 1:
             raise ValueError("max_steps must be at least 1")

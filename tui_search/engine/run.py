@@ -122,6 +122,15 @@ class Run:
         """When the goal is tested, ``"generate"`` or ``"expand"`` (the one in force)."""
         return self._recording.problem.goal_test
 
+    def differences(self) -> list[str]:
+        """What the status line says of the run's rules, a few words each: how they differ
+        from the defaults ("moves N,W,S,E", "visit on expand"), or for a run from a source
+        (a replayed trace) the source's own words."""
+        source = self._recording.source
+        if source is not None:
+            return list(source.notes)
+        return self.semantics.differences(self.algo)
+
     # -- the answer -----------------------------------------------------------------------
     @property
     def admissible(self) -> bool:

@@ -74,6 +74,9 @@ class Verdict:
     difference: Difference | None
     #: What the search is called when not by its choices ("a recursive DFS (order S,E,N,W)").
     label: str = ""
+    #: The search's discarded pops the trace left out, before the difference: each the index
+    #: of the trace's step it came before (the trace's length: after its last) and its cell.
+    left_out: tuple[tuple[int, Cell], ...] = ()
 
     @property
     def matches(self) -> bool:
@@ -118,6 +121,7 @@ class _Checker:
         self.algo = run.algo
         self.name = run.algo.short
         self.counts_discarded: bool | None = None  # does the trace list the discarded pops?
+        self.left_out: list[tuple[int, Cell]] = []  # the discarded pops it did not list
 
     def engine_step(self, k: int) -> Step | None:
         run = self.run
@@ -226,6 +230,7 @@ class _Checker:
             while e is not None and e.discarded and not (e.node == t.node and not t.successors):
                 self.counts_discarded = False if self.counts_discarded is None else \
                     self.counts_discarded
+                self.left_out.append((i, e.node))
                 k += 1
                 e = self.engine_step(k)
             if e is None:
@@ -250,6 +255,7 @@ class _Checker:
             k += 1
         e = self.engine_step(k)
         while e is not None and e.discarded:
+            self.left_out.append((len(steps), e.node))
             k += 1
             e = self.engine_step(k)
         if e is not None:
@@ -268,7 +274,7 @@ class _Checker:
 
     def verdict(self, matched: int, difference: Difference | None) -> Verdict:
         return Verdict(self.run.algorithm, self.run.semantics, len(self.trace.steps), matched,
-                       difference)
+                       difference, left_out=tuple(self.left_out))
 
 
 def check_trace(trace: Trace, grid: Grid, algorithm: str, semantics: Semantics,

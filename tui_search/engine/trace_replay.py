@@ -10,18 +10,23 @@ names, the cells to mark and the sentence to show.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from pathlib import PurePath
 
 from tui_search.engine.algorithms import get_algorithm
+from tui_search.engine.filenames import describe_name
 from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.run import MAX_STEPS, Run
 from tui_search.engine.semantics import Semantics
 from tui_search.engine.trace_check import Verdict, check_trace
-from tui_search.engine.trace_read import Trace, show
+from tui_search.engine.trace_read import Trace, TraceStep, show
 from tui_search.engine.trace_run import TRACE_ALGORITHM, trace_run
 
 #: What the app calls the trace's pane.
 TRACE_LABEL = TRACE_ALGORITHM.short
+#: What it calls the search's pane when the trace is matched against a recursive DFS's
+#: pattern (a stack DFS that visits on expand and pushes the moves in reverse order).
+RECURSIVE_LABEL = "DFS (recursive)"
 
 
 @dataclass(frozen=True)
@@ -35,11 +40,26 @@ class Replay:
     semantics: Semantics
     verdict: Verdict
     where: tuple[bytes, Cell | None, Cell | None]
+    #: Was the search found by the diagnosis (its order inferred from the trace), not given?
+    inferred: bool = False
+
+    @property
+    def recursive(self) -> bool:
+        """Is the trace matched against a recursive DFS's pattern (the diagnosis's
+        :func:`~tui_search.engine.trace_diagnose.mirrored` match), not a search of the app?"""
+        return bool(self.verdict.label)
 
     @property
     def labels(self) -> list[str]:
         """The panes' names: the trace's, the search's."""
-        return [TRACE_LABEL, get_algorithm(self.algorithm).short]
+        return [TRACE_LABEL,
+                RECURSIVE_LABEL if self.recursive else get_algorithm(self.algorithm).short]
+
+    @property
+    def order(self) -> tuple[str, ...]:
+        """The moves in the order the trace adds them (a recursive DFS's: the stack DFS's,
+        which pushes them in reverse, reversed)."""
+        return self.semantics.order[::-1] if self.recursive else self.semantics.order
 
     def fits(self, grid: Grid) -> bool:
         """Does the trace still apply to ``grid`` (the same obstacles, start and goal)?"""
@@ -47,8 +67,18 @@ class Replay:
 
     def runs(self, grid: Grid, max_steps: int = MAX_STEPS) -> list[Run]:
         """The trace as a run, and the search's run, each at step 0."""
-        return [trace_run(self.trace, grid, self.algorithm, self.semantics, max_steps),
+        return [trace_run(self.trace, grid, self.algorithm, self.semantics, max_steps,
+                          self.notes()),
                 Run(grid, self.algorithm, self.semantics, max_steps)]
+
+    def notes(self) -> tuple[str, ...]:
+        """What the trace's status line says of it: its file's name, and the order of the
+        moves when the diagnosis inferred it from the trace ("order N,W,S,E inferred").  Not
+        the search's choices: the trace never declares them (the search's pane says those)."""
+        name = describe_name(PurePath(self.trace.name).name)
+        if not self.inferred:
+            return (name,)
+        return (name, f"order {','.join(self.order)} inferred")
 
     @property
     def step(self) -> int | None:
@@ -66,15 +96,23 @@ class Replay:
 
     def sentence(self) -> str:
         """The first difference in a line: "step 9: your trace expands (3,2); BFS expands
-        (2,3)", or that they match all through."""
+        (2,3)", or that they match all through; matched against a recursive DFS's pattern,
+        it says so, and what the search beside the trace is."""
         difference = self.verdict.difference
-        name = get_algorithm(self.algorithm).short
+        name = self.labels[1]
         if difference is None:
-            return f"your trace matches {self.verdict.choices} for all {self.verdict.steps} steps"
-        if difference.kind == "expand" and difference.got and difference.expected:
-            return (f"step {difference.step}: your trace expands {show(difference.got)}; "
+            text = f"your trace matches {self.verdict.choices} for all {self.verdict.steps} steps"
+        elif difference.kind == "expand" and difference.got and difference.expected:
+            text = (f"step {difference.step}: your trace expands {show(difference.got)}; "
                     f"{name} expands {show(difference.expected)}")
-        return difference.message
+        else:
+            text = difference.message
+        if not self.recursive:
+            return text
+        matched = "" if difference is None else f"matched against {self.verdict.label}: "
+        return (f"{text} · {matched}beside it, the stack DFS that expands as a recursive one "
+                f"does (visit on expand, order {','.join(self.semantics.order)}: your order "
+                f"reversed)")
 
 
 def _where(grid: Grid) -> tuple[bytes, Cell | None, Cell | None]:
@@ -84,17 +122,48 @@ def _where(grid: Grid) -> tuple[bytes, Cell | None, Cell | None]:
 def replay_of(trace: Trace, grid: Grid, algorithm: str | None, semantics: Semantics,
               max_steps: int = MAX_STEPS) -> Replay:
     """``trace`` beside ``algorithm`` under ``semantics`` (as ``--check-trace -a`` checks
-    it), or with no ``algorithm`` beside the diagnosis's best candidate."""
+    it), or with no ``algorithm`` beside the diagnosis's best candidate.  The search's
+    discarded pops that the trace left out are put back where the search discards them
+    (:func:`with_discards`), so that both panes number their steps alike."""
+    inferred, label = algorithm is None, ""
     if algorithm is None:
         from tui_search.engine.trace_diagnose import diagnose
 
         best = diagnose(trace, grid, max_steps).best[0]
-        if best.label:  # a recursive DFS: matched on the trace mirrored; checked as it is
-            best = check_trace(trace, grid, best.algorithm, best.semantics, max_steps)
-        algorithm, semantics, verdict = best.algorithm, best.semantics, best
-    else:
-        verdict = check_trace(trace, grid, algorithm, semantics, max_steps)
-    return Replay(trace, algorithm, semantics, verdict, _where(grid))
+        algorithm, semantics, label = best.algorithm, best.semantics, best.label
+    aligned = with_discards(trace, _check(trace, grid, algorithm, semantics, label,
+                                          max_steps).left_out)
+    verdict = _check(aligned, grid, algorithm, semantics, label, max_steps)
+    return Replay(aligned, algorithm, semantics, verdict, _where(grid), inferred)
 
 
-__all__ = ["TRACE_LABEL", "Replay", "replay_of"]
+def _check(trace: Trace, grid: Grid, algorithm: str, semantics: Semantics, label: str,
+           max_steps: int) -> Verdict:
+    """:func:`~tui_search.engine.trace_check.check_trace`; for a recursive DFS (``label``
+    names it) the trace mirrored, as the diagnosis matched it, the verdict named so."""
+    if not label:
+        return check_trace(trace, grid, algorithm, semantics, max_steps)
+    from tui_search.engine.trace_diagnose import mirrored
+
+    return replace(check_trace(mirrored(trace), grid, algorithm, semantics, max_steps),
+                   label=label)
+
+
+def with_discards(trace: Trace, left_out: tuple[tuple[int, Cell], ...]) -> Trace:
+    """``trace`` with the discarded pops it left out (a verdict's ``left_out``) put in where
+    the search discards them, each ``"discarded": true`` on the line of the step it comes
+    before (after the last step: its line)."""
+    if not left_out:
+        return trace
+    steps: list[TraceStep] = []
+    pending = list(left_out)[::-1]
+    for i, step in enumerate((*trace.steps, None)):
+        while pending and pending[-1][0] == i:
+            line = step.line if step is not None else trace.steps[-1].line
+            steps.append(TraceStep(line, pending.pop()[1], (), discarded=True))
+        if step is not None:
+            steps.append(step)
+    return replace(trace, steps=tuple(steps))
+
+
+__all__ = ["RECURSIVE_LABEL", "TRACE_LABEL", "Replay", "replay_of", "with_discards"]

@@ -119,16 +119,17 @@ def _costs(problem: Problem) -> Callable[[int, int], float]:
 
 
 def trace_run(trace: Trace, grid: Grid, algorithm: str, semantics: Semantics,
-              max_steps: int = MAX_STEPS) -> Run:
+              max_steps: int = MAX_STEPS, notes: tuple[str, ...] = ()) -> Run:
     """``trace`` on ``grid`` as a run, beside the search it is matched with (``algorithm``
     under ``semantics``): that search's discipline picks the entries (:func:`trace_loop`),
-    its choices are the run's (the narration's words), its goal test the run's."""
+    its choices are the run's (the narration's words), its goal test the run's.  ``notes``:
+    what its status line says of its rules (the trace declares none: not the search's)."""
     algo = get_algorithm(algorithm)
     pick = ("newest" if algo.frontier is Frontier.LIFO
             else "cheapest" if algo.priority in ("g", "g+h") else "oldest")
     loop = trace_loop(trace, pick, infer_discards=not (semantics.tree_search or algo.iterative))
     sem = replace(semantics, goal_test=semantics.goal_test_for(algo))
-    return Run(grid, TRACE_ALGORITHM.key, sem, max_steps, Source(TRACE_ALGORITHM, loop))
+    return Run(grid, TRACE_ALGORITHM.key, sem, max_steps, Source(TRACE_ALGORITHM, loop, notes))
 
 
 __all__ = ["TRACE_ALGORITHM", "trace_loop", "trace_run"]

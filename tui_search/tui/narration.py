@@ -157,6 +157,11 @@ def _narrate(run: Run) -> str:
         text = f"{prefix}Expanded {node}: no new successors"
     if run.at_end and run.gave_up:
         return f"{text}. {gave_up_text(run).capitalize()}"
+    if run.at_end and run.now.frontier_len() and limit is None:
+        # ended with cells still to expand: only a replayed trace stops so (a search of
+        # the app goes on until its frontier is empty), and nothing blocked it
+        return (f"{text}. It stops here, {run.now.frontier_len()} still on the {word}: "
+                f"no path found")
     if run.at_end:  # done, not found
         why = blocked_by(run)
         why = f" — {why}" if why else ""

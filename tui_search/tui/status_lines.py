@@ -55,7 +55,7 @@ def search_status(run: Run | None, name: str, *, in_pane: bool, playing: str = "
     status = [Piece([(name, "stats--value")])]
     if done and run is not None:
         status.append(Piece([(f"done at step {run.k:,}", "stats--result")], DONE_RANK, SEP))
-    differences = run.semantics.differences(run.algo) if run is not None else []
+    differences = run.differences() if run is not None else []
     if run is not None and not run.admissible:
         differences.append(INADMISSIBLE)
     if differences:  # always say what differs

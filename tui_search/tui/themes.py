@@ -50,6 +50,8 @@ class ThemeSpec:
 
 
 DEFAULT_THEME = "dark"
+#: The fill of a replay's first difference on the maps (``$map-mark``), in every theme.
+MARK = "#6600ff"
 
 
 def ramp(*steps: str, text: str) -> dict[str, str]:
@@ -137,5 +139,8 @@ def map_defaults(variables: dict[str, str]) -> dict[str, str]:
         "map-expanded": v["primary-darken-2"], "map-expanded-text": f"{v['foreground']} 70%",
         "map-current": v["primary-lighten-1"], "map-current-text": v["text"],
         "map-path": v["success-darken-2"], "map-path-text": v["success-lighten-2"],
+        # A replay's first difference: a violet no state, obstacle or terrain uses, far from
+        # every kind of cell in the three themes as protanopes and deuteranopes see it too.
+        "map-mark": MARK, "map-mark-text": "#ffffff",
         **ramp("#3a3020", "#5c4a2a", "#7f6535", "#a68242", text=v["foreground"]),
     }

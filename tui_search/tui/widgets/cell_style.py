@@ -85,8 +85,9 @@ class CellLooks:
 
     def __init__(self, style_of: Callable[[str], Style]) -> None:
         cursor, marked = style_of("grid-view--cursor"), style_of("grid-view--marked")
-        # the mark's colour and weight over the cell's own background (its state's)
-        marked = Style(color=marked.color, bold=marked.bold, underline=marked.underline)
+        # the mark's own fill and colour over the cell's (its glyph says its state)
+        marked = Style(color=marked.color, bgcolor=marked.bgcolor, bold=marked.bold,
+                       underline=marked.underline)
         n = len(COMPONENTS)
         styles = [style_of(f"grid-view--{name}") for name in COMPONENTS]
         looks = (Style(), cursor, marked, marked + cursor)

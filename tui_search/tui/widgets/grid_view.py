@@ -100,8 +100,10 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
                                   text-style: bold; }
         & > .grid-view--path { background: $map-path; color: $map-path-text; text-style: bold; }
         & > .grid-view--cursor { text-style: reverse; }
-        /* A replay's first difference: the cell each run expands where they part. */
-        & > .grid-view--marked { color: $text-error; text-style: bold underline; }
+        /* A replay's first difference: the cell each run expands where they part, filled
+           with a colour of its own (no state's, no obstacle's), its glyph kept. */
+        & > .grid-view--marked { background: $map-mark; color: $map-mark-text;
+                                 text-style: bold underline; }
         /* Terrain: a free cell's cost, light to dark (tui_search/tui/widgets/cell_style.py). */
         & > .grid-view--cost-1 { background: $map-cost-1; color: $map-cost-text; }
         & > .grid-view--cost-2 { background: $map-cost-2; color: $map-cost-text; }
