@@ -75,7 +75,8 @@ class Stats(PartsLines):
         """The lines took a row more or less: the room around them changed."""
 
     def on_resize(self, event: events.Resize) -> None:
+        # the first height too: a pane's lines shown (or mounted) anew were reckoned, not
+        # measured, by the layout (the screen refits only when the heights differ)
         if event.size.height != self._height:
-            if self._height is not None:
-                self.post_message(self.HeightChanged())
             self._height = event.size.height
+            self.post_message(self.HeightChanged())
