@@ -171,8 +171,11 @@ class PanesScreen(Screen[None]):
         if arrangement.table and not table.display:
             table.show(self.session.labels, self.session.runs)  # not kept up while hidden
         table.display = arrangement.table
+        panes_lines = self.panes[0].stats.display
         for pane in self.panes:
             pane.lay_out(arrangement, code=self.session.show_code, restyle=restyle)
+        if arrangement.pane_stats != panes_lines and self.is_mounted:
+            self.present()  # the lines under the panes say the counts the panes' lines did
 
     def _check_size(self, width: int, height: int) -> None:
         for lesson in self.query(".lesson"):
@@ -269,7 +272,8 @@ class PanesScreen(Screen[None]):
         """The status lines (:func:`~tui_search.tui.status_lines.screen_status`) and the key bar:
         all a seek's progress changes."""
         session = self.session
-        status = screen_status(session, self.size.width)
+        status = screen_status(session, self.size.width,
+                               panes_lines=self.panes[0].stats.display)
         self.stats.show(status.lines, status.max_rows)
         runs = session.runs
         key = (not runs, session.at_start(), session.at_end(), session.speed_index,

@@ -62,9 +62,9 @@ class Stats(PartsLines):
         narration; at most ``max_rows`` rows while some piece can go."""
         self.MAX_ROWS = max_rows
         if self.set_lines(lines):
-            status, *rest = lines
-            self.status_text = line_text(status.pieces)
-            self.narration_text = "".join(line_text(line.pieces) for line in rest)
+            *counts, narration = lines
+            self.status_text = " ".join(line_text(line.pieces) for line in counts)
+            self.narration_text = line_text(narration.pieces)
 
     @property
     def wrapped(self) -> int:
