@@ -88,9 +88,12 @@ def map_painted(app: SearchApp, view: GridView, screen: list[str]) -> str | None
 async def test_every_lesson_section_shows_its_maps_whole_at_80x24() -> None:
     """A pane's own status lines wrapped to three rows (section 6's two panes, in the room
     the lesson leaves) are measured once laid out: the lists under the maps give up the
-    rows, not the maps' bottom rows and borders."""
+    rows, not the maps' bottom rows and borders; and every search's step and nodes expanded
+    are on the screen whole (in panes 23 columns wide: they wrap onto another row)."""
     from tests.textual_internals import repainted
     from tests.tui.test_lesson import lesson_app
+    from tests.tui.test_text_fits import _counts
+    from tests.tui.test_text_fits import problems as text_problems
 
     app = lesson_app("tutorial")
     async with app.run_test(size=SIZES[0]) as pilot:
@@ -106,6 +109,7 @@ async def test_every_lesson_section_shows_its_maps_whole_at_80x24() -> None:
                 screen = ["".join(text for text, _ in line) for line in await repainted(pilot)]
                 problems[:] = [whole_map_shown(app, view) or map_painted(app, view, screen)
                                for view in app.main.views]
+                problems += text_problems(app, screen, _counts(app))
                 return not any(problems)
 
             for _ in range(100):  # the panes are fitted once their lines are laid out
