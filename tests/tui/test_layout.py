@@ -70,6 +70,55 @@ async def test_the_whole_tutorial_map_shows_in_every_pane_at_every_size(mode: st
             assert len(app.main.views) == len(app.session.runs), mode
 
 
+def map_painted(app: SearchApp, view: GridView, screen: list[str]) -> str | None:
+    """None when ``screen`` (the terminal as painted, its lines as text) shows ``view``'s
+    map box whole: its bottom border row, and the start and the goal inside it (nothing
+    drawn over them), else what is not."""
+    region = view.region
+    rows = [screen[y][region.x:region.right] for y in range(region.y, region.bottom)]
+    if not rows or not (rows[-1].startswith("╰") and rows[-1].endswith("╯")):
+        return f"the map's bottom border covered at {app.size}: {rows[-1:]}"
+    inside = "".join(rows[1:-1])
+    if "S" not in inside or "G" not in inside:
+        return f"the start or the goal covered at {app.size}: {rows}"
+    return None
+
+
+@sync
+async def test_every_lesson_section_shows_its_maps_whole_at_80x24() -> None:
+    """A pane's own status lines wrapped to three rows (section 6's two panes, in the room
+    the lesson leaves) are measured once laid out: the lists under the maps give up the
+    rows, not the maps' bottom rows and borders; and every search's step and nodes expanded
+    are on the screen whole (in panes 23 columns wide: they wrap onto another row)."""
+    from tests.textual_internals import repainted
+    from tests.tui.test_lesson import lesson_app
+    from tests.tui.test_text_fits import _counts
+    from tests.tui.test_text_fits import problems as text_problems
+
+    app = lesson_app("tutorial")
+    async with app.run_test(size=SIZES[0]) as pilot:
+        panel = app.main.query_one(".lesson")
+        for section in range(1, 11):
+            while f" {section}/10" not in str(panel.border_title):
+                await pilot.press("pagedown")
+                await pilot.pause()
+            await wait_until(pilot, lambda: not app.session.seeking)
+            problems: list[str | None] = []
+
+            async def shown(problems: list[str | None] = problems) -> bool:
+                screen = ["".join(text for text, _ in line) for line in await repainted(pilot)]
+                problems[:] = [whole_map_shown(app, view) or map_painted(app, view, screen)
+                               for view in app.main.views]
+                problems += text_problems(app, screen, _counts(app))
+                return not any(problems)
+
+            for _ in range(100):  # the panes are fitted once their lines are laid out
+                if await shown():
+                    break
+                await pilot.pause(0.05)
+            assert not any(problems), (section, problems)
+
+
 @pytest.mark.parametrize("n", [2, 3, 4])
 def test_the_table_gives_way_before_the_lists_and_the_lists_before_the_map(n: int) -> None:
     """80x24 leaves 18 lines for the panes and the table (1 key bar, 2 status lines, 1

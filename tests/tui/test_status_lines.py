@@ -89,7 +89,10 @@ def test_a_pane_among_several_says_done_at_step_k_and_its_map_comes_first() -> N
     assert "done at step" not in texts(alone)[0]
     assert texts(pane)[1] == texts(alone)[1] and texts(alone)[1].endswith(BOUND)
     # narrow: a pane's bound and path give way to the counts; alone, they never go
-    assert rows(pane, 30) == ["BFS │ step 22/22 │ queue 2", "Goal (5,2) found from (5,1)"]
+    # (the step and the nodes expanded never go: the queue's size does, short form and all)
+    assert rows(pane, 30) == ["BFS │ step 22/22 │ expanded 22", "Goal (5,2) found from (5,1)"]
+    assert rows(pane, 21) == ["BFS │ step 22/22", "expanded 22", "Goal (5,2) found from",
+                              "(5,1)"]  # they take a row more than PANE_ROWS
     assert rows(alone, 30)[1:] == ["Goal (5,2) found from (5,1) ·",
                                    "path: 7 moves, cost 8.66 (the",
                                    "lowest) · generated 24 of at", "most 7⁸ = 5,764,801"]
@@ -115,6 +118,9 @@ def test_at_narrow_widths_the_figures_a_student_can_do_without_go_first() -> Non
         shown = rows(status, width)
         assert len(shown) <= MAX_ROWS
         assert "playing" not in " ".join(shown)  # the playback goes first
-        assert "priority queue 5" in " ".join(shown)  # the frontier's size stays
+        assert "step 5/16" in shown[0] and "expanded 5" in " ".join(shown)  # never go
         assert " ".join(shown).endswith(texts(status)[1].split()[-1])  # the narration whole
-    assert rows(status, 30)[0] == "A* │ priority queue 5"  # its peak and the step went
+    # the frontier's size stays while the peak, the discarded nodes ... make room
+    assert "priority queue 5 │" not in rows(status, 50)[1]
+    assert rows(status, 50)[1].endswith("generated 10 │ priority queue 5")
+    assert rows(status, 30)[0] == "A* │ step 5/16 │ expanded 5"  # then it goes too

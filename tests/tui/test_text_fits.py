@@ -62,6 +62,15 @@ def _nothing(app: SearchApp) -> list[str]:
     return []
 
 
+def _counts(app: SearchApp) -> list[str]:
+    """Every search's step and nodes expanded, in its pane's status lines (what the lessons
+    count: they wrap onto another row, never go)."""
+    from tui_search.tui.narration import status_parts
+
+    return [f"{label} {value}" for run in app.session.runs
+            for label, value in status_parts(run) if label in ("step", "expanded")]
+
+
 def _verdict(app: SearchApp) -> list[str]:
     """An exercise: its words, and the verdict with BFS's and DFS's figures."""
     verdict = app.main.query_one(ChallengePanel).verdict
@@ -87,11 +96,11 @@ CASES: dict[str, tuple[dict[str, object], list[str], Callable[[SearchApp], list[
     "iddfs mid-run": ({"algorithm": "iddfs"}, ["n"] * 9, _nothing),
     "astar's priority queue": ({"algorithm": "astar"}, ["n"] * 5, _figures),
     "the quiz": ({"algorithm": "bfs"}, ["i"], _quiz),
-    "compare at the end": ({"compare": "bfs,dfs"}, ["end"], _nothing),
-    "compare 3 mid-run": ({"compare": "bfs,dfs,astar"}, ["n"] * 5, _nothing),
-    "compare 3 at the end": ({"compare": "bfs,dfs,astar"}, ["end"], _nothing),
-    "compare 4 mid-run": ({"compare": "bfs,dfs,astar,iddfs"}, ["n"] * 5, _nothing),
-    "compare 4 at the end": ({"compare": "bfs,dfs,astar,iddfs"}, ["end"], _nothing),
+    "compare at the end": ({"compare": "bfs,dfs"}, ["end"], _counts),
+    "compare 3 mid-run": ({"compare": "bfs,dfs,astar"}, ["n"] * 5, _counts),
+    "compare 3 at the end": ({"compare": "bfs,dfs,astar"}, ["end"], _counts),
+    "compare 4 mid-run": ({"compare": "bfs,dfs,astar,iddfs"}, ["n"] * 5, _counts),
+    "compare 4 at the end": ({"compare": "bfs,dfs,astar,iddfs"}, ["end"], _counts),
     "the quiz comparing 2": ({"compare": "bfs,dfs"}, ["i"], _quiz),
     "the quiz comparing 4": ({"compare": "bfs,dfs,astar,iddfs"}, ["i"], _quiz),
     "exercise 1": ({"algorithm": "bfs"}, ["x"], _verdict),
@@ -262,6 +271,18 @@ def test_when_the_rows_run_out_the_highest_rank_goes_first_and_rank_0_never() ->
     assert _rows(lay_out([status, narration], 30, 3)) == [
         "A* │ step 5/16 │ queue 5", "Expanded (0,2) f = 7.00 (g", "2.00 + h 5.00)"]
     assert len(lay_out([status, narration], 12, 2)) > 2  # rank 0 takes the rows it needs
+
+
+def test_a_short_form_goes_at_its_own_rank_after_the_pieces_above_it() -> None:
+    """The queue's size, once its peak went, stays while a count of lesser note can go, and
+    goes in its turn (it stayed for good, and the step went before it)."""
+    sep = (" │ ", "")
+    queue = Piece([("queue 5 (peak 5)", "")], 6, sep, [("queue 5", "")], 2)
+    status = Line([Piece([("BFS", "")]), Piece([("step 5/22", "")], 0, sep), queue,
+                   Piece([("generated 9", "")], 3, sep)])
+    assert _rows(lay_out([status], 30, 1)) == ["BFS │ step 5/22 │ queue 5"]
+    assert _rows(lay_out([status], 20, 1)) == ["BFS │ step 5/22"]
+    assert _rows(lay_out([status], 20, 2)) == ["BFS │ step 5/22", "queue 5"]
 
 
 @pytest.mark.parametrize("options", [{}, {"compare": "bfs,dfs"}, {"compare": "bfs,astar"}])

@@ -4,8 +4,8 @@ The panes share the space the status lines, the key bar, the legend, the readout
 challenge panel leave.  In that room the map comes first: it is shown whole whenever it fits
 at its smallest cells.  What else a pane shows gives way in this order when there is not room
 for all of it: the comparison table, the search trees, the frontier lists, the panes' own
-status lines (the status line under them still names the step).  A pane much wider than tall
-keeps its lists beside the map, as a column; else under it.
+status lines (the line under them then says each search's step and nodes expanded).  A pane
+much wider than tall keeps its lists beside the map, as a column; else under it.
 
 When the status lines under the panes wrap to more rows, the map stays where it was (placed in
 the room they left at their least) while the rows under it that they take were blank.

@@ -42,6 +42,7 @@ class Piece(NamedTuple):
     rank: int = 0
     lead: tuple[str, str] | None = None
     short: Parts | None = None
+    short_rank: int = 0  # the short form goes too, at this rank (0: it never goes)
 
 
 class Line(NamedTuple):
@@ -96,9 +97,11 @@ def _split_word(word: Parts, width: int) -> list[Parts]:
     return rows
 
 
-def wrap(line: Line, width: int, dropped: frozenset[int] = frozenset()) -> list[Parts]:
+def wrap(line: Line, width: int, dropped: frozenset[int] = frozenset(),
+         gone: frozenset[int] = frozenset()) -> list[Parts]:
     """The rows ``line`` takes in ``width`` cells, its pieces numbered in ``dropped`` left
-    out (or in their short form); an empty line is one empty row."""
+    out (or in their short form), those in ``gone`` left out even so; an empty line is one
+    empty row."""
     rows: list[Parts] = []
     row: Parts = []
     used = 0
@@ -125,6 +128,8 @@ def wrap(line: Line, width: int, dropped: frozenset[int] = frozenset()) -> list[
 
     for i, piece in enumerate(line.pieces):
         parts = piece.parts
+        if i in gone:
+            continue
         if i in dropped:
             if piece.short is None:
                 continue
@@ -152,19 +157,22 @@ def wrap(line: Line, width: int, dropped: frozenset[int] = frozenset()) -> list[
 def lay_out(lines: list[Line], width: int, max_rows: int | None = None) -> list[Parts]:
     """The rows of ``lines`` in ``width`` cells, at most ``max_rows`` of them when dropping
     (or shortening) the pieces of rank above 0 (the highest first, the last of a rank first)
-    gets there."""
+    gets there; a short form goes in its turn too, at its ``short_rank``."""
     width = max(1, width)
     wrapped = [wrap(line, width) for line in lines]
     total = sum(map(len, wrapped))
     if max_rows is not None and total > max_rows:
-        droppable = sorted(((piece.rank, i, j) for i, line in enumerate(lines)
-                            for j, piece in enumerate(line.pieces) if piece.rank),
-                           reverse=True)
+        # (rank, line, piece, 1: dropped or shortened, 0: its short form gone)
+        droppable = sorted([(rank, i, j, stage) for i, line in enumerate(lines)
+                            for j, piece in enumerate(line.pieces)
+                            for rank, stage in ((piece.rank, 1), (piece.short_rank, 0))
+                            if rank and (stage or piece.short)], reverse=True)
         dropped: list[set[int]] = [set() for _ in lines]
+        gone: list[set[int]] = [set() for _ in lines]  # shortened, then gone whole
         best = (total, list(wrapped))
-        for _, i, j in droppable:
-            dropped[i].add(j)
-            wrapped[i] = wrap(lines[i], width, frozenset(dropped[i]))
+        for _, i, j, stage in droppable:
+            (dropped if stage else gone)[i].add(j)
+            wrapped[i] = wrap(lines[i], width, frozenset(dropped[i]), frozenset(gone[i]))
             total = sum(map(len, wrapped))
             if total < best[0]:  # a piece goes only when that saves a row
                 best = (total, list(wrapped))

@@ -29,8 +29,12 @@ SEP = (" │ ", "stats--label")
 #: comes first).
 MAX_ROWS, PANE_ROWS = 4, 3
 #: What goes first when the rows run out (the highest rank; 0 never goes).
-BOUND_RANK, PLAYING_RANK, PEAK_RANK, DONE_RANK, PATH_RANK = 8, 7, 6, 5, 2
-RANKS = {"discarded": 4, "expanded": 3, "generated": 3}
+#: (The frontier's size goes after its peak and the counts of lesser note, before the path:
+#: the frontier's panel says it too.)
+BOUND_RANK, PLAYING_RANK, PEAK_RANK, DONE_RANK, FRONTIER_RANK, PATH_RANK = 9, 8, 7, 6, 3, 2
+#: The step and the nodes expanded are what the lessons count: they never go (rank 0), they
+#: take another row instead.
+RANKS = {"discarded": 5, "generated": 4, "step": 0, "expanded": 0}
 
 
 class Status(NamedTuple):
@@ -67,7 +71,7 @@ def search_status(run: Run | None, name: str, *, in_pane: bool, playing: str = "
             parts = [(f"{count} ", "stats--label"), (value, "stats--value")]
             if count == noun:  # "(peak 8)": the first to go, but for the playing speed
                 short = [parts[0], (value.partition(" (")[0], "stats--value")]
-                status.append(Piece(parts, PEAK_RANK, SEP, short))
+                status.append(Piece(parts, PEAK_RANK, SEP, short, FRONTIER_RANK))
             else:
                 status.append(Piece(parts, RANKS.get(count, 1), SEP))
     if playing:
@@ -90,14 +94,29 @@ def search_status(run: Run | None, name: str, *, in_pane: bool, playing: str = "
 
 
 def lockstep_status(labels: list[str], *, playing: str = "", note: str = "",
-                    sentence: str = "") -> Status:
+                    sentence: str = "", runs: list[Run] | None = None) -> Status:
     """The lines of several searches: their names and the playback, then a note or
-    ``sentence`` (how the lockstep goes)."""
+    ``sentence`` (how the lockstep goes).  ``runs``: the panes have no lines of their own
+    (no room): each search's step and nodes expanded, which the lessons count, are said
+    here, a search a piece."""
     status = [Piece([("compare ", "stats--label"), (" · ".join(labels), "stats--value")])]
     if playing:
         status.append(Piece([(playing, "stats--play")], PLAYING_RANK, SEP))
+    lines = [Line(status)]
+    if runs:
+        lines.append(Line([Piece(_counts(label, run), 0, SEP)
+                           for label, run in zip(labels, runs)]))
     line = [Piece([(note, "stats--note")] if note else [(sentence, "stats--narration")])]
-    return Status([Line(status), Line(line, prose=True)], MAX_ROWS)
+    return Status([*lines, Line(line, prose=True)], MAX_ROWS)
+
+
+def _counts(label: str, run: Run) -> list[tuple[str, str]]:
+    """``BFS step 5/22 expanded 5``: a search's counts that never go."""
+    parts = [(label, "stats--value")]
+    for count, value in status_parts(run):
+        if RANKS.get(count) == 0:
+            parts += [(f" {count} ", "stats--label"), (value, "stats--value")]
+    return parts
 
 
 def playing_text(session: Session) -> str:
@@ -106,14 +125,17 @@ def playing_text(session: Session) -> str:
     return f"▶ playing {speed}" if session.playing else f"speed {speed}"
 
 
-def screen_status(session: Session, width: int) -> Status:
+def screen_status(session: Session, width: int, panes_lines: bool = True) -> Status:
     """The status lines under the panes, ``width`` cells wide: where the panes have lines of
     their own, the lockstep's (the short sentence where the long one would take two lines:
-    the panes need them more); else the run's (and the session's note)."""
+    the panes need them more), with each search's step and nodes expanded when the layout
+    left the panes no room for their lines (``panes_lines`` false); else the run's (and the
+    session's note)."""
     labels = session.labels
     if own_lines(len(labels)):
         return lockstep_status(labels, playing=playing_text(session), note=session.note,
-                               sentence=session.lockstep_sentence(width))
+                               sentence=session.lockstep_sentence(width),
+                               runs=None if panes_lines else session.runs)
     name = get_algorithm(session.contenders[0].algorithm).short  # its heuristic: said after
     return search_status(session.run, name, in_pane=False, playing=playing_text(session),
                          note=session.note, code=session.show_code)

@@ -72,6 +72,7 @@ class PanesScreen(Screen[None]):
         self._stroke: bool | str | None = None
         self._bindings_key: tuple[object, ...] = ()
         self._terrain = session.grid.costs is not None  # what the legend was drawn for
+        self._fitted_lines = (-1, -1)  # the status lines' heights last fitted to
 
     # -- layout ----------------------------------------------------------------------------
     def compose(self) -> ComposeResult:
@@ -123,9 +124,20 @@ class PanesScreen(Screen[None]):
         self.call_after_refresh(self.fit_panes)
 
     def on_stats_height_changed(self, message: Stats.HeightChanged) -> None:
-        """A status line took a row more or less (its text wrapped anew): fit the panes to
-        the room that leaves."""
-        self.call_after_refresh(self.fit_panes)
+        """A status line took a row more or less (its text wrapped anew, or a pane's lines
+        were shown or mounted): fit the panes to the room that leaves."""
+        self.call_after_refresh(self._refit)
+
+    def _lines_measured(self) -> tuple[int, int]:
+        """What the layout reads of the status lines: the panes' own lines' height (0: not
+        laid out yet, reckoned) and the rows the lines under the panes wrapped to."""
+        return (max(pane.stats.outer_size.height for pane in self.panes), self.stats.wrapped)
+
+    def _refit(self) -> None:
+        """Fit the panes again if the status lines' heights are not those they were last
+        fitted to (a pane's lines first laid out: their rows were reckoned)."""
+        if self._lines_measured() != self._fitted_lines:
+            self.fit_panes()
 
     def fit_panes(self, restyle: bool = True) -> None:
         """Fit the panes to the room the other lines leave (:func:`layout.arrange`).  Before
@@ -147,19 +159,23 @@ class PanesScreen(Screen[None]):
             challenge = CHALLENGE_LINES if self.session.exercise is not None else 0
             height = self.size.height - 4 - legend - challenge
         grid = self.session.grid
-        stats = max(pane.stats.outer_size.height for pane in self.panes)
+        self._fitted_lines = self._lines_measured()
+        stats = self._fitted_lines[0]
         arrangement = arrange(len(self.panes), width, height, (grid.width, grid.height),
                               table_height=table_height,
                               fold_trees=self.session.fold_trees and not self.session.show_code,
                               stats_height=stats or PANE_STATS_HEIGHT,
-                              wrapped=self.stats.wrapped, code=self.session.show_code)
+                              wrapped=self._fitted_lines[1], code=self.session.show_code)
         box.styles.grid_size_columns = arrangement.columns
         box.styles.grid_size_rows = arrangement.rows
         if arrangement.table and not table.display:
             table.show(self.session.labels, self.session.runs)  # not kept up while hidden
         table.display = arrangement.table
+        panes_lines = self.panes[0].stats.display
         for pane in self.panes:
             pane.lay_out(arrangement, code=self.session.show_code, restyle=restyle)
+        if arrangement.pane_stats != panes_lines and self.is_mounted:
+            self.present()  # the lines under the panes say the counts the panes' lines did
 
     def _check_size(self, width: int, height: int) -> None:
         for lesson in self.query(".lesson"):
@@ -256,7 +272,8 @@ class PanesScreen(Screen[None]):
         """The status lines (:func:`~tui_search.tui.status_lines.screen_status`) and the key bar:
         all a seek's progress changes."""
         session = self.session
-        status = screen_status(session, self.size.width)
+        status = screen_status(session, self.size.width,
+                               panes_lines=self.panes[0].stats.display)
         self.stats.show(status.lines, status.max_rows)
         runs = session.runs
         key = (not runs, session.at_start(), session.at_end(), session.speed_index,

@@ -62,9 +62,9 @@ class Stats(PartsLines):
         narration; at most ``max_rows`` rows while some piece can go."""
         self.MAX_ROWS = max_rows
         if self.set_lines(lines):
-            status, *rest = lines
-            self.status_text = line_text(status.pieces)
-            self.narration_text = "".join(line_text(line.pieces) for line in rest)
+            *counts, narration = lines
+            self.status_text = " ".join(line_text(line.pieces) for line in counts)
+            self.narration_text = line_text(narration.pieces)
 
     @property
     def wrapped(self) -> int:
@@ -75,7 +75,8 @@ class Stats(PartsLines):
         """The lines took a row more or less: the room around them changed."""
 
     def on_resize(self, event: events.Resize) -> None:
+        # the first height too: a pane's lines shown (or mounted) anew were reckoned, not
+        # measured, by the layout (the screen refits only when the heights differ)
         if event.size.height != self._height:
-            if self._height is not None:
-                self.post_message(self.HeightChanged())
             self._height = event.size.height
+            self.post_message(self.HeightChanged())
