@@ -304,6 +304,7 @@ def main(argv: list[str] | None = None) -> int:
     try:
         parser = build_parser()
         args = parser.parse_args(argv)
+        typed = argparse.Namespace(**vars(args))  # as typed: the checks below fill in defaults
         from tui_search import serve
 
         serve.check_args(args)
@@ -338,7 +339,9 @@ def main(argv: list[str] | None = None) -> int:
         if args.compare:
             contenders_from(args)
         if args.serve:
-            return serve.serve(parser, args, title=path.name if path else app_title(args))
+            # The visitors' apps get the flags as typed: not -a's default, which --exercise and
+            # --compare refuse.
+            return serve.serve(parser, typed, title=path.name if path else app_title(args))
         if args.replay is not None:
             args.replay_read = read_replay(args, grid, path, algorithm_given)
         return run_app(args, grid, path)
