@@ -112,6 +112,8 @@ def test_a_generated_map(tmp_path: Path) -> None:
     (("solved = \"greedy.found and", "solved = \"ucs.found and"), ":6:11",
      "solved: 'ucs' is not one of the exercise's searches (greedy, astar_manhattan)"),
     (("greedy.cost >", "greedy.cost >>"), ":6:67", "solved: expected a number"),
+    (('solved = "', 'solved = "' + "(" * 200), ":6:61", "solved: nested too deeply"),
+    (('solved = "', 'solved = "' + "not " * 2000), ":6:811", "solved: the condition is too long"),
     (("title = ", "title "), ":1:7", "not TOML: Expected '=' after a key"),
     (('searches = ["greedy", ', 'searches = ["nope", '), ":4:12",
      "searches: unknown algorithm 'nope'"),
