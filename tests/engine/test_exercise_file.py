@@ -3,6 +3,7 @@ exercise does not allow."""
 
 from __future__ import annotations
 
+import re
 import sys
 import types
 from pathlib import Path
@@ -140,6 +141,30 @@ def test_a_multi_line_condition_names_the_line_it_is_on(tmp_path: Path) -> None:
     with pytest.raises(MapError) as caught:
         load_exercise(path)
     assert str(caught.value).startswith(f"{path}:8:19: solved: 'astar_manhattan.fund'")
+
+
+@pytest.mark.parametrize(("solved", "points_at"), [
+    (r'"greedy.found\tand\nastar_manhattan.fund > 1"', "fund"),
+    (r'"greedy.found\u0020and \U00000020greedy.fund > 1"', "fund"),
+    (r'"greedy.found and \\ greedy.cost"', "\\\\"),
+    (r'"greedy.found and \"x\""', '\\"x'),
+    ("'greedy.found and\\t greedy.fund > 1'", "\\t greedy"),  # literal: no escapes
+    ('"""\\\n    greedy.found and\\t\\\n  greedy.fund > 1"""', "fund"),
+    ('"""\ngreedy.found\\tand \\\\\n  greedy.cost"""', "\\\\"),
+    ("'''\ngreedy.found and\n  greedy.fund > 1'''", "fund"),
+])
+def test_the_column_counts_the_toml_string_s_escapes(tmp_path: Path, solved: str,
+                                                     points_at: str) -> None:
+    """Each escape (``\\t``, ``\\"``, ``\\u0020``) is one character of the condition but more
+    of the file: the error's line and column are the file's."""
+    text = re.sub(r"(?m)^solved = .*$", lambda _: f"solved = {solved}", GREEDY)
+    path = write(tmp_path, text)
+    with pytest.raises(MapError) as caught:
+        load_exercise(path)
+    m = re.match(rf"{re.escape(str(path))}:(\d+):(\d+): solved: ", str(caught.value))
+    assert m is not None, str(caught.value)
+    line, col = int(m.group(1)), int(m.group(2))
+    assert text.split("\n")[line - 1][col - 1:].startswith(points_at), str(caught.value)
 
 
 def test_python_3_10_reads_exercises_with_tomli(monkeypatch, tmp_path: Path) -> None:
