@@ -167,6 +167,20 @@ def test_the_column_counts_the_toml_string_s_escapes(tmp_path: Path, solved: str
     assert text.split("\n")[line - 1][col - 1:].startswith(points_at), str(caught.value)
 
 
+def test_a_byte_order_mark_is_no_part_of_the_toml(tmp_path: Path) -> None:
+    path = write(tmp_path, "", "bom.toml")
+    path.write_bytes(b"\xef\xbb\xbf" + GREEDY.encode())
+    assert load_exercise(path).title == "Greedy is not optimal"
+
+
+def test_an_exercise_that_is_not_text_says_so(tmp_path: Path) -> None:
+    path = tmp_path / "bad.toml"
+    path.write_bytes(GREEDY.encode().replace(b"Greedy", b"Gr\xffedy"))
+    with pytest.raises(MapError) as caught:
+        load_exercise(path)
+    assert str(caught.value) == f"{path}: not a text file (an exercise is TOML, in UTF-8)"
+
+
 def test_python_3_10_reads_exercises_with_tomli(monkeypatch, tmp_path: Path) -> None:
     """Without ``tomllib`` (Python 3.10) the loader takes ``tomli``, which pyproject.toml
     requires there; a bad file is still one line at its line and column."""

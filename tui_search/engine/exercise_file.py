@@ -226,10 +226,17 @@ def parse_exercise(text: str, path: str, number: int | None = None) -> Exercise:
 
 def load_exercise(path: str | Path, number: int | None = None) -> Exercise:
     """Read the exercise file at ``path``."""
-    from tui_search.engine.mapread import read_text
+    from tui_search.engine.mapread import NOT_TEXT, read_text
 
     where = str(path)
-    return parse_exercise(read_text(where), where, number)
+    try:
+        text = read_text(where)
+    except MapError as exc:
+        if exc.message != NOT_TEXT:
+            raise
+        raise MapError(where, "not a text file (an exercise is TOML, in UTF-8)") from None
+    # A byte order mark (some Windows editors write one) is no part of the TOML.
+    return parse_exercise(text.removeprefix("\ufeff"), where, number)
 
 
 @cache
