@@ -23,7 +23,7 @@ TUTORIAL = MAPS / "tutorial.txt"
 
 
 async def generate_with(pilot, typed: str | None = None) -> tuple[GenerateScreen, str]:
-    """Press m, type ``typed`` (None: keep the suggestion) and enter; back once the prompt
+    """Press ctrl+n, type ``typed`` (None: keep the suggestion) and enter; back once the prompt
     has answered (closed, or an error shown), with the prompt and what it suggested."""
     await pilot.press("ctrl+n")
     prompt = await screen_shown(pilot, GenerateScreen)
