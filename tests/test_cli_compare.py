@@ -6,7 +6,7 @@ import json
 
 import pytest
 
-from tests.helpers import MAPS
+from tests.helpers import MAPS, ROOT
 from tests.test_cli import TUTORIAL, run_cli
 from tui_search.engine.compare import comparison, parse_compare, summary_sentence
 from tui_search.engine.mapfile import load_map
@@ -15,6 +15,8 @@ from tui_search.engine.semantics import Semantics
 
 SOLUTIONS = {1: ["exercise1-bfs-wins.txt", "exercise1-goal-moved.txt"],
              2: ["exercise2-dfs-longer.txt"]}
+
+GREEDY_FILE = ROOT / "tests" / "data" / "exercises" / "greedy-not-optimal.toml"
 
 
 def test_the_compare_json_is_the_single_runs_in_order(capsys) -> None:
@@ -62,7 +64,12 @@ def test_compare_exits_3_when_any_run_gives_up(capsys) -> None:
         (["--compare", "bfs,astar", "--visit", "expand"], "the visit rule does not apply to A*"),
         (["--compare", "bfs,dfs", "-a", "dfs"], "--compare chooses the searches: leave out -a"),
         (["--compare", "bfs,dfs", "--trace", "-"], "--trace is for one search"),
-        (["--compare", "bfs,dfs", "--exercise", "1"], "--compare and --exercise: choose one"),
+        (["--compare", "bfs,dfs", "--exercise", "1"],
+         "--compare and --exercise: choose one (the exercise compares BFS and DFS itself)"),
+        (["--compare", "bfs,dfs", "--exercise", str(GREEDY_FILE)],
+         "--compare and --exercise: choose one (the exercise compares Greedy and A* itself)"),
+        (["--exercise", ""], "--exercise: the name is empty (give 1, 2 or an exercise file)"),
+        (["--exercise", " "], "--exercise: the name is empty"),
         (["--exercise", "1", "--corners", "never"], "leave out --corners"),
         (["--exercise", "2", "--order", "N,W,S,E"], "leave out --order"),
         (["--exercise", "3"], "--exercise 3: the tutorial has exercises 1 and 2"),
@@ -115,7 +122,7 @@ def test_grading_a_search_that_gives_up_is_not_called_no_path(capsys, tmp_path) 
     code, out, _ = run_cli(capsys, str(long), "--headless", "--exercise", "1",
                            "--max-steps", "10")
     assert code == 3 and "no path" not in out
-    assert "not solved — not graded: BFS and DFS gave up at 10 steps" in out
+    assert "exercise 1 not graded — BFS and DFS gave up at 10 steps" in out
     code, out, _ = run_cli(capsys, str(long), "--headless", "--exercise", "1", "--json",
                            "--max-steps", "10")
     assert code == 3 and json.loads(out)[0]["bfs"]["gave_up"] is True

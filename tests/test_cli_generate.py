@@ -75,6 +75,12 @@ def test_a_dangling_link_is_not_followed(capsys, tmp_path: Path) -> None:
     (["--generate", "maze", "some.txt"], "--generate makes the map: leave out MAP"),
     (["--generate", "maze", "--output", "x.txt", "--headless"],
      "--output writes the map and exits: leave out --headless"),
+    (["--generate", "maze", "--output", "x.txt", "--exercise", "1"],
+     "--output writes the map and exits: leave out --exercise"),
+    (["--generate", "maze", "--output", "x.txt", "--compare", "bfs,dfs"],
+     "--output writes the map and exits: leave out --compare"),
+    (["--generate", "maze", "--seed", ""], "--seed is empty: give a number or a word"),
+    (["--generate", "maze", "--size", " "], "--size is empty: give WxH, as 40x20"),
 ])
 def test_bad_input_is_one_line_and_exit_2(capsys, tmp_path: Path, monkeypatch,
                                           argv: list[str], message: str) -> None:

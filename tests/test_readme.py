@@ -27,6 +27,7 @@ from tui_search.tui.app import SearchApp
 README = (ROOT / "README.md").read_text(encoding="utf-8")
 CONSOLE = re.compile(r"^```console\n(.*?)^```$", re.DOTALL | re.MULTILINE)
 BASH = re.compile(r"^```bash\n(.*?)^```$", re.DOTALL | re.MULTILINE)
+SUMMARY = re.compile(r"^(\d+) of (\d+) solved")
 HEAD = re.compile(r"^(.*?)\s*\|\s*head -(\d+)$")
 
 
@@ -57,6 +58,12 @@ EXAMPLES = console_examples(README)
 def expected_exit(shown: list[str]) -> int:
     """The exit code the README's exit-code paragraph promises for what an example shows."""
     first = shown[0]
+    report = SUMMARY.match(shown[-1])
+    if report:  # the class report: 0 when every map is solved
+        return EXIT_FOUND if report.group(1) == report.group(2) else EXIT_NO_PATH
+    if first.startswith("file,verdict,"):  # the class report as CSV
+        solved = all(row.split(",")[1] == "solved" for row in shown[1:])
+        return EXIT_FOUND if solved else EXIT_NO_PATH
     if first.startswith("tui-search:"):
         return EXIT_BAD_INPUT
     if ": no path" in first or '"found": false' in first or first.startswith("step "):

@@ -112,6 +112,31 @@ def test_a_teacher_s_exercise_file_grades_a_class(capsys, tmp_path: Path) -> Non
     assert out.splitlines()[-1] == "0 of 2 solved, 2 not solved"
 
 
+def test_a_map_whose_searches_gave_up_reads_not_graded(capsys, tmp_path: Path) -> None:
+    """One map or several: "not graded — ..." (not "not solved — not graded: ...")."""
+    long = tmp_path / "long.txt"
+    long.write_text("S\n" + ".\n" * 50 + "G\n")
+    code, out, _ = run_cli(capsys, "--exercise", "1", "--headless", "--max-steps", "10",
+                           str(long), str(long))
+    assert code == 1
+    assert out.splitlines()[0] == (f"{long}: not graded — BFS and DFS gave up at 10 steps "
+                                   "before finding the goal (BFS expanded 10 nodes, DFS 10)")
+    assert out.splitlines()[-1] == "0 of 2 solved, 2 not graded"
+
+
+def test_a_condition_naming_no_field_has_no_dash_after_the_verdict(capsys,
+                                                                   tmp_path: Path) -> None:
+    shutil.copy(MAPS / "tutorial.txt", tmp_path / "tutorial.txt")
+    exercise = tmp_path / "always.toml"
+    exercise.write_text(GREEDY.replace(
+        'solved = "greedy.found and astar.found and greedy.cost > astar.cost"', 'solved = "1 < 2"'))
+    maps = [str(tmp_path / "tutorial.txt")] * 2
+    _, one, _ = run_cli(capsys, "--exercise", str(exercise), "--headless", maps[0])
+    _, several, _ = run_cli(capsys, "--exercise", str(exercise), "--headless", *maps)
+    assert one == f"{maps[0]}: exercise always solved\n"
+    assert several.splitlines()[0] == f"{maps[0]}: solved"
+
+
 def test_a_bad_exercise_file_is_bad_input(capsys, tmp_path: Path) -> None:
     exercise = tmp_path / "bad.toml"
     exercise.write_text(GREEDY.replace("greedy.cost >", "greedy.cost > >"))

@@ -40,6 +40,7 @@ TUTORIAL = str(MAPS / "tutorial.txt")
     (["--serve", "--save-dir", "no/such/folder"], "--save-dir 'no/such/folder': not a folder"),
     (["--serve", "--headless", "--compare", "bfs,dfs"], "--headless is for a search without it"),
     (["--serve", "no-such-map.txt"], "no-such-map.txt"),
+    (["--serve", "--replay", "t.jsonl"], "--replay shows one trace beside one search in the app"),
 ])
 def test_nonsense_with_serve_is_one_line_and_exit_2(capsys, argv: list[str], says: str) -> None:
     code, out, err = run_cli(capsys, *argv)
@@ -89,6 +90,40 @@ def test_the_served_apps_get_the_terrain_and_exercise_files_as_absolute_paths(
     app_args = parse(*words)
     assert app_args.terrain == str(tmp_path / "t.txt")
     assert app_args.exercise == (exercise if exercise == "1" else str(tmp_path / exercise))
+
+
+EXERCISE_FILE = str(Path(__file__).parent / "data" / "exercises" / "greedy-not-optimal.toml")
+
+
+@pytest.mark.parametrize("argv", [
+    ["--exercise", "1"], ["--exercise", "2"], ["--exercise", EXERCISE_FILE],
+    ["--compare", "bfs,dfs"], ["--compare", "greedy,astar:manhattan", "--order", "N,E,S,W"],
+    [], ["-a", "dfs"], [TUTORIAL],
+])
+def test_the_served_apps_accept_the_command_line_the_server_gives_them(
+        capsys, monkeypatch, argv: list[str]) -> None:
+    """Through main, as typed: its checks fill in -a's default, which --exercise and --compare
+    refuse; the served app must pass the same checks (the fork server runs check_modes)."""
+    import tui_search.serve
+    from tui_search.cli import check_modes
+
+    started: list[list[str]] = []
+
+    class NoServer:
+        def serve(self) -> None:
+            pass
+
+    def make_server(app_args: list[str], *_a: object, **_k: object) -> NoServer:
+        started.append(app_args)
+        return NoServer()
+
+    monkeypatch.setattr(tui_search.serve, "make_server", make_server)
+    code, _, err = run_cli(capsys, *argv, "--serve", "--theme", "dark")
+    assert (code, err) == (0, ""), err
+    (app_args,) = started
+    served = parse(*app_args)
+    check_modes(served)  # no UsageError
+    assert served.served and served.exercise == (argv[1] if "--exercise" in argv else None)
 
 
 def test_the_web_extra_is_found_without_importing_it() -> None:
@@ -187,6 +222,14 @@ def test_the_page_and_its_websocket_deliver_the_apps_first_screen() -> None:
         _, again = asyncio.run(first_screen(server.url, "Quit"))
         assert "(0,0) START" in again
     assert server.process.wait() == 0  # Ctrl+C stops it cleanly
+
+
+def test_an_exercise_is_served() -> None:
+    """``--exercise 1 --serve``: the visitor's app starts with the exercise (no traceback)."""
+    with served("--exercise", "1") as server:
+        _, screen = asyncio.run(first_screen(server.url, "Exercise 1"))
+        assert "Traceback" not in screen
+    assert server.process.wait() == 0
 
 
 def test_keys_typed_in_the_page_reach_the_served_app_which_will_not_save() -> None:

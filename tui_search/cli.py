@@ -229,9 +229,10 @@ def run_app(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
 def check_modes(args: argparse.Namespace) -> None:
     """Refuse the combinations of --compare, --exercise and the rest that make no sense; then
     resolve ``-a``'s default."""
-    if args.compare and args.exercise:
-        raise UsageError("--compare and --exercise: choose one (an exercise compares BFS "
-                         "and DFS itself)")
+    if args.compare and args.exercise is not None:
+        searches = " and ".join(c.label for _, c in read_exercise(args.exercise).searches)
+        raise UsageError(f"--compare and --exercise: choose one (the exercise compares "
+                         f"{searches} itself)")
     for mode in ("compare", "exercise"):
         if getattr(args, mode) is None:
             continue
@@ -268,6 +269,8 @@ def read_exercise(name: str) -> Exercise:
     """``--exercise``'s exercise: 1, 2 or a file (a bad file: MapError, exit 2)."""
     from tui_search.engine.exercise_file import find_exercise
 
+    if not name.strip():
+        raise UsageError("--exercise: the name is empty (give 1, 2 or an exercise file)")
     try:
         return find_exercise(name)
     except ValueError as exc:
@@ -304,6 +307,7 @@ def main(argv: list[str] | None = None) -> int:
     try:
         parser = build_parser()
         args = parser.parse_args(argv)
+        typed = argparse.Namespace(**vars(args))  # as typed: the checks below fill in defaults
         from tui_search import serve
 
         serve.check_args(args)
@@ -338,7 +342,9 @@ def main(argv: list[str] | None = None) -> int:
         if args.compare:
             contenders_from(args)
         if args.serve:
-            return serve.serve(parser, args, title=path.name if path else app_title(args))
+            # The visitors' apps get the flags as typed: not -a's default, which --exercise and
+            # --compare refuse.
+            return serve.serve(parser, typed, title=path.name if path else app_title(args))
         if args.replay is not None:
             args.replay_read = read_replay(args, grid, path, algorithm_given)
         return run_app(args, grid, path)

@@ -130,12 +130,16 @@ def check_generate(args: argparse.Namespace) -> None:
     if args.map is not None:
         raise UsageError("--generate makes the map: leave out MAP")
     if args.output is not None:
-        for flag in ("headless", "pseudocode", "serve"):
-            if getattr(args, flag, False):
+        for flag in ("headless", "pseudocode", "serve", "exercise", "compare"):
+            if getattr(args, flag, None) not in (None, False):
                 raise UsageError(f"--output writes the map and exits: leave out --{flag}")
+    for flag, what in (("size", "WxH, as 40x20"), ("seed", "a number or a word")):
+        if getattr(args, flag) is not None and not getattr(args, flag).strip():
+            raise UsageError(f"--{flag} is empty: give {what}")
     try:
-        args.recipe = make_recipe(args.generate, args.size or DEFAULT_SIZE,
-                                  args.seed or DEFAULT_SEED)
+        args.recipe = make_recipe(args.generate,
+                                  DEFAULT_SIZE if args.size is None else args.size,
+                                  DEFAULT_SEED if args.seed is None else args.seed)
     except ValueError as exc:
         raise UsageError(f"--generate: {exc}") from None
 

@@ -36,15 +36,20 @@ class Graded(NamedTuple):
         v = self.verdict
         if v is None:
             return f"{self.where}: unreadable — {self.error}"
-        text = (f"{self.where}: {v.said}" if not v.graded
-                else f"{self.where}: {v.status} — {v.said}")
-        return text + (f" (hint: {v.hint})" if v.hint else "")
+        return (f"{self.where}: {v.status}{_dash(v.said)}"
+                + (f" (hint: {v.hint})" if v.hint else ""))
 
     def as_json(self) -> dict[str, object]:
         if self.verdict is None:
             return {"map": self.where, "verdict": "unreadable", "solved": False,
                     "error": self.error}
         return {"map": self.where, **self.verdict.as_json()}
+
+
+def _dash(said: str) -> str:
+    """`` — `` and the verdict's reason with its figures; nothing when it has none (a
+    condition that names no field)."""
+    return f" — {said}" if said else ""
 
 
 def _error_text(exc: MapError) -> str:
@@ -125,8 +130,7 @@ def _print_one(row: Graded) -> None:
     """One map, as before the report: the exercise named, and the hint on its own line."""
     verdict = row.verdict
     assert verdict is not None
-    word = "solved" if verdict.solved else "not solved"
-    print(f"{row.where}: {verdict.exercise.name} {word} — {verdict.said}")
+    print(f"{row.where}: {verdict.exercise.name} {verdict.status}{_dash(verdict.said)}")
     if verdict.hints:
         print(f"  hint: {verdict.hints}")
 

@@ -10,6 +10,8 @@ from hypothesis import strategies as st
 
 from tui_search.engine.condition import (
     FIELDS,
+    MAX_NESTING,
+    MAX_OPERATORS,
     BinOp,
     Compare,
     ConditionError,
@@ -103,11 +105,40 @@ def test_a_number_too_large_to_print_back_is_refused() -> None:
     ("bfs < 2", "'bfs': name a search's field, as in bfs.expanded", 0),
     ("astar:manhattan.cost", "unexpected ':'", 5),
     ("1 and or 2", "expected a number", 6),
+    ("(" * 200 + "1" + ")" * 200, "nested too deeply (at most 50", 50),
+    ("not " * 2000 + "bfs.found", "the condition is too long (at most 200 operators)", 800),
+    ("-" * 2000 + "1 < 2", "the condition is too long", 200),
+    ("-" * 60 + "1 < 2", "nested too deeply", 50),
+    ("not " * 51 + "bfs.found", "nested too deeply", 200),
+    (" + ".join(["1"] * 1200) + " > 0", "the condition is too long", 200 * 4 + 2),
 ])
 def test_errors_say_what_and_where(text: str, message: str, offset: int) -> None:
     with pytest.raises(ConditionError) as caught:
         parse(text)
     assert caught.value.message.startswith(message) and caught.value.offset == offset
+
+
+def test_the_longest_and_deepest_conditions_parse_print_and_evaluate() -> None:
+    """Within the limits nothing needs more than 500 frames: room is left for the stack
+    under it (an app's)."""
+    import inspect
+    import sys
+
+    chain = " + ".join(["bfs.expanded"] * (MAX_OPERATORS - 1)) + " > 0"
+    deep = "(" * MAX_NESTING + "bfs.expanded" + ")" * MAX_NESTING + " > 0"
+    negs = "-" * (MAX_NESTING - 1) + "bfs.expanded == -1"
+
+    def run(depth: int) -> None:
+        if depth:
+            return run(depth - 1)
+        for text in (chain, deep, negs, "not " * MAX_NESTING + "bfs.found"):
+            tree = parse(text)
+            assert parse(unparse(tree)) == tree
+            assert evaluate(tree, {"bfs.expanded": 1, "bfs.found": True}) in (True, False)
+            assert names(tree)
+        return None
+
+    run(sys.getrecursionlimit() - 500 - len(inspect.stack(0)))  # 500 frames left
 
 
 # -- printed back, parsed again: the same tree ------------------------------------------

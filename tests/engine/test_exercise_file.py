@@ -3,6 +3,7 @@ exercise does not allow."""
 
 from __future__ import annotations
 
+import re
 import sys
 import types
 from pathlib import Path
@@ -112,6 +113,8 @@ def test_a_generated_map(tmp_path: Path) -> None:
     (("solved = \"greedy.found and", "solved = \"ucs.found and"), ":6:11",
      "solved: 'ucs' is not one of the exercise's searches (greedy, astar_manhattan)"),
     (("greedy.cost >", "greedy.cost >>"), ":6:67", "solved: expected a number"),
+    (('solved = "', 'solved = "' + "(" * 200), ":6:61", "solved: nested too deeply"),
+    (('solved = "', 'solved = "' + "not " * 2000), ":6:811", "solved: the condition is too long"),
     (("title = ", "title "), ":1:7", "not TOML: Expected '=' after a key"),
     (('searches = ["greedy", ', 'searches = ["nope", '), ":4:12",
      "searches: unknown algorithm 'nope'"),
@@ -138,6 +141,44 @@ def test_a_multi_line_condition_names_the_line_it_is_on(tmp_path: Path) -> None:
     with pytest.raises(MapError) as caught:
         load_exercise(path)
     assert str(caught.value).startswith(f"{path}:8:19: solved: 'astar_manhattan.fund'")
+
+
+@pytest.mark.parametrize(("solved", "points_at"), [
+    (r'"greedy.found\tand\nastar_manhattan.fund > 1"', "fund"),
+    (r'"greedy.found\u0020and \U00000020greedy.fund > 1"', "fund"),
+    (r'"greedy.found and \\ greedy.cost"', "\\\\"),
+    (r'"greedy.found and \"x\""', '\\"x'),
+    ("'greedy.found and\\t greedy.fund > 1'", "\\t greedy"),  # literal: no escapes
+    ('"""\\\n    greedy.found and\\t\\\n  greedy.fund > 1"""', "fund"),
+    ('"""\ngreedy.found\\tand \\\\\n  greedy.cost"""', "\\\\"),
+    ("'''\ngreedy.found and\n  greedy.fund > 1'''", "fund"),
+])
+def test_the_column_counts_the_toml_string_s_escapes(tmp_path: Path, solved: str,
+                                                     points_at: str) -> None:
+    """Each escape (``\\t``, ``\\"``, ``\\u0020``) is one character of the condition but more
+    of the file: the error's line and column are the file's."""
+    text = re.sub(r"(?m)^solved = .*$", lambda _: f"solved = {solved}", GREEDY)
+    path = write(tmp_path, text)
+    with pytest.raises(MapError) as caught:
+        load_exercise(path)
+    m = re.match(rf"{re.escape(str(path))}:(\d+):(\d+): solved: ", str(caught.value))
+    assert m is not None, str(caught.value)
+    line, col = int(m.group(1)), int(m.group(2))
+    assert text.split("\n")[line - 1][col - 1:].startswith(points_at), str(caught.value)
+
+
+def test_a_byte_order_mark_is_no_part_of_the_toml(tmp_path: Path) -> None:
+    path = write(tmp_path, "", "bom.toml")
+    path.write_bytes(b"\xef\xbb\xbf" + GREEDY.encode())
+    assert load_exercise(path).title == "Greedy is not optimal"
+
+
+def test_an_exercise_that_is_not_text_says_so(tmp_path: Path) -> None:
+    path = tmp_path / "bad.toml"
+    path.write_bytes(GREEDY.encode().replace(b"Greedy", b"Gr\xffedy"))
+    with pytest.raises(MapError) as caught:
+        load_exercise(path)
+    assert str(caught.value) == f"{path}: not a text file (an exercise is TOML, in UTF-8)"
 
 
 def test_python_3_10_reads_exercises_with_tomli(monkeypatch, tmp_path: Path) -> None:

@@ -160,3 +160,16 @@ async def test_a_teachers_exercise_fails_an_edit_it_does_not_allow() -> None:
         await wait_until(pilot, lambda: "changed the start" in panel.text)
         assert not panel.verdict.solved
         assert "changed the start, which the exercise does not allow" in panel.text
+
+
+@sync
+async def test_a_map_the_searches_gave_up_on_is_not_graded(tmp_path) -> None:
+    """Under --max-steps the searches give up: "Not graded", never "not solved" or "no path"."""
+    long = tmp_path / "long.txt"
+    long.write_text("S\n" + ".\n" * 50 + "G\n")
+    app = SearchApp(load_map(long), path=long, exercise=1, max_steps=10)
+    async with app.run_test(size=SIZE) as pilot:
+        panel = challenge(app)
+        await wait_until(pilot, lambda: "gave up" in panel.text)
+        assert "Not graded: BFS and DFS gave up at 10 steps" in panel.text
+        assert "not solved" not in panel.text.lower() and "no path" not in panel.text

@@ -4,18 +4,21 @@ keeps a bad recipe open with the reason."""
 
 from __future__ import annotations
 
+import threading
 from pathlib import Path
 
 import pytest
 from textual.widgets import Input
 
-from tests.tui.test_app import MAPS, SIZE, screen_shown, sync, wait_until
+from tests.tui.test_app import MAPS, SIZE, screen_shown, stats, sync, wait_until
 from tests.tui.test_dialogs_fit import assert_fits
 from tests.tui.test_files import answer, copy
-from tui_search.engine.generate import generate, make_recipe
+from tui_search.engine.generate import Recipe, generate, make_recipe
+from tui_search.engine.grid import Grid
 from tui_search.engine.mapfile import load_map
 from tui_search.tui.app import SearchApp
 from tui_search.tui.commands import SearchCommands
+from tui_search.tui.files import GENERATE_AT_ONCE_CELLS
 from tui_search.tui.screens.confirm_quit import ConfirmQuitScreen
 from tui_search.tui.screens.generate_map import GenerateScreen
 
@@ -23,7 +26,7 @@ TUTORIAL = MAPS / "tutorial.txt"
 
 
 async def generate_with(pilot, typed: str | None = None) -> tuple[GenerateScreen, str]:
-    """Press m, type ``typed`` (None: keep the suggestion) and enter; back once the prompt
+    """Press ctrl+n, type ``typed`` (None: keep the suggestion) and enter; back once the prompt
     has answered (closed, or an error shown), with the prompt and what it suggested."""
     await pilot.press("ctrl+n")
     prompt = await screen_shown(pilot, GenerateScreen)
@@ -108,3 +111,53 @@ async def test_the_prompt_fits_with_an_error_shown(size: tuple[int, int]) -> Non
         await assert_fits(pilot, GenerateScreen)
         field = prompt.query_one(Input).region
         assert app.screen.region.intersection(field) == field and field.area
+
+
+def gated(monkeypatch: pytest.MonkeyPatch) -> threading.Event:
+    """The app's generator held until the returned event is set (a big map's thread)."""
+    import tui_search.tui.files
+
+    gate = threading.Event()
+
+    def held(recipe: Recipe) -> Grid:
+        assert gate.wait(10), "the test never let the generator go"
+        return generate(recipe)
+
+    monkeypatch.setattr(tui_search.tui.files, "generate", held)
+    return gate
+
+
+@sync
+async def test_a_big_map_is_generated_in_a_thread_the_app_going_on(monkeypatch) -> None:
+    """kruskal 999x999 takes ~5 s: above GENERATE_AT_ONCE_CELLS the status line says
+    "Generating ...", keys still work, and the map is shown once made."""
+    gate = gated(monkeypatch)
+    side = int(GENERATE_AT_ONCE_CELLS ** 0.5) + 2  # just over: quick to make once let go
+    app = SearchApp(load_map(TUTORIAL))
+    async with app.run_test(size=SIZE) as pilot:
+        await generate_with(pilot, f"kruskal {side}x{side} 4")
+        note = f"Generating kruskal {side}x{side} seed 4…"
+        await wait_until(pilot, lambda: note in stats(app)[1])
+        assert app.session.grid == load_map(TUTORIAL)
+        await pilot.press("n")  # the app answers meanwhile
+        await wait_until(pilot, lambda: app.session.run is not None and app.session.run.k == 1)
+        await wait_until(pilot, lambda: note in stats(app)[1])  # still said
+        gate.set()
+        await wait_until(pilot, lambda: app.session.title == f"kruskal {side}x{side} seed 4")
+        assert app.session.grid == generate(make_recipe("kruskal", f"{side}x{side}", "4"))
+        assert app.main.views[0].grid is app.session.grid and app.session.map_path is None
+        assert "Generating" not in stats(app)[1]
+
+
+@sync
+async def test_an_edit_while_a_big_map_is_made_is_asked_about(monkeypatch) -> None:
+    gate = gated(monkeypatch)
+    app = SearchApp(load_map(TUTORIAL))
+    async with app.run_test(size=SIZE) as pilot:
+        await generate_with(pilot, "maze 401x401 1")
+        await pilot.press("down", "o")
+        await wait_until(pilot, lambda: app.session.dirty)
+        gate.set()
+        await answer(pilot, ConfirmQuitScreen, "n")  # keep the edit: no generated map
+        assert app.session.grid != load_map(TUTORIAL) and app.session.dirty
+        assert app.session.grid.width == load_map(TUTORIAL).width

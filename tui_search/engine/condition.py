@@ -8,6 +8,11 @@ comparisons ``< <= > >= == !=`` (chained as in Python: ``a < b < c``); ``and``, 
 ``not``; parentheses.  The precedence is Python's: ``or`` < ``and`` < ``not`` < comparisons <
 ``+ -`` < ``* /`` < unary ``-``.
 
+A condition is at most :data:`MAX_OPERATORS` operators long and nests at most
+:data:`MAX_NESTING` parentheses and unary operators deep: the parser, :func:`unparse`,
+:func:`evaluate` and :func:`names` recurse, and this keeps them well within Python's recursion
+limit (a longer condition is a :class:`ConditionError`, never a RecursionError).
+
 A figure a search does not have (the moves or cost of a search that found no path) and a
 division by zero are *undefined* (NaN): every comparison with them is false.
 
@@ -24,6 +29,12 @@ from typing import NamedTuple
 #: The fields of a search a condition may name.
 FIELDS = ("found", "moves", "cost", "expanded", "generated", "max_frontier")
 COMPARISONS = ("<=", ">=", "==", "!=", "<", ">")
+#: The most operators (``+ - * / not and or`` and comparisons) a condition may have: a tree of
+#: that depth takes some 2 frames a level to print back.
+MAX_OPERATORS = 200
+#: The most parentheses and unary operators (``not``, ``-``, ``+``) open at once: the parser
+#: takes some 8 frames a parenthesis.
+MAX_NESTING = 50
 
 
 class ConditionError(ValueError):
@@ -107,6 +118,19 @@ class _Parser:
         self.tokens = list(_tokens(text))
         self.i = 0
         self.searches = searches
+        self.depth = 0  # the parentheses and unary operators open
+        operators = [t for t in self.tokens if t.kind == "keyword"
+                     or (t.kind == "op" and t.text not in "()")]
+        if len(operators) > MAX_OPERATORS:
+            raise ConditionError(f"the condition is too long (at most {MAX_OPERATORS} "
+                                 "operators)", operators[MAX_OPERATORS].offset)
+
+    def nested(self, tok: _Token) -> None:
+        """One more parenthesis or unary operator open, ``tok``: too deep is an error."""
+        self.depth += 1
+        if self.depth > MAX_NESTING:
+            raise ConditionError(f"nested too deeply (at most {MAX_NESTING} parentheses and "
+                                 "unary operators inside each other)", tok.offset)
 
     @property
     def tok(self) -> _Token:
@@ -145,8 +169,11 @@ class _Parser:
         return node
 
     def not_expr(self) -> Node:
-        if self.take("not"):
-            return Not(self.not_expr())
+        if (tok := self.take("not")) is not None:
+            self.nested(tok)
+            node = Not(self.not_expr())
+            self.depth -= 1
+            return node
         return self.comparison()
 
     def comparison(self) -> Node:
@@ -171,16 +198,19 @@ class _Parser:
         return node
 
     def unary(self) -> Node:
-        if self.take("-"):
-            return Neg(self.unary())
-        if self.take("+"):
-            return self.unary()
+        if (tok := self.take("-", "+")) is not None:
+            self.nested(tok)
+            node = self.unary()
+            self.depth -= 1
+            return Neg(node) if tok.text == "-" else node
         return self.atom()
 
     def atom(self) -> Node:
         tok = self.tok
         if (opening := self.take("(")) is not None:
+            self.nested(opening)
             node = self.or_expr()
+            self.depth -= 1
             if not self.take(")"):
                 if self.tok.kind == "end":
                     raise ConditionError("'(' is never closed", opening.offset)

@@ -93,23 +93,31 @@ def key_position(text: str, key: str) -> tuple[int | None, int | None]:
 
 
 def _condition_position(text: str, offset: int) -> tuple[int | None, int | None]:
-    """Where character ``offset`` of the ``solved`` string is in the file (a string written
-    without escapes; a multi-line one after its opening quotes and newline)."""
+    """Where character ``offset`` of the ``solved`` string is in the file: through a basic
+    string's escapes (``\\"`` is one character of the value, two of the file), past a
+    multi-line string's first newline and a line-ending backslash's whitespace; a literal
+    string (``'...'``) has no escapes."""
     line, col = key_position(text, "solved")
     if line is None or col is None:
         return None, None
-    rest = text.split("\n")[line - 1][col - 1:]
-    quote = 3 if rest[:3] in ('"""', "'''") else 1
-    if quote == 3 and rest[3:].strip() == "":  # the string starts on the next line
-        line, col, quote = line + 1, 1, 0
-    value_lines = text.split("\n")[line - 1:]
-    before = value_lines[0][col - 1 + quote:]
-    for i, row in enumerate(value_lines):
-        here = before if i == 0 else row
-        if offset <= len(here):
-            return line + i, (col + quote if i == 0 else 1) + offset
-        offset -= len(here) + 1
-    return line, col
+    i = sum(len(row) + 1 for row in text.split("\n")[:line - 1]) + col - 1  # the quote
+    quote = text[i:i + 3] if text[i:i + 3] in ('"""', "'''") else text[i:i + 1]
+    i += len(quote)
+    multi = len(quote) == 3
+    if multi and text[i:i + 1] == "\n":  # the string starts on the next line
+        i += 1
+    while i < len(text):
+        escape = quote[0] == '"' and text[i] == "\\"
+        if escape and multi and text[i + 1:i + 2] in (" ", "\t", "\n"):
+            i += 1  # a line-ending backslash: it and the whitespace after it are no character
+            while i < len(text) and text[i] in " \t\n":
+                i += 1
+            continue
+        if offset == 0:
+            break
+        i += {"u": 6, "U": 10}.get(text[i + 1:i + 2], 2) if escape else 1
+        offset -= 1
+    return text.count("\n", 0, i) + 1, i - (text.rfind("\n", 0, i) + 1) + 1
 
 
 def _toml_error(path: str, exc: Exception) -> MapError:
@@ -218,10 +226,17 @@ def parse_exercise(text: str, path: str, number: int | None = None) -> Exercise:
 
 def load_exercise(path: str | Path, number: int | None = None) -> Exercise:
     """Read the exercise file at ``path``."""
-    from tui_search.engine.mapread import read_text
+    from tui_search.engine.mapread import NOT_TEXT, read_text
 
     where = str(path)
-    return parse_exercise(read_text(where), where, number)
+    try:
+        text = read_text(where)
+    except MapError as exc:
+        if exc.message != NOT_TEXT:
+            raise
+        raise MapError(where, "not a text file (an exercise is TOML, in UTF-8)") from None
+    # A byte order mark (some Windows editors write one) is no part of the TOML.
+    return parse_exercise(text.removeprefix("\ufeff"), where, number)
 
 
 @cache

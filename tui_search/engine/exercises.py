@@ -155,7 +155,7 @@ def grade(exercise: Exercise, grid: Grid, max_steps: int = MAX_STEPS) -> Verdict
     expanded = figure_phrase("expanded", labelled)
     quitters = [label for label, out in labelled if out.gave_up]
     if quitters:  # not "no path": the map may well have one, further than the steps allowed
-        return Verdict(exercise, False, f"not graded: {' and '.join(quitters)} gave up at "
+        return Verdict(exercise, False, f"{' and '.join(quitters)} gave up at "
                        f"{max_steps:,} steps before finding the goal ({expanded})",
                        tuple(runs), figures, graded=False)
     solved = bool(evaluate(exercise.condition, figures))

@@ -25,6 +25,7 @@ from tui_search.engine.mapsource import FileStamp, Lines
 __all__ = [
     "MAX_DIGITS",
     "MAX_MAP_BYTES",
+    "NOT_TEXT",
     "NUMBER",
     "MapError",
     "block_table",
@@ -96,6 +97,10 @@ def quoted(text: str, limit: int = 40) -> str:
     return repr(text)
 
 
+#: A file with a NUL or bytes that are not UTF-8.
+NOT_TEXT = "binary file, not a text map"
+
+
 def read_text(path: str) -> str:
     """The file's text, or a MapError saying why it cannot be a map (see :func:`read_map_file`)."""
     return read_map_file(path)[0]
@@ -110,11 +115,11 @@ def read_map_file(path: str) -> tuple[str, FileStamp]:
     """
     data, st = _read_regular(path)
     if b"\x00" in data:
-        raise MapError(path, "binary file, not a text map")
+        raise MapError(path, NOT_TEXT)
     try:
         text = data.decode("utf-8")
     except UnicodeDecodeError:
-        raise MapError(path, "binary file, not a text map") from None
+        raise MapError(path, NOT_TEXT) from None
     return text, stamp_of(path, data, st)
 
 

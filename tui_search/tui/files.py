@@ -51,6 +51,9 @@ if TYPE_CHECKING:
 # app's start-up time for nothing.
 
 NO_ENDPOINTS_IN_MAP = "MovingAI format: the start and goal are not part of a .map file"
+#: A generated map of more cells is made in a thread (kruskal 999x999 takes some 5 s), the
+#: status line saying "Generating ..." meanwhile; a smaller one at once (under ~0.2 s).
+GENERATE_AT_ONCE_CELLS = 40_000
 
 
 class Host(Protocol):
@@ -67,6 +70,9 @@ class Host(Protocol):
 
     def show_map(self) -> None:
         """Show the session's map anew (after a new map or a save)."""
+
+    def show_status(self) -> None:
+        """Show the status lines anew (the session's note changed)."""
 
 
 class FileCommands:
@@ -280,9 +286,45 @@ class FileCommands:
 
         def chosen(recipe: Recipe | None) -> None:
             if recipe is not None:
-                self.confirm_discard(
-                    lambda: self._use_map(generate(recipe), None, recipe.title),
-                    generating(recipe.title))
+                self.confirm_discard(lambda: self._generate(recipe), generating(recipe.title))
 
         self.push_screen(GenerateScreen(f"{nxt.spec} {nxt.width}x{nxt.height} {nxt.seed}"),
                          chosen)
+
+    def _generate(self, recipe: Recipe) -> None:
+        """Show ``recipe``'s map: made at once when small, else in a thread, the UI going on
+        meanwhile (a later ctrl+n's map replaces this one's)."""
+        if recipe.width * recipe.height <= GENERATE_AT_ONCE_CELLS:
+            self._use_map(generate(recipe), None, recipe.title)
+            return
+        from textual.worker import get_current_worker
+
+        session = self.host.session
+        session.note = generating_note(recipe)
+        self.host.show_status()
+        app = self.host.app
+
+        def work() -> None:
+            grid = generate(recipe)
+            if not get_current_worker().is_cancelled:
+                app.call_from_thread(self._generated, recipe, grid)
+
+        app.run_worker(work, thread=True, exclusive=True, group="generate")
+
+    def _generated(self, recipe: Recipe, grid: Grid) -> None:
+        """(Back from the thread.)  Show the generated map -- asking first, should the map
+        have been edited meanwhile."""
+        from tui_search.tui.screens.confirm_quit import generating
+
+        session = self.host.session
+        if session.note == generating_note(recipe):
+            session.note = ""
+            self.host.show_status()
+        self.confirm_discard(lambda: self._use_map(grid, None, recipe.title),
+                             generating(recipe.title))
+
+
+def generating_note(recipe: Recipe) -> str:
+    """The status line while ``recipe``'s map is made in a thread."""
+    return f"Generating {recipe.title}…"
+

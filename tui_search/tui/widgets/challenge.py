@@ -62,6 +62,8 @@ class ChallengePanel(Static):
         else:
             if verdict.solved:
                 out.append("Solved ✓ ", style("challenge--solved"))
+            elif not verdict.graded:
+                out.append("Not graded: ", style("challenge--unsolved"))
             elif before:
                 out.append("Not solved any more: ", style("challenge--unsolved"))
             else:
