@@ -126,6 +126,12 @@ class Run:
         """When the goal is tested, ``"generate"`` or ``"expand"`` (the one in force)."""
         return self._recording.problem.goal_test
 
+    @property
+    def replayed(self) -> bool:
+        """Do the run's steps come from a source (a replayed trace), not from its rules?  Its
+        rules are then the matched search's, which the trace never declared."""
+        return self._recording.source is not None
+
     def differences(self) -> list[str]:
         """What the status line says of the run's rules, a few words each: how they differ
         from the defaults ("moves N,W,S,E", "visit on expand"), or for a run from a source
