@@ -183,7 +183,7 @@ def diagnose(trace: Trace, grid: Grid, max_steps: int | None = None) -> Diagnosi
     limit = 4 * len(trace.steps) + 64  # a search that gives up (max_steps) stops there too
     if max_steps is not None:
         limit = min(limit, max_steps)
-    scored: list[tuple[int, bool, int, str, Semantics]] = []
+    scored: list[tuple[int, bool, bool, int, str, Semantics]] = []
     tried = 0
     goal = trace.goal or grid.goal
     orders = inferred_orders(trace)
@@ -209,36 +209,72 @@ def diagnose(trace: Trace, grid: Grid, max_steps: int | None = None) -> Diagnosi
         # higher) h first: the trace is that search with another tie rule.  (Other ties --
         # uniform-cost's g wherever moves cost alike, any entry of equal priority -- say
         # little, and keep the plainest first.)
+        # Of those that tie alike, the heuristic exact for the moves the trace made (Manhattan
+        # for four moves, octile for eight): the one a student's A* would use.
         tie = verdict.difference is not None and verdict.difference.tie == "h"
-        scored.append((-verdict.matched, not tie, i, key, sem))
+        scored.append((-verdict.matched, not tie, not (tie and _fits(sem)), i, key, sem))
     # A recursive DFS is listed when its pattern is seen: when it matches longer than every
     # search of the registry (else it would crowd out the searches the trace is nearer).
-    stack = max(-m for m, _, _, key, _ in scored if key == "dfs")
+    stack = max(-m for m, _, _, _, key, _ in scored if key == "dfs")
     longest = -min(m for m, *_ in scored)
     mirror = mirrored(trace)
     for i, sem in enumerate(_recursive_candidates(mirror), len(scored)):
         tried += 1
         verdict = check_trace(mirror, grid, "dfs", sem, max_steps=limit, look_ahead=0)
         if verdict.matched > longest:
-            scored.append((-verdict.matched, True, i, RECURSIVE, sem))
+            scored.append((-verdict.matched, True, True, i, RECURSIVE, sem))
     scored.sort()
+    picked = _listed(scored)
     best: list[Verdict] = []
-    seen: set[str] = set()
-    for _, _, _, key, sem in scored:
-        if key in seen:
-            continue
-        seen.add(key)
+    for key, sem in picked:
         if key == RECURSIVE:
             verdict = check_trace(mirror, grid, "dfs", sem, max_steps=limit)
             best.append(replace(verdict, label=recursive_label(sem)))
         else:
             best.append(check_trace(trace, grid, key, sem, max_steps=limit))
-        if len(best) == BEST:
-            break
     notes = order_notes(orders)
     if best[0].label:
         notes.append(f"no stack DFS explains it past step {stack}; a recursive DFS does")
     return Diagnosis(best, tried, tuple(notes))
+
+
+#: Listed together when either comes first: greedy best-first can match a trace longer than
+#: A* does (an A* with another tie rule), and A* longer than greedy.
+BEST_FIRST = ("greedy", "astar")
+
+
+def _fits(sem: Semantics) -> bool:
+    """Is ``sem``'s heuristic the exact distance for its moves (Manhattan for four straight
+    moves, octile with diagonals)?"""
+    straight = set(sem.order) <= {"N", "E", "S", "W"}
+    return sem.heuristic == ("manhattan" if straight else "octile")
+
+
+def _listed(scored: list[tuple[int, bool, bool, int, str, Semantics]]
+            ) -> list[tuple[str, Semantics]]:
+    """The :data:`BEST` candidates listed, from ``scored`` (sorted, best first): the best of
+    each algorithm; when greedy best-first or A* comes first, or A* parted at a tie of f on
+    h (the trace is an A* with another tie rule), the best of both (the one missing takes
+    the last place)."""
+    picked: list[tuple[str, Semantics]] = []
+    best_of: dict[str, Semantics] = {}
+    h_tie = False
+    for _, no_tie, _, _, key, sem in scored:
+        if key not in best_of:
+            best_of[key] = sem
+            h_tie |= key == "astar" and not no_tie
+            if len(picked) < BEST:
+                picked.append((key, sem))
+    keys = [key for key, _ in picked]
+    if keys and (keys[0] in BEST_FIRST or h_tie):
+        for other in BEST_FIRST:
+            if other in keys or other not in best_of:
+                continue
+            if len(picked) == BEST:  # drop the last that is neither the first nor of the two
+                del picked[max(i for i, (key, _) in enumerate(picked)
+                               if i and key not in BEST_FIRST)]
+            picked.append((other, best_of[other]))
+    return picked
 
 
 #: The key a recursive DFS is scored under (not a registry algorithm: a stack DFS run on the
