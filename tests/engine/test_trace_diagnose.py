@@ -156,5 +156,14 @@ def test_a_recursive_dfs_is_recognised() -> None:
     lines = diagnosis_of(dfs_recursive(ROWS, "S,E,N,W"))
     assert lines[0] == ("your trace is a recursive DFS (order S,E,N; goal test on expand), for "
                         "all 12 steps")
-    assert any(line.startswith("  note: no stack DFS explains it past step ")
-               and line.endswith("; a recursive DFS does") for line in lines)
+    # Where the stack DFS parts, in the words.
+    assert ("  next: DFS (order S,E,N; visit on generate; goal test on generate) up to step 1; "
+            "then your trace expands (0,1), which no stack order explains (a recursive DFS "
+            "does)") in lines
+
+
+def test_a_trace_that_parts_at_step_1_says_from_step_1() -> None:
+    lines = diagnosis_of('{"node": [0, 0], "successors": [[1, 0], [1, 0]]}\n')
+    assert lines[:2] == ["closest:", ("  BFS (order E; visit on generate; goal test on "
+                                      "generate) from step 1: your trace added (1,0) twice")]
+    assert not any("step 0" in line for line in lines)
