@@ -4,6 +4,10 @@ jumps there and back."""
 
 from __future__ import annotations
 
+import subprocess
+import sys
+from pathlib import Path
+
 from tests.engine.student_searches import bfs, dfs_recursive
 from tests.helpers import TUTORIAL, TUTORIAL_ROWS
 from tests.tui.test_app import sync, wait_until
@@ -150,3 +154,21 @@ def test_a_trace_that_stops_with_cells_left_does_not_say_its_frontier_is_empty()
     assert said.endswith(f"It stops here, {ours.now.frontier_len()} still on the frontier: "
                          "no path found")
     assert "empty" not in said and "block" not in said
+
+
+def test_the_readme_examples_replay_names_no_moves_at_its_end() -> None:
+    """The README's example (examples/student_bfs.py on maps/tutorial.txt) finds no path: at
+    its end the trace's pane says its frontier is empty, not that moves block the way -- the
+    trace declared none (the moves are the matched search's, inferred).  The search beside
+    it keeps its reason: those are its own rules."""
+    example = Path(__file__).resolve().parents[2] / "examples" / "student_bfs.py"
+    done = subprocess.run([sys.executable, str(example), TUTORIAL], capture_output=True,
+                          text=True, check=True, timeout=60)
+    grid = load_map(TUTORIAL)
+    ours, theirs = replay_of(read_trace(done.stdout, grid, "trace.jsonl"), grid, None,
+                             Semantics()).runs(grid)
+    for run in (ours, theirs):
+        run.advance()
+        run.goto(run.total)
+    assert narrate(ours).endswith(". Frontier empty: no path")
+    assert "block" in narrate(theirs)

@@ -62,11 +62,13 @@ class Recording:
     """
 
     def __init__(self, grid: Grid, algorithm: str, semantics: Semantics, max_steps: int,
-                 source: Source | None = None) -> None:
+                 source: Source | None = None, first_chunk: int = CHUNK) -> None:
         """Record ``grid`` (copied) searched with ``algorithm`` (its key) under ``semantics``,
         up to ``max_steps`` expansions (a :class:`~tui_search.engine.run.Run` gives the
         defaults); ``source``: the steps come from its loop instead, and ``algorithm`` is
-        its description's key."""
+        its description's key.  ``first_chunk``: the steps recorded at first (a check that
+        may stop at step 1 asks for few); a loop that takes a chunk's size doubles it from
+        there up to :data:`CHUNK`, the others pause every ``first_chunk`` steps."""
         self.algo = algo = get_algorithm(algorithm) if source is None else source.algo
         self.source = source
         semantics.check(algo)
@@ -79,11 +81,12 @@ class Recording:
         #: The raw record: read by the run's parts (tree, position) and by checks, never the app.
         self.rec = Record()
         self.max_steps = max_steps
+        self._chunk = min(first_chunk, CHUNK)  # the next chunk's steps, doubling to CHUNK
         # The loops are generator functions: close() ends one that gives up.  The compiled
         # core's takes the steps a chunk may run (sent: None for its own); the others ignore it.
         loop = loop_for(algo, semantics) if source is None else source.loop
         self._loop = cast(Generator[int, int | None, None],
-                          loop(self.problem, self.rec, min(CHUNK, max_steps)))
+                          loop(self.problem, self.rec, min(self._chunk, max_steps)))
         self._peak = PeakTable(self.rec, self.iteration_of)
         self._advance_once()  # records the start (and the answer, when start == goal)
 
@@ -98,6 +101,7 @@ class Recording:
                 pass
             if rec.steps > self.max_steps or (not rec.done and rec.steps == self.max_steps):
                 self._give_up()
+            self._chunk = min(CHUNK, 2 * self._chunk)
             self._peak.extend(rec.steps)  # kept as it is recorded: the end costs no scan
 
     def _give_up(self) -> None:
@@ -131,7 +135,7 @@ class Recording:
         rec = self.rec
         target = self.max_steps if until_step is None else min(until_step, self.max_steps)
         while not rec.done and (until_step is None or rec.steps < until_step):
-            self._advance_once(max(CHUNK, target - rec.steps) if rec.steps < target else None)
+            self._advance_once(max(self._chunk, target - rec.steps) if rec.steps < target else None)
         return rec.done
 
     def advance_some(self) -> bool:

@@ -22,6 +22,7 @@ from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.outcome import Outcome
 from tui_search.engine.position import Position
 from tui_search.engine.queries import EventTree
+from tui_search.engine.record import CHUNK
 from tui_search.engine.recording import MAX_STEPS, Recording, Source, Step
 from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
 
@@ -61,13 +62,16 @@ class Run:
         semantics: Semantics = DEFAULT_SEMANTICS,
         max_steps: int = MAX_STEPS,
         source: Source | None = None,
+        first_chunk: int = CHUNK,
     ) -> None:
         """Search ``grid`` (copied) with ``algorithm`` (a key of the algorithm table) under
         ``semantics``, giving up after ``max_steps`` expansions.  ``source``: take the steps
         from its loop instead (a replayed trace, :func:`~tui_search.engine.trace_run.
-        trace_run`), a run like any other to every query."""
+        trace_run`), a run like any other to every query.  ``first_chunk``: the steps
+        recorded at first (:class:`~tui_search.engine.recording.Recording`'s)."""
         # The loop and the raw record: the engine's own checks reach it by recording_of(run).
-        self._recording = recording = Recording(grid, algorithm, semantics, max_steps, source)
+        self._recording = recording = Recording(grid, algorithm, semantics, max_steps, source,
+                                                   first_chunk)
         self._rec = recording.rec  # the same record as long as the recording lives
         self._tree = tree = EventTree(recording)
         self._position = position = Position(recording, tree)
@@ -121,6 +125,12 @@ class Run:
     def goal_test(self) -> str:
         """When the goal is tested, ``"generate"`` or ``"expand"`` (the one in force)."""
         return self._recording.problem.goal_test
+
+    @property
+    def replayed(self) -> bool:
+        """Do the run's steps come from a source (a replayed trace), not from its rules?  Its
+        rules are then the matched search's, which the trace never declared."""
+        return self._recording.source is not None
 
     def differences(self) -> list[str]:
         """What the status line says of the run's rules, a few words each: how they differ

@@ -21,6 +21,9 @@ from tui_search.engine.trace_read import Trace, TraceStep, show
 
 #: How far ahead the check looks for the step at which the reference expands a cell.
 LOOK_AHEAD = 100_000
+#: The steps a check records at first (then twice as many each time, for the compiled core):
+#: most candidates a diagnosis tries part from the trace within a few steps.
+FIRST_CHUNK = 32
 
 
 def choices_text(algo: Algorithm, semantics: Semantics) -> str:
@@ -283,7 +286,8 @@ def check_trace(trace: Trace, grid: Grid, algorithm: str, semantics: Semantics,
     (``look_ahead``: how many of the search's steps to look through for the step at which it
     would expand the cell the trace took instead; 0 leaves that out)."""
     limit = max_steps if max_steps is not None else 4 * len(trace.steps) + LOOK_AHEAD
-    return _Checker(trace, Run(grid, algorithm, semantics, limit), look_ahead).check()
+    return _Checker(trace, Run(grid, algorithm, semantics, limit, first_chunk=FIRST_CHUNK),
+                    look_ahead).check()
 
 
 __all__ = ["Difference", "Verdict", "check_trace", "choices_text"]

@@ -18,7 +18,7 @@ from tui_search.engine.grid import DELTAS, Cell, Grid
 from tui_search.engine.heuristics import DEFAULT_HEURISTIC, HEURISTICS
 from tui_search.engine.semantics import CORNER_RULES, Semantics
 from tui_search.engine.trace_check import Verdict, check_trace
-from tui_search.engine.trace_read import Trace
+from tui_search.engine.trace_read import Trace, show
 
 #: The most move orders tried when the trace leaves their order open.
 MAX_ORDERS = 24
@@ -155,20 +155,41 @@ class Diagnosis:
                 elif v.matched == v.steps:
                     lines.append(f"  next: {v.choices}, all {v.steps} steps, but it does not "
                                  "stop there")
+                elif self._no_stack_order(v):
+                    lines.append(f"  next: {v.choices}{self._parted(v)}")
                 else:
                     assert v.difference is not None
                     tie = (f", where {get_algorithm(v.algorithm).priority_name} ties"
                            if v.difference.tie else "")
-                    lines.append(f"  next: {v.choices} up to step {v.matched}{tie}")
+                    span = (f"up to step {v.matched}" if v.matched
+                            else "differs from step 1")
+                    lines.append(f"  next: {v.choices} {span}{tie}")
         else:
             lines.append("closest:")
-            for v in self.best:
-                assert v.difference is not None
-                lines.append(f"  {v.choices} up to step {v.matched}; then "
-                             f"{v.difference.message}")
+            lines += [f"  {v.choices}{self._parted(v)}" for v in self.best]
         lines += [f"  note: {note}" for note in self.notes]
         lines.append(f"  ({self.tried} searches and choices tried)")
         return "\n".join(lines)
+
+    def _no_stack_order(self, v: Verdict) -> bool:
+        """Is ``v`` a stack DFS listed under a recursive DFS that matches longer?"""
+        return (v.algorithm == "dfs" and not v.label and bool(self.best[0].label)
+                and v.difference is not None and v.difference.kind == "expand"
+                and v.difference.got is not None)
+
+    def _parted(self, v: Verdict) -> str:
+        """Where ``v`` parts from the trace: " up to step 12; then step 13: ...", " from step
+        1: ..." when it parts at once; for a stack DFS under a recursive one, the issue's
+        words: "...; then your trace expands (4,1), which no stack order explains (a
+        recursive DFS does)"."""
+        d = v.difference
+        assert d is not None
+        if self._no_stack_order(v):
+            assert d.got is not None
+            then = (f"your trace expands {show(d.got)}, which no stack order explains (a "
+                    "recursive DFS does)")
+            return f" up to step {v.matched}; then {then}" if v.matched else f" from {then}"
+        return f" up to step {v.matched}; then {d.message}" if v.matched else f" from {d.message}"
 
     def as_json(self) -> dict[str, object]:
         return {"verdict": "match" if self.matches else "closest", "tried": self.tried,
@@ -183,7 +204,7 @@ def diagnose(trace: Trace, grid: Grid, max_steps: int | None = None) -> Diagnosi
     limit = 4 * len(trace.steps) + 64  # a search that gives up (max_steps) stops there too
     if max_steps is not None:
         limit = min(limit, max_steps)
-    scored: list[tuple[int, bool, int, str, Semantics]] = []
+    scored: list[tuple[int, bool, bool, int, str, Semantics]] = []
     tried = 0
     goal = trace.goal or grid.goal
     orders = inferred_orders(trace)
@@ -209,36 +230,73 @@ def diagnose(trace: Trace, grid: Grid, max_steps: int | None = None) -> Diagnosi
         # higher) h first: the trace is that search with another tie rule.  (Other ties --
         # uniform-cost's g wherever moves cost alike, any entry of equal priority -- say
         # little, and keep the plainest first.)
+        # Of those that tie alike, the heuristic exact for the moves the trace made (Manhattan
+        # for four moves, octile for eight): the one a student's A* would use.
         tie = verdict.difference is not None and verdict.difference.tie == "h"
-        scored.append((-verdict.matched, not tie, i, key, sem))
+        scored.append((-verdict.matched, not tie, not (tie and _fits(sem)), i, key, sem))
     # A recursive DFS is listed when its pattern is seen: when it matches longer than every
     # search of the registry (else it would crowd out the searches the trace is nearer).
-    stack = max(-m for m, _, _, key, _ in scored if key == "dfs")
     longest = -min(m for m, *_ in scored)
     mirror = mirrored(trace)
     for i, sem in enumerate(_recursive_candidates(mirror), len(scored)):
         tried += 1
         verdict = check_trace(mirror, grid, "dfs", sem, max_steps=limit, look_ahead=0)
         if verdict.matched > longest:
-            scored.append((-verdict.matched, True, i, RECURSIVE, sem))
+            scored.append((-verdict.matched, True, True, i, RECURSIVE, sem))
     scored.sort()
+    picked = _listed(scored)
     best: list[Verdict] = []
-    seen: set[str] = set()
-    for _, _, _, key, sem in scored:
-        if key in seen:
-            continue
-        seen.add(key)
+    for key, sem in picked:
         if key == RECURSIVE:
             verdict = check_trace(mirror, grid, "dfs", sem, max_steps=limit)
             best.append(replace(verdict, label=recursive_label(sem)))
         else:
             best.append(check_trace(trace, grid, key, sem, max_steps=limit))
-        if len(best) == BEST:
-            break
-    notes = order_notes(orders)
-    if best[0].label:
-        notes.append(f"no stack DFS explains it past step {stack}; a recursive DFS does")
-    return Diagnosis(best, tried, tuple(notes))
+    return Diagnosis(best, tried, tuple(order_notes(orders)))
+
+
+#: Listed together when either comes first: greedy best-first can match a trace longer than
+#: A* does (an A* with another tie rule), and A* longer than greedy.
+BEST_FIRST = ("greedy", "astar")
+
+
+def _fits(sem: Semantics) -> bool:
+    """Is ``sem``'s heuristic the exact distance for its moves (Manhattan for four straight
+    moves, octile with diagonals)?"""
+    straight = set(sem.order) <= {"N", "E", "S", "W"}
+    return sem.heuristic == ("manhattan" if straight else "octile")
+
+
+def _listed(scored: list[tuple[int, bool, bool, int, str, Semantics]]
+            ) -> list[tuple[str, Semantics]]:
+    """The :data:`BEST` candidates listed, from ``scored`` (sorted, best first): the best of
+    each algorithm; when greedy best-first or A* comes first, or A* parted at a tie of f on
+    h (the trace is an A* with another tie rule), the best of both; when a recursive DFS comes
+    first, the best stack DFS too (the one missing takes the last place)."""
+    picked: list[tuple[str, Semantics]] = []
+    best_of: dict[str, Semantics] = {}
+    h_tie = False
+    for _, no_tie, _, _, key, sem in scored:
+        if key not in best_of:
+            best_of[key] = sem
+            h_tie |= key == "astar" and not no_tie
+            if len(picked) < BEST:
+                picked.append((key, sem))
+    keys = [key for key, _ in picked]
+    wanted: list[str] = []
+    if keys and keys[0] == RECURSIVE:
+        wanted.append("dfs")  # where the stack DFS parts: "which no stack order explains"
+    elif keys and (keys[0] in BEST_FIRST or h_tie):
+        wanted += BEST_FIRST
+    for other in wanted:
+        if other in keys or other not in best_of:
+            continue
+        if len(picked) == BEST:  # drop the last that is neither the first nor wanted
+            del picked[max(i for i, (key, _) in enumerate(picked)
+                           if i and key not in wanted)]
+        picked.append((other, best_of[other]))
+        keys = [key for key, _ in picked]
+    return picked
 
 
 #: The key a recursive DFS is scored under (not a registry algorithm: a stack DFS run on the

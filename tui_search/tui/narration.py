@@ -181,8 +181,9 @@ BLOCKED_BY_CELLS = 300_000
 
 def blocked_by(run: Run) -> str | None:
     """The rule that left the map without a path, if one did (searched once per run, on
-    maps of at most :data:`BLOCKED_BY_CELLS` cells: the app must not freeze to say it)."""
-    if run.semantics.is_default or run.grid.width * run.grid.height > BLOCKED_BY_CELLS:
+    maps of at most :data:`BLOCKED_BY_CELLS` cells: the app must not freeze to say it).  Never
+    for a replayed trace: its rules are the matched search's, not ones the trace declared."""
+    if run.replayed or run.semantics.is_default or run.grid.width * run.grid.height > BLOCKED_BY_CELLS:
         return None
     if run not in _BLOCKED:
         _BLOCKED[run] = blocking_rule(run.grid, run.semantics)

@@ -32,7 +32,7 @@ from struct import pack
 from tui_search.engine import heuristics
 from tui_search.engine.grid import DELTAS, SQRT2
 from tui_search.engine.heuristics import CHEAPER_BY, heuristic_for
-from tui_search.engine.loops.tree import _on_path
+from tui_search.engine.loops.tree import Path
 from tui_search.engine.problem import Problem
 from tui_search.engine.record import CHUNK, Record
 
@@ -210,7 +210,8 @@ def best_first_tree(problem: Problem, rec: Record, chunk: int = CHUNK, priority:
     gen_node, step_end = rec.gen_node, rec.step_end
     rec.step_exp = step_exp = array("i", [-1])
     rec.step_g = step_g = array("d", [0.0])
-    parent = array("i", [-1])
+    path = Path(len(walls), gen_node)  # the node's own path, for "on the path"
+    path.add(-1)
     gen_node.append(start)
     if test_on_push and start == goal:
         rec.goal_gen, rec.done = 0, True
@@ -226,16 +227,17 @@ def best_first_tree(problem: Problem, rec: Record, chunk: int = CHUNK, priority:
             step_end.append(len(gen_node))
             rec.goal_gen, rec.done = e, True
             return
+        on_path = path.move_to(e)
         for off, cost, side_a, side_b in moves:
             m = n + off
             if walls[m] or side_a and walls[n + side_a] + walls[n + side_b] >= refused:
                 continue
-            if _on_path(m, e, gen_node, parent):
+            if on_path[m]:
                 continue
             ng = g + (cost if terrain is None else cost * terrain[m])
             heapq.heappush(heap, (key(ng, m), len(gen_node), m, ng))
             gen_node.append(m)
-            parent.append(e)
+            path.add(e)
             if test_on_push and m == goal:
                 step_end.append(len(gen_node))
                 rec.goal_gen, rec.done = len(gen_node) - 1, True

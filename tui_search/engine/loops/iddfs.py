@@ -11,7 +11,7 @@ from __future__ import annotations
 from array import array
 from collections.abc import Iterator
 
-from tui_search.engine.loops.tree import _on_path
+from tui_search.engine.loops.tree import Path
 from tui_search.engine.problem import Problem
 from tui_search.engine.record import CHUNK, Record
 
@@ -33,7 +33,7 @@ def iddfs(problem: Problem, rec: Record, chunk: int = CHUNK) -> Iterator[int]:
     gen_node = rec.gen_node
     rec.gen_depth = gen_depth = array("i")
     rec.step_exp = array("i", [-1])
-    parent = array("i")  # tree search: event -> the event it was generated from
+    path = Path(len(walls), gen_node)  # tree search: the node's own path, for "on the path"
     add, add_depth = gen_node.append, gen_depth.append
     add_exp, add_end = rec.step_exp.append, rec.step_end.append
     start = problem.start
@@ -49,7 +49,7 @@ def iddfs(problem: Problem, rec: Record, chunk: int = CHUNK) -> Iterator[int]:
         add(start)
         add_depth(0)
         if tree:
-            parent.append(-1)
+            path.add(-1)
         if test_on_push and start == goal:
             rec.goal_gen, rec.done = root, True
             return
@@ -69,14 +69,15 @@ def iddfs(problem: Problem, rec: Record, chunk: int = CHUNK) -> Iterator[int]:
                 cut_off = True
             else:
                 child_depth = depth + 1
+                on_path = path.move_to(g) if tree else None
                 for off in moves[mask[n]]:
                     m = n + off
                     if walls[m]:
                         continue
-                    if tree:
-                        if _on_path(m, g, gen_node, parent):
+                    if on_path is not None:
+                        if on_path[m]:
                             continue
-                        parent.append(g)
+                        path.add(g)
                     elif best.get(m, limit + 1) <= child_depth:
                         continue
                     else:
