@@ -25,6 +25,7 @@ from tui_search.engine.mapread import MapError
 from tui_search.engine.run import MAX_STEPS
 from tui_search.engine.semantics import CORNER_RULES, GOAL_TESTS, VISIT_RULES
 from tui_search.flags import (
+    EXIT_BAD_INPUT,
     TUTORIAL_NAME,
     UsageError,
     changed_choice_flags,
@@ -35,13 +36,6 @@ from tui_search.flags import (
     semantics_from,
     write_generated,
 )
-from tui_search.headless import (
-    EXIT_BAD_INPUT,
-    print_pseudocode,
-    run_compare,
-    run_headless,
-)
-from tui_search.trace_cli import read_replay, run_check_trace
 from tui_search.tui.themes import THEMES  # plain data: no Textual
 
 if TYPE_CHECKING:
@@ -320,6 +314,8 @@ def main(argv: list[str] | None = None) -> int:
         if args.output is not None:
             return write_generated(args)
         if args.pseudocode:
+            from tui_search.headless import print_pseudocode  # the app's start does without
+
             return print_pseudocode(args)
         if args.lesson is not None and open_lesson(args):
             return 0
@@ -328,6 +324,10 @@ def main(argv: list[str] | None = None) -> int:
 
             return run_exercise(args)
         grid, path = load_problem(args)
+        if args.headless or args.check_trace is not None or args.replay is not None:
+            # the headless output and the traces: modules the app's start does without
+            from tui_search.headless import run_compare, run_headless
+            from tui_search.trace_cli import read_replay, run_check_trace
         if args.headless and args.compare:
             return run_compare(args, grid, path)
         if args.check_trace is not None:

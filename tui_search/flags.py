@@ -28,7 +28,6 @@ from tui_search.engine.heuristics import DEFAULT_HEURISTIC
 from tui_search.engine.mapfile import load_map, parse_cell, parse_map_text
 from tui_search.engine.mapread import MapError
 from tui_search.engine.mapwrite import save_new
-from tui_search.engine.scenarios import check_scenario_map, check_scenario_matches, load_scenario
 from tui_search.engine.semantics import Semantics
 from tui_search.engine.terrain import load_terrain
 
@@ -36,6 +35,9 @@ if TYPE_CHECKING:
     from tui_search.engine.exercise_file import Exercise
 
 TUTORIAL_NAME = "tutorial.txt"
+
+
+EXIT_FOUND, EXIT_NO_PATH, EXIT_BAD_INPUT, EXIT_GAVE_UP = 0, 1, 2, 3
 
 
 class UsageError(Exception):
@@ -83,6 +85,12 @@ def load_problem(args: argparse.Namespace) -> tuple[Grid, Path | None]:
     scen = None
     args.scenario = None
     if args.scen:
+        from tui_search.engine.scenarios import (  # only with --scen: not the tutorial's start
+            check_scenario_map,
+            check_scenario_matches,
+            load_scenario,
+        )
+
         scen = load_scenario(args.scen, args.scen_row)
         # A row for another map is refused by name, before its start and goal are tried on
         # this map's cells (they would fail there for the wrong reason).
