@@ -118,5 +118,7 @@ def test_the_first_frame_imports_no_module_only_a_key_needs() -> None:
     late = {"tui_search.engine.exercise_file", "tui_search.engine.exercises",
             "tui_search.engine.condition", "tui_search.engine.pseudocode", "tui_search.report",
             # the headless output, the traces' checks and replays, --scen's scenario files
-            "tui_search.headless", "tui_search.trace_cli", "tui_search.engine.scenarios"}
+            "tui_search.headless", "tui_search.trace_cli", "tui_search.engine.scenarios",
+            # the map generators (ctrl+n, --generate): the help reads recipe_kinds only
+            "tui_search.engine.generate", "tui_search.engine.mazes", "tui_search.engine.prng"}
     assert not loaded & late

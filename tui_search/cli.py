@@ -17,11 +17,11 @@ from typing import TYPE_CHECKING, NoReturn
 from tui_search import __version__
 from tui_search.collector import collector_held
 from tui_search.engine.algorithms import ALGORITHMS, DEFAULT_ALGORITHM
-from tui_search.engine.generate import DEFAULT_SEED, DEFAULT_SIZE, KINDS, MAX_SIDE
 from tui_search.engine.grid import DEFAULT_ORDER, Grid
 from tui_search.engine.heuristics import DEFAULT_HEURISTIC, HEURISTICS
 from tui_search.engine.loops.compiled import CoreUnavailable, core_name
 from tui_search.engine.mapread import MapError
+from tui_search.engine.recipe_kinds import DEFAULT_SEED, DEFAULT_SIZE, KINDS, MAX_SIDE
 from tui_search.engine.run import MAX_STEPS
 from tui_search.engine.semantics import CORNER_RULES, GOAL_TESTS, VISIT_RULES
 from tui_search.flags import (
