@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 
 from tests.test_cli import TUTORIAL, run_cli
-from tui_search.headless import EXIT_BAD_INPUT
+from tui_search.flags import EXIT_BAD_INPUT
 from tui_search.tui.config import CONFIG_DIR_ENV
 from tui_search.tui.themes import THEMES
 

@@ -31,12 +31,12 @@ def test_the_command_runs_the_cli_with_the_collector_back_on(tmp_path) -> None:
     # python -m tui_search goes through launch.main, as the console script does; a headless
     # run reports whether the collector is on once the program's own work begins.
     probe = ("import gc, sys\n"
-             "import tui_search.cli as cli\n"
-             "real = cli.run_headless\n"
+             "import tui_search.headless as headless\n"
+             "real = headless.run_headless\n"
              "def run_headless(*a):\n"
              "    print('collector', gc.isenabled())\n"
              "    return real(*a)\n"
-             "cli.run_headless = run_headless\n"
+             "headless.run_headless = run_headless\n"
              "sys.argv = ['tui-search', 'maps/tutorial.txt', '--headless']\n"
              "from tui_search.launch import main\n"
              "raise SystemExit(main())\n")
@@ -116,5 +116,9 @@ def test_the_first_frame_imports_no_module_only_a_key_needs() -> None:
     loaded = set(out.stdout.split())
     assert "tui_search.tui.app" in loaded
     late = {"tui_search.engine.exercise_file", "tui_search.engine.exercises",
-            "tui_search.engine.condition", "tui_search.engine.pseudocode", "tui_search.report"}
+            "tui_search.engine.condition", "tui_search.engine.pseudocode", "tui_search.report",
+            # the headless output, the traces' checks and replays, --scen's scenario files
+            "tui_search.headless", "tui_search.trace_cli", "tui_search.engine.scenarios",
+            # the map generators (ctrl+n, --generate): the help reads recipe_kinds only
+            "tui_search.engine.generate", "tui_search.engine.mazes", "tui_search.engine.prng"}
     assert not loaded & late

@@ -21,7 +21,7 @@ from textual.screen import Screen
 from tests.helpers import MOVINGAI, ROOT
 from tui_search.cli import main
 from tui_search.engine.mapfile import load_map, parse_map_text
-from tui_search.headless import EXIT_BAD_INPUT, EXIT_FOUND, EXIT_NO_PATH
+from tui_search.flags import EXIT_BAD_INPUT, EXIT_FOUND, EXIT_NO_PATH
 from tui_search.tui.app import SearchApp
 
 README = (ROOT / "README.md").read_text(encoding="utf-8")

@@ -17,7 +17,7 @@ from tests.helpers import MAPS
 from tests.served import descendants, first_screen, running, served, visit, wait_for
 from tests.test_cli import run_cli
 from tui_search.cli import build_parser
-from tui_search.headless import EXIT_BAD_INPUT
+from tui_search.flags import EXIT_BAD_INPUT
 from tui_search.serve import NEEDS_EXTRA, SERVER_FLAGS, served_args
 from tui_search.tui.config import Config, config_path
 from tui_search.tui.file_access import OFF_MESSAGE, FileAccess, NameRefused

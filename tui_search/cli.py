@@ -17,14 +17,15 @@ from typing import TYPE_CHECKING, NoReturn
 from tui_search import __version__
 from tui_search.collector import collector_held
 from tui_search.engine.algorithms import ALGORITHMS, DEFAULT_ALGORITHM
-from tui_search.engine.generate import DEFAULT_SEED, DEFAULT_SIZE, KINDS, MAX_SIDE
 from tui_search.engine.grid import DEFAULT_ORDER, Grid
 from tui_search.engine.heuristics import DEFAULT_HEURISTIC, HEURISTICS
 from tui_search.engine.loops.compiled import CoreUnavailable, core_name
 from tui_search.engine.mapread import MapError
+from tui_search.engine.recipe_kinds import DEFAULT_SEED, DEFAULT_SIZE, KINDS, MAX_SIDE
 from tui_search.engine.run import MAX_STEPS
 from tui_search.engine.semantics import CORNER_RULES, GOAL_TESTS, VISIT_RULES
 from tui_search.flags import (
+    EXIT_BAD_INPUT,
     TUTORIAL_NAME,
     UsageError,
     changed_choice_flags,
@@ -35,13 +36,6 @@ from tui_search.flags import (
     semantics_from,
     write_generated,
 )
-from tui_search.headless import (
-    EXIT_BAD_INPUT,
-    print_pseudocode,
-    run_compare,
-    run_headless,
-)
-from tui_search.trace_cli import read_replay, run_check_trace
 from tui_search.tui.themes import THEMES  # plain data: no Textual
 
 if TYPE_CHECKING:
@@ -324,6 +318,8 @@ def main(argv: list[str] | None = None) -> int:
         if args.output is not None:
             return write_generated(args)
         if args.pseudocode:
+            from tui_search.headless import print_pseudocode  # the app's start does without
+
             return print_pseudocode(args)
         if args.lesson is not None and open_lesson(args):
             return 0
@@ -332,6 +328,10 @@ def main(argv: list[str] | None = None) -> int:
 
             return run_exercise(args)
         grid, path = load_problem(args)
+        if args.headless or args.check_trace is not None or args.replay is not None:
+            # the headless output and the traces: modules the app's start does without
+            from tui_search.headless import run_compare, run_headless
+            from tui_search.trace_cli import read_replay, run_check_trace
         if args.headless and args.compare:
             return run_compare(args, grid, path)
         if args.check_trace is not None:

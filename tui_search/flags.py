@@ -16,19 +16,12 @@ from typing import TYPE_CHECKING
 from tui_search.engine.algorithms import ALGORITHMS, DEFAULT_ALGORITHM, get_algorithm
 from tui_search.engine.compare import Contender, parse_compare
 from tui_search.engine.filenames import describe_name
-from tui_search.engine.generate import (
-    DEFAULT_SEED,
-    DEFAULT_SIZE,
-    generate,
-    generated_text,
-    make_recipe,
-)
 from tui_search.engine.grid import DEFAULT_ORDER, Cell, Grid, parse_order
 from tui_search.engine.heuristics import DEFAULT_HEURISTIC
 from tui_search.engine.mapfile import load_map, parse_cell, parse_map_text
 from tui_search.engine.mapread import MapError
 from tui_search.engine.mapwrite import save_new
-from tui_search.engine.scenarios import check_scenario_map, check_scenario_matches, load_scenario
+from tui_search.engine.recipe_kinds import DEFAULT_SEED, DEFAULT_SIZE
 from tui_search.engine.semantics import Semantics
 from tui_search.engine.terrain import load_terrain
 
@@ -36,6 +29,9 @@ if TYPE_CHECKING:
     from tui_search.engine.exercise_file import Exercise
 
 TUTORIAL_NAME = "tutorial.txt"
+
+
+EXIT_FOUND, EXIT_NO_PATH, EXIT_BAD_INPUT, EXIT_GAVE_UP = 0, 1, 2, 3
 
 
 class UsageError(Exception):
@@ -62,6 +58,8 @@ def load_problem(args: argparse.Namespace) -> tuple[Grid, Path | None]:
     if recipe is not None:
         if args.scen:
             raise UsageError("--scen needs a MAP, not --generate")
+        from tui_search.engine.generate import generated_text  # only for a generated map
+
         text = generated_text(recipe)
         return parse_map_text(text, recipe.title, start=start, goal=goal, terrain=terrain), None
     own = _teachers_exercise(args)
@@ -83,6 +81,12 @@ def load_problem(args: argparse.Namespace) -> tuple[Grid, Path | None]:
     scen = None
     args.scenario = None
     if args.scen:
+        from tui_search.engine.scenarios import (  # only with --scen: not the tutorial's start
+            check_scenario_map,
+            check_scenario_matches,
+            load_scenario,
+        )
+
         scen = load_scenario(args.scen, args.scen_row)
         # A row for another map is refused by name, before its start and goal are tried on
         # this map's cells (they would fail there for the wrong reason).
@@ -137,6 +141,8 @@ def check_generate(args: argparse.Namespace) -> None:
         if getattr(args, flag) is not None and not getattr(args, flag).strip():
             raise UsageError(f"--{flag} is empty: give {what}")
     try:
+        from tui_search.engine.generate import make_recipe  # only with --generate
+
         args.recipe = make_recipe(args.generate,
                                   DEFAULT_SIZE if args.size is None else args.size,
                                   DEFAULT_SEED if args.seed is None else args.seed)
@@ -147,6 +153,8 @@ def check_generate(args: argparse.Namespace) -> None:
 def write_generated(args: argparse.Namespace) -> int:
     """--generate with --output: write the map to a new file (never over one), or with
     ``--output -`` to standard output (``./-`` names a file called ``-``), exit 0."""
+    from tui_search.engine.generate import generate, generated_text
+
     if args.output == "-":
         sys.stdout.write(generated_text(args.recipe))  # the bytes a file would get
         return 0

@@ -25,9 +25,11 @@ from tui_search.engine.heuristics import INADMISSIBLE, admissible
 from tui_search.engine.mapread import MapError
 from tui_search.engine.outcome import Outcome
 from tui_search.engine.run import Run, Step
-from tui_search.engine.scenarios import Scenario
 from tui_search.engine.semantics import Semantics
 from tui_search.flags import (
+    EXIT_FOUND,
+    EXIT_GAVE_UP,
+    EXIT_NO_PATH,
     UsageError,
     contenders_from,
     load_problem,
@@ -37,8 +39,8 @@ from tui_search.flags import (
 
 if TYPE_CHECKING:
     from tui_search.engine.reference import Expansion
+    from tui_search.engine.scenarios import Scenario
 
-EXIT_FOUND, EXIT_NO_PATH, EXIT_BAD_INPUT, EXIT_GAVE_UP = 0, 1, 2, 3
 
 
 def print_pseudocode(args: argparse.Namespace) -> int:

@@ -17,8 +17,15 @@ from tui_search.engine.exercise_file import Exercise
 from tui_search.engine.exercises import Verdict, grade
 from tui_search.engine.filenames import describe_name
 from tui_search.engine.mapread import MapError
-from tui_search.flags import UsageError, load_problem, map_name
-from tui_search.headless import EXIT_FOUND, EXIT_GAVE_UP, EXIT_NO_PATH, need_endpoints, to_json
+from tui_search.flags import (
+    EXIT_FOUND,
+    EXIT_GAVE_UP,
+    EXIT_NO_PATH,
+    UsageError,
+    load_problem,
+    map_name,
+)
+from tui_search.headless import need_endpoints, to_json
 
 
 class Graded(NamedTuple):

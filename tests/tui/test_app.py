@@ -780,19 +780,19 @@ async def test_a_terminal_too_small_shows_a_message_instead_of_the_layout() -> N
     app = tutorial_app()
     async with app.run_test(size=(50, 15)) as pilot:
         await pilot.pause()
-        message = app.query_one("#too-small")
-        assert message.display and not app.query_one("#panes").display
+        message = app.main.small_note
+        assert message.is_mounted and message.display and not app.query_one("#panes").display
         assert "need at least 60×20, have 50×15" in str(message.render())
     app = tutorial_app()
     async with app.run_test(size=(60, 20)) as pilot:
         await pilot.pause()
-        assert not app.query_one("#too-small").display
+        assert not app.main.small_note.is_mounted  # mounted the first time it shows
         await pilot.resize_terminal(59, 30)
         await pilot.pause()
-        assert app.query_one("#too-small").display
+        assert app.main.small_note.display
         await pilot.resize_terminal(80, 24)
         await pilot.pause()
-        assert not app.query_one("#too-small").display and app.query_one("#panes").display
+        assert not app.main.small_note.display and app.query_one("#panes").display
 
 
 # -- the engine contract the app relies on -----------------------------------------------

@@ -25,7 +25,12 @@ def number(app: SearchApp) -> int | None:
 
 
 def challenge(app: SearchApp) -> ChallengePanel:
-    return app.query_one(ChallengePanel)
+    return app.main.challenge
+
+
+def shown(panel: ChallengePanel) -> bool:
+    """Shown: mounted (it is, from the first time it shows) and displayed."""
+    return panel.is_mounted and panel.display
 
 
 @sync
@@ -59,14 +64,14 @@ async def test_exercise_one_hints_when_more_than_the_goal_changed() -> None:
 async def test_x_cycles_the_exercises_and_hides_the_panel() -> None:
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
-        assert not challenge(app).display
+        assert not shown(challenge(app))
         await pilot.press("x")
-        assert number(app) == 1 and challenge(app).display
+        assert number(app) == 1 and shown(challenge(app))
         await pilot.press("x")
         assert number(app) == 2 and "Exercise 2" == challenge(app).border_title
         assert "Not solved yet: both paths have 7 moves" in challenge(app).text
         await pilot.press("x")
-        assert app.session.exercise is None and not challenge(app).display
+        assert app.session.exercise is None and not shown(challenge(app))
 
 
 @sync
@@ -133,15 +138,15 @@ async def test_the_palette_turns_the_exercises_on_and_off() -> None:
 
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
-        assert app.session.exercise is None and not challenge(app).display
+        assert app.session.exercise is None and not shown(challenge(app))
         await palette_run(pilot, "Exercise 1")
-        assert number(app) == 1 and challenge(app).display
+        assert number(app) == 1 and shown(challenge(app))
         assert challenge(app).border_title == "Exercise 1"
         assert "Not solved yet: BFS expanded 22 nodes, DFS 7" in challenge(app).text
         await palette_run(pilot, "Exercise 2")
         assert number(app) == 2 and challenge(app).border_title == "Exercise 2"
         await palette_run(pilot, "Exercise: off", best=True)  # exercise 1's quote matches too
-        assert app.session.exercise is None and not challenge(app).display
+        assert app.session.exercise is None and not shown(challenge(app))
 
 
 @sync

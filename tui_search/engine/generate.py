@@ -29,6 +29,7 @@ from typing import NamedTuple
 from tui_search.engine import mazes
 from tui_search.engine.grid import Grid
 from tui_search.engine.prng import SplitMix64, seed_value
+from tui_search.engine.recipe_kinds import DEFAULT_SEED, DEFAULT_SIZE, KINDS, MAX_SIDE
 from tui_search.engine.textmap import parse_text_map, text_rows
 
 __all__ = [
@@ -45,29 +46,9 @@ __all__ = [
     "recipe_of",
 ]
 
-MAX_SIDE = 999  # the largest width or height of a generated map
 MAX_SEED_CHARS = 100
-DEFAULT_SIZE = "21x15"
-DEFAULT_SEED = "1"
 ROOM_NODES = 4  # a room is up to 4 nodes across: 7 cells
 COMMENT = "; generated: "
-
-
-class Kind(NamedTuple):
-    name: str
-    minimum: tuple[int, int]  # the smallest width and height
-    help: str
-    perfect: bool
-
-
-KINDS: dict[str, Kind] = {k.name: k for k in (
-    Kind("random", (2, 2), "random:P, P% (0-100) of cells obstacles, S and G joined", False),
-    Kind("maze", (3, 3), "recursive backtracker: depth-first search carving a maze", True),
-    Kind("prim", (3, 3), "randomised Prim: a tree grown from one cell", True),
-    Kind("kruskal", (3, 3), "randomised Kruskal: passages opened in random order", True),
-    Kind("division", (3, 3), "recursive division: walls with one gap each", True),
-    Kind("rooms", (9, 9), "rooms of up to 7x7 joined by doors (recursive division)", False),
-)}
 
 
 class Recipe(NamedTuple):

@@ -26,7 +26,6 @@ from textual.notifications import SeverityLevel
 from textual.screen import Screen
 
 from tui_search.engine.filenames import describe_name
-from tui_search.engine.generate import Recipe, generate, make_recipe, next_recipe, recipe_of
 from tui_search.engine.grid import Grid
 from tui_search.engine.mapfile import load_map
 from tui_search.engine.mapread import MapError
@@ -45,6 +44,7 @@ from tui_search.tui.save_questions import Done, ask_in_place, changed_in_prompt,
 from tui_search.tui.session import Session
 
 if TYPE_CHECKING:
+    from tui_search.engine.generate import Recipe
     from tui_search.tui.screens.confirm_quit import Leaving
 
 # The screens are imported when first needed: their widgets (Input, Button) would add to the
@@ -278,6 +278,7 @@ class FileCommands:
     def generate(self) -> None:
         """``ctrl+n``: ask for a recipe (the current one's next seed suggested), then show its
         map, untitled -- asking first when the current map has unsaved edits."""
+        from tui_search.engine.generate import make_recipe, next_recipe, recipe_of
         from tui_search.tui.screens.confirm_quit import generating
         from tui_search.tui.screens.generate_map import GenerateScreen
 
@@ -294,6 +295,8 @@ class FileCommands:
     def _generate(self, recipe: Recipe) -> None:
         """Show ``recipe``'s map: made at once when small, else in a thread, the UI going on
         meanwhile (a later ctrl+n's map replaces this one's)."""
+        from tui_search.engine.generate import generate  # only when a map is generated
+
         if recipe.width * recipe.height <= GENERATE_AT_ONCE_CELLS:
             self._use_map(generate(recipe), None, recipe.title)
             return

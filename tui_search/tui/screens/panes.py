@@ -19,7 +19,7 @@ from textual.await_remove import AwaitRemove
 from textual.containers import Grid as PaneBox
 from textual.markup import escape
 from textual.screen import Screen
-from textual.widget import AwaitMount
+from textual.widget import AwaitMount, Widget
 from textual.widgets import Static
 from textual.worker import get_current_worker
 
@@ -41,6 +41,7 @@ from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.key_bar import KeyBar
 from tui_search.tui.widgets.legend import Legend
+from tui_search.tui.widgets.parts import show_part
 from tui_search.tui.widgets.run_pane import RunPane
 from tui_search.tui.widgets.stats import Stats
 
@@ -79,9 +80,11 @@ class PanesScreen(Screen[None]):
         yield KeyBar(KEY_IMPORTANCE, id="keys")
         self.stats = Stats(id="stats")
         yield self.stats
+        # the comparison table, the challenge and the too-small note: mounted when first
+        # shown (show_part); until then neither composed nor styled
         self.table = CompareTable(id="compare-table")
-        yield self.table
-        yield ChallengePanel(id="challenge")
+        self.challenge = ChallengePanel(id="challenge")
+        self.small_note = Static(id="too-small")
         self.readout = CellReadout(id="readout")
         yield self.readout
         self.legend = Legend(self.panes[0].view, id="legend")
@@ -92,7 +95,11 @@ class PanesScreen(Screen[None]):
             yield LessonPanel(classes="lesson")
         self.pane_box = PaneBox(*self.panes, id="panes")
         yield self.pane_box
-        yield Static(id="too-small")
+
+    def _show_part(self, part: Widget, shown: bool) -> None:
+        """Mount the table, the challenge or the too-small note the first time it shows."""
+        show_part(self, part, shown, [self.stats, self.table, self.challenge, self.readout,
+                                      self.legend, self.pane_box, self.small_note])
 
     def _new_panes(self, labels: list[str] | None = None) -> list[RunPane]:
         """A pane for each of ``labels`` (default: every search shown)."""
@@ -171,6 +178,7 @@ class PanesScreen(Screen[None]):
         if arrangement.table and not table.display:
             table.show(self.session.labels, self.session.runs)  # not kept up while hidden
         table.display = arrangement.table
+        self._show_part(table, arrangement.table)
         panes_lines = self.panes[0].stats.display
         for pane in self.panes:
             pane.lay_out(arrangement, code=self.session.show_code, restyle=restyle)
@@ -184,7 +192,8 @@ class PanesScreen(Screen[None]):
         if small != self.too_small:
             self.set_class(small, "-too-small")
             self.refresh_bindings()  # behind the message only q acts
-        self.query_one("#too-small", Static).update(
+        self._show_part(self.small_note, small)
+        self.small_note.update(
             f"Terminal too small: need at least {MIN_WIDTH}×{MIN_HEIGHT}, have {width}×{height}")
 
     @property
@@ -321,12 +330,13 @@ class PanesScreen(Screen[None]):
         shown = exercise is not None
         if self.has_class("-challenge") != shown:
             self.set_class(shown, "-challenge")
+            self._show_part(self.challenge, shown)
             self.call_after_refresh(self.fit_panes)
         if exercise is None:
             return
         from tui_search.engine.exercises import LIVE_CELLS  # as Session: only once one is shown
 
-        panel = self.query_one(ChallengePanel)
+        panel = self.challenge
         grid = session.grid
         if grid.start is None or grid.goal is None:
             panel.show(exercise, None, "Place a start (s) and a goal (g) to check it.")
@@ -355,7 +365,7 @@ class PanesScreen(Screen[None]):
         now = self.session.grid
         if exercise is self.session.exercise and (grid.start, grid.goal) == (
                 now.start, now.goal) and grid.blocked == now.blocked:
-            self.query_one(ChallengePanel).show(exercise, verdict)
+            self.challenge.show(exercise, verdict)
 
     # -- playback --------------------------------------------------------------------------
     def _set_speed(self, index: int) -> None:

@@ -4,6 +4,7 @@ the ramp that shades a free cell by its cost too."""
 
 from __future__ import annotations
 
+from rich.style import Style
 from rich.text import Text
 from textual.geometry import Size
 from textual.widget import Widget
@@ -14,6 +15,7 @@ from tui_search.tui.cell_codes import (
     EXPANDED,
     FREE,
     FRONTIER,
+    GLYPHS,
     GOAL,
     PATH,
     START,
@@ -48,20 +50,25 @@ class Legend(Widget):
         super().__init__(id=id)
         self.view = view
 
-    def entries(self) -> list[Text]:
-        """The entries, in the looks the map draws with (read once a restyle, by the map)."""
-        looks = self.view.cell_looks()
-        out = [Text.assemble(looks.codes[code], f" {name}") for code, name in ENTRIES]
-        out.append(Text.assemble(looks.codes[FREE + len(COMPONENTS)], " cursor"))
+    def entries(self, styled: bool = True) -> list[Text]:
+        """The entries, in the looks the map draws with (read once a restyle, by the map);
+        not ``styled``: the same text without styles (all the packing needs)."""
+        looks = self.view.cell_looks() if styled else None
+
+        def look(code: int) -> tuple[str, Style | str]:
+            return looks.codes[code] if looks else (GLYPHS[code % len(COMPONENTS)], "")
+
+        out = [Text.assemble(look(code), f" {name}") for code, name in ENTRIES]
+        out.append(Text.assemble(look(FREE + len(COMPONENTS)), " cursor"))
         if self.view.grid.costs is not None:  # terrain: the ramp that shades a free cell's cost
+            ramp: list[Style | str] = list(looks.ramp[1:]) if looks else [""] * len(RAMP_NAMES)
             out.append(Text.assemble(*(
-                (f" {name} ", style) for name, style in zip(RAMP_NAMES, looks.ramp[1:])),
-                " cost"))
+                (f" {name} ", style) for name, style in zip(RAMP_NAMES, ramp)), " cost"))
         return out
 
-    def _lines(self, width: int) -> Text:
+    def _lines(self, width: int, styled: bool = True) -> Text:
         lines: list[Text] = [Text()]
-        for entry in self.entries():
+        for entry in self.entries(styled):
             line = lines[-1]
             need = entry.cell_len + (2 if line.cell_len else 0)
             if line.cell_len and line.cell_len + need > width:
@@ -73,7 +80,8 @@ class Legend(Widget):
         return Text("\n").join(lines)
 
     def get_content_height(self, container: Size, viewport: Size, width: int) -> int:
-        return len(self._lines(max(1, width)).plain.split("\n"))
+        # the packing only: the map's looks are read once, for the frame, after the restyle
+        return len(self._lines(max(1, width), styled=False).plain.split("\n"))
 
     def render(self) -> Text:
         return self._lines(max(1, self.content_region.width or self.size.width))

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from textual.app import ComposeResult
 from textual.containers import Vertical
+from textual.widget import Widget
 from textual.widgets import Static
 
 from tui_search.engine.grid import Cell, Grid
@@ -19,6 +20,7 @@ from tui_search.tui.status_lines import search_status
 from tui_search.tui.widgets.code_panel import CodePanel
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.grid_view import GridView
+from tui_search.tui.widgets.parts import show_part
 from tui_search.tui.widgets.search_tree import SearchTreePanel
 from tui_search.tui.widgets.stats import Stats
 
@@ -44,14 +46,22 @@ class RunPane(Vertical):
         self._run: Run | None = None  # the run last shown: the Code panel shows it on unfolding
 
     def compose(self) -> ComposeResult:
+        # The parts a layout may leave hidden (the Code panel, the note, the pane's own status
+        # lines) are mounted when one first shows them (:meth:`_show_part`): a first frame
+        # without them neither composes nor styles them (~18 M instructions of the tutorial's)
         with self.lists:  # docked first: beside the map, it spans the pane's whole height
             yield self.frontier
             yield self.tree_panel
-            yield self.code_panel
-            yield self.side_note
-        yield self.stats
         with self.map_box:
             yield self.view
+
+    def _show_part(self, part: Widget, shown: bool) -> None:
+        """Mount ``part`` in its place the first time it is ``shown``."""
+        if part is self.stats:
+            show_part(self, part, shown, [self.lists, self.stats, self.map_box])
+        else:
+            show_part(self.lists, part, shown,
+                      [self.frontier, self.tree_panel, self.code_panel, self.side_note])
 
     def lay_out(self, arrangement: Arrangement, code: bool = False,
                 restyle: bool = True) -> None:
@@ -61,6 +71,7 @@ class RunPane(Vertical):
         and left for the next restyle of the screen."""
         self.set_class(arrangement.beside, "-beside", update=restyle)
         self.stats.display = arrangement.pane_stats
+        self._show_part(self.stats, arrangement.pane_stats)
         lists = self.lists
         lists.display = arrangement.lists
         if arrangement.beside:
@@ -74,6 +85,7 @@ class RunPane(Vertical):
         self.view.styles.max_height = arrangement.map_max_height or "100%"
         self.tree_panel.set_class(not arrangement.trees or code, "-folded", update=restyle)
         self.code_panel.set_class(not (arrangement.code and code), "-folded", update=restyle)
+        self._show_part(self.code_panel, arrangement.code and code)
         # in lines too few for a tree, the code takes three fifths of the row: its lines are long
         self.set_class(code and arrangement.code and not arrangement.trees, "-code-short",
                        update=restyle)
@@ -92,6 +104,7 @@ class RunPane(Vertical):
         view.set_mark(mark)
         view.show_run(run, changed)
         self.set_class(run is None, "-no-run")
+        self._show_part(self.side_note, run is None)
         if run is not None:
             self.frontier.show(run, hide_order=hide_order)
             self.tree_panel.show(run)
