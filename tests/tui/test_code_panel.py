@@ -108,6 +108,16 @@ async def test_at_80x24_each_compare_pane_shows_its_code_in_fewer_lines_than_a_t
             assert CODE_MIN_HEIGHT <= panel.outer_size.height < TREES_MIN_HEIGHT
             await wait_until(pilot, lambda panel=panel: lit_in_view(panel))
             assert panel.lit == lit_lines(run) and pane.frontier.region.area > 0
+        # step 4: the narration names the lines that skipped, shortened to keep the panels
+        await pilot.press("n", "n")
+        await wait_until(pilot, lambda: all(p.stats.narration_text.count("line 8") == 1
+                                            for p in app.main.panes))
+        await wait_until(pilot, lambda: all(shown(p) and p.frontier.region.area > 0
+                                            for p in app.main.panes))
+        for pane in app.main.panes:
+            assert pane.stats.outer_size.height <= 3 and lit_in_view(pane.code_panel)
+            rows = pane.stats.rows(pane.stats.content_region.width)
+            assert "line 8 skipped" in "".join(text for text, _ in rows[-1])
         await pilot.press("v")  # the trees have no room: the frontier alone, as before
         await wait_until(pilot, lambda: not any(shown(p) for p in app.main.panes))
         assert all(not p.tree_panel.region.area for p in app.main.panes)
@@ -128,6 +138,10 @@ async def test_at_80x24_beside_the_tutorial_lesson_the_code_shows() -> None:
         assert pane.code_panel.lit == lit_lines(app.session.runs[0])
 
 
+def no_room_said(app: SearchApp) -> bool:
+    return any("No room for the Code panel" in n.message for n in notifications(app))
+
+
 def big_map() -> Grid:
     """An open 60x40 map: two panes of it at 80x24 leave no lines for the lists."""
     big = Grid(60, 40)
@@ -141,9 +155,20 @@ async def test_where_no_pane_has_room_for_the_code_v_says_so() -> None:
     async with app.run_test(size=(80, 24)) as pilot:
         await wait_until(pilot, lambda: len(app.main.panes) == 2)
         await pilot.press("n", "v")
-        await wait_until(pilot, lambda: any("No room for the Code panel" in n.message
-                                            for n in notifications(app)))
+        await wait_until(pilot, lambda: no_room_said(app))
         assert not any(shown(p) for p in app.main.panes)
+
+
+@sync
+async def test_a_code_panel_folded_by_a_smaller_terminal_says_so() -> None:
+    app = SearchApp(tutorial_app().session.grid, compare="bfs,dfs")
+    async with app.run_test(size=(80, 24)) as pilot:
+        await wait_until(pilot, lambda: len(app.main.panes) == 2)
+        await pilot.press("n", "v")
+        await wait_until(pilot, lambda: all(shown(p) for p in app.main.panes))
+        await pilot.resize_terminal(80, 20)
+        await wait_until(pilot, lambda: no_room_said(app))
+        assert not any(shown(p) for p in app.main.panes) and app.session.show_code
 
 
 @sync

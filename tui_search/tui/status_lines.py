@@ -18,6 +18,7 @@ from tui_search.engine.algorithms import get_algorithm
 from tui_search.engine.heuristics import INADMISSIBLE
 from tui_search.engine.run import Run
 from tui_search.tui import playback
+from tui_search.tui.code_trace import line_notes
 from tui_search.tui.layout import own_lines
 from tui_search.tui.narration import frontier_word, narrate, result_text, status_parts
 from tui_search.tui.pieces import Line, Piece
@@ -32,6 +33,9 @@ MAX_ROWS, PANE_ROWS = 4, 3
 #: (The frontier's size goes after its peak and the counts of lesser note, before the path:
 #: the frontier's panel says it too.)
 BOUND_RANK, PLAYING_RANK, PEAK_RANK, DONE_RANK, FRONTIER_RANK, PATH_RANK = 9, 8, 7, 6, 3, 2
+#: The narration's naming of the code's lines (the Code panel shown) is shortened at this
+#: rank ("line 8 skipped 4"), and goes at the next (after the counts of lesser note).
+NOTES_RANK, NOTES_SHORT_RANK = 7, 2
 #: The step and the nodes expanded are what the lessons count: they never go (rank 0), they
 #: take another row instead.
 RANKS = {"discarded": 5, "generated": 4, "step": 0, "expanded": 0}
@@ -83,7 +87,14 @@ def search_status(run: Run | None, name: str, *, in_pane: bool, playing: str = "
         line = []
     else:
         failed = run.at_end and not run.found and not run.gave_up  # "no path", in red
-        line = [Piece([(narrate(run, code), "stats--no-path" if failed else "stats--narration")])]
+        cls = "stats--no-path" if failed else "stats--narration"
+        line = [Piece([(narrate(run), cls)])]
+        if code:  # the lines named: shortened, then gone, before a count goes (a narrow pane)
+            named = "; ".join(line_notes(run))
+            if named:
+                brief = "; ".join(line_notes(run, short=True))
+                line.append(Piece([(named, cls)], NOTES_RANK, ("; ", cls), [(brief, cls)],
+                                  NOTES_SHORT_RANK))
         if run.at_end and run.found:  # the path, and the bound: what the lesson is about
             # (a pane's own: the comparison table says them too, and the map comes first:
             # the bound goes first, the path after the counts)

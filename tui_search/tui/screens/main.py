@@ -10,15 +10,12 @@ from textual.binding import BindingType
 from tui_search.tui import playback
 from tui_search.tui.keys import KEYS
 from tui_search.tui.map_edits import brush_name
-from tui_search.tui.screens.panes import PanesScreen
+from tui_search.tui.screens.panes import NO_ROOM_FOR_CODE, PanesScreen
 from tui_search.tui.screens.settings_choice import SettingsChoice
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.key_bar import KeyBar
 
-#: What ``v`` says when no pane has room for the Code panel (no lists under a map this big).
-NO_ROOM_FOR_CODE = ("No room for the Code panel here: a taller terminal, or fewer panes, "
-                    "shows it (v hides it)")
 
 class MainScreen(PanesScreen):
     """The panes, and every key of :mod:`~tui_search.tui.keys`."""
