@@ -4,6 +4,10 @@ code; the narration names the lines while it is shown."""
 
 from __future__ import annotations
 
+import re
+
+import pytest
+
 from tests.textual_internals import notifications
 from tests.tui.test_app import SIZE, sync, tutorial_app, wait_until
 from tui_search.engine.algorithms import ALGORITHMS
@@ -11,8 +15,9 @@ from tui_search.engine.grid import Grid
 from tui_search.engine.pseudocode import pseudocode
 from tui_search.engine.semantics import Semantics
 from tui_search.tui.app import SearchApp
-from tui_search.tui.code_trace import lit_lines
+from tui_search.tui.code_trace import focus_line, lit_lines
 from tui_search.tui.layout import CODE_MIN_HEIGHT, TREES_MIN_HEIGHT
+from tui_search.tui.narration import narrate
 from tui_search.tui.widgets.code_panel import LIT_MARK, CodePanel, code_rows
 from tui_search.tui.widgets.run_pane import RunPane
 
@@ -89,11 +94,44 @@ def test_a_long_line_wraps_under_its_own_words_and_keeps_its_light() -> None:
     assert sum(text.startswith(LIT_MARK) for text in texts) == 1
 
 
-def lit_in_view(panel: CodePanel) -> bool:
-    """The first lit line is among the rows the panel shows, with a row besides it."""
+def in_view(panel: CodePanel, number: int) -> bool:
+    """Line ``number``'s first row is among the rows the panel shows."""
     top, rows = panel.scroll_offset.y, panel.scrollable_content_region.height
-    lit = panel.lit_rows()
-    return bool(lit) and top <= lit[0] < top + rows and rows >= 2
+    line = panel.line_rows(number)
+    return bool(line) and top <= line.start < top + rows
+
+
+def lit_in_view(panel: CodePanel) -> bool:
+    """The lit line the panel keeps in view (the most specific, else the first) is among the
+    rows it shows, with a row besides it."""
+    lit = sorted(panel.lit)
+    focus = panel.focus_number if panel.focus_number is not None else lit[0] if lit else 0
+    return focus in panel.lit and in_view(panel, focus) \
+        and panel.scrollable_content_region.height >= 2
+
+
+@sync
+@pytest.mark.parametrize("size", [(80, 24), (120, 40)])
+async def test_in_each_choices_section_the_line_the_narration_names_is_in_view(
+        size: tuple[int, int]) -> None:
+    from tests.tui.test_lesson import lesson_app
+
+    app = lesson_app("choices")
+    async with app.run_test(size=size) as pilot:
+        panel = app.main.query_one(".lesson")
+        for section in range(1, 6):
+            while f"{section}/5" not in str(panel.border_title):
+                await pilot.press("pagedown")
+                await pilot.pause()
+            run, code = app.session.runs[0], app.main.panes[0].code_panel
+            await wait_until(pilot, lambda run=run, code=code: shown(app.main.panes[0])
+                             and code.lit == lit_lines(run) and code.scrollable_content_region)
+            # the line the lesson's text names: the first the narration names (section 2:
+            # the corner, before the visited check), else the goal test that found the goal
+            named = [int(n) for n in re.findall(r"line (\d+)", narrate(run, True))]
+            focus = focus_line(run)
+            assert focus is not None and (not named or focus in named), section
+            await wait_until(pilot, lambda code=code, focus=focus: in_view(code, focus))
 
 
 @sync

@@ -163,4 +163,22 @@ def lit_lines(run: Run) -> frozenset[int]:
     return code_of(run).numbers(lit_kinds(run))
 
 
-__all__ = ["Skip", "code_of", "line_notes", "lit_kinds", "lit_lines", "skipped"]
+#: The lit lines that say most about a step, the most specific first: the line the
+#: narration names (a discard, a skip) or that ends the search (the goal found, a cut-off).
+FOCUS_KINDS = ("discard", "corner", "reached", "on_path", "goal_node", "goal_succ",
+               "goal_start", "cutoff", "fail")
+
+
+def focus_line(run: Run) -> int | None:
+    """The number of the most specific line the step at ``run``'s position lit
+    (:data:`FOCUS_KINDS`), the one the Code panel keeps in view; None: only the loop's
+    ordinary lines (the panel keeps the first lit line in view)."""
+    kinds = lit_kinds(run)
+    code = code_of(run)
+    for kind in FOCUS_KINDS:
+        if kind in kinds and (number := code.number(kind)) is not None:
+            return number
+    return None
+
+
+__all__ = ["FOCUS_KINDS", "Skip", "code_of", "focus_line", "line_notes", "lit_kinds", "lit_lines", "skipped"]
