@@ -259,3 +259,29 @@ async def test_at_80x24_sections_6_and_8_name_what_is_on_screen() -> None:
         bfs, dfs = seen[8]  # both 7 moves; DFS expanded only its path, BFS 22 cells
         assert (bfs.count("◆"), dfs.count("◆")) == (6, 6)
         assert dfs.count("●") == 0 and bfs.count("●") == 22 - 7
+
+
+@sync
+async def test_at_80x24_shift_keys_scroll_the_lesson_and_move_between_sections() -> None:
+    """The lesson never takes the focus, and its text is longer than the panel at 80x24:
+    shift+down scrolls its last line into view, shift+up back; shift+right and shift+left
+    move between sections as pgdn and pgup do (a keyboard without them)."""
+    app = lesson_app("tutorial")
+    async with app.run_test(size=(80, 24)) as pilot:
+        panel = app.main.query_one(".lesson")
+        await wait_until(pilot, lambda: "1/10" in str(panel.border_title)
+                         and panel.max_scroll_y > 0)
+        assert "⇧↑↓ scroll" in str(panel.border_subtitle)
+        for _ in range(panel.max_scroll_y):
+            await pilot.press("shift+down")
+            if panel.scroll_y >= panel.max_scroll_y:
+                break
+        await wait_until(pilot, lambda: panel.scroll_y == panel.max_scroll_y)
+        assert app.session.cursor == (0, 0)  # the keys were the lesson's, not the cursor's
+        await pilot.press("shift+up")
+        await wait_until(pilot, lambda: panel.scroll_y < panel.max_scroll_y)
+        await pilot.press("shift+right")
+        await wait_until(pilot, lambda: "2/10" in str(panel.border_title))
+        assert app.session.runs[0].k == 4
+        await pilot.press("shift+left")
+        await wait_until(pilot, lambda: "1/10" in str(panel.border_title))
