@@ -285,3 +285,22 @@ async def test_at_80x24_shift_keys_scroll_the_lesson_and_move_between_sections()
         assert app.session.runs[0].k == 4
         await pilot.press("shift+left")
         await wait_until(pilot, lambda: "1/10" in str(panel.border_title))
+
+
+@sync
+async def test_at_80x24_section_6_s_narrow_panes_say_each_path_s_moves() -> None:
+    """Issue 20: a number the lesson is about never goes.  Section 6 compares the paths'
+    moves (5 against 8) in panes about 23 columns wide: each pane's lines say its path."""
+    app = lesson_app("tutorial")
+    async with app.run_test(size=(80, 24)) as pilot:
+        panel = app.main.query_one(".lesson")
+        while "6/10" not in str(panel.border_title):
+            await pilot.press("pagedown")
+            await pilot.pause()
+        await wait_until(pilot, lambda: len(app.main.panes) == 2
+                         and all(r.at_end for r in app.session.runs))
+        for pane, moves in zip(app.main.panes, (5, 8), strict=True):
+            await wait_until(pilot, lambda pane=pane: pane.stats.display
+                             and pane.stats.region.area > 0)
+            said = " ".join(" ".join(pane.stats.shown_lines()).split())
+            assert f"path: {moves} moves, cost" in said, said
