@@ -109,6 +109,27 @@ def test_every_section_of_the_tutorial_lesson_shows_what_it_says() -> None:
     assert not any(s.code for s in seen)
 
 
+def test_the_tutorial_lesson_s_words_are_true_of_the_map() -> None:
+    """Section 1 names the obstacles by the legend (their colour is the theme's); section 2's
+    step 4 skips N and SE as obstacles and four visited cells; section 8's DFS expands START
+    and the path's cells before the goal, never the goal."""
+    from tui_search.tui.code_trace import skipped
+
+    texts = [section.text for section in read_lesson(find_lesson("tutorial"), "tutorial").sections]
+    assert "dark" not in texts[0] and "(see the legend)" in texts[0]
+    seen = walk("tutorial")
+    skips = {(skip.move, skip.kind) for skip in skipped(one(seen[1]))}
+    assert skips == {("N", "blocked"), ("SE", "blocked"), ("S", "reached"),
+                     ("SW", "reached"), ("W", "reached"), ("NW", "reached")}
+    assert "N and SE are obstacles and the other four are already visited" in \
+        " ".join(texts[1].split())
+    dfs = seen[7].runs[1]
+    expanded = {dfs.nodes.cell(dfs.steps.expanded_event(k)) for k in range(1, dfs.k + 1)}
+    path = dfs.path() or []
+    assert len(path) == 8 and expanded == set(path[:-1])
+    assert "START and the six cells of its path before the goal" in " ".join(texts[7].split())
+
+
 def narration_lines(run: Run) -> str:
     from tui_search.tui.narration import narrate
 
