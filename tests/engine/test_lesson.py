@@ -101,6 +101,9 @@ def test_the_command_line_lists_the_lessons_and_refuses_a_bad_one(capsys,
     assert code == 2 and "no such lesson (built in: choices, tutorial)" in err
     code, _, err = run_cli(capsys, "--lesson", "tutorial", "--headless")
     assert code == 2 and err.count("\n") == 1 and "--lesson is for the app" in err
+    for flag, value in (("--compare", "bfs,dfs"), ("--exercise", "1")):  # never ignored
+        code, out, err = run_cli(capsys, "--lesson", "tutorial", flag, value)
+        assert (code, out) == (2, "") and err.count("\n") == 1 and f"leave out {flag}" in err
 
 
 def test_a_number_key_a_built_in_lesson_names_is_that_search_s_key() -> None:
