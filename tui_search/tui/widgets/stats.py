@@ -55,7 +55,7 @@ class Stats(PartsLines):
         super().__init__(id=id, classes=classes)
         self.status_text = ""
         self.narration_text = ""
-        self.short_text = ""  # the short forms the pieces may show instead (tests)
+        self.short_text = ""  # each piece alone, and its short form: what may show (tests)
         self._height: int | None = None  # the rows laid out last
 
     def show(self, lines: list[Line], max_rows: int) -> None:
@@ -66,8 +66,9 @@ class Stats(PartsLines):
             *counts, narration = lines
             self.status_text = " ".join(line_text(line.pieces) for line in counts)
             self.narration_text = line_text(narration.pieces)
-            self.short_text = " ".join(text_of(piece.short) for line in lines
-                                       for piece in line.pieces if piece.short)
+            self.short_text = " ".join(text_of(parts) for line in lines
+                                       for piece in line.pieces
+                                       for parts in (piece.parts, piece.short) if parts)
 
     @property
     def wrapped(self) -> int:
