@@ -83,6 +83,8 @@ def test_iterative_deepening_shows_its_outer_loop(capsys) -> None:
 
 @pytest.mark.parametrize(("argv", "error"), [
     (("--compare", "bfs,dfs"), "leave out --compare"),
+    (("--lesson", "tutorial"), "leave out --lesson"),
+    (("--lesson",), "leave out --lesson"),
     (("--headless",), "leave out --headless"),
     (("-a", "ucs", "--visit", "expand"), "--visit does not apply"),
 ])

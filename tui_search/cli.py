@@ -288,6 +288,10 @@ def open_lesson(args: argparse.Namespace) -> bool:
 
     if args.headless or args.serve:
         raise UsageError("--lesson is for the app, not --headless or --serve")
+    for flag in ("compare", "exercise"):  # a section sets the searches and the exercise
+        if getattr(args, flag) is not None:
+            raise UsageError(f"--lesson sets the searches itself, section by section: leave "
+                             f"out --{flag}")
     if not args.lesson:
         for name, title in built_in().items():
             print(f"{name:10} {title}")

@@ -48,8 +48,8 @@ def print_pseudocode(args: argparse.Namespace) -> int:
     stdout (:mod:`tui_search.engine.pseudocode`); exit 0."""
     from tui_search.engine.pseudocode import MOVE_COST, TERRAIN_MOVE_COST, pseudocode
 
-    for flag in ("compare", "exercise", "trace"):
-        if getattr(args, flag):
+    for flag in ("compare", "exercise", "trace", "lesson"):
+        if getattr(args, flag, None) not in (None, False):  # --lesson alone is ""
             raise UsageError(f"--pseudocode prints one search's code: leave out "
                              f"--{flag.replace('_', '-')}")
     if args.headless or args.json:

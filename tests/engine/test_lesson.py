@@ -66,10 +66,13 @@ BAD = [
     ("## A\n```lesson\ncode: yes\n```\n", "lesson.md:3:7: code 'yes': use on or off"),
     ("## A\n```lesson\nexercise: 3\n```\n", "lesson.md:3:11: exercise '3': use 1, 2, off"),
     ("## A\n```lesson\nmap: nowhere.txt\n```\n", "lesson.md:3:6: map 'nowhere.txt': "),
-    ("## A\n```lesson\nalgorithm: iddfs\nvisit: expand\n```\n",
-     "lesson.md:2: the visit rule does not apply to IDDFS"),
+    # a combination: at the key the block set last that makes it (its line and column)
+    ("## A\n```lesson\nalgorithm: iddfs\n  visit: expand\n```\n",
+     "lesson.md:4:3: the visit rule does not apply to IDDFS"),
     ("## A\n```lesson\ntree-search: on\nvisit: expand\n```\n",
-     "lesson.md:2: tree search has no visited set"),
+     "lesson.md:4:1: tree search has no visited set"),
+    ("## A\n```lesson\nvisit: expand\n```\n## B\n```lesson\nstep: 2\nalgorithm: ucs\n```\n",
+     "lesson.md:8:1: the visit rule does not apply to UCS"),
     ("## A\ntext\n```lesson\nstep: 1\n```\n",
      "lesson.md:3:1: a lesson block must come first in its section"),
     ("## A\n```lesson\nstep: 1\n", "lesson.md: a fenced block is not closed"),
@@ -101,6 +104,9 @@ def test_the_command_line_lists_the_lessons_and_refuses_a_bad_one(capsys,
     assert code == 2 and "no such lesson (built in: choices, tutorial)" in err
     code, _, err = run_cli(capsys, "--lesson", "tutorial", "--headless")
     assert code == 2 and err.count("\n") == 1 and "--lesson is for the app" in err
+    for flag, value in (("--compare", "bfs,dfs"), ("--exercise", "1")):  # never ignored
+        code, out, err = run_cli(capsys, "--lesson", "tutorial", flag, value)
+        assert (code, out) == (2, "") and err.count("\n") == 1 and f"leave out {flag}" in err
 
 
 def test_a_number_key_a_built_in_lesson_names_is_that_search_s_key() -> None:

@@ -733,7 +733,8 @@ def test_help_lists_every_key_of_the_binding_table() -> None:
     aliases = {"up": "arrows", "down": "arrows", "left": "arrows", "right": "arrows",
                 "plus": "+", "minus": "-", "question_mark": "?", "comma": ",", "escape": "esc",
                 "right_square_bracket": "]", "left_square_bracket": "[", "pageup": "pgup",
-                "pagedown": "pgdn"}
+                "pagedown": "pgdn", "shift+left": "⇧←", "shift+right": "⇧→", "shift+up": "⇧↑",
+                "shift+down": "⇧↓"}
     for binding in Binding.make_bindings(MainScreen.BINDINGS):
         assert aliases.get(binding.key, binding.key) in listed, binding.key
 

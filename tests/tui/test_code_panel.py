@@ -4,6 +4,10 @@ code; the narration names the lines while it is shown."""
 
 from __future__ import annotations
 
+import re
+
+import pytest
+
 from tests.textual_internals import notifications
 from tests.tui.test_app import SIZE, sync, tutorial_app, wait_until
 from tui_search.engine.algorithms import ALGORITHMS
@@ -11,8 +15,9 @@ from tui_search.engine.grid import Grid
 from tui_search.engine.pseudocode import pseudocode
 from tui_search.engine.semantics import Semantics
 from tui_search.tui.app import SearchApp
-from tui_search.tui.code_trace import lit_lines
+from tui_search.tui.code_trace import focus_line, lit_lines
 from tui_search.tui.layout import CODE_MIN_HEIGHT, TREES_MIN_HEIGHT
+from tui_search.tui.narration import narrate
 from tui_search.tui.widgets.code_panel import LIT_MARK, CodePanel, code_rows
 from tui_search.tui.widgets.run_pane import RunPane
 
@@ -89,11 +94,44 @@ def test_a_long_line_wraps_under_its_own_words_and_keeps_its_light() -> None:
     assert sum(text.startswith(LIT_MARK) for text in texts) == 1
 
 
-def lit_in_view(panel: CodePanel) -> bool:
-    """The first lit line is among the rows the panel shows, with a row besides it."""
+def in_view(panel: CodePanel, number: int) -> bool:
+    """Line ``number``'s first row is among the rows the panel shows."""
     top, rows = panel.scroll_offset.y, panel.scrollable_content_region.height
-    lit = panel.lit_rows()
-    return bool(lit) and top <= lit[0] < top + rows and rows >= 2
+    line = panel.line_rows(number)
+    return bool(line) and top <= line.start < top + rows
+
+
+def lit_in_view(panel: CodePanel) -> bool:
+    """The lit line the panel keeps in view (the most specific, else the first) is among the
+    rows it shows, with a row besides it."""
+    lit = sorted(panel.lit)
+    focus = panel.focus_number if panel.focus_number is not None else lit[0] if lit else 0
+    return focus in panel.lit and in_view(panel, focus) \
+        and panel.scrollable_content_region.height >= 2
+
+
+@sync
+@pytest.mark.parametrize("size", [(80, 24), (120, 40)])
+async def test_in_each_choices_section_the_line_the_narration_names_is_in_view(
+        size: tuple[int, int]) -> None:
+    from tests.tui.test_lesson import lesson_app
+
+    app = lesson_app("choices")
+    async with app.run_test(size=size) as pilot:
+        panel = app.main.query_one(".lesson")
+        for section in range(1, 6):
+            while f"{section}/5" not in str(panel.border_title):
+                await pilot.press("pagedown")
+                await pilot.pause()
+            run, code = app.session.runs[0], app.main.panes[0].code_panel
+            await wait_until(pilot, lambda run=run, code=code: shown(app.main.panes[0])
+                             and code.lit == lit_lines(run) and code.scrollable_content_region)
+            # the line the lesson's text names: the first the narration names (section 2:
+            # the corner, before the visited check), else the goal test that found the goal
+            named = [int(n) for n in re.findall(r"line (\d+)", narrate(run, True))]
+            focus = focus_line(run)
+            assert focus is not None and (not named or focus in named), section
+            await wait_until(pilot, lambda code=code, focus=focus: in_view(code, focus))
 
 
 @sync
@@ -108,6 +146,16 @@ async def test_at_80x24_each_compare_pane_shows_its_code_in_fewer_lines_than_a_t
             assert CODE_MIN_HEIGHT <= panel.outer_size.height < TREES_MIN_HEIGHT
             await wait_until(pilot, lambda panel=panel: lit_in_view(panel))
             assert panel.lit == lit_lines(run) and pane.frontier.region.area > 0
+        # step 4: the narration names the lines that skipped, shortened to keep the panels
+        await pilot.press("n", "n")
+        await wait_until(pilot, lambda: all(p.stats.narration_text.count("line 8") == 1
+                                            for p in app.main.panes))
+        await wait_until(pilot, lambda: all(shown(p) and p.frontier.region.area > 0
+                                            for p in app.main.panes))
+        for pane in app.main.panes:
+            assert pane.stats.outer_size.height <= 3 and lit_in_view(pane.code_panel)
+            rows = pane.stats.rows(pane.stats.content_region.width)
+            assert "line 8 skipped" in "".join(text for text, _ in rows[-1])
         await pilot.press("v")  # the trees have no room: the frontier alone, as before
         await wait_until(pilot, lambda: not any(shown(p) for p in app.main.panes))
         assert all(not p.tree_panel.region.area for p in app.main.panes)
@@ -128,6 +176,10 @@ async def test_at_80x24_beside_the_tutorial_lesson_the_code_shows() -> None:
         assert pane.code_panel.lit == lit_lines(app.session.runs[0])
 
 
+def no_room_said(app: SearchApp) -> bool:
+    return any("No room for the Code panel" in n.message for n in notifications(app))
+
+
 def big_map() -> Grid:
     """An open 60x40 map: two panes of it at 80x24 leave no lines for the lists."""
     big = Grid(60, 40)
@@ -141,9 +193,20 @@ async def test_where_no_pane_has_room_for_the_code_v_says_so() -> None:
     async with app.run_test(size=(80, 24)) as pilot:
         await wait_until(pilot, lambda: len(app.main.panes) == 2)
         await pilot.press("n", "v")
-        await wait_until(pilot, lambda: any("No room for the Code panel" in n.message
-                                            for n in notifications(app)))
+        await wait_until(pilot, lambda: no_room_said(app))
         assert not any(shown(p) for p in app.main.panes)
+
+
+@sync
+async def test_a_code_panel_folded_by_a_smaller_terminal_says_so() -> None:
+    app = SearchApp(tutorial_app().session.grid, compare="bfs,dfs")
+    async with app.run_test(size=(80, 24)) as pilot:
+        await wait_until(pilot, lambda: len(app.main.panes) == 2)
+        await pilot.press("n", "v")
+        await wait_until(pilot, lambda: all(shown(p) for p in app.main.panes))
+        await pilot.resize_terminal(80, 20)
+        await wait_until(pilot, lambda: no_room_said(app))
+        assert not any(shown(p) for p in app.main.panes) and app.session.show_code
 
 
 @sync

@@ -109,6 +109,27 @@ def test_every_section_of_the_tutorial_lesson_shows_what_it_says() -> None:
     assert not any(s.code for s in seen)
 
 
+def test_the_tutorial_lesson_s_words_are_true_of_the_map() -> None:
+    """Section 1 names the obstacles by the legend (their colour is the theme's); section 2's
+    step 4 skips N and SE as obstacles and four visited cells; section 8's DFS expands START
+    and the path's cells before the goal, never the goal."""
+    from tui_search.tui.code_trace import skipped
+
+    texts = [section.text for section in read_lesson(find_lesson("tutorial"), "tutorial").sections]
+    assert "dark" not in texts[0] and "(see the legend)" in texts[0]
+    seen = walk("tutorial")
+    skips = {(skip.move, skip.kind) for skip in skipped(one(seen[1]))}
+    assert skips == {("N", "blocked"), ("SE", "blocked"), ("S", "reached"),
+                     ("SW", "reached"), ("W", "reached"), ("NW", "reached")}
+    assert "N and SE are obstacles and the other four are already visited" in \
+        " ".join(texts[1].split())
+    dfs = seen[7].runs[1]
+    expanded = {dfs.nodes.cell(dfs.steps.expanded_event(k)) for k in range(1, dfs.k + 1)}
+    path = dfs.path() or []
+    assert len(path) == 8 and expanded == set(path[:-1])
+    assert "START and the six cells of its path before the goal" in " ".join(texts[7].split())
+
+
 def narration_lines(run: Run) -> str:
     from tui_search.tui.narration import narrate
 
@@ -259,3 +280,48 @@ async def test_at_80x24_sections_6_and_8_name_what_is_on_screen() -> None:
         bfs, dfs = seen[8]  # both 7 moves; DFS expanded only its path, BFS 22 cells
         assert (bfs.count("◆"), dfs.count("◆")) == (6, 6)
         assert dfs.count("●") == 0 and bfs.count("●") == 22 - 7
+
+
+@sync
+async def test_at_80x24_shift_keys_scroll_the_lesson_and_move_between_sections() -> None:
+    """The lesson never takes the focus, and its text is longer than the panel at 80x24:
+    shift+down scrolls its last line into view, shift+up back; shift+right and shift+left
+    move between sections as pgdn and pgup do (a keyboard without them)."""
+    app = lesson_app("tutorial")
+    async with app.run_test(size=(80, 24)) as pilot:
+        panel = app.main.query_one(".lesson")
+        await wait_until(pilot, lambda: "1/10" in str(panel.border_title)
+                         and panel.max_scroll_y > 0)
+        assert "⇧↑↓ scroll" in str(panel.border_subtitle)
+        for _ in range(panel.max_scroll_y):
+            await pilot.press("shift+down")
+            if panel.scroll_y >= panel.max_scroll_y:
+                break
+        await wait_until(pilot, lambda: panel.scroll_y == panel.max_scroll_y)
+        assert app.session.cursor == (0, 0)  # the keys were the lesson's, not the cursor's
+        await pilot.press("shift+up")
+        await wait_until(pilot, lambda: panel.scroll_y < panel.max_scroll_y)
+        await pilot.press("shift+right")
+        await wait_until(pilot, lambda: "2/10" in str(panel.border_title))
+        assert app.session.runs[0].k == 4
+        await pilot.press("shift+left")
+        await wait_until(pilot, lambda: "1/10" in str(panel.border_title))
+
+
+@sync
+async def test_at_80x24_section_6_s_narrow_panes_say_each_path_s_moves() -> None:
+    """Issue 20: a number the lesson is about never goes.  Section 6 compares the paths'
+    moves (5 against 8) in panes about 23 columns wide: each pane's lines say its path."""
+    app = lesson_app("tutorial")
+    async with app.run_test(size=(80, 24)) as pilot:
+        panel = app.main.query_one(".lesson")
+        while "6/10" not in str(panel.border_title):
+            await pilot.press("pagedown")
+            await pilot.pause()
+        await wait_until(pilot, lambda: len(app.main.panes) == 2
+                         and all(r.at_end for r in app.session.runs))
+        for pane, moves in zip(app.main.panes, (5, 8), strict=True):
+            await wait_until(pilot, lambda pane=pane: pane.stats.display
+                             and pane.stats.region.area > 0)
+            said = " ".join(" ".join(pane.stats.shown_lines()).split())
+            assert f"path: {moves} moves, cost" in said, said

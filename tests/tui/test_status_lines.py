@@ -88,11 +88,14 @@ def test_a_pane_among_several_says_done_at_step_k_and_its_map_comes_first() -> N
     assert texts(pane)[0].startswith("BFS │ done at step 22 │ step 22/22")
     assert "done at step" not in texts(alone)[0]
     assert texts(pane)[1] == texts(alone)[1] and texts(alone)[1].endswith(BOUND)
-    # narrow: a pane's bound and path give way to the counts; alone, they never go
-    # (the step and the nodes expanded never go: the queue's size does, short form and all)
-    assert rows(pane, 30) == ["BFS │ step 22/22 │ expanded 22", "Goal (5,2) found from (5,1)"]
-    assert rows(pane, 21) == ["BFS │ step 22/22", "expanded 22", "Goal (5,2) found from",
-                              "(5,1)"]  # they take a row more than PANE_ROWS
+    # narrow: a pane's bound gives way to the counts; alone, it never goes; the path's moves
+    # and cost never go (issue 20), nor the step and the nodes expanded: they take more rows
+    # than PANE_ROWS (the queue's size goes, short form and all, where that saves a row)
+    assert rows(pane, 30) == ["BFS │ step 22/22 │ expanded 22", "Goal (5,2) found from (5,1) ·",
+                              "path: 7 moves, cost 8.66 (the", "lowest)"]
+    assert rows(pane, 21) == ["BFS │ step 22/22", "expanded 22 │ queue 2",
+                              "Goal (5,2) found from", "(5,1) · path: 7",
+                              "moves, cost 8.66 (the", "lowest)"]
     assert rows(alone, 30)[1:] == ["Goal (5,2) found from (5,1) ·",
                                    "path: 7 moves, cost 8.66 (the",
                                    "lowest) · generated 24 of at", "most 7⁸ = 5,764,801"]

@@ -123,7 +123,7 @@ def _words(texts: list[str]) -> set[str]:
 def _whole_texts(widget: Widget) -> list[str]:
     """What ``widget`` has to say, unwrapped: every word it may show."""
     if isinstance(widget, Stats):
-        return [widget.status_text, widget.narration_text]
+        return [widget.status_text, widget.narration_text, widget.short_text]
     if isinstance(widget, CellReadout):
         return [f"{widget.label} {widget.text}"]
     if isinstance(widget, CompareTable):

@@ -152,9 +152,12 @@ def _value(key: str, text: str, base: Path) -> object:
     return path
 
 
-def _block(lines: list[str], first: int, base: Path, name: str, state: State) -> State:
-    """The state after the block's ``key: value`` lines (``first``: the first's line)."""
+def _block(lines: list[str], first: int, base: Path, name: str,
+           state: State) -> tuple[State, dict[str, tuple[int, int]]]:
+    """The state after the block's ``key: value`` lines (``first``: the first's line), and
+    where each key set is (line, column)."""
     seen: dict[str, Any] = {}
+    where: dict[str, tuple[int, int]] = {}
     for n, raw in enumerate(lines, first):
         line = raw.strip()
         if not line or line.startswith("#"):
@@ -176,12 +179,17 @@ def _block(lines: list[str], first: int, base: Path, name: str, state: State) ->
             at = raw.index(":") + 2 + len(rest) - len(rest.lstrip())
             raise MapError(name, f"{key} {text!r}: {exc}", n, at) from None
         seen[key] = value
-    return replace(state, **{_FIELDS.get(key, key.replace("-", "_")): value
-                             for key, value in seen.items()})
+        where[key] = (n, col)
+    return replace(state, **{_field(key): value for key, value in seen.items()}), where
 
 
-def _check(state: State, name: str, line: int) -> None:
-    """Refuse a combination of choices that makes no sense (the block's line)."""
+def _field(key: str) -> str:
+    """The :class:`State` field a block's ``key`` sets."""
+    return _FIELDS.get(key, key.replace("-", "_"))
+
+
+def _refused(state: State) -> str | None:
+    """Why the combination of choices in ``state`` makes no sense (None: it does)."""
     try:
         sem = state.semantics
         if state.searches:
@@ -189,7 +197,23 @@ def _check(state: State, name: str, line: int) -> None:
         else:
             sem.check(get_algorithm(state.algorithm))
     except ValueError as exc:
-        raise MapError(name, str(exc), line) from None
+        return str(exc)
+    return None
+
+
+def _check(before: State, state: State, where: dict[str, tuple[int, int]], name: str,
+           line: int) -> None:
+    """Refuse a combination of choices that makes no sense: at the key the block set last
+    without which it would make sense (``where``: the block's keys' places; ``before``: the
+    state before the block), else at the block's ``line``."""
+    reason = _refused(state)
+    if reason is None:
+        return
+    for key in reversed(list(where)):
+        field = _field(key)
+        if _refused(replace(state, **{field: getattr(before, field)})) is None:
+            raise MapError(name, reason, *where[key])
+    raise MapError(name, reason, line, 1)
 
 
 def parse_lesson(text: str, path: Path, name: str | None = None) -> Lesson:
@@ -225,8 +249,9 @@ def parse_lesson(text: str, path: Path, name: str | None = None) -> Lesson:
             close = next((i for i in range(first + 1, len(body)) if
                           body[i].strip().startswith(opened.group(2))), len(body))
             at = head + first + 2  # the block's first line, counted from 1
-            state = _block(body[first + 1:close], at + 1, path.parent, shown, state)
-            _check(state, shown, at)
+            before = state
+            state, where = _block(body[first + 1:close], at + 1, path.parent, shown, state)
+            _check(before, state, where, shown, at)
             section_state = state
             body = body[:first] + body[close + 1:]
         for i, ln in enumerate(body):

@@ -127,10 +127,11 @@ _REACHED_WORDS = {"weighted": ("was reached as cheaply", "were reached as cheapl
                   "iterative": ("was reached no deeper", "were reached no deeper")}
 
 
-def line_notes(run: Run) -> list[str]:
+def line_notes(run: Run, short: bool = False) -> list[str]:
     """What the step at ``run``'s position did by a line worth naming, for the narration:
     "line 8: (0,1) is already visited, skipped", "line 5 discards it"; none for the skips
-    off the map or into an obstacle (every step has some)."""
+    off the map or into an obstacle (every step has some).  ``short``: for a narrow pane,
+    "line 8 skipped (0,1)", "line 8 skipped 4"."""
     code = code_of(run)
     k = run.k
     if k and run.steps.is_discarded(k):
@@ -146,6 +147,10 @@ def line_notes(run: Run) -> list[str]:
         words["reached"] = _REACHED_WORDS["iterative"]
     out = []
     for kind, named in cells.items():
+        if short:
+            out.append(f"line {code.number(kind)} skipped "
+                       f"{named[0] if len(named) == 1 else len(named)}")
+            continue
         one, several = words[kind]
         listed = named[0] if len(named) == 1 else f"{', '.join(named[:-1])} and {named[-1]}"
         out.append(f"line {code.number(kind)}: {listed} "
@@ -158,4 +163,22 @@ def lit_lines(run: Run) -> frozenset[int]:
     return code_of(run).numbers(lit_kinds(run))
 
 
-__all__ = ["Skip", "code_of", "line_notes", "lit_kinds", "lit_lines", "skipped"]
+#: The lit lines that say most about a step, the most specific first: the line the
+#: narration names (a discard, a skip) or that ends the search (the goal found, a cut-off).
+FOCUS_KINDS = ("discard", "corner", "reached", "on_path", "goal_node", "goal_succ",
+               "goal_start", "cutoff", "fail")
+
+
+def focus_line(run: Run) -> int | None:
+    """The number of the most specific line the step at ``run``'s position lit
+    (:data:`FOCUS_KINDS`), the one the Code panel keeps in view; None: only the loop's
+    ordinary lines (the panel keeps the first lit line in view)."""
+    kinds = lit_kinds(run)
+    code = code_of(run)
+    for kind in FOCUS_KINDS:
+        if kind in kinds and (number := code.number(kind)) is not None:
+            return number
+    return None
+
+
+__all__ = ["FOCUS_KINDS", "Skip", "code_of", "focus_line", "line_notes", "lit_kinds", "lit_lines", "skipped"]

@@ -76,11 +76,17 @@ KEYS: list[BindingType] = [
             tooltip="Smaller cells (out of the smallest: the whole map)"),
     Binding("a", "labels", "Labels", show=False,
             tooltip="Cell labels: arrows and depth/cost, depth/cost only, none"),
-    # With a lesson open (--lesson), pgdn and pgup move between its sections instead.
-    Binding("pagedown", "lesson(1)", "Next section", group=LESSON, key_display="pgdn",
-            tooltip="Lesson: the next section"),
-    Binding("pageup", "lesson(-1)", "Section back", group=LESSON, key_display="pgup",
-            tooltip="Lesson: the section before"),
+    # With a lesson open (--lesson), pgdn and pgup move between its sections instead (or
+    # shift+right and shift+left, on a keyboard without them); shift+up and shift+down
+    # scroll its text (the lesson never takes the focus: every other key is the app's).
+    Binding("pagedown,shift+right", "lesson(1)", "Next section", group=LESSON,
+            key_display="pgdn", tooltip="Lesson: the next section (or shift+right)"),
+    Binding("pageup,shift+left", "lesson(-1)", "Section back", group=LESSON,
+            key_display="pgup", tooltip="Lesson: the section before (or shift+left)"),
+    Binding("shift+down", "lesson_scroll(1)", "Scroll lesson", show=False, key_display="⇧↓",
+            tooltip="Lesson: scroll its text down"),
+    Binding("shift+up", "lesson_scroll(-1)", "Scroll lesson back", show=False,
+            key_display="⇧↑", tooltip="Lesson: scroll its text up"),
     Binding("pageup", "page(-1)", "Page up", show=False, key_display="pgup",
             tooltip="Cursor a page up"),
     Binding("pagedown", "page(1)", "Page down", show=False, key_display="pgdn",

@@ -18,6 +18,7 @@ from tui_search.engine.algorithms import get_algorithm
 from tui_search.engine.heuristics import INADMISSIBLE
 from tui_search.engine.run import Run
 from tui_search.tui import playback
+from tui_search.tui.code_trace import line_notes
 from tui_search.tui.layout import own_lines
 from tui_search.tui.narration import frontier_word, narrate, result_text, status_parts
 from tui_search.tui.pieces import Line, Piece
@@ -29,11 +30,14 @@ SEP = (" │ ", "stats--label")
 #: comes first).
 MAX_ROWS, PANE_ROWS = 4, 3
 #: What goes first when the rows run out (the highest rank; 0 never goes).
-#: (The frontier's size goes after its peak and the counts of lesser note, before the path:
-#: the frontier's panel says it too.)
-BOUND_RANK, PLAYING_RANK, PEAK_RANK, DONE_RANK, FRONTIER_RANK, PATH_RANK = 9, 8, 7, 6, 3, 2
+#: (The frontier's size goes after its peak and the counts of lesser note: the frontier's
+#: panel says it too.)
+BOUND_RANK, PLAYING_RANK, PEAK_RANK, DONE_RANK, FRONTIER_RANK = 9, 8, 7, 6, 3
+#: The narration's naming of the code's lines (the Code panel shown) is shortened at this
+#: rank ("line 8 skipped 4"), and goes at the next (after the counts of lesser note).
+NOTES_RANK, NOTES_SHORT_RANK = 7, 2
 #: The step and the nodes expanded are what the lessons count: they never go (rank 0), they
-#: take another row instead.
+#: take another row instead (as the path's moves and cost do).
 RANKS = {"discarded": 5, "generated": 4, "step": 0, "expanded": 0}
 
 
@@ -53,9 +57,10 @@ def search_status(run: Run | None, name: str, *, in_pane: bool, playing: str = "
     Code panel shown) has the narration name the code's lines.
 
     ``in_pane``: a pane's own lines, under which its map comes first: at most
-    :data:`PANE_ROWS`, and the path and the bound may go (the comparison table under the panes
-    says them too); else the lines under the panes, at most :data:`MAX_ROWS`, and they never
-    go."""
+    :data:`PANE_ROWS`, and the bound may go (the comparison table under the panes says it
+    too), never the path's moves and cost (they wrap instead, as the step and the nodes
+    expanded do: the lessons are about them); else the lines under the panes, at most
+    :data:`MAX_ROWS`, and they never go."""
     status = [Piece([(name, "stats--value")])]
     if done and run is not None:
         status.append(Piece([(f"done at step {run.k:,}", "stats--result")], DONE_RANK, SEP))
@@ -83,11 +88,18 @@ def search_status(run: Run | None, name: str, *, in_pane: bool, playing: str = "
         line = []
     else:
         failed = run.at_end and not run.found and not run.gave_up  # "no path", in red
-        line = [Piece([(narrate(run, code), "stats--no-path" if failed else "stats--narration")])]
+        cls = "stats--no-path" if failed else "stats--narration"
+        line = [Piece([(narrate(run), cls)])]
+        if code:  # the lines named: shortened, then gone, before a count goes (a narrow pane)
+            named = "; ".join(line_notes(run))
+            if named:
+                brief = "; ".join(line_notes(run, short=True))
+                line.append(Piece([(named, cls)], NOTES_RANK, ("; ", cls), [(brief, cls)],
+                                  NOTES_SHORT_RANK))
         if run.at_end and run.found:  # the path, and the bound: what the lesson is about
-            # (a pane's own: the comparison table says them too, and the map comes first:
-            # the bound goes first, the path after the counts)
-            ranks = (PATH_RANK, BOUND_RANK) if in_pane else (0, 0)
+            # (a pane's own: the map comes first, and the comparison table says the bound
+            # too: it may go; the path's moves and cost never go, they take another row)
+            ranks = (0, BOUND_RANK) if in_pane else (0, 0)
             line += [Piece([(text, "stats--result")], rank, (" · ", "stats--label"))
                      for text, rank in zip(result_text(run).split(" · "), ranks)]
     return Status([Line(status), Line(line, prose=True)], PANE_ROWS if in_pane else MAX_ROWS)

@@ -42,6 +42,8 @@ KEYS = (
     ("]  [", "zoom in / out: bigger / smaller cells"),
     ("a", "cell labels: arrows and depth or cost, depth or cost, none"),
     ("pgup  pgdn", "cursor a page up / down; in a lesson: section back / next"),
+    ("⇧←  ⇧→", "lesson: section back / next, as pgup / pgdn (⇧ is shift)"),
+    ("⇧↑  ⇧↓", "lesson: scroll its text up / down"),
     ("S  G  e", "cursor to the start / the goal / the node being expanded"),
     ("mouse over", "the line under the map says what the run knows of that cell"),
     ("i  enter", "quiz: predict the node that comes off next (cursor, enter)"),

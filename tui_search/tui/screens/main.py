@@ -3,22 +3,22 @@ screen shows what changed (:class:`~tui_search.tui.screens.panes.PanesScreen`)."
 
 from __future__ import annotations
 
-from typing import ClassVar
+from typing import TYPE_CHECKING, ClassVar, cast
 
 from textual.binding import BindingType
 
 from tui_search.tui import playback
 from tui_search.tui.keys import KEYS
 from tui_search.tui.map_edits import brush_name
-from tui_search.tui.screens.panes import PanesScreen
+from tui_search.tui.screens.panes import NO_ROOM_FOR_CODE, PanesScreen
 from tui_search.tui.screens.settings_choice import SettingsChoice
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.key_bar import KeyBar
 
-#: What ``v`` says when no pane has room for the Code panel (no lists under a map this big).
-NO_ROOM_FOR_CODE = ("No room for the Code panel here: a taller terminal, or fewer panes, "
-                    "shows it (v hides it)")
+if TYPE_CHECKING:
+    from tui_search.tui.widgets.lesson_panel import LessonPanel
+
 
 class MainScreen(PanesScreen):
     """The panes, and every key of :mod:`~tui_search.tui.keys`."""
@@ -120,6 +120,11 @@ class MainScreen(PanesScreen):
             self._timer.pause()
             self.show_map()
             self.show_lesson()
+
+    def action_lesson_scroll(self, by: int) -> None:
+        """Scroll the lesson's text half a panel down (1) or up (-1)."""
+        for panel in self.query(".lesson"):
+            cast("LessonPanel", panel).scroll_by_half(by)
 
     def action_settings(self) -> None:
         from tui_search.engine.algorithms import get_algorithm
@@ -337,6 +342,8 @@ class MainScreen(PanesScreen):
         play = session.lesson
         if action == "page":  # pgdn and pgup: a page of cells, or a lesson's sections
             return play is None
+        if action == "lesson_scroll":
+            return play is not None
         if action == "lesson":
             if play is None:
                 return False

@@ -54,6 +54,10 @@ MIN_WIDTH, MIN_HEIGHT = 60, 20
 #: On a map too big to check an exercise at each edit, the check waits for the edits to pause
 #: this long (seconds): a mouse stroke is an edit a cell.
 EXERCISE_PAUSE = 0.3
+#: What ``v`` says when no pane has room for the Code panel (no lists under a map this big),
+#: and a refit says when the panels it showed fold (the status lines took their rows).
+NO_ROOM_FOR_CODE = ("No room for the Code panel here: a taller terminal, or fewer panes, "
+                    "shows it (v hides it)")
 #: The challenge panel's lines before it is first laid out (its border and a few of text).
 CHALLENGE_LINES = 8
 
@@ -74,6 +78,7 @@ class PanesScreen(Screen[None]):
         self._bindings_key: tuple[object, ...] = ()
         self._terrain = session.grid.costs is not None  # what the legend was drawn for
         self._fitted_lines = (-1, -1)  # the status lines' heights last fitted to
+        self._code_shown = False  # some pane showed the Code panel when last fitted
 
     # -- layout ----------------------------------------------------------------------------
     def compose(self) -> ComposeResult:
@@ -182,6 +187,10 @@ class PanesScreen(Screen[None]):
         panes_lines = self.panes[0].stats.display
         for pane in self.panes:
             pane.lay_out(arrangement, code=self.session.show_code, restyle=restyle)
+        shown = not all(p.code_panel.has_class("-folded") for p in self.panes)
+        if self._code_shown and not shown and self.session.show_code:
+            self.warn(NO_ROOM_FOR_CODE, timeout=6)  # never folded without a word
+        self._code_shown = shown
         if arrangement.pane_stats != panes_lines and self.is_mounted:
             self.present()  # the lines under the panes say the counts the panes' lines did
 

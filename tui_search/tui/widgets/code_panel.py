@@ -8,7 +8,9 @@ executed lit (:mod:`tui_search.tui.code_trace`)::
 
 A lit line starts with ``▶`` as well as taking the lit colour, so it reads without colour.  A
 line longer than the panel wraps under its own words (no number), so the code fits any width;
-the panel keeps the first lit line in view.  It repaints only the rows whose text or light
+the panel keeps the most specific lit line in view (the skip, the discard, the goal test the
+narration names: :func:`~tui_search.tui.code_trace.focus_line`), with the first lit one above
+it when both fit.  It repaints only the rows whose text or light
 changed, as the other line panels do.
 """
 
@@ -19,7 +21,7 @@ from typing import TYPE_CHECKING, Any, ClassVar
 
 from textual.geometry import Region, Size
 
-from tui_search.tui.code_trace import code_of, lit_lines
+from tui_search.tui.code_trace import code_of, focus_line, lit_lines
 from tui_search.tui.pieces import Parts
 from tui_search.tui.widgets.line_panel import LinePanel, set_virtual_size
 
@@ -87,15 +89,17 @@ class CodePanel(LinePanel):
         super().__init__(**widget_args)
         self.code: Pseudocode | None = None
         self.lit: frozenset[int] = frozenset()
+        self.focus_number: int | None = None  # the lit line kept in view (None: the first)
         self._rows: list[Parts] = []
         self._key: tuple[object, ...] = ()
 
     def show(self, run: Run) -> None:
-        """Show ``run``'s code with its position's step lit, the first lit line in view."""
-        code, lit = code_of(run), lit_lines(run)
-        if (code, lit) == (self.code, self.lit) and self._rows:
+        """Show ``run``'s code with its position's step lit, its most specific lit line in
+        view."""
+        code, lit, focus = code_of(run), lit_lines(run), focus_line(run)
+        if (code, lit, focus) == (self.code, self.lit, self.focus_number) and self._rows:
             return
-        self.code, self.lit = code, lit
+        self.code, self.lit, self.focus_number = code, lit, focus
         self.show_titles((f"Code · {code.title}", f"Code · {run.algo.short}", "Code"),
                          LEGENDS)
         self._lay_rows()
@@ -108,7 +112,7 @@ class CodePanel(LinePanel):
         if code is None:
             return
         width = self._width()
-        key = (code, self.lit, width)
+        key = (code, self.lit, self.focus_number, width)
         if key == self._key:
             return
         self._key = key
@@ -121,7 +125,18 @@ class CodePanel(LinePanel):
         """The rows of the lit lines (their first rows)."""
         return [y for y, row in enumerate(self._rows) if row[0][0].startswith(LIT_MARK)]
 
+    def line_rows(self, number: int) -> range:
+        """The rows of line ``number`` (its first, and those it wrapped to)."""
+        rows = self._rows
+        starts = [y for y, row in enumerate(rows) if row[0][0].strip()]
+        if not 1 <= number <= len(starts):
+            return range(0)
+        top = starts[number - 1]
+        return range(top, starts[number] if number < len(starts) else len(rows))
+
     def _scroll_to_lit(self) -> None:
+        """The lit lines in view, from the first: those down to the focus line when they
+        fit, else the focus line from its top."""
         window = self.scrollable_content_region
         lit = self.lit_rows()
         if not window or not lit:
@@ -129,6 +144,10 @@ class CodePanel(LinePanel):
         top, bottom = lit[0], lit[-1] + 1
         while bottom < len(self._rows) and not self._rows[bottom][0][0].strip():
             bottom += 1  # the last lit line's wrapped rows
+        number = self.focus_number
+        focus = self.line_rows(number) if number is not None else range(0)
+        if focus and focus.stop - top > window.height:  # not all at once: the focus line
+            top, bottom = focus.start, focus.stop
         self.scroll_to_region(Region(0, top, 1, min(bottom - top, window.height)),
                               animate=False, immediate=True, force=True)
 

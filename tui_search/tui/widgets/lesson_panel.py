@@ -3,18 +3,25 @@ widget), its place in the lesson in the border.
 
 Imported only when a lesson is open (``--lesson``), so the app's start-up without one does not
 load the Markdown widget.  It never takes the focus: every key still acts on the app, and
-``pgdn`` / ``pgup`` move between sections (the main screen's keys).
+``pgdn`` / ``pgup`` (or shift+right / shift+left) move between sections, shift+down / shift+up
+scroll a text longer than the panel (the main screen's keys; its border says them).
 """
 
 from __future__ import annotations
 
+from textual import events
 from textual.app import ComposeResult
 from textual.containers import VerticalScroll
 from textual.widgets import Markdown
 
+#: The keys the border says, the longest that fits the panel's width first.
+KEY_HINTS = ("pgdn/⇧→ next · pgup/⇧← back · ⇧↑↓ scroll", "⇧→ next · ⇧← back · ⇧↑↓ scroll",
+             "⇧←→ section · ⇧↑↓ scroll")
+
 
 class LessonPanel(VerticalScroll, can_focus=False):
-    """A lesson's section, scrolled by the mouse wheel if it is longer than the panel."""
+    """A lesson's section, scrolled by shift+down / shift+up or the mouse wheel if it is
+    longer than the panel."""
 
     DEFAULT_CSS = """
     LessonPanel {
@@ -42,6 +49,20 @@ class LessonPanel(VerticalScroll, can_focus=False):
     def show(self, where: str, text: str) -> None:
         """Show ``text`` (Markdown), ``where`` (``tutorial 2/10``) in the border."""
         self.border_title = f"Lesson {where}"
-        self.border_subtitle = "pgdn next · pgup back"
+        self._say_keys()
         self.document.update(text)
         self.scroll_home(animate=False)
+
+    def scroll_by_half(self, by: int) -> None:
+        """Scroll half the panel's height down (``by`` 1) or up (-1)."""
+        half = max(1, self.scrollable_content_region.height // 2)
+        self.scroll_relative(y=by * half, animate=False)
+
+    def _say_keys(self) -> None:
+        room = self.size.width - 4  # the border's corners, a space each side
+        hint = next((h for h in KEY_HINTS if len(h) <= room), KEY_HINTS[-1])
+        if self.border_subtitle != hint:
+            self.border_subtitle = hint
+
+    def on_resize(self, event: events.Resize) -> None:
+        self._say_keys()

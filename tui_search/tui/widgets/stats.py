@@ -15,7 +15,7 @@ from typing import ClassVar
 from textual import events
 from textual.message import Message
 
-from tui_search.tui.pieces import Line, line_text
+from tui_search.tui.pieces import Line, line_text, text_of
 from tui_search.tui.status_lines import MAX_ROWS
 from tui_search.tui.widgets.parts_lines import PartsLines
 
@@ -55,6 +55,7 @@ class Stats(PartsLines):
         super().__init__(id=id, classes=classes)
         self.status_text = ""
         self.narration_text = ""
+        self.short_text = ""  # each piece alone, and its short form: what may show (tests)
         self._height: int | None = None  # the rows laid out last
 
     def show(self, lines: list[Line], max_rows: int) -> None:
@@ -65,6 +66,9 @@ class Stats(PartsLines):
             *counts, narration = lines
             self.status_text = " ".join(line_text(line.pieces) for line in counts)
             self.narration_text = line_text(narration.pieces)
+            self.short_text = " ".join(text_of(parts) for line in lines
+                                       for piece in line.pieces
+                                       for parts in (piece.parts, piece.short) if parts)
 
     @property
     def wrapped(self) -> int:
