@@ -41,8 +41,8 @@ def trace_loop(trace: Trace, pick: str = "oldest", infer_discards: bool = True) 
     of a tie (uniform-cost's and A*'s: entries of one cell share their h).
 
     A step that says ``"discarded": true`` is a discarded step, and so, with
-    ``infer_discards`` (not for tree search or iterative deepening, which expand a cell
-    again), is one that takes off a cell already expanded and adds nothing.  A step that expands the start when no entry
+    ``infer_discards`` (not for tree search, iterative deepening or a priority queue, which
+    may expand a cell again), is one that takes off a cell already expanded and adds nothing.  A step that expands the start when no entry
     of it is left begins a new iteration from it (iterative deepening's restart); a cell
     expanded again with no entry left takes its latest entry again.  The goal is found where
     the trace expanded it, else (goal test on generate) where it first added it."""
@@ -127,7 +127,10 @@ def trace_run(trace: Trace, grid: Grid, algorithm: str, semantics: Semantics,
     algo = get_algorithm(algorithm)
     pick = ("newest" if algo.frontier is Frontier.LIFO
             else "cheapest" if algo.priority in ("g", "g+h") else "oldest")
-    loop = trace_loop(trace, pick, infer_discards=not (semantics.tree_search or algo.iterative))
+    # A priority queue's search may expand a cell again, adding nothing (greedy reopens a
+    # cell reached by a cheaper path): only a trace's own "discarded" says it discarded one.
+    infer = not (semantics.tree_search or algo.iterative or algo.frontier is Frontier.PRIORITY)
+    loop = trace_loop(trace, pick, infer_discards=infer)
     sem = replace(semantics, goal_test=semantics.goal_test_for(algo))
     return Run(grid, TRACE_ALGORITHM.key, sem, max_steps, Source(TRACE_ALGORITHM, loop, notes))
 
