@@ -114,8 +114,9 @@ async def test_the_prompt_fits_with_an_error_shown(size: tuple[int, int]) -> Non
 
 
 def gated(monkeypatch: pytest.MonkeyPatch) -> threading.Event:
-    """The app's generator held until the returned event is set (a big map's thread)."""
-    import tui_search.tui.files
+    """The app's generator held until the returned event is set (a big map's thread).  The
+    app imports it when a map is generated, so the engine's module is the one patched."""
+    import tui_search.engine.generate
 
     gate = threading.Event()
 
@@ -123,7 +124,7 @@ def gated(monkeypatch: pytest.MonkeyPatch) -> threading.Event:
         assert gate.wait(10), "the test never let the generator go"
         return generate(recipe)
 
-    monkeypatch.setattr(tui_search.tui.files, "generate", held)
+    monkeypatch.setattr(tui_search.engine.generate, "generate", held)
     return gate
 
 
