@@ -724,6 +724,26 @@ async def test_question_mark_opens_help_and_escape_closes_it() -> None:
         await wait_until(pilot, lambda: not isinstance(app.screen, HelpScreen))
 
 
+@sync
+async def test_help_names_the_search_core_that_runs(monkeypatch) -> None:
+    """Where pip hid the build's warning, the help screen's last line says which core runs."""
+    from textual.widgets import Static
+
+    from tui_search.engine.loops import compiled
+
+    monkeypatch.setenv(compiled.CORE_ENV, "python")
+    compiled.selected.cache_clear()
+    try:
+        app = tutorial_app()
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.press("question_mark")
+            await screen_shown(pilot, HelpScreen)
+            about = app.screen.query_one("#help-about", Static)
+            assert str(about.render()).endswith("(Python search core)")
+    finally:
+        compiled.selected.cache_clear()
+
+
 def test_help_lists_every_key_of_the_binding_table() -> None:
     from textual.binding import Binding
 

@@ -91,6 +91,15 @@ def keys_text() -> Text:
     return out
 
 
+def about_text() -> str:
+    """The version and the search core that runs, as ``tui-search --version`` says them (a
+    user without a C compiler learns here that the Python core runs, and why)."""
+    from tui_search import __version__
+    from tui_search.engine.loops.compiled import core_name
+
+    return f"tui-search {__version__} ({core_name()})"
+
+
 class HelpScreen(ModalScreen[None]):
     """Keys, colours and a few lines on the searches; any of escape, ? or q closes it."""
 
@@ -128,3 +137,5 @@ class HelpScreen(ModalScreen[None]):
             yield Legend(self._view)
             yield Static("How the searches work", classes="help-heading")
             yield Static(HOW)
+            yield Static("About", classes="help-heading")
+            yield Static(about_text(), id="help-about")
