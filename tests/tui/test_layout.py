@@ -11,6 +11,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from tests.tui.test_app import TUTORIAL, sync, wait_until
+from tui_search.engine.grid import Grid
 from tui_search.engine.mapfile import load_map
 from tui_search.tui.app import SearchApp
 from tui_search.tui.layout import CODE_MIN_HEIGHT, arrange
@@ -224,6 +225,27 @@ async def test_the_first_layouts_classes_are_styled(size: tuple[int, int]) -> No
         assert not pane.code_panel.is_mounted  # folded: mounted the first time it shows
         for panel in (pane.tree_panel,):
             assert panel.styles.display == ("none" if panel.has_class("-folded") else "block")
+
+
+@pytest.mark.parametrize("no_run", [False, True])
+@sync
+async def test_every_part_of_a_pane_is_visible_in_its_hidden_boxes(no_run: bool) -> None:
+    """The boxes of a pane's lists and map are hidden (app.tcss: they paint nothing, and
+    hidden, Textual does not render them) and visibility is inherited: each part they hold
+    (the panels, the Code panel, the note, the map) must be made visible again."""
+    from tui_search.tui.widgets.run_pane import RunPane
+
+    app = SearchApp(Grid(20, 8)) if no_run else SearchApp(load_map(TUTORIAL), compare="bfs,dfs")
+    async with app.run_test(size=(160, 50)) as pilot:
+        await pilot.press("v")  # the Code panel mounted too
+        panes = list(app.screen.query(RunPane))
+        await wait_until(pilot, lambda: all(p.side_note.is_mounted if no_run
+                                            else p.code_panel.is_mounted for p in panes))
+        for pane in panes:
+            assert not pane.lists.visible and not pane.map_box.visible
+            parts = [w for w in pane.walk_children() if not w.children]
+            assert pane.view in parts and parts
+            assert all(w.visible for w in parts), [w for w in parts if not w.visible]
 
 
 def test_the_code_panel_needs_fewer_lines_than_a_tree() -> None:
