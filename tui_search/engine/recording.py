@@ -12,6 +12,7 @@ from __future__ import annotations
 from array import array
 from bisect import bisect_right
 from collections.abc import Generator, Iterator
+from dataclasses import dataclass
 from typing import NamedTuple, cast
 
 from tui_search.engine.algorithms import Algorithm, get_algorithm
@@ -23,7 +24,8 @@ from tui_search.engine.record import CHUNK, Record
 from tui_search.engine.semantics import Semantics
 
 
-class Step(NamedTuple):  # not a dataclass, which compiles its methods at import
+@dataclass(frozen=True, slots=True)
+class Step:
     """One step: the node taken off the frontier and the successors it added, in order (none
     for a discarded step, which took off a cell already expanded)."""
 
