@@ -18,7 +18,6 @@ their session.
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -41,15 +40,17 @@ def config_path() -> Path:
     return Path(folder) / FILE_NAME
 
 
-@dataclass
 class Config:
     """The config file as read: its keys (kept when saving), and why it was not used."""
 
-    path: Path
-    data: dict[str, Any] = field(default_factory=dict)
-    problem: str | None = None  # one line for the user, or None when all is well
-    keep: bool = False  # the file could not be read as a config: never write over it
-    writable: bool = True  # False: choices are kept in memory only (the served app)
+    # Not a dataclass, which compiles its methods when the app starts.
+    def __init__(self, path: Path, data: dict[str, Any] | None = None, problem: str | None = None,
+                 keep: bool = False, writable: bool = True) -> None:
+        self.path = path
+        self.data: dict[str, Any] = data if data is not None else {}
+        self.problem = problem  # one line for the user, or None when all is well
+        self.keep = keep  # the file could not be read as a config: never write over it
+        self.writable = writable  # False: choices are kept in memory only (the served app)
 
     @classmethod
     def in_memory(cls) -> Config:

@@ -15,8 +15,6 @@ mouse stroke into one edit (:meth:`History.begin_stroke`, :meth:`History.end_str
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-
 from tui_search.engine.grid import Cell, Grid
 
 #: The edits kept: older ones can no longer be undone.
@@ -26,15 +24,18 @@ MAX_EDITS = 1000
 Ends = tuple[Cell | None, Cell | None]
 
 
-@dataclass
 class Edit:
     """One edit: ``walls`` lists ``(cell, blocked before, blocked after)`` in the order the
     cells changed, ``costs`` ``(cell, cost before, cost after)`` (the terrain brush); ``ends``
     is the start and goal before and after (None: they stayed)."""
 
-    walls: list[tuple[Cell, bool, bool]] = field(default_factory=list)
-    ends: tuple[Ends, Ends] | None = None
-    costs: list[tuple[Cell, float, float]] = field(default_factory=list)
+    # Not a dataclass, which compiles its methods when the app starts.
+    def __init__(self, walls: list[tuple[Cell, bool, bool]] | None = None,
+                 ends: tuple[Ends, Ends] | None = None,
+                 costs: list[tuple[Cell, float, float]] | None = None) -> None:
+        self.walls = walls if walls is not None else []
+        self.ends = ends
+        self.costs = costs if costs is not None else []
 
     def apply(self, grid: Grid, undo: bool) -> Cell:
         """Put ``grid`` as it was before this edit (``undo``) or after it; the cell the edit

@@ -14,8 +14,7 @@ objects when the app starts.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, TypedDict
+from typing import TYPE_CHECKING, NamedTuple, TypedDict
 
 if TYPE_CHECKING:
     from textual.theme import Theme
@@ -36,16 +35,15 @@ class Colours(TypedDict, total=False):
     panel: str
 
 
-@dataclass(frozen=True)
-class ThemeSpec:
+class ThemeSpec(NamedTuple):  # not a frozen dataclass: that compiles six methods at import
     """One theme as data: what the palette and ``--help`` say of it, and its colours (the
-    fields of :class:`textual.theme.Theme`, and any CSS variables it sets)."""
+    fields of :class:`textual.theme.Theme`, and the CSS variables it sets)."""
 
     name: str
     title: str  # the palette's "Theme: <title>"
     description: str
     colours: Colours
-    variables: dict[str, str] = field(default_factory=dict)
+    variables: dict[str, str]
     dark: bool = True
 
 
@@ -70,7 +68,7 @@ THEMES: dict[str, ThemeSpec] = {
         ThemeSpec("dark", "Dark", "light text on a dark background (the default)",
                   {"primary": "#0178D4", "secondary": "#004578", "accent": "#ffa62b",
                    "warning": "#ffa62b", "error": "#ba3c5b", "success": "#4EBF71",
-                   "foreground": "#e0e0e0"}),
+                   "foreground": "#e0e0e0"}, {}),
         # A projector washes out pale tints and thin dark-on-dark contrast: near-black text on
         # white, and cells filled with strong, dark colours carrying white glyphs.
         ThemeSpec("light", "Light (projector)",

@@ -9,38 +9,42 @@ rule (the hot paths), or graph search under any other choice.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
-from functools import partial
+from functools import cache, partial
 
 from tui_search.engine.algorithms import Algorithm
-from tui_search.engine.loops.best_first import best_first, best_first_tree
 from tui_search.engine.loops.compiled import compiled_loop
-from tui_search.engine.loops.general import general
-from tui_search.engine.loops.iddfs import iddfs
-from tui_search.engine.loops.tree import tree
-from tui_search.engine.loops.tutorial import bfs, dfs
 from tui_search.engine.problem import Problem, corner_free
 from tui_search.engine.record import Record
 from tui_search.engine.semantics import Semantics
 
 Loop = Callable[[Problem, Record, int], Iterator[int]]
 
-#: The loop of each (family, rules): the family is a frontier's value or "iterative", the
-#: rules "tutorial", "graph" or "tree" (:func:`rules`).  A priority queue's loop is also given
-#: the algorithm's priority.
-LOOPS: dict[tuple[str, str], Callable[..., Iterator[int]]] = {
-    ("fifo", "tutorial"): bfs,
-    ("lifo", "tutorial"): dfs,
-    ("fifo", "graph"): partial(general, lifo=False),
-    ("lifo", "graph"): partial(general, lifo=True),
-    ("fifo", "tree"): partial(tree, lifo=False),
-    ("lifo", "tree"): partial(tree, lifo=True),
-    ("priority", "tutorial"): best_first,
-    ("priority", "graph"): best_first,
-    ("priority", "tree"): best_first_tree,
-    ("iterative", "tutorial"): iddfs,
-    ("iterative", "graph"): iddfs,
-    ("iterative", "tree"): iddfs,
-}
+@cache
+def python_loops() -> dict[tuple[str, str], Callable[..., Iterator[int]]]:
+    """The Python loop of each (family, rules): the family is a frontier's value or
+    "iterative", the rules "tutorial", "graph" or "tree" (:func:`rules`).  A priority queue's
+    loop is also given the algorithm's priority."""
+    # Imported here: a start whose searches run in the compiled core does without them.
+    from tui_search.engine.loops.best_first import best_first, best_first_tree
+    from tui_search.engine.loops.general import general
+    from tui_search.engine.loops.iddfs import iddfs
+    from tui_search.engine.loops.tree import tree
+    from tui_search.engine.loops.tutorial import bfs, dfs
+
+    return {
+        ("fifo", "tutorial"): bfs,
+        ("lifo", "tutorial"): dfs,
+        ("fifo", "graph"): partial(general, lifo=False),
+        ("lifo", "graph"): partial(general, lifo=True),
+        ("fifo", "tree"): partial(tree, lifo=False),
+        ("lifo", "tree"): partial(tree, lifo=True),
+        ("priority", "tutorial"): best_first,
+        ("priority", "graph"): best_first,
+        ("priority", "tree"): best_first_tree,
+        ("iterative", "tutorial"): iddfs,
+        ("iterative", "graph"): iddfs,
+        ("iterative", "tree"): iddfs,
+    }
 
 
 def family(algorithm: Algorithm) -> str:
@@ -60,11 +64,12 @@ def rules(algorithm: Algorithm, semantics: Semantics) -> str:
 
 def loop_for(algorithm: Algorithm, semantics: Semantics) -> Loop:
     """The fastest loop that implements ``algorithm`` under ``semantics``: the compiled
-    core's when it runs (:mod:`~tui_search.engine.loops.compiled`), else the table's."""
+    core's when it runs (:mod:`~tui_search.engine.loops.compiled`), else the table's
+    (:func:`python_loops`)."""
     compiled = compiled_loop(algorithm)
     if compiled is not None:
         return compiled
-    loop = LOOPS[family(algorithm), rules(algorithm, semantics)]
+    loop = python_loops()[family(algorithm), rules(algorithm, semantics)]
     if algorithm.priority is not None:
         return partial(loop, priority=algorithm.priority)
     return loop

@@ -28,7 +28,6 @@ cell to mark (:meth:`FrontierPanel.set_pick`), so the pick is always the app's c
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, ClassVar
 
 from rich.style import Style
@@ -103,14 +102,13 @@ class FrontierPanel(LinePanel):
         Binding("down", "scroll_down", "Scroll Down", show=False),
     ]
 
-    @dataclass
-    class EntryPicked(Message):
+    class EntryPicked(Message):  # not a dataclass: see GridView.CellClicked
         """The quiz: the student picked the entry of ``cell`` (``answer``: and answers with
         it, a double click)."""
 
-        panel: FrontierPanel
-        cell: Cell
-        answer: bool = False
+        def __init__(self, panel: FrontierPanel, cell: Cell, answer: bool = False) -> None:
+            super().__init__()
+            self.panel, self.cell, self.answer = panel, cell, answer
 
         @property
         def control(self) -> FrontierPanel:

@@ -21,7 +21,6 @@ what the mouse did (``CellClicked``, ...); the screen decides what an edit means
 from __future__ import annotations
 
 from collections.abc import Iterable
-from dataclasses import dataclass
 from itertools import groupby
 
 from rich.segment import Segment
@@ -59,28 +58,31 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
     arrow keys move the cursor rather than scroll.
     """
 
-    @dataclass
+    # The messages write their __init__ rather than being dataclasses: a dataclass compiles
+    # its methods at import (~1.3 M instructions each of the app's start).
     class CellClicked(Message):
         """The mouse went down on a map cell (button 1 left, 3 right)."""
 
-        cell: Cell
-        button: int
+        def __init__(self, cell: Cell, button: int) -> None:
+            super().__init__()
+            self.cell, self.button = cell, button
 
-    @dataclass
     class CellDragged(Message):
         """The mouse, still down since a ``CellClicked``, moved onto another cell."""
 
-        cell: Cell
+        def __init__(self, cell: Cell) -> None:
+            super().__init__()
+            self.cell = cell
 
-    @dataclass
     class StrokeEnded(Message):
         """The mouse button went up after a click or a drag."""
 
-    @dataclass
     class CellHovered(Message):
         """The mouse, no button down, moved onto another cell (None: off the map)."""
 
-        cell: Cell | None
+        def __init__(self, cell: Cell | None) -> None:
+            super().__init__()
+            self.cell = cell
 
     COMPONENT_CLASSES = {f"grid-view--{name}" for name in COMPONENTS + RAMP_COMPONENTS} | {
         "grid-view--cursor", "grid-view--marked"}
