@@ -27,14 +27,14 @@ def test_replay_opens_the_app_beside_the_search_the_trace_matches(
     (app,) = opened
     session = app.session
     assert session.labels == ["your trace", "BFS"]
-    assert session.replay is not None and session.replay.verdict.matches
+    assert session.jumps.replay is not None and session.jumps.replay.verdict.matches
 
 
 def test_with_a_and_choices_it_replays_beside_that_search(capsys, opened,
                                                           student_trace: Path) -> None:  # noqa: F811
     assert run_cli(capsys, MAP, "--replay", str(student_trace), "-a", "dfs", "--order",
                    "N,W,S,E")[0] == 0
-    replay = opened[0].session.replay
+    replay = opened[0].session.jumps.replay
     assert replay.algorithm == "dfs" and replay.semantics.order == ("N", "W", "S", "E")
     assert replay.sentence().startswith(f"step {replay.step}: your trace expands ")
 

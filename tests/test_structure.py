@@ -9,6 +9,7 @@ from pathlib import Path
 
 import tui_search
 from tui_search.tui.app import SearchApp
+from tui_search.tui.session import Session
 
 PACKAGE = Path(tui_search.__file__).parent
 MAX_LINES, APP_LINES = 450, 300
@@ -30,12 +31,29 @@ def test_no_module_is_over_450_lines() -> None:
     assert long == {}, f"files over {MAX_LINES} lines (split them by job): {long}"
 
 
-def test_the_app_is_thin_and_has_no_mixins() -> None:
+def own_bases(cls: type) -> list[type]:
+    """The project's classes ``cls`` inherits from (a mixin stack): none, for a class whose
+    parts are attributes it has."""
+    return [base for base in cls.__mro__[1:] if base.__module__.startswith("tui_search")]
+
+
+def test_the_app_is_thin() -> None:
     app = PACKAGE / "tui" / "app.py"
     assert len(app.read_text(encoding="utf-8").splitlines()) <= APP_LINES
-    own_bases = [base for base in SearchApp.__mro__[1:] if base.__module__.startswith("tui_search")]
-    assert own_bases == [], f"the app inherits from the project's classes: {own_bases}"
     assert not (PACKAGE / "tui" / "mixin.py").exists()
+
+
+def test_the_app_and_the_session_have_parts_not_bases() -> None:
+    """No mixins, in the app or in the session it drives: the map's edits and the replay's
+    jumps are parts the session has (``session.edits``, ``session.jumps``)."""
+    for cls in (SearchApp, Session):
+        assert own_bases(cls) == [], f"{cls.__name__} inherits from the project's classes"
+
+    class Mixin:
+        pass
+
+    Mixin.__module__ = "tui_search.tui.mixin"
+    assert own_bases(type("Stacked", (Mixin,), {})) == [Mixin]  # the check sees a mixin
 
 
 #: Attributes that would be a "compare or not" flag, whatever reads them.

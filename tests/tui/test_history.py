@@ -33,21 +33,22 @@ def edit(session: Session, what: tuple[object, ...]) -> bool:
     """Make the edit ``what`` as the screen does; True when it changed the map."""
     if what[0] == "stroke":
         cells: list[tuple[int, int]] = what[1]  # type: ignore[assignment]
-        history, grid = session.history, session.grid
+        history, grid = session.edits.history, session.grid
         first = cells[0]
         if first in (grid.start, grid.goal):
             return False
         history.begin_stroke()
         paint = not grid.is_blocked(first)
         session.move_cursor(first)
-        changed = session.toggle_wall() is None
+        changed = session.edits.toggle_wall(session.cursor) is None
         for cell in cells[1:]:
-            changed = session.paint(cell, paint) or changed
+            changed = session.edits.paint(cell, paint) or changed
         history.end_stroke()
         return changed
     kind, x, y = what
     session.move_cursor((x, y))  # type: ignore[arg-type]
-    refusal = session.toggle_wall() if kind == "wall" else session.place(kind)  # type: ignore[arg-type]
+    edits, at = session.edits, session.cursor
+    refusal = edits.toggle_wall(at) if kind == "wall" else edits.place(kind, at)  # type: ignore[arg-type]
     return refusal is None
 
 
@@ -63,15 +64,15 @@ def test_undoing_every_edit_gives_the_map_back_and_redoing_them_the_edited_one(
             states.append(snapshot(session.grid))
     assert session.dirty == (len(states) > 1)
     for state in reversed(states[:-1]):  # one undo a recorded edit: a stroke is one
-        assert session.undo() is None
+        assert session.edits.undo() is None
         assert snapshot(session.grid) == state
-    assert session.undo() == "Nothing to undo"
+    assert session.edits.undo() == "Nothing to undo"
     assert snapshot(session.grid) == original and not session.dirty
     assert session.title == "tutorial.txt"
     for state in states[1:]:
-        assert session.undo(redo=True) is None
+        assert session.edits.undo(redo=True) is None
         assert snapshot(session.grid) == state
-    assert session.undo(redo=True) == "Nothing to redo"
+    assert session.edits.undo(redo=True) == "Nothing to redo"
     assert session.dirty == (len(states) > 1)
 
 
@@ -83,11 +84,11 @@ def test_a_new_edit_after_undo_drops_the_edits_undone(
     for what in edits:
         edit(session, what)
     for _ in range(undos):
-        session.undo()
+        session.edits.undo()
     before = snapshot(session.grid)
     if edit(session, new):
-        assert not session.history.can_redo() and session.dirty
-        assert session.undo() is None and snapshot(session.grid) == before
+        assert not session.edits.history.can_redo() and session.dirty
+        assert session.edits.undo() is None and snapshot(session.grid) == before
     else:
         assert snapshot(session.grid) == before
 
@@ -96,59 +97,59 @@ def test_an_edit_makes_new_runs_and_undo_does_too_with_the_cursor_on_the_cell() 
     session = tutorial()
     session.step(forward=True)
     session.move_cursor((1, 2))
-    assert session.toggle_wall() is None and session.title == "tutorial.txt · modified"
+    assert session.edits.toggle_wall(session.cursor) is None and session.title == "tutorial.txt · modified"
     session.step(forward=True)
     session.move_cursor((4, 4))
     old = session.runs[0]
-    assert session.undo() is None
+    assert session.edits.undo() is None
     assert session.cursor == (1, 2) and not session.grid.is_blocked((1, 2))
     assert session.runs[0] is not old and session.runs[0].k == 0
     assert session.runs[0].grid == session.grid and not session.dirty
-    assert session.undo(redo=True) is None and session.grid.is_blocked((1, 2)) and session.dirty
+    assert session.edits.undo(redo=True) is None and session.grid.is_blocked((1, 2)) and session.dirty
 
 
 def test_undoing_a_moved_start_puts_it_back_and_the_cursor_on_it() -> None:
     session = tutorial()
     session.move_cursor((0, 2))
-    assert session.place("start") is None and session.grid.start == (0, 2)
-    assert session.undo() is None
+    assert session.edits.place("start", session.cursor) is None and session.grid.start == (0, 2)
+    assert session.edits.undo() is None
     assert session.grid.start == (0, 0) and session.cursor == (0, 0)
-    assert session.undo(redo=True) is None
+    assert session.edits.undo(redo=True) is None
     assert session.grid.start == (0, 2) and session.cursor == (0, 2)
 
 
 def test_a_save_is_the_new_clean_point(tmp_path: object) -> None:
     session = tutorial()
     session.move_cursor((1, 2))
-    session.toggle_wall()
+    session.edits.toggle_wall(session.cursor)
     session.saved(TUTORIAL)  # what a save does once the file is written
     assert not session.dirty
-    session.undo()
+    session.edits.undo()
     assert session.dirty  # the file holds the obstacle now
-    session.undo(redo=True)
+    session.edits.undo(redo=True)
     assert not session.dirty
 
 
 def test_a_save_in_the_edits_undone_is_lost_by_a_new_edit() -> None:
     session = tutorial()
     session.move_cursor((1, 2))
-    session.toggle_wall()
+    session.edits.toggle_wall(session.cursor)
     session.saved(TUTORIAL)
-    session.undo()
+    session.edits.undo()
     session.move_cursor((2, 2))
-    session.toggle_wall()  # the state saved can no longer be reached
+    session.edits.toggle_wall(session.cursor)  # the state saved can no longer be reached
     assert session.dirty
-    session.undo()
+    session.edits.undo()
     assert session.dirty  # the map as read, not as saved
 
 
 def test_a_new_map_has_a_new_history() -> None:
     session = tutorial()
     session.move_cursor((1, 2))
-    session.toggle_wall()
+    session.edits.toggle_wall(session.cursor)
     session.use_map(load_map(TUTORIAL), TUTORIAL)
-    assert not session.history.can_undo() and not session.dirty
-    assert session.undo() == "Nothing to undo"
+    assert not session.edits.history.can_undo() and not session.dirty
+    assert session.edits.undo() == "Nothing to undo"
 
 
 def test_the_history_keeps_the_last_edits_only() -> None:

@@ -55,7 +55,7 @@ async def test_replay_steps_both_ways_in_lockstep_and_jumps_to_the_difference() 
         assert "moves N,W,S,E" in panes[1].stats.status_text
         # the first difference: in the status line from the start, and marked on both maps
         assert "step 9: your trace expands" in status(app)
-        got, expected = session.replay.marks()
+        got, expected = session.jumps.replay.marks()
         assert got is not None and expected is not None and got != expected
         assert [p.view.mark for p in panes] == [got, expected]
         # stepping: both runs, both ways
@@ -85,11 +85,11 @@ async def test_a_trace_that_matches_has_no_difference_key_and_an_edit_ends_the_r
     async with app.run_test(size=(120, 40)) as pilot:
         session = app.session
         assert "your trace matches BFS" in status(app)
-        assert session.difference_step is None
+        assert session.jumps.difference_step is None
         assert app.screen.check_action("difference", ()) is False
         assert all(v.mark is None for v in app.screen.query(GridView))
         await pilot.press("down", "o")  # an obstacle under the trace: the replay is over
-        await wait_until(pilot, lambda: session.replay is None)
+        await wait_until(pilot, lambda: session.jumps.replay is None)
         await wait_until(pilot, lambda: [p.label for p in app.screen.query(RunPane)] == ["BFS"])
         assert "replay of your trace is over" in status(app)
 
@@ -99,17 +99,17 @@ def test_the_session_jumps_to_the_difference_and_back_from_anywhere() -> None:
     step to go back to) it stays; another search ends the replay."""
     session = replay_app().session
     session.goto(4)
-    session.to_difference()
+    session.jumps.to_difference()
     assert [r.k for r in session.runs] == [9, 9]
-    session.to_difference()
+    session.jumps.to_difference()
     assert [r.k for r in session.runs] == [4, 4]
     session.goto(9)
-    session.to_difference()
+    session.jumps.to_difference()
     assert [r.k for r in session.runs] == [9, 9]
-    assert session.lockstep_sentence(80).endswith("· d: to it and back")
+    assert session.jumps.lockstep_sentence(80).endswith("· d: to it and back")
     session.choose_algorithm("dfs")
-    assert session.replay is None and session.labels == ["DFS"]
-    assert session.marks() == [None] and session.difference_step is None
+    assert session.jumps.replay is None and session.labels == ["DFS"]
+    assert session.jumps.marks() == [None] and session.jumps.difference_step is None
 
 
 @sync

@@ -88,13 +88,13 @@ def test_an_edit_marks_the_map_and_restarts_every_run() -> None:
     session.step(forward=True)
     old = list(session.runs)
     session.move_cursor((1, 2))
-    assert session.toggle_wall() is None and session.grid.is_blocked((1, 2)) and session.dirty
+    assert session.edits.toggle_wall(session.cursor) is None and session.grid.is_blocked((1, 2)) and session.dirty
     assert steps(session) == [0, 0] and not set(session.runs) & set(old)
     assert session.title == "tutorial.txt · modified"
-    refusal = session.place("start")  # on the obstacle just made
+    refusal = session.edits.place("start", session.cursor)  # on the obstacle just made
     assert refusal == "Cannot put the start on an obstacle at (1,2)"
-    assert not session.paint((1, 2), wall=True)  # already an obstacle: no edit
-    assert session.paint((1, 2), wall=False) and not session.grid.is_blocked((1, 2))
+    assert not session.edits.paint((1, 2), wall=True)  # already an obstacle: no edit
+    assert session.edits.paint((1, 2), wall=False) and not session.grid.is_blocked((1, 2))
     assert not session.move_cursor((99, 0)) and session.cursor == (1, 2)
 
 

@@ -139,7 +139,7 @@ async def test_b_picks_a_cost_the_key_bar_says_it_and_m_paints_it_and_undo_takes
         session = app.session
         assert brush_hint(app) is None  # no brush: no paint hint
         await pilot.press("b")
-        assert session.brush == BRUSHES[0]
+        assert session.edits.brush == BRUSHES[0]
         await wait_until(pilot, lambda: brush_hint(app) == "Paint cost 2")
         await pilot.press("b", "b")
         await wait_until(pilot, lambda: brush_hint(app) == "Paint cost 5")
@@ -152,7 +152,7 @@ async def test_b_picks_a_cost_the_key_bar_says_it_and_m_paints_it_and_undo_takes
         assert session.grid.cost((0, 5)) == 5.0
         for _ in range(len(BRUSHES) - 2):
             await pilot.press("b")
-        assert session.brush is None
+        assert session.edits.brush is None
         await wait_until(pilot, lambda: brush_hint(app) is None)
 
 
@@ -161,9 +161,9 @@ async def test_the_palette_picks_the_brush() -> None:
     app = mud_app()
     async with app.run_test(size=SIZE) as pilot:
         await palette_run(pilot, "Terrain brush: cost 9")
-        assert app.session.brush == 9.0
+        assert app.session.edits.brush == 9.0
         await palette_run(pilot, "Terrain brush: off")
-        assert app.session.brush is None
+        assert app.session.edits.brush is None
 
 
 @sync
@@ -209,21 +209,21 @@ def test_painting_a_cost_lapses_the_benchmarks_optimum_and_undo_brings_it_back()
     session = Session(grid, semantics=replace(DEFAULT_SEMANTICS, corners="never"),
                       optimal_cost=3.0)
     assert session.run.known_lowest == 3.0
-    session.brush, session.cursor = 5.0, (1, 0)
-    assert session.paint_cost() is None
+    session.edits.brush, session.cursor = 5.0, (1, 0)
+    assert session.edits.paint_cost(session.cursor) is None
     assert session.run.known_lowest is None  # the .scen's optimum no longer applies
-    session.undo()
+    session.edits.undo()
     assert session.run.known_lowest == 3.0
 
 
 def test_the_brush_refuses_an_obstacle_and_undo_of_an_obstacle_keeps_the_terrain() -> None:
     session = Session(load_map(MUD))
-    session.brush, session.cursor = 2.0, (3, 1)  # mud
-    session.brush = 9.0
-    assert session.paint_cost() == "(3,1) already costs 9"
-    session.toggle_wall()  # an obstacle on the mud
-    assert session.paint_cost() == "Cannot paint terrain on an obstacle at (3,1)"
-    session.undo()
+    session.edits.brush, session.cursor = 2.0, (3, 1)  # mud
+    session.edits.brush = 9.0
+    assert session.edits.paint_cost(session.cursor) == "(3,1) already costs 9"
+    session.edits.toggle_wall(session.cursor)  # an obstacle on the mud
+    assert session.edits.paint_cost(session.cursor) == "Cannot paint terrain on an obstacle at (3,1)"
+    session.edits.undo()
     assert session.grid == load_map(MUD)  # the mud is back under it
 
 

@@ -1,12 +1,14 @@
 """The session's edits of the map: start and goal, obstacles, the terrain brush, and undo.
 
-A mixin of :class:`~tui_search.tui.session.Session` (no Textual): each edit changes the grid
-through :mod:`~tui_search.tui.editing`, is recorded in the history
-(:mod:`~tui_search.tui.history`: a key press or a whole mouse stroke is one edit), and starts
-new runs at step 0.
+A part the :class:`~tui_search.tui.session.Session` has (``session.edits``; no Textual): each
+edit changes the grid through :mod:`~tui_search.tui.editing`, is recorded in the history
+(:mod:`~tui_search.tui.history`: a key press or a whole mouse stroke is one edit), and tells
+the session, which starts new runs at step 0.
 """
 
 from __future__ import annotations
+
+from collections.abc import Callable
 
 from tui_search.engine.grid import Cell, Grid
 from tui_search.tui.editing import paint_terrain, place, set_wall
@@ -23,32 +25,33 @@ def brush_name(cost: float) -> str:
 
 
 class MapEdits:
-    """Edits at the cursor (keys) or at a cell (mouse strokes): None, or why not."""
+    """The edits of one map, at a cell (the cursor's, for a key; a mouse stroke's): None, or
+    why not.  ``on_edit`` is called after every edit and undo, with the cell an undo or a redo
+    puts the cursor on (None for an edit, made where the cursor or the stroke is)."""
 
-    grid: Grid
-    history: History
-    cursor: Cell
-    #: The terrain brush's cost (None: off): what ``m`` and a mouse stroke paint.
-    brush: float | None = None
-
-    def new_runs(self, note: str = "") -> None:
-        raise NotImplementedError
+    def __init__(self, grid: Grid, on_edit: Callable[[Cell | None], None],
+                 brush: float | None = None) -> None:
+        self.grid = grid
+        self.history = History()  # the map's edits: undo, redo, and "modified"
+        #: The terrain brush's cost (None: off): what ``m`` and a mouse stroke paint.
+        self.brush = brush
+        self._on_edit = on_edit
 
     def _edited(self, refusal: str | None, edit: Edit) -> str | None:
         if refusal is None:
             self.history.add(edit)
-            self.new_runs()
+            self._on_edit(None)
         return refusal
 
-    def place(self, what: str) -> str | None:
-        """The start or the goal at the cursor: None, or why not."""
+    def place(self, what: str, cell: Cell) -> str | None:
+        """The start or the goal at ``cell``: None, or why not."""
         grid = self.grid
         before = (grid.start, grid.goal)
-        refusal = place(grid, what, self.cursor)
+        refusal = place(grid, what, cell)
         return self._edited(refusal, Edit(ends=(before, (grid.start, grid.goal))))
 
-    def toggle_wall(self) -> str | None:
-        return self._set_wall(self.cursor, not self.grid.is_blocked(self.cursor))
+    def toggle_wall(self, cell: Cell) -> str | None:
+        return self._set_wall(cell, not self.grid.is_blocked(cell))
 
     def _set_wall(self, cell: Cell, wall: bool) -> str | None:
         cost = self.grid.cost(cell)  # an obstacle costs 1: undo puts the terrain back
@@ -70,9 +73,8 @@ class MapEdits:
         self.brush = (BRUSHES + (None,))[at + 1]
         return self.brush
 
-    def paint_cost(self, cell: Cell | None = None) -> str | None:
-        """The brush's cost on ``cell`` (the cursor's by default): None, or why not."""
-        cell = self.cursor if cell is None else cell
+    def paint_cost(self, cell: Cell) -> str | None:
+        """The brush's cost on ``cell``: None, or why not."""
         cost = self.brush
         if cost is None:
             return NO_BRUSH
@@ -95,10 +97,8 @@ class MapEdits:
         cell = history.redo(self.grid) if redo else history.undo(self.grid)
         if cell is None:
             return "Nothing to redo" if redo else "Nothing to undo"
-        self.cursor = cell
-        self.new_runs()
+        self._on_edit(cell)
         return None
-
 
 
 __all__ = ["BRUSHES", "NO_BRUSH", "MapEdits", "brush_name"]

@@ -1,7 +1,8 @@
 """The session's replay (``--replay FILE``): a trace beside the search it matches, where they
 first part, and the key that jumps there and back.
 
-A mixin of :class:`~tui_search.tui.session.Session` (no Textual): the replay itself
+A part the :class:`~tui_search.tui.session.Session` has (``session.jumps``; no Textual): the
+replay itself
 (:class:`~tui_search.engine.trace_replay.Replay`) gives the two runs, the cells to mark and
 the sentence; the session shows them while the map, the rules and the searches shown stay as
 they were.
@@ -9,6 +10,7 @@ they were.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from tui_search.engine.grid import Cell
@@ -26,26 +28,30 @@ LOCKSTEP_SHORT = "Lockstep: n, p and end move every search · 1-6 add or take ou
 
 
 class ReplayJumps:
-    """The replay's first difference: its step, its marks, its sentence, the jump."""
+    """The replay's first difference: its step, its marks, its sentence, the jump.  ``runs``
+    gives the session's runs as they are now, ``goto`` moves them all to a step."""
 
-    runs: list[Run]
-    #: ``--replay``: a trace beside the search it matches (None: none).
-    replay: Replay | None = None
-    _back: int | None = None  # the step the difference key came from
+    def __init__(self, replay: Replay | None, runs: Callable[[], list[Run]],
+                 goto: Callable[[int], None]) -> None:
+        #: ``--replay``: a trace beside the search it matches (None: none, or it is over).
+        self.replay = replay
+        self._runs, self._goto = runs, goto
+        self._back: int | None = None  # the step the difference key came from
 
-    def goto(self, k: int | None) -> None:
-        raise NotImplementedError
+    def end(self) -> None:
+        """The replay is over (the map, the rules or the searches changed)."""
+        self.replay, self._back = None, None
 
     @property
     def difference_step(self) -> int | None:
         """The step where the replayed trace first parts from its search (None: no replay,
         or it never parts)."""
-        return None if self.replay is None or not self.runs else self.replay.step
+        return None if self.replay is None or not self._runs() else self.replay.step
 
     def marks(self) -> list[Cell | None]:
         """The cell to mark on each pane's map: where the replay parts (else none)."""
         if self.replay is None:
-            return [None] * len(self.runs)
+            return [None] * len(self._runs())
         return self.replay.marks()
 
     def lockstep_sentence(self, width: int) -> str:
@@ -60,10 +66,9 @@ class ReplayJumps:
         step = self.difference_step
         if step is None:
             return
-        here = self.runs[0].k
+        here = self._runs()[0].k
         if here == step and self._back is not None:
             target, self._back = self._back, None
         else:
             target, self._back = step, here
-        self.goto(target)
-
+        self._goto(target)

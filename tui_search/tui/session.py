@@ -18,7 +18,6 @@ from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.run import MAX_STEPS, Run
 from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
 from tui_search.tui import playback
-from tui_search.tui.history import History
 from tui_search.tui.map_edits import BRUSHES, NO_BRUSH, MapEdits
 from tui_search.tui.quiz import NO_RUN, Quiz, verdict
 from tui_search.tui.replay_jumps import LOCKSTEP, LOCKSTEP_SHORT, REPLAY_ENDED, ReplayJumps
@@ -53,7 +52,7 @@ def normal_spec(spec: str) -> str:
     return ",".join(part.strip() for part in spec.split(",") if part.strip())
 
 
-class Session(MapEdits, ReplayJumps):
+class Session:
     """The state behind the screen.  ``compare`` (``bfs,dfs``, as ``--compare`` spells it)
     opens with those searches side by side; else one pane runs ``algorithm``.
 
@@ -61,6 +60,10 @@ class Session(MapEdits, ReplayJumps):
     ``.scen`` row: 8 moves, no corner cutting), shown beside a path's cost while the map (its
     obstacles and terrain costs), its ends and those rules stay as they are.  ``exercise`` is an exercise (or the
     tutorial's number 1 or 2) shown as a live challenge.
+
+    Its parts: ``edits``, the map and its edits (:class:`~tui_search.tui.map_edits.MapEdits`:
+    the history, the terrain brush); ``jumps``, the replay shown and the jump to where it
+    parts from its search (:class:`~tui_search.tui.replay_jumps.ReplayJumps`).
     """
 
     def __init__(
@@ -76,10 +79,9 @@ class Session(MapEdits, ReplayJumps):
         compare: str | None = None,
         replay: Replay | None = None,
     ) -> None:
-        self.grid = grid
+        self.edits = MapEdits(grid, self._map_edited)
         self.map_path = Path(path) if path is not None else None
         self.unsaved_name = unsaved_name  # the title of a map with no file
-        self.history = History()  # the map's edits: undo, redo, and "modified"
         self.max_steps = max_steps
         self.semantics = semantics
         self.algorithm = algorithm  # what c shows alone
@@ -101,12 +103,11 @@ class Session(MapEdits, ReplayJumps):
         self._exercises = [e for e in (self.exercise,) if e is not None and e.number is None]
         self.fold_trees = False  # the panes' trees folded away by the user
         self.show_code = False  # the Code panel in the trees' place (the pseudocode, lit)
-        self.brush: float | None = None  # the terrain brush's cost (None: off)
         self.lesson: LessonPlay | None = None  # --lesson: the lesson shown beside the panes
         self._fitted = ""  # the note on a setting fitted to a search, once said
         self._benchmark = None if optimal_cost is None else (
             map_key(grid), grid.start, grid.goal, optimal_cost)
-        self.replay = replay  # --replay: until the map, the rules or the searches change
+        self.jumps = ReplayJumps(replay, lambda: self.runs, self.goto)
         self.new_runs()
 
     # -- what is shown -------------------------------------------------------------------
@@ -116,10 +117,16 @@ class Session(MapEdits, ReplayJumps):
         return self.runs[0] if self.runs else None
 
     @property
+    def grid(self) -> Grid:
+        """The map shown (its edits: ``edits``)."""
+        return self.edits.grid
+
+    @property
     def labels(self) -> list[str]:
         """The panes' names, in order."""
-        if self.replay is not None:
-            return self.replay.labels
+        replay = self.jumps.replay
+        if replay is not None:
+            return replay.labels
         return [c.label for c in self.contenders]
 
     @property
@@ -130,7 +137,7 @@ class Session(MapEdits, ReplayJumps):
     @property
     def dirty(self) -> bool:
         """True when the map differs from its file (edits not saved, nor undone)."""
-        return self.history.modified
+        return self.edits.history.modified
 
     @property
     def title(self) -> str:
@@ -179,9 +186,11 @@ class Session(MapEdits, ReplayJumps):
             self.note = note or NEEDS_ENDPOINTS
         else:
             known = self._benchmark_cost()
-            if self.replay is not None and not self.replay.fits(grid):
-                self.replay, self.note = None, note or REPLAY_ENDED
-            self.runs = (self.replay.runs(grid, self.max_steps) if self.replay is not None
+            replay = self.jumps.replay
+            if replay is not None and not replay.fits(grid):
+                self.jumps.end()
+                replay, self.note = None, note or REPLAY_ENDED
+            self.runs = (replay.runs(grid, self.max_steps) if replay is not None
                          else [Run(grid, c.algorithm, c.semantics, self.max_steps)
                                for c in self.contenders])
             for run in self.runs:
@@ -227,7 +236,7 @@ class Session(MapEdits, ReplayJumps):
             parse_compare(spec, self.semantics, fit=True, fewest=1)
         except ValueError as exc:
             return f"Cannot compare {spec}: {exc}"
-        self.replay = None  # other searches: the replay is over
+        self.jumps.end()  # other searches: the replay is over
         self._remember(spec)
         self.new_runs()
         return None
@@ -254,14 +263,20 @@ class Session(MapEdits, ReplayJumps):
         self.comparison = compare
         if (semantics, spec) == (self.semantics, self.spec):
             return
-        self.replay = None  # other rules: the replay is over
+        self.jumps.end()  # other rules: the replay is over
         self.semantics = semantics
         if spec != self.spec:
             self.show_searches(spec)
         else:
             self.new_runs()
 
-    # -- the map (its edits: MapEdits) ----------------------------------------------------
+    # -- the map (its edits: ``edits``) ---------------------------------------------------
+    def _map_edited(self, cursor: Cell | None) -> None:
+        """The map was edited (or an edit undone: the cursor on ``cursor``): from step 0."""
+        if cursor is not None:
+            self.cursor = cursor
+        self.new_runs()
+
     def move_cursor(self, cell: Cell) -> bool:
         if not self.grid.in_bounds(cell):
             return False
@@ -273,16 +288,15 @@ class Session(MapEdits, ReplayJumps):
         a map with no file (a generated map's recipe)."""
         if untitled is not None:
             self.unsaved_name = untitled
-        self.grid = grid
+        self.edits = MapEdits(grid, self._map_edited, brush=self.edits.brush)
         self.map_path = Path(path) if path is not None else None
-        self.history = History()
         self.cursor = grid.start or (0, 0)
-        self.replay = None
+        self.jumps.end()
         self.new_runs()
 
     def saved(self, path: Path) -> None:
         self.map_path = Path(path)
-        self.history.saved()
+        self.edits.history.saved()
 
     # -- moving in lockstep --------------------------------------------------------------
     def where(self) -> Before:

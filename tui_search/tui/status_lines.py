@@ -146,7 +146,7 @@ def screen_status(session: Session, width: int, panes_lines: bool = True) -> Sta
     labels = session.labels
     if own_lines(len(labels)):
         return lockstep_status(labels, playing=playing_text(session), note=session.note,
-                               sentence=session.lockstep_sentence(width),
+                               sentence=session.jumps.lockstep_sentence(width),
                                runs=None if panes_lines else session.runs)
     name = get_algorithm(session.contenders[0].algorithm).short  # its heuristic: said after
     return search_status(session.run, name, in_pane=False, playing=playing_text(session),

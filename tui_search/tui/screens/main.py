@@ -53,7 +53,7 @@ class MainScreen(PanesScreen):
     def action_difference(self) -> None:
         """A replay: to the step where the trace first parts from its search, and back."""
         self._timer.pause()
-        self.session.to_difference()
+        self.session.jumps.to_difference()
         self.present()
 
     def action_reset(self) -> None:
@@ -196,25 +196,27 @@ class MainScreen(PanesScreen):
             self.new_runs_shown()
 
     def action_place(self, what: str) -> None:
-        self._edited(self.session.place(what))
+        session = self.session
+        self._edited(session.edits.place(what, session.cursor))
 
     def action_toggle_wall(self) -> None:
-        self._edited(self.session.toggle_wall())
+        session = self.session
+        self._edited(session.edits.toggle_wall(session.cursor))
 
     # -- the terrain brush -------------------------------------------------------------------
     def action_brush(self, cost: float | None = None) -> None:
         """The brush's next cost (``b``), or ``cost`` (the palette's; 0: off)."""
-        session = self.session
+        edits = self.session.edits
         if cost is None:
-            session.cycle_brush()
+            edits.cycle_brush()
         else:
-            session.brush = cost or None
+            edits.brush = cost or None
         self.show_brush()
 
     def show_brush(self) -> None:
         """The key bar says the brush (``m Paint cost 5``) while it is on, and a note says
         what changed."""
-        cost = self.session.brush
+        cost = self.session.edits.brush
         bar = self.query_one(KeyBar)
         bar.relabel("paint", None if cost is None else f"Paint {brush_name(cost)}")
         bar.raise_hint("paint", cost is not None)
@@ -224,14 +226,15 @@ class MainScreen(PanesScreen):
                     timeout=3)
 
     def action_paint(self) -> None:
-        self._edited(self.session.paint_cost())
+        session = self.session
+        self._edited(session.edits.paint_cost(session.cursor))
 
     def action_undo(self) -> None:
         """Undo the last edit (a mouse stroke is one): the cursor on it, the searches anew."""
-        self._undone(self.session.undo())
+        self._undone(self.session.edits.undo())
 
     def action_redo(self) -> None:
-        self._undone(self.session.undo(redo=True))
+        self._undone(self.session.edits.undo(redo=True))
 
     def _undone(self, refusal: str | None) -> None:
         if refusal is None:
@@ -243,25 +246,26 @@ class MainScreen(PanesScreen):
         start and goal are never painted over; the right button only moves the cursor."""
         self.move_cursor(message.cell)
         self._stroke = None
-        grid, cell = self.session.grid, message.cell
+        edits, cell = self.session.edits, message.cell
+        grid = edits.grid
         if message.button != 1 or self.views[0].overview:
             return
-        if self.session.brush is not None:  # the terrain brush: the stroke paints its cost
+        if edits.brush is not None:  # the terrain brush: the stroke paints its cost
             self._stroke = "brush"
-            self.session.history.begin_stroke()
-            self._stroked(self.session.stroke_cost(cell))
+            edits.history.begin_stroke()
+            self._stroked(edits.stroke_cost(cell))
         elif cell not in (grid.start, grid.goal):
             self._stroke = not grid.is_blocked(cell)
-            self.session.history.begin_stroke()  # the cells of this stroke: one edit
-            self._edited(self.session.toggle_wall())
+            edits.history.begin_stroke()  # the cells of this stroke: one edit
+            self._edited(edits.toggle_wall(cell))
 
     def on_grid_view_cell_dragged(self, message: GridView.CellDragged) -> None:
         if self._stroke is not None:
             self.move_cursor(message.cell)
-            session = self.session
+            edits = self.session.edits
             stroke = self._stroke
-            self._stroked(session.paint(message.cell, stroke) if isinstance(stroke, bool)
-                          else session.stroke_cost(message.cell))
+            self._stroked(edits.paint(message.cell, stroke) if isinstance(stroke, bool)
+                          else edits.stroke_cost(message.cell))
 
     def _stroked(self, changed: bool) -> None:
         if changed:
@@ -270,7 +274,7 @@ class MainScreen(PanesScreen):
 
     def on_grid_view_stroke_ended(self, message: GridView.StrokeEnded) -> None:
         self._stroke = None
-        self.session.history.end_stroke()
+        self.session.edits.history.end_stroke()
 
     def on_grid_view_cell_hovered(self, message: GridView.CellHovered) -> None:
         self.show_readout()
@@ -360,11 +364,11 @@ class MainScreen(PanesScreen):
             "faster": None if session.speed_index == len(playback.SPEEDS) - 1 else True,
             "slower": None if session.speed_index == 0 else True,
         }
-        history = session.history
+        history = session.edits.history
         edited = history.can_undo() or history.can_redo()
         state["undo"] = (history.can_undo() or None) if edited else False
         state["redo"] = (history.can_redo() or None) if edited else False
         state["last"], state["first"] = state["next"], state["prev"]
-        state["paint"] = session.brush is not None
-        state["difference"] = session.difference_step is not None
+        state["paint"] = session.edits.brush is not None
+        state["difference"] = session.jumps.difference_step is not None
         return state.get(action, True)

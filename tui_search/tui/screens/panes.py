@@ -281,7 +281,7 @@ class PanesScreen(Screen[None]):
         repaint (``per_run``: a list of changed cells for each run)."""
         session = self.session
         runs = session.runs
-        marks = session.marks()
+        marks = session.jumps.marks()
         for i, pane in enumerate(self.panes):
             if pane.is_mounted:  # else shown whole once mounted (_panes_changed)
                 pane.show(runs[i] if runs else None,
@@ -305,7 +305,7 @@ class PanesScreen(Screen[None]):
         runs = session.runs
         key = (not runs, session.at_start(), session.at_end(), session.speed_index,
                session.playing, session.seeking, len(self.panes),
-               session.history.can_undo(), session.history.can_redo())
+               session.edits.history.can_undo(), session.edits.history.can_redo())
         if key != self._bindings_key:  # what greys out or hides keys changed
             self._bindings_key = key
             self.refresh_bindings()
