@@ -60,11 +60,13 @@ def _next_limit(app: SearchApp) -> list[str]:
 
 
 def _queue_figures(app: SearchApp) -> list[str]:
-    """Every pane's priority queue: the cell expanded next, with its f, g and h (pressed
+    """Every priority queue shown: the cell expanded next, with its f, g and h (pressed
     close in a narrow panel: "f6.41"), and every search's counts."""
     texts = _counts(app)
-    for run in app.session.runs:
-        if run.algo.weighted and run.now.frontier_len():
+    for panel in app.main.query(FrontierPanel):
+        run = panel.run
+        if run and panel.display and panel.region.area and run.algo.weighted and (
+                run.now.frontier_len()):
             (g,) = run.now.frontier(0, 1)
             x, y = run.nodes.cell(g)
             cost, h, f = run.nodes.costs(g)

@@ -158,6 +158,7 @@ class FrontierPanel(LinePanel):
         self._count_text = ""  # the first line: "4 in the queue"
         self._discarded: Line | None = None  # after a discarded step: the entry it threw away
         self._hint_w = 0  # the widest end hint (or "stale")
+        self._move_w = DIR_W  # the move's width (wider for START)
         self._squeeze = 0  # how close the figures are pressed in a narrow panel (costs_column)
         self._rows: EntryRows | None = None  # an entry too wide for one row: its rows
         self._top_key: object = None
@@ -201,7 +202,11 @@ class FrontierPanel(LinePanel):
         # marker (3) + coords + " " [+ d=N + " "] + move [+ costs]: the move after the depth,
         # so that every column stands one space from the next whatever its label (START d=0 /
         # S d=1 alike)
-        entry_w = (3 + self._coord_w + 1 + (self._depth_w + 1 if self._depth_w else 0) + DIR_W
+        # the move's width: START, longer, is only ever on its own (just the root is on it)
+        self._move_w = max(DIR_W, len(run.nodes.move(run.now.frontier(0, 1)[0])) if n == 1
+                           else 0)
+        entry_w = (3 + self._coord_w + 1 + (self._depth_w + 1 if self._depth_w else 0)
+                   + self._move_w
                    + (len(costs_column(run, 0, self._cost_w)) if self._cost_w else 0))
         self._hint_col = entry_w + HINT_GAP
         self._discarded = None
@@ -249,7 +254,9 @@ class FrontierPanel(LinePanel):
                 1 if entry_w - 1 <= room else 2)
             entry_w -= (0, 1, 1 + count)[self._squeeze] if count else 0
             self._rows = None if not room or entry_w <= room else plan_rows(
-                room, self._coord_w, self._depth_w, DIR_W, [self._cost_w + 1] * count)
+                room, self._coord_w, self._depth_w, self._move_w, [self._cost_w + 2] * count)
+            # (a figure's name, its number, and a digit to spare: a path's cost may pass
+            # the map's diagonal)
             if self._rows is not None:
                 width = max(width, self._rows.width)
             else:

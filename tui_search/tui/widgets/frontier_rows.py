@@ -82,13 +82,15 @@ def entry_row(run: Run, g: int, plan: EntryRows, row: int, marks: tuple[bool, bo
         parts.append((f"({x},{y})".ljust(coord_w), main))
     shown = figures(run, g, cost_w) if cost_w else []
     stale = "frontier-panel--stale" if shown and run.now.is_stale(g) else main
-    for i, slot in enumerate(slots):
-        if parts and (row == 0 or i):
-            parts.append((" ", main))
+    for slot in slots:
+        piece: tuple[str, str]
         if slot == "depth":
-            parts.append((f"d={run.nodes.depth(g)}".ljust(depth_w), "frontier-panel--detail"))
+            piece = (f"d={run.nodes.depth(g)}".ljust(depth_w), "frontier-panel--detail")
         elif slot == "move":
-            parts.append((run.nodes.move(g).ljust(DIR_W), main))
+            piece = (run.nodes.move(g).ljust(DIR_W), main)
         else:  # a figure, pressed close: "f6.41"
-            parts.append((shown[int(slot)].replace(" ", "", 1), stale))
+            piece = (shown[int(slot)].replace(" ", "", 1), stale)
+        if parts and (row == 0 or parts[-1][0].strip()):
+            parts.append((" ", main))
+        parts.append(piece)
     return parts
