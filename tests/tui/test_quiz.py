@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
-from tests.tui.test_app import stats, sync, tutorial_app
+from tests.tui.test_app import TUTORIAL, stats, sync, tutorial_app, wait_until
+from tui_search.engine.mapfile import load_map
+from tui_search.tui.app import SearchApp
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.key_bar import KeyBar
 
@@ -214,3 +216,25 @@ async def test_the_quiz_key_stays_in_a_narrow_key_bar_while_the_quiz_is_on() -> 
         assert "Quiz" in shown() and "Help" in shown() and "Quit" in shown()
         await pilot.press("i")
         assert "Quiz" not in shown()
+
+
+@sync
+async def test_in_a_narrow_pane_an_entry_of_several_rows_is_picked_by_any_of_them() -> None:
+    """Three searches at 120x40: A*'s entries take rows of their own for their figures; a
+    click on a figures row picks its entry, and down moves the pick a whole entry on."""
+    app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, compare="astar,bfs,dfs")
+    async with app.run_test(size=(120, 40)) as pilot:
+        panel = app.main.panes[0].frontier
+        await pilot.press("n", "n", "i")
+        await wait_until(pilot, lambda: any(panel.entry_cell(y) for y in range(9)))
+        first = next(y for y in range(panel.virtual_size.height) if panel.entry_cell(y))
+        rows = next(y for y in range(first, first + 9)
+                    if panel.entry_cell(y) != panel.entry_cell(first)) - first
+        assert rows > 1 and "f" in panel.line_text(first + 1)  # the figures under the cell
+        cell = panel.entry_cell(first + rows)
+        await pilot.click(panel, offset=(4, 1 + first + rows + 1 - round(panel.scroll_y)))
+        await wait_until(pilot, lambda: app.session.cursor == cell)
+        assert panel.pick_line() == first + rows
+        panel.focus()
+        await pilot.press("up")
+        await wait_until(pilot, lambda: panel.pick_line() == first)

@@ -27,6 +27,7 @@ from tui_search.tui.widgets.challenge import ChallengePanel
 from tui_search.tui.widgets.code_panel import CodePanel
 from tui_search.tui.widgets.compare_table import CompareTable
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
+from tui_search.tui.widgets.line_panel import LinePanel
 from tui_search.tui.widgets.stats import Stats
 
 SIZES = [(80, 24), (100, 30), (120, 40), (160, 48), (200, 60)]
@@ -56,6 +57,21 @@ def _next_limit(app: SearchApp) -> list[str]:
     run = app.session.run
     assert run.now.frontier_len() == 0
     return [f"next: depth limit {run.steps.depth_limit() + 1}"]
+
+
+def _queue_figures(app: SearchApp) -> list[str]:
+    """Every priority queue shown: the cell expanded next, with its f, g and h (pressed
+    close in a narrow panel: "f6.41"), and every search's counts."""
+    texts = _counts(app)
+    for panel in app.main.query(FrontierPanel):
+        run = panel.run
+        if run and panel.display and panel.region.area and run.algo.weighted and (
+                run.now.frontier_len()):
+            (g,) = run.now.frontier(0, 1)
+            x, y = run.nodes.cell(g)
+            cost, h, f = run.nodes.costs(g)
+            texts += [f"({x},{y})", f"f {f:.2f}", f"g {cost:.2f}", f"h {h:.2f}"]
+    return texts
 
 
 def _nothing(app: SearchApp) -> list[str]:
@@ -101,6 +117,13 @@ CASES: dict[str, tuple[dict[str, object], list[str], Callable[[SearchApp], list[
     "compare 3 at the end": ({"compare": "bfs,dfs,astar"}, ["end"], _counts),
     "compare 4 mid-run": ({"compare": "bfs,dfs,astar,iddfs"}, ["n"] * 5, _counts),
     "compare 4 at the end": ({"compare": "bfs,dfs,astar,iddfs"}, ["end"], _counts),
+    "compare 3 with A* and IDDFS, n n n": ({"compare": "bfs,astar,iddfs"}, ["n"] * 3,
+                                           _queue_figures),
+    "compare 3 with A* mid-run": ({"compare": "bfs,dfs,astar"}, ["n"] * 3, _queue_figures),
+    "compare 4 with A* and IDDFS, n n n": ({"compare": "bfs,dfs,iddfs,astar"}, ["n"] * 3,
+                                           _queue_figures),
+    "compare 4 with UCS and IDDFS, n n n": ({"compare": "iddfs,ucs,dfs,astar"}, ["n"] * 3,
+                                            _queue_figures),
     "the quiz comparing 2": ({"compare": "bfs,dfs"}, ["i"], _quiz),
     "the quiz comparing 4": ({"compare": "bfs,dfs,astar,iddfs"}, ["i"], _quiz),
     "exercise 1": ({"algorithm": "bfs"}, ["x"], _verdict),
@@ -134,6 +157,16 @@ def _whole_texts(widget: Widget) -> list[str]:
     return widget.lines()
 
 
+def _cropped(panel: LinePanel, rows: list[str]) -> list[str]:
+    """The rows of ``panel`` as shown (``rows``) that are not its whole lines: its lines
+    wrap to its width, so none is scrolled sideways or cut at the edge, even between two
+    words (which the words seen cannot tell)."""
+    top = round(panel.scroll_y)
+    return [f"{type(panel).__name__} shows {row.strip()!r} of {line!r}"
+            for row, line in zip(rows, (panel.line_text(top + y) for y in range(len(rows))))
+            if row.rstrip() != line]
+
+
 def problems(app: SearchApp, screen: list[str], lesson: list[str]) -> list[str]:
     """What is cut on ``screen`` (its lines as text), and what of ``lesson`` is not on it."""
     found = []
@@ -153,8 +186,10 @@ def problems(app: SearchApp, screen: list[str], lesson: list[str]) -> list[str]:
         cut = _words(rows) - _words(whole)
         if cut:
             found.append(f"{name} shows cut words {sorted(cut)}: {text!r}")
+        if isinstance(widget, LinePanel):  # a word cut off whole at the panel's edge, too
+            found += _cropped(widget, rows)
     for whole in lesson:
-        if not any(whole in text for text in seen):
+        if not any(whole in text or whole.replace(" ", "", 1) in text for text in seen):
             found.append(f"{whole!r} not on the screen whole")
     return [f"{app.size}: {problem}" for problem in found]
 

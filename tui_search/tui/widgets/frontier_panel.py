@@ -17,8 +17,9 @@ is struck out as *stale*).  The first and last lines carry a hint (``← front (
 student sees which end is which.
 
 A narrow panel drops the hints (and "stale") before any figure, then presses the figures
-closer together; a line still wider than the panel shows no half word (the scrollbar says
-there is more), and the lines above the entries wrap.
+closer together; an entry still wider than the panel takes more rows, its figures under its
+cell (:mod:`~tui_search.tui.widgets.frontier_rows`: the move and the marker go first, never a
+figure), and the lines above the entries wrap to the panel's width.
 
 In the quiz the entries are the answers to pick from: a click on an entry's line, or ``up`` /
 ``down`` while the panel has the focus, posts :class:`FrontierPanel.EntryPicked` (a double
@@ -41,6 +42,7 @@ from tui_search.engine.grid import Cell
 from tui_search.engine.heuristics import octile
 from tui_search.tui.narration import group_digits
 from tui_search.tui.pieces import Line, Parts, Piece, length, plain, wrap
+from tui_search.tui.widgets.frontier_rows import DIR_W, EntryRows, entry_row, plan_rows
 from tui_search.tui.widgets.frontier_text import (
     costs_column,
     describe_empty,
@@ -63,9 +65,6 @@ ADDED_LEGENDS = ("+ just added · your trace doesn't say its discipline",
 HIDDEN_LEGENDS = ("+ just added · click picks", "+ added · click picks", "click picks")
 #: Cells between an entry and its end hint (at least).
 HINT_GAP = 2
-#: Width of the move column: a direction's name (START, longer, is only ever on its own: the
-#: frontier holds just the root then).
-DIR_W = 2
 DISCARDED = "frontier-panel--discarded"
 
 
@@ -157,7 +156,9 @@ class FrontierPanel(LinePanel):
         self._count_text = ""  # the first line: "4 in the queue"
         self._discarded: Line | None = None  # after a discarded step: the entry it threw away
         self._hint_w = 0  # the widest end hint (or "stale")
+        self._move_w = DIR_W  # the move's width (wider for START)
         self._squeeze = 0  # how close the figures are pressed in a narrow panel (costs_column)
+        self._rows: EntryRows | None = None  # an entry too wide for one row: its rows
         self._top_key: object = None
         self._top_cache: list[Parts] = []
         self._by_cell: list[int] | None = None  # the quiz: the entries sorted by cell
@@ -199,7 +200,11 @@ class FrontierPanel(LinePanel):
         # marker (3) + coords + " " [+ d=N + " "] + move [+ costs]: the move after the depth,
         # so that every column stands one space from the next whatever its label (START d=0 /
         # S d=1 alike)
-        entry_w = (3 + self._coord_w + 1 + (self._depth_w + 1 if self._depth_w else 0) + DIR_W
+        # the move's width: START, longer, is only ever on its own (just the root is on it)
+        self._move_w = max(DIR_W, len(run.nodes.move(run.now.frontier(0, 1)[0])) if n == 1
+                           else 0)
+        entry_w = (3 + self._coord_w + 1 + (self._depth_w + 1 if self._depth_w else 0)
+                   + self._move_w
                    + (len(costs_column(run, 0, self._cost_w)) if self._cost_w else 0))
         self._hint_col = entry_w + HINT_GAP
         self._discarded = None
@@ -246,16 +251,28 @@ class FrontierPanel(LinePanel):
             self._squeeze = 0 if not room or entry_w <= room else (
                 1 if entry_w - 1 <= room else 2)
             entry_w -= (0, 1, 1 + count)[self._squeeze] if count else 0
-            width = max(width, self._hint_col + self._hint_w if self._hints_fit() else entry_w)
-            listed = n if self._by_cell is None or n <= len(self._by_cell) else (
-                len(self._by_cell) + 1)  # the quiz: "… N more"
-            height = len(top) + listed
+            self._rows = None if not room or entry_w <= room else plan_rows(
+                room, self._coord_w, self._depth_w, self._move_w, [self._cost_w + 2] * count)
+            # (a figure's name, its number, and a digit to spare: a path's cost may pass
+            # the map's diagonal)
+            if self._rows is not None:
+                width = max(width, self._rows.width)
+            else:
+                width = max(width,
+                            self._hint_col + self._hint_w if self._hints_fit() else entry_w)
+            more = self._by_cell is not None and n > len(self._by_cell)  # "… N more"
+            listed = len(self._by_cell) if more and self._by_cell is not None else n
+            height = len(top) + listed * self._rows_per() + more
         else:
             height = len(top)
         set_virtual_size(self, Size(width, height))
         if moved:
             self.scroll_to(0, 0, animate=False, immediate=True, force=True)
         self.refresh_changed()
+
+    def _rows_per(self) -> int:
+        """The rows each entry takes (more than one in a panel too narrow for it)."""
+        return 1 if self._rows is None else len(self._rows.rows)
 
     def _hints_fit(self) -> bool:
         """The end hints (and "stale") are shown only when they fit beside the entries:
@@ -270,7 +287,8 @@ class FrontierPanel(LinePanel):
         key = (self._count_text, self._empty_text, self._discarded, room)
         if self._top_key != key:
             if self._count:
-                rows = [[(self._count_text, "frontier-panel--detail")]]
+                rows = wrap(plain([(self._count_text, "frontier-panel--detail")], prose=True),
+                            room)
             else:
                 cls = "frontier-panel--no-path" if "no path" in self._empty_text else (
                     "frontier-panel--empty")
@@ -296,7 +314,7 @@ class FrontierPanel(LinePanel):
     def pick_line(self) -> int | None:
         """The line of the picked entry, or None when it is not listed."""
         index = self._pick_index()
-        return None if index is None else self._top() + index
+        return None if index is None else self._top() + index * self._rows_per()
 
     def _pick_index(self) -> int | None:
         run, cells = self._run, self._by_cell
@@ -307,7 +325,7 @@ class FrontierPanel(LinePanel):
     def entry_cell(self, y: int) -> Cell | None:
         """The quiz: the cell of the entry on line ``y`` of the list, None for other lines."""
         run, cells = self._run, self._by_cell
-        i = y - self._top()
+        i = (y - self._top()) // self._rows_per() if y >= self._top() else -1
         if run is None or cells is None or not self._count or not 0 <= i < len(cells):
             return None
         return run.nodes.cell(cells[i])
@@ -352,11 +370,13 @@ class FrontierPanel(LinePanel):
             return top[y]
         if not n:
             return []
-        y -= self._top()
+        y, row = divmod(y - self._top(), self._rows_per())
         if not 0 <= y < n:
             return []
         if self._by_cell is not None:  # the quiz: by cell, no next-out mark
             if y >= len(self._by_cell):
+                if row:
+                    return []
                 return [(f"   … {n - len(self._by_cell):,} more", "frontier-panel--detail")]
             g = self._by_cell[y]
         else:
@@ -365,6 +385,9 @@ class FrontierPanel(LinePanel):
         first = y == 0 and self._by_cell is None and self._kind.next_known
         main = "frontier-panel--next" if first else "frontier-panel--entry"
         added = g in self._added
+        if self._rows is not None:
+            return entry_row(run, g, self._rows, row, (first, added),
+                             (self._coord_w, self._depth_w, self._cost_w))
         parts = [
             ("▶" if first else " ", main),
             ("+" if added else " ", "frontier-panel--added" if added else main),
@@ -396,8 +419,10 @@ class FrontierPanel(LinePanel):
         return parts
 
     def line_band(self, y: int) -> Style | None:
-        """The entry expanded next is highlighted across the whole line, like a cursor."""
-        if y == self._top() and self._count and self._by_cell is None:
+        """The entry expanded next is highlighted across the whole line (all its rows), like
+        a cursor."""
+        top = self._top()
+        if top <= y < top + self._rows_per() and self._count and self._by_cell is None:
             return Style(bgcolor=self.cached_style("frontier-panel--next").bgcolor)
         if self._pick is not None and self.entry_cell(y) == self._pick:
             return Style(bgcolor=self.cached_style("frontier-panel--picked").bgcolor)
