@@ -29,6 +29,7 @@ that Textual would cut with "…".
 from __future__ import annotations
 
 from math import ceil
+from typing import ClassVar
 
 from rich.cells import cell_len
 from rich.segment import Segment
@@ -240,6 +241,27 @@ def whole_words(parts: Parts, end: int) -> Parts:
     return out
 
 
+def words_from(parts: Parts, start: int) -> Parts:
+    """``parts`` with the word that column ``start`` would cut through blanked (a line scrolled
+    sideways shows no half word at its left edge: a tree's shallower lines under a deep one)."""
+    text = "".join(part for part, _ in parts)
+    if not 0 < start < len(text) or len(text) != cell_len(text):
+        return parts
+    if text[start] == " " or text[start - 1] == " ":
+        return parts
+    end = text.find(" ", start)
+    end = len(text) if end < 0 else end
+    out: Parts = []
+    at = 0
+    for part, cls in parts:
+        lo, hi = max(start, at) - at, min(end, at + len(part)) - at
+        if lo < hi:
+            part = part[:lo] + " " * (hi - lo) + part[hi:]
+        out.append((part, cls))
+        at += len(part)
+    return out
+
+
 class LinePanel(QuietScrollbars, CachedStyles, ScrollView, can_focus=True):
     """A bordered, focusable line-API list: the look the frontier and tree panels share, and
     their repaint after a step: only the lines that changed.
@@ -270,6 +292,10 @@ class LinePanel(QuietScrollbars, CachedStyles, ScrollView, can_focus=True):
     }
     """
 
+    #: The first lines of the list kept at the top of the panel, never scrolled either way
+    #: (the tree's count): row y < PINNED shows line y from its first column.
+    PINNED: ClassVar[int] = 0
+
     _painted: tuple[Offset, Size, list[Parts]] | None = None  # what the visible lines show
     _titles: tuple[str, str] | None = None  # the title and the legend shown
     _wordings: tuple[tuple[str, ...], tuple[str, ...]] = ((), ())  # each one's wordings
@@ -290,16 +316,25 @@ class LinePanel(QuietScrollbars, CachedStyles, ScrollView, can_focus=True):
         """Every line's text (tests and small lists only: O(lines))."""
         return [self.line_text(y) for y in range(self.virtual_size.height)]
 
+    def pinned_rows(self) -> int:
+        """Rows pinned at the top: :attr:`PINNED`, none when that would leave no other."""
+        return self.PINNED if self.scrollable_content_region.height > self.PINNED else 0
+
+    def row_line(self, y: int) -> int:
+        """The line of the list that row ``y`` of the panel shows."""
+        return y if y < self.pinned_rows() else self.scroll_offset.y + y
+
     def render_line(self, y: int) -> Strip:
-        scroll_x, scroll_y = self.scroll_offset
         width = self.scrollable_content_region.width
         base = self.cached_style()
-        parts = self.line_parts(scroll_y + y)
+        line = self.row_line(y)
+        scroll_x = 0 if y < self.pinned_rows() else self.scroll_offset.x
+        parts = self.line_parts(line)
         if not parts:
             return Strip.blank(width, base)
-        parts = whole_words(parts, scroll_x + width)
+        parts = words_from(whole_words(parts, scroll_x + width), scroll_x)
         style = self.cached_style
-        band = self.line_band(scroll_y + y)
+        band = self.line_band(line)
         if band is None:
             return window_strip([Segment(text, style(cls)) for text, cls in parts], scroll_x,
                                 width, base)
@@ -342,7 +377,7 @@ class LinePanel(QuietScrollbars, CachedStyles, ScrollView, can_focus=True):
         after a scroll or a resize: those repaint everything anyway)."""
         offset = self.scroll_offset
         size = self.scrollable_content_region.size
-        rows = [self.line_parts(offset.y + y) for y in range(size.height)]
+        rows = [self.line_parts(self.row_line(y)) for y in range(size.height)]
         painted, self._painted = self._painted, (offset, size, rows)
         if painted is None or painted[0] != offset or painted[1] != size:
             self.refresh()

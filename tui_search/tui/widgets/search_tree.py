@@ -20,10 +20,11 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any, ClassVar
 
-from textual.geometry import Region, Size
+from textual.geometry import Size
 
 from tui_search.tui.pieces import Parts
 from tui_search.tui.tree_model import GLYPH_EXPANDED, GLYPH_FRONTIER, GLYPH_GOAL, TreeModel
+from tui_search.tui.tree_model import Parts as TreeParts
 from tui_search.tui.widgets.line_panel import LinePanel, set_virtual_size
 
 if TYPE_CHECKING:
@@ -80,6 +81,8 @@ class SearchTreePanel(LinePanel):
     | `search-tree--note` | The count above the listing, the note above the focused view. |
     """
 
+    PINNED = 1  # the count ("8 nodes") or the focused view's note stays in view
+
     def __init__(self, **widget_args: Any) -> None:  # name, id, classes, disabled
         super().__init__(**widget_args)
         self.model = TreeModel()
@@ -123,26 +126,56 @@ class SearchTreePanel(LinePanel):
         return [(text, PREFIX + role) for text, role in self.model.line(y)]
 
     def _scroll_to_current(self) -> None:
-        """Bring the node being expanded and its children into view (once laid out)."""
+        """Bring the node being expanded and its children into view (once laid out), below
+        the pinned count, scrolled sideways only as far as :func:`scroll_column` says."""
         window = self.scrollable_content_region
         if not window:
             self._pending_scroll = True  # done on the first Resize
             return
         self._pending_scroll = False
         model = self.model
+        top = self.pinned_rows()
         y = model.current_line()
-        height = 1 + len(model.kids)
-        x = sum(len(text) for text, role in model.line(y) if role in ("guide", "detail"))
-        self.scroll_to_region(
-            Region(x, y, min(model.label_width(), window.width), min(height, window.height)),
-            animate=False,
-            immediate=True,
-            force=True,
-        )
+        height = max(1, min(1 + len(model.kids), window.height - top))
+        x = scroll_column([model.line(y + i) for i in range(height)], window.width)
+        scroll_y = self.scroll_offset.y
+        if y < scroll_y + top:
+            scroll_y = y - top
+        elif y + height > scroll_y + window.height:
+            scroll_y = y + height - window.height
+        self.scroll_to(x, max(0, scroll_y), animate=False, immediate=True, force=True)
 
     def on_resize(self) -> None:
-        if self._pending_scroll and self.model.run is not None:
-            self._scroll_to_current()
+        if self.model.run is not None:
+            self._scroll_to_current()  # the first time, or a width that changes what fits
 
 
-__all__ = ["PREFIX", "SearchTreePanel"]
+def label_span(parts: TreeParts) -> tuple[int, int]:
+    """The columns of a tree line's label (glyph, move, cell): after its depth and guides,
+    before its suffix and sibling count."""
+    start = 0
+    for text, role in parts:
+        if role not in ("guide", "detail"):
+            return start, start + len(text)
+        start += len(text)
+    return start, start
+
+
+def scroll_column(lines: list[TreeParts], width: int) -> int:
+    """The first column shown of a tree whose node being expanded is ``lines[0]`` and its
+    children the others: 0 when all their labels fit ``width`` from there; else the first
+    boundary of a guide (every 3 columns after the depth) from which they fit, else the
+    node's label's start: never inside a word (and the node's label always in view)."""
+    spans = [label_span(parts) for parts in lines]
+    start, right = spans[0][0], max(end for _, end in spans)
+    if right <= width:
+        return 0
+    text = "".join(text for text, _ in lines[0])
+    depth = sum(len(text) for text, role in lines[0][:1] if role == "detail")
+    for column in range(depth, start, 3):
+        if right - column <= width and (column == 0 or text[column - 1] == " "):
+            return column
+    return start
+
+
+__all__ = ["PREFIX", "SearchTreePanel", "scroll_column"]
