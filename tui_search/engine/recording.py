@@ -12,7 +12,7 @@ from __future__ import annotations
 from array import array
 from bisect import bisect_right
 from collections.abc import Generator, Iterator
-from dataclasses import dataclass
+from dataclasses import FrozenInstanceError
 from typing import NamedTuple, cast
 
 from tui_search.engine.algorithms import Algorithm, get_algorithm
@@ -24,17 +24,51 @@ from tui_search.engine.record import CHUNK, Record
 from tui_search.engine.semantics import Semantics
 
 
-@dataclass(frozen=True, slots=True)
 class Step:
     """One step: the node taken off the frontier and the successors it added, in order (none
-    for a discarded step, which took off a cell already expanded)."""
+    for a discarded step, which took off a cell already expanded).  Immutable, compared and
+    hashed by its fields.  Written out, not a frozen dataclass: that one compiled six methods
+    and built its slotted class twice at every start (~3.6 M instructions of the first frame;
+    benchmarks/README.md, session 13), and a NamedTuple's field ``index`` would hide
+    ``tuple.index``."""
+
+    __slots__ = ("depth_limit", "discarded", "found_goal", "index", "node", "successors")
+    _FIELDS = ("index", "node", "successors", "depth_limit", "found_goal", "discarded")
 
     index: int
     node: Cell
     successors: tuple[tuple[str, Cell], ...]
-    depth_limit: int | None = None
-    found_goal: bool = False
-    discarded: bool = False
+    depth_limit: int | None
+    found_goal: bool
+    discarded: bool
+
+    def __init__(self, index: int, node: Cell, successors: tuple[tuple[str, Cell], ...],
+                 depth_limit: int | None = None, found_goal: bool = False,
+                 discarded: bool = False) -> None:
+        values = (index, node, successors, depth_limit, found_goal, discarded)
+        for name, value in zip(self._FIELDS, values):
+            object.__setattr__(self, name, value)
+
+    def _values(self) -> tuple[object, ...]:
+        return tuple(getattr(self, name) for name in self._FIELDS)
+
+    def __setattr__(self, name: str, value: object) -> None:
+        raise FrozenInstanceError(f"cannot assign to field {name!r}")
+
+    def __delattr__(self, name: str) -> None:
+        raise FrozenInstanceError(f"cannot delete field {name!r}")
+
+    def __eq__(self, other: object) -> bool:
+        if other.__class__ is not self.__class__:
+            return NotImplemented
+        return self._values() == other._values()
+
+    def __hash__(self) -> int:
+        return hash(self._values())
+
+    def __repr__(self) -> str:
+        fields = ", ".join(f"{name}={getattr(self, name)!r}" for name in self._FIELDS)
+        return f"Step({fields})"
 
 
 #: The default step limit: expansions recorded before a run gives up (iterative deepening
