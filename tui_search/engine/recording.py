@@ -12,10 +12,10 @@ from __future__ import annotations
 from array import array
 from bisect import bisect_right
 from collections.abc import Generator, Iterator
-from dataclasses import FrozenInstanceError
 from typing import NamedTuple, cast
 
 from tui_search.engine.algorithms import Algorithm, get_algorithm
+from tui_search.engine.frozen import Frozen
 from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.loops.dispatch import Loop, loop_for
 from tui_search.engine.peak import PeakTable
@@ -24,13 +24,11 @@ from tui_search.engine.record import CHUNK, Record
 from tui_search.engine.semantics import Semantics
 
 
-class Step:
+class Step(Frozen):
     """One step: the node taken off the frontier and the successors it added, in order (none
-    for a discarded step, which took off a cell already expanded).  Immutable, compared and
-    hashed by its fields.  Written out, not a frozen dataclass: that one compiled six methods
-    and built its slotted class twice at every start (~3.6 M instructions of the first frame;
-    benchmarks/README.md, session 13), and a NamedTuple's field ``index`` would hide
-    ``tuple.index``."""
+    for a discarded step, which took off a cell already expanded).  A :class:`Frozen` value,
+    not a frozen slotted dataclass (~3.6 M instructions of every start), nor a NamedTuple
+    (its field ``index`` would hide ``tuple.index``)."""
 
     __slots__ = ("depth_limit", "discarded", "found_goal", "index", "node", "successors")
     _FIELDS = ("index", "node", "successors", "depth_limit", "found_goal", "discarded")
@@ -45,30 +43,8 @@ class Step:
     def __init__(self, index: int, node: Cell, successors: tuple[tuple[str, Cell], ...],
                  depth_limit: int | None = None, found_goal: bool = False,
                  discarded: bool = False) -> None:
-        values = (index, node, successors, depth_limit, found_goal, discarded)
-        for name, value in zip(self._FIELDS, values):
-            object.__setattr__(self, name, value)
-
-    def _values(self) -> tuple[object, ...]:
-        return tuple(getattr(self, name) for name in self._FIELDS)
-
-    def __setattr__(self, name: str, value: object) -> None:
-        raise FrozenInstanceError(f"cannot assign to field {name!r}")
-
-    def __delattr__(self, name: str) -> None:
-        raise FrozenInstanceError(f"cannot delete field {name!r}")
-
-    def __eq__(self, other: object) -> bool:
-        if other.__class__ is not self.__class__:
-            return NotImplemented
-        return self._values() == other._values()
-
-    def __hash__(self) -> int:
-        return hash(self._values())
-
-    def __repr__(self) -> str:
-        fields = ", ".join(f"{name}={getattr(self, name)!r}" for name in self._FIELDS)
-        return f"Step({fields})"
+        self._set(index=index, node=node, successors=successors, depth_limit=depth_limit,
+                  found_goal=found_goal, discarded=discarded)
 
 
 #: The default step limit: expansions recorded before a run gives up (iterative deepening
