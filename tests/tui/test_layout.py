@@ -10,11 +10,12 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
+from tests.textual_internals import nothing_queued, settle
 from tests.tui.test_app import TUTORIAL, sync, wait_until
 from tui_search.engine.grid import Grid
 from tui_search.engine.mapfile import load_map
 from tui_search.tui.app import SearchApp
-from tui_search.tui.layout import CODE_MIN_HEIGHT, arrange
+from tui_search.tui.layout import CODE_MIN_HEIGHT, MAP_MIN_LINES, arrange
 from tui_search.tui.widgets.grid_view import GridView
 
 SIZES = [(80, 24), (100, 30), (120, 40), (160, 48), (200, 60)]
@@ -258,3 +259,38 @@ def test_the_code_panel_needs_fewer_lines_than_a_tree() -> None:
     assert code.lists_height == CODE_MIN_HEIGHT and code.code and not code.trees
     assert not arrange(1, 80, 6, (60, 40), code=True).code
     assert arrange(1, 100, 25, (6, 6), code=True).code  # beside, in a tall enough pane
+
+
+@sync
+async def test_the_layout_settles_when_the_lines_under_the_panes_depend_on_it() -> None:
+    """Four searches, an exercise and the quiz at 80x24 (``c 3 6 x i``): folding the panes'
+    own lines makes the lines under them say each search's counts (two rows more).  The
+    layout fitted in the room the shorter lines left flipped to one with no map at all once
+    the longer ones took it, and back, every refit.  Settled, the views keep their regions
+    over more refits, and each map shows whole or says it shows part."""
+    app = SearchApp(load_map(TUTORIAL), path=TUTORIAL)
+    async with app.run_test(size=SIZES[0]) as pilot:
+        await pilot.press("c", "3", "6", "x", "i")
+        await wait_until(pilot, lambda: len(app.main.views) == 4 and app.session.quiz.on
+                         and app.session.exercise is not None)
+        seen: list[object] = []
+
+        def regions() -> tuple[object, ...]:
+            return tuple(view.region for view in app.main.views)
+
+        def steady() -> bool:
+            seen.append(regions())
+            return nothing_queued(app) and seen[-2:-1] == seen[-1:]
+
+        await wait_until(pilot, steady)
+        settled = regions()
+        for _ in range(6):  # refits, as a status line laid out anew asks for
+            app.main.fit_panes()
+            await settle(pilot)
+            await pilot.pause(0.1)  # more than a frame: a refit it asked for is done
+            assert regions() == settled
+        for view in app.main.views:
+            assert view.region.height >= MAP_MIN_LINES  # its border and rows of the map
+            problem = whole_map_shown(app, view)
+            assert problem is None or view.border_subtitle.startswith("part of the map"), \
+                problem

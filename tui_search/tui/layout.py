@@ -34,6 +34,10 @@ MAP_MIN_WIDTH = 20
 STATS_MIN_WIDTH = 40
 #: A pane's own status lines (its search's figures and narration).
 PANE_STATS_HEIGHT = 2
+#: Where no arrangement shows the whole map, one whose map box has at least this many lines
+#: (its border and three rows; the whole map if shorter) is taken before any other: a pane
+#: with no room for its map is no choice while the map could show in part.
+MAP_MIN_LINES = 5
 
 
 def own_lines(n: int) -> bool:
@@ -92,14 +96,21 @@ def lists_width(pane_width: int) -> int:
 def arrange(n: int, width: int, height: int, map_size: tuple[int, int], *,
             table_height: int = 0, fold_trees: bool = False,
             stats_height: int = PANE_STATS_HEIGHT, wrapped: int = 0,
-            code: bool = False) -> Arrangement:
+            code: bool = False, folded: tuple[int, int] | None = None) -> Arrangement:
     """Lay ``n`` panes out in ``width`` x ``height`` (the room under and beside the fixed
     lines, the table's ``table_height`` lines included when there is one) for a map of
     ``map_size`` cells, whose smallest cells are 2 characters by 1 line, in a border; a
     pane's own status lines take ``stats_height`` lines.  The status lines under the panes
     take ``wrapped`` rows more than their least: the map is placed as in the room they would
     leave (:func:`_steady`).  With ``code`` (the Code panel in the trees' place) the lists
-    under a map need only CODE_MIN_HEIGHT lines."""
+    under a map need only CODE_MIN_HEIGHT lines.
+
+    ``height`` and ``wrapped`` are for the status lines under the panes as they are where the
+    panes have lines of their own; ``folded`` (rows more, rows beyond their least) is what
+    those lines take where the panes' own lines fold (they then say each search's counts, a
+    line more).  Each choice is fitted to the rows its own lines take, so the choice made is
+    the one made again once its lines are laid out (a layout that took the room the shorter
+    lines leave, then lost it to the longer ones, flipped back and forth)."""
     lists_min = CODE_MIN_HEIGHT if code else LISTS_MIN_HEIGHT
     candidates = []
     own = own_lines(n)
@@ -108,22 +119,25 @@ def arrange(n: int, width: int, height: int, map_size: tuple[int, int], *,
         preferred = pane_grid(n, width, room)[0]
         # each pane's own status lines (where it has them) give way last
         for stats in ((stats_height, 0) if own else (0,)):
+            more, wrap = folded if own and not stats and folded else (0, wrapped)
             for columns in range(1, n + 1):
                 rows = -(-n // columns)
-                pane_w, pane_h = width // columns, max(0, room // rows - stats)
+                pane_w, pane_h = width // columns, max(0, (room - more) // rows - stats)
                 pane = _pane(columns, rows, table, stats > 0, pane_w, pane_h, map_size,
                              fold_trees, lists_min)
-                if wrapped:
-                    steady_h = max(0, (room + wrapped) // rows - stats)
+                if wrap:
+                    steady_h = max(0, (room - more + wrap) // rows - stats)
                     steady = _pane(columns, rows, table, stats > 0, pane_w, steady_h,
                                    map_size, fold_trees, lists_min)
                     pane = _steady(steady, pane, steady_h, pane_h, map_size, fold_trees,
                                    lists_min)
-                candidates.append(((pane.fits, pane.pane_stats or not own, pane.lists,
+                shows = (pane.map_height or pane_h) >= min(map_size[1] + 2, MAP_MIN_LINES)
+                candidates.append(((pane.fits, shows, pane.pane_stats or not own, pane.lists,
                                     pane.trees or fold_trees, columns == preferred, table),
                                    pane))
     # What gives way first: the table, then the grid's best proportions, then the trees,
-    # then the lists, then the panes' own status lines; the map never.
+    # then the lists, then the panes' own status lines; the map never (where it cannot show
+    # whole, it keeps MAP_MIN_LINES before the rest keep theirs).
     return max(candidates, key=lambda ranked: ranked[0])[1]
 
 
@@ -207,4 +221,4 @@ def lesson_width(screen_width: int) -> int:
     return max(28, min(56, screen_width * 2 // 5))
 
 
-__all__ = ["CODE_MIN_HEIGHT", "Arrangement", "arrange", "lesson_width", "own_lines", "pane_grid"]
+__all__ = ["CODE_MIN_HEIGHT", "MAP_MIN_LINES", "Arrangement", "arrange", "lesson_width", "own_lines", "pane_grid"]

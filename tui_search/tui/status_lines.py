@@ -21,7 +21,7 @@ from tui_search.tui import playback
 from tui_search.tui.code_trace import line_notes
 from tui_search.tui.layout import own_lines
 from tui_search.tui.narration import frontier_word, narrate, result_text, status_parts
-from tui_search.tui.pieces import Line, Piece
+from tui_search.tui.pieces import Line, Piece, lay_out
 from tui_search.tui.session import Session
 
 #: Between two counts on a row.
@@ -153,5 +153,13 @@ def screen_status(session: Session, width: int, panes_lines: bool = True) -> Sta
                          note=session.note, code=session.show_code)
 
 
+def screen_rows(session: Session, width: int, content_width: int,
+                panes_lines: bool) -> tuple[int, int]:
+    """The rows :func:`screen_status`'s lines take wrapped to ``content_width`` (as the
+    status line widget wraps them), and how many lines they are."""
+    status = screen_status(session, width, panes_lines=panes_lines)
+    return len(lay_out(status.lines, content_width, status.max_rows)), len(status.lines)
+
+
 __all__ = ["MAX_ROWS", "PANE_ROWS", "Status", "lockstep_status", "playing_text",
-           "screen_status", "search_status"]
+           "screen_rows", "screen_status", "search_status"]

@@ -33,7 +33,7 @@ from tui_search.tui.layout import PANE_STATS_HEIGHT, arrange, lesson_width
 from tui_search.tui.narration import group_digits
 from tui_search.tui.readout import describe_each
 from tui_search.tui.session import NEEDS_ENDPOINTS, Before, Session
-from tui_search.tui.status_lines import screen_status
+from tui_search.tui.status_lines import screen_rows, screen_status
 from tui_search.tui.widgets.cell_readout import CellReadout
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.grid_view import GridView
@@ -168,9 +168,17 @@ class PanesScreen(Screen[None]):
         measured = table.outer_size.height if table and table.display else 0
         table_height = max(measured, len(self.panes) + 5)  # a line a search, its head, two
         # more and its border; more when its sentence wraps (the layout says if it shows)
-        if box.size.area:
-            width, height = box.size.width, box.size.height + measured
+        # the lines under the panes where the panes have lines of their own, and where not:
+        # the layout fits each choice to its own lines
+        lines_width = self.stats.content_size.width or self.size.width - 2  # its padding
+        (rows, least), (folded_rows, folded_least) = (
+            screen_rows(self.session, self.size.width, lines_width, own) for own in (True, False))
+        wrapped = rows - least
+        if box.size.area:  # the room the lines under the panes leave where the panes have lines
+            width, height = box.size.width, box.size.height + measured + (
+                self.stats.outer_size.height - rows)
         else:  # the key bar, the status lines, the readout, the legend, the challenge
+            wrapped = 0  # reckoned at a row a line
             width = self.size.width
             if self.session.lesson is not None:
                 width -= lesson_width(width)
@@ -184,7 +192,8 @@ class PanesScreen(Screen[None]):
                               table_height=table_height,
                               fold_trees=self.session.fold_trees and not self.session.show_code,
                               stats_height=stats or PANE_STATS_HEIGHT,
-                              wrapped=self._fitted_lines[1], code=self.session.show_code)
+                              wrapped=wrapped, code=self.session.show_code,
+                              folded=(folded_rows - rows, folded_rows - folded_least))
         box.styles.grid_size_columns = arrangement.columns
         box.styles.grid_size_rows = arrangement.rows
         if arrangement.table and table is not None and not table.display:
