@@ -3,15 +3,15 @@ package's metadata is in pyproject.toml).
 
 The extension is optional: where it does not build (no C compiler) ``pip install`` warns and
 the app runs its Python search loops (:mod:`tui_search.engine.loops.compiled` says which core
-runs).  The build embeds the source's SHA-256, so an editable install whose C source changed since
-is seen as stale (the hash of its four files, as
-:func:`tui_search.engine.loops.compiled.source_hash` computes it).  Floats must sum as Python's do: no contraction into fused
-multiply-adds (``-ffp-contract=off``; ``/fp:strict`` under MSVC).
+runs).  The build embeds the source's fingerprint (the CRC-32 and total size of its four
+files, as :func:`tui_search.engine.loops.compiled.source_hash` takes it), so an editable
+install whose C source changed since is seen as stale.  Floats must sum as Python's do: no
+contraction into fused multiply-adds (``-ffp-contract=off``; ``/fp:strict`` under MSVC).
 """
 
 from __future__ import annotations
 
-import hashlib
+import zlib
 from pathlib import Path
 
 from setuptools import Extension, setup
@@ -33,7 +33,8 @@ class BuildExt(build_ext):
         super().build_extensions()
 
 
-digest = hashlib.sha256(b"".join((ENGINE / name).read_bytes() for name in SOURCES)).hexdigest()
+source = b"".join((ENGINE / name).read_bytes() for name in SOURCES)
+digest = f"crc32:{zlib.crc32(source):08x}:{len(source)}"
 setup(
     ext_modules=[Extension("tui_search.engine._core",
                            [f"tui_search/engine/{name}" for name in SOURCES[:-1]],

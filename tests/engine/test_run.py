@@ -326,3 +326,22 @@ def test_the_run_surface_is_small_and_named() -> None:
     for facet, names in FACET_NAMES.items():
         assert public_names(getattr(run, facet)) == names, facet
     assert recording_of(run).rec.steps == run.recorded
+
+
+def test_a_step_is_a_value() -> None:
+    """Step is written out (not a dataclass, for the start's sake): equal and hashed by its
+    fields, keyword or positional, immutable, and shown with them."""
+    from dataclasses import FrozenInstanceError
+
+    from tui_search.engine.run import Step
+
+    run = Run(grid_from_rows(TUTORIAL_ROWS), "bfs")
+    first = run.steps.at(1)
+    again = Step(1, first.node, first.successors)
+    assert first == again and hash(first) == hash(again) and first != run.steps.at(2)
+    assert first != (1, first.node, first.successors)
+    assert repr(first).startswith(f"Step(index=1, node={first.node!r}, ")
+    for change in (lambda: setattr(first, "index", 2), lambda: delattr(first, "node"),
+                   lambda: setattr(first, "other", 1)):
+        with pytest.raises(FrozenInstanceError):
+            change()

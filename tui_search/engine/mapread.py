@@ -10,11 +10,11 @@ Stdlib only: the engine must not depend on the UI libraries.
 
 from __future__ import annotations
 
-import hashlib
 import math
 import os
 import re
 import stat
+import zlib
 from typing import BinaryIO
 
 from tui_search.engine.atomic import os_reason
@@ -126,7 +126,7 @@ def read_map_file(path: str) -> tuple[str, FileStamp]:
 def stamp_of(path: str, data: bytes, st: os.stat_result) -> FileStamp:
     """The stamp of the file at ``path`` holding ``data`` (``st`` its ``os.stat``)."""
     real = os.path.realpath(path)
-    return FileStamp(real, len(data), st.st_mtime_ns, hashlib.sha256(data).hexdigest())
+    return FileStamp(real, len(data), st.st_mtime_ns, zlib.crc32(data))
 
 
 def current_stamp(path: str) -> FileStamp | None:

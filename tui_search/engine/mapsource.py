@@ -22,16 +22,20 @@ TEXT, MOVINGAI = "text", "movingai"
 
 class FileStamp(NamedTuple):
     """What a file on disk was when it was read or written: its real path (symlinks
-    resolved), size, modification time and the SHA-256 of its bytes.  A file whose size or
-    hash differs has been changed by someone else (the time alone only says it was touched)."""
+    resolved), size, modification time and the CRC-32 of its bytes.  A file whose size or
+    CRC differs has been changed by someone else (the time alone only says it was touched).
+    The CRC catches every edit of up to 32 bits in a row and any other but one in 2**32 (of
+    the same size): a guard against someone's edit, not an adversary.  Not SHA-256: it is
+    taken as the map loads, and ``hashlib`` loads OpenSSL (~6 M instructions of the start;
+    ``zlib`` is imported by Textual already)."""
 
     path: str
     size: int
     mtime_ns: int
-    sha256: str
+    crc32: int
 
     def same_bytes(self, other: FileStamp) -> bool:
-        return (self.size, self.sha256) == (other.size, other.sha256)
+        return (self.size, self.crc32) == (other.size, other.crc32)
 
 
 class Lines(Sequence[str]):

@@ -86,13 +86,13 @@ class SearchApp(App[int]):
         assert chosen is not None, "the command line and the config offer only the app's themes"
         if chosen.dark == self.current_theme.dark:
             # What Textual set up for its default (the ANSI palette, -dark-mode) holds: set the
-            # name and the stylesheet's variables without the watcher, whose restyle of a
-            # stylesheet not read yet would cost the first frame ~10 ms.  (A light theme takes
-            # the watcher: it changes those.)
+            # name without the watcher, whose restyle of a stylesheet not read yet would cost
+            # the first frame ~10 ms.  (A light theme takes the watcher: it changes those.)
             self.set_reactive(App.theme, chosen.name)
-            self.stylesheet.set_variables(self.get_css_variables())
         else:
             self.theme = chosen.name
+        self._theme_chosen = True  # the stylesheet's variables are the chosen theme's:
+        self.stylesheet.set_variables(self.get_css_variables())
         for name in list(self.available_themes):  # only the app's: their map colours are set
             if name not in THEMES:
                 self.unregister_theme(name)
@@ -107,8 +107,15 @@ class SearchApp(App[int]):
             self._config_note(self.config.problem)
 
     # -- themes ---------------------------------------------------------------------------
+    #: False while ``App.__init__`` asks for the variables of Textual's default theme: the
+    #: app sets its chosen theme's in their place (``__init__``) before any CSS is read, so
+    #: generating those (~3.3 M instructions of the first frame) would be wasted.
+    _theme_chosen = False
+
     def get_css_variables(self) -> dict[str, str]:
         """Textual's variables for the theme, and the map's own ones it does not set."""
+        if not self._theme_chosen:
+            return {}
         variables = super().get_css_variables()
         for name, value in map_defaults(variables).items():
             variables.setdefault(name, value)

@@ -18,9 +18,9 @@ All positions are *virtual*: in the map's whole drawing, before scrolling.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
 from math import ceil, floor
 
+from tui_search.engine.frozen import Frozen
 from tui_search.engine.grid import Cell
 
 #: The largest cell: 2 * MAX_LEVEL characters wide, MAX_LEVEL lines tall.
@@ -31,35 +31,39 @@ def _ceil_div(a: int, b: int) -> int:
     return -(-a // b)
 
 
-@dataclass(frozen=True)
-class Geometry:
+class Geometry(Frozen):
     """A ``columns`` x ``rows`` map laid out at cell size ``level`` (``2 * level`` x ``level``
-    characters), or, with ``block`` > 0, as an overview of blocks of cells."""
+    characters), or, with ``block`` > 0, as an overview of blocks of cells.  A
+    :class:`~tui_search.engine.frozen.Frozen` value (not a frozen dataclass: ~4 M
+    instructions of every start), compared, hashed and shown by those four numbers."""
+
+    __slots__ = ("across", "block", "cell_height", "cell_width", "columns", "down", "halves",
+                 "level", "rows")
+    _FIELDS = ("columns", "rows", "level", "block")
 
     columns: int
     rows: int
-    level: int = 1
-    block: int = 0
+    level: int
+    block: int
     #: Characters a cell spans across (1 in the overview: a character per block).
-    cell_width: int = field(init=False, repr=False)
+    cell_width: int
     #: Lines a cell spans (1 in the overview: a line per two blocks).
-    cell_height: int = field(init=False, repr=False)
+    cell_height: int
     #: Map columns a character covers (1, or the overview's block).
-    across: int = field(init=False, repr=False)
+    across: int
     #: Map rows a line covers (1, or the overview's two blocks).
-    down: int = field(init=False, repr=False)
+    down: int
     #: Stacked parts a character draws its ``down`` rows in (1, or 2: the half blocks ``▀``).
-    halves: int = field(init=False, repr=False)
+    halves: int
 
-    def __post_init__(self) -> None:
+    def __init__(self, columns: int, rows: int, level: int = 1, block: int = 0) -> None:
         # The one place the kind of layout is chosen: from here on, only its numbers.
-        if self.block > 0:
-            layout = (1, 1, self.block, 2 * self.block, 2)
+        if block > 0:
+            cell_width, cell_height, across, down, halves = 1, 1, block, 2 * block, 2
         else:
-            layout = (2 * self.level, self.level, 1, 1, 1)
-        for name, value in zip(("cell_width", "cell_height", "across", "down", "halves"),
-                               layout):
-            object.__setattr__(self, name, value)
+            cell_width, cell_height, across, down, halves = 2 * level, level, 1, 1, 1
+        self._set(columns=columns, rows=rows, level=level, block=block, cell_width=cell_width,
+                  cell_height=cell_height, across=across, down=down, halves=halves)
 
     # -- construction --------------------------------------------------------------------
     @classmethod

@@ -109,7 +109,7 @@ class MainScreen(PanesScreen):
         self.session.show_code = not self.session.show_code
         self.fit_panes()
         self.present(changed=[])
-        if self.session.show_code and all(p.code_panel.has_class("-folded") for p in self.panes):
+        if self.session.show_code and not any(p.code_shown for p in self.panes):
             self.warn(NO_ROOM_FOR_CODE, timeout=6)
 
     def action_lesson(self, by: int) -> None:

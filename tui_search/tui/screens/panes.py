@@ -35,19 +35,19 @@ from tui_search.tui.readout import describe_each
 from tui_search.tui.session import NEEDS_ENDPOINTS, Before, Session
 from tui_search.tui.status_lines import screen_rows, screen_status
 from tui_search.tui.widgets.cell_readout import CellReadout
-from tui_search.tui.widgets.challenge import ChallengePanel
-from tui_search.tui.widgets.compare_table import CompareTable
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.key_bar import KeyBar
 from tui_search.tui.widgets.legend import Legend
-from tui_search.tui.widgets.parts import show_part
+from tui_search.tui.widgets.parts import Later, challenge_panel, compare_table, show_part
 from tui_search.tui.widgets.run_pane import RunPane
 from tui_search.tui.widgets.stats import Stats
 
 if TYPE_CHECKING:
     from tui_search.engine.exercise_file import Exercise
     from tui_search.engine.exercises import Verdict
+    from tui_search.tui.widgets.challenge import ChallengePanel
+    from tui_search.tui.widgets.compare_table import CompareTable
     from tui_search.tui.widgets.lesson_panel import LessonPanel
 
 MIN_WIDTH, MIN_HEIGHT = 60, 20
@@ -86,9 +86,9 @@ class PanesScreen(Screen[None]):
         self.stats = Stats(id="stats")
         yield self.stats
         # the comparison table, the challenge and the too-small note: mounted when first
-        # shown (show_part); until then neither composed nor styled
-        self.table = CompareTable(id="compare-table")
-        self.challenge = ChallengePanel(id="challenge")
+        # shown (show_part); until then neither composed nor styled (the first two not made)
+        self._table: Later[CompareTable] = Later(compare_table)
+        self._challenge: Later[ChallengePanel] = Later(challenge_panel)
         self.small_note = Static(id="too-small")
         self.readout = CellReadout(id="readout")
         yield self.readout
@@ -103,8 +103,16 @@ class PanesScreen(Screen[None]):
 
     def _show_part(self, part: Widget, shown: bool) -> None:
         """Mount the table, the challenge or the too-small note the first time it shows."""
-        show_part(self, part, shown, [self.stats, self.table, self.challenge, self.readout,
-                                      self.legend, self.pane_box, self.small_note])
+        show_part(self, part, shown, [self.stats, self._table.made, self._challenge.made,
+                                      self.readout, self.legend, self.pane_box, self.small_note])
+
+    @property
+    def table(self) -> CompareTable:
+        return self._table.get()
+
+    @property
+    def challenge(self) -> ChallengePanel:
+        return self._challenge.get()
 
     def _new_panes(self, labels: list[str] | None = None) -> list[RunPane]:
         """A pane for each of ``labels`` (default: every search shown)."""
@@ -156,8 +164,8 @@ class PanesScreen(Screen[None]):
         the first layout that room is reckoned from the screen's size, so the first frame is
         laid out as the next ones.  ``restyle=False``: the classes set are not restyled now
         (the screen is restyled whole next)."""
-        table, box = self.table, self.pane_box
-        measured = table.outer_size.height if table.display else 0
+        table, box = self._table.made, self.pane_box
+        measured = table.outer_size.height if table and table.display else 0
         table_height = max(measured, len(self.panes) + 5)  # a line a search, its head, two
         # more and its border; more when its sentence wraps (the layout says if it shows)
         # the lines under the panes where the panes have lines of their own, and where not:
@@ -167,8 +175,7 @@ class PanesScreen(Screen[None]):
             screen_rows(self.session, self.size.width, lines_width, own) for own in (True, False))
         wrapped = rows - least
         if box.size.area:  # the room the lines under the panes leave where the panes have lines
-            width, height = box.size.width, box.size.height + (
-                table.outer_size.height if table.display else 0) + (
+            width, height = box.size.width, box.size.height + measured + (
                 self.stats.outer_size.height - rows)
         else:  # the key bar, the status lines, the readout, the legend, the challenge
             wrapped = 0  # reckoned at a row a line
@@ -189,14 +196,15 @@ class PanesScreen(Screen[None]):
                               folded=(folded_rows - rows, folded_rows - folded_least))
         box.styles.grid_size_columns = arrangement.columns
         box.styles.grid_size_rows = arrangement.rows
-        if arrangement.table and not table.display:
+        if arrangement.table and table is not None and not table.display:
             table.show(self.session.labels, self.session.runs)  # not kept up while hidden
-        table.display = arrangement.table
-        self._show_part(table, arrangement.table)
+        if arrangement.table or table is not None:
+            self.table.display = arrangement.table
+            self._show_part(self.table, arrangement.table)
         panes_lines = self.panes[0].stats.display
         for pane in self.panes:
             pane.lay_out(arrangement, code=self.session.show_code, restyle=restyle)
-        shown = not all(p.code_panel.has_class("-folded") for p in self.panes)
+        shown = any(p.code_shown for p in self.panes)
         if self._code_shown and not shown and self.session.show_code:
             self.warn(NO_ROOM_FOR_CODE, timeout=6)  # never folded without a word
         self._code_shown = shown
@@ -289,8 +297,8 @@ class PanesScreen(Screen[None]):
                           hide_order=session.quiz.on and i == 0,
                           title=escape(describe_name(session.title)),  # a file's name: not markup
                           mark=marks[i] if i < len(marks) else None)
-        if self.table.display:
-            self.table.show(session.labels, runs)
+        if (table := self._table.made) is not None and table.display:
+            table.show(session.labels, runs)
         self.show_pick()
         self.show_status()
         self.show_readout()

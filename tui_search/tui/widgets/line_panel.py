@@ -158,6 +158,7 @@ def set_virtual_size(view: ScrollView, size: Size) -> None:
             or styles.overflow_x == "auto" and view.show_horizontal_scrollbar != wide
             or styles.overflow_y == "auto" and view.show_vertical_scrollbar != tall):
         view.virtual_size = size
+        fit_bars(view)
         return
     bar_w, bar_h = view.scrollbar_size_vertical, view.scrollbar_size_horizontal
     view.set_reactive(Widget.virtual_size, size)
@@ -169,6 +170,23 @@ def set_virtual_size(view: ScrollView, size: Size) -> None:
                          window_size=width - bar_w)
     view.scroll_x = view.validate_scroll_x(view.scroll_x)
     view.scroll_y = view.validate_scroll_y(view.scroll_y)
+    fit_bars(view)
+
+
+def fit_bars(view: ScrollView) -> None:
+    """Draw ``view``'s scrollbars only while one has a thumb (its lines overflow it): one
+    without is a blank track of the panel's own background, which Textual renders and
+    composites all the same (~27 M instructions of the tutorial's first frame;
+    benchmarks/README.md, session 13).  Their room stays (``overflow: scroll``).  Before
+    its first layout the view is left as its CSS has it (hidden); its first Resize decides."""
+    if not view.container_size:
+        return
+    window, virtual = view.scrollable_content_region.size, view.virtual_size
+    thumb = (view.show_vertical_scrollbar and virtual.height > window.height
+             or view.show_horizontal_scrollbar and virtual.width > window.width)
+    shown = "visible" if thumb else "hidden"
+    if view.styles.scrollbar_visibility != shown:
+        view.styles.scrollbar_visibility = shown  # a layout: the bars come or go
 
 
 class QuietScrollbars:
@@ -284,8 +302,9 @@ class LinePanel(QuietScrollbars, CachedStyles, ScrollView, can_focus=True):
         padding: 0 1;
         /* Always there, so that the lines do not jump sideways when a list grows past the
            panel; its track is the panel's own background, so a list that fits shows no bar
-           at all. */
+           at all: drawn only while it has a thumb (fit_bars). */
         overflow-y: scroll;
+        scrollbar-visibility: hidden;
         scrollbar-background: transparent;
         scrollbar-corner-color: $background;
         &:focus { border: round $border; border-title-color: $text-primary; }
@@ -358,6 +377,7 @@ class LinePanel(QuietScrollbars, CachedStyles, ScrollView, can_focus=True):
         return next((text for text in wordings if cell_len(text) <= room), "")
 
     def on_resize(self) -> None:
+        fit_bars(self)
         if self._titles is not None:
             titles, legends = self._wordings
             self._set_titles(self._fitting(titles), self._fitting(legends))

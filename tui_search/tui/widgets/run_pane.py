@@ -8,6 +8,8 @@ The screen pushes a run to it (:meth:`RunPane.show`) and tells it how to lay its
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from textual.app import ComposeResult
 from textual.containers import Vertical
 from textual.widget import Widget
@@ -17,12 +19,14 @@ from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.run import Run
 from tui_search.tui.layout import Arrangement
 from tui_search.tui.status_lines import search_status
-from tui_search.tui.widgets.code_panel import CodePanel
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.grid_view import GridView
-from tui_search.tui.widgets.parts import show_part
+from tui_search.tui.widgets.parts import Later, code_panel, show_part
 from tui_search.tui.widgets.search_tree import SearchTreePanel
 from tui_search.tui.widgets.stats import Stats
+
+if TYPE_CHECKING:
+    from tui_search.tui.widgets.code_panel import CodePanel
 
 #: The map's box is at least this wide where the pane is, so its title (the file's name) shows.
 MAP_TITLE_WIDTH = 30
@@ -39,7 +43,7 @@ class RunPane(Vertical):
         self.view = GridView(grid, classes="pane-map")
         self.frontier = FrontierPanel(classes="pane-frontier")
         self.tree_panel = SearchTreePanel(classes="pane-tree")
-        self.code_panel = CodePanel(classes="pane-code -folded")
+        self._code: Later[CodePanel] = Later(code_panel)  # made when first shown
         self.side_note = Static(note, classes="pane-note")
         self.map_box = Vertical(classes="pane-map-box")  # the room the map's cells fit
         self.lists = Vertical(classes="pane-lists")
@@ -61,7 +65,17 @@ class RunPane(Vertical):
             show_part(self, part, shown, [self.lists, self.stats, self.map_box])
         else:
             show_part(self.lists, part, shown,
-                      [self.frontier, self.tree_panel, self.code_panel, self.side_note])
+                      [self.frontier, self.tree_panel, self._code.made, self.side_note])
+
+    @property
+    def code_panel(self) -> CodePanel:
+        """The Code panel (made the first time it is asked for)."""
+        return self._code.get()
+
+    @property
+    def code_shown(self) -> bool:
+        """The Code panel is unfolded (so kept up to date)."""
+        return self._code.made is not None and not self._code.made.has_class("-folded")
 
     def lay_out(self, arrangement: Arrangement, code: bool = False,
                 restyle: bool = True) -> None:
@@ -84,12 +98,14 @@ class RunPane(Vertical):
             self.map_box.styles.height = arrangement.map_height or "1fr"
         self.view.styles.max_height = arrangement.map_max_height or "100%"
         self.tree_panel.set_class(not arrangement.trees or code, "-folded", update=restyle)
-        self.code_panel.set_class(not (arrangement.code and code), "-folded", update=restyle)
-        self._show_part(self.code_panel, arrangement.code and code)
+        code_there = arrangement.code and code
+        if code_there or self._code.made is not None:
+            self.code_panel.set_class(not code_there, "-folded", update=restyle)
+            self._show_part(self.code_panel, code_there)
         # in lines too few for a tree, the code takes three fifths of the row: its lines are long
         self.set_class(code and arrangement.code and not arrangement.trees, "-code-short",
                        update=restyle)
-        if self._run is not None and not self.code_panel.has_class("-folded"):
+        if self._run is not None and self.code_shown:
             self.code_panel.show(self._run)  # folded, it was not kept up to date
         # room for the map's title where the pane has it, else the map as narrow as it is
         self.view.styles.min_width = min(MAP_TITLE_WIDTH, max(0, arrangement.pane_width - 2))
@@ -108,14 +124,15 @@ class RunPane(Vertical):
         if run is not None:
             self.frontier.show(run, hide_order=hide_order)
             self.tree_panel.show(run)
-            if not self.code_panel.has_class("-folded"):
+            if self.code_shown:
                 self.code_panel.show(run)
             node = run.now.current_node()
             if follow and node is not None:
                 view.follow(node)
             if self.stats.display:  # its own status lines, where the layout gives it some
                 status = search_status(run, self.label, in_pane=True, done=run.at_end,
-                                       code=not self.code_panel.has_class("-folded"))
+                                       code=self.code_shown)
                 self.stats.show(status.lines, status.max_rows)
         if view.border_title != title:  # setting it repaints the whole view
             view.border_title = title
+

@@ -1,0 +1,45 @@
+"""Immutable values written out instead of frozen dataclasses, for the start's sake: a frozen
+dataclass compiles six methods when its module is imported (``slots=True`` builds its class
+twice too), ~0.6 M instructions a method at every start (benchmarks/README.md, session 13).
+A :class:`Frozen` subclass names the fields it is compared, hashed and shown by and sets
+them once (:meth:`Frozen._set`); it behaves as a frozen dataclass does."""
+
+from __future__ import annotations
+
+from dataclasses import FrozenInstanceError
+from typing import Any, ClassVar
+
+
+class Frozen:
+    """Equal (to the same class only) and hashed by the values of :attr:`_FIELDS`, shown as
+    ``Name(field=value, ...)``, and never changed once made (:class:`FrozenInstanceError`)."""
+
+    __slots__ = ()
+    _FIELDS: ClassVar[tuple[str, ...]] = ()
+
+    def _set(self, **values: Any) -> None:
+        """Set the attributes, once, as ``__init__`` makes the value."""
+        for name, value in values.items():
+            object.__setattr__(self, name, value)
+
+    def _values(self) -> tuple[object, ...]:
+        return tuple(getattr(self, name) for name in self._FIELDS)
+
+    def __setattr__(self, name: str, value: object) -> None:
+        raise FrozenInstanceError(f"cannot assign to field {name!r}")
+
+    def __delattr__(self, name: str) -> None:
+        raise FrozenInstanceError(f"cannot delete field {name!r}")
+
+    def __eq__(self, other: object) -> bool:
+        if other.__class__ is not self.__class__:
+            return NotImplemented
+        assert isinstance(other, Frozen)
+        return self._values() == other._values()
+
+    def __hash__(self) -> int:
+        return hash(self._values())
+
+    def __repr__(self) -> str:
+        fields = ", ".join(f"{name}={getattr(self, name)!r}" for name in self._FIELDS)
+        return f"{type(self).__name__}({fields})"
