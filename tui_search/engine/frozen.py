@@ -2,7 +2,7 @@
 dataclass compiles six methods when its module is imported (``slots=True`` builds its class
 twice too), ~0.6 M instructions a method at every start (benchmarks/README.md, session 13).
 A :class:`Frozen` subclass names the fields it is compared, hashed and shown by and sets
-them once (:meth:`Frozen._set`); it behaves as a frozen dataclass does."""
+them once (:meth:`Frozen._assign`); it behaves as a frozen dataclass does."""
 
 from __future__ import annotations
 
@@ -17,7 +17,7 @@ class Frozen:
     __slots__ = ()
     _FIELDS: ClassVar[tuple[str, ...]] = ()
 
-    def _set(self, **values: Any) -> None:
+    def _assign(self, **values: Any) -> None:
         """Set the attributes, once, as ``__init__`` makes the value."""
         for name, value in values.items():
             object.__setattr__(self, name, value)

@@ -43,7 +43,7 @@ class Step(Frozen):
     def __init__(self, index: int, node: Cell, successors: tuple[tuple[str, Cell], ...],
                  depth_limit: int | None = None, found_goal: bool = False,
                  discarded: bool = False) -> None:
-        self._set(index=index, node=node, successors=successors, depth_limit=depth_limit,
+        self._assign(index=index, node=node, successors=successors, depth_limit=depth_limit,
                   found_goal=found_goal, discarded=discarded)
 
 

@@ -62,7 +62,7 @@ class Geometry(Frozen):
             cell_width, cell_height, across, down, halves = 1, 1, block, 2 * block, 2
         else:
             cell_width, cell_height, across, down, halves = 2 * level, level, 1, 1, 1
-        self._set(columns=columns, rows=rows, level=level, block=block, cell_width=cell_width,
+        self._assign(columns=columns, rows=rows, level=level, block=block, cell_width=cell_width,
                   cell_height=cell_height, across=across, down=down, halves=halves)
 
     # -- construction --------------------------------------------------------------------

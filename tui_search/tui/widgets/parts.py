@@ -36,12 +36,12 @@ class Later(Generic[W]):
     benchmarks/README.md, session 13)."""
 
     def __init__(self, make: Callable[[], W]) -> None:
-        self._make = make
+        self._build = make
         self.made: W | None = None
 
     def get(self) -> W:
         if self.made is None:
-            self.made = self._make()
+            self.made = self._build()
         return self.made
 
 
