@@ -15,7 +15,7 @@ gives a "not installed" row.  See benchmarks/README.md for what each row means.
 
 This file is the entry point only: each section lives in its own module of this package
 (core.py, fallback.py, engine.py, choices.py, informed.py, jump.py, step.py, startup.py,
-class_load.py, terrain.py, big_map.py), on the shared table.py, harness.py and maps.py.
+instructions.py, class_load.py, terrain.py, big_map.py), on the shared table.py, harness.py and maps.py.
 """
 
 from __future__ import annotations
@@ -43,6 +43,7 @@ from benchmarks.engine import bench_engine
 from benchmarks.fallback import bench_fallback
 from benchmarks.harness import NOISE, med
 from benchmarks.informed import bench_informed
+from benchmarks.instructions import bench_instructions
 from benchmarks.jump import bench_jump
 from benchmarks.startup import bench_startup
 from benchmarks.step import bench_step
@@ -53,7 +54,8 @@ from benchmarks.terrain import bench_terrain
 SECTIONS = {"core": bench_core, "fallback": bench_fallback, "engine": bench_engine,
             "choices": bench_choices, "informed": bench_informed, "jump": bench_jump,
             "step": bench_step, "compare": bench_compare, "startup": bench_startup,
-            "class_load": bench_class_load, "terrain": bench_terrain, "big_map": bench_big_map}
+            "instructions": bench_instructions, "class_load": bench_class_load,
+            "terrain": bench_terrain, "big_map": bench_big_map}
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -3,9 +3,11 @@ imported, and while the app is built and draws its first frame, and left as it w
 
 from __future__ import annotations
 
+import ast
 import gc
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 
@@ -120,5 +122,26 @@ def test_the_first_frame_imports_no_module_only_a_key_needs() -> None:
             # the headless output, the traces' checks and replays, --scen's scenario files
             "tui_search.headless", "tui_search.trace_cli", "tui_search.engine.scenarios",
             # the map generators (ctrl+n, --generate): the help reads recipe_kinds only
-            "tui_search.engine.generate", "tui_search.engine.mazes", "tui_search.engine.prng"}
+            "tui_search.engine.generate", "tui_search.engine.mazes", "tui_search.engine.prng",
+            # saving and opening (session 14), the settings dialog's choices
+            "tui_search.tui.files", "tui_search.tui.save_questions",
+            "tui_search.tui.screens.settings_choice"}
     assert not loaded & late
+    # What the first frame imports defines no dataclass (each compiles its methods at import)
+    # and no NamedTuple under ``from __future__ import annotations`` (typing compiles each
+    # string annotation): ~1 ms and ~5 M instructions of every start (session 14).
+    slow = []
+    for name in sorted(loaded):
+        base = Path(_repo()) / name.replace(".", "/")
+        found = [p for p in (base.with_suffix(".py"), base / "__init__.py") if p.exists()]
+        if not found:  # the compiled core
+            continue
+        tree = ast.parse(found[0].read_text(encoding="utf-8"))
+        future = any(isinstance(n, ast.ImportFrom) and n.module == "__future__" for n in tree.body)
+        for node in ast.walk(tree):
+            if isinstance(node, ast.ClassDef):
+                named = any(ast.unparse(b).endswith("NamedTuple") for b in node.bases)
+                made = any("dataclass" in ast.unparse(d) for d in node.decorator_list)
+                if made or (named and future):
+                    slow.append(f"{name}.{node.name}")
+    assert not slow

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import argparse
 import gc
+import shutil
 import sys
 from collections.abc import Sequence
 from pathlib import Path
@@ -59,8 +60,12 @@ class _Parser(argparse.ArgumentParser):
 
 
 def build_parser() -> argparse.ArgumentParser:
+    # argparse makes a help formatter for every argument it adds, and each asks the terminal's
+    # size: asked once here (build_parser 0.85 -> 0.46 ms).
+    width = shutil.get_terminal_size().columns - 2
     p = _Parser(
         prog="tui-search",
+        formatter_class=lambda prog: argparse.HelpFormatter(prog, width=width),
         description="Watch a robot plan a path on a grid with breadth-first, depth-first, "
         "iterative-deepening, uniform-cost, greedy best-first and A* search. With no MAP, opens "
         "the tutorial's 6x6 map.",

@@ -20,7 +20,6 @@ from tui_search.engine.grid import DEFAULT_ORDER, Cell, Grid, parse_order
 from tui_search.engine.heuristics import DEFAULT_HEURISTIC
 from tui_search.engine.mapfile import load_map, parse_cell, parse_map_text
 from tui_search.engine.mapread import MapError
-from tui_search.engine.mapwrite import save_new
 from tui_search.engine.recipe_kinds import DEFAULT_SEED, DEFAULT_SIZE
 from tui_search.engine.semantics import Semantics
 from tui_search.engine.terrain import load_terrain
@@ -154,6 +153,7 @@ def write_generated(args: argparse.Namespace) -> int:
     """--generate with --output: write the map to a new file (never over one), or with
     ``--output -`` to standard output (``./-`` names a file called ``-``), exit 0."""
     from tui_search.engine.generate import generate, generated_text
+    from tui_search.engine.mapwrite import save_new
 
     if args.output == "-":
         sys.stdout.write(generated_text(args.recipe))  # the bytes a file would get

@@ -96,3 +96,34 @@ def test_costs_given_as_a_new_array_are_padded_anew() -> None:
     grid.costs = array("d", [1.0, 6.0, 2.0])
     _check(grid)
     assert Run(grid, "ucs").outcome().cost == 8.0
+
+
+def test_a_grid_is_a_mutable_value() -> None:
+    """Grid is written out (not a dataclass, for the start's sake): equal by its size, cells,
+    ends and costs (not by the file it came from, nor by what is worked out from it), with no
+    hash, shown by its size, cells and ends, and checked when made."""
+    import pytest
+
+    from tui_search.engine.mapsource import MapSource
+
+    grid = Grid(3, 2, bytearray([0, 1, 0, 0, 0, 0]), (0, 0), (2, 1),
+                costs=array("d", [1.0, 1.0, 2.0, 1.0, 1.0, 1.0]))
+    copy = grid.copy()
+    assert copy == grid and copy is not grid and copy.source is None
+    copy.lowest_cost()
+    assert Grid(3, 2, bytearray(grid.blocked), (0, 0), (2, 1), source=object(),  # type: ignore[arg-type]
+                costs=array("d", grid.costs or [])) == grid
+    assert Grid(2, 1, costs=array("d", [1.0, 1.0])).costs is None  # all 1: no costs kept
+    for other in (Grid(3, 2, bytearray(grid.blocked), (0, 0), (2, 0), costs=grid.costs),
+                  Grid(3, 2, bytearray(6), (0, 0), (2, 1), costs=grid.costs),
+                  Grid(3, 2, bytearray(grid.blocked), (0, 0), (2, 1))):
+        assert other != grid
+    assert grid != (3, 2) and not isinstance(MapSource, Grid)
+    with pytest.raises(TypeError):
+        hash(grid)
+    assert repr(Grid(2, 1, start=(0, 0))) == (
+        "Grid(width=2, height=1, blocked=bytearray(b'\\x00\\x00'), start=(0, 0), goal=None)")
+    for bad in (lambda: Grid(0, 1), lambda: Grid(2, 2, bytearray(3)),
+                lambda: Grid(2, 1, costs=array("d", [1.0]))):
+        with pytest.raises(ValueError):
+            bad()

@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import itertools
 import math
-from dataclasses import replace
 
 import pytest
 from hypothesis import given, settings
@@ -59,7 +58,7 @@ def test_uniform_cost_finds_the_cheapest_path(grid: Grid, sem: Semantics) -> Non
 @given(random_grids(max_side=8), rules(), st.sampled_from(ADMISSIBLE))
 def test_a_star_with_an_admissible_heuristic_finds_the_cheapest_path(grid, sem, name) -> None:
     ucs = Run(grid, "ucs", sem).outcome()
-    astar = Run(grid, "astar", replace(sem, heuristic=name)).outcome()
+    astar = Run(grid, "astar", sem.replace(heuristic=name)).outcome()
     assert astar.found == ucs.found
     if ucs.found:
         assert close(astar.cost, ucs.cost)
@@ -68,7 +67,7 @@ def test_a_star_with_an_admissible_heuristic_finds_the_cheapest_path(grid, sem, 
 @props
 @given(random_grids(max_side=8), rules(), st.sampled_from(sorted(HEURISTICS)))
 def test_greedy_paths_are_legal_and_never_cheaper(grid, sem, name) -> None:
-    greedy = Run(grid, "greedy", replace(sem, heuristic=name)).outcome()
+    greedy = Run(grid, "greedy", sem.replace(heuristic=name)).outcome()
     ucs = Run(grid, "ucs", sem).outcome()
     assert greedy.found == ucs.found  # complete on a finite map (graph search)
     if greedy.found:

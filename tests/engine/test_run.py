@@ -345,3 +345,17 @@ def test_a_step_is_a_value() -> None:
                    lambda: setattr(first, "other", 1)):
         with pytest.raises(FrozenInstanceError):
             change()
+
+
+def test_a_record_names_every_array_it_keeps() -> None:
+    """Record is written out (not a dataclass, for the start's sake): FIELDS, which the tests
+    compare two records by, is every attribute it has, before a search and after one."""
+    from tui_search.engine.record import Record
+    from tui_search.engine.run import recording_of
+
+    assert tuple(vars(Record())) == Record.FIELDS
+    for key in ("bfs", "iddfs", "astar"):
+        run = Run(grid_from_rows(TUTORIAL_ROWS), key)
+        run.advance()
+        rec = recording_of(run).rec
+        assert set(vars(rec)) == set(Record.FIELDS) and repr(rec).startswith("Record(steps=")

@@ -247,3 +247,27 @@ def test_deltas_are_unit_moves() -> None:
     assert sorted(DELTAS.values()) == sorted(
         (dx, dy) for dx in (-1, 0, 1) for dy in (-1, 0, 1) if (dx, dy) != (0, 0)
     )
+
+
+def test_the_choices_are_a_value() -> None:
+    """Semantics is written out (not a frozen dataclass, for the start's sake): checked when
+    made, equal and hashed by its choices, changed only by a copy (``replace``), and pickled
+    and copied as made."""
+    import copy
+    import pickle
+    from dataclasses import FrozenInstanceError
+
+    sem = Semantics(visit="expand")
+    assert sem == Semantics(visit="expand") and hash(sem) == hash(Semantics(visit="expand"))
+    assert sem != Semantics() and not sem.is_default and Semantics().is_default
+    changed = sem.replace(corners="never")
+    assert (changed.corners, changed.visit, sem.corners) == ("never", "expand", "always")
+    for again in (pickle.loads(pickle.dumps(changed)), copy.deepcopy(changed), copy.copy(changed)):
+        assert again == changed and type(again) is Semantics
+    assert repr(sem).startswith("Semantics(order=(") and "visit='expand'" in repr(sem)
+    with pytest.raises(FrozenInstanceError):
+        sem.visit = "generate"  # type: ignore[misc]
+    with pytest.raises(ValueError, match="tree search has no visited set"):
+        sem.replace(tree_search=True)
+    with pytest.raises(ValueError, match="corners 'some'"):
+        Semantics(corners="some")

@@ -3,7 +3,6 @@ costs, and that a map whose every cell costs 1 runs exactly as a plain map does.
 
 from __future__ import annotations
 
-import dataclasses
 import heapq
 import itertools
 from array import array
@@ -190,7 +189,7 @@ def test_all_one_terrain_gives_todays_records_and_json(key: str, name: str, tmp_
 
 def _record(run: Run) -> dict:
     rec = recording_of(run).rec
-    out = {f.name: getattr(rec, f.name) for f in dataclasses.fields(rec)}
+    out = {name: getattr(rec, name) for name in rec.FIELDS}
     out["step_exp"] = [rec.exp(k) for k in range(1, rec.steps + 1)]
     out["step_g"] = None if rec.step_g is None else [g.hex() for g in rec.step_g]
     return out

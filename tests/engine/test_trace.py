@@ -175,7 +175,6 @@ def app_case(grid: Grid, key: str, sem: Semantics, visit: str,
     """``sem`` with the visit rule or tree search of ``visit`` where it applies to ``key``,
     and the app's trace of that search (up to ``limit`` steps; "" when the start is the
     goal: hypothesis drops the case)."""
-    from dataclasses import replace
 
     from hypothesis import assume
 
@@ -183,9 +182,9 @@ def app_case(grid: Grid, key: str, sem: Semantics, visit: str,
 
     algo = get_algorithm(key)
     if visit == "tree":
-        sem = replace(sem, tree_search=True)
+        sem = sem.replace(tree_search=True)
     elif visit == "expand" and not (algo.iterative or algo.weighted):
-        sem = replace(sem, visit="expand")
+        sem = sem.replace(visit="expand")
     text = app_trace(grid, key, sem, limit)
     assume(text)
     return sem, text

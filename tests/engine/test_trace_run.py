@@ -5,7 +5,6 @@ trace added and has not expanded, in the order added, either way and after a lon
 from __future__ import annotations
 
 from collections import Counter
-from dataclasses import replace
 
 from tests.engine.test_trace import GRID, app_case, lines, over_app_searches
 from tui_search.engine.algorithms import Frontier
@@ -80,7 +79,7 @@ def test_a_stack_trace_takes_the_newest_entry_of_a_cell_a_queue_the_oldest() -> 
                  {"node": [0, 2], "successors": []})
     trace = read_trace(text, GRID, "t")
     for key, left in (("bfs", 4), ("dfs", 2)):
-        run = trace_run(trace, GRID, key, replace(DEFAULT_SEMANTICS, visit="expand"))
+        run = trace_run(trace, GRID, key, DEFAULT_SEMANTICS.replace(visit="expand"))
         run.goto(4)
         assert run.now.frontier() == [left]
         assert run.steps.at(4).node == (0, 2) and not run.steps.at(4).discarded

@@ -201,7 +201,7 @@ async def test_a_narrow_key_bar_drops_the_least_important_hints_never_help_and_q
         assert hints[-2:] == ["Help", "Quit"] and hints[:2] == ["Step", "Play"]
         assert len(hints) < len(bar.hints())  # not all fit: Zoom, Save, Reset went
         assert "Zoom" not in hints and "Reset" not in hints
-        assert "? Help  q Quit" in bar.render().plain
+        assert "? Help  q Quit" in bar.render_line(0).text
         await pilot.press("space")
         await pilot.pause()
         assert "Pause" in shown(app) and shown(app)[-2:] == ["Help", "Quit"]
@@ -209,6 +209,30 @@ async def test_a_narrow_key_bar_drops_the_least_important_hints_never_help_and_q
     app = tutorial_app()
     async with app.run_test(size=(150, 32)):
         assert shown(app) == [desc for _, desc, _ in app.query_one(KeyBar).hints()]
+
+
+@sync
+async def test_a_hint_wider_than_the_bar_ends_in_an_ellipsis() -> None:
+    from typing import ClassVar
+
+    from textual.app import App, ComposeResult
+    from textual.binding import BindingType
+
+    class OneKey(App[None]):
+        BINDINGS: ClassVar[list[BindingType]] = [("q", "quit", "Quit the app")]
+
+        def compose(self) -> ComposeResult:
+            yield KeyBar(id="keys")
+
+    app = OneKey()
+    async with app.run_test(size=(9, 3)) as pilot:  # 7 columns inside the bar's padding
+        bar = app.query_one(KeyBar)
+        await pilot.pause()
+        line = bar.render_line(0)
+        assert line.text == "q Quit…" and line.cell_length == 7
+        await pilot.click(KeyBar, offset=(1, 0))  # its key still presses it
+        await pilot.pause()
+    assert app.return_code == 0
 
 
 # -- item 13: small things -----------------------------------------------------------------

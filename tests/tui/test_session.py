@@ -3,8 +3,6 @@ seek and the exercise, as plain unit tests (the screen only shows what these dec
 
 from __future__ import annotations
 
-from dataclasses import replace
-
 from tests.helpers import TUTORIAL
 from tui_search.engine.exercise_file import built_in_exercise
 from tui_search.engine.exercises import grade
@@ -54,7 +52,7 @@ def test_a_refused_spec_changes_nothing() -> None:
 
 
 def test_the_visit_rule_falls_back_where_it_does_not_apply() -> None:
-    session = tutorial(semantics=replace(DEFAULT_SEMANTICS, visit="expand"))
+    session = tutorial(semantics=DEFAULT_SEMANTICS.replace(visit="expand"))
     session.choose_algorithm("iddfs")  # the setting stays for the next search it applies to
     assert session.semantics.visit == "expand" and "does not apply to ID" in session.note
     assert session.contenders[0].semantics.visit == "generate"
@@ -62,7 +60,7 @@ def test_the_visit_rule_falls_back_where_it_does_not_apply() -> None:
     assert session.note == "" and session.contenders[0].semantics.visit == "generate"
     session.choose_algorithm("bfs")
     assert session.contenders[0].semantics.visit == "expand" and session.note == ""
-    session = tutorial(semantics=replace(DEFAULT_SEMANTICS, visit="expand"), compare="bfs,iddfs")
+    session = tutorial(semantics=DEFAULT_SEMANTICS.replace(visit="expand"), compare="bfs,iddfs")
     assert "Visit on expand does not apply to ID" in session.note
     assert [c.semantics.visit for c in session.contenders] == ["expand", "generate"]
 
@@ -157,7 +155,7 @@ def test_the_exercise_verdict_is_the_headless_one() -> None:
 
 def test_the_settings_pick_what_c_compares_and_apply_their_rules() -> None:
     session = tutorial(compare="bfs,dfs")
-    corners = replace(DEFAULT_SEMANTICS, corners="never")
+    corners = DEFAULT_SEMANTICS.replace(corners="never")
     session.choose_settings(corners, "bfs,ucs")
     assert session.labels == ["BFS", "UCS"] and session.comparison == "bfs,ucs"
     assert all(c.semantics.corners == "never" for c in session.contenders)

@@ -8,7 +8,6 @@ from __future__ import annotations
 import itertools
 import math
 import shutil
-from dataclasses import replace
 from pathlib import Path
 
 import pytest
@@ -206,7 +205,7 @@ async def test_a_save_writes_the_painted_digits_and_keeps_every_other_line(tmp_p
 
 def test_painting_a_cost_lapses_the_benchmarks_optimum_and_undo_brings_it_back() -> None:
     grid = Grid(4, 1, bytearray(4), start=(0, 0), goal=(3, 0))
-    session = Session(grid, semantics=replace(DEFAULT_SEMANTICS, corners="never"),
+    session = Session(grid, semantics=DEFAULT_SEMANTICS.replace(corners="never"),
                       optimal_cost=3.0)
     assert session.run.known_lowest == 3.0
     session.edits.brush, session.cursor = 5.0, (1, 0)

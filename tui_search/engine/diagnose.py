@@ -8,15 +8,13 @@ searched again with BFS (complete, and fast on any map the app opens).
 
 from __future__ import annotations
 
-from dataclasses import replace
-
 from tui_search.engine.grid import DEFAULT_ORDER, DIRECTIONS, Grid
 from tui_search.engine.run import Run
 from tui_search.engine.semantics import Semantics
 
 
 def _has_path(grid: Grid, semantics: Semantics) -> bool:
-    return Run(grid, "bfs", replace(semantics, visit="generate", goal_test="generate",
+    return Run(grid, "bfs", semantics.replace(visit="generate", goal_test="generate",
                                     tree_search=False)).outcome().found
 
 
@@ -24,13 +22,13 @@ def blocking_rule(grid: Grid, semantics: Semantics) -> str | None:
     """A few words on the rule that leaves ``grid`` without a path (None when no rule does:
     there is no path whatever the rules)."""
     moves = ",".join(semantics.order)
-    if semantics.corners != "always" and _has_path(grid, replace(semantics, corners="always")):
+    if semantics.corners != "always" and _has_path(grid, semantics.replace(corners="always")):
         return f"the corner rule '{semantics.corners}' blocks it (with 'always' there is a path)"
     if set(semantics.order) != set(DIRECTIONS):
-        everything = replace(semantics, order=DEFAULT_ORDER)
+        everything = semantics.replace(order=DEFAULT_ORDER)
         if _has_path(grid, everything):
             return f"the moves {moves} block it (with all eight there is a path)"
-        if _has_path(grid, replace(everything, corners="always")):
+        if _has_path(grid, everything.replace(corners="always")):
             return (f"the moves {moves} and the corner rule '{semantics.corners}' block it "
                     "(all eight moves with 'always' find a path)")
     return None

@@ -2,12 +2,18 @@
 dataclass compiles six methods when its module is imported (``slots=True`` builds its class
 twice too), ~0.6 M instructions a method at every start (benchmarks/README.md, session 13).
 A :class:`Frozen` subclass names the fields it is compared, hashed and shown by and sets
-them once (:meth:`Frozen._assign`); it behaves as a frozen dataclass does."""
+them once (:meth:`Frozen._assign`); it behaves as a frozen dataclass does (``__init__``
+takes the fields by name, so :meth:`Frozen.replace`, pickling and copying remake it)."""
 
 from __future__ import annotations
 
 from dataclasses import FrozenInstanceError
-from typing import Any, ClassVar
+from typing import TYPE_CHECKING, Any, ClassVar, TypeVar
+
+if TYPE_CHECKING:
+    from typing_extensions import Self
+
+_F = TypeVar("_F", bound="Frozen")
 
 
 class Frozen:
@@ -21,6 +27,17 @@ class Frozen:
         """Set the attributes, once, as ``__init__`` makes the value."""
         for name, value in values.items():
             object.__setattr__(self, name, value)
+
+    def replace(self, **changes: Any) -> Self:
+        """A copy with ``changes`` made, as :func:`dataclasses.replace` makes one: the
+        class's ``__init__`` takes every field of :attr:`_FIELDS` by name."""
+        values = {name: getattr(self, name) for name in self._FIELDS}
+        values.update(changes)
+        return type(self)(**values)
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        """Pickled and copied as made: by ``__init__`` with the fields by name."""
+        return _remake, (type(self), {name: getattr(self, name) for name in self._FIELDS})
 
     def _values(self) -> tuple[object, ...]:
         return tuple(getattr(self, name) for name in self._FIELDS)
@@ -43,3 +60,7 @@ class Frozen:
     def __repr__(self) -> str:
         fields = ", ".join(f"{name}={getattr(self, name)!r}" for name in self._FIELDS)
         return f"{type(self).__name__}({fields})"
+
+
+def _remake(cls: type[_F], values: dict[str, Any]) -> _F:
+    return cls(**values)

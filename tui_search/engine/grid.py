@@ -16,7 +16,6 @@ from __future__ import annotations
 import math
 from array import array
 from collections.abc import Callable
-from dataclasses import dataclass, field
 from itertools import compress, pairwise
 from typing import TypeVar
 
@@ -74,7 +73,6 @@ def is_diagonal(direction: str) -> bool:
     return len(direction) == 2
 
 
-@dataclass
 class Grid:
     """A ``width`` x ``height`` map; ``blocked[y * width + x]`` is 1 for an obstacle, and
     ``costs[y * width + x]`` (None: all 1) what entering the cell costs (> 0; 1 on an
@@ -83,38 +81,52 @@ class Grid:
     never by writing into ``blocked`` or ``costs``: :meth:`lowest_cost` and :meth:`derived`
     are remembered until then, and a copy shares ``costs`` until one of the two sets a cost."""
 
-    width: int
-    height: int
-    # None (all open) is filled in by __post_init__: a grid's blocked is always a bytearray.
-    blocked: bytearray = field(default=None)  # type: ignore[assignment]
-    start: Cell | None = None
-    goal: Cell | None = None
-    #: The file text the grid was read from (None for a grid built in code): saving writes
-    #: it back with only the edited cells changed.  Not part of the grid's value (``==``).
-    source: MapSource | None = field(default=None, compare=False, repr=False)
-    costs: array[float] | None = field(default=None, repr=False)
-    # lowest_cost's answer and the costs it is for: worked out again after an edit
-    # (set_cost, set_blocked) or when ``costs`` is another array.
-    _lowest: tuple[array[float], float] | None = field(
-        default=None, init=False, compare=False, repr=False)
-    # derived()'s answers, shared with this grid's copies: an edit gives the edited grid a new,
-    # empty dict (never clears the shared one), so the others keep theirs.
-    _derived: dict[str, tuple[array[float] | None, object]] = field(
-        default_factory=dict, init=False, compare=False, repr=False)
-    # costs is one array with a copy's (or the grid copied): set_cost copies it before writing.
-    _costs_shared: bool = field(default=False, init=False, compare=False, repr=False)
+    #: What two grids are compared by (``==``; a grid is mutable, so it has no hash) and
+    #: shown by: not the file text, nor what is worked out from the cells.
+    COMPARED = ("width", "height", "blocked", "start", "goal", "costs")
 
-    def __post_init__(self) -> None:
-        if self.width < 1 or self.height < 1:
+    def __init__(self, width: int, height: int, blocked: bytearray | None = None,
+                 start: Cell | None = None, goal: Cell | None = None,
+                 source: MapSource | None = None, costs: array[float] | None = None) -> None:
+        # Written out, not a dataclass: one costs ~0.7 ms of every start (session 14).
+        if width < 1 or height < 1:
             raise ValueError("a grid needs at least one row and one column")
-        if self.blocked is None:
-            self.blocked = bytearray(self.width * self.height)
-        elif len(self.blocked) != self.width * self.height:
+        if blocked is None:
+            blocked = bytearray(width * height)  # all open
+        elif len(blocked) != width * height:
             raise ValueError("blocked has the wrong size")
-        if self.costs is not None:
-            if len(self.costs) != len(self.blocked):
-                raise ValueError("costs has the wrong size")
-            self._all_ones()
+        if costs is not None and len(costs) != len(blocked):
+            raise ValueError("costs has the wrong size")
+        self.width = width
+        self.height = height
+        self.blocked = blocked
+        self.start = start
+        self.goal = goal
+        #: The file text the grid was read from (None for a grid built in code): saving
+        #: writes it back with only the edited cells changed.  Not part of the grid's value.
+        self.source = source
+        self.costs = costs
+        # lowest_cost's answer and the costs it is for: worked out again after an edit
+        # (set_cost, set_blocked) or when ``costs`` is another array.
+        self._lowest: tuple[array[float], float] | None = None
+        # derived()'s answers, shared with this grid's copies: an edit gives the edited grid
+        # a new, empty dict (never clears the shared one), so the others keep theirs.
+        self._derived: dict[str, tuple[array[float] | None, object]] = {}
+        # costs is one array with a copy's (or the grid copied): set_cost copies it before
+        # writing.
+        self._costs_shared = False
+        self._all_ones()
+
+    def __eq__(self, other: object) -> bool:
+        if other.__class__ is not self.__class__:
+            return NotImplemented
+        return all(getattr(self, name) == getattr(other, name) for name in self.COMPARED)
+
+    __hash__ = None  # type: ignore[assignment]  # mutable: unhashable, as a dataclass with == is
+
+    def __repr__(self) -> str:
+        shown = ", ".join(f"{name}={getattr(self, name)!r}" for name in self.COMPARED[:5])
+        return f"Grid({shown})"
 
     # -- queries -------------------------------------------------------------------------
     def in_bounds(self, cell: Cell) -> bool:

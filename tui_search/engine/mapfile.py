@@ -13,7 +13,6 @@ import re
 
 from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.mapread import MAX_DIGITS, check_cell, quoted, read_map_file
-from tui_search.engine.movingai import parse_movingai_map
 from tui_search.engine.terrain import Terrain
 from tui_search.engine.textmap import parse_text_map
 
@@ -41,6 +40,8 @@ def parse_map_text(
     placed on a costed cell keeps its cost.
     """
     if _is_movingai(text):
+        from tui_search.engine.movingai import parse_movingai_map  # only for a .map
+
         grid = parse_movingai_map(text, path, terrain)
     else:
         grid = parse_text_map(text, path, need_start=start is None, need_goal=goal is None,

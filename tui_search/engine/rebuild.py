@@ -8,8 +8,8 @@ compiled core runs, its C twins (``_core_position.c``) do them; the Python ones 
 fallback and the specification (``tests/engine/test_rebuild.py`` holds the two equal).
 """
 
-from __future__ import annotations
-
+# No `from __future__ import annotations`: typing compiles a NamedTuple's string
+# annotations one by one at import (~5 M instructions of every start in all: session 14).
 from array import array
 from collections.abc import Callable, Sequence
 from itertools import compress
@@ -18,8 +18,8 @@ from typing import NamedTuple
 from tui_search.engine.loops.compiled import selected
 
 
-def count_generated(gen_node: array[int], lo: int, hi: int, n_gen: array[int],
-                    latest: array[int]) -> None:
+def count_generated(gen_node: "array[int]", lo: int, hi: int, n_gen: "array[int]",
+                    latest: "array[int]") -> None:
     """For each event ``g`` in ``lo .. hi - 1``, in order: its cell's ``n_gen`` += 1 and its
     ``latest`` event is ``g``."""
     for p in gen_node[lo:hi]:
@@ -28,7 +28,7 @@ def count_generated(gen_node: array[int], lo: int, hi: int, n_gen: array[int],
         latest[gen_node[g]] = g
 
 
-def count_expanded(gen_node: array[int], events: Sequence[int], n_exp: array[int]) -> None:
+def count_expanded(gen_node: "array[int]", events: Sequence[int], n_exp: "array[int]") -> None:
     """For each event of ``events`` (an int array or a range): its cell's ``n_exp`` += 1."""
     for g in events:
         n_exp[gen_node[g]] += 1
@@ -48,8 +48,8 @@ def open_events(flags: bytearray, root: int, lo: int, hi: int) -> list[int]:
 class Kernels(NamedTuple):
     """The four loops, from one core."""
 
-    count_generated: Callable[[array[int], int, int, array[int], array[int]], None]
-    count_expanded: Callable[[array[int], Sequence[int], array[int]], None]
+    count_generated: "Callable[[array[int], int, int, array[int], array[int]], None]"
+    count_expanded: "Callable[[array[int], Sequence[int], array[int]], None]"
     clear_events: Callable[[bytearray, Sequence[int], int], None]
     open_events: Callable[[bytearray, int, int, int], list[int]]
 

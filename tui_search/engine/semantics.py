@@ -23,9 +23,8 @@ The defaults are the tutorial's semantics.  A combination that makes no sense is
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
-
 from tui_search.engine.algorithms import Algorithm
+from tui_search.engine.frozen import Frozen
 from tui_search.engine.grid import DEFAULT_ORDER, DELTAS
 from tui_search.engine.heuristics import DEFAULT_HEURISTIC, HEURISTICS
 
@@ -44,32 +43,38 @@ EXPLAIN: dict[str, str] = {
 }
 
 
-@dataclass(frozen=True)
-class Semantics:
-    """Every choice that changes what a search does, with the tutorial's defaults."""
+class Semantics(Frozen):
+    """Every choice that changes what a search does, with the tutorial's defaults.  A
+    :class:`~tui_search.engine.frozen.Frozen` value (not a frozen dataclass: ~1 ms of
+    every start); :meth:`~tui_search.engine.frozen.Frozen.replace` makes a
+    changed copy."""
 
-    order: tuple[str, ...] = DEFAULT_ORDER
-    corners: str = "always"
-    visit: str = "generate"
-    goal_test: str | None = None  # None: the algorithm's own
-    tree_search: bool = False
-    heuristic: str = DEFAULT_HEURISTIC
+    __slots__ = _FIELDS = ("order", "corners", "visit", "goal_test", "tree_search", "heuristic")
 
-    def __post_init__(self) -> None:
-        if not self.order or any(d not in DELTAS for d in self.order) or len(
-            set(self.order)
-        ) != len(self.order):
-            raise ValueError(f"bad move order {self.order!r}")
+    order: tuple[str, ...]
+    corners: str
+    visit: str
+    goal_test: str | None  # None: the algorithm's own
+    tree_search: bool
+    heuristic: str
+
+    def __init__(self, order: tuple[str, ...] = DEFAULT_ORDER, corners: str = "always",
+                 visit: str = "generate", goal_test: str | None = None,
+                 tree_search: bool = False, heuristic: str = DEFAULT_HEURISTIC) -> None:
+        if not order or any(d not in DELTAS for d in order) or len(set(order)) != len(order):
+            raise ValueError(f"bad move order {order!r}")
         for name, value, allowed in (
-            ("corners", self.corners, CORNER_RULES),
-            ("visit", self.visit, VISIT_RULES),
-            ("goal test", self.goal_test or GOAL_TESTS[0], GOAL_TESTS),
-            ("heuristic", self.heuristic, tuple(HEURISTICS)),
+            ("corners", corners, CORNER_RULES),
+            ("visit", visit, VISIT_RULES),
+            ("goal test", goal_test or GOAL_TESTS[0], GOAL_TESTS),
+            ("heuristic", heuristic, tuple(HEURISTICS)),
         ):
             if value not in allowed:
                 raise ValueError(f"{name} {value!r}: use {', '.join(allowed)}")
-        if self.tree_search and self.visit != "generate":
+        if tree_search and visit != "generate":
             raise ValueError("tree search has no visited set: the visit rule does not apply")
+        self._assign(order=order, corners=corners, visit=visit, goal_test=goal_test,
+                     tree_search=tree_search, heuristic=heuristic)
 
     def check(self, algorithm: Algorithm) -> None:
         """Refuse the combinations that make no sense for ``algorithm`` (``ValueError``)."""
@@ -92,7 +97,7 @@ class Semantics:
         """The same choices with a goal test equal to ``algorithm``'s own written as None, so
         that what differs from its defaults is what :meth:`differences` names."""
         if self.goal_test == algorithm.goal_test:
-            return replace(self, goal_test=None)
+            return self.replace(goal_test=None)
         return self
 
     @property

@@ -10,8 +10,8 @@ digits ``1``-``9`` cost themselves.  Every problem is a one-line
 :class:`~tui_search.engine.mapread.MapError` naming the table's line.
 """
 
-from __future__ import annotations
-
+# No `from __future__ import annotations`: typing compiles a NamedTuple's string
+# annotations one by one at import (~5 M instructions of every start in all: session 14).
 import math
 import re
 from array import array
@@ -48,7 +48,7 @@ class Terrain(NamedTuple):
     costs: dict[str, float | None]
     where: dict[str, tuple[str, int, int]]
 
-    def merged(self, other: Terrain) -> Terrain:
+    def merged(self, other: "Terrain") -> "Terrain":
         """This table with ``other``'s lines added (``other`` wins where both name a
         character: the command line's ``--terrain`` over a map's own comments)."""
         return Terrain({**self.costs, **other.costs}, {**self.where, **other.where})
@@ -148,8 +148,8 @@ class Alphabet:
         dear = "".join(c for c, v in chars.items() if v is not None and v != 1.0)
         self.costed = re.compile("[" + re.escape(dear) + "]") if dear else None
 
-    def add_row(self, line: str, blocked: bytearray, costs: array[float] | None
-                ) -> array[float] | None:
+    def add_row(self, line: str, blocked: bytearray, costs: "array[float] | None"
+                ) -> "array[float] | None":
         """Append row ``line`` (valid: no character :attr:`bad` finds) to ``blocked`` and its
         costs to ``costs``, which is None until a row has a cell costing other than 1 (then
         made, with 1 for the rows before): a map of plain rows keeps no costs."""

@@ -222,10 +222,10 @@ def diagnose(trace: Trace, grid: Grid, max_steps: int | None = None) -> Diagnosi
         if (verdict.difference is not None and verdict.difference.step in goal_steps
                 and stopping != sem.order):
             tried += 1
-            again = check_trace(trace, grid, key, replace(sem, order=stopping),
+            again = check_trace(trace, grid, key, sem.replace(order=stopping),
                                 max_steps=limit, look_ahead=0)
             if again.matched > verdict.matched:
-                verdict, sem = again, replace(sem, order=stopping)
+                verdict, sem = again, sem.replace(order=stopping)
         # Of those matching as long, an A* whose f tied where the trace took the lower (or
         # higher) h first: the trace is that search with another tie rule.  (Other ties --
         # uniform-cost's g wherever moves cost alike, any entry of equal priority -- say

@@ -14,7 +14,6 @@ from __future__ import annotations
 
 from array import array
 from collections.abc import Callable, Iterator
-from dataclasses import replace
 
 from tui_search.engine.algorithms import Algorithm, Frontier, get_algorithm
 from tui_search.engine.grid import DELTAS, SQRT2, Grid
@@ -131,7 +130,7 @@ def trace_run(trace: Trace, grid: Grid, algorithm: str, semantics: Semantics,
     # cell reached by a cheaper path): only a trace's own "discarded" says it discarded one.
     infer = not (semantics.tree_search or algo.iterative or algo.frontier is Frontier.PRIORITY)
     loop = trace_loop(trace, pick, infer_discards=infer)
-    sem = replace(semantics, goal_test=semantics.goal_test_for(algo))
+    sem = semantics.replace(goal_test=semantics.goal_test_for(algo))
     return Run(grid, TRACE_ALGORITHM.key, sem, max_steps, Source(TRACE_ALGORITHM, loop, notes))
 
 

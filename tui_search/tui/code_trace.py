@@ -8,8 +8,8 @@ pushed; a goal test when it found the goal.  Step 0 lights the lines that set th
 Stepping back lights that earlier step's lines: everything here is computed from the position.
 """
 
-from __future__ import annotations
-
+# No `from __future__ import annotations`: typing compiles a NamedTuple's string
+# annotations one by one at import (~5 M instructions of every start in all: session 14).
 from typing import TYPE_CHECKING, NamedTuple
 
 from tui_search.engine.grid import DELTAS, Cell
@@ -28,7 +28,7 @@ class Skip(NamedTuple):
     cell: Cell
 
 
-def code_of(run: Run) -> Pseudocode:
+def code_of(run: Run) -> "Pseudocode":
     """The pseudocode of ``run``'s search (generated once per algorithm and choices); on a
     map with terrain, g adds the cost of the cell a move enters."""
     from tui_search.engine.pseudocode import MOVE_COST, TERRAIN_MOVE_COST, pseudocode

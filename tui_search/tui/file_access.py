@@ -8,8 +8,8 @@ ctrl+s writes the map's own file only when that file is in the folder.  No Textu
 rules are tested as plain functions.
 """
 
-from __future__ import annotations
-
+# No `from __future__ import annotations`: typing compiles a NamedTuple's string
+# annotations one by one at import (~5 M instructions of every start in all: session 14).
 import os
 from collections.abc import Callable
 from pathlib import Path
@@ -39,7 +39,7 @@ class FileAccess(NamedTuple):
     folder: Path | None = None
 
     @classmethod
-    def served_in(cls, folder: str | os.PathLike[str] | None) -> FileAccess:
+    def served_in(cls, folder: str | os.PathLike[str] | None) -> "FileAccess":
         """The served app's access: off, or confined to ``folder`` (which must be a
         directory; a NameRefused says why not)."""
         if folder is None:

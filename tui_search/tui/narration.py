@@ -8,11 +8,9 @@ the same thing about the step the run is at.
 
 from __future__ import annotations
 
-from dataclasses import replace
 from weakref import WeakKeyDictionary
 
 from tui_search.engine.algorithms import get_algorithm
-from tui_search.engine.diagnose import blocking_rule
 from tui_search.engine.grid import Cell
 from tui_search.engine.run import Run
 from tui_search.tui.code_trace import line_notes
@@ -186,6 +184,8 @@ def blocked_by(run: Run) -> str | None:
     if run.replayed or run.semantics.is_default or run.grid.width * run.grid.height > BLOCKED_BY_CELLS:
         return None
     if run not in _BLOCKED:
+        from tui_search.engine.diagnose import blocking_rule  # only when a choice is changed
+
         _BLOCKED[run] = blocking_rule(run.grid, run.semantics)
     return _BLOCKED[run]
 
@@ -246,7 +246,7 @@ def lowest_cost(run: Run) -> float | None:
     if run.grid.width * run.grid.height > LOWEST_COST_CELLS:
         return None
     if run not in _LOWEST:
-        sem = replace(run.semantics, goal_test=None, tree_search=False, visit="generate")
+        sem = run.semantics.replace(goal_test=None, tree_search=False, visit="generate")
         _LOWEST[run] = Run(run.grid, "ucs", sem).outcome().cost
     return _LOWEST[run]
 

@@ -11,12 +11,12 @@ from tui_search.tui import playback
 from tui_search.tui.keys import KEYS
 from tui_search.tui.map_edits import brush_name
 from tui_search.tui.screens.panes import NO_ROOM_FOR_CODE, PanesScreen
-from tui_search.tui.screens.settings_choice import SettingsChoice
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.key_bar import KeyBar
 
-if TYPE_CHECKING:
+if TYPE_CHECKING:  # the settings' module is imported when the dialog first opens
+    from tui_search.tui.screens.settings_choice import SettingsChoice
     from tui_search.tui.widgets.lesson_panel import LessonPanel
 
 

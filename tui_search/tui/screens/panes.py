@@ -10,6 +10,7 @@ high speeds; ``end`` and ``home`` on a big run move in time-boxed slices
 
 from __future__ import annotations
 
+from functools import cached_property
 from time import sleep
 from typing import TYPE_CHECKING, cast
 
@@ -27,7 +28,6 @@ from tui_search.engine.filenames import describe_name
 from tui_search.engine.grid import Cell, Grid
 from tui_search.tui import playback
 from tui_search.tui.file_access import FileAccess
-from tui_search.tui.files import FileCommands
 from tui_search.tui.keys import KEY_IMPORTANCE
 from tui_search.tui.layout import PANE_STATS_HEIGHT, arrange, lesson_width
 from tui_search.tui.narration import group_digits
@@ -46,6 +46,7 @@ from tui_search.tui.widgets.stats import Stats
 if TYPE_CHECKING:
     from tui_search.engine.exercise_file import Exercise
     from tui_search.engine.exercises import Verdict
+    from tui_search.tui.files import FileCommands
     from tui_search.tui.widgets.challenge import ChallengePanel
     from tui_search.tui.widgets.compare_table import CompareTable
     from tui_search.tui.widgets.lesson_panel import LessonPanel
@@ -71,7 +72,6 @@ class PanesScreen(Screen[None]):
         super().__init__()
         self.session = session
         self.file_access = file_access
-        self.files = FileCommands(self)
         self.panes = self._new_panes()
         # what a mouse drag paints: True wall, False free, "brush" the terrain brush's cost
         self._stroke: bool | str | None = None
@@ -79,6 +79,14 @@ class PanesScreen(Screen[None]):
         self._terrain = session.grid.costs is not None  # what the legend was drawn for
         self._fitted_lines = (-1, -1)  # the status lines' heights last fitted to
         self._code_shown = False  # some pane showed the Code panel when last fitted
+
+    @cached_property
+    def files(self) -> FileCommands:
+        """Saving, opening, generating and quitting, made when first used: the first frame
+        imports none of it (-1.6 M instructions: benchmarks/README.md, session 14)."""
+        from tui_search.tui.files import FileCommands
+
+        return FileCommands(self)
 
     # -- layout ----------------------------------------------------------------------------
     def compose(self) -> ComposeResult:

@@ -8,10 +8,9 @@ entry expanded next is highlighted anyway).
 Every entry of a panel takes the same rows (their columns have the same widths), so the
 entry on a line is found by a division, whatever the frontier's size."""
 
-from __future__ import annotations
-
-from dataclasses import dataclass
-from typing import TYPE_CHECKING
+# No `from __future__ import annotations`: typing compiles a NamedTuple's string
+# annotations one by one at import (~5 M instructions of every start in all: session 14).
+from typing import TYPE_CHECKING, NamedTuple
 
 from tui_search.tui.pieces import Parts
 from tui_search.tui.widgets.frontier_text import figures
@@ -26,11 +25,11 @@ MARKER_W = 3
 DIR_W = 2
 
 
-@dataclass(frozen=True)
-class EntryRows:
+class EntryRows(NamedTuple):
     """An entry's layout on more than one row: ``rows`` holds each row's indent and the
     slots on it ("depth", "move", and "0", "1", "2": the figures), the first row's after the
-    cell; ``marker``: the marker column is shown."""
+    cell; ``marker``: the marker column is shown.  (A NamedTuple: a frozen dataclass costs
+    ~1 ms of every start: benchmarks/README.md, session 14.)"""
 
     marker: bool
     rows: tuple[tuple[int, tuple[str, ...]], ...]
@@ -63,7 +62,7 @@ def plan_rows(room: int, coord_w: int, depth_w: int, move_w: int,
     return EntryRows(marker, tuple((at, tuple(names)) for at, names in rows), width)
 
 
-def entry_row(run: Run, g: int, plan: EntryRows, row: int, marks: tuple[bool, bool],
+def entry_row(run: "Run", g: int, plan: EntryRows, row: int, marks: tuple[bool, bool],
               widths: tuple[int, int, int]) -> Parts:
     """Row ``row`` of the entry of event ``g`` laid out by ``plan``; ``marks``: it is the
     entry expanded next, it was just added; ``widths``: the cell's, the depth's (0: none)

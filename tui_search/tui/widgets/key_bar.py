@@ -16,10 +16,11 @@ from itertools import groupby
 from typing import ClassVar
 
 from rich.cells import cell_len
-from rich.text import Text
+from rich.segment import Segment
 from textual import events
 from textual.binding import ActiveBinding
 from textual.screen import Screen
+from textual.strip import Strip
 from textual.widget import Widget
 
 #: A hint: its keys as ``(display, key, enabled)``, its description, whether it can act.
@@ -147,22 +148,37 @@ class KeyBar(Widget):
             kept.remove(min(reversed(kept), key=lambda i: self._importance(hints[i][1])))
         return [hints[i][0] for i in kept]
 
-    def render(self) -> Text:
-        key_style = self.get_component_rich_style("key-bar--key")
-        description_style = self.get_component_rich_style("key-bar--description")
-        disabled_style = self.get_component_rich_style("key-bar--disabled")
-        text = Text(no_wrap=True, overflow="ellipsis", end="")
+    def render_line(self, y: int) -> Strip:
+        """The hints as one line of segments (the line API: Textual lays out no text for it,
+        ~3 M instructions of every start, session 14).  What is still too wide ends in "…"."""
+        width = self.content_size.width
+        base = self.rich_style
         self._spans = []
-        for n, (keys, description, enabled) in enumerate(self.shown_hints()):
+        if y or width <= 0:
+            return Strip.blank(width, base)
+        key_style, description_style, disabled_style = (
+            base + self.get_component_rich_style(f"key-bar--{name}")
+            for name in ("key", "description", "disabled"))
+        segments: list[Segment] = []
+        x = 0
+        for n, (keys, description, enabled) in enumerate(self.shown_hints(width)):
             if n:
-                text.append("  ")
+                segments.append(Segment("  ", base))
+                x += 2
             for display, key, key_enabled in keys:
-                self._spans.append((text.cell_len, text.cell_len + cell_len(display), key))
-                text.append(display, key_style if key_enabled else disabled_style)
-            start = text.cell_len
-            text.append(f" {description}", description_style if enabled else disabled_style)
-            self._spans.append((start, text.cell_len, keys[0][1]))
-        return text
+                self._spans.append((x, x + cell_len(display), key))
+                segments.append(Segment(display, key_style if key_enabled else disabled_style))
+                x += cell_len(display)
+            label = f" {description}"
+            segments.append(Segment(label, description_style if enabled else disabled_style))
+            self._spans.append((x, x + cell_len(label), keys[0][1]))
+            x += cell_len(label)
+        line = Strip(segments, x)
+        if x > width:  # one hint left, still too wide
+            cut = line.crop(0, width - 1)
+            last = segments[-1].style if cut.cell_length == 0 else list(cut)[-1].style
+            line = Strip([*cut, Segment("…", last)], width)
+        return line.extend_cell_length(width, base)
 
     def on_click(self, event: events.Click) -> None:
         """Clicking a hint presses its key (a group's description, its first key)."""
