@@ -28,6 +28,7 @@ from tui_search.tui.widgets.code_panel import CodePanel
 from tui_search.tui.widgets.compare_table import CompareTable
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.line_panel import LinePanel
+from tui_search.tui.widgets.parts_lines import PartsLines
 from tui_search.tui.widgets.stats import Stats
 
 SIZES = [(80, 24), (100, 30), (120, 40), (160, 48), (200, 60)]
@@ -102,6 +103,8 @@ def _terrain_note(app: SearchApp) -> list[str]:
 
 
 MUD = TUTORIAL.parent / "terrain-mud.txt"
+#: A map no pane can show whole at any of SIZES in a comparison: the panes' maps scroll.
+BIG = Path(__file__).parents[1] / "data" / "open-60x40.txt"
 
 #: Each case: how the app opens (``path``: a map other than the tutorial's), the keys, and
 #: the texts that must be on the screen whole.
@@ -136,6 +139,9 @@ CASES: dict[str, tuple[dict[str, object], list[str], Callable[[SearchApp], list[
                                             _terrain_note),
     "terrain: compare says each path's cost": ({"path": MUD, "compare": "bfs,ucs"}, ["end"],
                                                _nothing),
+    "compare on a map that does not fit": ({"path": BIG, "compare": "bfs,dfs"}, [], _nothing),
+    "compare with A* on a map that does not fit": ({"path": BIG, "compare": "bfs,astar"},
+                                                   ["n"] * 4, _queue_figures),
 }
 
 
@@ -188,6 +194,11 @@ def problems(app: SearchApp, screen: list[str], lesson: list[str]) -> list[str]:
             found.append(f"{name} shows cut words {sorted(cut)}: {text!r}")
         if isinstance(widget, LinePanel):  # a word cut off whole at the panel's edge, too
             found += _cropped(widget, rows)
+        if isinstance(widget, PartsLines) and len(widget.rows(region.width)) > region.height:
+            found.append(f"{name} has rows under its region (words cut off whole): {text!r}")
+        if isinstance(widget, FrontierPanel) and widget.run and widget.run.now.frontier_len() \
+                and not any("(" in row for row in rows[1:]):
+            found.append(f"{name} shows no entry of its frontier: {text!r}")
     for whole in lesson:
         if not any(whole in text or whole.replace(" ", "", 1) in text for text in seen):
             found.append(f"{whole!r} not on the screen whole")

@@ -13,6 +13,7 @@ the room they left at their least) while the rows under it that they take were b
 
 # No `from __future__ import annotations`: typing compiles a NamedTuple's string
 # annotations one by one at import (~5 M instructions of every start in all: session 14).
+from collections.abc import Callable
 from typing import NamedTuple
 
 from tui_search.tui.geometry import Geometry
@@ -23,8 +24,10 @@ PANE_MIN_WIDTH, PANE_MIN_HEIGHT = 50, 16
 #: The lists (frontier and tree) need this many lines under a map, and a column beside one
 #: this wide (at most LISTS_MAX_WIDTH, else 40 % of the pane).
 LISTS_MIN_HEIGHT, LISTS_MIN_WIDTH, LISTS_MAX_WIDTH = 6, 38, 56
-#: The trees show under a map when the lists get at least this many lines.
-TREES_MIN_HEIGHT = 9
+#: The trees show under a map when the lists get at least this many lines; beside it, when
+#: the column has this many (the frontier takes a third of it: its border, its count line and
+#: an entry at least).
+TREES_MIN_HEIGHT, TREES_BESIDE_MIN_HEIGHT = 9, 12
 #: The Code panel (in the trees' place) needs fewer: its border and a few lines, the lit one
 #: and its neighbours, where the lists get at least this many lines.
 CODE_MIN_HEIGHT = 5
@@ -96,7 +99,8 @@ def lists_width(pane_width: int) -> int:
 def arrange(n: int, width: int, height: int, map_size: tuple[int, int], *,
             table_height: int = 0, fold_trees: bool = False,
             stats_height: int = PANE_STATS_HEIGHT, wrapped: int = 0,
-            code: bool = False, folded: tuple[int, int] | None = None) -> Arrangement:
+            code: bool = False, folded: tuple[int, int] | None = None,
+            stats_rows: Callable[[int], int] | None = None) -> Arrangement:
     """Lay ``n`` panes out in ``width`` x ``height`` (the room under and beside the fixed
     lines, the table's ``table_height`` lines included when there is one) for a map of
     ``map_size`` cells, whose smallest cells are 2 characters by 1 line, in a border; a
@@ -110,7 +114,10 @@ def arrange(n: int, width: int, height: int, map_size: tuple[int, int], *,
     those lines take where the panes' own lines fold (they then say each search's counts, a
     line more).  Each choice is fitted to the rows its own lines take, so the choice made is
     the one made again once its lines are laid out (a layout that took the room the shorter
-    lines leave, then lost it to the longer ones, flipped back and forth)."""
+    lines leave, then lost it to the longer ones, flipped back and forth).  For the same
+    reason ``stats_rows``, when given, says the lines the panes' own status lines take in a
+    column that many characters wide (beside the lists they have the map's column only, and
+    wrap to more rows); else they take ``stats_height`` whatever the width."""
     lists_min = CODE_MIN_HEIGHT if code else LISTS_MIN_HEIGHT
     candidates = []
     own = own_lines(n)
@@ -122,15 +129,20 @@ def arrange(n: int, width: int, height: int, map_size: tuple[int, int], *,
             more, wrap = folded if own and not stats and folded else (0, wrapped)
             for columns in range(1, n + 1):
                 rows = -(-n // columns)
-                pane_w, pane_h = width // columns, max(0, (room - more) // rows - stats)
+                pane_w = width // columns
+                # the lines the pane's status lines take under the lists and beside them
+                under_h, beside_h = ((stats_rows(pane_w), stats_rows(pane_w - lists_width(pane_w)))
+                                     if stats and stats_rows else (stats, stats))
+                pane_h = max(0, (room - more) // rows - under_h)
                 pane = _pane(columns, rows, table, stats > 0, pane_w, pane_h, map_size,
-                             fold_trees, lists_min)
+                             fold_trees, lists_min, pane_h - beside_h + under_h)
                 if wrap:
-                    steady_h = max(0, (room - more + wrap) // rows - stats)
+                    steady_h = max(0, (room - more + wrap) // rows - under_h)
                     steady = _pane(columns, rows, table, stats > 0, pane_w, steady_h,
-                                   map_size, fold_trees, lists_min)
+                                   map_size, fold_trees, lists_min,
+                                   steady_h - beside_h + under_h)
                     pane = _steady(steady, pane, steady_h, pane_h, map_size, fold_trees,
-                                   lists_min)
+                                   lists_min, beside_h - under_h)
                 shows = (pane.map_height or pane_h) >= min(map_size[1] + 2, MAP_MIN_LINES)
                 candidates.append(((pane.fits, shows, pane.pane_stats or not own, pane.lists,
                                     pane.trees or fold_trees, columns == preferred, table),
@@ -142,11 +154,13 @@ def arrange(n: int, width: int, height: int, map_size: tuple[int, int], *,
 
 
 def _steady(steady: Arrangement, pane: Arrangement, steady_h: int, pane_h: int,
-            map_size: tuple[int, int], fold_trees: bool, lists_min: int) -> Arrangement:
+            map_size: tuple[int, int], fold_trees: bool, lists_min: int,
+            beside_more: int) -> Arrangement:
     """``steady``, laid out in a pane ``steady_h`` lines tall, in the ``pane_h`` lines
     ``pane`` is laid out in, when the whole map still shows there at the same cells and
     place: the lists under the map give up the lines, or the map's box (the pane's height)
-    overflows the pane by lines that were blank under the map; else ``pane``."""
+    overflows the pane by lines that were blank under the map; else ``pane``.  Beside the
+    lists the pane's own status lines take ``beside_more`` lines more of the map's column."""
     if (pane.beside, pane.lists_height > 0) != (steady.beside, steady.lists_height > 0) \
             or not steady.fits:
         return pane
@@ -160,24 +174,29 @@ def _steady(steady: Arrangement, pane: Arrangement, steady_h: int, pane_h: int,
     # the map, centred in a box as tall as the steady pane: at most this tall, it ends above
     # the pane's end (a map zoomed in scrolls in that height)
     box_w = steady.pane_width - (steady.lists_width if steady.beside else 0)
-    most = steady_h - 2 * more
-    if Geometry.fit(*map_size, box_w - 2, steady_h - 2).size[1] + 2 > most:
+    box_h = steady_h - (beside_more if steady.beside else 0)
+    most = box_h - 2 * more
+    if Geometry.fit(*map_size, box_w - 2, box_h - 2).size[1] + 2 > most:
         return pane
-    return Arrangement(*steady[:8], steady_h, *steady[9:11], most, pane.code)
+    return Arrangement(*steady[:8], box_h, *steady[9:11], most, pane.code)
 
 
 def _pane(columns: int, rows: int, table: bool, pane_stats: bool, pane_w: int, pane_h: int,
-          map_size: tuple[int, int], fold_trees: bool, lists_min: int) -> Arrangement:
+          map_size: tuple[int, int], fold_trees: bool, lists_min: int,
+          beside_h: int) -> Arrangement:
     """One pane's inside: its lists beside the map when the pane is much wider than tall and
     the whole map fits beside them (or would not fit whole under them either); else under
-    the map when there is room for both."""
+    the map when there is room for both.  ``pane_h``: the lines under the pane's own status
+    lines when they span the pane; ``beside_h``: beside the lists (they wrap to more rows
+    in the map's column alone), the lines the map's column has under them."""
     map_w, map_h = map_size
     need_w, need_h = 2 * map_w + 2, map_h + 2  # the smallest cells, in a border
     side = lists_width(pane_w)
     beside_w = max(min(need_w, MAP_MIN_WIDTH), STATS_MIN_WIDTH if pane_stats else 0)
     if pane_w >= 3 * pane_h and pane_w - side >= beside_w:
-        beside = Arrangement(columns, rows, table, pane_stats, True, side, 0, not fold_trees,
-                             0, need_h <= pane_h and need_w <= pane_w - side, pane_w,
+        beside = Arrangement(columns, rows, table, pane_stats, True, side, 0,
+                             not fold_trees and pane_h >= TREES_BESIDE_MIN_HEIGHT,
+                             0, need_h <= beside_h and need_w <= pane_w - side, pane_w,
                              code=pane_h * 2 // 3 >= CODE_MIN_HEIGHT)  # 2fr of the column
         if beside.fits:
             return beside

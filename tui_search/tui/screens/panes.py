@@ -40,7 +40,7 @@ from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.key_bar import KeyBar
 from tui_search.tui.widgets.legend import Legend
 from tui_search.tui.widgets.parts import Later, challenge_panel, compare_table, show_part
-from tui_search.tui.widgets.run_pane import RunPane
+from tui_search.tui.widgets.run_pane import RunPane, own_rows
 from tui_search.tui.widgets.stats import Stats
 
 if TYPE_CHECKING:
@@ -195,13 +195,14 @@ class PanesScreen(Screen[None]):
             height = self.size.height - 4 - legend - challenge
         grid = self.session.grid
         self._fitted_lines = self._lines_measured()
-        stats = self._fitted_lines[0]
+        stats = self._fitted_lines[0] or PANE_STATS_HEIGHT
         arrangement = arrange(len(self.panes), width, height, (grid.width, grid.height),
                               table_height=table_height,
                               fold_trees=self.session.fold_trees and not self.session.show_code,
-                              stats_height=stats or PANE_STATS_HEIGHT,
+                              stats_height=stats,
                               wrapped=wrapped, code=self.session.show_code,
-                              folded=(folded_rows - rows, folded_rows - folded_least))
+                              folded=(folded_rows - rows, folded_rows - folded_least),
+                              stats_rows=lambda w: own_rows(self.panes, w) or stats)
         box.styles.grid_size_columns = arrangement.columns
         box.styles.grid_size_rows = arrangement.rows
         if arrangement.table and table is not None and not table.display:

@@ -46,6 +46,11 @@ class PartsLines(CachedStyles, Widget):
             self._rows = (width, lay_out(self._lines or [], width, self.MAX_ROWS))
         return self._rows[1]
 
+    def height_at(self, width: int) -> int:
+        """The rows the lines would take ``width`` cells wide (laid out anew: the layout
+        asks at widths the widget does not have)."""
+        return len(lay_out(self._lines or [], max(1, width), self.MAX_ROWS))
+
     def shown_lines(self) -> list[str]:
         """The rows on screen, as text (tests)."""
         return [text_of(row) for row in self.rows(self.content_size.width)]

@@ -85,6 +85,10 @@ class RunPane(Vertical):
         and left for the next restyle of the screen."""
         self.set_class(arrangement.beside, "-beside", update=restyle)
         self.stats.display = arrangement.pane_stats
+        beside = arrangement.lists_width if arrangement.beside else 0
+        if beside != self.stats.beside:  # its lines wrap at another width
+            self.stats.beside = beside
+            self.stats.refresh(layout=True)
         self._show_part(self.stats, arrangement.pane_stats)
         lists = self.lists
         lists.display = arrangement.lists
@@ -136,3 +140,9 @@ class RunPane(Vertical):
         if view.border_title != title:  # setting it repaints the whole view
             view.border_title = title
 
+
+
+def own_rows(panes: list[RunPane], width: int) -> int:
+    """The lines the panes' own status lines take in a column ``width`` wide: the most of
+    any pane's (0 before they say anything)."""
+    return max(pane.stats.height_at(width - 2) for pane in panes)

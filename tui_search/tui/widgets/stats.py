@@ -57,6 +57,10 @@ class Stats(PartsLines):
         self.narration_text = ""
         self.short_text = ""  # each piece alone, and its short form: what may show (tests)
         self._height: int | None = None  # the rows laid out last
+        #: Columns the lists beside it take of its container (a pane's, beside the map):
+        #: Textual sizes a split widget against its whole container, not the room the
+        #: splits before it left, so its height is worked out at the width it really gets.
+        self.beside = 0
 
     def show(self, lines: list[Line], max_rows: int) -> None:
         """Show ``lines`` (:mod:`tui_search.tui.status_lines`): the counts, then the
@@ -69,6 +73,9 @@ class Stats(PartsLines):
             self.short_text = " ".join(text_of(parts) for line in lines
                                        for piece in line.pieces
                                        for parts in (piece.parts, piece.short) if parts)
+
+    def get_content_height(self, container: object, viewport: object, width: int) -> int:
+        return len(self.rows(max(1, width - self.beside)))
 
     @property
     def wrapped(self) -> int:
