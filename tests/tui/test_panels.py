@@ -29,7 +29,8 @@ from tui_search.engine.grid import Grid
 from tui_search.engine.run import Run
 from tui_search.tui import tree_model
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
-from tui_search.tui.widgets.line_panel import scrollbar_cells, window_strip
+from tui_search.tui.widgets.line_panel import window_strip
+from tui_search.tui.widgets.scrollbars import scrollbar_cells
 from tui_search.tui.widgets.search_tree import SearchTreePanel
 
 

@@ -50,7 +50,8 @@ from tui_search.tui.widgets.frontier_text import (
     figures,
     titles,
 )
-from tui_search.tui.widgets.line_panel import LinePanel, set_virtual_size
+from tui_search.tui.widgets.line_panel import LinePanel
+from tui_search.tui.widgets.scrollbars import set_virtual_size
 
 if TYPE_CHECKING:
     from tui_search.engine.run import Run

@@ -48,7 +48,8 @@ from tui_search.tui.widgets.cell_style import (
     shaded,
     swatches,
 )
-from tui_search.tui.widgets.line_panel import CachedStyles, QuietScrollbars, window_strip
+from tui_search.tui.widgets.line_panel import CachedStyles, window_strip
+from tui_search.tui.widgets.scrollbars import QuietScrollbars
 
 
 class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inherit_bindings=False):
