@@ -29,6 +29,7 @@ from tui_search.tui.cell_codes import (
 )
 from tui_search.tui.geometry import MAX_LEVEL, Geometry
 from tui_search.tui.widgets.cell_readout import CellReadout
+from tui_search.tui.widgets.cell_style import block_codes
 from tui_search.tui.widgets.grid_view import GridView
 
 
@@ -227,7 +228,7 @@ async def test_a_block_of_the_overview_shows_its_most_important_state() -> None:
         view.set_overview(True)
         await pilot.pause()
         view.geometry = Geometry(20, 20, 1, 5)  # the fit would choose 1; blocks of 5 here
-        codes = view._block_codes(range(5), 0, 20)
+        codes = block_codes(view.grid, view.run, range(5), 0, 20, view.geometry.across)
         assert codes == [6, 0, 5, 0]  # START, FREE, WALL, FREE
         run = app.session.run
         for k in (3, 9, 20, 40):
@@ -242,7 +243,8 @@ async def test_a_block_of_the_overview_shows_its_most_important_state() -> None:
                                      else WALL if app.session.grid.is_blocked(cell)
                                      else int(run.now.cell_state(cell)))
                 expected.append(max(looks, key=RANK.__getitem__))
-            assert view._block_codes(range(5), 0, 20) == expected
+            assert block_codes(view.grid, view.run, range(5), 0, 20,
+                               view.geometry.across) == expected
         assert FRONTIER in expected and EXPANDED not in expected  # the frontier hides it
 
 
@@ -307,7 +309,7 @@ async def test_each_pair_of_states_in_a_block_shows_the_more_important_one() -> 
         await pilot.pause()
         view.geometry = Geometry(width, 2, 1, 2)  # blocks of 2, one line: upper halves only
         view.run = PaintedRun(states)  # type: ignore[assignment]  # (a stand-in Run)
-        codes = view._block_codes(range(2), 0, width)
+        codes = block_codes(view.grid, view.run, range(2), 0, width, view.geometry.across)
         assert codes is not None
         assert [codes[i] for i in range(len(pairs))] == [KIND[SHOWS[p]] for p, _ in pairs]
         line = view.render_line(0)

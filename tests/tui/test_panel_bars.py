@@ -1,4 +1,4 @@
-"""A list panel's scrollbar is drawn only while it has a thumb (``line_panel.fit_bars``): a
+"""A list panel's scrollbar is drawn only while it has a thumb (``scrollbars.fit_bars``): a
 list that overflows its panel shows its bar, one that fits shows none, and a list that grows
 past its panel gets its bar."""
 

@@ -27,9 +27,10 @@ from tests.textual_internals import settle
 from tests.tui.test_tree_model import BFS_AFTER_FOUR
 from tui_search.engine.grid import Grid
 from tui_search.engine.run import Run
-from tui_search.tui import tree_model
+from tui_search.tui import tree_model, tree_shape
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
-from tui_search.tui.widgets.line_panel import scrollbar_cells, window_strip
+from tui_search.tui.widgets.line_panel import window_strip
+from tui_search.tui.widgets.scrollbars import scrollbar_cells
 from tui_search.tui.widgets.search_tree import SearchTreePanel
 
 
@@ -352,9 +353,9 @@ async def test_big_tree_shows_the_focused_view() -> None:
         chain = run.nodes.ancestors(run.steps.expanded_event(run.k))
         depth = len(chain) - 1
         kids = list(run.now.added_now())
-        assert panel.virtual_size.height == 3 + tree_model.SHOW_LEVELS + 1 + len(kids)
+        assert panel.virtual_size.height == 3 + tree_shape.SHOW_LEVELS + 1 + len(kids)
         assert panel.line_text(1) == "  0 ● START (0,0)"
-        hidden = depth - tree_model.SHOW_LEVELS - 1
+        hidden = depth - tree_shape.SHOW_LEVELS - 1
         assert panel.line_text(2) == f"    ⋮  {hidden} levels not shown"
         visible = screen_lines(panel)
         current = next(line for line in visible if "◀ expanding" in line)

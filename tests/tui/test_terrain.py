@@ -31,6 +31,7 @@ from tui_search.tui.widgets.compare_table import CompareTable
 from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.key_bar import KeyBar
 from tui_search.tui.widgets.legend import Legend
+from tui_search.tui.widgets.map_lines import block_swatches
 
 MUD = MAPS / "terrain-mud.txt"
 
@@ -110,7 +111,7 @@ async def test_the_overview_shades_a_free_block_by_its_dearest_cell() -> None:
         view.geometry = Geometry(25, 5, 1, 5)  # the fit would choose 1; blocks of 5 here
         ramp = [view.get_component_rich_style(f"grid-view--{c}").bgcolor
                 for c in RAMP_COMPONENTS]
-        shown = view._block_swatches(range(5), 0, 25)
+        shown = block_swatches(view.grid, view.run, range(5), 0, 25, view.geometry.across)
         assert shown is not None and shown[0] == START and shown[3:] == [WALL, GOAL]
         assert [view.swatch(i).color for i in shown[1:3]] == [ramp[3], ramp[0]]
         line = view.render_line(0)  # the blocks' upper halves (the cursor's is the start's)

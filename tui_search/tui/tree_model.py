@@ -15,18 +15,20 @@ stays cheap however big the run grows:
   panel).  The listing is a list of event ids kept in step with the position: one step
   forwards inserts the expanded node's children after it, one step back removes them (a
   C-speed ``list.index`` and a slice assignment); a jump rebuilds it in O(nodes) from the
-  record.  Tree guides (``│ ├─ └─``) are
-  drawn per visible line from the record's parent array (O(depth), capped at
-  :data:`MAX_LEVELS`).
+  record.  Tree guides (``│ ├─ └─``) are drawn per visible line from the record's parent
+  array (O(depth), capped at :data:`~tui_search.tui.tree_shape.MAX_LEVELS`).
 * **focused** (bigger trees): the chain of ancestors from START to the node being expanded --
   one line per edge, each saying which of its parent's children it is -- then that node's
-  children.  Only the deepest :data:`SHOW_LEVELS` edges are listed (START and a "⋮ N levels
-  not shown" line stand above them).  The chain is kept from one call to the next: a step
-  walks up from the new node only to where it meets the old chain, the root, or
-  :data:`WALK_MAX` levels, so a step costs O(the part of the chain that changed) and a jump
-  O(min(depth, WALK_MAX)).  The depths come from the walk, from the record (iterative
-  deepening), or from BFS's level starts; a depth-first chain deeper than WALK_MAX reached by
-  a jump is shown uncounted.
+  children.  Only the deepest :data:`~tui_search.tui.tree_shape.SHOW_LEVELS` edges are
+  listed (START and a "⋮ N levels not shown" line stand above them).  The chain is kept from
+  one call to the next: a step walks up from the new node only to where it meets the old
+  chain, the root, or :data:`~tui_search.tui.tree_shape.WALK_MAX` levels, so a step costs
+  O(the part of the chain that changed) and a jump O(min(depth, WALK_MAX)).  The depths come
+  from the walk, from the record (iterative deepening), or from BFS's level starts; a
+  depth-first chain deeper than WALK_MAX reached by a jump is shown uncounted.
+
+Both views' shape (the listing, the chain, the guides) is :mod:`~tui_search.tui.tree_shape`'s;
+this model keeps it from one position to the next and says it as lines.
 """
 
 from __future__ import annotations
@@ -35,6 +37,16 @@ from array import array
 from typing import TYPE_CHECKING
 
 from tui_search.tui.narration import group_digits
+from tui_search.tui.tree_shape import (
+    MAX_LEVELS,
+    WALK_MAX,
+    build_listing,
+    chain_to,
+    draw_guides,
+    listing_backward,
+    listing_forward,
+    siblings,
+)
 
 if TYPE_CHECKING:
     from tui_search.engine.run import Run
@@ -47,17 +59,10 @@ Parts = list[tuple[str, str]]
 SMALL_TREE = 5000
 #: Position changes applied one step at a time to the listing; bigger jumps rebuild it.
 INCREMENTAL_STEPS = 64
-#: Levels of tree guides drawn in the listing; deeper lines keep the last levels only.
-MAX_LEVELS = 40
 #: Tree guides kept (an event's never change); the cache starts again past this many.
 GUIDES_KEPT = 4 * SMALL_TREE
 #: Levels of indentation in the focused view (its lines also show their depth).
 FOCUS_LEVELS = 8
-#: Deepest part of the ancestor chain the focused view lists (above it: START and a "⋮" line).
-SHOW_LEVELS = 200
-#: Longest walk up the tree a show() makes to find where a new chain meets the old one or
-#: the root (about 0.6 µs a level); past it a deep depth-first chain's depth is left uncounted.
-WALK_MAX = 2000
 
 GLYPH_EXPANDED = "●"
 GLYPH_FRONTIER = "○"
@@ -140,12 +145,13 @@ class TreeModel:
         mode = "list" if size <= SMALL_TREE else "focus"
         if mode == "list":
             if not (same_tree and self._mode == "list" and abs(k - self._k) <= INCREMENTAL_STEPS):
-                self._rebuild_list(run, root, k)
+                self._order, self._depth, self._expanded = build_listing(run, root, k)
             else:
-                while self._k < k:
-                    self._list_forward(run, root, self._k + 1)
-                while self._k > k:
-                    self._list_backward(run, root, self._k)
+                listing = self._order, self._depth, self._expanded
+                for j in range(self._k + 1, k + 1):
+                    listing_forward(run, root, j, *listing)
+                for j in range(self._k, k, -1):
+                    listing_backward(run, root, j, *listing)
             self._chain, self._chain_pos, self._top_depth = [], {}, None
         else:
             self._order, self._depth, self._expanded = [], array("i"), set()
@@ -193,78 +199,12 @@ class TreeModel:
     def line_text(self, y: int) -> str:
         return "".join(text for text, _ in self.line(y))
 
-    def _rebuild_list(self, run: Run, root: int, k: int) -> None:
-        """The listing from scratch: O(nodes in the tree), replaying the iteration's steps."""
-        end = run.now.generated
-        depth = array("i", bytes(4 * (end - root)))
-        first = run.steps.first_of_iteration(run.steps.iteration_of(k))
-        blocks: dict[int, range] = {}
-        expanded: set[int] = set()
-        for g, added in run.steps.expansions(first, k):
-            expanded.add(g)
-            if added:
-                lo, hi = added.start, added.stop
-                blocks[g] = added
-                depth[lo - root : hi - root] = array("i", [depth[g - root] + 1]) * (hi - lo)
-        order: list[int] = []
-        todo = [root]
-        while todo:
-            g = todo.pop()
-            order.append(g)
-            kids = blocks.get(g)
-            if kids:
-                todo.extend(reversed(kids))
-        self._order, self._depth, self._expanded = order, depth, expanded
-
-    def _list_forward(self, run: Run, root: int, j: int) -> None:
-        """Apply step ``j``: its node's children go right after it (it was a leaf)."""
-        g = run.steps.expanded_event(j)
-        kids = run.steps.succ_range(j)
-        if kids:
-            at = self._order.index(g) + 1
-            self._order[at:at] = kids
-            d = self._depth[g - root] + 1
-            self._depth.extend(array("i", [d]) * len(kids))
-        self._expanded.add(g)
-        self._k = j
-
-    def _list_backward(self, run: Run, root: int, j: int) -> None:
-        """Undo step ``j``: its node's children (still leaves) leave the listing."""
-        g = run.steps.expanded_event(j)
-        kids = run.steps.succ_range(j)
-        if kids:
-            at = self._order.index(g) + 1
-            del self._order[at : at + len(kids)]
-            del self._depth[len(self._depth) - len(kids) :]
-        self._expanded.discard(g)
-        self._k = j - 1
-
     def _focus(self, run: Run, keep: bool, current: int) -> None:
         """Make the chain of ancestors down to ``current``: walk up only to where it meets the
         old chain (a step: a level or a few), the root, or WALK_MAX levels (a jump)."""
-        chain, pos = (self._chain, self._chain_pos) if keep else ([], {})
-        top_depth = self._top_depth if keep else None
-        parent = run.nodes.parent
-        walk: list[int] = []
-        a = current
-        while a >= 0 and a not in pos and len(walk) <= WALK_MAX:
-            walk.append(a)
-            a = parent(a)
-        walk.reverse()
-        if a >= 0 and a in pos:  # met the old chain
-            new = chain[: pos[a] + 1]
-            new.extend(walk)
-        else:  # from the root (a < 0), or a chain too deep to follow to the root
-            new = walk
-            top_depth = 0 if a < 0 else None
-        excess = len(new) - (SHOW_LEVELS + 1)
-        if excess > 0:
-            del new[:excess]
-            if top_depth is not None:
-                top_depth += excess
-        if top_depth is None:
-            top_depth = run.nodes.cheap_depth(new[0])
-        self._chain, self._top_depth = new, top_depth
+        old = (self._chain, self._chain_pos, self._top_depth) if keep else ([], {}, None)
+        new, self._top_depth = chain_to(run, current, *old)
+        self._chain = new
         self._chain_pos = {g: i for i, g in enumerate(new)}
         self._elided = new[0] != run.now.tree_root()
 
@@ -327,17 +267,6 @@ class TreeModel:
         return (f"({group_digits(self._tree_size)} nodes; showing the path to the node being "
                 "expanded)")
 
-    def _siblings(self, g: int) -> range:
-        """``g`` and its siblings: the events generated by the step that generated ``g``
-        (a parent's children are consecutive events).  O(log steps)."""
-        run = self._run
-        assert run is not None
-        return run.steps.succ_range(run.nodes.generated_at(g))
-
-    def _is_last(self, g: int) -> bool:
-        """Is ``g`` its parent's last child?"""
-        return g + 1 == self._siblings(g).stop
-
     def _node_parts(self, g: int, depth: int, expanded: bool, detail: str = "") -> Parts:
         """Glyph, move and cell of ``g``, a suffix (being expanded, the goal, cut off at the
         depth limit), then ``detail`` (sibling counts)."""
@@ -374,23 +303,10 @@ class TreeModel:
             self._guides, self._guides_run = {}, self._run
         guides = self._guides.get(g)
         if guides is None:
-            guides = self._guides[g] = self._draw_guides(g, depth)
+            run = self._run
+            assert run is not None
+            guides = self._guides[g] = draw_guides(run, g, depth)
         return guides
-
-    def _draw_guides(self, g: int, depth: int) -> str:
-        parent = self._run.nodes.parent  # type: ignore[union-attr]
-        is_last = self._is_last
-        pieces = ["└─ " if is_last(g) else "├─ "]
-        a = parent(g)
-        levels = depth - 1
-        drawn = min(levels, MAX_LEVELS - 1)
-        for _ in range(drawn):
-            pieces.append("   " if is_last(a) else "│  ")
-            a = parent(a)
-        if levels > drawn:
-            pieces.append("┈ ")
-        pieces.reverse()
-        return "".join(pieces)
 
     def _elision(self) -> str:
         if not self._elided:
@@ -436,7 +352,9 @@ class TreeModel:
 
     def _sibling_text(self, g: int) -> str:
         """``child 2 of 3``: where ``g`` is among its parent's children (at most 8)."""
-        sibs = self._siblings(g)
+        run = self._run
+        assert run is not None
+        sibs = siblings(run, g)
         if len(sibs) == 1:
             return "  only child"
         return f"  child {g - sibs.start + 1} of {len(sibs)}"

@@ -23,7 +23,8 @@ from textual.geometry import Region, Size
 
 from tui_search.tui.code_trace import code_of, focus_line, lit_lines
 from tui_search.tui.pieces import Parts
-from tui_search.tui.widgets.line_panel import LinePanel, set_virtual_size
+from tui_search.tui.widgets.line_panel import LinePanel
+from tui_search.tui.widgets.scrollbars import set_virtual_size
 
 if TYPE_CHECKING:
     from tui_search.engine.pseudocode import Pseudocode

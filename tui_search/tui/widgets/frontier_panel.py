@@ -39,33 +39,31 @@ from textual.message import Message
 
 from tui_search.engine.algorithms import Frontier
 from tui_search.engine.grid import Cell
-from tui_search.engine.heuristics import octile
 from tui_search.tui.narration import group_digits
-from tui_search.tui.pieces import Line, Parts, Piece, length, plain, wrap
-from tui_search.tui.widgets.frontier_rows import DIR_W, EntryRows, entry_row, plan_rows
+from tui_search.tui.pieces import Line, Parts, length, plain, wrap
+from tui_search.tui.widgets.frontier_rows import (
+    HINT_GAP,
+    EntryRows,
+    column_widths,
+    entry_line,
+    entry_row,
+    entry_width,
+    fit_entry,
+)
 from tui_search.tui.widgets.frontier_text import (
-    costs_column,
+    DIR_W,
     describe_empty,
+    discarded_line,
     end_hint,
     figures,
+    legends,
     titles,
 )
-from tui_search.tui.widgets.line_panel import LinePanel, set_virtual_size
+from tui_search.tui.widgets.line_panel import LinePanel
+from tui_search.tui.widgets.scrollbars import set_virtual_size
 
 if TYPE_CHECKING:
     from tui_search.engine.run import Run
-
-#: The bottom legend's wordings, longest first (a narrow panel shows a shorter one); in the
-#: quiz, whose order is hidden: HIDDEN_LEGENDS.
-LEGENDS = ("▶ next out  + just added", "▶ next out + just added", "▶ next + added")
-#: A frontier whose next out is not known (a replayed trace's): no ``▶``, and it says why.
-ADDED_LEGENDS = ("+ just added · your trace doesn't say its discipline",
-                 "your trace doesn't say its discipline", "+ added · no discipline given",
-                 "no discipline given")
-HIDDEN_LEGENDS = ("+ just added · click picks", "+ added · click picks", "click picks")
-#: Cells between an entry and its end hint (at least).
-HINT_GAP = 2
-DISCARDED = "frontier-panel--discarded"
 
 
 class FrontierPanel(LinePanel):
@@ -189,41 +187,15 @@ class FrontierPanel(LinePanel):
         self._iddfs = run.algo.iterative
         n = self._count = run.now.frontier_len()
         self._added = run.now.added_now()
-        grid = run.grid
-        self._coord_w = len(f"({grid.width - 1},{grid.height - 1})")
-        limit = run.steps.depth_limit() if self._iddfs else None
-        self._depth_w = len(f"d={limit}") if limit is not None else 0
-        # The longest straight-line cost across the map: most figures fit, a longer one
-        # pushes the rest of its line along.
-        self._cost_w = (len(f"{octile(grid.width - 1, grid.height - 1):.2f}")
-                        if run.algo.weighted else 0)
-        # marker (3) + coords + " " [+ d=N + " "] + move [+ costs]: the move after the depth,
-        # so that every column stands one space from the next whatever its label (START d=0 /
-        # S d=1 alike)
-        # the move's width: START, longer, is only ever on its own (just the root is on it)
-        self._move_w = max(DIR_W, len(run.nodes.move(run.now.frontier(0, 1)[0])) if n == 1
-                           else 0)
-        entry_w = (3 + self._coord_w + 1 + (self._depth_w + 1 if self._depth_w else 0)
-                   + self._move_w
-                   + (len(costs_column(run, 0, self._cost_w)) if self._cost_w else 0))
-        self._hint_col = entry_w + HINT_GAP
-        self._discarded = None
-        if run.k and run.steps.is_discarded(run.k):
-            g = run.steps.expanded_event(run.k)
-            x, y = run.nodes.cell(g)
-            why = "stale, discarded" if run.algo.weighted else "discarded"
-            # kept whole: a figure never parted from its name when the line wraps
-            shown = [Piece([(figure, DISCARDED)], 0, (" " if i else "  ", DISCARDED))
-                     for i, figure in enumerate(figures(run, g, self._cost_w))]
-            self._discarded = Line([
-                Piece([(f"✗  ({x},{y}) {run.nodes.move(g).ljust(DIR_W)}", DISCARDED)]),
-                *shown, Piece([(why, DISCARDED)], 0, ("  ", DISCARDED))])
+        widths = column_widths(run)
+        self._coord_w, self._depth_w, self._move_w, self._cost_w = widths
+        self._hint_col = entry_width(run, widths) + HINT_GAP
+        self._discarded = discarded_line(run, self._cost_w)
         self._by_cell = None
         if hide_order:
             events = run.now.frontier(0, self.QUIZ_ENTRIES)
             self._by_cell = sorted(events, key=lambda g: run.nodes.cell(g)[::-1])
-        legends = HIDDEN_LEGENDS if hide_order else LEGENDS if kind.next_known else ADDED_LEGENDS
-        self.show_titles(titles(run.algo, hide_order), legends if n else ())
+        self.show_titles(titles(run.algo, hide_order), legends(kind, hide_order) if n else ())
         if n:
             self._empty_text = ""
             self._count_text = kind.count_text(group_digits(n))
@@ -244,17 +216,10 @@ class FrontierPanel(LinePanel):
         top = self._top_rows()
         width = max((length(row) for row in top), default=0)
         if n:
-            entry_w = self._hint_col - HINT_GAP
-            room = self.scrollable_content_region.width
             count = len(figures(self._run, 0, self._cost_w)) if self._cost_w and self._run else 0
-            # too narrow for the figures: closer together, then each name on its number
-            self._squeeze = 0 if not room or entry_w <= room else (
-                1 if entry_w - 1 <= room else 2)
-            entry_w -= (0, 1, 1 + count)[self._squeeze] if count else 0
-            self._rows = None if not room or entry_w <= room else plan_rows(
-                room, self._coord_w, self._depth_w, self._move_w, [self._cost_w + 2] * count)
-            # (a figure's name, its number, and a digit to spare: a path's cost may pass
-            # the map's diagonal)
+            self._squeeze, entry_w, self._rows = fit_entry(
+                self.scrollable_content_region.width, self._hint_col - HINT_GAP, count,
+                (self._coord_w, self._depth_w, self._move_w, self._cost_w))
             if self._rows is not None:
                 width = max(width, self._rows.width)
             else:
@@ -381,42 +346,14 @@ class FrontierPanel(LinePanel):
             g = self._by_cell[y]
         else:
             (g,) = run.now.frontier(y, y + 1)
-        x, cy = run.nodes.cell(g)
         first = y == 0 and self._by_cell is None and self._kind.next_known
-        main = "frontier-panel--next" if first else "frontier-panel--entry"
-        added = g in self._added
+        marks = (first, g in self._added)
+        widths = (self._coord_w, self._depth_w, self._cost_w)
         if self._rows is not None:
-            return entry_row(run, g, self._rows, row, (first, added),
-                             (self._coord_w, self._depth_w, self._cost_w))
-        parts = [
-            ("▶" if first else " ", main),
-            ("+" if added else " ", "frontier-panel--added" if added else main),
-            (" " + f"({x},{cy})".ljust(self._coord_w) + " ", main),
-        ]
-        used = 3 + self._coord_w + 1
-        if self._iddfs:
-            depth = f"d={run.nodes.depth(g)}".ljust(self._depth_w)
-            parts.append((depth, "frontier-panel--detail"))
-            parts.append((" ", main))
-            used += len(depth) + 1
-        move = run.nodes.move(g).ljust(DIR_W)
-        parts.append((move, main))
-        used += len(move)
-        if self._cost_w:
-            costs = costs_column(run, g, self._cost_w, self._squeeze)
-            stale = run.now.is_stale(g)
-            parts.append((costs, "frontier-panel--stale" if stale else main))
-            used += len(costs)
-            if stale and self._hints_fit():  # in the hint column (a priority queue has no
-                # end hints)
-                parts.append((" " * max(HINT_GAP, self._hint_col - used), main))
-                parts.append(("stale", "frontier-panel--stale"))
-        hint = end_hint(self._kind, y, n) if self._by_cell is None and (
-            self._hints_fit()) else ""
-        if hint:
-            parts.append((" " * max(HINT_GAP, self._hint_col - used), "frontier-panel--entry"))
-            parts.append((hint, "frontier-panel--hint"))
-        return parts
+            return entry_row(run, g, self._rows, row, marks, widths)
+        hint = (self._hint_col, end_hint(self._kind, y, n) if self._by_cell is None else ""
+                ) if self._hints_fit() else None
+        return entry_line(run, g, marks, widths, self._squeeze, self._iddfs, hint)
 
     def line_band(self, y: int) -> Style | None:
         """The entry expanded next is highlighted across the whole line (all its rows), like

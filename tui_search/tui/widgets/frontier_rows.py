@@ -1,4 +1,5 @@
-"""How a frontier entry wider than its panel takes more rows (no Textual): the cell on the
+"""How a frontier entry is laid out (no Textual): its columns' widths, its one row
+(:func:`entry_line`), and, wider than its panel, its rows.  Those: the cell on the
 first row, and the figures -- iterative deepening's ``d=3``, a priority queue's ``f6.41``,
 ``g2.41``, ``h4.00`` -- the depth after it while it fits, the figures on rows of their own,
 indented under the cell, together while they fit.  The least important parts go first, never a figure: the move (``NE``) goes when it
@@ -12,17 +13,17 @@ entry on a line is found by a division, whatever the frontier's size."""
 # annotations one by one at import (~5 M instructions of every start in all: session 14).
 from typing import TYPE_CHECKING, NamedTuple
 
+from tui_search.engine.heuristics import octile
 from tui_search.tui.pieces import Parts
-from tui_search.tui.widgets.frontier_text import figures
+from tui_search.tui.widgets.frontier_text import DIR_W, costs_column, figures
 
 if TYPE_CHECKING:
     from tui_search.engine.run import Run
 
 #: Width of the marker column: "▶+ ".
 MARKER_W = 3
-#: Width of the move column: a direction's name (START, longer, is only ever on its own: the
-#: frontier holds just the root then).
-DIR_W = 2
+#: Cells between an entry and its end hint (at least).
+HINT_GAP = 2
 
 
 class EntryRows(NamedTuple):
@@ -34,6 +35,48 @@ class EntryRows(NamedTuple):
     marker: bool
     rows: tuple[tuple[int, tuple[str, ...]], ...]
     width: int  # the widest row
+
+
+def column_widths(run: "Run") -> tuple[int, int, int, int]:
+    """The widths of the entries' columns at the run's position (every entry's the same): the
+    cell's, for the map's largest cell; iterative deepening's ``d=N`` (0: none); the move's
+    (START, longer, is only ever on its own: just the root is on the frontier then); one
+    cost's (0: not a priority queue), the longest straight-line cost across the map's --
+    most figures fit, a longer one pushes the rest of its line along."""
+    grid = run.grid
+    coord_w = len(f"({grid.width - 1},{grid.height - 1})")
+    limit = run.steps.depth_limit() if run.algo.iterative else None
+    depth_w = len(f"d={limit}") if limit is not None else 0
+    cost_w = len(f"{octile(grid.width - 1, grid.height - 1):.2f}") if run.algo.weighted else 0
+    move_w = max(DIR_W, len(run.nodes.move(run.now.frontier(0, 1)[0]))
+                 if run.now.frontier_len() == 1 else 0)
+    return coord_w, depth_w, move_w, cost_w
+
+
+def entry_width(run: "Run", widths: tuple[int, int, int, int]) -> int:
+    """An entry's width on one row: marker + cell + " " [+ d=N + " "] + move [+ costs]: the
+    move after the depth, so that every column stands one space from the next whatever its
+    label (START d=0 / S d=1 alike)."""
+    coord_w, depth_w, move_w, cost_w = widths
+    return (MARKER_W + coord_w + 1 + (depth_w + 1 if depth_w else 0) + move_w
+            + (len(costs_column(run, 0, cost_w)) if cost_w else 0))
+
+
+def fit_entry(room: int, entry_w: int, count: int, widths: tuple[int, int, int, int]
+              ) -> tuple[int, int, "EntryRows | None"]:
+    """How an entry ``entry_w`` wide with ``count`` figures fits ``room`` cells (0: not laid
+    out yet): too narrow for it, its figures pressed closer together (``squeeze`` 1), then
+    each name on its number (2), then on more rows.  ``widths``: the cell's, the depth's (0:
+    none), the move's and one cost's.  Returns the squeeze, the entry's width pressed, and
+    its rows (None: one)."""
+    coord_w, depth_w, move_w, cost_w = widths
+    squeeze = 0 if not room or entry_w <= room else (1 if entry_w - 1 <= room else 2)
+    entry_w -= (0, 1, 1 + count)[squeeze] if count else 0
+    # (a figure's name, its number, and a digit to spare: a path's cost may pass the map's
+    # diagonal)
+    rows = None if not room or entry_w <= room else plan_rows(
+        room, coord_w, depth_w, move_w, [cost_w + 2] * count)
+    return squeeze, entry_w, rows
 
 
 def plan_rows(room: int, coord_w: int, depth_w: int, move_w: int,
@@ -92,4 +135,44 @@ def entry_row(run: "Run", g: int, plan: EntryRows, row: int, marks: tuple[bool, 
         if parts and (row == 0 or parts[-1][0].strip()):
             parts.append((" ", main))
         parts.append(piece)
+    return parts
+
+
+def entry_line(run: "Run", g: int, marks: tuple[bool, bool], widths: tuple[int, int, int],
+               squeeze: int, iddfs: bool, hint: "tuple[int, str] | None") -> Parts:
+    """The entry of event ``g`` on one row: the marker column, the cell, iteration's depth
+    (``iddfs``), the move, a priority queue's figures (pressed by ``squeeze``:
+    :func:`~tui_search.tui.widgets.frontier_text.costs_column`).  ``marks`` and ``widths`` as
+    for :func:`entry_row`; ``hint``: the column the end hints start at and this entry's hint,
+    None when the hints (and "stale") do not fit beside the entries."""
+    first, added = marks
+    coord_w, depth_w, cost_w = widths
+    main = "frontier-panel--next" if first else "frontier-panel--entry"
+    x, y = run.nodes.cell(g)
+    parts = [
+        ("▶" if first else " ", main),
+        ("+" if added else " ", "frontier-panel--added" if added else main),
+        (" " + f"({x},{y})".ljust(coord_w) + " ", main),
+    ]
+    used = MARKER_W + coord_w + 1
+    if iddfs:
+        depth = f"d={run.nodes.depth(g)}".ljust(depth_w)
+        parts.append((depth, "frontier-panel--detail"))
+        parts.append((" ", main))
+        used += len(depth) + 1
+    move = run.nodes.move(g).ljust(DIR_W)
+    parts.append((move, main))
+    used += len(move)
+    if cost_w:
+        costs = costs_column(run, g, cost_w, squeeze)
+        stale = run.now.is_stale(g)
+        parts.append((costs, "frontier-panel--stale" if stale else main))
+        used += len(costs)
+        if stale and hint is not None:  # in the hint column (a priority queue has no
+            # end hints)
+            parts.append((" " * max(HINT_GAP, hint[0] - used), main))
+            parts.append(("stale", "frontier-panel--stale"))
+    if hint is not None and hint[1]:
+        parts.append((" " * max(HINT_GAP, hint[0] - used), "frontier-panel--entry"))
+        parts.append((hint[1], "frontier-panel--hint"))
     return parts

@@ -1,5 +1,6 @@
 """What the frontier panel's lines say, as text (no Textual): a priority queue's figures, the
-end hints, what an empty frontier means, the title's wordings.  The panel (:mod:`~tui_search.tui.widgets.
+end hints, what an empty frontier means, the entry a discarded step threw away, the title's
+and the legend's wordings.  The panel (:mod:`~tui_search.tui.widgets.
 frontier_panel`) lays them out."""
 
 from __future__ import annotations
@@ -8,6 +9,7 @@ from typing import TYPE_CHECKING
 
 from tui_search.engine.algorithms import PRIORITIES, Algorithm, Frontier
 from tui_search.tui.narration import gave_up_text
+from tui_search.tui.pieces import Line, Piece
 
 if TYPE_CHECKING:
     from tui_search.engine.run import Run
@@ -18,6 +20,18 @@ SHORT_NAMES = {Frontier.FIFO: ("Queue", "Q"), Frontier.LIFO: ("Stack", "S"),
                Frontier.PRIORITY: ("Priority queue", "PQ"), Frontier.ADDED: ("Frontier", "F")}
 #: What the title adds while there is room: a replayed trace's frontier is only its order added.
 TITLE_NOTES = {Frontier.ADDED: "your trace doesn't say its discipline"}
+#: The bottom legend's wordings, longest first (a narrow panel shows a shorter one); in the
+#: quiz, whose order is hidden: HIDDEN_LEGENDS.
+LEGENDS = ("▶ next out  + just added", "▶ next out + just added", "▶ next + added")
+#: A frontier whose next out is not known (a replayed trace's): no ``▶``, and it says why.
+ADDED_LEGENDS = ("+ just added · your trace doesn't say its discipline",
+                 "your trace doesn't say its discipline", "+ added · no discipline given",
+                 "no discipline given")
+HIDDEN_LEGENDS = ("+ just added · click picks", "+ added · click picks", "click picks")
+DISCARDED = "frontier-panel--discarded"
+#: Width of the move column: a direction's name (START, longer, is only ever on its own: the
+#: frontier holds just the root then).
+DIR_W = 2
 
 
 def titles(algo: Algorithm, hide_order: bool = False) -> tuple[str, ...]:
@@ -40,6 +54,11 @@ def titles(algo: Algorithm, hide_order: bool = False) -> tuple[str, ...]:
         wordings = [f"{plain[0]} · order hidden",
                     *(f"{text} · hidden" for text in plain[:-1]), *plain]
     return _longest_first(wordings)
+
+
+def legends(kind: Frontier, hide_order: bool) -> tuple[str, ...]:
+    """The bottom legend's wordings, longest first."""
+    return HIDDEN_LEGENDS if hide_order else LEGENDS if kind.next_known else ADDED_LEGENDS
 
 
 def _longest_first(wordings: list[str]) -> tuple[str, ...]:
@@ -72,6 +91,21 @@ def costs_column(run: Run, g: int, width: int, squeeze: int = 0) -> str:
     if squeeze == 2:
         shown = [figure.replace(" ", "", 1) for figure in shown]
     return ("  " if squeeze == 0 else " ") + " ".join(shown) if shown else ""
+
+
+def discarded_line(run: Run, cost_w: int) -> Line | None:
+    """After a discarded step (visit on expand): the entry it threw away, struck out, its
+    figures ``cost_w`` wide; None after any other step."""
+    if not (run.k and run.steps.is_discarded(run.k)):
+        return None
+    g = run.steps.expanded_event(run.k)
+    x, y = run.nodes.cell(g)
+    why = "stale, discarded" if run.algo.weighted else "discarded"
+    # kept whole: a figure never parted from its name when the line wraps
+    shown = [Piece([(figure, DISCARDED)], 0, (" " if i else "  ", DISCARDED))
+             for i, figure in enumerate(figures(run, g, cost_w))]
+    return Line([Piece([(f"✗  ({x},{y}) {run.nodes.move(g).ljust(DIR_W)}", DISCARDED)]),
+                 *shown, Piece([(why, DISCARDED)], 0, ("  ", DISCARDED))])
 
 
 def end_hint(kind: Frontier, i: int, n: int) -> str:

@@ -1,18 +1,9 @@
-"""The map, drawn with Textual's line API: one ``render_line`` per terminal row, never a widget
-per cell, so a 512x512 map costs what the visible part costs.
+"""The map, drawn with Textual's line API (:mod:`~tui_search.tui.widgets.map_lines` says what
+each terminal row shows: cells at a zoom, or the overview's blocks).
 
 Where each cell goes is one :class:`~tui_search.tui.geometry.Geometry`, which the drawing, the
-mouse, the scrolling and the overview share:
-
-* **cells** -- each map cell is 2x1, 4x2, 6x3 ... characters (by default the largest at which the
-  whole map fits; ``zoom`` changes it) and carries a glyph as well as a colour, so the picture
-  reads without colour too (see :data:`~tui_search.tui.cell_codes.GLYPHS`, which the legend shows).  Cells at least 4 wide
-  also carry a label (:mod:`~tui_search.tui.cell_labels`): the arrow of the move that reached
-  the cell and, where there is room, its depth or its costs;
-* **overview** -- half blocks (``▀`` with a foreground and a background colour), each half
-  standing for a block of cells drawn by the state that matters most in it (see :data:`~tui_search.tui.cell_codes.RANK`), so
-  every row and column of a 512x512 map shows in a 140x45 terminal; a free block on a map with
-  terrain takes the ramp's colour of its dearest cell (:func:`~tui_search.tui.widgets.cell_style.block_costs`).
+mouse, the scrolling and the overview share.  By default cells are the largest at which the
+whole map fits; ``zoom`` changes their size, and out of the smallest is the overview.
 
 The widget only draws what it is told (``show_run``, ``set_cursor``, ``set_grid``) and posts
 what the mouse did (``CellClicked``, ...); the screen decides what an edit means.
@@ -21,9 +12,7 @@ what the mouse did (``CellClicked``, ...); the screen decides what an edit means
 from __future__ import annotations
 
 from collections.abc import Iterable
-from itertools import groupby
 
-from rich.segment import Segment
 from rich.style import Style
 from textual import events
 from textual.geometry import Size
@@ -33,22 +22,13 @@ from textual.strip import Strip
 
 from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.run import Run
-from tui_search.tui.cell_codes import COMPONENTS, half_blocks
+from tui_search.tui.cell_codes import COMPONENTS
 from tui_search.tui.cell_labels import LABEL_MODES
 from tui_search.tui.geometry import Geometry, snapped
-from tui_search.tui.widgets.cell_style import (
-    CURSOR,
-    MARKED,
-    RAMP_COMPONENTS,
-    CellLooks,
-    block_codes,
-    block_costs,
-    row_codes,
-    row_costs,
-    shaded,
-    swatches,
-)
-from tui_search.tui.widgets.line_panel import CachedStyles, QuietScrollbars, window_strip
+from tui_search.tui.widgets.cell_style import RAMP_COMPONENTS, CellLooks, swatches
+from tui_search.tui.widgets.line_panel import CachedStyles
+from tui_search.tui.widgets.map_lines import map_line
+from tui_search.tui.widgets.scrollbars import QuietScrollbars
 
 
 class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inherit_bindings=False):
@@ -324,82 +304,9 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
             self._swatches = swatches(self.get_component_rich_style, self.rich_style)
         return self._swatches[code]
 
-    # -- drawing ----------------------------------------------------------------------------
+    # -- drawing (map_lines.py) ----------------------------------------------------------
     def render_line(self, y: int) -> Strip:
-        sx, sy = self.scroll_offset
-        width = self.scrollable_content_region.width
-        line = sy + y
-        geo = self.geometry
-        if geo.overview:
-            return self._overview_line(line, sx, width)
-        background = self.cached_style()
-        rows, _ = geo.line_rows(line)
-        if not rows:
-            return Strip.blank(width, background)
-        row = rows[0]
-        columns = geo.visible_columns(sx, width)
-        x0, x1 = columns.start, columns.stop
-        codes = row_codes(self.grid, self.run, row, x0, x1)
-        cx, cy = self.cursor
-        if cy == row and x0 <= cx < x1:
-            codes[cx - x0] += CURSOR
-        if self.mark is not None and self.mark[1] == row and x0 <= self.mark[0] < x1:
-            codes[self.mark[0] - x0] += MARKED
-        looks = self.cell_looks()
-        costs = row_costs(self.grid, row, x0, x1)
-        segments = [Segment(" " * self.pad_x, background)]  # the padding that centres the map
-        if geo.cell_width == 2 and costs is None:  # one segment per run of like cells
-            for code, like in groupby(codes):
-                glyph, style = looks.codes[code]
-                segments.append(Segment(glyph * len(list(like)), style))
-        elif geo.cell_width == 2:
-            for (text, look), alike in groupby(map(looks.terrain, codes, costs or ())):
-                segments.append(Segment(text * len(list(alike)), look))
-        else:
-            segments += looks.big_cells(self.run, row, columns, codes, costs, geo.cell_width,
-                                        geo.cell_height, line - row * geo.cell_height,
-                                        self.labels)
-        return window_strip(segments, sx - x0 * geo.cell_width, width, background)
-
-    def _block_codes(self, rows: range, x0: int, x1: int) -> list[int] | None:
-        """For each block of the overview's columns ``x0 .. x1-1`` over map rows ``rows``:
-        the code of highest rank in it (None for no rows: a half below the map)."""
-        return block_codes(self.grid, self.run, rows, x0, x1, self.geometry.across)
-
-    def _block_swatches(self, rows: range, x0: int, x1: int) -> list[int] | None:
-        """The swatch of each block: its code, a free block shaded by its dearest cell."""
-        codes = self._block_codes(rows, x0, x1)
-        costs = block_costs(self.grid, rows, x0, x1, self.geometry.across)
-        return None if codes is None else shaded(codes, costs)
-
-    def _overview_line(self, line: int, sx: int, width: int) -> Strip:
-        background = self.cached_style()
-        geo = self.geometry
-        upper_rows, lower_rows = geo.line_rows(line)
-        if not upper_rows:
-            return Strip.blank(width, background)
-        columns = geo.visible_columns(sx, width)
-        upper = self._block_swatches(upper_rows, columns.start, columns.stop)
-        assert upper is not None
-        lower = self._block_swatches(lower_rows, columns.start, columns.stop)
-        x, y, _, _ = geo.cell_region(self.cursor)  # the cursor's character
-        cursor_x = x - sx if y == line else -1
-        cursor_upper = self.cursor[1] in upper_rows
-        cursor_colour = self.get_component_rich_style("grid-view--cursor").color or (
-            background.color
-        )
-        colours = []
-        for i in range(len(upper)):
-            a = self.swatch(upper[i]).color
-            b = self.swatch(lower[i]).color if lower is not None else background.bgcolor
-            if i == cursor_x:
-                if cursor_upper:
-                    a = cursor_colour
-                else:
-                    b = cursor_colour
-            colours.append((a, b))
-        return window_strip([Segment(" " * self.pad_x, background), *half_blocks(colours)], 0,
-                            width, background)
+        return map_line(self, y)
 
     # -- the mouse: report, don't edit ------------------------------------------------------
     def _event_cell(self, event: events.MouseEvent, captured: bool = False) -> Cell | None:

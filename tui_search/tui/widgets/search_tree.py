@@ -25,7 +25,8 @@ from textual.geometry import Size
 from tui_search.tui.pieces import Parts
 from tui_search.tui.tree_model import GLYPH_EXPANDED, GLYPH_FRONTIER, GLYPH_GOAL, TreeModel
 from tui_search.tui.tree_model import Parts as TreeParts
-from tui_search.tui.widgets.line_panel import LinePanel, set_virtual_size
+from tui_search.tui.widgets.line_panel import LinePanel
+from tui_search.tui.widgets.scrollbars import set_virtual_size
 
 if TYPE_CHECKING:
     from tui_search.engine.run import Run
