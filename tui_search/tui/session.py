@@ -23,7 +23,6 @@ from tui_search.tui.playback import Before
 from tui_search.tui.quiz import Quiz, toggled, verdict
 from tui_search.tui.replay_jumps import LOCKSTEP, LOCKSTEP_SHORT, REPLAY_ENDED, ReplayJumps
 from tui_search.tui.searches import DEFAULT_COMPARE, normal_spec, searches_of, with_key
-from tui_search.tui.seek import Seek
 
 if TYPE_CHECKING:
     # Imported where used: exercises are read and graded only once one is shown, so the first
@@ -33,6 +32,7 @@ if TYPE_CHECKING:
     from tui_search.engine.scenarios import Optimum
     from tui_search.engine.trace_replay import Replay
     from tui_search.tui.lesson_play import LessonPlay
+    from tui_search.tui.seek import Seek
 
 NEEDS_ENDPOINTS = "Place a start (s) and a goal (g) to search"
 
@@ -288,6 +288,8 @@ class Session:
 
     def start_seek(self, to_end: bool, then_play: bool = False) -> None:
         """Move every run to its end (or step 0) in slices: :meth:`Seek.work`."""
+        from tui_search.tui.seek import Seek  # once a key asks: the first frame has none
+
         self.stop()
         targets = [(run, None if to_end else 0) for run in self.runs]
         self.seek = Seek(targets, self.names, self.where(), then_play)

@@ -9,40 +9,41 @@ the runs go; this part only times it and asks the screen to show what changed.
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from typing import TYPE_CHECKING, Protocol
+from typing import TYPE_CHECKING
 
 from tui_search.tui import playback
 
-if TYPE_CHECKING:
+if TYPE_CHECKING:  # (the protocol too: nothing of it is needed to run, so no class is made)
+    from collections.abc import Callable
+    from typing import Protocol
+
     from textual.timer import Timer
 
     from tui_search.engine.grid import Cell
     from tui_search.tui.session import Before, Session
 
+    class Host(Protocol):
+        """What the driver needs of the screen it drives (the screen of panes: named here,
+        not imported, so the two modules make no circle)."""
 
-class Host(Protocol):
-    """What the driver needs of the screen it drives (the screen of panes: named here, not
-    imported, so the two modules make no circle)."""
+        session: Session
 
-    session: Session
+        @property
+        def is_attached(self) -> bool: ...
 
-    @property
-    def is_attached(self) -> bool: ...
+        def set_interval(self, interval: float, callback: Callable[[], None], *,
+                         pause: bool = False) -> Timer: ...
 
-    def set_interval(self, interval: float, callback: Callable[[], None], *,
-                     pause: bool = False) -> Timer: ...
+        def set_timer(self, delay: float, callback: Callable[[], None]) -> Timer: ...
 
-    def set_timer(self, delay: float, callback: Callable[[], None]) -> Timer: ...
+        def moved(self, before: Before | None) -> None:
+            """Show the runs after a move from ``before``."""
 
-    def moved(self, before: Before | None) -> None:
-        """Show the runs after a move from ``before``."""
+        def present(self, changed: list[Cell] | None = None) -> None:
+            """Show the runs where they are (``changed``: only those cells of the maps)."""
 
-    def present(self, changed: list[Cell] | None = None) -> None:
-        """Show the runs where they are (``changed``: only those cells of the maps)."""
-
-    def show_status(self) -> None:
-        """Show the status lines anew (the session's note changed)."""
+        def show_status(self) -> None:
+            """Show the status lines anew (the session's note changed)."""
 
 
 class PlaybackDriver:
