@@ -131,7 +131,7 @@ async def test_starts_paused_at_step_0_with_the_cursor_on_the_start() -> None:
     async with app.run_test(size=SIZE) as pilot:
         await pilot.pause()
         assert app.session.run is not None
-        app.main._tick()  # a playback tick: paused, it moves nothing
+        app.main.playback.tick()  # a playback tick: paused, it moves nothing
         assert app.session.run.k == 0
         assert not app.session.playing
         assert app.session.cursor == (0, 0)
@@ -366,7 +366,7 @@ async def test_a_step_key_during_end_stops_the_seek_where_it_is(
         assert recorded, "end started a seek"
         assert not app.session.seeking and not run.at_end and not run.done
         slices, steps = len(recorded), run.recorded
-        app.main._seek_slice()  # what the seek's pending timer calls: it records no more
+        app.main.playback.seek_slice()  # what the seek's pending timer calls: it records no more
         assert run.k == 1 and run.recorded == steps and len(recorded) == slices
         assert not stats(app)[1].startswith("Computing")
 
@@ -425,13 +425,13 @@ async def test_space_plays_and_pauses() -> None:
         run = app.session.run
         assert app.session.playing
         k = run.k
-        app.main._tick()  # what the playback timer calls
+        app.main.playback.tick()  # what the playback timer calls
         assert run.k == k + 2
         await wait_until(pilot, lambda: run.k > k + 2)  # and the timer calls it by itself
         await pilot.press("space")
         k = run.k
         assert not app.session.playing
-        app.main._tick()  # paused: a tick moves nothing
+        app.main.playback.tick()  # paused: a tick moves nothing
         assert run.k == k
 
 
@@ -447,7 +447,7 @@ async def test_playback_at_top_speed_skips_frames_and_stops_at_the_end() -> None
         await pilot.press("space")
         run = app.session.run
         k = run.k
-        app.main._tick()
+        app.main.playback.tick()
         assert run.k - k > 1  # one frame, many steps
         await wait_until(pilot, lambda: run.at_end, 60)  # a guard against hanging
         assert not app.session.playing

@@ -13,7 +13,7 @@ from tui_search.engine.exercises import LIVE_CELLS, grade
 from tui_search.engine.grid import Grid
 from tui_search.engine.mapfile import load_map
 from tui_search.tui.app import SearchApp
-from tui_search.tui.screens import panes
+from tui_search.tui.screens import exercise_check
 from tui_search.tui.widgets.challenge import ChallengePanel
 
 SIZE = (120, 36)
@@ -90,7 +90,7 @@ async def test_a_big_map_is_checked_in_the_background_once_the_edits_pause(
     shown) and a new check gives the edited map's.  The pause before a check ends when the
     test opens a gate (on a busy machine the app can take longer to start than the pause)."""
     gate = threading.Event()
-    monkeypatch.setattr(panes, "sleep", lambda seconds: gate.wait(60))
+    monkeypatch.setattr(exercise_check, "sleep", lambda seconds: gate.wait(60))
     grid = Grid(150, 150, start=(0, 0), goal=(149, 149))
     assert grid.width * grid.height > LIVE_CELLS
     big = SearchApp(grid, exercise=1)

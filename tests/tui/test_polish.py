@@ -329,5 +329,5 @@ async def test_a_slice_of_end_due_after_the_app_closed_does_nothing(one_slice) -
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("end")
         assert app.session.seeking
-    app.main._seek_slice()  # what the pending timer would do
+    app.main.playback.seek_slice()  # what the pending timer would do
     assert app.session.run.k == 0

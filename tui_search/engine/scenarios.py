@@ -10,7 +10,7 @@ from __future__ import annotations
 import math
 import os
 import re
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
 from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.mapread import (
@@ -23,7 +23,11 @@ from tui_search.engine.mapread import (
     stripped_lines,
 )
 
+if TYPE_CHECKING:
+    from tui_search.engine.semantics import Semantics
+
 __all__ = [
+    "Optimum",
     "Scenario",
     "check_scenario_map",
     "check_scenario_matches",
@@ -197,3 +201,23 @@ def check_scenario_matches(
         )
     check_cell(grid, scen.start, "start", where, scen.line)
     check_cell(grid, scen.goal, "goal", where, scen.line)
+
+
+def _map_key(grid: Grid) -> tuple[bytes, bytes | None]:
+    return bytes(grid.blocked), None if grid.costs is None else bytes(grid.costs)
+
+
+class Optimum:
+    """A scenario's optimal length on ``grid`` as it is now: it holds while the map's
+    obstacles and terrain, its start and goal and the benchmark's rules (8 moves, no corner
+    cutting) stay so (an obstacle or a cost painted lapses it; undone, it holds again)."""
+
+    def __init__(self, grid: Grid, cost: float) -> None:
+        self.cost = cost
+        self._ends, self._map = (grid.start, grid.goal), _map_key(grid)
+
+    def on(self, grid: Grid, semantics: Semantics) -> float | None:
+        """The optimal cost if it holds on ``grid`` under ``semantics``, else None."""
+        same_map = (grid.start, grid.goal) == self._ends and _map_key(grid) == self._map
+        rules = semantics.corners == "never" and len(semantics.order) == 8
+        return self.cost if same_map and rules else None

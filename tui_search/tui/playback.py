@@ -1,4 +1,5 @@
-"""Moving a run's position in time-boxed slices, and what a move changes on screen.
+"""Moving the runs' positions: a step of the lockstep, time-boxed slices, and what a move
+changes on screen.
 
 Plain functions over :class:`~tui_search.engine.run.Run` (no Textual), so the app's playback
 timer, its ``end`` key and the tests share them.
@@ -37,6 +38,28 @@ def speed_text(speed: int) -> str:
     if speed >= 1_000:
         return f"{speed // 1_000}k/s"
     return f"{speed}/s"
+
+#: Where each run was before a move: its step, and whether it was at its end.
+Before = list[tuple[int, bool]]
+
+
+def where(runs: list[Run]) -> Before:
+    return [(r.k, r.at_end) for r in runs]
+
+
+def advance(runs: list[Run], forward: bool) -> Before | None:
+    """One step of the lockstep: forwards, every run not at its end; backwards, the runs
+    at the latest step (one that ended earlier stays on its last screen).  Where they
+    were before, or None when none moved."""
+    if not runs:
+        return None
+    before = where(runs)
+    if forward:
+        moved = [r.forward() for r in runs]
+    else:
+        latest = max(r.k for r in runs)
+        moved = [r.k == latest and r.backward() for r in runs]
+    return before if any(moved) else None
 
 
 def forward_for(runs: list[Run], steps: int, seconds: float = SLICE_SECONDS) -> int:

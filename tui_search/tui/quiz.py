@@ -50,6 +50,14 @@ class Quiz(NamedTuple):
         return f"Quiz over: the search is done · {self.score} (r restarts)"
 
 
+def toggled(quiz: Quiz, run: Run | None) -> tuple[Quiz, str]:
+    """The quiz turned on (its first question, or why there is none yet) or off (no word)."""
+    if quiz.on:
+        return Quiz(), ""
+    on = Quiz(on=True)
+    return on, on.question(run) if run is not None else NO_RUN
+
+
 def verdict(quiz: Quiz, run: Run, node: Cell, guess: Cell) -> tuple[Quiz, str]:
     """The new score and what to say, when the step took ``node`` off and the student
     guessed ``guess``."""
@@ -61,4 +69,4 @@ def verdict(quiz: Quiz, run: Run, node: Cell, guess: Cell) -> tuple[Quiz, str]:
     return quiz, f"{said} · {quiz.score} · next: cursor or pick, enter"
 
 
-__all__ = ["NO_RUN", "Quiz", "verdict"]
+__all__ = ["NO_RUN", "Quiz", "toggled", "verdict"]

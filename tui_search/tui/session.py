@@ -12,44 +12,29 @@ from __future__ import annotations
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from tui_search.engine.algorithms import DEFAULT_ALGORITHM, get_algorithm
-from tui_search.engine.compare import Contender, parse_compare
+from tui_search.engine.algorithms import DEFAULT_ALGORITHM
+from tui_search.engine.compare import Contender
 from tui_search.engine.grid import Cell, Grid
 from tui_search.engine.run import MAX_STEPS, Run
 from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
 from tui_search.tui import playback
 from tui_search.tui.map_edits import BRUSHES, NO_BRUSH, MapEdits
-from tui_search.tui.quiz import NO_RUN, Quiz, verdict
+from tui_search.tui.playback import Before
+from tui_search.tui.quiz import Quiz, toggled, verdict
 from tui_search.tui.replay_jumps import LOCKSTEP, LOCKSTEP_SHORT, REPLAY_ENDED, ReplayJumps
-from tui_search.tui.seek import Seek
+from tui_search.tui.searches import DEFAULT_COMPARE, normal_spec, searches_of, with_key
 
 if TYPE_CHECKING:
     # Imported where used: exercises are read and graded only once one is shown, so the first
     # frame does without their modules (~8 ms: benchmarks/README.md, "startup").
     from tui_search.engine.exercise_file import Exercise
     from tui_search.engine.exercises import Verdict
+    from tui_search.engine.scenarios import Optimum
     from tui_search.engine.trace_replay import Replay
     from tui_search.tui.lesson_play import LessonPlay
+    from tui_search.tui.seek import Seek
 
-#: The searches ``c`` compares until the settings pick others.
-DEFAULT_COMPARE = "bfs,dfs"
-#: Panes: one at least, four at most; the number keys take none out of fewer than two.
-MIN_COMPARED, MAX_PANES = 2, 4
 NEEDS_ENDPOINTS = "Place a start (s) and a goal (g) to search"
-
-#: Where each run was before a move: its step, and whether it was at its end.
-Before = list[tuple[int, bool]]
-
-
-def map_key(grid: Grid) -> tuple[bytes, bytes | None]:
-    """The map's obstacles and terrain as they are (a benchmark's optimum holds while they
-    stay so: an obstacle or a cost painted lapses it)."""
-    return bytes(grid.blocked), None if grid.costs is None else bytes(grid.costs)
-
-
-def normal_spec(spec: str) -> str:
-    """``bfs, dfs,`` as ``bfs,dfs``: the searches of a spec, no blanks."""
-    return ",".join(part.strip() for part in spec.split(",") if part.strip())
 
 
 class Session:
@@ -63,7 +48,9 @@ class Session:
 
     Its parts: ``edits``, the map and its edits (:class:`~tui_search.tui.map_edits.MapEdits`:
     the history, the terrain brush); ``jumps``, the replay shown and the jump to where it
-    parts from its search (:class:`~tui_search.tui.replay_jumps.ReplayJumps`).
+    parts from its search (:class:`~tui_search.tui.replay_jumps.ReplayJumps`).  What a
+    search's key does to the searches shown is :mod:`~tui_search.tui.searches`'s; a lockstep
+    step, :mod:`~tui_search.tui.playback`'s.
     """
 
     def __init__(
@@ -105,8 +92,11 @@ class Session:
         self.show_code = False  # the Code panel in the trees' place (the pseudocode, lit)
         self.lesson: LessonPlay | None = None  # --lesson: the lesson shown beside the panes
         self._fitted = ""  # the note on a setting fitted to a search, once said
-        self._benchmark = None if optimal_cost is None else (
-            map_key(grid), grid.start, grid.goal, optimal_cost)
+        self._optimum: Optimum | None = None  # while it holds: engine/scenarios.py
+        if optimal_cost is not None:  # a --scen row: its module is imported already
+            from tui_search.engine.scenarios import Optimum
+
+            self._optimum = Optimum(grid, optimal_cost)
         self.jumps = ReplayJumps(replay, lambda: self.runs, self.goto)
         self.new_runs()
 
@@ -164,20 +154,11 @@ class Session:
         labels = self.labels
         return labels if len(labels) > 1 else [""] * len(labels)  # rule over N: naming
 
-    def _contenders(self, spec: str) -> tuple[list[Contender], str]:
-        """The searches of ``spec`` under the settings in force, and a note when a setting
-        does not apply to one of them (the visit rule: that one visits on generate)."""
-        contenders = parse_compare(spec, self.semantics, fit=True, fewest=1)
-        fitted = [c.label for c in contenders if c.semantics.visit != self.semantics.visit]
-        note = (f"Visit on expand does not apply to {', '.join(fitted)}: visit on generate "
-                "there" if fitted else "")
-        return contenders, note
-
     def new_runs(self, note: str = "") -> None:
         """A fresh run a pane at step 0 on the map as it is now (none without start and
         goal)."""
         self.stop()
-        self.contenders, why = self._contenders(self.spec)
+        self.contenders, why = searches_of(self.spec, self.semantics)
         self.note = note or (why if why != self._fitted else "")  # said once, not at each edit
         self._fitted = why
         grid = self.grid
@@ -185,7 +166,8 @@ class Session:
             self.runs = []
             self.note = note or NEEDS_ENDPOINTS
         else:
-            known = self._benchmark_cost()
+            optimum = self._optimum
+            known = optimum.on(grid, self.semantics) if optimum is not None else None
             replay = self.jumps.replay
             if replay is not None and not replay.fits(grid):
                 self.jumps.end()
@@ -198,42 +180,20 @@ class Session:
         if self.runs and self.quiz.on and not self.note:
             self.note = self.quiz.question(self.runs[0])
 
-    def _benchmark_cost(self) -> float | None:
-        """The benchmark's lowest cost, if it applies to the map and the rules as they are."""
-        if self._benchmark is None:
-            return None
-        key, start, goal, cost = self._benchmark
-        grid, sem = self.grid, self.semantics
-        same_map = (grid.start, grid.goal) == (start, goal) and map_key(grid) == key
-        rules = sem.corners == "never" and len(sem.order) == 8
-        return cost if same_map and rules else None
-
     # -- the searches shown --------------------------------------------------------------
     def choose_algorithm(self, key: str) -> str | None:
         """One pane: run ``key`` there.  Several: add it, or take it out (two stay, four at
-        most).  None, or a warning why nothing changed."""
-        parts = self.spec.split(",")
-        keys = [p.partition(":")[0] for p in parts]
-        name = get_algorithm(key).short
-        if len(parts) == 1:  # rule over N: a key picks one pane's search, adds to several
-            parts = [key]
-        elif key in keys:
-            if len(parts) == MIN_COMPARED:
-                return f"Compare keeps two searches at least: {name} stays (c for one search)"
-            del parts[keys.index(key)]
-        elif len(parts) == MAX_PANES:
-            return (f"Compare shows four searches at most: take one out to add {name}"
-                    " (its key again)")
-        else:
-            parts.append(key)
-        return self.show_searches(",".join(parts))
+        most: :func:`~tui_search.tui.searches.with_key`).  None, or a warning why nothing
+        changed."""
+        spec, refused = with_key(self.spec, key)
+        return refused if refused is not None else self.show_searches(spec)
 
     def show_searches(self, spec: str) -> str | None:
         """Show the searches of ``spec`` (``bfs,dfs``; one key: one pane) from step 0.  None,
         or the one-line reason the spec is refused (nothing changes then)."""
         spec = normal_spec(spec)
         try:
-            parse_compare(spec, self.semantics, fit=True, fewest=1)
+            searches_of(spec, self.semantics)
         except ValueError as exc:
             return f"Cannot compare {spec}: {exc}"
         self.jumps.end()  # other searches: the replay is over
@@ -300,22 +260,11 @@ class Session:
 
     # -- moving in lockstep --------------------------------------------------------------
     def where(self) -> Before:
-        return [(r.k, r.at_end) for r in self.runs]
+        return playback.where(self.runs)
 
     def advance(self, forward: bool) -> Before | None:
-        """One step of the lockstep: forwards, every run not at its end; backwards, the runs
-        at the latest step (one that ended earlier stays on its last screen).  Where they
-        were before, or None when none moved."""
-        runs = self.runs
-        if not runs:
-            return None
-        before = self.where()
-        if forward:
-            moved = [r.forward() for r in runs]
-        else:
-            latest = max(r.k for r in runs)
-            moved = [r.k == latest and r.backward() for r in runs]
-        return before if any(moved) else None
+        """One step of the lockstep (:func:`~tui_search.tui.playback.advance`)."""
+        return playback.advance(self.runs, forward)
 
     def goto(self, k: int | None) -> None:
         """Every run at step ``k`` (None: its end), from where it is."""
@@ -339,6 +288,8 @@ class Session:
 
     def start_seek(self, to_end: bool, then_play: bool = False) -> None:
         """Move every run to its end (or step 0) in slices: :meth:`Seek.work`."""
+        from tui_search.tui.seek import Seek  # once a key asks: the first frame has none
+
         self.stop()
         targets = [(run, None if to_end else 0) for run in self.runs]
         self.seek = Seek(targets, self.names, self.where(), then_play)
@@ -376,10 +327,7 @@ class Session:
 
     # -- the quiz --------------------------------------------------------------------------
     def toggle_quiz(self) -> None:
-        self.quiz = Quiz(on=not self.quiz.on)
-        run = self.run
-        self.note = (self.quiz.question(run) if run is not None else NO_RUN) \
-            if self.quiz.on else ""
+        self.quiz, self.note = toggled(self.quiz, self.run)
 
     def answer(self) -> Before | None:
         """Take the step and mark the guess, the cell under the cursor (None: no step)."""
@@ -424,4 +372,4 @@ class Session:
         return grade(self.exercise, self.grid, self.max_steps)
 
 
-__all__ = ["BRUSHES", "DEFAULT_COMPARE", "LOCKSTEP", "LOCKSTEP_SHORT", "NEEDS_ENDPOINTS", "NO_BRUSH", "Session", "normal_spec"]
+__all__ = ["BRUSHES", "DEFAULT_COMPARE", "LOCKSTEP", "LOCKSTEP_SHORT", "NEEDS_ENDPOINTS", "NO_BRUSH", "Before", "Session", "normal_spec"]

@@ -27,32 +27,32 @@ class MainScreen(PanesScreen):
 
     # -- moving through the runs -----------------------------------------------------------
     def action_next(self) -> None:
-        self._timer.pause()
+        self.playback.pause()
         self.moved(self.session.step(forward=True))
 
     def action_prev(self) -> None:
-        self._timer.pause()
+        self.playback.pause()
         self.moved(self.session.step(forward=False))
 
     def action_first(self) -> None:
         if self.session.runs:
-            self.seek(to_end=False)
+            self.playback.seek(to_end=False)
 
     def action_last(self) -> None:
         """Go to the end: record each search, then move there, in slices with the event loop
         answering keys in between (esc, or any key that moves the position, stops it)."""
         if self.session.runs and not self.session.at_end():
-            self.seek(to_end=True)
+            self.playback.seek(to_end=True)
 
     def action_stop_seek(self) -> None:
         """esc while computing the end: stop where the runs are (what was recorded is kept)."""
         if self.session.seeking:
-            self.stop()
+            self.playback.stop()
             self.present(changed=[])
 
     def action_difference(self) -> None:
         """A replay: to the step where the trace first parts from its search, and back."""
-        self._timer.pause()
+        self.playback.pause()
         self.session.jumps.to_difference()
         self.present()
 
@@ -65,37 +65,37 @@ class MainScreen(PanesScreen):
         if self.session.playing:
             self.action_pause()
         elif self.session.runs:
-            self.play()
+            self.playback.play()
 
     def action_pause(self) -> None:
         if self.session.playing:
-            self.stop()
+            self.playback.stop()
             self.present()
 
     def action_faster(self) -> None:
-        self._set_speed(self.session.speed_index + 1)
+        self.playback.set_speed(self.session.speed_index + 1)
         self.present(changed=[])
 
     def action_slower(self) -> None:
-        self._set_speed(self.session.speed_index - 1)
+        self.playback.set_speed(self.session.speed_index - 1)
         self.present(changed=[])
 
     # -- the searches shown ----------------------------------------------------------------
     def action_algorithm(self, algorithm: str) -> None:
         """One pane: run ``algorithm``.  Several: add it to them, or take it out."""
-        self._timer.pause()
+        self.playback.pause()
         self.warn(self.session.choose_algorithm(algorithm), timeout=4)
         self.new_runs_shown()
 
     def action_compare(self) -> None:
         """Several panes (the searches last compared) or one again."""
-        self._timer.pause()
+        self.playback.pause()
         self.warn(self.session.toggle_compare(), timeout=5)
         self.new_runs_shown()
 
     def action_show_compare(self, spec: str) -> None:
         """Compare the searches of ``spec`` (the palette's comparisons)."""
-        self._timer.pause()
+        self.playback.pause()
         self.warn(self.session.show_searches(spec), timeout=5)
         self.new_runs_shown()
 
@@ -117,7 +117,7 @@ class MainScreen(PanesScreen):
         state it sets."""
         play = self.session.lesson
         if play is not None and play.move(self.session, by):
-            self._timer.pause()
+            self.playback.pause()
             self.show_map()
             self.show_lesson()
 
@@ -130,7 +130,7 @@ class MainScreen(PanesScreen):
         from tui_search.engine.algorithms import get_algorithm
         from tui_search.tui.screens.settings import SettingsScreen  # only when asked
 
-        self.stop()
+        self.playback.stop()
         session = self.session
         shown = [get_algorithm(c.algorithm) for c in session.contenders]
         self.app.push_screen(SettingsScreen(session.semantics, shown[0], session.comparison,
@@ -162,7 +162,7 @@ class MainScreen(PanesScreen):
 
     def action_answer(self) -> None:
         """Take the step and mark the guess: the cell under the cursor."""
-        self._timer.pause()
+        self.playback.pause()
         before = self.session.answer()
         if before is None:
             self.present(changed=[])
@@ -192,7 +192,7 @@ class MainScreen(PanesScreen):
         if refusal is not None:
             self.warn(refusal)
         else:
-            self._timer.pause()
+            self.playback.pause()
             self.new_runs_shown()
 
     def action_place(self, what: str) -> None:
@@ -269,7 +269,7 @@ class MainScreen(PanesScreen):
 
     def _stroked(self, changed: bool) -> None:
         if changed:
-            self._timer.pause()
+            self.playback.pause()
             self.new_runs_shown()
 
     def on_grid_view_stroke_ended(self, message: GridView.StrokeEnded) -> None:

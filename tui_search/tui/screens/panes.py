@@ -3,15 +3,14 @@ the comparison table and the challenge, and how the session is pushed down to th
 (:class:`~tui_search.tui.screens.main.MainScreen` adds the keys).  One search is one pane:
 nothing here asks whether it is comparing.
 
-Playback is a paused interval timer whose ticks do what ``n`` does, several steps per tick at
-high speeds; ``end`` and ``home`` on a big run move in time-boxed slices
-(:class:`~tui_search.tui.seek.Seek`) so keys are still answered.
+Its parts: ``playback`` times playback and seeks
+(:class:`~tui_search.tui.screens.playback_driver.PlaybackDriver`); the challenge panel's
+verdict is checked by :mod:`~tui_search.tui.screens.exercise_check` once an exercise is shown.
 """
 
 from __future__ import annotations
 
 from functools import cached_property
-from time import sleep
 from typing import TYPE_CHECKING, cast
 
 from textual import events
@@ -22,16 +21,15 @@ from textual.markup import escape
 from textual.screen import Screen
 from textual.widget import AwaitMount, Widget
 from textual.widgets import Static
-from textual.worker import get_current_worker
 
 from tui_search.engine.filenames import describe_name
-from tui_search.engine.grid import Cell, Grid
+from tui_search.engine.grid import Cell
 from tui_search.tui import playback
 from tui_search.tui.file_access import FileAccess
 from tui_search.tui.keys import KEY_IMPORTANCE
 from tui_search.tui.layout import PANE_STATS_HEIGHT, arrange, lesson_width
-from tui_search.tui.narration import group_digits
 from tui_search.tui.readout import describe_each
+from tui_search.tui.screens.playback_driver import PlaybackDriver
 from tui_search.tui.session import NEEDS_ENDPOINTS, Before, Session
 from tui_search.tui.status_lines import screen_rows, screen_status
 from tui_search.tui.widgets.cell_readout import CellReadout
@@ -44,17 +42,12 @@ from tui_search.tui.widgets.run_pane import RunPane, own_rows
 from tui_search.tui.widgets.stats import Stats
 
 if TYPE_CHECKING:
-    from tui_search.engine.exercise_file import Exercise
-    from tui_search.engine.exercises import Verdict
     from tui_search.tui.files import FileCommands
     from tui_search.tui.widgets.challenge import ChallengePanel
     from tui_search.tui.widgets.compare_table import CompareTable
     from tui_search.tui.widgets.lesson_panel import LessonPanel
 
 MIN_WIDTH, MIN_HEIGHT = 60, 20
-#: On a map too big to check an exercise at each edit, the check waits for the edits to pause
-#: this long (seconds): a mouse stroke is an edit a cell.
-EXERCISE_PAUSE = 0.3
 #: What ``v`` says when no pane has room for the Code panel (no lists under a map this big),
 #: and a refit says when the panels it showed fold (the status lines took their rows).
 NO_ROOM_FOR_CODE = ("No room for the Code panel here: a taller terminal, or fewer panes, "
@@ -73,6 +66,7 @@ class PanesScreen(Screen[None]):
         self.session = session
         self.file_access = file_access
         self.panes = self._new_panes()
+        self.playback = PlaybackDriver(self)  # the timer and the seeks' slices
         # what a mouse drag paints: True wall, False free, "brush" the terrain brush's cost
         self._stroke: bool | str | None = None
         self._bindings_key: tuple[object, ...] = ()
@@ -133,8 +127,7 @@ class PanesScreen(Screen[None]):
         return [pane.view for pane in self.panes]
 
     def on_mount(self) -> None:
-        self._timer = self.set_interval(1.0, self._tick, pause=True)
-        self._set_speed(self.session.speed_index)
+        self.playback.start()
         self._check_size(self.size.width, self.size.height)
         for view in self.views:
             view.set_cursor(self.session.cursor)
@@ -358,93 +351,14 @@ class PanesScreen(Screen[None]):
 
     # -- the exercise ----------------------------------------------------------------------
     def _check_exercise(self) -> None:
-        """The challenge panel's verdict on the map as it is now: its whole searches, at once
-        on a map of at most ``LIVE_CELLS`` cells, else in a thread once the edits pause."""
-        session = self.session
-        exercise = session.exercise
-        shown = exercise is not None
+        """The challenge panel shown while an exercise is, with its verdict on the map as it is
+        now (:func:`~tui_search.tui.screens.exercise_check.check_exercise`)."""
+        shown = self.session.exercise is not None
         if self.has_class("-challenge") != shown:
             self.set_class(shown, "-challenge")
             self._show_part(self.challenge, shown)
             self.call_after_refresh(self.fit_panes)
-        if exercise is None:
-            return
-        from tui_search.engine.exercises import LIVE_CELLS  # as Session: only once one is shown
+        if shown:
+            from tui_search.tui.screens.exercise_check import check_exercise  # once one is shown
 
-        panel = self.challenge
-        grid = session.grid
-        if grid.start is None or grid.goal is None:
-            panel.show(exercise, None, "Place a start (s) and a goal (g) to check it.")
-        elif grid.width * grid.height > LIVE_CELLS:
-            panel.show(exercise, None, f"Checking on this map ({group_digits(grid.width)}"
-                       f" × {group_digits(grid.height)})…")
-            copy = grid.copy()
-            self.run_worker(lambda: self._check_big(exercise, copy), thread=True,
-                            exclusive=True, group="exercise")
-        else:
-            panel.show(exercise, session.verdict())
-
-    def _check_big(self, exercise: Exercise, grid: Grid) -> None:
-        """(In a thread.)  Check ``exercise`` on ``grid``, a copy of the map as it was, once
-        no edit has come for a moment (each edit starts a new check and cancels this one), and
-        show the verdict if the map and the exercise are still the same."""
-        sleep(EXERCISE_PAUSE)
-        if get_current_worker().is_cancelled:
-            return
-        from tui_search.engine.exercises import grade
-
-        verdict = grade(exercise, grid, self.session.max_steps)
-        self.app.call_from_thread(self._show_big_verdict, exercise, grid, verdict)
-
-    def _show_big_verdict(self, exercise: Exercise, grid: Grid, verdict: Verdict) -> None:
-        now = self.session.grid
-        if exercise is self.session.exercise and (grid.start, grid.goal) == (
-                now.start, now.goal) and grid.blocked == now.blocked:
-            self.challenge.show(exercise, verdict)
-
-    # -- playback --------------------------------------------------------------------------
-    def _set_speed(self, index: int) -> None:
-        self.session.set_speed(index)
-        interval = playback.tick_interval(self.session.speed)
-        if hasattr(self, "_timer"):
-            self._timer.stop()
-        self._timer = self.set_interval(interval, self._tick, pause=not self.session.playing)
-
-    def _tick(self) -> None:
-        before = self.session.tick()
-        if not self.session.playing:
-            self._timer.pause()
-        self.moved(before)
-
-    def play(self) -> None:
-        if self.session.play():
-            self._seek_slice()
-        else:
-            self._timer.resume()
-            self.present()
-
-    def stop(self) -> None:
-        self.session.stop()
-        self._timer.pause()
-
-    def seek(self, to_end: bool) -> None:
-        self.session.start_seek(to_end)
-        self._timer.pause()
-        self._seek_slice()
-
-    def _seek_slice(self) -> None:
-        seek = self.session.seek
-        if seek is None or not self.is_attached:
-            return  # stopped or replaced
-        progress = seek.work()
-        if progress is not None:
-            self.session.note = progress
-            self.show_status()  # only the note: the panes show where the runs were till the end
-            self.set_timer(playback.SLICE_PAUSE, self._seek_slice)
-            return
-        before = self.session.seek_done()
-        if self.session.playing:
-            self._timer.resume()
-            self.present()
-        else:
-            self.moved(before) if before != self.session.where() else self.present(changed=[])
+            check_exercise(self, self.session, self.challenge)
