@@ -5,6 +5,7 @@ applies it; these check what is on the screen)."""
 from __future__ import annotations
 
 import contextlib
+from pathlib import Path
 
 import pytest
 from hypothesis import given
@@ -294,3 +295,30 @@ async def test_the_layout_settles_when_the_lines_under_the_panes_depend_on_it() 
             problem = whole_map_shown(app, view)
             assert problem is None or view.border_subtitle.startswith("part of the map"), \
                 problem
+
+
+def test_a_pane_s_own_lines_beside_its_lists_are_fitted_at_the_width_they_get() -> None:
+    """Beside the lists a pane's status lines have the map's column only and wrap to more
+    rows: the layout counts those rows for that choice (a map that fits under them whole
+    beside a 38-column list at 2 rows no longer does at 12, and goes over its lists)."""
+    wide = arrange(2, 160, 20, (10, 7), stats_rows=lambda width: 2)
+    assert wide.beside and wide.fits
+    narrow = arrange(2, 160, 20, (10, 7), stats_rows=lambda width: 2 if width == 80 else 12)
+    assert not narrow.beside and narrow.fits and narrow.lists_height
+
+
+@sync
+async def test_a_pane_s_narration_beside_its_lists_is_not_cut() -> None:
+    """Compare on a map no pane shows whole, at 80x24: each pane's lines are as tall as they
+    wrap to in the map's column (Textual sizes them against the whole pane), and its
+    frontier keeps an entry in sight (no tree in a column that short)."""
+    big = Path(__file__).parents[1] / "data" / "open-60x40.txt"
+    app = SearchApp(load_map(big), path=big, compare="bfs,dfs")
+    async with app.run_test(size=(80, 24)) as pilot:
+        await wait_until(pilot, lambda: all(pane.has_class("-beside") and pane.stats.region.area
+                                            for pane in app.main.panes))
+        for pane in app.main.panes:
+            stats = pane.stats
+            assert len(stats.rows(stats.content_size.width)) == stats.content_size.height == 3
+            assert "expand it." in stats.shown_lines()[-1]
+            assert pane.tree_panel.has_class("-folded") and pane.frontier.size.height >= 4

@@ -152,6 +152,7 @@ class FrontierPanel(LinePanel):
         self._hint_col = 0  # column where end hints start
         self._empty_text = ""
         self._count_text = ""  # the first line: "4 in the queue"
+        self._short_count = False  # "11 entries" instead: the long one left no entry in sight
         self._discarded: Line | None = None  # after a discarded step: the entry it threw away
         self._hint_w = 0  # the widest end hint (or "stale")
         self._move_w = DIR_W  # the move's width (wider for START)
@@ -220,6 +221,13 @@ class FrontierPanel(LinePanel):
             self._squeeze, entry_w, self._rows = fit_entry(
                 self.scrollable_content_region.width, self._hint_col - HINT_GAP, count,
                 (self._coord_w, self._depth_w, self._move_w, self._cost_w))
+            # too short a panel for the count's rows and an entry: the count's words go first
+            lines, long = self.scrollable_content_region.height, len(self._top_rows(False))
+            short = long > 1 and bool(lines) and long + self._rows_per() > lines
+            if short != self._short_count:
+                self._short_count = short
+                top = self._top_rows()
+                width = max((length(row) for row in top), default=0)
             if self._rows is not None:
                 width = max(width, self._rows.width)
             else:
@@ -245,15 +253,19 @@ class FrontierPanel(LinePanel):
         room = self.scrollable_content_region.width
         return not room or self._hint_col + self._hint_w <= room
 
-    def _top_rows(self) -> list[Parts]:
+    def _top_rows(self, short: bool | None = None) -> list[Parts]:
         """The lines above the entries, wrapped to the panel's width: the count (or what an
-        empty frontier means), then the entry a discarded step threw away."""
+        empty frontier means), then the entry a discarded step threw away.  ``short``: the
+        count as "11 entries" (None: as the panel shows it)."""
         room = self.scrollable_content_region.width or 1000
-        key = (self._count_text, self._empty_text, self._discarded, room)
+        short = self._short_count if short is None else short
+        key = (self._count_text, self._empty_text, self._discarded, room, short)
         if self._top_key != key:
             if self._count:
-                rows = wrap(plain([(self._count_text, "frontier-panel--detail")], prose=True),
-                            room)
+                n = group_digits(self._count)
+                text = f"{n} {'entry' if self._count == 1 else 'entries'}" if short else (
+                    self._count_text)
+                rows = wrap(plain([(text, "frontier-panel--detail")], prose=True), room)
             else:
                 cls = "frontier-panel--no-path" if "no path" in self._empty_text else (
                     "frontier-panel--empty")
