@@ -157,9 +157,11 @@ def fixed_waits(source: str) -> list[int]:
     found: list[int] = []
 
     def visit(node: ast.AST, in_loop: bool) -> None:
-        if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and not in_loop:
-            name = node.func.attr
-            if name == "sleep" or (name == "pause" and (node.args or node.keywords)):
+        if isinstance(node, ast.Call) and not in_loop:
+            func = node.func  # time.sleep(1), pilot.pause(0.5), or sleep(1) imported bare
+            name = func.attr if isinstance(func, ast.Attribute) else getattr(func, "id", "")
+            paused = isinstance(func, ast.Attribute) and name == "pause"
+            if name == "sleep" or (paused and (node.args or node.keywords)):
                 found.append(node.lineno)
         for child in ast.iter_child_nodes(node):
             nested = isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda))
@@ -184,6 +186,8 @@ def test_ui_tests_wait_for_what_they_check_and_never_sleep_a_fixed_time() -> Non
 def test_the_wait_check_sees_a_fixed_wait() -> None:
     assert fixed_waits("async def f(p):\n    await p.pause(0.5)\n") == [2]
     assert fixed_waits("import time\ntime.sleep(1)\n") == [2]
+    assert fixed_waits("from time import sleep\nsleep(1)\n") == [2]
+    assert fixed_waits("from asyncio import sleep\nasync def f():\n    await sleep(1)\n") == [3]
     assert fixed_waits("async def f(p):\n    await p.pause()\n") == []
     assert fixed_waits("while x:\n    time.sleep(0.05)\n") == []
     assert fixed_waits("while x:\n    def g():\n        time.sleep(1)\n") == [3]

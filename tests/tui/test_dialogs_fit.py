@@ -164,6 +164,31 @@ async def test_help_shows_how_to_close_it(size: tuple[int, int]) -> None:
         await wait_until(pilot, lambda: not isinstance(app.screen, HelpScreen))
 
 
+@sync
+async def test_help_wraps_a_key_s_description_under_itself_not_under_the_keys() -> None:
+    """At 80x24 the longer descriptions wrap: each row of the keys' table starts with a key
+    the app binds, or with blanks as wide as the keys' column (the description goes on)."""
+    from tests.textual_internals import repainted
+    from tui_search.tui.screens.help import KEYS
+
+    app = tutorial_app()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await pilot.press("question_mark")
+        await wait_until(pilot, lambda: isinstance(app.screen, HelpScreen))
+        table = app.screen.query_one("#help-keys")
+        await wait_until(pilot, lambda: table.region.area > 0)
+        region = table.region.intersection(
+            app.screen.query_one("VerticalScroll").scrollable_content_region)
+        screen = ["".join(text for text, _ in line) for line in await repainted(pilot)]
+        rows = [screen[y][region.x:region.right] for y in range(region.y, region.bottom)]
+        column = max(len(key) for key, _ in KEYS) + 2
+        starts = {key for key, _ in KEYS}
+        wrapped = [row for row in rows if not row[:column].strip()]
+        assert wrapped and rows[0][:column].strip() in starts  # some wrap at 80 columns
+        for row in rows:
+            assert row[:column].strip() in starts | {""}, row
+
+
 # -- questions -----------------------------------------------------------------------------
 
 

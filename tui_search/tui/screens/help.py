@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-from rich.text import Text
+from rich.table import Table
 from textual.app import ComposeResult
 from textual.binding import Binding, BindingType
 from textual.containers import VerticalScroll
@@ -82,13 +82,15 @@ generated, the path is traced back up the tree from the goal to START (green). (
 dark theme's colours: the legend above shows the colours of the theme in use, t changes it.)"""
 
 
-def keys_text() -> Text:
-    width = max(len(k) for k, _ in KEYS)
-    out = Text()
-    for i, (key, description) in enumerate(KEYS):
-        out.append(f"{key:<{width}}  ", "bold")
-        out.append(description + ("\n" if i < len(KEYS) - 1 else ""))
-    return out
+def keys_table() -> Table:
+    """The keys and what each does, in two columns: a description wraps in its own column
+    (under its first word, never under the keys)."""
+    table = Table.grid(padding=(0, 2))
+    table.add_column(style="bold", no_wrap=True)
+    table.add_column(ratio=1)
+    for key, description in KEYS:
+        table.add_row(key, description)
+    return table
 
 
 def about_text() -> str:
@@ -132,7 +134,7 @@ class HelpScreen(ModalScreen[None]):
         with VerticalScroll() as scroll:
             scroll.border_title = "Help · escape to close"
             yield Static("Keys", classes="help-heading")
-            yield Static(keys_text())
+            yield Static(keys_table(), id="help-keys")
             yield Static("Colours and glyphs", classes="help-heading")
             yield Legend(self._view)
             yield Static("How the searches work", classes="help-heading")
