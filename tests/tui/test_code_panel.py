@@ -181,7 +181,8 @@ def no_room_said(app: SearchApp) -> bool:
 
 
 def big_map() -> Grid:
-    """An open 60x40 map: two panes of it at 80x24 leave no lines for the lists."""
+    """An open 60x40 map: two panes of it at 80x20 leave no lines for the lists (at 80x24,
+    side by side, they leave five: the Code panel's least)."""
     big = Grid(60, 40)
     big.start, big.goal = (0, 0), (59, 39)
     return big
@@ -190,7 +191,7 @@ def big_map() -> Grid:
 @sync
 async def test_where_no_pane_has_room_for_the_code_v_says_so() -> None:
     app = SearchApp(big_map(), compare="bfs,dfs")
-    async with app.run_test(size=(80, 24)) as pilot:
+    async with app.run_test(size=(80, 20)) as pilot:
         await wait_until(pilot, lambda: len(app.main.panes) == 2)
         await pilot.press("n", "v")
         await wait_until(pilot, lambda: no_room_said(app))
@@ -212,9 +213,9 @@ async def test_a_code_panel_folded_by_a_smaller_terminal_says_so() -> None:
 @sync
 async def test_a_code_panel_unfolded_by_a_bigger_terminal_shows_the_run_at_once() -> None:
     app = SearchApp(big_map(), compare="bfs,astar")
-    async with app.run_test(size=(80, 24)) as pilot:
+    async with app.run_test(size=(80, 20)) as pilot:
         await wait_until(pilot, lambda: len(app.main.panes) == 2)
-        await pilot.press("n", "n", "v")  # no room for the panels at 80x24: folded
+        await pilot.press("n", "n", "v")  # no room for the panels at 80x20: folded
         await wait_until(pilot, lambda: app.session.show_code)
         assert not any(shown(p) for p in app.main.panes)
         await pilot.resize_terminal(120, 40)

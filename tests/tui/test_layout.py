@@ -303,7 +303,8 @@ def test_a_pane_s_own_lines_beside_its_lists_are_fitted_at_the_width_they_get() 
     beside a 38-column list at 2 rows no longer does at 12, and goes over its lists)."""
     wide = arrange(2, 160, 20, (10, 7), stats_rows=lambda width: 2)
     assert wide.beside and wide.fits
-    narrow = arrange(2, 160, 20, (10, 7), stats_rows=lambda width: 2 if width == 80 else 12)
+    # 79: the narrower of two panes with a gutter between them in 160 columns
+    narrow = arrange(2, 160, 20, (10, 7), stats_rows=lambda width: 2 if width == 79 else 12)
     assert not narrow.beside and narrow.fits and narrow.lists_height
 
 

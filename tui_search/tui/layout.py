@@ -37,6 +37,8 @@ MAP_MIN_WIDTH = 20
 STATS_MIN_WIDTH = 40
 #: A pane's own status lines (its search's figures and narration).
 PANE_STATS_HEIGHT = 2
+#: The columns between two panes side by side (app.tcss: ``#panes``' grid-gutter).
+GUTTER = 1
 #: Where no arrangement shows the whole map, one whose map box has at least this many lines
 #: (its border and three rows; the whole map if shorter) is taken before any other: a pane
 #: with no room for its map is no choice while the map could show in part.
@@ -130,17 +132,19 @@ def arrange(n: int, width: int, height: int, map_size: tuple[int, int], *,
             for columns in range(1, n + 1):
                 rows = -(-n // columns)
                 pane_w = width // columns
-                # the lines the pane's status lines take under the lists and beside them
-                under_h, beside_h = ((stats_rows(pane_w), stats_rows(pane_w - lists_width(pane_w)))
+                # the lines the pane's status lines take over the whole pane and beside the
+                # lists, in the narrowest pane (the gutters take their columns)
+                narrow = (width - GUTTER * (columns - 1)) // columns
+                under_h, beside_h = ((stats_rows(narrow), stats_rows(narrow - lists_width(pane_w)))
                                      if stats and stats_rows else (stats, stats))
                 pane_h = max(0, (room - more) // rows - under_h)
                 pane = _pane(columns, rows, table, stats > 0, pane_w, pane_h, map_size,
-                             fold_trees, lists_min, pane_h - beside_h + under_h)
+                             fold_trees, lists_min, pane_h - beside_h + under_h, under_h)
                 if wrap:
                     steady_h = max(0, (room - more + wrap) // rows - under_h)
                     steady = _pane(columns, rows, table, stats > 0, pane_w, steady_h,
                                    map_size, fold_trees, lists_min,
-                                   steady_h - beside_h + under_h)
+                                   steady_h - beside_h + under_h, under_h)
                     pane = _steady(steady, pane, steady_h, pane_h, map_size, fold_trees,
                                    lists_min, beside_h - under_h)
                 shows = (pane.map_height or pane_h) >= min(map_size[1] + 2, MAP_MIN_LINES)
@@ -183,21 +187,24 @@ def _steady(steady: Arrangement, pane: Arrangement, steady_h: int, pane_h: int,
 
 def _pane(columns: int, rows: int, table: bool, pane_stats: bool, pane_w: int, pane_h: int,
           map_size: tuple[int, int], fold_trees: bool, lists_min: int,
-          beside_h: int) -> Arrangement:
+          beside_h: int, own_h: int) -> Arrangement:
     """One pane's inside: its lists beside the map when the pane is much wider than tall and
     the whole map fits beside them (or would not fit whole under them either); else under
     the map when there is room for both.  ``pane_h``: the lines under the pane's own status
     lines when they span the pane; ``beside_h``: beside the lists (they wrap to more rows
-    in the map's column alone), the lines the map's column has under them."""
+    in the map's column alone), the lines the map's column has under them; ``own_h``: the
+    lines they take spanning the pane (the lists' column beside the map spans them too)."""
     map_w, map_h = map_size
     need_w, need_h = 2 * map_w + 2, map_h + 2  # the smallest cells, in a border
     side = lists_width(pane_w)
     beside_w = max(min(need_w, MAP_MIN_WIDTH), STATS_MIN_WIDTH if pane_stats else 0)
     if pane_w >= 3 * pane_h and pane_w - side >= beside_w:
         beside = Arrangement(columns, rows, table, pane_stats, True, side, 0,
-                             not fold_trees and pane_h >= TREES_BESIDE_MIN_HEIGHT,
+                             not fold_trees and pane_h + own_h >= TREES_BESIDE_MIN_HEIGHT,
                              0, need_h <= beside_h and need_w <= pane_w - side, pane_w,
-                             code=pane_h * 2 // 3 >= CODE_MIN_HEIGHT)  # 2fr of the column
+                             # the Code panel in the trees' place: 2fr of the column, the
+                             # frontier's third keeping an entry in sight, as the trees'
+                             code=pane_h + own_h >= TREES_BESIDE_MIN_HEIGHT)
         if beside.fits:
             return beside
         under = _under(columns, rows, table, pane_stats, pane_w, pane_h, map_size, fold_trees,

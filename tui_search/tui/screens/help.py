@@ -6,6 +6,7 @@ from __future__ import annotations
 from typing import ClassVar
 
 from rich.table import Table
+from rich.text import Text
 from textual.app import ComposeResult
 from textual.binding import Binding, BindingType
 from textual.containers import VerticalScroll
@@ -89,7 +90,7 @@ def keys_table() -> Table:
     table.add_column(style="bold", no_wrap=True)
     table.add_column(ratio=1)
     for key, description in KEYS:
-        table.add_row(key, description)
+        table.add_row(Text(key), Text(description))  # as written: no markup, no emoji
     return table
 
 

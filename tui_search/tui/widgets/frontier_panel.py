@@ -222,8 +222,10 @@ class FrontierPanel(LinePanel):
                 self.scrollable_content_region.width, self._hint_col - HINT_GAP, count,
                 (self._coord_w, self._depth_w, self._move_w, self._cost_w))
             # too short a panel for the count's rows and an entry: the count's words go first
-            lines, long = self.scrollable_content_region.height, len(self._top_rows(False))
-            short = long > 1 and bool(lines) and long + self._rows_per() > lines
+            region = self.scrollable_content_region
+            lines, long = region.height, len(self._top_rows(False))
+            wraps = len(wrap(plain([(self._count_text, "")], prose=True), region.width or 1000))
+            short = wraps > 1 and bool(lines) and long + self._rows_per() > lines
             if short != self._short_count:
                 self._short_count = short
                 top = self._top_rows()
