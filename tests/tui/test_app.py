@@ -444,11 +444,15 @@ async def test_playback_at_top_speed_skips_frames_and_stops_at_the_end() -> None
         assert playback.SPEEDS[app.session.speed_index] == playback.SPEEDS[-1]
         assert app.main.check_action("faster", ()) is None
         assert playback.steps_per_tick(playback.SPEEDS[-1]) > 1000  # frames are skipped
-        await pilot.press("space")
         run = app.session.run
+        # Playing, the timer not started yet: on a loaded machine the timer, started by the
+        # key, could reach the end before a tick called here (it failed so, under load).
+        assert not app.session.play()
         k = run.k
-        app.main.playback.tick()
-        assert run.k - k > 1  # one frame, many steps
+        app.main.playback.tick()  # what the timer calls
+        assert run.k - k > 1 and app.session.playing  # one frame, many steps
+        app.session.stop()
+        await pilot.press("space")  # the key plays on from there, with the timer
         await wait_until(pilot, lambda: run.at_end, 60)  # a guard against hanging
         assert not app.session.playing
 
