@@ -4,7 +4,7 @@ measure, and a key press that waits for no idle-detection sleeps."""
 from __future__ import annotations
 
 from tests.textual_internals import settle
-from tui_search.engine.run import Run
+from tui_search.engine.run.recorded import Run
 
 TERMINAL = (160, 50)  # columns, rows of the headless and pty runs
 

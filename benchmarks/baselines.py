@@ -9,7 +9,7 @@ from itertools import repeat
 from struct import pack
 from typing import NamedTuple
 
-from tui_search.engine.grid import DEFAULT_ORDER, DELTAS, Grid
+from tui_search.engine.maps.grid import DEFAULT_ORDER, DELTAS, Grid
 
 
 def pad(grid: Grid) -> tuple[bytearray, int, int, int, tuple[int, ...]]:

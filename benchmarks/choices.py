@@ -35,9 +35,9 @@ from benchmarks.baselines import (
 from benchmarks.harness import CPU, fmt_time, interleaved, paired, series, timed
 from benchmarks.maps import big_maps
 from benchmarks.table import Row, add
-from tui_search.engine.grid import Grid
-from tui_search.engine.run import Run, recording_of
-from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.run.recorded import Run, recording_of
+from tui_search.engine.search.choices import DEFAULT_SEMANTICS, Semantics
 
 #: The non-default combinations timed, by the name their rows print.
 COMBINATIONS: dict[str, Semantics] = {

@@ -36,7 +36,7 @@ if __name__ == "__main__":  # run as a script: the checkout first, this folder n
 
 from benchmarks.harness import fmt_time, med
 from benchmarks.table import ROWS, Row, add, print_table
-from tui_search.serve_visit import stop_process
+from tui_search.serve.visit import stop_process
 
 TUTORIAL = str(Path(__file__).resolve().parent.parent / "maps" / "tutorial.txt")
 WANT = ("START (0,0)", "Quit")  # in the first frame: the status line and the footer
@@ -119,8 +119,8 @@ async def _class(url: str, visitors: int, steps: int = 0) -> tuple[list[float], 
 
 def floor_cpu(repeats: int) -> list[float]:
     """CPU seconds of a forked app from the fork to its first frame (fork server alone)."""
-    from tui_search.serve import APP_MEMORY_MB
-    from tui_search.serve_visit import Forks
+    from tui_search.serve.visit import Forks
+    from tui_search.serve.web import APP_MEMORY_MB
 
     forks = Forks([TUTORIAL, "--served"], APP_MEMORY_MB)
     forks.start()

@@ -25,14 +25,14 @@ from benchmarks.baselines import walled_in
 from benchmarks.harness import CPU, fmt_time, interleaved, med, paired, series
 from benchmarks.maps import MAPS, MAZE, MAZE_SCEN, open_grid
 from benchmarks.table import Row, add
-from tui_search.engine.algorithms import get_algorithm
-from tui_search.engine.grid import Grid
-from tui_search.engine.heuristics import DIAGONAL_EXTRA
-from tui_search.engine.loops import compiled
-from tui_search.engine.loops.best_first import _costed_moves
-from tui_search.engine.problem import Problem
-from tui_search.engine.run import Run, recording_of
-from tui_search.engine.semantics import Semantics
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.run.recorded import Run, recording_of
+from tui_search.engine.search.choices import Semantics
+from tui_search.engine.search.heuristics import DIAGONAL_EXTRA
+from tui_search.engine.search.loops import compiled
+from tui_search.engine.search.loops.best_first import _costed_moves
+from tui_search.engine.search.problem import Problem
+from tui_search.engine.search.registry import get_algorithm
 
 FLOOR_SOURCE = Path(__file__).with_name("floor.c")
 MAZE_ROW = 3
@@ -86,8 +86,8 @@ def maze_row() -> Grid | None:
     m, s = MAPS / MAZE, MAPS / MAZE_SCEN
     if not m.exists() or not s.exists():
         return None
-    from tui_search.engine.mapfile import load_map
-    from tui_search.engine.scenarios import load_scenario
+    from tui_search.engine.maps.load import load_map
+    from tui_search.engine.maps.scenarios import load_scenario
 
     scen = load_scenario(s, MAZE_ROW)
     return load_map(m, start=scen.start, goal=scen.goal)

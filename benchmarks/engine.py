@@ -13,9 +13,9 @@ from benchmarks.harness import fmt_time, interleaved, med, paired, series, timed
 from benchmarks.maps import big_maps
 from benchmarks.peers import networkx_bfs, pathfinding_bfs, scipy_bfs
 from benchmarks.table import Row, add
-from tui_search.engine.grid import Grid
-from tui_search.engine.run import Run, recording_of
-from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.run.recorded import Run, recording_of
+from tui_search.engine.search.choices import DEFAULT_SEMANTICS, Semantics
 
 
 def recorded(grid: Grid, algorithm: str, semantics: Semantics = DEFAULT_SEMANTICS) -> Run:

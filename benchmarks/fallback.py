@@ -44,10 +44,10 @@ import json, sys, time
 sys.path[:0] = [sys.argv[1], sys.argv[2]]
 from benchmarks.baselines import walled_in
 from benchmarks.maps import MAPS, MAZE, MAZE_SCEN, open_grid
-from tui_search.engine.mapfile import load_map
-from tui_search.engine.run import Run
-from tui_search.engine.scenarios import load_scenario
-from tui_search.engine.semantics import Semantics
+from tui_search.engine.maps.load import load_map
+from tui_search.engine.run.recorded import Run
+from tui_search.engine.maps.scenarios import load_scenario
+from tui_search.engine.search.choices import Semantics
 
 def grid_of(name):
     if name == "open 1024²":
@@ -145,9 +145,9 @@ def _reference_alone(times: dict[str, dict[str, list[float]]], base: str) -> Non
     runs: the engine before the compiled core, within 1.5x of which a fallback must stay."""
     from benchmarks.baselines import walled_in
     from benchmarks.core import maze_row
-    from tui_search.engine.algorithms import get_algorithm
-    from tui_search.engine.reference import ReferenceSearch
-    from tui_search.engine.semantics import Semantics
+    from tui_search.engine.search.choices import Semantics
+    from tui_search.engine.search.reference import ReferenceSearch
+    from tui_search.engine.search.registry import get_algorithm
 
     grid = maze_row()
     if grid is None:

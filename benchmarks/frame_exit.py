@@ -5,7 +5,7 @@
 
 ``trivial`` runs ``benchmarks/trivial_app.py`` by path, as a user runs a script; ``tui-search``
 does what the console script does (:func:`tui_search.launch.main`: the command's modules
-imported with the collector paused, then :func:`tui_search.cli.main`).  The process ends with
+imported with the collector paused, then :func:`tui_search.cli.main.main`).  The process ends with
 ``os._exit(0)`` just after Textual has written its first frame, so that callgrind counts the
 work to that frame and nothing after, the interpreter's own start included.  To see the frame,
 it wraps ``App._display``, a private method of Textual's (benchmarks only: the app never does).
@@ -45,10 +45,10 @@ def run_trivial() -> None:
 
 
 def run_tui_search(args: list[str]) -> None:
-    from tui_search.collector import collector_paused
+    from tui_search.engine.util.collector import collector_paused
 
     with collector_paused():  # as tui_search.launch.main imports the command
-        from tui_search import cli
+        from tui_search.cli import main as cli
     build_app = cli.build_app
 
     def build_and_watch(*a: Any) -> Any:

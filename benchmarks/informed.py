@@ -20,9 +20,9 @@ from benchmarks.engine import bench_memory
 from benchmarks.harness import CPU, fmt_time, interleaved, med, paired, series, timed
 from benchmarks.maps import MAPS, MAZE, MAZE_SCEN, open_grid
 from benchmarks.table import Row, add
-from tui_search.engine.grid import DEFAULT_ORDER, DELTAS, SQRT2, Grid
-from tui_search.engine.run import Run, recording_of
-from tui_search.engine.semantics import Semantics
+from tui_search.engine.maps.grid import DEFAULT_ORDER, DELTAS, SQRT2, Grid
+from tui_search.engine.run.recorded import Run, recording_of
+from tui_search.engine.search.choices import Semantics
 
 NEVER = Semantics(corners="never")
 #: maze512's problem: row 3 of its .scen, as the issue says.
@@ -99,8 +99,8 @@ def informed_maps() -> list[tuple[str, Grid]]:
     maps = [("open 1024²", open_grid())]
     m, s = MAPS / MAZE, MAPS / MAZE_SCEN
     if m.exists() and s.exists():
-        from tui_search.engine.mapfile import load_map
-        from tui_search.engine.scenarios import load_scenario
+        from tui_search.engine.maps.load import load_map
+        from tui_search.engine.maps.scenarios import load_scenario
 
         scen = load_scenario(s, MAZE_ROW)
         maps.append((f"maze512 row {MAZE_ROW}", load_map(m, start=scen.start, goal=scen.goal)))

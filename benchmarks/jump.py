@@ -13,7 +13,7 @@ from benchmarks.apps import TERMINAL, fast_press, search_app_class, settle
 from benchmarks.harness import CPU, fmt_time, med, series
 from benchmarks.maps import OPEN_SIZE, maze_grid, open_grid
 from benchmarks.table import Row, add
-from tui_search.engine.grid import Grid
+from tui_search.engine.maps.grid import Grid
 
 
 async def _jump_once(app_cls, grid: Grid, algorithm: str = "bfs",

@@ -6,7 +6,7 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from tui_search.engine.grid import Grid
+from tui_search.engine.maps.grid import Grid
 
 ROOT = Path(__file__).resolve().parent.parent
 #: Where the MovingAI maps are (not shipped in the package); override with TUI_SEARCH_MAPS.
@@ -28,8 +28,8 @@ def maze_grid() -> Grid | None:
     rows = [ln for ln in s.read_text().splitlines()[1:] if ln.strip()]
     last = len(rows) - 1
     try:
-        from tui_search.engine.mapfile import load_map
-        from tui_search.engine.scenarios import load_scenario
+        from tui_search.engine.maps.load import load_map
+        from tui_search.engine.maps.scenarios import load_scenario
 
         scen = load_scenario(s, last)
         return load_map(m, start=scen.start, goal=scen.goal)

@@ -31,10 +31,10 @@ sys.path[:] = [p for p in sys.path if Path(p or ".").resolve() != HERE]
 sys.path.insert(0, str(HERE.parent))
 
 from benchmarks.maps import MAPS
-from tui_search.engine.mapfile import load_map
-from tui_search.engine.run import Run
-from tui_search.engine.scenarios import read_scenarios
-from tui_search.engine.semantics import Semantics
+from tui_search.engine.maps.load import load_map
+from tui_search.engine.maps.scenarios import read_scenarios
+from tui_search.engine.run.recorded import Run
+from tui_search.engine.search.choices import Semantics
 
 SEARCHES = ("ucs", "astar:octile", "astar:euclidean", "astar:chebyshev", "astar:zero")
 

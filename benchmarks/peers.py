@@ -7,7 +7,7 @@ import time
 from collections.abc import Callable
 
 from benchmarks.baselines import pad
-from tui_search.engine.grid import Grid
+from tui_search.engine.maps.grid import Grid
 
 
 def pathfinding_bfs(grid: Grid) -> Callable[[], object] | None:

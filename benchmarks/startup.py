@@ -39,7 +39,7 @@ def screen_widgets(argv: list[str]) -> int:
     the widget count of the trivial app that is that screen's floor."""
     import asyncio
 
-    from tui_search import cli
+    from tui_search.cli import main as cli
 
     args = cli.build_parser().parse_args(argv)
     cli.check_modes(args)

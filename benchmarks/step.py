@@ -14,7 +14,7 @@ from benchmarks.maps import OPEN_SIZE, TUTORIAL, maze_grid, open_grid
 from benchmarks.table import Row, add
 from benchmarks.trivial_app import TrivialApp
 from tests.textual_internals import DrawnLines
-from tui_search.engine.grid import Grid
+from tui_search.engine.maps.grid import Grid
 
 
 async def _presses(app, keys: list[str], warmup: int = 20, opening: tuple[str, ...] = ()
@@ -55,7 +55,7 @@ def step_keys(n: int) -> list[str]:
 
 
 async def _playback(app_cls, grid: Grid, seconds: float) -> tuple[float, int]:
-    from tui_search.tui import playback
+    from tui_search.tui.model import playback
 
     app = app_cls(grid.copy(), algorithm="bfs")
     async with app.run_test(size=TERMINAL) as pilot:
@@ -85,7 +85,7 @@ def bench_step(quick: bool) -> None:
         k: [] for k in (*names, "tutorial-code")}
     tutorial = maze = None
     if app_cls is not None:
-        from tui_search.engine.mapfile import load_map
+        from tui_search.engine.maps.load import load_map
 
         tutorial = load_map(TUTORIAL)
         maze = maze_grid()

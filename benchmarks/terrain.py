@@ -23,9 +23,9 @@ from benchmarks.core import MAZE_ROW, NEVER, floor_search, maze_row, recorded
 from benchmarks.harness import CPU, fmt_time, interleaved, paired, series
 from benchmarks.maps import MAPS, MAZE
 from benchmarks.table import Row, add
-from tui_search.engine.grid import Grid
-from tui_search.engine.loops import compiled
-from tui_search.engine.run import Run, recording_of
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.run.recorded import Run, recording_of
+from tui_search.engine.search.loops import compiled
 
 
 def with_random_costs(grid: Grid, seed: int = 22) -> Grid:

@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from pathlib import Path
 
-from tui_search.engine.grid import Grid
+from tui_search.engine.maps.grid import Grid
 
 ROOT = Path(__file__).resolve().parents[1]
 MAPS = ROOT / "maps"
@@ -55,7 +55,7 @@ def reference_costs(
     """The cheapest cost (1 a straight move, sqrt(2) a diagonal) from the start to every
     reachable cell, the same way: no priority queue, so it checks uniform-cost search and A*
     independently."""
-    from tui_search.engine.grid import move_cost
+    from tui_search.engine.maps.grid import move_cost
 
     return _relaxed(grid, corners, order, move_cost)
 
@@ -84,6 +84,6 @@ def _relaxed(grid: Grid, corners: str, order: tuple[str, ...] | None,
 
 def summary(run) -> dict:
     """A recorded run's whole result as the headless JSON gives it."""
-    from tui_search.headless import json_summary
+    from tui_search.cli.headless import json_summary
 
     return json_summary(run.outcome())

@@ -24,7 +24,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from tests.helpers import ROOT
-from tui_search.serve_visit import stop_process
+from tui_search.serve.visit import stop_process
 
 TOKEN = re.compile(r"\?token=([A-Za-z0-9_-]+)")
 WS_URL = re.compile(r'data-session-websocket-url="([^"]+)"')

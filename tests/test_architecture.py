@@ -2,7 +2,7 @@
 ``tui_search/tui/`` reaches the raw record (its arrays are the engine's to lay out, and the
 run's parts keep them consistent), whatever the attribute is called, nor imports the
 record's or the recording's class or module, nor opens the engine-only door to the recording
-(``tui_search.engine.run.recording_of``, for the engine's own checks and the benchmarks)."""
+(``tui_search.engine.run.recorded.recording_of``, for the engine's own checks and the benchmarks)."""
 
 from __future__ import annotations
 
@@ -19,10 +19,10 @@ RECORD_CLASSES = frozenset({"Record", "Recording"})
 #: The engine-only door to a run's recording: the engine's checks and benchmarks use it.
 ENGINE_DOORS = frozenset({"recording_of"})
 #: Their modules (``record`` is where the record's class is headed).
-RECORD_MODULES = frozenset({"tui_search.engine.recording", "tui_search.engine.record"})
+RECORD_MODULES = frozenset({"tui_search.engine.run.recording", "tui_search.engine.search.record"})
 
 WHY = ("the app must not read the raw record: ask the Run for it by a named query "
-       "(tui_search/engine/run.py; add one there if none fits)")
+       "(tui_search/engine/run/recorded.py; add one there if none fits)")
 
 
 def record_uses(source: str) -> list[tuple[int, str]]:
@@ -59,18 +59,18 @@ def test_the_check_sees_every_way_to_the_record() -> None:
 run.record.goal_gen
 x = run._rec
 getattr(run, 'rec')
-import tui_search.engine.recording
-from tui_search.engine.recording import MAX_STEPS
-from tui_search.engine.record import Record
-from tui_search.engine import record
+import tui_search.engine.run.recording
+from tui_search.engine.run.recording import MAX_STEPS
+from tui_search.engine.search.record import Record
+from tui_search.engine.search import record
 search.Record()
-from tui_search.engine.run import Run, recording_of
+from tui_search.engine.run.recorded import Run, recording_of
 run_module.recording_of(run)
 recording_of(run)
 run._recording
 """
     assert [line for line, _ in record_uses(source)] == list(range(1, 14))
-    fine = "run.steps.expanded_event(k)\nrun.nodes.goal\nfrom tui_search.engine.run import Run\n"
+    fine = "run.steps.expanded_event(k)\nrun.nodes.goal\nfrom tui_search.engine.run.recorded import Run\n"
     assert record_uses(fine) == []
 
 

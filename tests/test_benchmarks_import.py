@@ -33,10 +33,10 @@ from benchmarks.maps import TUTORIAL, open_grid
 from benchmarks.table import Row, fmt_ratio, print_table
 from benchmarks.trivial_app import Lines, TrivialApp
 from tests.helpers import MOVINGAI
-from tui_search.engine.mapfile import load_map
-from tui_search.engine.run import Run, recording_of
-from tui_search.engine.scenarios import load_scenario
-from tui_search.engine.semantics import Semantics
+from tui_search.engine.maps.load import load_map
+from tui_search.engine.maps.scenarios import load_scenario
+from tui_search.engine.run.recorded import Run, recording_of
+from tui_search.engine.search.choices import Semantics
 
 ARENA_MAP = MOVINGAI / "arena.map"
 

@@ -18,7 +18,7 @@ import zipfile
 from pathlib import Path
 
 from tests.helpers import ROOT
-from tui_search.engine.loops.compiled import CORE_ENV
+from tui_search.engine.search.loops.compiled import CORE_ENV
 
 #: What a build reads: the package and the files beside it the sdist carries.
 BUILD_INPUT = ["tui_search", "maps", "pyproject.toml", "setup.py", "MANIFEST.in", "README.md"]
@@ -83,9 +83,9 @@ def test_the_sdist_and_the_wheel_carry_the_core_and_the_maps(tmp_path: Path) -> 
     (sdist,), (wheel,) = dist.glob("*.tar.gz"), dist.glob("*.whl")
     with tarfile.open(sdist) as tar:
         names = {name.split("/", 1)[1] for name in tar.getnames() if "/" in name}
-    assert {"setup.py", "tui_search/engine/_core.c", "tui_search/engine/_core_loops.c",
-            "tui_search/engine/_core_position.c",
-            "tui_search/engine/_core.h", "maps/tutorial.txt",
+    assert {"setup.py", "tui_search/engine/search/_core.c", "tui_search/engine/search/_core_loops.c",
+            "tui_search/engine/search/_core_position.c",
+            "tui_search/engine/search/_core.h", "maps/tutorial.txt",
             "tui_search/maps/tutorial.txt", "tui_search/tui/app.tcss"} <= names
     with zipfile.ZipFile(wheel) as whl:
         names = set(whl.namelist())
@@ -93,7 +93,7 @@ def test_the_sdist_and_the_wheel_carry_the_core_and_the_maps(tmp_path: Path) -> 
             "tui_search/lessons/tutorial.md", "tui_search/lessons/choices.md",
             "tui_search/lessons/dfs-longer.txt", "tui_search/exercises/1-bfs-expands-less.toml",
             "tui_search/exercises/2-dfs-not-optimal.toml"} <= names
-    assert any(name.startswith("tui_search/engine/_core.") and not name.endswith((".c", ".h"))
+    assert any(name.startswith("tui_search/engine/search/_core.") and not name.endswith((".c", ".h"))
                for name in names)
     bin_dir = _venv(tmp_path)
     _pip_install(bin_dir, wheel)

@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 from tests.helpers import MAPS, MOVINGAI, ROOT
-from tui_search.cli import main
+from tui_search.cli.main import main
 
 TUTORIAL = str(MAPS / "tutorial.txt")
 
@@ -149,7 +149,7 @@ def test_packaged_tutorial_is_the_same_as_maps_tutorial() -> None:
 
 
 def test_headless_does_not_import_textual(tmp_path: Path) -> None:
-    code = ("import sys; from tui_search.cli import main; rc = main(["
+    code = ("import sys; from tui_search.cli.main import main; rc = main(["
             f"{TUTORIAL!r}, '--headless', '--json']); "
             "bad = [m for m in sys.modules if m.split('.')[0] in ('textual', 'rich')]; "
             "sys.exit(10 if bad else rc)")

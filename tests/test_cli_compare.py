@@ -8,10 +8,10 @@ import pytest
 
 from tests.helpers import MAPS, ROOT
 from tests.test_cli import TUTORIAL, run_cli
-from tui_search.engine.compare import comparison, parse_compare, summary_sentence
-from tui_search.engine.mapfile import load_map
-from tui_search.engine.run import Run
-from tui_search.engine.semantics import Semantics
+from tui_search.engine.maps.load import load_map
+from tui_search.engine.run.recorded import Run
+from tui_search.engine.search.choices import Semantics
+from tui_search.engine.search.compare import comparison, parse_compare, summary_sentence
 
 SOLUTIONS = {1: ["exercise1-bfs-wins.txt", "exercise1-goal-moved.txt"],
              2: ["exercise2-dfs-longer.txt"]}

@@ -7,9 +7,9 @@ from pathlib import Path
 
 import pytest
 
-from tui_search import cli
-from tui_search.cli import main
-from tui_search.engine.generate import generate, generated_text, make_recipe
+from tui_search.cli import main as cli
+from tui_search.cli.main import main
+from tui_search.engine.maps.generate import generate, generated_text, make_recipe
 
 
 def run_cli(capsys, *argv: str) -> tuple[int, str, str]:

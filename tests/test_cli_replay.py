@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from tests.test_cli_trace import MAP, TUTORIAL, run_cli, student_trace  # noqa: F401 (a fixture)
-from tui_search import cli
+from tui_search.cli import main as cli
 
 
 @pytest.fixture

@@ -9,9 +9,9 @@ import pytest
 
 from tests.helpers import MAPS
 from tests.test_cli import TUTORIAL, run_cli
-from tui_search.cli import build_parser
-from tui_search.flags import load_problem
-from tui_search.headless import moves_text, run_headless
+from tui_search.cli.flags import load_problem
+from tui_search.cli.headless import moves_text, run_headless
+from tui_search.cli.main import build_parser
 
 
 def headless_json(capsys, *argv: str) -> tuple[int, dict]:
@@ -147,10 +147,10 @@ def test_a_streamed_trace_is_the_recorded_runs_trace(capsys, argv) -> None:
     the ones the recorded run (what the app steps through) gives."""
     from io import StringIO
 
-    from tui_search.engine.mapfile import load_map
-    from tui_search.engine.run import Run
-    from tui_search.flags import semantics_from
-    from tui_search.headless import trace_line
+    from tui_search.cli.flags import semantics_from
+    from tui_search.cli.headless import trace_line
+    from tui_search.engine.maps.load import load_map
+    from tui_search.engine.run.recorded import Run
 
     args = build_parser().parse_args([TUTORIAL, "--headless", *argv, "--max-steps", "400"])
     _code, out, _ = run_cli(capsys, TUTORIAL, "--headless", "--trace", "-", *argv,

@@ -9,9 +9,9 @@ from pathlib import Path
 import pytest
 
 from tests.test_cli import TUTORIAL, run_cli
-from tui_search.flags import EXIT_BAD_INPUT
+from tui_search.cli.flags import EXIT_BAD_INPUT
 from tui_search.tui.config import CONFIG_DIR_ENV
-from tui_search.tui.themes import THEMES
+from tui_search.tui.view.themes import THEMES
 
 
 @pytest.fixture

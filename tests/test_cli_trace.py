@@ -11,7 +11,7 @@ from pathlib import Path
 import pytest
 
 from tests.helpers import MAPS, ROOT
-from tui_search.cli import main
+from tui_search.cli.main import main
 
 MAP = str(MAPS / "exercise2-dfs-longer.txt")
 TUTORIAL = str(MAPS / "tutorial.txt")

@@ -16,10 +16,10 @@ from hypothesis import strategies as st
 
 from tests.engine.cores import using_core
 from tests.helpers import MAPS, MOVINGAI
-from tui_search.cli import main
-from tui_search.engine.algorithms import ALGORITHMS
-from tui_search.engine.loops import compiled
-from tui_search.engine.peak import _largest_size
+from tui_search.cli.main import main
+from tui_search.engine.run.peak import _largest_size
+from tui_search.engine.search.loops import compiled
+from tui_search.engine.search.registry import ALGORITHMS
 
 SMALL_MAPS = ["tutorial.txt", "exercise1-bfs-wins.txt", "exercise1-goal-moved.txt",
               "exercise2-dfs-longer.txt", "no-path.txt"]
@@ -69,7 +69,7 @@ def test_the_peak_tables_scan_is_the_same_in_c(steps: list[int], data) -> None:
     """The compiled core's ``largest_size`` (the peak table's scan when it runs) is the
     Python one's: the largest ``ends[j] - j - c`` over a range (c is 0 but for iterative
     deepening), on the ends of a run: they never decrease, no frontier is below 0."""
-    core = pytest.importorskip("tui_search.engine._core")
+    core = pytest.importorskip("tui_search.engine.search._core")
     ends, total = array("i", [1]), 1
     for generated in steps:  # each step adds 0-3 events; the frontier never goes below 0
         total += generated
@@ -106,7 +106,7 @@ def test_the_core_is_named_by_version(capsys) -> None:
 
 
 def test_a_missing_core_asked_for_is_one_line_of_error(capsys, monkeypatch) -> None:
-    monkeypatch.setitem(sys.modules, "tui_search.engine._core", None)  # as if never built
+    monkeypatch.setitem(sys.modules, "tui_search.engine.search._core", None)  # as if never built
     monkeypatch.setenv(compiled.CORE_ENV, "compiled")
     compiled.selected.cache_clear()
     try:
@@ -123,7 +123,7 @@ def test_a_missing_core_asked_for_is_one_line_of_error(capsys, monkeypatch) -> N
 def test_a_stale_build_falls_back_to_python_and_says_so(capsys, monkeypatch, tmp_path) -> None:
     """The C source changed since the build (an editable install not rebuilt): the Python
     loops run, stderr says why, and so does ``--version``."""
-    pytest.importorskip("tui_search.engine._core")
+    pytest.importorskip("tui_search.engine.search._core")
     edited = tmp_path / "_core_loops.c"
     edited.write_bytes(compiled.SOURCES[1].read_bytes() + b"/* edited */\n")
     monkeypatch.setattr(compiled, "SOURCES", (compiled.SOURCES[0], edited, compiled.SOURCES[2]))

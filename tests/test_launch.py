@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from tui_search.collector import collector_paused
+from tui_search.engine.util.collector import collector_paused
 
 
 @pytest.mark.parametrize("was_on", [True, False])
@@ -33,7 +33,7 @@ def test_the_command_runs_the_cli_with_the_collector_back_on(tmp_path) -> None:
     # python -m tui_search goes through launch.main, as the console script does; a headless
     # run reports whether the collector is on once the program's own work begins.
     probe = ("import gc, sys\n"
-             "import tui_search.headless as headless\n"
+             "import tui_search.cli.headless as headless\n"
              "real = headless.run_headless\n"
              "def run_headless(*a):\n"
              "    print('collector', gc.isenabled())\n"
@@ -56,7 +56,7 @@ def _repo() -> str:
 
 
 def test_the_app_starts_with_the_collector_off_and_frozen_and_it_is_on_after(monkeypatch) -> None:
-    from tui_search import cli
+    from tui_search.cli import main as cli
     from tui_search.tui.app import SearchApp
 
     seen: list[tuple[bool, int]] = []
@@ -74,7 +74,7 @@ def test_the_app_starts_with_the_collector_off_and_frozen_and_it_is_on_after(mon
 def test_the_collector_is_on_again_once_the_first_frame_is_drawn(monkeypatch) -> None:
     import asyncio
 
-    from tui_search import cli
+    from tui_search.cli import main as cli
     from tui_search.tui.app import SearchApp
 
     seen: list[bool] = []
@@ -103,10 +103,10 @@ def test_the_first_frame_imports_no_module_only_a_key_needs() -> None:
     # (benchmarks/README.md, "startup", session 12): the tutorial's first frame, in a fresh
     # process, goes without them.
     probe = ("import asyncio, sys\n"
-             "from tui_search import cli\n"
+             "from tui_search.cli import flags, main as cli\n"
              "args = cli.build_parser().parse_args(['maps/tutorial.txt'])\n"
              "cli.check_modes(args)\n"
-             "app = cli.build_app(args, *cli.load_problem(args))\n"
+             "app = cli.build_app(args, *flags.load_problem(args))\n"
              "async def first_frame():\n"
              "    async with app.run_test(size=(160, 50)) as pilot:\n"
              "        await pilot.pause()\n"
@@ -117,17 +117,17 @@ def test_the_first_frame_imports_no_module_only_a_key_needs() -> None:
     assert out.returncode == 0, out.stderr
     loaded = set(out.stdout.split())
     assert "tui_search.tui.app" in loaded
-    late = {"tui_search.engine.exercise_file", "tui_search.engine.exercises",
-            "tui_search.engine.condition", "tui_search.engine.pseudocode", "tui_search.report",
+    late = {"tui_search.engine.course.exercise_file", "tui_search.engine.course.grading",
+            "tui_search.engine.course.condition", "tui_search.engine.search.pseudocode", "tui_search.cli.report",
             # the headless output, the traces' checks and replays, --scen's scenario files
-            "tui_search.headless", "tui_search.trace_cli", "tui_search.engine.scenarios",
+            "tui_search.cli.headless", "tui_search.cli.traces", "tui_search.engine.maps.scenarios",
             # the map generators (ctrl+n, --generate): the help reads recipe_kinds only
-            "tui_search.engine.generate", "tui_search.engine.mazes", "tui_search.engine.prng",
+            "tui_search.engine.maps.generate", "tui_search.engine.maps.mazes", "tui_search.engine.util.prng",
             # saving and opening (session 14), the settings dialog's choices
-            "tui_search.tui.files", "tui_search.tui.save_questions",
-            "tui_search.tui.screens.settings_choice",
+            "tui_search.tui.screens.file_commands", "tui_search.tui.screens.save_questions",
+            "tui_search.tui.dialogs.settings_choice",
             # a seek (end, home), the challenge's check (session 14, the split of issue 20)
-            "tui_search.tui.seek", "tui_search.tui.screens.exercise_check"}
+            "tui_search.tui.model.seek", "tui_search.tui.screens.exercise_check"}
     assert not loaded & late
     # What the first frame imports defines no dataclass (each compiles its methods at import)
     # and no NamedTuple under ``from __future__ import annotations`` (typing compiles each

@@ -1,7 +1,7 @@
 """The README stays in step with the program.
 
 Every ``$ tui-search ...`` line in a ```console block of README.md is run (through
-:func:`tui_search.cli.main`, from the repository's root, as a person on a fresh clone would
+:func:`tui_search.cli.main.main`, from the repository's root, as a person on a fresh clone would
 type it) and what it prints must be the lines the README shows under it, figure for figure.
 The Quick start must be its two commands, the second the one CI runs, and the keys table must
 name every key the app binds.  So a change to the output, a key or CI without the README fails
@@ -19,9 +19,9 @@ from textual.binding import Binding
 from textual.screen import Screen
 
 from tests.helpers import MOVINGAI, ROOT
-from tui_search.cli import main
-from tui_search.engine.mapfile import load_map, parse_map_text
-from tui_search.flags import EXIT_BAD_INPUT, EXIT_FOUND, EXIT_NO_PATH
+from tui_search.cli.flags import EXIT_BAD_INPUT, EXIT_FOUND, EXIT_NO_PATH
+from tui_search.cli.main import main
+from tui_search.engine.maps.load import load_map, parse_map_text
 from tui_search.tui.app import SearchApp
 
 README = (ROOT / "README.md").read_text(encoding="utf-8")

@@ -7,9 +7,9 @@ from pathlib import Path
 
 from textual.binding import Binding
 
-from tui_search.cli import build_parser
-from tui_search.engine.algorithms import ALGORITHMS, Frontier
-from tui_search.tui.screens.help import KEYS
+from tui_search.cli.main import build_parser
+from tui_search.engine.search.registry import ALGORITHMS, Frontier
+from tui_search.tui.dialogs.help import KEYS
 from tui_search.tui.screens.main import MainScreen
 
 TUI = Path(__file__).resolve().parents[1] / "tui_search" / "tui"

@@ -163,9 +163,9 @@ def test_two_hundred_tutorial_maps_grade_well_within_three_seconds(tmp_path: Pat
     about 0.5 s for the whole command, start-up included, on the project's 2-core machine)."""
     import time
 
-    from tui_search.engine.exercise_file import built_in_exercise
-    from tui_search.engine.exercises import grade
-    from tui_search.engine.mapfile import load_map
+    from tui_search.engine.course.exercise_file import built_in_exercise
+    from tui_search.engine.course.grading import grade
+    from tui_search.engine.maps.load import load_map
 
     rows = [r for r in (MAPS / "tutorial.txt").read_text().splitlines() if r[0] != ";"]
     names = []
@@ -183,8 +183,8 @@ def test_two_hundred_tutorial_maps_grade_well_within_three_seconds(tmp_path: Pat
 
 
 def test_a_teachers_exercise_without_a_map_starts_on_its_own_map(capsys, tmp_path) -> None:
-    from tui_search.cli import build_parser, check_modes
-    from tui_search.flags import load_problem
+    from tui_search.cli.flags import load_problem
+    from tui_search.cli.main import build_parser, check_modes
 
     exercise = tmp_path / "maze.toml"
     exercise.write_text('title = "Maze"\ntext = "Fewer for DFS."\ngenerate = "maze 15x11 7"\n'

@@ -16,11 +16,11 @@ import pytest
 from tests.helpers import MAPS
 from tests.served import descendants, first_screen, running, served, visit, wait_for
 from tests.test_cli import run_cli
-from tui_search.cli import build_parser
-from tui_search.flags import EXIT_BAD_INPUT
-from tui_search.serve import NEEDS_EXTRA, SERVER_FLAGS, served_args
+from tui_search.cli.flags import EXIT_BAD_INPUT
+from tui_search.cli.main import build_parser
+from tui_search.serve.web import NEEDS_EXTRA, SERVER_FLAGS, served_args
 from tui_search.tui.config import Config, config_path
-from tui_search.tui.file_access import OFF_MESSAGE, FileAccess, NameRefused
+from tui_search.tui.model.file_rules import OFF_MESSAGE, FileAccess, NameRefused
 
 TUTORIAL = str(MAPS / "tutorial.txt")
 
@@ -49,9 +49,9 @@ def test_nonsense_with_serve_is_one_line_and_exit_2(capsys, argv: list[str], say
 
 
 def test_without_the_web_extra_serve_says_how_to_get_it(capsys, monkeypatch) -> None:
-    import tui_search.serve
+    import tui_search.serve.web
 
-    monkeypatch.setattr(tui_search.serve, "web_extra_installed", lambda: False)
+    monkeypatch.setattr(tui_search.serve.web, "web_extra_installed", lambda: False)
     code, out, err = run_cli(capsys, "--serve")
     assert (code, out, err) == (EXIT_BAD_INPUT, "", f"tui-search: error: {NEEDS_EXTRA}\n")
 
@@ -104,8 +104,8 @@ def test_the_served_apps_accept_the_command_line_the_server_gives_them(
         capsys, monkeypatch, argv: list[str]) -> None:
     """Through main, as typed: its checks fill in -a's default, which --exercise and --compare
     refuse; the served app must pass the same checks (the fork server runs check_modes)."""
-    import tui_search.serve
-    from tui_search.cli import check_modes
+    import tui_search.serve.web
+    from tui_search.cli.main import check_modes
 
     started: list[list[str]] = []
 
@@ -117,7 +117,7 @@ def test_the_served_apps_accept_the_command_line_the_server_gives_them(
         started.append(app_args)
         return NoServer()
 
-    monkeypatch.setattr(tui_search.serve, "make_server", make_server)
+    monkeypatch.setattr(tui_search.serve.web, "make_server", make_server)
     code, _, err = run_cli(capsys, *argv, "--serve", "--theme", "dark")
     assert (code, err) == (0, ""), err
     (app_args,) = started
@@ -127,7 +127,7 @@ def test_the_served_apps_accept_the_command_line_the_server_gives_them(
 
 
 def test_the_web_extra_is_found_without_importing_it() -> None:
-    from tui_search.serve import web_extra_installed
+    from tui_search.serve.web import web_extra_installed
 
     assert web_extra_installed()  # the test extra brings it
 
@@ -253,7 +253,7 @@ def test_the_page_sends_its_websocket_to_the_address_the_browser_used(tmp_path: 
 
 
 def test_the_banner_for_every_network_says_how_to_reach_it_and_who_can() -> None:
-    from tui_search.serve import banner_text
+    from tui_search.serve.web import banner_text
 
     assert banner_text("0.0.0.0", 8123, "tutorial.txt", None, True, "T0K").splitlines() == [
         ("Serving tui-search (tutorial.txt) on port 8123 of every network this computer is on "
@@ -346,7 +346,7 @@ def test_past_the_visitor_limit_the_next_visitor_is_told_to_try_later() -> None:
     import aiohttp
     from aiohttp.test_utils import TestClient, TestServer
 
-    from tui_search.serve import make_server
+    from tui_search.serve.web import make_server
 
     async def visit() -> int:
         server = make_server(["--served"], "127.0.0.1", 8000, "t", max_visitors=0)

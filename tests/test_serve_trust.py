@@ -63,7 +63,7 @@ async def open_app(url: str, query: str = "width=100&height=30", *,
 
 
 def test_sizes_are_clamped() -> None:
-    from tui_search.serve_visit import MAX_HEIGHT, MAX_WIDTH, clamp
+    from tui_search.serve.visit import MAX_HEIGHT, MAX_WIDTH, clamp
 
     assert clamp(100000, 100000) == (MAX_WIDTH, MAX_HEIGHT) == (500, 200)
     assert clamp("120", -5) == (120, 1)
@@ -197,7 +197,7 @@ def test_only_the_servers_own_host_names_are_answered() -> None:
 
 
 def test_the_guards_names() -> None:
-    from tui_search.serve_guard import Guard, host_name
+    from tui_search.serve.guard import Guard, host_name
 
     assert host_name("[::1]:80") == "::1" and host_name("LocalHost.:8000") == "localhost"
     local = Guard.for_host("127.0.0.1")
@@ -289,8 +289,8 @@ def test_a_shared_save_dir_is_one_folder_for_all(tmp_path) -> None:
 def test_a_visitors_folder_is_made_by_the_app_from_its_id(tmp_path) -> None:
     import argparse
 
-    from tui_search.flags import UsageError
-    from tui_search.serve import file_access
+    from tui_search.cli.flags import UsageError
+    from tui_search.serve.web import file_access
 
     access = file_access(argparse.Namespace(served=True, save_dir=str(tmp_path),
                                             visitor="0a1b2c"))

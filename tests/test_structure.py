@@ -9,7 +9,7 @@ from pathlib import Path
 
 import tui_search
 from tui_search.tui.app import SearchApp
-from tui_search.tui.session import Session
+from tui_search.tui.model.session import Session
 
 PACKAGE = Path(tui_search.__file__).parent
 MAX_LINES, APP_LINES = 450, 300

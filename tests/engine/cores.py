@@ -1,5 +1,5 @@
 """Both search cores under test: the Python loops and the compiled core
-(:mod:`tui_search.engine.loops.compiled`), forced in turn through ``TUI_SEARCH_CORE``."""
+(:mod:`tui_search.engine.search.loops.compiled`), forced in turn through ``TUI_SEARCH_CORE``."""
 
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ from contextlib import contextmanager
 
 import pytest
 
-from tui_search.engine.loops import compiled
+from tui_search.engine.search.loops import compiled
 
 CORES = ("python", "compiled")
 

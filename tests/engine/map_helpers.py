@@ -9,8 +9,8 @@ from pathlib import Path
 import pytest
 from hypothesis import strategies as st
 
-from tui_search.engine.grid import Grid
-from tui_search.engine.mapread import MapError
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.maps.read import MapError
 
 TUTORIAL = "S#...#\n.#.##.\n...##G\n..#.#.\n....##\n......\n"
 

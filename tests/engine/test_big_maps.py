@@ -1,6 +1,6 @@
 """Big maps read in a few passes over the text (issue 21: a 64 MB map of ``.`` rows took 77 s
 and 6 GB): the file's lines kept as one string (:class:`Lines`), and a plain map read whole
-(:func:`tui_search.engine.textmap._plain_map`), which must give exactly what the line by line
+(:func:`tui_search.engine.maps.text._plain_map`), which must give exactly what the line by line
 reader gives, grid and error alike.  The memory itself is measured in benchmarks/big_map.py."""
 
 from __future__ import annotations
@@ -10,11 +10,11 @@ from unittest import mock
 from hypothesis import given
 from hypothesis import strategies as st
 
-from tui_search.engine import textmap
-from tui_search.engine.mapread import MapError
-from tui_search.engine.mapsource import Lines
-from tui_search.engine.terrain import parse_terrain
-from tui_search.engine.textmap import parse_text_map
+from tui_search.engine.maps import text as textmap
+from tui_search.engine.maps.read import MapError
+from tui_search.engine.maps.source import Lines
+from tui_search.engine.maps.terrain import parse_terrain
+from tui_search.engine.maps.text import parse_text_map
 
 texts = st.text(alphabet="ab\n\r", max_size=40)
 

@@ -8,7 +8,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from tui_search.engine.condition import (
+from tui_search.engine.course.condition import (
     FIELDS,
     MAX_NESTING,
     MAX_OPERATORS,

@@ -1,7 +1,7 @@
 """One search core: the fast recorded loops equal the reference loop, under every choice.
 
-The reference (:mod:`tui_search.engine.reference`) is the definition; every loop of
-:mod:`tui_search.engine.loops` must record exactly what it does -- the same events in the same
+The reference (:mod:`tui_search.engine.search.reference`) is the definition; every loop of
+:mod:`tui_search.engine.search.loops` must record exactly what it does -- the same events in the same
 order, the same expansions, the same discarded steps, iterations and goal -- on random maps
 under random algorithms and choices.  Then the properties the choices promise.
 """
@@ -19,20 +19,20 @@ from tests.engine.cores import CORES, using_core
 from tests.engine.test_run import snapshot
 from tests.engine.test_search import random_grids
 from tests.helpers import TUTORIAL_ROWS, grid_from_rows, reference_distances
-from tui_search.engine.algorithms import ALGORITHMS, get_algorithm
-from tui_search.engine.grid import DIRECTIONS, Cell, Grid
-from tui_search.engine.heuristics import HEURISTICS
-from tui_search.engine.loops.dispatch import loop_for
-from tui_search.engine.loops.general import general
-from tui_search.engine.loops.iddfs import iddfs
-from tui_search.engine.loops.tree import tree
-from tui_search.engine.loops.tutorial import bfs, dfs
-from tui_search.engine.position import CellState
-from tui_search.engine.problem import Problem
-from tui_search.engine.record import Record
-from tui_search.engine.reference import ReferenceSearch, stream
-from tui_search.engine.run import Run, recording_of
-from tui_search.engine.semantics import CORNER_RULES, GOAL_TESTS, VISIT_RULES, Semantics
+from tui_search.engine.maps.grid import DIRECTIONS, Cell, Grid
+from tui_search.engine.run.position import CellState
+from tui_search.engine.run.recorded import Run, recording_of
+from tui_search.engine.search.choices import CORNER_RULES, GOAL_TESTS, VISIT_RULES, Semantics
+from tui_search.engine.search.heuristics import HEURISTICS
+from tui_search.engine.search.loops.dispatch import loop_for
+from tui_search.engine.search.loops.general import general
+from tui_search.engine.search.loops.iddfs import iddfs
+from tui_search.engine.search.loops.tree import tree
+from tui_search.engine.search.loops.tutorial import bfs, dfs
+from tui_search.engine.search.problem import Problem
+from tui_search.engine.search.record import Record
+from tui_search.engine.search.reference import ReferenceSearch, stream
+from tui_search.engine.search.registry import ALGORITHMS, get_algorithm
 
 #: Tree search is exponential: every comparison stops here (both loops give up alike).
 LIMIT = 1500

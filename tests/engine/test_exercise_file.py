@@ -11,11 +11,11 @@ from pathlib import Path
 import pytest
 
 from tests.helpers import MAPS
-from tui_search.engine import exercise_file
-from tui_search.engine.exercise_file import built_in_exercise, find_exercise, load_exercise
-from tui_search.engine.exercises import grade
-from tui_search.engine.mapfile import load_map
-from tui_search.engine.mapread import MapError
+from tui_search.engine.course import exercise_file
+from tui_search.engine.course.exercise_file import built_in_exercise, find_exercise, load_exercise
+from tui_search.engine.course.grading import grade
+from tui_search.engine.maps.load import load_map
+from tui_search.engine.maps.read import MapError
 
 #: Today's verdicts (before exercise files): map -> (exercise 1, exercise 2) solved, and the
 #: reasons the tutorial's exercises gave then.

@@ -9,7 +9,7 @@ import os
 from hypothesis import given
 from hypothesis import strategies as st
 
-from tui_search.engine.filenames import describe_name, name_problem
+from tui_search.engine.util.filenames import describe_name, name_problem
 
 
 def test_describe_name_escapes_control_and_bidi_characters() -> None:

@@ -12,7 +12,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from tests.helpers import ROOT
-from tui_search.engine.generate import (
+from tui_search.engine.maps.generate import (
     KINDS,
     generate,
     generated_text,
@@ -21,8 +21,8 @@ from tui_search.engine.generate import (
     parse_recipe,
     recipe_of,
 )
-from tui_search.engine.grid import Grid
-from tui_search.engine.prng import SplitMix64, seed_value
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.util.prng import SplitMix64, seed_value
 
 GOLDEN = ROOT / "tests" / "data" / "generated"
 PERFECT = [k for k, kind in KINDS.items() if kind.perfect]

@@ -9,9 +9,9 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from tests.engine.test_search import random_grids
-from tui_search.engine.grid import Grid
-from tui_search.engine.problem import Problem
-from tui_search.engine.run import Run, recording_of
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.run.recorded import Run, recording_of
+from tui_search.engine.search.problem import Problem
 
 
 def reference_padding(grid: Grid) -> tuple[bytes, list[float] | None]:
@@ -104,7 +104,7 @@ def test_a_grid_is_a_mutable_value() -> None:
     hash, shown by its size, cells and ends, and checked when made."""
     import pytest
 
-    from tui_search.engine.mapsource import MapSource
+    from tui_search.engine.maps.source import MapSource
 
     grid = Grid(3, 2, bytearray([0, 1, 0, 0, 0, 0]), (0, 0), (2, 1),
                 costs=array("d", [1.0, 1.0, 2.0, 1.0, 1.0, 1.0]))

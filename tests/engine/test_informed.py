@@ -19,16 +19,16 @@ from benchmarks.optima import SEARCHES, check_rows, scen_files
 from tests.engine.test_core import assert_expanded_as_the_reference
 from tests.engine.test_search import random_grids
 from tests.helpers import MOVINGAI, TUTORIAL_ROWS, grid_from_rows, reference_costs
-from tui_search.engine.algorithms import get_algorithm
-from tui_search.engine.grid import DIRECTIONS, Grid
-from tui_search.engine.heuristics import HEURISTICS, admissible
-from tui_search.engine.mapfile import load_map
-from tui_search.engine.position import CellState
-from tui_search.engine.queries import EventTree
-from tui_search.engine.reference import ReferenceSearch
-from tui_search.engine.run import Run, recording_of
-from tui_search.engine.scenarios import read_scenarios
-from tui_search.engine.semantics import CORNER_RULES, Semantics
+from tui_search.engine.maps.grid import DIRECTIONS, Grid
+from tui_search.engine.maps.load import load_map
+from tui_search.engine.maps.scenarios import read_scenarios
+from tui_search.engine.run.position import CellState
+from tui_search.engine.run.queries import EventTree
+from tui_search.engine.run.recorded import Run, recording_of
+from tui_search.engine.search.choices import CORNER_RULES, Semantics
+from tui_search.engine.search.heuristics import HEURISTICS, admissible
+from tui_search.engine.search.reference import ReferenceSearch
+from tui_search.engine.search.registry import get_algorithm
 
 props = settings(max_examples=200, deadline=None)
 ADMISSIBLE = ("octile", "euclidean", "chebyshev", "zero")

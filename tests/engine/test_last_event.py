@@ -7,8 +7,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from tests.engine.test_search import random_grids
-from tui_search.engine.run import Run, recording_of
-from tui_search.engine.semantics import Semantics
+from tui_search.engine.run.recorded import Run, recording_of
+from tui_search.engine.search.choices import Semantics
 
 
 def scanned(run: Run) -> dict:

@@ -1,4 +1,4 @@
-"""Lessons read without the app (:mod:`tui_search.engine.lesson`): sections at ``## ``, a
+"""Lessons read without the app (:mod:`tui_search.engine.course.lesson`): sections at ``## ``, a
 ``lesson`` block's keys carried on from section to section, every block kind, and a bad block
 as one line naming the file, line and column (exit 2 from the command line)."""
 
@@ -10,8 +10,8 @@ import pytest
 
 from tests.helpers import ROOT
 from tests.test_cli import run_cli
-from tui_search.engine.lesson import KEYS, built_in, find_lesson, parse_lesson, read_lesson
-from tui_search.engine.mapread import MapError
+from tui_search.engine.course.lesson import KEYS, built_in, find_lesson, parse_lesson, read_lesson
+from tui_search.engine.maps.read import MapError
 
 LESSONS = ROOT / "tests" / "data" / "lessons"
 TEACHER = LESSONS / "teacher.md"
@@ -112,7 +112,7 @@ def test_the_command_line_lists_the_lessons_and_refuses_a_bad_one(capsys,
 def test_a_number_key_a_built_in_lesson_names_is_that_search_s_key() -> None:
     import re
 
-    from tui_search.engine.algorithms import ALGORITHMS
+    from tui_search.engine.search.registry import ALGORITHMS
 
     by_key = {a.app_key: a for a in ALGORITHMS.values()}
     named = []

@@ -6,10 +6,10 @@ from __future__ import annotations
 import pytest
 
 from tests.engine.cores import CORES, using_core
-from tui_search.engine.grid import Grid
-from tui_search.engine.record import CHUNK
-from tui_search.engine.run import Run, recording_of
-from tui_search.engine.semantics import Semantics
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.run.recorded import Run, recording_of
+from tui_search.engine.search.choices import Semantics
+from tui_search.engine.search.record import CHUNK
 
 FIELDS = ("gen_node", "step_end", "step_g", "discarded", "gen_depth",
           "iter_first_step", "iter_root", "iter_limit", "goal_gen", "done", "gave_up")

@@ -10,12 +10,12 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from tests.engine.map_helpers import TUTORIAL, MAI_2x3, error_of, write
-from tui_search.engine.grid import Grid
-from tui_search.engine.mapfile import load_map, parse_cell, parse_map_text
-from tui_search.engine.mapread import MapError
-from tui_search.engine.movingai import parse_movingai_map
-from tui_search.engine.scenarios import parse_scenarios
-from tui_search.engine.textmap import parse_text_map
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.maps.load import load_map, parse_cell, parse_map_text
+from tui_search.engine.maps.movingai import parse_movingai_map
+from tui_search.engine.maps.read import MapError
+from tui_search.engine.maps.scenarios import parse_scenarios
+from tui_search.engine.maps.text import parse_text_map
 
 # -- dispatch ------------------------------------------------------------------------------
 

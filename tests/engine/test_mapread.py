@@ -13,10 +13,10 @@ import pytest
 
 from tests.engine.map_helpers import TUTORIAL, error_of, write
 from tests.helpers import MAPS
-from tui_search.engine import mapread
-from tui_search.engine.mapfile import load_map
-from tui_search.engine.mapread import MAX_MAP_BYTES, MapError
-from tui_search.engine.textmap import parse_text_map
+from tui_search.engine.maps import read as mapread
+from tui_search.engine.maps.load import load_map
+from tui_search.engine.maps.read import MAX_MAP_BYTES, MapError
+from tui_search.engine.maps.text import parse_text_map
 
 # -- MapError ------------------------------------------------------------------------------
 

@@ -13,20 +13,20 @@ from hypothesis import strategies as st
 
 from tests.engine.map_helpers import TUTORIAL, MAI_2x3, error_of, grids, write
 from tests.helpers import MAPS, MOVINGAI
-from tui_search.engine import atomic
-from tui_search.engine.grid import Grid
-from tui_search.engine.mapfile import load_map
-from tui_search.engine.mapsource import MOVINGAI as MAI_KIND
-from tui_search.engine.mapsource import TEXT as TEXT_KIND
-from tui_search.engine.mapwrite import (
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.maps.load import load_map
+from tui_search.engine.maps.movingai import parse_movingai_map
+from tui_search.engine.maps.source import MOVINGAI as MAI_KIND
+from tui_search.engine.maps.source import TEXT as TEXT_KIND
+from tui_search.engine.maps.text import parse_text_map
+from tui_search.engine.maps.write import (
     format_map,
     format_text_map,
     kind_for_path,
     save_map,
     save_text_map,
 )
-from tui_search.engine.movingai import parse_movingai_map
-from tui_search.engine.textmap import parse_text_map
+from tui_search.engine.util import atomic
 
 # -- save_text_map -------------------------------------------------------------------------
 

@@ -8,8 +8,8 @@ import pytest
 
 from tests.engine.map_helpers import MAI_2x3, error_of, write, write_512_map
 from tests.helpers import MOVINGAI
-from tui_search.engine.mapfile import load_map, parse_map_text
-from tui_search.engine.movingai import parse_movingai_map
+from tui_search.engine.maps.load import load_map, parse_map_text
+from tui_search.engine.maps.movingai import parse_movingai_map
 
 #: (width, height) and scenario row counts of the real MovingAI files copied into
 #: tests/data/movingai (their SOURCES.md names where each came from).

@@ -5,8 +5,8 @@ from __future__ import annotations
 import pytest
 
 from tests.helpers import TUTORIAL_ROWS, grid_from_rows
-from tui_search.engine.algorithms import ALGORITHMS
-from tui_search.engine.run import Run
+from tui_search.engine.run.recorded import Run
+from tui_search.engine.search.registry import ALGORITHMS
 
 
 @pytest.mark.parametrize("algorithm", list(ALGORITHMS))

@@ -8,10 +8,10 @@ import itertools
 
 import pytest
 
-from tui_search.engine.algorithms import ALGORITHMS, Algorithm
-from tui_search.engine.heuristics import HEURISTICS
-from tui_search.engine.pseudocode import SKIP_KINDS, Pseudocode, pseudocode
-from tui_search.engine.semantics import CORNER_RULES, GOAL_TESTS, VISIT_RULES, Semantics
+from tui_search.engine.search.choices import CORNER_RULES, GOAL_TESTS, VISIT_RULES, Semantics
+from tui_search.engine.search.heuristics import HEURISTICS
+from tui_search.engine.search.pseudocode import SKIP_KINDS, Pseudocode, pseudocode
+from tui_search.engine.search.registry import ALGORITHMS, Algorithm
 
 ORDERS = (("N", "NW", "W", "SW", "S", "SE", "E", "NE"), ("N", "W", "S", "E"))
 

@@ -1,4 +1,4 @@
-"""The rebuild's bulk loops (:mod:`tui_search.engine.rebuild`): the compiled core's C twins
+"""The rebuild's bulk loops (:mod:`tui_search.engine.run.rebuild`): the compiled core's C twins
 write what the Python ones write, array for array, on the records of random runs under
 random choices, in pieces of any size; and a whole rebuild lands on the same state under
 either core."""
@@ -15,8 +15,8 @@ from tests.engine.cores import using_core
 from tests.engine.test_core import semantics
 from tests.engine.test_run import snapshot
 from tests.engine.test_search import random_grids
-from tui_search.engine import rebuild
-from tui_search.engine.run import Run, recording_of
+from tui_search.engine.run import rebuild
+from tui_search.engine.run.recorded import Run, recording_of
 
 LIMIT = 400
 checks = settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
@@ -117,7 +117,7 @@ def test_the_c_walk_up_the_parents_is_the_python_one(grid, choice) -> None:
 
 
 def test_the_c_walk_refuses_a_record_out_of_range() -> None:
-    core = pytest.importorskip("tui_search.engine._core")
+    core = pytest.importorskip("tui_search.engine.search._core")
     with pytest.raises(IndexError):
         core.ancestors(array("i", [1, 3]), None, 0, 5)
     with pytest.raises(IndexError):

@@ -12,11 +12,11 @@ from hypothesis import strategies as st
 
 from tests.engine.test_search import random_grids
 from tests.helpers import TUTORIAL_ROWS, grid_from_rows, summary
-from tui_search.engine.grid import Grid
-from tui_search.engine.peak import PeakTable, _largest_size
-from tui_search.engine.position import CellState
-from tui_search.engine.record import CHUNK
-from tui_search.engine.run import MAX_STEPS, Run, recording_of
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.run.peak import PeakTable, _largest_size
+from tui_search.engine.run.position import CellState
+from tui_search.engine.run.recorded import MAX_STEPS, Run, recording_of
+from tui_search.engine.search.record import CHUNK
 
 
 def snapshot(run: Run) -> tuple:
@@ -333,7 +333,7 @@ def test_a_step_is_a_value() -> None:
     fields, keyword or positional, immutable, and shown with them."""
     from dataclasses import FrozenInstanceError
 
-    from tui_search.engine.run import Step
+    from tui_search.engine.run.recorded import Step
 
     run = Run(grid_from_rows(TUTORIAL_ROWS), "bfs")
     first = run.steps.at(1)
@@ -350,8 +350,8 @@ def test_a_step_is_a_value() -> None:
 def test_a_record_names_every_array_it_keeps() -> None:
     """Record is written out (not a dataclass, for the start's sake): FIELDS, which the tests
     compare two records by, is every attribute it has, before a search and after one."""
-    from tui_search.engine.record import Record
-    from tui_search.engine.run import recording_of
+    from tui_search.engine.run.recorded import recording_of
+    from tui_search.engine.search.record import Record
 
     assert tuple(vars(Record())) == Record.FIELDS
     for key in ("bfs", "iddfs", "astar"):

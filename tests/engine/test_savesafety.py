@@ -19,18 +19,18 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from tests.engine.map_helpers import TUTORIAL, MAI_2x3, error_of, grids, write
-from tui_search.engine import atomic
-from tui_search.engine.grid import Grid
-from tui_search.engine.mapfile import load_map
-from tui_search.engine.mapread import MapError
-from tui_search.engine.mapsource import MOVINGAI
-from tui_search.engine.mapwrite import (
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.maps.load import load_map
+from tui_search.engine.maps.read import MapError
+from tui_search.engine.maps.source import MOVINGAI
+from tui_search.engine.maps.write import (
     ChangedOnDisk,
     HardLinked,
     ReadOnlyFile,
     WouldNotLoad,
     save_map,
 )
+from tui_search.engine.util import atomic
 
 IS_ROOT = hasattr(os, "geteuid") and os.geteuid() == 0
 
@@ -295,7 +295,8 @@ def test_a_map_that_would_not_load_is_not_written(
 
 
 def test_a_file_over_the_size_a_map_may_be_is_not_written(tmp_path: Path, monkeypatch) -> None:
-    from tui_search.engine import mapread, mapwrite
+    from tui_search.engine.maps import read as mapread
+    from tui_search.engine.maps import write as mapwrite
 
     path = write(tmp_path, "m.txt", TUTORIAL)
     grid = load_map(path)
@@ -366,8 +367,8 @@ def test_stale_temporary_files_of_this_map_are_removed_at_its_next_save(tmp_path
 
 KILLED_SAVER = """
 import sys
-from tui_search.engine.mapfile import load_map
-from tui_search.engine.mapwrite import save_map
+from tui_search.engine.maps.load import load_map
+from tui_search.engine.maps.write import save_map
 grid = load_map(sys.argv[1])
 while True:
     save_map(grid, sys.argv[1], overwrite=True)

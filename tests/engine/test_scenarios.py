@@ -12,9 +12,9 @@ from hypothesis import strategies as st
 
 from tests.engine.map_helpers import TUTORIAL, error_of, write, write_512_map
 from tests.helpers import MOVINGAI
-from tui_search.engine.mapfile import load_map
-from tui_search.engine.mapread import MapError
-from tui_search.engine.scenarios import (
+from tui_search.engine.maps.load import load_map
+from tui_search.engine.maps.read import MapError
+from tui_search.engine.maps.scenarios import (
     Scenario,
     _parse_row,
     _read_rows,
@@ -23,7 +23,7 @@ from tui_search.engine.scenarios import (
     parse_scenarios,
     read_scenarios,
 )
-from tui_search.engine.textmap import parse_text_map
+from tui_search.engine.maps.text import parse_text_map
 
 SCEN_ROWS = {
     "room-32-32-4-random-1.scen": 341,

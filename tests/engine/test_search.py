@@ -10,9 +10,9 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from tests.helpers import TUTORIAL_ROWS, grid_from_rows, reference_distances, summary
-from tui_search.engine.grid import DELTAS, Grid, parse_order
-from tui_search.engine.run import Run
-from tui_search.engine.semantics import Semantics
+from tui_search.engine.maps.grid import DELTAS, Grid, parse_order
+from tui_search.engine.run.recorded import Run
+from tui_search.engine.search.choices import Semantics
 
 
 def succ_dirs(step) -> list[str]:

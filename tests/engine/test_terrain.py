@@ -13,13 +13,13 @@ from hypothesis import strategies as st
 
 from tests.engine.test_search import random_grids
 from tests.helpers import MAPS, reference_distances
-from tui_search.engine.grid import SQRT2, Cell, Grid
-from tui_search.engine.heuristics import HEURISTICS, admissible
-from tui_search.engine.mapfile import load_map
-from tui_search.engine.outcome import Outcome
-from tui_search.engine.run import Run, recording_of
-from tui_search.engine.semantics import CORNER_RULES, Semantics
-from tui_search.headless import json_summary
+from tui_search.cli.headless import json_summary
+from tui_search.engine.maps.grid import SQRT2, Cell, Grid
+from tui_search.engine.maps.load import load_map
+from tui_search.engine.run.recorded import Run, recording_of
+from tui_search.engine.search.choices import CORNER_RULES, Semantics
+from tui_search.engine.search.heuristics import HEURISTICS, admissible
+from tui_search.engine.search.outcome import Outcome
 
 EIGHT = ("N", "NW", "W", "SW", "S", "SE", "E", "NE")
 FOUR = ("N", "W", "S", "E")
@@ -196,7 +196,7 @@ def _record(run: Run) -> dict:
 
 
 def test_a_table_or_comments_give_the_same_run_and_json(tmp_path) -> None:
-    from tui_search.engine.terrain import parse_terrain
+    from tui_search.engine.maps.terrain import parse_terrain
 
     rows = "S.ff.\n.ww..\n..f.G\n"
     inline = tmp_path / "inline.txt"

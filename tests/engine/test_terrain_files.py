@@ -12,12 +12,12 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from tests.engine.map_helpers import MAI_2x3, error_of, write
-from tui_search.engine.grid import Grid
-from tui_search.engine.mapfile import load_map, parse_map_text
-from tui_search.engine.mapread import MapError
-from tui_search.engine.mapsource import MOVINGAI, TEXT
-from tui_search.engine.mapwrite import format_map, save_map, save_notes
-from tui_search.engine.terrain import MIN_COST, load_terrain, parse_terrain
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.maps.load import load_map, parse_map_text
+from tui_search.engine.maps.read import MapError
+from tui_search.engine.maps.source import MOVINGAI, TEXT
+from tui_search.engine.maps.terrain import MIN_COST, load_terrain, parse_terrain
+from tui_search.engine.maps.write import format_map, save_map, save_notes
 
 
 def costs_of(grid: Grid) -> list[list[float]]:

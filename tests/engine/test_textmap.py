@@ -10,10 +10,10 @@ from hypothesis import given
 
 from tests.engine.map_helpers import TUTORIAL, error_of, grids, write
 from tests.helpers import MOVINGAI
-from tui_search.engine.grid import Grid
-from tui_search.engine.mapfile import load_map, parse_map_text
-from tui_search.engine.mapwrite import format_text_map
-from tui_search.engine.textmap import parse_text_map
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.maps.load import load_map, parse_map_text
+from tui_search.engine.maps.text import parse_text_map
+from tui_search.engine.maps.write import format_text_map
 
 # -- text format ---------------------------------------------------------------------------
 

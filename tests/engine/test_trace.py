@@ -13,12 +13,12 @@ from hypothesis import strategies as st
 
 from tests.engine.test_search import random_grids
 from tests.helpers import TUTORIAL_ROWS, grid_from_rows
-from tui_search.engine.grid import Grid
-from tui_search.engine.mapread import MapError
-from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
-from tui_search.engine.trace_check import check_trace
-from tui_search.engine.trace_read import read_trace
-from tui_search.headless import search_headless
+from tui_search.cli.headless import search_headless
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.maps.read import MapError
+from tui_search.engine.search.choices import DEFAULT_SEMANTICS, Semantics
+from tui_search.engine.traces.check import check_trace
+from tui_search.engine.traces.read import read_trace
 
 GRID = grid_from_rows(TUTORIAL_ROWS)
 NWSE = Semantics(order=("N", "W", "S", "E"))
@@ -178,7 +178,7 @@ def app_case(grid: Grid, key: str, sem: Semantics, visit: str,
 
     from hypothesis import assume
 
-    from tui_search.engine.algorithms import get_algorithm
+    from tui_search.engine.search.registry import get_algorithm
 
     algo = get_algorithm(key)
     if visit == "tree":

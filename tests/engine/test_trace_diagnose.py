@@ -20,13 +20,13 @@ from tests.engine.student_searches import (
 )
 from tests.engine.test_search import random_grids
 from tests.helpers import MOVINGAI, grid_from_rows
-from tui_search.cli import main
-from tui_search.engine.algorithms import ALGORITHMS
-from tui_search.engine.grid import Grid
-from tui_search.engine.semantics import Semantics
-from tui_search.engine.trace_diagnose import diagnose, inferred_orders
-from tui_search.engine.trace_read import read_trace
-from tui_search.headless import search_headless
+from tui_search.cli.headless import search_headless
+from tui_search.cli.main import main
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.search.choices import Semantics
+from tui_search.engine.search.registry import ALGORITHMS
+from tui_search.engine.traces.diagnose import diagnose, inferred_orders
+from tui_search.engine.traces.read import read_trace
 
 ROWS = ["S.....", ".##.#.", "...#..", ".#...#", "...#.G", "......"]
 GRID = grid_from_rows(ROWS)
@@ -143,7 +143,7 @@ def test_an_astar_trace_lists_greedy_too() -> None:
 
 
 def test_with_a_the_tie_is_named_too() -> None:
-    from tui_search.engine.trace_check import check_trace
+    from tui_search.engine.traces.check import check_trace
 
     verdict = check_trace(read_trace(astar_ties_on_h(ROWS, "N,E,S,W"), GRID, "t"), GRID,
                           "astar", Semantics(order=("N", "E", "S", "W"), heuristic="manhattan"))

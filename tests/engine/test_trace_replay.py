@@ -1,4 +1,4 @@
-"""``--replay`` without Textual (:mod:`tui_search.engine.trace_replay`): what the trace's pane
+"""``--replay`` without Textual (:mod:`tui_search.engine.traces.replay`): what the trace's pane
 says of it, its steps beside its search's, and a recursive DFS's pattern named."""
 
 from __future__ import annotations
@@ -6,11 +6,11 @@ from __future__ import annotations
 from tests.engine.student_searches import _search, bfs, bfs_visit_on_expand, dfs_recursive
 from tests.engine.test_trace import app_trace
 from tests.helpers import TUTORIAL, TUTORIAL_ROWS
-from tui_search.engine.mapfile import load_map
-from tui_search.engine.run import Run, Step
-from tui_search.engine.semantics import Semantics
-from tui_search.engine.trace_read import read_trace
-from tui_search.engine.trace_replay import replay_of
+from tui_search.engine.maps.load import load_map
+from tui_search.engine.run.recorded import Run, Step
+from tui_search.engine.search.choices import Semantics
+from tui_search.engine.traces.read import read_trace
+from tui_search.engine.traces.replay import replay_of
 
 GRID = load_map(TUTORIAL)
 

@@ -1,4 +1,4 @@
-"""A trace replayed as a run (:mod:`tui_search.engine.trace_run`): the app's own ``--trace``
+"""A trace replayed as a run (:mod:`tui_search.engine.traces.as_run`): the app's own ``--trace``
 of any search and choices, replayed, is a run with the same steps; its frontier is what the
 trace added and has not expanded, in the order added, either way and after a long jump."""
 
@@ -7,12 +7,12 @@ from __future__ import annotations
 from collections import Counter
 
 from tests.engine.test_trace import GRID, app_case, lines, over_app_searches
-from tui_search.engine.algorithms import Frontier
-from tui_search.engine.grid import Grid
-from tui_search.engine.run import Run
-from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
-from tui_search.engine.trace_read import read_trace
-from tui_search.engine.trace_run import TRACE_ALGORITHM, trace_run
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.run.recorded import Run
+from tui_search.engine.search.choices import DEFAULT_SEMANTICS, Semantics
+from tui_search.engine.search.registry import Frontier
+from tui_search.engine.traces.as_run import TRACE_ALGORITHM, trace_run
+from tui_search.engine.traces.read import read_trace
 
 
 def steps_of(run: Run) -> list[tuple[object, ...]]:
@@ -61,7 +61,7 @@ def test_the_trace_run_is_no_registry_search_and_says_its_frontier_is_as_added()
                  {"node": [0, 1], "successors": [[0, 2], [1, 2]]})
     run = trace_run(read_trace(text, GRID, "t"), GRID, "bfs", DEFAULT_SEMANTICS)
     assert run.algo is TRACE_ALGORITHM and run.algo.frontier is Frontier.ADDED
-    from tui_search.engine.algorithms import ALGORITHMS
+    from tui_search.engine.search.registry import ALGORITHMS
 
     assert TRACE_ALGORITHM.key not in ALGORITHMS
     run.goto(2)

@@ -21,19 +21,19 @@ from textual import events
 
 from tests.helpers import MAPS, TUTORIAL
 from tests.textual_internals import composited, notifications, repainted, settle
-from tui_search.engine.grid import Grid
-from tui_search.engine.mapfile import load_map
-from tui_search.engine.mapwrite import format_text_map
-from tui_search.engine.record import CHUNK
-from tui_search.engine.run import Run
-from tui_search.engine.scenarios import load_scenario
-from tui_search.tui import playback
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.maps.load import load_map
+from tui_search.engine.maps.scenarios import load_scenario
+from tui_search.engine.maps.write import format_text_map
+from tui_search.engine.run.recorded import Run
+from tui_search.engine.search.record import CHUNK
 from tui_search.tui.app import SearchApp
-from tui_search.tui.screens.confirm_quit import ConfirmQuitScreen
-from tui_search.tui.screens.help import HelpScreen
+from tui_search.tui.dialogs.confirm_quit import ConfirmQuitScreen
+from tui_search.tui.dialogs.help import HelpScreen
+from tui_search.tui.dialogs.save_as import SaveAsScreen
+from tui_search.tui.model import playback
+from tui_search.tui.model.session import NEEDS_ENDPOINTS
 from tui_search.tui.screens.main import MainScreen
-from tui_search.tui.screens.save_as import SaveAsScreen
-from tui_search.tui.session import NEEDS_ENDPOINTS
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.key_bar import KeyBar
@@ -733,7 +733,7 @@ async def test_help_names_the_search_core_that_runs(monkeypatch) -> None:
     """Where pip hid the build's warning, the help screen's last line says which core runs."""
     from textual.widgets import Static
 
-    from tui_search.engine.loops import compiled
+    from tui_search.engine.search.loops import compiled
 
     monkeypatch.setenv(compiled.CORE_ENV, "python")
     compiled.selected.cache_clear()
@@ -751,7 +751,7 @@ async def test_help_names_the_search_core_that_runs(monkeypatch) -> None:
 def test_help_lists_every_key_of_the_binding_table() -> None:
     from textual.binding import Binding
 
-    from tui_search.tui.screens.help import KEYS
+    from tui_search.tui.dialogs.help import KEYS
 
     listed = " ".join(key for key, _ in KEYS).split()
     aliases = {"up": "arrows", "down": "arrows", "left": "arrows", "right": "arrows",
@@ -889,8 +889,8 @@ async def test_a_run_that_reaches_the_step_limit_says_it_gave_up() -> None:
 @sync
 async def test_a_movingai_map_opens_with_its_scenario_and_z_shows_it_whole() -> None:
     """``tui-search arena.map --scen arena.map.scen --scen-row 5``, as the CLI builds it."""
-    from tui_search.cli import build_parser
-    from tui_search.flags import load_problem
+    from tui_search.cli.flags import load_problem
+    from tui_search.cli.main import build_parser
 
     arena = ARENA
     args = build_parser().parse_args([str(arena), "--scen", f"{arena}.scen", "--scen-row", "5"])

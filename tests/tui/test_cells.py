@@ -14,9 +14,9 @@ from rich.style import Style
 
 from tests.tui.test_app import SIZE, open_grid, sync, tutorial_app, wait_until, watch_repaints
 from tests.tui.test_snapshots import patterned_grid
-from tui_search.engine.grid import Cell, Grid
+from tui_search.engine.maps.grid import Cell, Grid
 from tui_search.tui.app import SearchApp
-from tui_search.tui.cell_codes import (
+from tui_search.tui.view.cell_codes import (
     CURRENT,
     EXPANDED,
     FREE,
@@ -27,7 +27,7 @@ from tui_search.tui.cell_codes import (
     UPPER_HALF,
     WALL,
 )
-from tui_search.tui.geometry import MAX_LEVEL, Geometry
+from tui_search.tui.view.geometry import MAX_LEVEL, Geometry
 from tui_search.tui.widgets.cell_readout import CellReadout
 from tui_search.tui.widgets.cell_style import block_codes
 from tui_search.tui.widgets.grid_view import GridView

@@ -6,7 +6,7 @@ from __future__ import annotations
 from tests.helpers import MOVINGAI
 from tests.tui.test_app import tutorial_app, wait_until
 from tests.tui.test_snapshots import patterned_grid
-from tui_search.engine.mapfile import load_map
+from tui_search.engine.maps.load import load_map
 from tui_search.tui.app import SearchApp
 
 

@@ -7,11 +7,11 @@ import threading
 import pytest
 
 from tests.tui.test_app import MAPS, TUTORIAL, sync, tutorial_app, wait_until
-from tui_search.cli import main
-from tui_search.engine.exercise_file import built_in_exercise
-from tui_search.engine.exercises import LIVE_CELLS, grade
-from tui_search.engine.grid import Grid
-from tui_search.engine.mapfile import load_map
+from tui_search.cli.main import main
+from tui_search.engine.course.exercise_file import built_in_exercise
+from tui_search.engine.course.grading import LIVE_CELLS, grade
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.maps.load import load_map
 from tui_search.tui.app import SearchApp
 from tui_search.tui.screens import exercise_check
 from tui_search.tui.widgets.challenge import ChallengePanel
@@ -151,7 +151,7 @@ async def test_the_palette_turns_the_exercises_on_and_off() -> None:
 
 @sync
 async def test_a_teachers_exercise_fails_an_edit_it_does_not_allow() -> None:
-    from tui_search.engine.exercise_file import load_exercise
+    from tui_search.engine.course.exercise_file import load_exercise
 
     teacher = load_exercise(MAPS.parent / "tests" / "data" / "exercises" /
                             "greedy-not-optimal.toml")  # edits = ["obstacles"]

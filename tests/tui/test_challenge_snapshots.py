@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from tests.helpers import ROOT
 from tests.tui.test_app import MAPS
-from tui_search.engine.mapfile import load_map
+from tui_search.engine.maps.load import load_map
 from tui_search.tui.app import SearchApp
 
 EXERCISES = ROOT / "tests" / "data" / "exercises"
@@ -23,7 +23,7 @@ def test_a_teacher_s_exercise(snap_compare) -> None:
     """A teacher's exercise file on the tutorial's map: the panel is titled 'Greedy is not
     optimal', quotes its text and says 'Not solved yet: both found the goal; both paths cost
     8.66', then the file's hint."""
-    from tui_search.engine.exercise_file import load_exercise
+    from tui_search.engine.course.exercise_file import load_exercise
 
     exercise = load_exercise(EXERCISES / "greedy-not-optimal.toml")
     path = MAPS / "tutorial.txt"

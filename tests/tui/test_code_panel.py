@@ -10,14 +10,14 @@ import pytest
 
 from tests.textual_internals import notifications
 from tests.tui.test_app import SIZE, sync, tutorial_app, wait_until
-from tui_search.engine.algorithms import ALGORITHMS
-from tui_search.engine.grid import Grid
-from tui_search.engine.pseudocode import pseudocode
-from tui_search.engine.semantics import Semantics
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.search.choices import Semantics
+from tui_search.engine.search.pseudocode import pseudocode
+from tui_search.engine.search.registry import ALGORITHMS
 from tui_search.tui.app import SearchApp
-from tui_search.tui.code_trace import focus_line, lit_lines
-from tui_search.tui.layout import CODE_MIN_HEIGHT, TREES_MIN_HEIGHT
-from tui_search.tui.narration import narrate
+from tui_search.tui.view.code_trace import focus_line, lit_lines
+from tui_search.tui.view.layout import CODE_MIN_HEIGHT, TREES_MIN_HEIGHT
+from tui_search.tui.view.narration import narrate
 from tui_search.tui.widgets.code_panel import LIT_MARK, CodePanel, code_rows
 from tui_search.tui.widgets.run_pane import RunPane
 
@@ -228,9 +228,9 @@ async def test_a_code_panel_unfolded_by_a_bigger_terminal_shows_the_run_at_once(
 
 def test_on_a_map_with_terrain_g_adds_the_cost_of_the_cell_entered() -> None:
     from tests.helpers import MAPS
-    from tui_search.engine.mapfile import load_map
-    from tui_search.engine.run import Run
-    from tui_search.tui.code_trace import code_of
+    from tui_search.engine.maps.load import load_map
+    from tui_search.engine.run.recorded import Run
+    from tui_search.tui.view.code_trace import code_of
 
     mud = load_map(MAPS / "terrain-mud.txt")
     text = "\n".join(line.text for line in code_of(Run(mud, "ucs")).lines)

@@ -7,10 +7,10 @@ from __future__ import annotations
 import pytest
 
 from tests.helpers import MAPS, TUTORIAL_ROWS, grid_from_rows
-from tui_search.engine.mapfile import load_map
-from tui_search.engine.run import Run
-from tui_search.engine.semantics import Semantics
-from tui_search.tui.code_trace import Skip, code_of, lit_lines, skipped
+from tui_search.engine.maps.load import load_map
+from tui_search.engine.run.recorded import Run
+from tui_search.engine.search.choices import Semantics
+from tui_search.tui.view.code_trace import Skip, code_of, lit_lines, skipped
 
 
 def at(run: Run, k: int) -> Run:

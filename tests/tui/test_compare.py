@@ -15,10 +15,10 @@ from tests.tui.test_app import (
     tutorial_app,
     wait_until,
 )
-from tui_search.cli import main
-from tui_search.engine.mapfile import load_map
+from tui_search.cli.main import main
+from tui_search.engine.maps.load import load_map
 from tui_search.tui.app import SearchApp
-from tui_search.tui.screens.settings import SettingsScreen
+from tui_search.tui.dialogs.settings import SettingsScreen
 from tui_search.tui.widgets.run_pane import RunPane
 
 SIZE = (160, 48)

@@ -18,16 +18,16 @@ from textual.widget import Widget
 from textual.widgets import Button, Input
 
 from tests.tui.test_app import MAPS, TUTORIAL, click_shown, sync, tutorial_app, wait_until
-from tui_search.engine.mapfile import load_map
-from tui_search.engine.semantics import Semantics
+from tui_search.engine.maps.load import load_map
+from tui_search.engine.search.choices import Semantics
 from tui_search.tui.app import SearchApp
-from tui_search.tui.screens.confirm_overwrite import ConfirmOverwriteScreen
-from tui_search.tui.screens.confirm_quit import ConfirmQuitScreen
-from tui_search.tui.screens.help import HelpScreen
-from tui_search.tui.screens.open_map import OpenMapScreen
-from tui_search.tui.screens.save_as import SaveAsScreen
-from tui_search.tui.screens.save_refused import ChangedOnDiskScreen, DropEditsScreen, InPlaceScreen
-from tui_search.tui.screens.settings import SettingsScreen
+from tui_search.tui.dialogs.confirm_overwrite import ConfirmOverwriteScreen
+from tui_search.tui.dialogs.confirm_quit import ConfirmQuitScreen
+from tui_search.tui.dialogs.help import HelpScreen
+from tui_search.tui.dialogs.open_map import OpenMapScreen
+from tui_search.tui.dialogs.save_as import SaveAsScreen
+from tui_search.tui.dialogs.save_refused import ChangedOnDiskScreen, DropEditsScreen, InPlaceScreen
+from tui_search.tui.dialogs.settings import SettingsScreen
 from tui_search.tui.widgets.map_tree import MapTree
 
 SIZES = [(80, 24), (100, 30), (120, 40), (160, 48), (200, 60)]
@@ -169,7 +169,7 @@ async def test_help_wraps_a_key_s_description_under_itself_not_under_the_keys() 
     """At 80x24 the longer descriptions wrap: each row of the keys' table starts with a key
     the app binds, or with blanks as wide as the keys' column (the description goes on)."""
     from tests.textual_internals import repainted
-    from tui_search.tui.screens.help import KEYS
+    from tui_search.tui.dialogs.help import KEYS
 
     app = tutorial_app()
     async with app.run_test(size=(80, 24)) as pilot:

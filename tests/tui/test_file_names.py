@@ -18,15 +18,15 @@ from textual.widgets import Input
 from tests.textual_internals import notifications
 from tests.tui.test_app import SIZE, screen_shown, sync, wait_until
 from tests.tui.test_files import TUTORIAL, answer, app_on, copy, type_name, untitled
-from tui_search.engine.filenames import describe_name
-from tui_search.engine.mapfile import load_map
+from tui_search.engine.maps.load import load_map
+from tui_search.engine.util.filenames import describe_name
 from tui_search.tui.app import SearchApp
-from tui_search.tui.file_access import FileAccess, name_or_problem
-from tui_search.tui.screens.confirm_overwrite import ConfirmOverwriteScreen
-from tui_search.tui.screens.confirm_quit import ConfirmQuitScreen
-from tui_search.tui.screens.open_map import OpenMapScreen
-from tui_search.tui.screens.path_prompt import PathPrompt
-from tui_search.tui.screens.save_as import SaveAsScreen
+from tui_search.tui.dialogs.confirm_overwrite import ConfirmOverwriteScreen
+from tui_search.tui.dialogs.confirm_quit import ConfirmQuitScreen
+from tui_search.tui.dialogs.open_map import OpenMapScreen
+from tui_search.tui.dialogs.path_prompt import PathPrompt
+from tui_search.tui.dialogs.save_as import SaveAsScreen
+from tui_search.tui.model.file_rules import FileAccess, name_or_problem
 
 ODD = ["[bold]m.txt", "[@click=app.quit]m.txt", "x\x1b[31mred.txt", "a\u202etxt.txt",
        "tab\there.txt", "back\\slash.txt", "é 地図.txt"]

@@ -12,14 +12,14 @@ from textual.widgets import Input
 
 from tests.textual_internals import notifications
 from tests.tui.test_app import MAPS, SIZE, click_shown, screen_shown, sync, wait_until
-from tui_search.engine.mapfile import load_map
-from tui_search.engine.mapwrite import format_text_map
+from tui_search.engine.maps.load import load_map
+from tui_search.engine.maps.write import format_text_map
 from tui_search.tui.app import SearchApp
-from tui_search.tui.screens.confirm_overwrite import ConfirmOverwriteScreen
-from tui_search.tui.screens.confirm_quit import ConfirmQuitScreen
-from tui_search.tui.screens.open_map import OpenMapScreen
-from tui_search.tui.screens.path_prompt import PathPrompt
-from tui_search.tui.screens.save_as import SaveAsScreen
+from tui_search.tui.dialogs.confirm_overwrite import ConfirmOverwriteScreen
+from tui_search.tui.dialogs.confirm_quit import ConfirmQuitScreen
+from tui_search.tui.dialogs.open_map import OpenMapScreen
+from tui_search.tui.dialogs.path_prompt import PathPrompt
+from tui_search.tui.dialogs.save_as import SaveAsScreen
 
 DATA = Path(__file__).parents[1] / "data" / "movingai"
 TUTORIAL = MAPS / "tutorial.txt"

@@ -3,7 +3,7 @@ the move and the marker going first, never a figure."""
 
 from __future__ import annotations
 
-from tui_search.tui.widgets.frontier_rows import EntryRows, plan_rows
+from tui_search.tui.view.frontier_rows import EntryRows, plan_rows
 
 FIGURES = [5, 5, 5]  # "f6.41", "g3.41", "h3.00"
 

@@ -13,14 +13,14 @@ from textual.widgets import Input
 from tests.tui.test_app import MAPS, SIZE, screen_shown, stats, sync, wait_until
 from tests.tui.test_dialogs_fit import assert_fits
 from tests.tui.test_files import answer, copy
-from tui_search.engine.generate import Recipe, generate, make_recipe
-from tui_search.engine.grid import Grid
-from tui_search.engine.mapfile import load_map
+from tui_search.engine.maps.generate import Recipe, generate, make_recipe
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.maps.load import load_map
 from tui_search.tui.app import SearchApp
 from tui_search.tui.commands import SearchCommands
-from tui_search.tui.files import GENERATE_AT_ONCE_CELLS
-from tui_search.tui.screens.confirm_quit import ConfirmQuitScreen
-from tui_search.tui.screens.generate_map import GenerateScreen
+from tui_search.tui.dialogs.confirm_quit import ConfirmQuitScreen
+from tui_search.tui.dialogs.generate_map import GenerateScreen
+from tui_search.tui.screens.file_commands import GENERATE_AT_ONCE_CELLS
 
 TUTORIAL = MAPS / "tutorial.txt"
 
@@ -116,7 +116,7 @@ async def test_the_prompt_fits_with_an_error_shown(size: tuple[int, int]) -> Non
 def gated(monkeypatch: pytest.MonkeyPatch) -> threading.Event:
     """The app's generator held until the returned event is set (a big map's thread).  The
     app imports it when a map is generated, so the engine's module is the one patched."""
-    import tui_search.engine.generate
+    import tui_search.engine.maps.generate
 
     gate = threading.Event()
 
@@ -124,7 +124,7 @@ def gated(monkeypatch: pytest.MonkeyPatch) -> threading.Event:
         assert gate.wait(10), "the test never let the generator go"
         return generate(recipe)
 
-    monkeypatch.setattr(tui_search.engine.generate, "generate", held)
+    monkeypatch.setattr(tui_search.engine.maps.generate, "generate", held)
     return gate
 
 

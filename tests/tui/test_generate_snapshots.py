@@ -6,8 +6,8 @@ mazes are made for.  Update with ``pytest tests/tui/test_generate_snapshots.py
 from __future__ import annotations
 
 from tests.tui.test_snapshots import SIZE
-from tui_search.engine.generate import generate, parse_recipe
-from tui_search.engine.semantics import Semantics
+from tui_search.engine.maps.generate import generate, parse_recipe
+from tui_search.engine.search.choices import Semantics
 from tui_search.tui.app import SearchApp
 
 RECIPE = parse_recipe("maze 21x15 7")

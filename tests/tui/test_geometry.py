@@ -6,7 +6,7 @@ from __future__ import annotations
 from hypothesis import given
 from hypothesis import strategies as st
 
-from tui_search.tui.geometry import MAX_LEVEL, Geometry
+from tui_search.tui.view.geometry import MAX_LEVEL, Geometry
 
 maps = st.tuples(st.integers(1, 600), st.integers(1, 600))
 

@@ -1,4 +1,4 @@
-"""Undo and redo without Textual: the history of edits (:mod:`tui_search.tui.history`) and the
+"""Undo and redo without Textual: the history of edits (:mod:`tui_search.tui.model.history`) and the
 session's edits recorded in it, with Hypothesis for any sequence of edits."""
 
 from __future__ import annotations
@@ -7,10 +7,10 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from tests.helpers import TUTORIAL
-from tui_search.engine.grid import Grid
-from tui_search.engine.mapfile import load_map
-from tui_search.tui.history import Edit, History
-from tui_search.tui.session import Session
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.maps.load import load_map
+from tui_search.tui.model.history import Edit, History
+from tui_search.tui.model.session import Session
 
 #: An edit of the session on the tutorial's 6x6 map: the cursor to (x, y), then ``s``, ``g``,
 #: ``o``, or a mouse stroke over those cells (painting what the first cell became).

@@ -15,18 +15,18 @@ from tests.tui.test_app import (
     tutorial_app,
     wait_until,
 )
-from tui_search.engine.grid import Grid
-from tui_search.engine.heuristics import INADMISSIBLE
-from tui_search.engine.mapfile import load_map
-from tui_search.engine.position import CellState
-from tui_search.engine.queries import EventTree
-from tui_search.engine.run import Run, recording_of
-from tui_search.engine.scenarios import load_scenario
-from tui_search.engine.semantics import Semantics
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.maps.load import load_map
+from tui_search.engine.maps.scenarios import load_scenario
+from tui_search.engine.run.position import CellState
+from tui_search.engine.run.queries import EventTree
+from tui_search.engine.run.recorded import Run, recording_of
+from tui_search.engine.search.choices import Semantics
+from tui_search.engine.search.heuristics import INADMISSIBLE
 from tui_search.tui.app import SearchApp
-from tui_search.tui.narration import narrate
-from tui_search.tui.readout import describe
-from tui_search.tui.screens.settings import SettingsScreen
+from tui_search.tui.dialogs.settings import SettingsScreen
+from tui_search.tui.view.narration import narrate
+from tui_search.tui.view.readout import describe
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 
 SIZE = (120, 36)

@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 from tests.tui.test_app import TUTORIAL, tutorial_app
-from tui_search.engine.mapfile import load_map
-from tui_search.engine.semantics import Semantics
+from tui_search.engine.maps.load import load_map
+from tui_search.engine.search.choices import Semantics
 from tui_search.tui.app import SearchApp
 
 SIZE = (100, 30)

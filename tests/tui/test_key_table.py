@@ -6,7 +6,7 @@ from collections import Counter
 
 from textual.binding import Binding
 
-from tui_search.tui.keys import KEYS
+from tui_search.tui.screens.keys import KEYS
 
 #: Keys bound twice on purpose: one hint each way (space: play / pause), or a lesson's
 #: section keys over the cursor's page keys (pgdn / pgup).

@@ -13,10 +13,10 @@ from hypothesis import strategies as st
 
 from tests.textual_internals import nothing_queued, settle
 from tests.tui.test_app import TUTORIAL, sync, wait_until
-from tui_search.engine.grid import Grid
-from tui_search.engine.mapfile import load_map
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.maps.load import load_map
 from tui_search.tui.app import SearchApp
-from tui_search.tui.layout import CODE_MIN_HEIGHT, MAP_MIN_LINES, arrange
+from tui_search.tui.view.layout import CODE_MIN_HEIGHT, MAP_MIN_LINES, arrange
 from tui_search.tui.widgets.grid_view import GridView
 
 SIZES = [(80, 24), (100, 30), (120, 40), (160, 48), (200, 60)]

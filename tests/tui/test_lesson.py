@@ -12,13 +12,13 @@ from textual.geometry import Region
 
 from tests.engine.test_lesson import LESSONS, TEACHER
 from tests.tui.test_app import TUTORIAL, sync, wait_until
-from tui_search.engine.exercise_file import built_in_exercise
-from tui_search.engine.lesson import find_lesson, read_lesson
-from tui_search.engine.mapfile import load_map
-from tui_search.engine.run import Run
+from tui_search.engine.course.exercise_file import built_in_exercise
+from tui_search.engine.course.lesson import find_lesson, read_lesson
+from tui_search.engine.maps.load import load_map
+from tui_search.engine.run.recorded import Run
 from tui_search.tui.app import SearchApp
-from tui_search.tui.lesson_play import LessonPlay
-from tui_search.tui.session import Session
+from tui_search.tui.model.lesson_play import LessonPlay
+from tui_search.tui.model.session import Session
 
 
 def walk(name: str) -> list[Session]:
@@ -113,7 +113,7 @@ def test_the_tutorial_lesson_s_words_are_true_of_the_map() -> None:
     """Section 1 names the obstacles by the legend (their colour is the theme's); section 2's
     step 4 skips N and SE as obstacles and four visited cells; section 8's DFS expands START
     and the path's cells before the goal, never the goal."""
-    from tui_search.tui.code_trace import skipped
+    from tui_search.tui.view.code_trace import skipped
 
     texts = [section.text for section in read_lesson(find_lesson("tutorial"), "tutorial").sections]
     assert "dark" not in texts[0] and "(see the legend)" in texts[0]
@@ -131,7 +131,7 @@ def test_the_tutorial_lesson_s_words_are_true_of_the_map() -> None:
 
 
 def narration_lines(run: Run) -> str:
-    from tui_search.tui.narration import narrate
+    from tui_search.tui.view.narration import narrate
 
     return narrate(run, True)
 
@@ -235,8 +235,8 @@ def test_start_up_without_a_lesson_does_not_load_the_markdown_widget() -> None:
 
 @sync
 async def test_the_command_line_opens_a_lesson_file_beside_the_panes() -> None:
-    from tui_search.cli import build_app, build_parser, open_lesson
-    from tui_search.flags import load_problem
+    from tui_search.cli.flags import load_problem
+    from tui_search.cli.main import build_app, build_parser, open_lesson
 
     args = build_parser().parse_args(["--lesson", str(TEACHER)])
     assert not open_lesson(args)

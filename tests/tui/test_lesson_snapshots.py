@@ -6,8 +6,8 @@ from __future__ import annotations
 from tests.engine.test_lesson import LESSONS
 from tests.tui.test_app import wait_until
 from tests.tui.test_lesson import lesson_app
-from tui_search.engine.mapfile import load_map
-from tui_search.engine.semantics import Semantics
+from tui_search.engine.maps.load import load_map
+from tui_search.engine.search.choices import Semantics
 from tui_search.tui.app import SearchApp
 
 

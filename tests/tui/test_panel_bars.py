@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from tests.tui.test_app import wait_until
 from tests.tui.test_panels import PanelApp, sync, walled_goal_grid
-from tui_search.engine.run import Run
+from tui_search.engine.run.recorded import Run
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 
 

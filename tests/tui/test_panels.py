@@ -25,9 +25,10 @@ from textual.widget import Widget
 from tests.helpers import TUTORIAL_ROWS, grid_from_rows
 from tests.textual_internals import settle
 from tests.tui.test_tree_model import BFS_AFTER_FOUR
-from tui_search.engine.grid import Grid
-from tui_search.engine.run import Run
-from tui_search.tui import tree_model, tree_shape
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.run.recorded import Run
+from tui_search.tui.view import tree_listing as tree_model
+from tui_search.tui.view import tree_shape
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.line_panel import window_strip
 from tui_search.tui.widgets.scrollbars import scrollbar_cells

@@ -11,7 +11,7 @@ from textual.app import App, ComposeResult
 from textual.containers import Horizontal
 
 from tests.helpers import TUTORIAL_ROWS, grid_from_rows
-from tui_search.engine.run import Run
+from tui_search.engine.run.recorded import Run
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.search_tree import SearchTreePanel
 

@@ -12,13 +12,13 @@ from textual.widgets import Input
 
 from tests.tui.test_app import SIZE, screen_shown, sync, wait_until
 from tests.tui.test_files import TUTORIAL, answer, app_on, copy, untitled
-from tui_search.engine.mapfile import load_map
+from tui_search.engine.maps.load import load_map
 from tui_search.tui.app import SearchApp
-from tui_search.tui.file_access import FileAccess
-from tui_search.tui.screens.confirm_overwrite import ConfirmOverwriteScreen
-from tui_search.tui.screens.open_map import OpenMapScreen
-from tui_search.tui.screens.path_prompt import PathPrompt
-from tui_search.tui.screens.save_as import SaveAsScreen
+from tui_search.tui.dialogs.confirm_overwrite import ConfirmOverwriteScreen
+from tui_search.tui.dialogs.open_map import OpenMapScreen
+from tui_search.tui.dialogs.path_prompt import PathPrompt
+from tui_search.tui.dialogs.save_as import SaveAsScreen
+from tui_search.tui.model.file_rules import FileAccess
 from tui_search.tui.widgets.map_tree import MapTree
 
 

@@ -10,11 +10,11 @@ import re
 import pytest
 
 from tests.tui.test_app import SIZE, TUTORIAL, open_grid, stats, sync, tutorial_app, wait_until
-from tui_search import cli
-from tui_search.engine.grid import Grid
-from tui_search.engine.run import Run
-from tui_search.tui import playback
+from tui_search.cli import main as cli
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.run.recorded import Run
 from tui_search.tui.app import SearchApp
+from tui_search.tui.model import playback
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.key_bar import KeyBar

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from tests.tui.test_app import TUTORIAL, stats, sync, tutorial_app, wait_until
-from tui_search.engine.mapfile import load_map
+from tui_search.engine.maps.load import load_map
 from tui_search.tui.app import SearchApp
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.key_bar import KeyBar

@@ -11,12 +11,12 @@ from pathlib import Path
 from tests.engine.student_searches import bfs, dfs_recursive
 from tests.helpers import TUTORIAL, TUTORIAL_ROWS
 from tests.tui.test_app import sync, wait_until
-from tui_search.engine.mapfile import load_map
-from tui_search.engine.semantics import Semantics
-from tui_search.engine.trace_read import read_trace
-from tui_search.engine.trace_replay import replay_of
+from tui_search.engine.maps.load import load_map
+from tui_search.engine.search.choices import Semantics
+from tui_search.engine.traces.read import read_trace
+from tui_search.engine.traces.replay import replay_of
 from tui_search.tui.app import SearchApp
-from tui_search.tui.narration import narrate
+from tui_search.tui.view.narration import narrate
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.run_pane import RunPane

@@ -16,12 +16,12 @@ from textual.widgets import Input
 from tests.textual_internals import notifications
 from tests.tui.test_app import SIZE, screen_shown, sync, wait_until
 from tests.tui.test_files import TUTORIAL, answer, app_on, copy, type_name
-from tui_search.engine.mapfile import load_map
-from tui_search.engine.mapread import MapError
+from tui_search.engine.maps.load import load_map
+from tui_search.engine.maps.read import MapError
 from tui_search.tui.app import SearchApp
-from tui_search.tui.screens.confirm_overwrite import ConfirmOverwriteScreen
-from tui_search.tui.screens.save_as import SaveAsScreen
-from tui_search.tui.screens.save_refused import ChangedOnDiskScreen, DropEditsScreen, InPlaceScreen
+from tui_search.tui.dialogs.confirm_overwrite import ConfirmOverwriteScreen
+from tui_search.tui.dialogs.save_as import SaveAsScreen
+from tui_search.tui.dialogs.save_refused import ChangedOnDiskScreen, DropEditsScreen, InPlaceScreen
 
 OTHERS = "; another program was here\n"
 
@@ -253,7 +253,7 @@ async def test_any_other_refusal_is_one_line_and_keeps_the_prompt(
     def refuse(*args: object, **kwargs: object) -> None:
         raise MapError("x\x1b[2J.txt", "cannot save: no\nreason [/]")
 
-    monkeypatch.setattr("tui_search.tui.files.save_map", refuse)
+    monkeypatch.setattr("tui_search.tui.screens.file_commands.save_map", refuse)
     app = app_on(copy(TUTORIAL, tmp_path))
     async with app.run_test(size=SIZE) as pilot:
         await pilot.press("w")
@@ -277,7 +277,7 @@ async def test_opening_a_fifo_says_not_a_regular_file(tmp_path: Path) -> None:
 @sync
 async def test_reload_reads_the_map_with_the_terrain_table_it_was_opened_with(
         tmp_path: Path) -> None:
-    from tui_search.engine.terrain import parse_terrain
+    from tui_search.engine.maps.terrain import parse_terrain
 
     path = tmp_path / "swamp.txt"
     path.write_text("S.f\n..G\n")

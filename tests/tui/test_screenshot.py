@@ -11,10 +11,10 @@ from tests.textual_internals import notifications
 from tests.tui.test_app import SIZE, sync, tutorial_app, wait_until
 from tests.tui.test_files import TUTORIAL
 from tests.tui.test_themes import palette_run
-from tui_search.engine.filenames import describe_name
-from tui_search.engine.mapfile import load_map
+from tui_search.engine.maps.load import load_map
+from tui_search.engine.util.filenames import describe_name
 from tui_search.tui.app import SearchApp
-from tui_search.tui.file_access import FileAccess
+from tui_search.tui.model.file_rules import FileAccess
 
 
 def svgs(folder: Path) -> list[Path]:

@@ -10,13 +10,13 @@ from pathlib import Path
 
 from tests.tui.test_app import SIZE, screen_shown, sync, wait_until
 from tests.tui.test_files import TUTORIAL, copy, messages, type_name
-from tui_search.engine.mapfile import load_map
+from tui_search.engine.maps.load import load_map
 from tui_search.tui.app import SearchApp
 from tui_search.tui.config import Config, config_path
-from tui_search.tui.file_access import OFF_MESSAGE, FileAccess
-from tui_search.tui.screens.confirm_quit import ConfirmQuitScreen
-from tui_search.tui.screens.open_map import OpenMapScreen
-from tui_search.tui.screens.save_as import SaveAsScreen
+from tui_search.tui.dialogs.confirm_quit import ConfirmQuitScreen
+from tui_search.tui.dialogs.open_map import OpenMapScreen
+from tui_search.tui.dialogs.save_as import SaveAsScreen
+from tui_search.tui.model.file_rules import OFF_MESSAGE, FileAccess
 
 
 def served_app(path: Path | None, folder: Path | None) -> SearchApp:

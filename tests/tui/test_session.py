@@ -4,13 +4,13 @@ seek and the exercise, as plain unit tests (the screen only shows what these dec
 from __future__ import annotations
 
 from tests.helpers import TUTORIAL
-from tui_search.engine.exercise_file import built_in_exercise
-from tui_search.engine.exercises import grade
-from tui_search.engine.grid import Grid
-from tui_search.engine.mapfile import load_map
-from tui_search.engine.semantics import DEFAULT_SEMANTICS
-from tui_search.tui.seek import Seek
-from tui_search.tui.session import DEFAULT_COMPARE, NEEDS_ENDPOINTS, Session
+from tui_search.engine.course.exercise_file import built_in_exercise
+from tui_search.engine.course.grading import grade
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.maps.load import load_map
+from tui_search.engine.search.choices import DEFAULT_SEMANTICS
+from tui_search.tui.model.seek import Seek
+from tui_search.tui.model.session import DEFAULT_COMPARE, NEEDS_ENDPOINTS, Session
 
 
 def tutorial(**options: object) -> Session:
@@ -166,7 +166,7 @@ def test_the_settings_pick_what_c_compares_and_apply_their_rules() -> None:
 
 def test_x_cycles_through_an_exercise_file_given_at_start() -> None:
     from tests.helpers import ROOT
-    from tui_search.engine.exercise_file import load_exercise
+    from tui_search.engine.course.exercise_file import load_exercise
 
     mine = load_exercise(ROOT / "tests" / "data" / "exercises" / "greedy-not-optimal.toml")
     session = tutorial(exercise=mine)

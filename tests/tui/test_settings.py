@@ -11,11 +11,11 @@ from tests.tui.test_app import (
     tutorial_app,
     wait_until,
 )
-from tui_search.engine.mapfile import load_map
-from tui_search.engine.run import recording_of
-from tui_search.engine.semantics import Semantics
+from tui_search.engine.maps.load import load_map
+from tui_search.engine.run.recorded import recording_of
+from tui_search.engine.search.choices import Semantics
 from tui_search.tui.app import SearchApp
-from tui_search.tui.screens.settings import SettingsScreen
+from tui_search.tui.dialogs.settings import SettingsScreen
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.search_tree import SearchTreePanel
 

@@ -54,9 +54,9 @@ def test_a_discarded_step(snap_compare) -> None:
     'discarded 1' and says 'visit on expand'; the narration says the cell was taken off again
     and discarded."""
     from tests.tui.test_app import TUTORIAL
-    from tui_search.engine.mapfile import load_map
-    from tui_search.engine.run import Run, recording_of
-    from tui_search.engine.semantics import Semantics
+    from tui_search.engine.maps.load import load_map
+    from tui_search.engine.run.recorded import Run, recording_of
+    from tui_search.engine.search.choices import Semantics
     from tui_search.tui.app import SearchApp
 
     sem = Semantics(visit="expand")

@@ -5,7 +5,7 @@ before accepting it."""
 from __future__ import annotations
 
 from tests.tui.test_app import open_grid, tutorial_app
-from tui_search.engine.grid import Grid
+from tui_search.engine.maps.grid import Grid
 from tui_search.tui.app import SearchApp
 
 SIZE = (100, 30)

@@ -5,13 +5,13 @@ narration, several searches' names and the lockstep's sentence, the note and the
 from __future__ import annotations
 
 from tests.helpers import TUTORIAL
-from tui_search.engine.heuristics import INADMISSIBLE
-from tui_search.engine.mapfile import load_map
-from tui_search.engine.run import Run
-from tui_search.engine.semantics import Semantics
-from tui_search.tui.pieces import lay_out, line_text, text_of
-from tui_search.tui.session import LOCKSTEP, LOCKSTEP_SHORT, Session
-from tui_search.tui.status_lines import (
+from tui_search.engine.maps.load import load_map
+from tui_search.engine.run.recorded import Run
+from tui_search.engine.search.choices import Semantics
+from tui_search.engine.search.heuristics import INADMISSIBLE
+from tui_search.tui.model.session import LOCKSTEP, LOCKSTEP_SHORT, Session
+from tui_search.tui.view.pieces import lay_out, line_text, text_of
+from tui_search.tui.view.status_lines import (
     MAX_ROWS,
     PANE_ROWS,
     Status,

@@ -14,18 +14,18 @@ import pytest
 
 from tests.tui.test_app import MAPS, SIZE, at, sync, wait_until
 from tests.tui.test_themes import DEUTAN, NORMAL, PROTAN, palette_run, seen
-from tui_search.engine.grid import Grid
-from tui_search.engine.mapfile import load_map
-from tui_search.engine.run import Run
-from tui_search.engine.semantics import DEFAULT_SEMANTICS
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.maps.load import load_map
+from tui_search.engine.run.recorded import Run
+from tui_search.engine.search.choices import DEFAULT_SEMANTICS
 from tui_search.tui.app import SearchApp
-from tui_search.tui.cell_codes import GOAL, START, WALL
-from tui_search.tui.geometry import Geometry
-from tui_search.tui.map_edits import BRUSHES
-from tui_search.tui.narration import narrate
-from tui_search.tui.readout import describe
-from tui_search.tui.session import Session
-from tui_search.tui.themes import THEMES
+from tui_search.tui.model.map_edits import BRUSHES
+from tui_search.tui.model.session import Session
+from tui_search.tui.view.cell_codes import GOAL, START, WALL
+from tui_search.tui.view.geometry import Geometry
+from tui_search.tui.view.narration import narrate
+from tui_search.tui.view.readout import describe
+from tui_search.tui.view.themes import THEMES
 from tui_search.tui.widgets.cell_style import RAMP_COMPONENTS, cost_level, cost_mark
 from tui_search.tui.widgets.compare_table import CompareTable
 from tui_search.tui.widgets.grid_view import GridView
@@ -289,7 +289,7 @@ async def test_the_comparison_says_each_paths_moves_and_cost() -> None:
 async def test_start_and_goal_put_on_costed_cells_with_the_keys_keep_their_costs() -> None:
     """The issue's rule: a move costs the cell it enters, the start's own cost is never paid,
     and a start or goal placed on a digit keeps that cell's cost while the app runs."""
-    from tui_search.engine.mapfile import parse_map_text
+    from tui_search.engine.maps.load import parse_map_text
 
     grid = parse_map_text("S9.4G\n")
     app = SearchApp(grid, algorithm="ucs")

@@ -9,7 +9,7 @@ import pytest
 
 from tests.tui.test_app import MAPS
 from tests.tui.test_snapshots import SIZE
-from tui_search.engine.mapfile import load_map
+from tui_search.engine.maps.load import load_map
 from tui_search.tui.app import SearchApp
 
 MUD = MAPS / "terrain-mud.txt"

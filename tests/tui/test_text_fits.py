@@ -17,19 +17,19 @@ from textual.widgets import Input, Label, Static
 
 from tests.textual_internals import repainted
 from tests.tui.test_app import TUTORIAL, sync, wait_until
-from tui_search.engine.mapfile import load_map
+from tui_search.engine.maps.load import load_map
 from tui_search.tui.app import SearchApp
-from tui_search.tui.pieces import Line, Parts, Piece, lay_out, text_of, wrap
-from tui_search.tui.screens.open_map import OpenMapScreen
-from tui_search.tui.screens.save_as import SaveAsScreen
+from tui_search.tui.dialogs.open_map import OpenMapScreen
+from tui_search.tui.dialogs.save_as import SaveAsScreen
+from tui_search.tui.view.pieces import Line, Parts, Piece, lay_out, text_of, wrap
 from tui_search.tui.widgets.cell_readout import CellReadout
 from tui_search.tui.widgets.challenge import ChallengePanel
 from tui_search.tui.widgets.code_panel import CodePanel
 from tui_search.tui.widgets.compare_table import CompareTable
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.line_panel import LinePanel
-from tui_search.tui.widgets.parts_lines import PartsLines
 from tui_search.tui.widgets.stats import Stats
+from tui_search.tui.widgets.wrapped_lines import PartsLines
 
 SIZES = [(80, 24), (100, 30), (120, 40), (160, 48), (200, 60)]
 
@@ -82,7 +82,7 @@ def _nothing(app: SearchApp) -> list[str]:
 def _counts(app: SearchApp) -> list[str]:
     """Every search's step and nodes expanded, in its pane's status lines (what the lessons
     count: they wrap onto another row, never go)."""
-    from tui_search.tui.narration import status_parts
+    from tui_search.tui.view.narration import status_parts
 
     return [f"{label} {value}" for run in app.session.runs
             for label, value in status_parts(run) if label in ("step", "expanded")]

@@ -16,12 +16,12 @@ from textual.command import CommandList, CommandPalette
 
 from tests.textual_internals import notifications, repainted
 from tests.tui.test_app import SIZE, TUTORIAL, sync, tutorial_app, wait_until
-from tui_search.engine.algorithms import ALGORITHMS
-from tui_search.engine.mapfile import load_map
+from tui_search.engine.maps.load import load_map
+from tui_search.engine.search.registry import ALGORITHMS
 from tui_search.tui import config as config_module
 from tui_search.tui.app import SearchApp
 from tui_search.tui.config import CONFIG_DIR_ENV, Config, config_path
-from tui_search.tui.themes import DEFAULT_THEME, THEMES
+from tui_search.tui.view.themes import DEFAULT_THEME, THEMES
 from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.stats import Stats
 

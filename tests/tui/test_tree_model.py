@@ -12,9 +12,9 @@ from hypothesis import strategies as st
 from tests.engine.test_core import semantics
 from tests.engine.test_search import random_grids
 from tests.helpers import TUTORIAL_ROWS, grid_from_rows
-from tui_search.engine.run import Run
-from tui_search.tui import tree_model
-from tui_search.tui.tree_model import TreeModel
+from tui_search.engine.run.recorded import Run
+from tui_search.tui.view import tree_listing as tree_model
+from tui_search.tui.view.tree_listing import TreeModel
 
 
 def lines(model: TreeModel) -> list[str]:
@@ -30,7 +30,7 @@ def at(algorithm: str, k: int, sem=None) -> tuple[Run, TreeModel]:
 
 
 def test_the_model_imports_without_textual() -> None:
-    code = ("import sys, tui_search.tui.tree_model; "
+    code = ("import sys, tui_search.tui.view.tree_listing; "
             "print(any(m.split('.')[0] in ('textual', 'rich') for m in sys.modules))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "False"

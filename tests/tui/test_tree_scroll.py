@@ -16,7 +16,7 @@ from tests.helpers import TUTORIAL
 from tests.textual_internals import repainted
 from tests.tui.test_app import sync, wait_until
 from tests.tui.test_replay import replay_app
-from tui_search.engine.mapfile import load_map
+from tui_search.engine.maps.load import load_map
 from tui_search.tui.app import SearchApp
 from tui_search.tui.widgets.line_panel import words_from
 from tui_search.tui.widgets.search_tree import SearchTreePanel, label_span, scroll_column

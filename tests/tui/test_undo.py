@@ -10,7 +10,7 @@ from textual.app import App
 from textual.binding import Binding
 
 from tests.tui.test_app import SIZE, TUTORIAL, at, sync, tutorial_app, wait_until
-from tui_search.engine.mapfile import load_map
+from tui_search.engine.maps.load import load_map
 from tui_search.tui.app import SearchApp
 from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.key_bar import KeyBar

@@ -1,5 +1,5 @@
 """The app: the themes, the config file, the screens and start-up.  What is shown lives in a
-Textual-free :class:`~tui_search.tui.session.Session`; the
+Textual-free :class:`~tui_search.tui.model.session.Session`; the
 :class:`~tui_search.tui.screens.main.MainScreen` shows it, a pane a search, and takes the keys.
 """
 
@@ -12,23 +12,31 @@ from typing import TYPE_CHECKING
 from textual.app import App
 from textual.command import Provider
 from textual.screen import Screen
+from textual.theme import Theme
 
-from tui_search.engine.algorithms import DEFAULT_ALGORITHM
-from tui_search.engine.atomic import os_reason
-from tui_search.engine.filenames import describe_name
-from tui_search.engine.grid import Grid
-from tui_search.engine.run import MAX_STEPS
-from tui_search.engine.semantics import DEFAULT_SEMANTICS, Semantics
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.run.recorded import MAX_STEPS
+from tui_search.engine.search.choices import DEFAULT_SEMANTICS, Semantics
+from tui_search.engine.search.registry import DEFAULT_ALGORITHM
+from tui_search.engine.util.atomic import os_reason
+from tui_search.engine.util.filenames import describe_name
 from tui_search.tui.config import Config
-from tui_search.tui.file_access import FileAccess
+from tui_search.tui.model.file_rules import FileAccess
+from tui_search.tui.model.session import Session
 from tui_search.tui.screens.main import MainScreen
-from tui_search.tui.session import Session
-from tui_search.tui.themes import DEFAULT_THEME, THEMES, map_defaults, textual_themes
+from tui_search.tui.view.themes import DEFAULT_THEME, THEMES, map_defaults
 
 if TYPE_CHECKING:
-    from tui_search.engine.exercise_file import Exercise
-    from tui_search.engine.lesson import Lesson
-    from tui_search.engine.trace_replay import Replay
+    from tui_search.engine.course.exercise_file import Exercise
+    from tui_search.engine.course.lesson import Lesson
+    from tui_search.engine.traces.replay import Replay
+
+
+def textual_themes() -> list[Theme]:
+    """The app's themes (:data:`~tui_search.tui.view.themes.THEMES`, plain data) as Textual's
+    :class:`~textual.theme.Theme` objects, to register."""
+    return [Theme(name=spec.name, dark=spec.dark, variables=dict(spec.variables), **spec.colours)
+            for spec in THEMES.values()]
 
 
 def _search_commands() -> type[Provider]:
@@ -62,18 +70,18 @@ class SearchApp(App[int]):
         lesson: Lesson | None = None,
         replay: Replay | None = None,
     ) -> None:
-        """The session's arguments (:class:`~tui_search.tui.session.Session`), and: ``theme``
+        """The session's arguments (:class:`~tui_search.tui.model.session.Session`), and: ``theme``
         for this run only (``--theme``; without it, the one the config file remembers);
         ``config``, the user's file by default (:func:`~tui_search.tui.config.config_path`);
         ``file_access``, where saving and opening may go
-        (:class:`~tui_search.tui.file_access.FileAccess`: anywhere by default; the served
+        (:class:`~tui_search.tui.model.file_rules.FileAccess`: anywhere by default; the served
         app's is narrower); ``lesson``, a lesson shown beside the panes from its first
         section; ``replay``, a trace beside the search it matches (``--replay``)."""
         super().__init__()
         self.session = Session(grid, path, algorithm, semantics, max_steps, unsaved_name,
                                optimal_cost, exercise, compare, replay)
         if lesson is not None:
-            from tui_search.tui.lesson_play import LessonPlay  # only for a lesson
+            from tui_search.tui.model.lesson_play import LessonPlay  # only for a lesson
 
             self.session.lesson = LessonPlay(lesson)
             self.session.lesson.open(self.session)

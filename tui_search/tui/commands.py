@@ -16,12 +16,12 @@ from functools import partial
 from textual.binding import Binding
 from textual.command import DiscoveryHit, Hit, Hits, Provider
 
-from tui_search.engine.algorithms import ALGORITHMS
-from tui_search.engine.compare import parse_compare
-from tui_search.engine.exercise_file import BUILT_IN_FILES, built_in_exercise
-from tui_search.tui.keys import KEYS
-from tui_search.tui.map_edits import BRUSHES, brush_name
-from tui_search.tui.themes import THEMES
+from tui_search.engine.course.exercise_file import BUILT_IN_FILES, built_in_exercise
+from tui_search.engine.search.compare import parse_compare
+from tui_search.engine.search.registry import ALGORITHMS
+from tui_search.tui.model.map_edits import BRUSHES, brush_name
+from tui_search.tui.screens.keys import KEYS
+from tui_search.tui.view.themes import THEMES
 
 #: Comparisons offered by name: the tutorial's, the next lesson's, and A*'s heuristics.
 COMPARISONS = {

@@ -21,9 +21,9 @@ import os
 from pathlib import Path
 from typing import Any
 
-from tui_search.engine.atomic import os_reason, write_atomically
-from tui_search.engine.mapread import MapError
-from tui_search.tui.themes import THEMES, theme_choices
+from tui_search.engine.maps.read import MapError
+from tui_search.engine.util.atomic import os_reason, write_atomically
+from tui_search.tui.view.themes import THEMES, theme_choices
 
 CONFIG_DIR_ENV = "TUI_SEARCH_CONFIG_DIR"
 FILE_NAME = "config.json"

@@ -14,16 +14,16 @@ from typing import TYPE_CHECKING
 
 from textual.worker import get_current_worker
 
-from tui_search.engine.exercises import LIVE_CELLS, grade
-from tui_search.tui.narration import group_digits
+from tui_search.engine.course.grading import LIVE_CELLS, grade
+from tui_search.engine.util.numbers import group_digits
 
 if TYPE_CHECKING:
     from textual.screen import Screen
 
-    from tui_search.engine.exercise_file import Exercise
-    from tui_search.engine.exercises import Verdict
-    from tui_search.engine.grid import Grid
-    from tui_search.tui.session import Session
+    from tui_search.engine.course.exercise_file import Exercise
+    from tui_search.engine.course.grading import Verdict
+    from tui_search.engine.maps.grid import Grid
+    from tui_search.tui.model.session import Session
     from tui_search.tui.widgets.challenge import ChallengePanel
 
 #: On a map too big to check an exercise at each edit, the check waits for the edits to pause

@@ -7,21 +7,21 @@ from typing import TYPE_CHECKING, ClassVar, cast
 
 from textual.binding import BindingType
 
-from tui_search.tui import playback
-from tui_search.tui.keys import KEYS
-from tui_search.tui.map_edits import brush_name
+from tui_search.tui.model import playback
+from tui_search.tui.model.map_edits import brush_name
+from tui_search.tui.screens.keys import KEYS
 from tui_search.tui.screens.panes import NO_ROOM_FOR_CODE, PanesScreen
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.key_bar import KeyBar
 
 if TYPE_CHECKING:  # the settings' module is imported when the dialog first opens
-    from tui_search.tui.screens.settings_choice import SettingsChoice
+    from tui_search.tui.dialogs.settings_choice import SettingsChoice
     from tui_search.tui.widgets.lesson_panel import LessonPanel
 
 
 class MainScreen(PanesScreen):
-    """The panes, and every key of :mod:`~tui_search.tui.keys`."""
+    """The panes, and every key of :mod:`~tui_search.tui.screens.keys`."""
 
     BINDINGS: ClassVar[list[BindingType]] = KEYS
 
@@ -127,8 +127,8 @@ class MainScreen(PanesScreen):
             cast("LessonPanel", panel).scroll_by_half(by)
 
     def action_settings(self) -> None:
-        from tui_search.engine.algorithms import get_algorithm
-        from tui_search.tui.screens.settings import SettingsScreen  # only when asked
+        from tui_search.engine.search.registry import get_algorithm
+        from tui_search.tui.dialogs.settings import SettingsScreen  # only when asked
 
         self.playback.stop()
         session = self.session
@@ -330,7 +330,7 @@ class MainScreen(PanesScreen):
         self.files.quit()
 
     def action_help(self) -> None:
-        from tui_search.tui.screens.help import HelpScreen  # only when asked: start-up time
+        from tui_search.tui.dialogs.help import HelpScreen  # only when asked: start-up time
 
         self.app.push_screen(HelpScreen(self.views[0]))
 

@@ -22,27 +22,27 @@ from textual.screen import Screen
 from textual.widget import AwaitMount, Widget
 from textual.widgets import Static
 
-from tui_search.engine.filenames import describe_name
-from tui_search.engine.grid import Cell
-from tui_search.tui import playback
-from tui_search.tui.file_access import FileAccess
-from tui_search.tui.keys import KEY_IMPORTANCE
-from tui_search.tui.layout import PANE_STATS_HEIGHT, arrange, lesson_width
-from tui_search.tui.readout import describe_each
+from tui_search.engine.maps.grid import Cell
+from tui_search.engine.util.filenames import describe_name
+from tui_search.tui.model import playback
+from tui_search.tui.model.file_rules import FileAccess
+from tui_search.tui.model.session import NEEDS_ENDPOINTS, Before, Session
+from tui_search.tui.screens.keys import KEY_IMPORTANCE
 from tui_search.tui.screens.playback_driver import PlaybackDriver
-from tui_search.tui.session import NEEDS_ENDPOINTS, Before, Session
-from tui_search.tui.status_lines import screen_rows, screen_status
+from tui_search.tui.view.layout import PANE_STATS_HEIGHT, arrange, lesson_width
+from tui_search.tui.view.readout import describe_each
+from tui_search.tui.view.status_lines import screen_rows, screen_status
 from tui_search.tui.widgets.cell_readout import CellReadout
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.key_bar import KeyBar
+from tui_search.tui.widgets.lazy_parts import Later, challenge_panel, compare_table, show_part
 from tui_search.tui.widgets.legend import Legend
-from tui_search.tui.widgets.parts import Later, challenge_panel, compare_table, show_part
 from tui_search.tui.widgets.run_pane import RunPane, own_rows
 from tui_search.tui.widgets.stats import Stats
 
 if TYPE_CHECKING:
-    from tui_search.tui.files import FileCommands
+    from tui_search.tui.screens.file_commands import FileCommands
     from tui_search.tui.widgets.challenge import ChallengePanel
     from tui_search.tui.widgets.compare_table import CompareTable
     from tui_search.tui.widgets.lesson_panel import LessonPanel
@@ -78,7 +78,7 @@ class PanesScreen(Screen[None]):
     def files(self) -> FileCommands:
         """Saving, opening, generating and quitting, made when first used: the first frame
         imports none of it (-1.6 M instructions: benchmarks/README.md, session 14)."""
-        from tui_search.tui.files import FileCommands
+        from tui_search.tui.screens.file_commands import FileCommands
 
         return FileCommands(self)
 
@@ -306,7 +306,7 @@ class PanesScreen(Screen[None]):
         self.show_readout()
 
     def show_status(self) -> None:
-        """The status lines (:func:`~tui_search.tui.status_lines.screen_status`) and the key bar:
+        """The status lines (:func:`~tui_search.tui.view.status_lines.screen_status`) and the key bar:
         all a seek's progress changes."""
         session = self.session
         status = screen_status(session, self.size.width,

@@ -3,7 +3,7 @@
 
 Playback is a paused interval timer whose ticks do what ``n`` does, several steps per tick at
 high speeds; ``end`` and ``home`` on a big run move in time-boxed slices
-(:class:`~tui_search.tui.seek.Seek`) so keys are still answered.  The session decides where
+(:class:`~tui_search.tui.model.seek.Seek`) so keys are still answered.  The session decides where
 the runs go; this part only times it and asks the screen to show what changed.
 """
 
@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from tui_search.tui import playback
+from tui_search.tui.model import playback
 
 if TYPE_CHECKING:  # (the protocol too: nothing of it is needed to run, so no class is made)
     from collections.abc import Callable
@@ -19,8 +19,8 @@ if TYPE_CHECKING:  # (the protocol too: nothing of it is needed to run, so no cl
 
     from textual.timer import Timer
 
-    from tui_search.engine.grid import Cell
-    from tui_search.tui.session import Before, Session
+    from tui_search.engine.maps.grid import Cell
+    from tui_search.tui.model.session import Before, Session
 
     class Host(Protocol):
         """What the driver needs of the screen it drives (the screen of panes: named here,

@@ -1,5 +1,5 @@
 """The line under the map that answers "what is this cell?" for the cell under the cursor, or
-under the mouse while it hovers over the map (the text is :func:`~tui_search.tui.readout.
+under the mouse while it hovers over the map (the text is :func:`~tui_search.tui.view.readout.
 describe`'s).  Drawn with the line API, repainted only when its text changes (the app tells it
 on every step), and wrapped to the width: in compare mode each search's part starts a row when
 it does not fit on the one before."""
@@ -8,8 +8,8 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-from tui_search.tui.pieces import Line, Piece
-from tui_search.tui.widgets.parts_lines import PartsLines
+from tui_search.tui.view.pieces import Line, Piece
+from tui_search.tui.widgets.wrapped_lines import PartsLines
 
 
 class CellReadout(PartsLines):

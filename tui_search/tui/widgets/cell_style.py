@@ -15,10 +15,19 @@ from collections.abc import Callable, Sequence
 from rich.segment import Segment
 from rich.style import Style
 
-from tui_search.engine.grid import Grid
-from tui_search.engine.run import Run
-from tui_search.tui.cell_codes import BY_RANK, COMPONENTS, FREE, GLYPHS, GOAL, RANK, START, WALL
-from tui_search.tui.cell_labels import cell_line, number_text
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.run.recorded import Run
+from tui_search.tui.view.cell_codes import (
+    BY_RANK,
+    COMPONENTS,
+    FREE,
+    GLYPHS,
+    GOAL,
+    RANK,
+    START,
+    WALL,
+)
+from tui_search.tui.view.cell_labels import cell_line, number_text
 
 #: The ramp's steps: costs up to 3, 5, 7, and above (a cost of 1 or less is not shaded).
 RAMP_LEVELS = 4

@@ -3,7 +3,7 @@ being edited.
 
 It quotes the exercise under its title, shows its searches' figures on the map as it is now, and says
 **Solved** the moment an edit satisfies the exercise -- or that an edit unsolved it.  What the
-figures are and whether they solve it comes from :mod:`tui_search.engine.exercises`; the app
+figures are and whether they solve it comes from :mod:`tui_search.engine.course.grading`; the app
 pushes each new verdict with :meth:`ChallengePanel.show`.
 """
 
@@ -15,8 +15,8 @@ from rich.text import Text
 from textual.widgets import Static
 
 if TYPE_CHECKING:  # the exercise modules: imported once one is shown (tui/session.py)
-    from tui_search.engine.exercise_file import Exercise
-    from tui_search.engine.exercises import Verdict
+    from tui_search.engine.course.exercise_file import Exercise
+    from tui_search.engine.course.grading import Verdict
 
 
 class ChallengePanel(Static):

@@ -1,6 +1,6 @@
 """The Code panel: the pseudocode of the pane's search, generated from its algorithm and its
-choices (:mod:`tui_search.engine.pseudocode`), with the lines the step at the run's position
-executed lit (:mod:`tui_search.tui.code_trace`)::
+choices (:mod:`tui_search.engine.search.pseudocode`), with the lines the step at the run's position
+executed lit (:mod:`tui_search.tui.view.code_trace`)::
 
       4 while the frontier is not empty:
     ▶ 5   node ← take off the front of the queue
@@ -9,7 +9,7 @@ executed lit (:mod:`tui_search.tui.code_trace`)::
 A lit line starts with ``▶`` as well as taking the lit colour, so it reads without colour.  A
 line longer than the panel wraps under its own words (no number), so the code fits any width;
 the panel keeps the most specific lit line in view (the skip, the discard, the goal test the
-narration names: :func:`~tui_search.tui.code_trace.focus_line`), with the first lit one above
+narration names: :func:`~tui_search.tui.view.code_trace.focus_line`), with the first lit one above
 it when both fit.  It repaints only the rows whose text or light
 changed, as the other line panels do.
 """
@@ -21,14 +21,14 @@ from typing import TYPE_CHECKING, Any, ClassVar
 
 from textual.geometry import Region, Size
 
-from tui_search.tui.code_trace import code_of, focus_line, lit_lines
-from tui_search.tui.pieces import Parts
+from tui_search.tui.view.code_trace import code_of, focus_line, lit_lines
+from tui_search.tui.view.pieces import Parts
 from tui_search.tui.widgets.line_panel import LinePanel
 from tui_search.tui.widgets.scrollbars import set_virtual_size
 
 if TYPE_CHECKING:
-    from tui_search.engine.pseudocode import Pseudocode
-    from tui_search.engine.run import Run
+    from tui_search.engine.run.recorded import Run
+    from tui_search.engine.search.pseudocode import Pseudocode
 
 #: The mark of a lit line, and the room a line's number takes after it.
 LIT_MARK = "▶"

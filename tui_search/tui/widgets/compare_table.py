@@ -1,6 +1,6 @@
 """Compare mode's table: a row a search with its figures at the position, live.
 
-The cells are the command line's (:func:`~tui_search.engine.compare.table_cells`), so the
+The cells are the command line's (:func:`~tui_search.engine.search.compare.table_cells`), so the
 table on screen and ``--headless --compare`` print the same numbers; a run still going says
 which step it is at, and the marks on the fewest expanded and the cheapest path appear once
 every run is done.  Redrawn on every step, so drawn with the line API; a line wider than
@@ -11,7 +11,8 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-from tui_search.engine.compare import (
+from tui_search.engine.run.recorded import Run
+from tui_search.engine.search.compare import (
     MARKS_KEY,
     TableRow,
     comparison,
@@ -19,9 +20,8 @@ from tui_search.engine.compare import (
     table_cells,
     table_lines,
 )
-from tui_search.engine.run import Run
-from tui_search.tui.pieces import Parts, plain
-from tui_search.tui.widgets.parts_lines import PartsLines
+from tui_search.tui.view.pieces import Parts, plain
+from tui_search.tui.widgets.wrapped_lines import PartsLines
 
 
 def table_rows(labels: list[str], runs: list[Run]) -> tuple[list[TableRow], list[int | None]]:

@@ -18,7 +18,7 @@ student sees which end is which.
 
 A narrow panel drops the hints (and "stale") before any figure, then presses the figures
 closer together; an entry still wider than the panel takes more rows, its figures under its
-cell (:mod:`~tui_search.tui.widgets.frontier_rows`: the move and the marker go first, never a
+cell (:mod:`~tui_search.tui.view.frontier_rows`: the move and the marker go first, never a
 figure), and the lines above the entries wrap to the panel's width.
 
 In the quiz the entries are the answers to pick from: a click on an entry's line, or ``up`` /
@@ -37,11 +37,10 @@ from textual.binding import Binding, BindingType
 from textual.geometry import Size
 from textual.message import Message
 
-from tui_search.engine.algorithms import Frontier
-from tui_search.engine.grid import Cell
-from tui_search.tui.narration import group_digits
-from tui_search.tui.pieces import Line, Parts, length, plain, wrap
-from tui_search.tui.widgets.frontier_rows import (
+from tui_search.engine.maps.grid import Cell
+from tui_search.engine.search.registry import Frontier
+from tui_search.engine.util.numbers import group_digits
+from tui_search.tui.view.frontier_rows import (
     HINT_GAP,
     EntryRows,
     column_widths,
@@ -50,7 +49,7 @@ from tui_search.tui.widgets.frontier_rows import (
     entry_width,
     fit_entry,
 )
-from tui_search.tui.widgets.frontier_text import (
+from tui_search.tui.view.frontier_text import (
     DIR_W,
     describe_empty,
     discarded_line,
@@ -59,11 +58,12 @@ from tui_search.tui.widgets.frontier_text import (
     legends,
     titles,
 )
+from tui_search.tui.view.pieces import Line, Parts, length, plain, wrap
 from tui_search.tui.widgets.line_panel import LinePanel
 from tui_search.tui.widgets.scrollbars import set_virtual_size
 
 if TYPE_CHECKING:
-    from tui_search.engine.run import Run
+    from tui_search.engine.run.recorded import Run
 
 
 class FrontierPanel(LinePanel):

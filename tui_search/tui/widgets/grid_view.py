@@ -1,7 +1,7 @@
 """The map, drawn with Textual's line API (:mod:`~tui_search.tui.widgets.map_lines` says what
 each terminal row shows: cells at a zoom, or the overview's blocks).
 
-Where each cell goes is one :class:`~tui_search.tui.geometry.Geometry`, which the drawing, the
+Where each cell goes is one :class:`~tui_search.tui.view.geometry.Geometry`, which the drawing, the
 mouse, the scrolling and the overview share.  By default cells are the largest at which the
 whole map fits; ``zoom`` changes their size, and out of the smallest is the overview.
 
@@ -20,11 +20,11 @@ from textual.message import Message
 from textual.scroll_view import ScrollView
 from textual.strip import Strip
 
-from tui_search.engine.grid import Cell, Grid
-from tui_search.engine.run import Run
-from tui_search.tui.cell_codes import COMPONENTS
-from tui_search.tui.cell_labels import LABEL_MODES
-from tui_search.tui.geometry import Geometry, snapped
+from tui_search.engine.maps.grid import Cell, Grid
+from tui_search.engine.run.recorded import Run
+from tui_search.tui.view.cell_codes import COMPONENTS
+from tui_search.tui.view.cell_labels import LABEL_MODES
+from tui_search.tui.view.geometry import Geometry, snapped
 from tui_search.tui.widgets.cell_style import RAMP_COMPONENTS, CellLooks, swatches
 from tui_search.tui.widgets.line_panel import CachedStyles
 from tui_search.tui.widgets.map_lines import map_line
@@ -71,7 +71,7 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
     GridView {
         background: $surface;
         color: $foreground;
-        /* The app's theme variables (tui_search/tui/themes.py): a theme recolours the map. */
+        /* The app's theme variables (tui_search/tui/view/themes.py): a theme recolours the map. */
         & > .grid-view--free { color: $map-free; }
         & > .grid-view--wall { color: $map-wall; }
         & > .grid-view--start { background: $map-start; color: $map-start-text; text-style: bold; }

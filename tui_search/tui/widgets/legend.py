@@ -9,7 +9,7 @@ from rich.text import Text
 from textual.geometry import Size
 from textual.widget import Widget
 
-from tui_search.tui.cell_codes import (
+from tui_search.tui.view.cell_codes import (
     COMPONENTS,
     CURRENT,
     EXPANDED,

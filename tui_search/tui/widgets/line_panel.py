@@ -23,7 +23,7 @@ from textual.scroll_view import ScrollView
 from textual.strip import Strip
 from textual.widget import Widget
 
-from tui_search.tui.pieces import Parts
+from tui_search.tui.view.pieces import Parts
 from tui_search.tui.widgets.scrollbars import QuietScrollbars, fit_bars, refresh_rows
 
 

@@ -1,16 +1,16 @@
 """The map's lines: what :meth:`GridView.render_line <tui_search.tui.widgets.grid_view.GridView.
 render_line>` draws on each terminal row, from the view's grid, run, cursor and
-:class:`~tui_search.tui.geometry.Geometry` -- never a widget per cell, so a 512x512 map costs
+:class:`~tui_search.tui.view.geometry.Geometry` -- never a widget per cell, so a 512x512 map costs
 what the visible part costs.
 
 * **cells** -- each map cell is 2x1, 4x2, 6x3 ... characters and carries a glyph as well as a
-  colour, so the picture reads without colour too (see :data:`~tui_search.tui.cell_codes.GLYPHS`,
+  colour, so the picture reads without colour too (see :data:`~tui_search.tui.view.cell_codes.GLYPHS`,
   which the legend shows).  Cells at least 4 wide also carry a label
-  (:mod:`~tui_search.tui.cell_labels`): the arrow of the move that reached the cell and, where
+  (:mod:`~tui_search.tui.view.cell_labels`): the arrow of the move that reached the cell and, where
   there is room, its depth or its costs;
 * **overview** -- half blocks (``▀`` with a foreground and a background colour), each half
   standing for a block of cells drawn by the state that matters most in it (see
-  :data:`~tui_search.tui.cell_codes.RANK`), so every row and column of a 512x512 map shows in a
+  :data:`~tui_search.tui.view.cell_codes.RANK`), so every row and column of a 512x512 map shows in a
   140x45 terminal; a free block on a map with terrain takes the ramp's colour of its dearest
   cell (:func:`~tui_search.tui.widgets.cell_style.block_costs`).
 """
@@ -23,7 +23,7 @@ from typing import TYPE_CHECKING
 from rich.segment import Segment
 from textual.strip import Strip
 
-from tui_search.tui.cell_codes import half_blocks
+from tui_search.tui.view.cell_codes import half_blocks
 from tui_search.tui.widgets.cell_style import (
     CURSOR,
     MARKED,
@@ -41,9 +41,9 @@ if TYPE_CHECKING:
     from rich.style import Style
     from textual.geometry import Offset, Region
 
-    from tui_search.engine.grid import Cell, Grid
-    from tui_search.engine.run import Run
-    from tui_search.tui.geometry import Geometry
+    from tui_search.engine.maps.grid import Cell, Grid
+    from tui_search.engine.run.recorded import Run
+    from tui_search.tui.view.geometry import Geometry
     from tui_search.tui.widgets.cell_style import CellLooks
 
     class MapView(Protocol):

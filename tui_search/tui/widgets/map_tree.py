@@ -16,8 +16,8 @@ from textual.widgets import DirectoryTree
 from textual.widgets.directory_tree import DirEntry
 from textual.widgets.tree import TreeNode
 
-from tui_search.engine.filenames import describe_name
-from tui_search.tui.file_access import MAP_ENDINGS
+from tui_search.engine.util.filenames import describe_name
+from tui_search.tui.model.file_rules import MAP_ENDINGS
 
 if TYPE_CHECKING:
     from typing_extensions import Self  # typing's from Python 3.11
@@ -61,7 +61,7 @@ class MapTree(DirectoryTree):
             return False
 
     def process_label(self, label: TextType) -> Text:
-        """Each name as :func:`~tui_search.engine.filenames.describe_name` shows it."""
+        """Each name as :func:`~tui_search.engine.util.filenames.describe_name` shows it."""
         if isinstance(label, str):
             label = describe_name(label)
         return super().process_label(label)

@@ -2,7 +2,7 @@
 discipline) and its search tree.  Every search shown is a pane, one or four of them.
 
 The screen pushes a run to it (:meth:`RunPane.show`) and tells it how to lay itself out
-(:meth:`RunPane.lay_out`, from :func:`~tui_search.tui.layout.arrange`); layout beyond that is
+(:meth:`RunPane.lay_out`, from :func:`~tui_search.tui.view.layout.arrange`); layout beyond that is
 ``app.tcss``'s.
 """
 
@@ -15,13 +15,13 @@ from textual.containers import Vertical
 from textual.widget import Widget
 from textual.widgets import Static
 
-from tui_search.engine.grid import Cell, Grid
-from tui_search.engine.run import Run
-from tui_search.tui.layout import Arrangement
-from tui_search.tui.status_lines import search_status
+from tui_search.engine.maps.grid import Cell, Grid
+from tui_search.engine.run.recorded import Run
+from tui_search.tui.view.layout import Arrangement
+from tui_search.tui.view.status_lines import search_status
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.grid_view import GridView
-from tui_search.tui.widgets.parts import Later, code_panel, show_part
+from tui_search.tui.widgets.lazy_parts import Later, code_panel, show_part
 from tui_search.tui.widgets.search_tree import SearchTreePanel
 from tui_search.tui.widgets.stats import Stats
 

@@ -10,7 +10,7 @@
           └─ ○ NE (2,1)
 
 What it lists, in which view (the whole tree, or focused on the path to the node being
-expanded), is :mod:`tui_search.tui.tree_model`'s; this widget gives each of the model's roles
+expanded), is :mod:`tui_search.tui.view.tree_listing`'s; this widget gives each of the model's roles
 its component class (so a theme colours them), keeps the node being expanded in view and
 repaints only the lines that changed.
 """
@@ -22,14 +22,14 @@ from typing import TYPE_CHECKING, Any, ClassVar
 
 from textual.geometry import Size
 
-from tui_search.tui.pieces import Parts
-from tui_search.tui.tree_model import GLYPH_EXPANDED, GLYPH_FRONTIER, GLYPH_GOAL, TreeModel
-from tui_search.tui.tree_model import Parts as TreeParts
+from tui_search.tui.view.pieces import Parts
+from tui_search.tui.view.tree_listing import GLYPH_EXPANDED, GLYPH_FRONTIER, GLYPH_GOAL, TreeModel
+from tui_search.tui.view.tree_listing import Parts as TreeParts
 from tui_search.tui.widgets.line_panel import LinePanel
 from tui_search.tui.widgets.scrollbars import set_virtual_size
 
 if TYPE_CHECKING:
-    from tui_search.engine.run import Run
+    from tui_search.engine.run.recorded import Run
 
 #: The model's roles are these component classes without the prefix.
 PREFIX = "search-tree--"

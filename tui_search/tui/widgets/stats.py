@@ -1,9 +1,9 @@
 """The status lines under the map, and a pane's own: the counts, and what the search just did
-in the tutorial's words; what they say is :mod:`tui_search.tui.status_lines`'s.
+in the tutorial's words; what they say is :mod:`tui_search.tui.view.status_lines`'s.
 
 Redrawn on every step, so they are drawn with the line API (a ``Static`` rebuilt its content
 through Textual's markup and visual pipeline on every step: a tenth of a step), wrapped to the
-widget's width by :class:`~tui_search.tui.widgets.parts_lines.PartsLines`: a count is never
+widget's width by :class:`~tui_search.tui.widgets.wrapped_lines.PartsLines`: a count is never
 split from its label, and when the rows run out the figures a student can do without go first
 (the playing speed, the frontier's peak, ...), never the narration or the bound.
 """
@@ -15,9 +15,9 @@ from typing import ClassVar
 from textual import events
 from textual.message import Message
 
-from tui_search.tui.pieces import Line, line_text, text_of
-from tui_search.tui.status_lines import MAX_ROWS
-from tui_search.tui.widgets.parts_lines import PartsLines
+from tui_search.tui.view.pieces import Line, line_text, text_of
+from tui_search.tui.view.status_lines import MAX_ROWS
+from tui_search.tui.widgets.wrapped_lines import PartsLines
 
 
 class Stats(PartsLines):
@@ -26,7 +26,7 @@ class Stats(PartsLines):
     as many rows as it needs (at most :attr:`MAX_ROWS` while some count can go).
 
     The screen and the panes call :meth:`show` after every change, with the lines
-    :mod:`~tui_search.tui.status_lines` builds.
+    :mod:`~tui_search.tui.view.status_lines` builds.
     """
 
     MAX_ROWS: int | None = MAX_ROWS
@@ -63,7 +63,7 @@ class Stats(PartsLines):
         self.beside = 0
 
     def show(self, lines: list[Line], max_rows: int) -> None:
-        """Show ``lines`` (:mod:`tui_search.tui.status_lines`): the counts, then the
+        """Show ``lines`` (:mod:`tui_search.tui.view.status_lines`): the counts, then the
         narration; at most ``max_rows`` rows while some piece can go."""
         self.MAX_ROWS = max_rows
         if self.set_lines(lines):

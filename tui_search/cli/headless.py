@@ -1,0 +1,275 @@
+"""The headless runs: one search (:func:`run_headless`), a comparison (:func:`run_compare`) or
+an exercise graded (:func:`run_exercise`), printed as text or JSON, and the per-step trace.
+
+No Textual or Rich here, so scripts and graders start in a fraction of the app's start-up time.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+from typing import IO, TYPE_CHECKING
+
+from tui_search.cli.flags import (
+    EXIT_FOUND,
+    EXIT_GAVE_UP,
+    EXIT_NO_PATH,
+    UsageError,
+    contenders_from,
+    load_problem,
+    map_name,
+    semantics_from,
+)
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.maps.read import MapError
+from tui_search.engine.run.recorded import Run, Step
+from tui_search.engine.search.choices import Semantics
+from tui_search.engine.search.compare import (
+    MARKS_KEY,
+    comparison,
+    summary_sentence,
+    table_cells,
+    table_lines,
+)
+from tui_search.engine.search.heuristics import INADMISSIBLE, admissible
+from tui_search.engine.search.outcome import Outcome
+from tui_search.engine.search.registry import get_algorithm
+from tui_search.engine.util.filenames import describe_name
+
+if TYPE_CHECKING:
+    from tui_search.engine.maps.scenarios import Scenario
+    from tui_search.engine.search.reference import Expansion
+
+
+
+def print_pseudocode(args: argparse.Namespace) -> int:
+    """``--pseudocode``: the code of ``-a``'s search under the flags' choices, numbered, on
+    stdout (:mod:`tui_search.engine.search.pseudocode`); exit 0."""
+    from tui_search.engine.search.pseudocode import MOVE_COST, TERRAIN_MOVE_COST, pseudocode
+
+    for flag in ("compare", "exercise", "trace", "lesson"):
+        if getattr(args, flag, None) not in (None, False):  # --lesson alone is ""
+            raise UsageError(f"--pseudocode prints one search's code: leave out "
+                             f"--{flag.replace('_', '-')}")
+    if args.headless or args.json:
+        raise UsageError("--pseudocode prints the code without a search: leave out "
+                         "--headless and --json")
+    costed = False
+    if args.map is not None or args.terrain is not None:  # the code of a search on this map
+        costed = load_problem(args)[0].costs is not None
+    code = pseudocode(get_algorithm(args.algorithm), semantics_from(args),
+                      move_cost=TERRAIN_MOVE_COST if costed else MOVE_COST)
+    print(code.title)
+    print("\n".join(code.numbered()))
+    return EXIT_FOUND
+
+
+def trace_line(step: Step) -> str:
+    """One JSON object per step: the node taken off and exactly the successors it added, in
+    order; iterative deepening adds the depth limit, a discarded step says so."""
+    obj: dict[str, object] = {
+        "step": step.index,
+        "node": list(step.node),
+        "successors": [{"dir": d, "node": list(c)} for d, c in step.successors],
+    }
+    if step.depth_limit is not None:
+        obj["depth_limit"] = step.depth_limit
+    if step.discarded:
+        obj["discarded"] = True
+    return to_json(obj, separators=(", ", ": ")) + "\n"
+
+
+def _as_step(step: Expansion) -> Step:
+    return Step(step.index, step.node.cell, tuple((s.move or "", s.cell) for s in step.successors),
+                step.depth_limit, step.found, step.discarded)
+
+
+def search_headless(grid: Grid, key: str, semantics: Semantics, max_steps: int,
+                    out: IO[str] | None) -> Outcome:
+    """The whole search, its steps written to ``out`` as they happen.  Graph BFS and DFS take
+    at most a few steps per cell, so they run on the fast recorded loops (the record is
+    bounded by the map); iterative deepening and tree search can take billions of steps on a
+    small map, so they stream the reference loop, which keeps only the frontier and the
+    parents it points to.  The two are held equal by a property test."""
+    algorithm = get_algorithm(key)
+    if algorithm.iterative or semantics.tree_search:
+        from tui_search.engine.search.reference import stream  # not imported at start-up
+
+        write = None if out is None else (lambda step: out.write(trace_line(_as_step(step))))
+        return stream(grid, algorithm, semantics, max_steps, write)
+    run = Run(grid, key, semantics, max_steps)
+    if out is not None:
+        for step in run.steps.all():
+            out.write(trace_line(step))
+    return run.outcome()
+
+
+def benchmark_rules(outcome: Outcome) -> bool:
+    """Do the benchmark's optima apply: all eight moves, no corner cutting?"""
+    sem = outcome.semantics
+    return sem.corners == "never" and len(sem.order) == 8
+
+
+def optimal(outcome: Outcome, scenario: Scenario | None) -> bool | None:
+    """Does the path meet the benchmark's optimal length (to 1e-4, relative)?  None when no
+    scenario is given, no path was found, or the rules are not the benchmark's (all eight
+    moves, ``--corners never``)."""
+    if scenario is None or outcome.cost is None or not benchmark_rules(outcome):
+        return None
+    return outcome.cost <= scenario.optimal_length * (1 + 1e-4)
+
+
+def benchmark_text(outcome: Outcome, scenario: Scenario) -> str:
+    """The benchmark's lowest cost beside the path's: "lowest cost 2.000: met"."""
+    text = f"lowest cost {scenario.optimal_length:.3f}"
+    if not benchmark_rules(outcome):
+        return text + " (with all eight moves and --corners never: not these rules)"
+    verdict = optimal(outcome, scenario)
+    if verdict is None:
+        return text
+    return text + (": this path is optimal" if verdict else ": this path costs more")
+
+
+def to_json(obj: object, separators: tuple[str, str] | None = None) -> str:
+    """``json.dumps`` (json is imported for the headless output, not at the app's start-up)."""
+    import json
+
+    return json.dumps(obj, separators=separators)
+
+
+def json_summary(outcome: Outcome, scenario: Scenario | None = None) -> dict[str, object]:
+    """The headless JSON object (README: "Headless output")."""
+    path, moves = outcome.path, outcome.moves
+    extra = {} if scenario is None else {
+        "optimal_length": round(scenario.optimal_length, 6),
+        "optimal": optimal(outcome, scenario),
+    }
+    return {
+        "algorithm": outcome.algorithm,
+        "found": outcome.found,
+        "path": [list(c) for c in path] if path is not None else None,
+        "moves": moves,
+        "length": outcome.length,
+        "cost": round(outcome.cost, 6) if outcome.cost is not None else None,
+        "expanded": outcome.expanded,
+        "discarded": outcome.discarded,
+        "generated": outcome.generated,
+        "max_frontier": outcome.max_frontier,
+        "gave_up": outcome.gave_up,
+        "semantics": outcome.semantics.as_json(get_algorithm(outcome.algorithm)),
+        **extra,
+    }
+
+
+#: Paths with more moves than this print their first and last few moves and a count.
+SHORT_PATH = 24
+PATH_ENDS = 8
+
+
+def moves_text(moves: list[str]) -> str:
+    if not moves:
+        return "none: the start is the goal"
+    if len(moves) <= SHORT_PATH:
+        return ", ".join(moves)
+    hidden = len(moves) - 2 * PATH_ENDS
+    return (", ".join(moves[:PATH_ENDS]) + f", … {hidden:,} more …, "
+            + ", ".join(moves[-PATH_ENDS:]))
+
+
+def human_summary(
+    outcome: Outcome, where: str, max_steps: int, blocked_by: str | None = None,
+    scenario: Scenario | None = None,
+) -> str:
+    algorithm = get_algorithm(outcome.algorithm)
+    name = algorithm.name
+    result = "path found" if outcome.found else "no path"
+    if not outcome.found and not outcome.gave_up and blocked_by:
+        result += f" — {blocked_by}"
+    if outcome.gave_up:
+        result = f"gave up at --max-steps {max_steps:,} (raise it to search on)"
+    lines = [f"{name} on {where}: {result}"]
+    differences = outcome.semantics.differences(algorithm)
+    if differences:
+        lines.append(f"  semantics:    {' · '.join(differences)}")
+    if algorithm.informed and not admissible(outcome.semantics.heuristic,
+                                             outcome.semantics.order):
+        lines.append(f"  warning:      {INADMISSIBLE}")
+    if outcome.moves is not None:
+        lines.append(f"  moves:        {outcome.length:,} ({moves_text(outcome.moves)})")
+        lines.append(f"  cost:         {outcome.cost:.3f}")
+    if scenario is not None:
+        lines.append(f"  benchmark:    {benchmark_text(outcome, scenario)}")
+    lines.append(f"  expanded:     {outcome.expanded:,}")
+    if outcome.discarded:
+        lines.append(f"  discarded:    {outcome.discarded:,}")
+    lines.append(f"  generated:    {outcome.generated:,}")
+    lines.append(f"  max frontier: {outcome.max_frontier:,}")
+    return "\n".join(lines)
+
+
+def run_headless(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
+    if args.trace == "-" and args.json:
+        raise UsageError("--trace - and --json both want stdout; give --trace a file")
+    where = describe_name(map_name(args, path))  # escape sequences shown, not run
+    need_endpoints(grid, where)
+    semantics = semantics_from(args)
+
+    def search(out: IO[str] | None) -> Outcome:
+        return search_headless(grid, args.algorithm, semantics, args.max_steps, out)
+
+    if args.trace == "-":
+        outcome = search(sys.stdout)
+    elif args.trace:
+        try:
+            with open(args.trace, "w", encoding="utf-8") as fh:
+                outcome = search(fh)
+        except OSError as exc:
+            raise MapError(args.trace, f"cannot write the trace: {exc.strerror}") from None
+    else:
+        outcome = search(None)
+    scenario = getattr(args, "scenario", None)
+    if args.json:
+        print(to_json(json_summary(outcome, scenario)))
+    elif args.trace != "-":
+        blocked_by = None
+        if not outcome.found and not outcome.gave_up and not semantics.is_default:
+            from tui_search.engine.run.blocked import blocking_rule
+
+            blocked_by = blocking_rule(grid, semantics)
+        print(human_summary(outcome, where, args.max_steps, blocked_by, scenario))
+    if outcome.gave_up:
+        return EXIT_GAVE_UP
+    return EXIT_FOUND if outcome.found else EXIT_NO_PATH
+
+
+def compare_table(labels: list[str], outcomes: list[Outcome], terrain: bool = False) -> str:
+    """The comparison as text: a row a search, marks on the fewest expanded and the
+    cheapest path, and the tutorial's sentence (with the paths' costs on ``terrain``)."""
+    rows = comparison(labels, outcomes)
+    lines = table_lines(table_cells(rows)) + [MARKS_KEY, summary_sentence(rows, terrain)]
+    return "\n".join("  " + line for line in lines)
+
+
+def run_compare(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
+    where = describe_name(map_name(args, path))  # escape sequences shown, not run
+    need_endpoints(grid, where)
+    contenders = contenders_from(args)
+    outcomes = [search_headless(grid, c.algorithm, c.semantics, args.max_steps, None)
+                for c in contenders]
+    if args.json:
+        print(to_json({"runs": [json_summary(o, getattr(args, "scenario", None))
+                                   for o in outcomes]}))
+    else:
+        print(f"Comparison on {where}:")
+        print(compare_table([c.label for c in contenders], outcomes, grid.costs is not None))
+    if any(o.gave_up for o in outcomes):
+        return EXIT_GAVE_UP
+    return EXIT_FOUND if all(o.found for o in outcomes) else EXIT_NO_PATH
+
+
+def need_endpoints(grid: Grid, where: str) -> None:
+    missing = [name for name in ("start", "goal") if getattr(grid, name) is None]
+    if missing:
+        raise MapError(where, f"the map has no {' or '.join(missing)}: give --start X,Y "
+                       "--goal X,Y, or --scen FILE --scen-row N")

@@ -1,0 +1,145 @@
+"""Maps graded on an exercise, headless (``--exercise E --headless MAP...``): one map as a line
+or the **class report** of many -- a line a map and a summary.  ``--json`` is always a list (an
+object a map) and ``--csv`` always a table, whatever the folder holds.  One bad map never stops the report: it is a line
+saying why it is unreadable.
+
+No Textual or Rich here.
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import sys
+from typing import NamedTuple
+
+from tui_search.cli.flags import (
+    EXIT_FOUND,
+    EXIT_GAVE_UP,
+    EXIT_NO_PATH,
+    UsageError,
+    load_problem,
+    map_name,
+)
+from tui_search.cli.headless import need_endpoints, to_json
+from tui_search.engine.course.exercise_file import Exercise
+from tui_search.engine.course.grading import Verdict, grade
+from tui_search.engine.maps.read import MapError
+from tui_search.engine.util.filenames import describe_name
+
+
+class Graded(NamedTuple):
+    """One map of the report: its name, and its verdict or why it could not be read."""
+
+    where: str
+    verdict: Verdict | None
+    error: str = ""
+
+    @property
+    def status(self) -> str:
+        return "unreadable" if self.verdict is None else self.verdict.status
+
+    def line(self) -> str:
+        v = self.verdict
+        if v is None:
+            return f"{self.where}: unreadable — {self.error}"
+        return (f"{self.where}: {v.status}{_dash(v.said)}"
+                + (f" (hint: {v.hint})" if v.hint else ""))
+
+    def as_json(self) -> dict[str, object]:
+        if self.verdict is None:
+            return {"map": self.where, "verdict": "unreadable", "solved": False,
+                    "error": self.error}
+        return {"map": self.where, **self.verdict.as_json()}
+
+
+def _dash(said: str) -> str:
+    """`` — `` and the verdict's reason with its figures; nothing when it has none (a
+    condition that names no field)."""
+    return f" — {said}" if said else ""
+
+
+def _error_text(exc: MapError) -> str:
+    where = ", ".join(f"{word} {n}" for word, n in (("line", exc.line), ("column", exc.col))
+                      if n is not None)
+    return f"{where}: {exc.message}" if where else exc.message
+
+
+def grade_one(args: argparse.Namespace, exercise: Exercise) -> Graded:
+    """``args.map`` (with the command line's --start, --goal and --terrain) graded."""
+    where = describe_name(args.map) if args.map else map_name(args, None)
+    try:
+        grid, path = load_problem(args)
+        where = describe_name(map_name(args, path))  # escape sequences shown, not run
+        need_endpoints(grid, where)
+    except MapError as exc:
+        return Graded(where, None, _error_text(exc))
+    return Graded(where, grade(exercise, grid, args.max_steps))
+
+
+def summary(rows: list[Graded]) -> str:
+    """"14 of 17 solved, 2 not solved, 1 unreadable"."""
+    counts = {s: sum(r.status == s for r in rows)
+              for s in ("solved", "not solved", "not graded", "unreadable")}
+    return ", ".join([f"{counts['solved']} of {len(rows)} solved"] + [
+        f"{n} {s}" for s, n in counts.items() if n and s != "solved"])
+
+
+def write_csv(rows: list[Graded], exercise: Exercise) -> None:
+    """``file,verdict,`` then a column per field the condition names."""
+    out = csv.writer(sys.stdout, lineterminator="\n")
+    out.writerow(["file", "verdict", *exercise.fields])
+    for row in rows:
+        figures = row.verdict.figures if row.verdict is not None else {}
+        out.writerow([row.where, row.status, *(_cell(figures.get(f)) for f in exercise.fields)])
+
+
+def _cell(value: object) -> str:
+    if value is None:
+        return ""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    return str(value)
+
+
+def run_exercise(args: argparse.Namespace) -> int:
+    """Grade ``args.maps`` (none: the tutorial's map, or --generate's) on ``--exercise``."""
+    exercise: Exercise = args.exercise_read
+    # A report (a line, a CSV row or a JSON object a map, a bad map one of them) for several
+    # maps, and for one under --csv or --json, so that a spreadsheet gets its table and a
+    # gradebook script its list whatever the folder holds.
+    if len(args.maps) <= 1 and not ((args.csv or args.json) and args.maps):
+        grid, path = load_problem(args)  # a bad map is bad input: exit 2
+        where = describe_name(map_name(args, path))
+        need_endpoints(grid, where)
+        rows = [Graded(where, grade(exercise, grid, args.max_steps))]
+    else:
+        if args.scen:
+            raise UsageError("--scen is for one map, not the class report")
+        rows = [grade_one(argparse.Namespace(**{**vars(args), "map": name}), exercise)
+                for name in args.maps]
+    if args.csv:
+        write_csv(rows, exercise)
+    elif args.json:
+        print(to_json([row.as_json() for row in rows]))
+    elif len(rows) == 1:
+        _print_one(rows[0])
+    else:
+        for row in rows:
+            print(row.line())
+        print(summary(rows))
+    if len(rows) == 1 and rows[0].verdict is not None and not rows[0].verdict.graded:
+        return EXIT_GAVE_UP
+    return EXIT_FOUND if all(row.status == "solved" for row in rows) else EXIT_NO_PATH
+
+
+def _print_one(row: Graded) -> None:
+    """One map, as before the report: the exercise named, and the hint on its own line."""
+    verdict = row.verdict
+    assert verdict is not None
+    print(f"{row.where}: {verdict.exercise.name} {verdict.status}{_dash(verdict.said)}")
+    if verdict.hints:
+        print(f"  hint: {verdict.hints}")
+
+
+__all__ = ["Graded", "run_exercise", "summary"]

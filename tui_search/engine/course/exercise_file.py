@@ -1,0 +1,259 @@
+"""Exercise files: a teacher's exercise in TOML (README: "Exercise files").
+
+    title = "Greedy is not optimal"
+    text = "Move obstacles so that greedy best-first's path costs more than A*'s."
+    map = "tutorial.txt"              # relative to this file; or generate = "maze 15x15 7"
+    searches = ["greedy", "astar"]    # as --compare takes them (astar:manhattan allowed)
+    edits = ["obstacles"]             # what the student may change
+    solved = "greedy.found and astar.found and greedy.cost > astar.cost"
+    hint = "Greedy looks only at h."  # optional
+
+The tutorial's two exercises ship as two such files (``tui_search/exercises/``), named ``1``
+and ``2``.  A bad file is a :class:`~tui_search.engine.maps.read.MapError` naming the file, the
+line and the column.  Plain Python, no UI.
+"""
+
+from __future__ import annotations
+
+import importlib
+import re
+from dataclasses import dataclass
+from functools import cache
+from pathlib import Path
+from types import ModuleType
+from typing import Any
+
+from tui_search.engine.course.condition import ConditionError, Node, names, parse_condition
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.maps.read import MapError
+from tui_search.engine.search.compare import Contender, parse_compare
+
+
+def toml_parser() -> ModuleType:
+    """The TOML parser: the standard library's ``tomllib`` (Python 3.11 on), else ``tomli``, the
+    same parser as a package (Python 3.10; pyproject.toml requires it there).  A function, so a
+    test can take ``tomllib`` away and see ``tomli`` chosen."""
+    try:
+        return importlib.import_module("tomllib")
+    except ImportError:  # Python 3.10
+        return importlib.import_module("tomli")
+
+
+_toml = toml_parser()
+
+#: What a student may be allowed to change.
+EDITS = ("start", "goal", "obstacles", "terrain")
+OTHER_EDITS = ("fail", "hint")
+#: The figures a verdict can show, in the words of its reason.
+FIGURES = ("found", "moves", "cost", "expanded", "generated", "max_frontier")
+BUILT_IN = Path(__file__).resolve().parents[2] / "exercises"  # tui_search/exercises
+BUILT_IN_FILES = {1: "1-bfs-expands-less.toml", 2: "2-dfs-not-optimal.toml"}
+_KEYS = ("title", "text", "map", "generate", "searches", "edits", "solved", "hint",
+         "other_edits", "figures")
+
+
+@dataclass(frozen=True, eq=False)
+class Exercise:
+    """An exercise read from its file: what to show, the map it starts from, the searches,
+    what may change and the condition that solves it."""
+
+    path: str
+    number: int | None  # the tutorial's 1 or 2; None for a teacher's file
+    title: str
+    text: str
+    grid: Grid  # the exercise's map, as the student starts
+    searches: tuple[tuple[str, Contender], ...]  # (the condition's name, the search)
+    edits: frozenset[str]
+    condition: Node
+    solved_text: str
+    fields: tuple[str, ...]  # the condition's SEARCH.FIELD names, in order
+    figures: tuple[str, ...]  # the fields the reason shows
+    hint: str
+    other_edits: str
+
+    @property
+    def name(self) -> str:
+        """What a headless line calls it: ``exercise 1``, or ``exercise greedy`` (the file)."""
+        return f"exercise {self.number if self.number is not None else Path(self.path).stem}"
+
+
+def search_name(spec: str) -> str:
+    """The condition's name for one of ``searches``: ``astar:manhattan`` -> astar_manhattan."""
+    return spec.strip().replace(":", "_")
+
+
+def key_position(text: str, key: str) -> tuple[int | None, int | None]:
+    """The line and column (from 1) of ``key``'s value in the TOML ``text`` (None: not
+    written at the start of a line)."""
+    m = re.search(rf"^[ \t]*{re.escape(key)}[ \t]*=[ \t]*", text, re.MULTILINE)
+    if m is None:
+        return None, None
+    line = text.count("\n", 0, m.end()) + 1
+    return line, m.end() - (text.rfind("\n", 0, m.end()) + 1) + 1
+
+
+def _condition_position(text: str, offset: int) -> tuple[int | None, int | None]:
+    """Where character ``offset`` of the ``solved`` string is in the file: through a basic
+    string's escapes (``\\"`` is one character of the value, two of the file), past a
+    multi-line string's first newline and a line-ending backslash's whitespace; a literal
+    string (``'...'``) has no escapes."""
+    line, col = key_position(text, "solved")
+    if line is None or col is None:
+        return None, None
+    i = sum(len(row) + 1 for row in text.split("\n")[:line - 1]) + col - 1  # the quote
+    quote = text[i:i + 3] if text[i:i + 3] in ('"""', "'''") else text[i:i + 1]
+    i += len(quote)
+    multi = len(quote) == 3
+    if multi and text[i:i + 1] == "\n":  # the string starts on the next line
+        i += 1
+    while i < len(text):
+        escape = quote[0] == '"' and text[i] == "\\"
+        if escape and multi and text[i + 1:i + 2] in (" ", "\t", "\n"):
+            i += 1  # a line-ending backslash: it and the whitespace after it are no character
+            while i < len(text) and text[i] in " \t\n":
+                i += 1
+            continue
+        if offset == 0:
+            break
+        i += {"u": 6, "U": 10}.get(text[i + 1:i + 2], 2) if escape else 1
+        offset -= 1
+    return text.count("\n", 0, i) + 1, i - (text.rfind("\n", 0, i) + 1) + 1
+
+
+def _toml_error(path: str, exc: Exception) -> MapError:
+    message = str(exc)
+    m = re.search(r"\s*\(at line (\d+), column (\d+)\)$", message)
+    if m is None:
+        return MapError(path, f"not TOML: {message}")
+    return MapError(path, f"not TOML: {message[:m.start()]}", int(m.group(1)), int(m.group(2)))
+
+
+class _Reader:
+    """The file's keys, each checked, a MapError at its line for a bad one."""
+
+    def __init__(self, path: str, text: str, data: dict[str, Any]) -> None:
+        self.path, self.text, self.data = path, text, data
+
+    def error(self, key: str, message: str) -> MapError:
+        line, col = key_position(self.text, key)
+        return MapError(self.path, f"{key}: {message}", line, col)
+
+    def string(self, key: str, default: str | None = None) -> str:
+        value = self.data.get(key, default)
+        if value is None:
+            raise MapError(self.path, f"the exercise has no {key} (README: Exercise files)")
+        if not isinstance(value, str):
+            raise self.error(key, "expected a string")
+        return value
+
+    def strings(self, key: str, default: list[str] | None = None) -> list[str]:
+        value = self.data.get(key, default)
+        if value is None:
+            raise MapError(self.path, f"the exercise has no {key} (README: Exercise files)")
+        if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
+            raise self.error(key, "expected a list of strings, as in [\"bfs\", \"dfs\"]")
+        return value
+
+
+def _grid(reader: _Reader) -> Grid:
+    from tui_search.engine.maps.generate import generate, parse_recipe
+    from tui_search.engine.maps.load import load_map
+
+    has = [k for k in ("map", "generate") if k in reader.data]
+    if len(has) != 1:
+        raise MapError(reader.path, "give the exercise a map = \"FILE\" or a generate = "
+                       "\"KIND WxH SEED\" (one of the two)")
+    if has[0] == "map":
+        where = Path(reader.path).parent / reader.string("map")
+        try:
+            return load_map(where)
+        except MapError as exc:
+            raise reader.error("map", str(exc)) from None
+    recipe_text = reader.string("generate")
+    try:
+        recipe = parse_recipe(recipe_text)
+    except ValueError as exc:
+        raise reader.error("generate", str(exc)) from None
+    return generate(recipe, recipe.title)
+
+
+def parse_exercise(text: str, path: str, number: int | None = None) -> Exercise:
+    """The exercise ``text`` (the file ``path``'s contents) says; MapError when it is bad."""
+    try:
+        data: dict[str, Any] = _toml.loads(text)
+    except _toml.TOMLDecodeError as exc:
+        raise _toml_error(path, exc) from None
+    reader = _Reader(path, text, data)
+    unknown = [k for k in data if k not in _KEYS]
+    if unknown:
+        raise reader.error(unknown[0], f"unknown key (use {', '.join(_KEYS)})")
+    specs = reader.strings("searches")
+    try:
+        contenders = parse_compare(",".join(specs), fewest=1)
+    except ValueError as exc:
+        raise reader.error("searches", str(exc)) from None
+    labels = [search_name(s) for s in specs]
+    if len(set(labels)) != len(labels):
+        raise reader.error("searches", "a search is named twice")
+    edits = reader.strings("edits", [])
+    for edit in edits:
+        if edit not in EDITS:
+            raise reader.error("edits", f"unknown edit {edit!r} (use {', '.join(EDITS)})")
+    other = reader.string("other_edits", "fail")
+    if other not in OTHER_EDITS:
+        raise reader.error("other_edits", f"{other!r}: use \"fail\" or \"hint\"")
+    solved = reader.string("solved")
+    try:
+        condition = parse_condition(solved, labels)
+    except ConditionError as exc:
+        line, col = _condition_position(text, exc.offset)
+        raise MapError(path, f"solved: {exc.message}", line, col) from None
+    fields = tuple(names(condition))
+    figures = reader.strings("figures", [])
+    for figure in figures:
+        if figure not in FIGURES:
+            raise reader.error("figures", f"unknown field {figure!r} (use "
+                               f"{', '.join(FIGURES)})")
+    shown = tuple(figures) or tuple(dict.fromkeys(f.split(".")[1] for f in fields))
+    grid = _grid(reader)
+    if grid.start is None or grid.goal is None:
+        raise reader.error("generate" if "generate" in data else "map",
+                           "the exercise's map needs a start (S) and a goal (G)")
+    return Exercise(path, number, reader.string("title"), reader.string("text"), grid,
+                    tuple(zip(labels, contenders)), frozenset(edits), condition, solved,
+                    fields, shown, reader.string("hint", ""), other)
+
+
+def load_exercise(path: str | Path, number: int | None = None) -> Exercise:
+    """Read the exercise file at ``path``."""
+    from tui_search.engine.maps.read import NOT_TEXT, read_text
+
+    where = str(path)
+    try:
+        text = read_text(where)
+    except MapError as exc:
+        if exc.message != NOT_TEXT:
+            raise
+        raise MapError(where, "not a text file (an exercise is TOML, in UTF-8)") from None
+    # A byte order mark (some Windows editors write one) is no part of the TOML.
+    return parse_exercise(text.removeprefix("\ufeff"), where, number)
+
+
+@cache
+def built_in_exercise(number: int) -> Exercise:
+    """The tutorial's exercise 1 or 2, from its shipped file (read once)."""
+    if number not in BUILT_IN_FILES:
+        raise ValueError("the tutorial has exercises 1 and 2")
+    return load_exercise(BUILT_IN / BUILT_IN_FILES[number], number)
+
+
+def find_exercise(name: str) -> Exercise:
+    """``--exercise NAME``: ``1`` or ``2``, or an exercise file.  ValueError for another
+    number, MapError for a bad file."""
+    if name.strip().isdigit():
+        return built_in_exercise(int(name))
+    return load_exercise(name)
+
+
+__all__ = ["EDITS", "Exercise", "built_in_exercise", "find_exercise", "load_exercise",
+           "parse_exercise", "search_name"]

@@ -1,0 +1,230 @@
+"""What every map and scenario reader shares: :class:`MapError`, reading a file safely, and
+the small helpers the parsers use.
+
+Every problem with an input file becomes a :class:`MapError` whose ``str`` is one line,
+``path:line:col: message``, so the CLI and the app can show it as is instead of a traceback.
+The parsers raise nothing else on any text (the tests check this with hypothesis).
+
+Stdlib only: the engine must not depend on the UI libraries.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import re
+import stat
+import zlib
+from typing import BinaryIO
+
+from tui_search.engine.maps.grid import Cell, Grid
+from tui_search.engine.maps.source import FileStamp, Lines
+from tui_search.engine.util.atomic import os_reason
+from tui_search.engine.util.filenames import describe_name
+
+__all__ = [
+    "MAX_DIGITS",
+    "MAX_MAP_BYTES",
+    "NOT_TEXT",
+    "NUMBER",
+    "MapError",
+    "block_table",
+    "check_cell",
+    "current_stamp",
+    "first_bad",
+    "quoted",
+    "read_map_file",
+    "read_text",
+    "split_lines",
+    "stamp_of",
+    "stripped_lines",
+    "too_big",
+]
+
+#: Bigger files are refused before reading: a 512x512 MovingAI map is 257 KB, so anything
+#: near this is a mistake (a wrong file), not a map, and would only hang the app.
+MAX_MAP_BYTES = 64 * 1024 * 1024
+#: How much more a read asks for at a time when a file holds more than ``os.stat`` said.
+_READ_CHUNK = 1024 * 1024
+
+#: Header numbers longer than this are refused: no map is that big, and Python refuses to
+#: convert very long digit strings (ValueError) anyway.
+MAX_DIGITS = 9
+#: A whole number >= 0 as the files write it (header values, scenario fields).
+NUMBER = re.compile(r"[0-9]+")
+
+
+class MapError(Exception):
+    """One-line, user-facing error about an input file."""
+
+    def __init__(
+        self, path: str, message: str, line: int | None = None, col: int | None = None
+    ) -> None:
+        # All four go to Exception so that the error pickles and copies like any other.
+        super().__init__(path, message, line, col)
+        self.path = path
+        self.message = message
+        self.line = line
+        self.col = col
+
+    def __str__(self) -> str:
+        where = describe_name(self.path)  # a terminal shows an escape sequence, never runs it
+        if self.line is not None:
+            where += f":{self.line}"
+        if self.col is not None:
+            where += f":{self.col}"
+        return f"{where}: {self.message}"
+
+
+def split_lines(text: str) -> tuple[bool, Lines]:
+    """Whether the text starts with a BOM, and its lines split on ``\\n`` only (not
+    ``str.splitlines``, which also splits on form feeds and other separators, so that line
+    numbers match what an editor shows), each as written: a CRLF line keeps its ``\\r``."""
+    bom = text.startswith("\ufeff")
+    return bom, Lines(text[1:] if bom else text)
+
+
+def stripped_lines(text: str) -> list[str]:
+    """The lines of :func:`split_lines` without a BOM and trailing whitespace (the ``\\r`` of
+    CRLF files included): what the parsers read."""
+    return [line.rstrip() for line in split_lines(text)[1]]
+
+
+def quoted(text: str, limit: int = 40) -> str:
+    """A short ``repr`` of user text for an error message (keeps the message one line)."""
+    if len(text) > limit:
+        text = text[:limit] + "..."
+    return repr(text)
+
+
+#: A file with a NUL or bytes that are not UTF-8.
+NOT_TEXT = "binary file, not a text map"
+
+
+def read_text(path: str) -> str:
+    """The file's text, or a MapError saying why it cannot be a map (see :func:`read_map_file`)."""
+    return read_map_file(path)[0]
+
+
+def read_map_file(path: str) -> tuple[str, FileStamp]:
+    """The file's text and its :class:`FileStamp`, or a MapError saying why it cannot be a map.
+
+    Only a regular file is read: a FIFO or a device is refused at once (it could block the
+    read forever).  The size is checked with ``os.stat`` before anything is read, and the
+    read itself is capped too, for files that grow while we look (:func:`_read_capped`).
+    """
+    data, st = _read_regular(path)
+    if b"\x00" in data:
+        raise MapError(path, NOT_TEXT)
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError:
+        raise MapError(path, NOT_TEXT) from None
+    return text, stamp_of(path, data, st)
+
+
+def stamp_of(path: str, data: bytes, st: os.stat_result) -> FileStamp:
+    """The stamp of the file at ``path`` holding ``data`` (``st`` its ``os.stat``)."""
+    real = os.path.realpath(path)
+    return FileStamp(real, len(data), st.st_mtime_ns, zlib.crc32(data))
+
+
+def current_stamp(path: str) -> FileStamp | None:
+    """The stamp of the file now at ``path``, or None when there is none (or it cannot be
+    read as a map file: then nothing in it can be lost by a save the OS allows)."""
+    try:
+        data, st = _read_regular(path)
+    except MapError:
+        return None
+    return stamp_of(path, data, st)
+
+
+def _open_nonblocking(name: str, flags: int) -> int:
+    """``open``'s opener: a FIFO swapped in after the ``os.stat`` must not block the open."""
+    return os.open(name, flags | getattr(os, "O_NONBLOCK", 0))
+
+
+def _check_kind(path: str, st: os.stat_result) -> None:
+    if stat.S_ISDIR(st.st_mode):
+        raise MapError(path, "is a directory, not a map file")
+    if not stat.S_ISREG(st.st_mode):
+        raise MapError(path, "not a regular file")
+    if st.st_size > MAX_MAP_BYTES:
+        raise MapError(path, too_big(st.st_size))
+
+
+def _read_regular(path: str) -> tuple[bytes, os.stat_result]:
+    """The bytes of the regular file at ``path`` (at most the cap) and its ``os.fstat``."""
+    try:
+        _check_kind(path, os.stat(path))
+    except (FileNotFoundError, NotADirectoryError):
+        raise MapError(path, "no such file") from None
+    except OSError as err:
+        raise MapError(path, os_reason(err)) from None
+    except ValueError:  # e.g. an embedded NUL in the path
+        raise MapError(path, "not a valid file name") from None
+    try:
+        with open(path, "rb", opener=_open_nonblocking) as handle:
+            st = os.fstat(handle.fileno())
+            _check_kind(path, st)
+            data = _read_capped(handle, st.st_size)
+    except IsADirectoryError:
+        raise MapError(path, "is a directory, not a map file") from None
+    except OSError as err:
+        raise MapError(path, os_reason(err)) from None
+    if len(data) > MAX_MAP_BYTES:
+        raise MapError(path, too_big(len(data)))
+    return data, st
+
+
+def _read_capped(handle: BinaryIO, expected: int) -> bytes:
+    """At most ``MAX_MAP_BYTES + 1`` bytes of ``handle`` (one more than a map may have, so a
+    file over the limit is seen as one).
+
+    ``handle.read(n)`` allocates ``n`` bytes before it reads, so asking for the cap at once
+    costs 64 MB for a six-line map.  Instead ask for what ``os.stat`` said plus one byte (which
+    sees a file that grew), then, only while every read is filled (a growing file), for
+    bounded chunks up to the cap.  A buffered read returns less than asked only at the end.
+    """
+    limit = MAX_MAP_BYTES + 1
+    chunks: list[bytes] = []
+    total = 0
+    want = min(expected + 1, limit)
+    while want > 0:
+        chunk = handle.read(want)
+        chunks.append(chunk)
+        total += len(chunk)
+        if len(chunk) < want:
+            break
+        want = min(_READ_CHUNK, limit - total)
+    return b"".join(chunks)
+
+
+def too_big(size: int) -> str:
+    # Round up to a tenth so a file just over the limit never reads as "64.0 MB".
+    mb = math.ceil(size * 10 / (1024 * 1024)) / 10
+    limit = MAX_MAP_BYTES // (1024 * 1024)
+    return f"file is {mb:.1f} MB; a map may be at most {limit} MB"
+
+
+def first_bad(row: str, bad: re.Pattern[str]) -> int:
+    """Index of the first character of ``row`` that ``bad`` matches, or -1."""
+    found = bad.search(row)
+    return -1 if found is None else found.start()
+
+
+def block_table(blocked_chars: str) -> bytes:
+    table = bytearray(256)
+    for ch in blocked_chars:
+        table[ord(ch)] = 1
+    return bytes(table)
+
+
+def check_cell(grid: Grid, cell: Cell, what: str, path: str, line: int | None) -> None:
+    x, y = cell
+    if not grid.in_bounds(cell):
+        raise MapError(
+            path, f"{what} ({x},{y}) is outside the {grid.width}x{grid.height} map", line
+        )
+    if grid.is_blocked(cell):
+        raise MapError(path, f"{what} ({x},{y}) is on an obstacle", line)

@@ -1,0 +1,162 @@
+"""Comparing searches on one map: the searches ``--compare`` names (:func:`parse_compare`)
+and the table of their figures, the same in the app's compare mode and in
+``--headless --compare``: a row a search, marks on the fewest expanded and the cheapest path,
+and the tutorial's sentence.
+
+Plain Python, no UI.
+"""
+
+# No `from __future__ import annotations`: typing compiles a NamedTuple's string
+# annotations one by one at import (~5 M instructions of every start in all: session 14).
+from collections.abc import Sequence
+from typing import NamedTuple
+
+from tui_search.engine.search.choices import DEFAULT_SEMANTICS, Semantics
+from tui_search.engine.search.outcome import Outcome
+from tui_search.engine.search.registry import get_algorithm
+
+
+class Contender(NamedTuple):
+    """One search of a comparison: an algorithm and its choices (a heuristic of its own)."""
+
+    algorithm: str
+    semantics: Semantics
+
+    @property
+    def label(self) -> str:
+        algo = get_algorithm(self.algorithm)
+        if algo.informed and self.semantics.heuristic != DEFAULT_SEMANTICS.heuristic:
+            return f"{algo.short} ({self.semantics.heuristic})"
+        return algo.short
+
+
+def parse_compare(text: str, semantics: Semantics = DEFAULT_SEMANTICS,
+                  fit: bool = False, fewest: int = 2) -> list[Contender]:
+    """``bfs,dfs`` or ``astar:manhattan,ucs``: ``fewest`` (two; the app's panes: one) to four
+    registry keys, each informed one with an optional heuristic.  ``ValueError`` (one line)
+    for anything else -- or, with ``fit``, for a choice that does not apply to one of them,
+    that one visits on generate (the app's settings apply to every pane where they can)."""
+    from tui_search.engine.search.heuristics import HEURISTICS
+
+    parts = [p.strip() for p in text.split(",") if p.strip()]
+    if not fewest <= len(parts) <= 4:
+        words = {1: "one", 2: "two"}.get(fewest, str(fewest))
+        raise ValueError(f"compare {words} to four searches, not {len(parts)} ({text!r})")
+    out = []
+    for part in parts:
+        key, _, heuristic = part.partition(":")
+        algo = get_algorithm(key)
+        sem = semantics
+        if heuristic:
+            if not algo.informed:
+                raise ValueError(f"{part!r}: {key} uses no heuristic")
+            if heuristic not in HEURISTICS:
+                raise ValueError(f"{part!r}: unknown heuristic (use {', '.join(HEURISTICS)})")
+            sem = sem.replace(heuristic=heuristic)
+        try:
+            sem.check(algo)
+        except ValueError:
+            if not fit:
+                raise
+            sem = sem.replace(visit="generate")
+        out.append(Contender(key, sem))
+    return out
+
+
+class TableRow(NamedTuple):
+    label: str
+    outcome: Outcome
+    fewest_expanded: bool
+    cheapest: bool
+
+
+def comparison(labels: list[str], outcomes: list[Outcome], marks: bool = True) -> list[TableRow]:
+    """The table's rows: each run with a mark on the fewest expanded and the cheapest path
+    (ties marked alike); no marks with ``marks=False`` (runs still going)."""
+    fewest = min(o.expanded for o in outcomes)
+    costs = [o.cost for o in outcomes if o.cost is not None]
+    cheapest = min(costs) if costs else None
+    return [TableRow(label, o, marks and o.expanded == fewest, marks and o.cost is not None
+                     and cheapest is not None and o.cost <= cheapest + 1e-9)
+            for label, o in zip(labels, outcomes)]
+
+
+#: The comparison table's columns.
+TABLE_HEAD = ("search", "found", "moves", "cost", "expanded", "generated", "max frontier")
+#: The line under the table that says what the marks mean.
+MARKS_KEY = "* the fewest expanded, the cheapest path"
+
+
+def table_cells(rows: list[TableRow], steps: Sequence[int | None] | None = None
+                ) -> list[tuple[str, ...]]:
+    """The table as text cells, the head first.  ``steps``: for each row, the step a run that
+    is still going is at (its "found" says so), or None for a finished run."""
+    out: list[tuple[str, ...]] = [TABLE_HEAD]
+    for i, r in enumerate(rows):
+        o = r.outcome
+        step = steps[i] if steps is not None else None
+        if step is not None:
+            found = f"… step {step:,}"
+        else:
+            found = "gave up" if o.gave_up else ("yes" if o.found else "no")
+        out.append((
+            r.label,
+            found,
+            f"{o.length:,}" if o.length is not None else "-",
+            (f"{o.cost:.3f}" + (" *" if r.cheapest else "  ")) if o.cost is not None else "-",
+            f"{o.expanded:,}" + (" *" if r.fewest_expanded else "  "),
+            f"{o.generated:,}",
+            f"{o.max_frontier:,}",
+        ))
+    return out
+
+
+def table_lines(cells: list[tuple[str, ...]]) -> list[str]:
+    """The cells in aligned columns, a line a row."""
+    widths = [max(len(c[i]) for c in cells) for i in range(len(cells[0]))]
+    return ["  ".join(c.ljust(w) for c, w in zip(row, widths)).rstrip() for row in cells]
+
+
+def summary_sentence(rows: list[TableRow], terrain: bool = False) -> str:
+    """In the tutorial's terms: "DFS expanded 7 nodes, BFS 22; both paths have 7 moves".  On
+    a map with ``terrain`` each path's cost too, where the costs differ: "BFS's path has 7
+    moves, cost 32.11; UCS's 8 moves, cost 9.24" -- the fewest moves is not the cheapest."""
+    first, *rest = rows
+    expanded = f"{first.label} expanded {first.outcome.expanded:,} nodes" + "".join(
+        f", {r.label} {r.outcome.expanded:,}" for r in rest)
+    found = [r for r in rows if r.outcome.found]
+    if not found:
+        gave_up = [r.label for r in rows if r.outcome.gave_up]
+        if gave_up:
+            return f"{expanded}; no path found, {', '.join(gave_up)} stopped at the step limit"
+        return f"{expanded}; no path"
+    lengths = {r.outcome.length for r in found}
+    costs = {round(r.outcome.cost or 0.0, 6) for r in found}
+    if terrain and len(costs) > 1:
+        said: list[str] = []
+        for r in rows:
+            o = r.outcome
+            what = f"{o.length} moves, cost {o.cost or 0.0:.2f}"
+            said.append(f"{r.label} found none" if not o.found else
+                        f"{r.label}'s {what}" if said else f"{r.label}'s path has {what}")
+        paths = "; ".join(said)
+    elif len(found) == len(rows) and len(lengths) == 1:
+        n = found[0].outcome.length
+        paths = f"{'both' if len(rows) == 2 else 'all'} paths have {n} moves"
+    else:
+        paths = ", ".join(f"{r.label}'s path has {r.outcome.length} moves" if r.outcome.found
+                          else f"{r.label} found none" for r in rows)
+    return f"{expanded}; {paths}"
+
+
+__all__ = [
+    "MARKS_KEY",
+    "TABLE_HEAD",
+    "Contender",
+    "TableRow",
+    "comparison",
+    "parse_compare",
+    "summary_sentence",
+    "table_cells",
+    "table_lines",
+]

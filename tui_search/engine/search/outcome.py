@@ -1,0 +1,46 @@
+"""What a whole search came to: the path and the counts, however the search was run.
+
+A recorded :class:`~tui_search.engine.run.recorded.Run` and the streaming reference search (the headless
+command line) both end in an :class:`Outcome`; the command line turns it into its text and JSON.
+"""
+
+# No `from __future__ import annotations`: typing compiles a NamedTuple's string
+# annotations one by one at import (~5 M instructions of every start in all: session 14).
+from typing import NamedTuple
+
+from tui_search.engine.maps.grid import Cell, Grid
+from tui_search.engine.search.choices import Semantics
+
+
+class Outcome(NamedTuple):
+    algorithm: str
+    semantics: Semantics
+    path: list[Cell] | None  # start to goal; None when no path was found
+    moves: list[str] | None
+    expanded: int  # steps that expanded a node
+    discarded: int  # steps that took off a cell already expanded (visit on expand)
+    generated: int  # pushes, the start (every iteration's root) included
+    max_frontier: int
+    gave_up: bool  # stopped at the step limit before the search ended
+    #: The path's cost: each move's length (1 straight, sqrt(2) diagonal) times the cost of
+    #: the cell it enters (:meth:`Grid.path_cost <tui_search.engine.maps.grid.Grid.path_cost>`).
+    cost: float | None
+
+    @property
+    def found(self) -> bool:
+        return self.path is not None
+
+    @property
+    def steps(self) -> int:
+        """Steps taken: one per ``n`` press, discarded ones included."""
+        return self.expanded + self.discarded
+
+    @property
+    def length(self) -> int | None:
+        """Moves on the path."""
+        return None if self.moves is None else len(self.moves)
+
+
+def cost_of(grid: Grid, path: list[Cell] | None) -> float | None:
+    """:attr:`Outcome.cost` of ``path`` on ``grid`` (None: no path)."""
+    return None if path is None else grid.path_cost(path)

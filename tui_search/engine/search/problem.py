@@ -1,0 +1,135 @@
+"""A grid prepared for the fast loops: padded walls, padded start and goal, the moves.
+
+Cells are indices into a copy of the map padded with a border of walls, so the loops need no
+bounds checks: ``p = (y + 1) * (width + 2) + (x + 1)``.  The move order and the corner rule live
+here too, so no loop of :mod:`tui_search.engine.search.loops` tests corners: a cell's legal moves are
+``moves[mask[p]]``.  A map with terrain gives its costs padded alike (``terrain[p]``; None on a
+map whose every cell costs 1, which the loops then never read) and its lowest cell cost.
+"""
+
+from __future__ import annotations
+
+from array import array
+from functools import cached_property
+
+from tui_search.engine.maps.grid import DELTAS, DIR_CODE, Grid
+from tui_search.engine.search.choices import DEFAULT_SEMANTICS, Semantics
+
+
+class Problem:
+    """A grid prepared for the loops: padded walls, padded start/goal, neighbour offsets.
+
+    ``moves[mask[p]]`` is the tuple of offsets to try from padded cell ``p``, in the neighbour
+    order.  With corners ``always`` (the default) every mask is 0 and ``moves[0]`` holds every
+    move of the order; otherwise ``mask[p]`` has a bit set for each diagonal the corner rule
+    refuses from ``p``, and ``moves[mask]`` leaves those diagonals out -- so the hot loops never
+    test corners.
+    """
+
+    def __init__(self, grid: Grid, semantics: Semantics = DEFAULT_SEMANTICS,
+                 goal_test: str | None = None) -> None:
+        """``goal_test`` is the one in force (the algorithm's own when the semantics leave it
+        open: :meth:`~tui_search.engine.search.choices.Semantics.goal_test_for`)."""
+        if grid.start is None or grid.goal is None:
+            raise ValueError("the map needs a start and a goal")
+        for name, cell in (("start", grid.start), ("goal", grid.goal)):
+            if not grid.in_bounds(cell):
+                raise ValueError(f"the {name} {cell} is outside the map")
+            if grid.is_blocked(cell):
+                raise ValueError(f"the {name} {cell} is on an obstacle")
+        w, h = grid.width, grid.height
+        self.width, self.height = w, h
+        self.stride = stride = w + 2
+        # Shared with every search of this map until it is edited (Grid.derived): never written.
+        self.walls, self.terrain = grid.derived("padded", padded)
+        self.lowest = grid.lowest_cost()
+        self.start = self.pad(grid.start)
+        self.goal = self.pad(grid.goal)
+        self.semantics = semantics
+        self.goal_test = goal_test or semantics.goal_test or "generate"
+        order = semantics.order
+        offsets = [DELTAS[name][1] * stride + DELTAS[name][0] for name in order]
+        self.dir_of_offset = {off: DIR_CODE[name] for name, off in zip(order, offsets)}
+        self.offsets = offsets
+
+    @cached_property
+    def _masks(self) -> tuple[bytes, list[tuple[int, ...]]]:
+        """``mask`` and ``moves``, worked out when a loop first asks: the corner masks cost
+        a pass over the whole map (~20 ms on 1024x1024), which a loop that checks corners
+        itself (the priority queue's, which may expand a handful of cells) never pays."""
+        order, offsets = self.semantics.order, self.offsets
+        if corner_free(self.semantics):
+            return bytes(len(self.walls)), [tuple(offsets)]
+        return self._corner_masks(order, offsets, self.semantics.corners)
+
+    @property
+    def plain_moves(self) -> tuple[int, ...]:
+        """The offsets every cell tries, for the loops that serve only searches no corner rule
+        touches (:func:`corner_free`): they skip the per-cell ``mask`` and ``moves`` lookups."""
+        if not corner_free(self.semantics):
+            raise ValueError("a corner rule is in force: the moves depend on the cell")
+        return tuple(self.offsets)
+
+    @property
+    def mask(self) -> bytes:
+        return self._masks[0]
+
+    @property
+    def moves(self) -> list[tuple[int, ...]]:
+        return self._masks[1]
+
+    def _corner_masks(
+        self, order: tuple[str, ...], offsets: list[int], corners: str
+    ) -> tuple[bytes, list[tuple[int, ...]]]:
+        """Per cell, a bit per diagonal the corner rule refuses (whole-array operations):
+        ``never`` refuses it when either side cell is blocked, ``one`` when both are."""
+        walls, size = bytes(self.walls), len(self.walls)
+        mask = 0
+        diagonals = [i for i, name in enumerate(order) if len(name) == 2]
+        for bit, i in enumerate(diagonals):
+            dx, dy = DELTAS[order[i]]
+            side_a = int.from_bytes(_shifted(walls, dx), "little")
+            side_b = int.from_bytes(_shifted(walls, dy * self.stride), "little")
+            refused = side_a | side_b if corners == "never" else side_a & side_b
+            mask |= refused << bit  # each byte is 0 or 1, so bit << bit stays in its byte
+        table = []
+        for m in range(1 << len(diagonals)):
+            banned = {diagonals[b] for b in range(len(diagonals)) if m >> b & 1}
+            table.append(tuple(off for i, off in enumerate(offsets) if i not in banned))
+        return mask.to_bytes(size, "little"), table
+
+    def pad(self, cell: tuple[int, int]) -> int:
+        return (cell[1] + 1) * self.stride + cell[0] + 1
+
+    def unpad(self, p: int) -> tuple[int, int]:
+        y, x = divmod(p, self.stride)
+        return (x - 1, y - 1)
+
+
+def padded(grid: Grid) -> tuple[bytes, array[float] | None]:
+    """``grid``'s walls with a border of walls, and its costs (None: all 1) with a border of 1:
+    the walls' rows joined by the two border cells between them, in one ``join``."""
+    w, size = grid.width, len(grid.blocked)
+    edge = b"\x01" * (w + 1)  # with the separator: the top border row and a left border
+    cells = memoryview(grid.blocked)
+    walls = b"\x01\x01".join([edge, *(cells[i : i + w] for i in range(0, size, w)), edge])
+    if grid.costs is None:
+        return walls, None
+    stride, costs = w + 2, grid.costs
+    terrain = array("d", [1.0]) * len(walls)
+    for y, i in enumerate(range(0, size, w), start=1):
+        terrain[y * stride + 1 : y * stride + 1 + w] = costs[i : i + w]
+    return walls, terrain
+
+
+def corner_free(semantics: Semantics) -> bool:
+    """Does every cell try the same moves: no corner rule, or no diagonal in the order?"""
+    return semantics.corners == "always" or not any(len(name) == 2 for name in semantics.order)
+
+
+def _shifted(data: bytes, offset: int) -> bytes:
+    """``out[p] == data[p + offset]`` (1 = wall outside the array)."""
+    n = len(data)
+    if offset >= 0:
+        return data[offset:] + b"\x01" * offset
+    return b"\x01" * -offset + data[: n + offset]

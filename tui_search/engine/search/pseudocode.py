@@ -1,0 +1,165 @@
+"""The pseudocode of a search, generated from its algorithm and its choices, in the textbook's
+plain words, one numbered line per line.
+
+Nothing here is a fixed text per algorithm: the frontier's name and its operations come from
+the registry (:mod:`tui_search.engine.search.registry`: a queue's "push back" and "pop front", a
+stack's "push" and "pop", a priority queue's order by f = g + h, g or h), and each search
+choice (:mod:`tui_search.engine.search.choices`) puts, moves or removes its own lines: the visit
+rule moves the visited check below the take-off, the goal test moves the goal check, tree
+search trades the visited set for the check "on the path", a corner rule adds its line, and
+iterative deepening wraps it all in its loop over depth limits.  So a student who flips a
+choice sees which line moved.
+
+The code says what :mod:`tui_search.engine.search.reference` does, in its order.  Each line has a
+``kind``, a name for what it does ("take", "reached", "push" ...), which stays the same
+whichever words say it: the app lights lines by kind (:mod:`tui_search.tui.view.code_trace`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+
+from tui_search.engine.search.choices import Semantics
+from tui_search.engine.search.registry import PRIORITIES, Algorithm
+
+#: What a move costs, as the line that adds it to g says it.  Terrain costs land here: the
+#: engine's cost of a move, in words (a keyword of :func:`pseudocode`).
+MOVE_COST = "the move's cost (1 straight, √2 diagonal)"
+#: The same on a map with terrain (a move costs its length times the cost of the cell it enters).
+TERRAIN_MOVE_COST = "the move's length (1 straight, √2 diagonal) × the cost of the cell it enters"
+
+#: The lines that may skip a successor, and the lines that end a step early, by kind.
+SKIP_KINDS = ("blocked", "corner", "reached", "on_path")
+
+_CORNER_WORDS = {
+    "one": "if s is diagonal between two obstacles (corner rule one): skip s",
+    "never": "if s is diagonal past an obstacle's corner (corner rule never): skip s",
+}
+
+
+@dataclass(frozen=True)
+class CodeLine:
+    """One line of pseudocode: what it does (``kind``), its depth of indentation and its
+    words."""
+
+    kind: str
+    indent: int
+    text: str
+
+
+@dataclass(frozen=True)
+class Pseudocode:
+    """A search's pseudocode: its lines in order (numbered from 1)."""
+
+    title: str
+    lines: tuple[CodeLine, ...]
+
+    def number(self, kind: str) -> int | None:
+        """The number of the line of ``kind`` (None: this code has none)."""
+        for i, line in enumerate(self.lines, 1):
+            if line.kind == kind:
+                return i
+        return None
+
+    def numbers(self, kinds: frozenset[str] | set[str]) -> frozenset[int]:
+        """The numbers of the lines of ``kinds`` (those this code has)."""
+        return frozenset(i for i, line in enumerate(self.lines, 1) if line.kind in kinds)
+
+    def numbered(self, indent: str = "    ") -> list[str]:
+        """The lines as printed for a handout: "  7      if s is already visited: skip s"."""
+        width = len(str(len(self.lines)))
+        return [f"{i:>{width}}  {indent * line.indent}{line.text}"
+                for i, line in enumerate(self.lines, 1)]
+
+
+def pseudocode(algorithm: Algorithm, semantics: Semantics, *,
+               move_cost: str = MOVE_COST) -> Pseudocode:
+    """The pseudocode of ``algorithm`` under ``semantics`` (``move_cost``: how the line that
+    adds a move's cost to g says it)."""
+    return _generate(algorithm, semantics, move_cost)
+
+
+def _marks(tree: bool, weighted: bool, iterative: bool, on_expand: bool
+           ) -> tuple[str, str] | None:
+    """What pushing START and pushing a successor record: the best g, the depth reached, or
+    "visited"; None when a push records nothing (tree search, visit on expand)."""
+    if tree or on_expand:
+        return None
+    if weighted:
+        return "best g[START] ← 0", "best g[s] ← g"
+    if iterative:
+        return "mark START reached at depth 0", "mark s reached at depth node's + 1"
+    return "mark START visited", "mark s visited"
+
+
+@lru_cache(maxsize=64)
+def _generate(algorithm: Algorithm, semantics: Semantics, move_cost: str) -> Pseudocode:
+    lines: list[CodeLine] = []
+    tree = semantics.tree_search
+    weighted = algorithm.weighted
+    iterative = algorithm.iterative
+    on_expand = semantics.visit == "expand" and not tree and not weighted and not iterative
+    goal_test = semantics.goal_test_for(algorithm)
+    frontier = algorithm.frontier
+    order_name = algorithm.priority_name
+    by = PRIORITIES.get(algorithm.priority or "", "")
+    order_by = f"{by}, h = {semantics.heuristic} distance" if algorithm.informed else by
+    base = 0
+
+    def add(kind: str, indent: int, text: str) -> None:
+        lines.append(CodeLine(kind, base + indent, text))
+
+    if iterative:
+        add("deepen", 0, "for depth limit ← 0, 1, 2, …:")
+        base = 1
+    holding = f"a {frontier.noun} by {order_by}, holding START" if weighted else (
+        f"a {frontier.noun} holding START")
+    add("init", 0, f"frontier ← {holding}")
+    marks = _marks(tree, weighted, iterative, on_expand)  # what a push records, if anything
+    if marks:
+        add("mark_start", 0, marks[0])
+    if goal_test == "generate":
+        add("goal_start", 0, "goal test: if START is the goal, return its path")
+    add("while", 0, "while the frontier is not empty:")
+    add("take", 1, f"node ← {frontier.take_words(order_name)}")
+    if on_expand:
+        add("discard", 1, "if node is already visited: discard it, go on")
+        add("mark_node", 1, "mark node visited")
+    elif weighted and not tree:
+        add("discard", 1, "if node.g > best g[node]: stale, discard it, go on")
+    if goal_test == "expand":
+        add("goal_node", 1, "goal test: if node is the goal, return its path")
+    if iterative:
+        add("cutoff", 1, "if node's depth = the depth limit: cut off, go on")
+    add("for", 1, f"for each successor s of node, moves in order {','.join(semantics.order)}:")
+    add("blocked", 2, "if s is off the map or an obstacle: skip s")
+    if semantics.corners in _CORNER_WORDS:
+        add("corner", 2, _CORNER_WORDS[semantics.corners])
+    if weighted:
+        add("cost", 2, f"g ← node.g + {move_cost}")
+    if tree:
+        add("on_path", 2, "if s is on the path from START to node: skip s")
+    elif weighted:
+        add("reached", 2, "if best g[s] ≤ g: reached as cheaply, skip s")
+    elif iterative:
+        add("reached", 2, "if s was reached at depth ≤ node's + 1: skip s")
+    else:
+        add("reached", 2, "if s is already visited: skip s")
+    add("push", 2, frontier.push_words(by))
+    if marks:
+        add("mark_succ", 2, marks[1])
+    if goal_test == "generate":
+        add("goal_succ", 2, "goal test: if s is the goal, return its path")
+    if iterative:
+        add("fail", 0, "if nothing was cut off at the limit: return no path")
+    else:
+        add("fail", 0, "return no path")
+    title = f"{algorithm.short}: {algorithm.name}"
+    differences = semantics.for_algorithm(algorithm).differences(algorithm)
+    if differences:
+        title += f" ({', '.join(differences)})"
+    return Pseudocode(title, tuple(lines))
+
+
+__all__ = ["MOVE_COST", "SKIP_KINDS", "CodeLine", "Pseudocode", "pseudocode"]

@@ -1,0 +1,144 @@
+"""The help screen (``?``): the keys, the colours and glyphs, and how BFS and DFS work in the
+tutorial's words."""
+
+from __future__ import annotations
+
+from typing import ClassVar
+
+from rich.table import Table
+from rich.text import Text
+from textual.app import ComposeResult
+from textual.binding import Binding, BindingType
+from textual.containers import VerticalScroll
+from textual.screen import ModalScreen
+from textual.widgets import Static
+
+from tui_search.engine.search.registry import ALGORITHMS
+from tui_search.tui.view.themes import THEMES
+from tui_search.tui.widgets.grid_view import GridView
+from tui_search.tui.widgets.legend import Legend
+
+#: The keys, grouped as a learner uses them (a test checks every binding is listed here).
+KEYS = (
+    ("arrows  h j k l", "move the cursor"),
+    ("s  g", "put the start / the goal at the cursor"),
+    ("o", "obstacle on / off at the cursor"),
+    ("b  m", "terrain brush: next cost (2 3 5 9 1 off) / paint it"),
+    ("click, drag", "draw or erase obstacles (first cell decides), or the brush"),
+    ("right-click", "move the cursor only"),
+    ("ctrl+z  ctrl+y", "undo / redo an edit of the map (a mouse stroke is one edit)"),
+    ("n  p", "next / previous step (one expansion)"),
+    ("space", "play / pause (at the last step: again from step 0)"),
+    ("+  -", "faster / slower"),
+    ("home  end", "first / last step (the answer)"),
+    ("esc", "stop computing the last step (on a big map)"),
+    (" ".join(a.app_key for a in ALGORITHMS.values()),
+     " / ".join(a.short for a in ALGORITHMS.values()) + " (a new search, same map)"),
+    ("c", "compare searches side by side, in lockstep; 1-6 add / remove"),
+    ("f", "fold the search trees away / show them"),
+    ("v", "Code panel: the search's pseudocode, the step's lines lit ▶"),
+    ("r", "restart the search at step 0"),
+    (",", "settings: moves, corners, visit, goal test, tree, heuristic"),
+    ("z", "the whole map at once: a character a block of cells"),
+    ("]  [", "zoom in / out: bigger / smaller cells"),
+    ("a", "cell labels: arrows and depth or cost, depth or cost, none"),
+    ("pgup  pgdn", "cursor a page up / down; in a lesson: section back / next"),
+    ("⇧←  ⇧→", "lesson: section back / next, as pgup / pgdn (⇧ is shift)"),
+    ("⇧↑  ⇧↓", "lesson: scroll its text up / down"),
+    ("S  G  e", "cursor to the start / the goal / the node being expanded"),
+    ("mouse over", "the line under the map says what the run knows of that cell"),
+    ("i  enter", "quiz: predict the node that comes off next (cursor, enter)"),
+    ("click, tab ↑↓", "quiz: pick the frontier entry instead (double click: answer)"),
+    ("x", "the exercises as live challenges: --exercise FILE's, 1, 2, off"),
+    ("d", "--replay: to the step where your trace first differs / back"),
+    ("t", "next colour theme: " + ", ".join(t.title.lower() for t in THEMES.values())),
+    ("ctrl+s", "save the map (to its file, in its format)"),
+    ("w", "save the map as … (asks before replacing a file)"),
+    ("ctrl+o", "open a map … (asks first when there are unsaved edits)"),
+    ("ctrl+n", "generate a maze (DFS carves it) or a random map, from a seed"),
+    ("ctrl+p", "command palette: every command by name (algorithms, themes, …)"),
+    ("?", "this help"),
+    ("q", "quit (asks first when there are unsaved edits)"),
+)
+
+HOW = """\
+[b]Breadth-first search[/b] (BFS) begins at the START node and expands all of its \
+successors: every direction the robot can move in without crashing into an obstacle, \
+leaving the map, or going back to a node already seen. The fringe is a [b]FIFO queue[/b]: \
+the node that has been waiting longest is expanded next. BFS is complete, and optimal when \
+every move costs the same: it finds a path with the fewest moves.
+
+[b]Depth-first search[/b] (DFS) uses a [b]LIFO stack[/b] instead: it always expands the last \
+successor added, going down one branch until it can find no more successors, then back to \
+the newest node that has not been expanded. It usually needs much less memory, but it is not \
+optimal: the path it returns is the one it happened to go down.
+
+[b]Iterative deepening[/b] (IDDFS) runs a depth-limited DFS with limits 0, 1, 2, ... so it \
+finds a path with the fewest moves while keeping DFS's small stack.
+
+The fewest moves is not the cheapest path when a diagonal costs √2. [b]Uniform-cost search[/b] (UCS) takes from a [b]priority queue[/b] the node whose path so far is cheapest (its cost [b]g[/b]): it finds the cheapest path. [b]A*[/b] adds [b]h[/b], an estimate of the cost still to go, and takes the lowest [b]f = g + h[/b]: the same cheapest path, expanding far fewer nodes, as long as h never overestimates (manhattan does, with diagonal moves). [b]Greedy best-first[/b] takes the lowest h alone: fast, and often wrong. A cell reached again more cheaply is pushed again; its older entry is [i]stale[/i] and is discarded when it comes off. On [b]terrain[/b] (shaded cells, their cost beside the glyph) a move costs its length times the cost of the cell it enters: BFS still counts moves and wades through the mud, UCS and A* walk round it.
+
+Each expanded node turns blue and its successors are generated (dark). When the goal is \
+generated, the path is traced back up the tree from the goal to START (green). (These are the \
+dark theme's colours: the legend above shows the colours of the theme in use, t changes it.)"""
+
+
+def keys_table() -> Table:
+    """The keys and what each does, in two columns: a description wraps in its own column
+    (under its first word, never under the keys)."""
+    table = Table.grid(padding=(0, 2))
+    table.add_column(style="bold", no_wrap=True)
+    table.add_column(ratio=1)
+    for key, description in KEYS:
+        table.add_row(Text(key), Text(description))  # as written: no markup, no emoji
+    return table
+
+
+def about_text() -> str:
+    """The version and the search core that runs, as ``tui-search --version`` says them (a
+    user without a C compiler learns here that the Python core runs, and why)."""
+    from tui_search import __version__
+    from tui_search.engine.search.loops.compiled import core_name
+
+    return f"tui-search {__version__} ({core_name()})"
+
+
+class HelpScreen(ModalScreen[None]):
+    """Keys, colours and a few lines on the searches; any of escape, ? or q closes it."""
+
+    BINDINGS: ClassVar[list[BindingType]] = [
+        Binding("escape,question_mark,q", "dismiss", "Close"),
+    ]
+    AUTO_FOCUS = "VerticalScroll"
+
+    DEFAULT_CSS = """
+    HelpScreen {
+        align: center middle;
+        & > VerticalScroll {
+            width: 90%;
+            max-width: 86;
+            height: 90%;
+            border: round $primary;
+            border-title-align: center;
+            background: $surface;
+            padding: 0 1;
+        }
+        & .help-heading { text-style: bold; color: $text-accent; margin-top: 1; }
+    }
+    """
+
+    def __init__(self, view: GridView) -> None:
+        super().__init__()
+        self._view = view
+
+    def compose(self) -> ComposeResult:
+        with VerticalScroll() as scroll:
+            scroll.border_title = "Help · escape to close"
+            yield Static("Keys", classes="help-heading")
+            yield Static(keys_table(), id="help-keys")
+            yield Static("Colours and glyphs", classes="help-heading")
+            yield Legend(self._view)
+            yield Static("How the searches work", classes="help-heading")
+            yield Static(HOW)
+            yield Static("About", classes="help-heading")
+            yield Static(about_text(), id="help-about")

@@ -1,0 +1,56 @@
+"""Which searches the panes show, without Textual: a spec (``bfs,dfs``, as ``--compare``
+spells it; one key, one pane), what a search's key does to it, and the searches it names
+under the settings in force.  The :class:`~tui_search.tui.model.session.Session` keeps the spec
+shown and what ``c`` goes between; these functions decide.
+"""
+
+from __future__ import annotations
+
+from tui_search.engine.search.choices import Semantics
+from tui_search.engine.search.compare import Contender, parse_compare
+from tui_search.engine.search.registry import get_algorithm
+
+#: The searches ``c`` compares until the settings pick others.
+DEFAULT_COMPARE = "bfs,dfs"
+#: Panes: one at least, four at most; the number keys take none out of fewer than two.
+MIN_COMPARED, MAX_PANES = 2, 4
+
+
+def normal_spec(spec: str) -> str:
+    """``bfs, dfs,`` as ``bfs,dfs``: the searches of a spec, no blanks."""
+    return ",".join(part.strip() for part in spec.split(",") if part.strip())
+
+
+def searches_of(spec: str, semantics: Semantics) -> tuple[list[Contender], str]:
+    """The searches of ``spec`` under ``semantics``, and a note when a setting does not
+    apply to one of them (the visit rule: that one visits on generate)."""
+    contenders = parse_compare(spec, semantics, fit=True, fewest=1)
+    fitted = [c.label for c in contenders if c.semantics.visit != semantics.visit]
+    note = (f"Visit on expand does not apply to {', '.join(fitted)}: visit on generate "
+            "there" if fitted else "")
+    return contenders, note
+
+
+def with_key(spec: str, key: str) -> tuple[str, str | None]:
+    """A search's key pressed while ``spec`` is shown.  One pane: run ``key`` there.
+    Several: add it, or take it out (two stay, four at most).  The spec to show then, and
+    None; or ``spec`` as it is, and a warning why nothing changed."""
+    parts = spec.split(",")
+    keys = [p.partition(":")[0] for p in parts]
+    name = get_algorithm(key).short
+    if len(parts) == 1:  # rule over N: a key picks one pane's search, adds to several
+        parts = [key]
+    elif key in keys:
+        if len(parts) == MIN_COMPARED:
+            return spec, f"Compare keeps two searches at least: {name} stays (c for one search)"
+        del parts[keys.index(key)]
+    elif len(parts) == MAX_PANES:
+        return spec, (f"Compare shows four searches at most: take one out to add {name}"
+                      " (its key again)")
+    else:
+        parts.append(key)
+    return ",".join(parts), None
+
+
+__all__ = ["DEFAULT_COMPARE", "MAX_PANES", "MIN_COMPARED", "normal_spec", "searches_of",
+           "with_key"]

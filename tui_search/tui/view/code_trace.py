@@ -1,0 +1,184 @@
+"""Which lines of the pseudocode the step at a run's position executed -- plain data, no
+Textual, read from the run's named queries (``run.steps``, ``run.nodes``, ``run.now``).
+
+A line is lit when the step did what it says: the take-off and the loop's head on every step;
+a check ("if s is already visited: skip s", the corner rule, "discard it") only when it held
+for the step's node or for one of its successors; a push and its mark when something was
+pushed; a goal test when it found the goal.  Step 0 lights the lines that set the search up.
+Stepping back lights that earlier step's lines: everything here is computed from the position.
+"""
+
+# No `from __future__ import annotations`: typing compiles a NamedTuple's string
+# annotations one by one at import (~5 M instructions of every start in all: session 14).
+from typing import TYPE_CHECKING, NamedTuple
+
+from tui_search.engine.maps.grid import DELTAS, Cell
+from tui_search.engine.run.recorded import Run
+from tui_search.engine.search.choices import corner_allowed
+
+if TYPE_CHECKING:  # imported by code_of: the first frame shows no code (~2 ms of import)
+    from tui_search.engine.search.pseudocode import Pseudocode
+
+
+class Skip(NamedTuple):
+    """A successor the step did not push, and the kind of line that skipped it."""
+
+    kind: str  # "blocked", "corner", "reached" or "on_path"
+    move: str
+    cell: Cell
+
+
+def code_of(run: Run) -> "Pseudocode":
+    """The pseudocode of ``run``'s search (generated once per algorithm and choices); on a
+    map with terrain, g adds the cost of the cell a move enters."""
+    from tui_search.engine.search.pseudocode import MOVE_COST, TERRAIN_MOVE_COST, pseudocode
+
+    move_cost = TERRAIN_MOVE_COST if run.grid.costs is not None else MOVE_COST
+    return pseudocode(run.algo, run.semantics, move_cost=move_cost)
+
+
+def skipped(run: Run, k: int | None = None) -> list[Skip]:
+    """The successors step ``k`` (default: the position's) considered and did not push, in
+    the order of the moves, each with the line that skipped it (empty for a step that
+    expanded no successors: step 0, a discarded step, the goal taken off, a cut-off)."""
+    k = run.k if k is None else k
+    if k == 0 or run.steps.is_discarded(k):
+        return []
+    nodes = run.nodes
+    event = run.steps.expanded_event(k)
+    if event == nodes.goal:
+        return []
+    limit = run.steps.depth_limit(k) if run.algo.iterative else None
+    if limit is not None and nodes.depth(event) >= limit:
+        return []
+    added = run.steps.succ_range(k)
+    pushed = {nodes.move(h) for h in added}
+    last = nodes.move(nodes.goal) if nodes.goal in added else None  # the loop stopped there
+    grid, corners = run.grid, run.semantics.corners
+    reached_kind = "on_path" if run.semantics.tree_search else "reached"
+    x, y = nodes.cell(event)
+    out = []
+    for move in run.semantics.order:
+        if move == last:
+            break
+        if move in pushed:
+            continue
+        dx, dy = DELTAS[move]
+        cell = (x + dx, y + dy)
+        if not grid.is_free(cell):
+            kind = "blocked"
+        elif dx and dy and not corner_allowed(corners, grid.is_free((x + dx, y)),
+                                             grid.is_free((x, y + dy))):
+            kind = "corner"
+        else:
+            kind = reached_kind
+        out.append(Skip(kind, move, cell))
+    return out
+
+
+def lit_kinds(run: Run) -> frozenset[str]:
+    """The kinds of the lines the step at ``run``'s position executed (see the module's
+    docstring)."""
+    k = run.k
+    algo = run.algo
+    kinds: set[str] = set()
+    if k == 0 or (algo.iterative and run.steps.first_of_iteration(run.steps.iteration_of(k)) == k):
+        kinds |= {"deepen", "init", "mark_start"}
+        if k == 0:
+            if run.at_end and run.found:
+                kinds.add("goal_start")
+            return frozenset(kinds)
+    kinds |= {"while", "take"}
+    if run.at_end and run.done and not run.found and not run.gave_up:
+        kinds.add("fail")
+    if run.steps.is_discarded(k):
+        kinds.add("discard")
+        return frozenset(kinds)
+    nodes = run.nodes
+    event = run.steps.expanded_event(k)
+    kinds.add("mark_node")
+    if event == nodes.goal:
+        kinds.add("goal_node")
+        return frozenset(kinds)
+    limit = run.steps.depth_limit(k) if algo.iterative else None
+    if limit is not None and nodes.depth(event) >= limit:
+        kinds.add("cutoff")
+        return frozenset(kinds)
+    kinds.add("for")
+    skips = skipped(run, k)
+    kinds.update(skip.kind for skip in skips)
+    added = run.steps.succ_range(k)
+    if len(added) or any(skip.kind in ("reached", "on_path") for skip in skips):
+        kinds.add("cost")  # a successor got past the map's checks: its g was worked out
+    if len(added):
+        kinds |= {"push", "mark_succ"}
+        if nodes.goal in added:
+            kinds.add("goal_succ")
+    return frozenset(kinds)
+
+
+#: How the narration says why a successor was skipped, by the kind of line (one, several).
+_SKIP_WORDS = {
+    "reached": ("is already visited", "are already visited"),
+    "on_path": ("is on the path to the node", "are on the path to the node"),
+    "corner": ("is past a blocked corner", "are past a blocked corner"),
+}
+_REACHED_WORDS = {"weighted": ("was reached as cheaply", "were reached as cheaply"),
+                  "iterative": ("was reached no deeper", "were reached no deeper")}
+
+
+def line_notes(run: Run, short: bool = False) -> list[str]:
+    """What the step at ``run``'s position did by a line worth naming, for the narration:
+    "line 8: (0,1) is already visited, skipped", "line 5 discards it"; none for the skips
+    off the map or into an obstacle (every step has some).  ``short``: for a narrow pane,
+    "line 8 skipped (0,1)", "line 8 skipped 4"."""
+    code = code_of(run)
+    k = run.k
+    if k and run.steps.is_discarded(k):
+        return [f"line {code.number('discard')} discards it"]
+    cells: dict[str, list[str]] = {}
+    for skip in skipped(run, k):
+        if skip.kind != "blocked":
+            cells.setdefault(skip.kind, []).append(f"({skip.cell[0]},{skip.cell[1]})")
+    words = dict(_SKIP_WORDS)
+    if run.algo.weighted:
+        words["reached"] = _REACHED_WORDS["weighted"]
+    elif run.algo.iterative:
+        words["reached"] = _REACHED_WORDS["iterative"]
+    out = []
+    for kind, named in cells.items():
+        if short:
+            out.append(f"line {code.number(kind)} skipped "
+                       f"{named[0] if len(named) == 1 else len(named)}")
+            continue
+        one, several = words[kind]
+        listed = named[0] if len(named) == 1 else f"{', '.join(named[:-1])} and {named[-1]}"
+        out.append(f"line {code.number(kind)}: {listed} "
+                   f"{one if len(named) == 1 else several}, skipped")
+    return out
+
+
+def lit_lines(run: Run) -> frozenset[int]:
+    """The numbers of the lines of :func:`code_of` the step at ``run``'s position executed."""
+    return code_of(run).numbers(lit_kinds(run))
+
+
+#: The lit lines that say most about a step, the most specific first: the line the
+#: narration names (a discard, a skip) or that ends the search (the goal found, a cut-off).
+FOCUS_KINDS = ("discard", "corner", "reached", "on_path", "goal_node", "goal_succ",
+               "goal_start", "cutoff", "fail")
+
+
+def focus_line(run: Run) -> int | None:
+    """The number of the most specific line the step at ``run``'s position lit
+    (:data:`FOCUS_KINDS`), the one the Code panel keeps in view; None: only the loop's
+    ordinary lines (the panel keeps the first lit line in view)."""
+    kinds = lit_kinds(run)
+    code = code_of(run)
+    for kind in FOCUS_KINDS:
+        if kind in kinds and (number := code.number(kind)) is not None:
+            return number
+    return None
+
+
+__all__ = ["FOCUS_KINDS", "Skip", "code_of", "focus_line", "line_notes", "lit_kinds", "lit_lines", "skipped"]

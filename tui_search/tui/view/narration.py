@@ -1,0 +1,271 @@
+"""What the search is doing, in the tutorial's words -- plain text, no Textual, so it is tested
+directly.
+
+The tutorial tells BFS as "South is taken out of the queue and expanded. S and SE are the
+successors and they are added to the queue" and DFS the same with a stack; these functions say
+the same thing about the step the run is at.
+"""
+
+from __future__ import annotations
+
+from weakref import WeakKeyDictionary
+
+from tui_search.engine.maps.grid import Cell
+from tui_search.engine.run.recorded import Run
+from tui_search.engine.search.registry import get_algorithm
+from tui_search.engine.util.numbers import group_digits
+from tui_search.tui.view.code_trace import line_notes
+
+
+def gave_up_text(run: Run) -> str:
+    """Why a run stopped unfinished, naming the flag that moves the limit."""
+    return f"gave up at --max-steps {group_digits(run.max_steps)}"
+
+
+def cell_text(cell: Cell | None) -> str:
+    return "-" if cell is None else f"({cell[0]},{cell[1]})"
+
+
+def frontier_word(run: Run) -> str:
+    """``queue`` for a FIFO frontier (BFS), ``stack`` for a LIFO one (DFS, IDDFS), ``priority
+    queue`` for the cost-ordered searches."""
+    return run.algo.frontier.noun
+
+
+def costs_text(run: Run, g: int) -> str:
+    """Event ``g``'s priority said with what it adds up: "f = 7.24 (g 4.41 + h 2.83)",
+    "g = 4.41", "h = 2.83 (g 4.41)"; empty for a queue or a stack."""
+    costs = run.nodes.costs(g)
+    if costs is None:
+        return ""
+    cost, h, f = costs
+    order = run.algo.priority
+    if order == "g":
+        return f"g = {cost:.2f}"
+    if order == "h":
+        return f"h = {h:.2f} (g {cost:.2f})"
+    return f"f = {f:.2f} (g {cost:.2f} + h {h:.2f})"
+
+
+def _reopened(run: Run, added: range) -> list[str]:
+    """What the step's pushes did to cells pushed before (a cost-ordered search pushes a cell
+    again only with a lower g): "(4,4) re-opened with a lower g" when it had been expanded,
+    "(4,4) reached with a lower g" when it was still waiting (or only taken off stale: greedy
+    search takes equal priorities in push order, so a cell's costlier entry can come off
+    before its cheaper one, and a discarded step is no expansion)."""
+    out = []
+    for h in added:
+        cell = run.nodes.cell(h)
+        generated, expanded = run.now.times_reached(cell)
+        if expanded:
+            out.append(f"{cell_text(cell)} re-opened with a lower g")
+        elif generated > 1:
+            out.append(f"{cell_text(cell)} reached with a lower g")
+    return out
+
+
+#: At most this many successors' terrain costs said in one step's narration.
+TERRAIN_NOTES = 3
+
+
+def _terrain(run: Run, expanded: int, added: range) -> list[str]:
+    """What the terrain added to the step's successors' g: "(3,4) costs 5: g 7.41 → 12.41"
+    (the expanded node's g, then the successor's), for those that do not cost 1."""
+    costs = run.nodes.costs(expanded)
+    grid = run.grid
+    if costs is None or grid.costs is None:
+        return []
+    out = []
+    for h in added:
+        cell = run.nodes.cell(h)
+        reached = run.nodes.costs(h)
+        if grid.cost(cell) != 1.0 and reached is not None:
+            out.append(f"{cell_text(cell)} costs {grid.cost(cell):g}: "
+                       f"g {costs[0]:.2f} → {reached[0]:.2f}")
+    if len(out) > TERRAIN_NOTES:
+        out[TERRAIN_NOTES:] = [f"{len(out) - TERRAIN_NOTES} more on terrain"]
+    return out
+
+
+def _node_text(run: Run, g: int) -> str:
+    """An event as the tutorial names it: START, or the cell (and the move that reached it)."""
+    cell = cell_text(run.nodes.cell(g))
+    return f"START {cell}" if run.nodes.parent(g) < 0 else cell
+
+
+def narrate(run: Run, code: bool = False) -> str:
+    """One line about the step just taken (or, at step 0, about what happens next); with
+    ``code`` (the Code panel shown), naming the lines that skipped a successor or discarded
+    the node: "...; line 8: (0,1) is already visited, skipped"."""
+    text = _narrate(run)
+    if code:
+        text = "; ".join([text, *line_notes(run)])
+    return text
+
+
+def _narrate(run: Run) -> str:
+    word = frontier_word(run)
+    k = run.k
+    limit = run.steps.depth_limit() if run.algo.iterative else None
+    if k == 0:
+        first = f"START {cell_text(run.grid.start)} is on the {word}"
+        if limit is not None:
+            first += f" (depth limit {limit})"
+        if run.at_end and run.found:
+            return f"{first}: the start is the goal"
+        return f"{first}. Press n to expand it."
+    expanded = run.steps.expanded_event(k)
+    node = _node_text(run, expanded)
+    costs = costs_text(run, expanded)
+    if costs:
+        node = f"{node} {costs}"
+    added = run.now.added_now()
+    dirs = [run.nodes.move(h) for h in added]
+    prefix = ""
+    if limit is not None and run.steps.first_of_iteration(run.steps.iteration_of(k)) == k:
+        prefix = f"Depth limit {limit}, a new iteration from START. "
+    if run.at_end and run.found:
+        goal = cell_text(run.nodes.cell(run.nodes.goal))
+        if run.nodes.goal == expanded:  # the goal tested when taken off the frontier
+            return f"{prefix}Took the goal {goal} off the {word}: found"
+        return f"{prefix}Goal {goal} found from {node}"
+    if run.steps.is_discarded(k) and run.algo.weighted:
+        text = (f"{prefix}Took {node} off the {word}: stale (its cell was reached with a "
+                f"lower g since), discarded")
+    elif run.steps.is_discarded(k):
+        text = f"{prefix}Took {node} off the {word}: already expanded, discarded"
+    elif dirs and run.algo.weighted:
+        text = f"{prefix}Expanded {node}: added {', '.join(dirs)}"
+        reopened = _reopened(run, added)
+        if reopened:
+            text += "; " + ", ".join(reopened)
+        terrain = _terrain(run, expanded, added)
+        if terrain:
+            text += "; " + ", ".join(terrain)
+    elif dirs:
+        text = f"{prefix}Expanded {node}: added {', '.join(dirs)} to the {word}"
+    elif limit is not None and run.nodes.depth(expanded) >= limit:
+        text = f"{prefix}Expanded {node} at the depth limit {limit}: no successors added"
+    else:
+        text = f"{prefix}Expanded {node}: no new successors"
+    if run.at_end and run.gave_up:
+        return f"{text}. {gave_up_text(run).capitalize()}"
+    if run.at_end and run.now.frontier_len() and limit is None:
+        # ended with cells still to expand: only a replayed trace stops so (a search of
+        # the app goes on until its frontier is empty), and nothing blocked it
+        return (f"{text}. It stops here, {run.now.frontier_len()} still on the {word}: "
+                f"no path found")
+    if run.at_end:  # done, not found
+        why = blocked_by(run)
+        why = f" — {why}" if why else ""
+        if limit is not None:
+            return f"{text}. Depth limit {limit} cut nothing off: no path{why}"
+        return f"{text}. Frontier empty: no path{why}"
+    return text
+
+
+_BLOCKED: WeakKeyDictionary[Run, str | None] = WeakKeyDictionary()
+
+
+#: Maps bigger than this are not searched again to name the rule that blocked a path (up to
+#: three BFS runs: about 0.2 s on a 512x512 maze, seconds on a 4096x4096 map).
+BLOCKED_BY_CELLS = 300_000
+
+
+def blocked_by(run: Run) -> str | None:
+    """The rule that left the map without a path, if one did (searched once per run, on
+    maps of at most :data:`BLOCKED_BY_CELLS` cells: the app must not freeze to say it).  Never
+    for a replayed trace: its rules are the matched search's, not ones the trace declared."""
+    if run.replayed or run.semantics.is_default or run.grid.width * run.grid.height > BLOCKED_BY_CELLS:
+        return None
+    if run not in _BLOCKED:
+        from tui_search.engine.run.blocked import blocking_rule  # only when a choice is changed
+
+        _BLOCKED[run] = blocking_rule(run.grid, run.semantics)
+    return _BLOCKED[run]
+
+
+def status_parts(run: Run) -> list[tuple[str, str]]:
+    """The counts as (label, value) pairs, in the order shown."""
+    total = run.total
+    digits = group_digits
+    step = f"{digits(run.k)}/{digits(total) if total is not None else '?'}"
+    parts = [
+        ("step", step),
+        ("expanded", digits(run.now.expanded)),
+    ]
+    if run.k and run.algo.weighted:  # the node just expanded: "f 7.24 (g 4.41 + h 2.83)"
+        name, _, value = costs_text(run, run.steps.expanded_event(run.k)).partition(" = ")
+        parts.insert(1, (name, value))
+    if (run.semantics.visit == "expand" or run.algo.weighted) and not run.semantics.tree_search:
+        parts.append(("discarded", digits(run.now.discarded)))
+    parts += [
+        ("generated", digits(run.now.generated)),
+        (frontier_word(run),
+         f"{digits(run.now.frontier_len())} (peak {digits(run.steps.peak_frontier())})"),
+    ]
+    if run.algo.iterative:
+        parts.append(("depth limit", str(run.steps.depth_limit())))
+    return parts
+
+
+def result_text(run: Run) -> str:
+    """The answer, once the run is at its end: the path's moves and cost, or no path."""
+    if not run.at_end:
+        return ""
+    if not run.found:
+        return "no path"
+    moves = run.moves() or []
+    cost = run.grid.path_cost(run.path() or [])
+    text = f"path: {len(moves)} moves, cost {cost:.2f}"
+    lowest = lowest_cost(run)
+    if lowest is not None:
+        text += " (the lowest)" if cost <= lowest * (1 + 1e-9) else f" (lowest {lowest:.2f})"
+    return f"{text} · {bound_text(run)}"
+
+
+_LOWEST: WeakKeyDictionary[Run, float | None] = WeakKeyDictionary()
+
+
+#: Maps bigger than this are not searched again for the lowest cost (a uniform-cost search of
+#: 40,000 cells takes about a tenth of a second).
+LOWEST_COST_CELLS = 40_000
+
+
+def lowest_cost(run: Run) -> float | None:
+    """The cheapest path's cost under the run's moves and corner rule: the benchmark's
+    optimum when the run knows it (``known_lowest``), else a uniform-cost search, once per
+    run, on maps of at most :data:`LOWEST_COST_CELLS` cells (None above)."""
+    if run.known_lowest is not None:
+        return run.known_lowest
+    if run.grid.width * run.grid.height > LOWEST_COST_CELLS:
+        return None
+    if run not in _LOWEST:
+        sem = run.semantics.replace(goal_test=None, tree_search=False, visit="generate")
+        _LOWEST[run] = Run(run.grid, "ucs", sem).outcome().cost
+    return _LOWEST[run]
+
+
+_SUPERSCRIPT = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+def bound_text(run: Run) -> str:
+    """The generated count beside the tutorial's bound: at most ``(b-1)^(d+1)`` nodes, with
+    ``b`` moves and the goal at depth ``d`` ("7^(d+1)" for eight moves) -- the loose bound made
+    something a student can test."""
+    depth = len(run.moves() or [])
+    base = max(1, run.semantics.branching - 1)
+    exponent = str(depth + 1).translate(_SUPERSCRIPT)
+    bound = run.semantics.bound(depth)
+    digits = str(bound)
+    if len(digits) <= 13:
+        value = f"= {bound:,}"
+    else:  # 7^139 has 118 digits: say how big, not every digit
+        power = str(len(digits) - 1).translate(_SUPERSCRIPT)
+        value = f"≈ {digits[0]}.{digits[1]}×10{power}"
+    return f"generated {run.now.generated:,} of at most {base}{exponent} {value}"
+
+
+def algorithm_title(algorithm: str) -> str:
+    algo = get_algorithm(algorithm)
+    return f"{algo.short} · {algo.name}"
