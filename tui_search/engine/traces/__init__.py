@@ -1,1 +1,8 @@
-"""TODO."""
+"""Another program's search trace: read, checked against a search, diagnosed, replayed.
+
+* :mod:`~tui_search.engine.traces.read`: reading a trace;
+* :mod:`~tui_search.engine.traces.check`: a trace against one search, step by step;
+* :mod:`~tui_search.engine.traces.diagnose`: which searches a trace matches longest;
+* :mod:`~tui_search.engine.traces.as_run`: a trace as a run like any other;
+* :mod:`~tui_search.engine.traces.replay`: a trace beside its search, for ``--replay``.
+"""

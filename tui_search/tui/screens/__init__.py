@@ -1,1 +1,10 @@
-"""Modal screens: help, the file-name prompt, the unsaved-edits question."""
+"""The main screen: the screen of panes, its keys, and what it does with files.
+
+* :mod:`~tui_search.tui.screens.main`: the keys and the widgets' messages, as calls on the session;
+* :mod:`~tui_search.tui.screens.panes`: the screen of panes, and the session pushed down to them;
+* :mod:`~tui_search.tui.screens.keys`: the key table;
+* :mod:`~tui_search.tui.screens.playback_driver`: playback and seeks on the screen;
+* :mod:`~tui_search.tui.screens.exercise_check`: the challenge's verdict on the map now;
+* :mod:`~tui_search.tui.screens.file_commands`: saving, opening, never losing edits;
+* :mod:`~tui_search.tui.screens.save_questions`: what a refused save asks.
+"""
