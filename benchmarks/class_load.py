@@ -119,10 +119,11 @@ async def _class(url: str, visitors: int, steps: int = 0) -> tuple[list[float], 
 
 def floor_cpu(repeats: int) -> list[float]:
     """CPU seconds of a forked app from the fork to its first frame (fork server alone)."""
+    from tui_search.cli.main import FORK_COMMAND
     from tui_search.serve.visit import Forks
     from tui_search.serve.web import APP_MEMORY_MB
 
-    forks = Forks([TUTORIAL, "--served"], APP_MEMORY_MB)
+    forks = Forks(FORK_COMMAND, [TUTORIAL, "--served"], APP_MEMORY_MB)
     forks.start()
 
     async def one() -> float:

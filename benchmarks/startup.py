@@ -39,11 +39,10 @@ def screen_widgets(argv: list[str]) -> int:
     the widget count of the trivial app that is that screen's floor."""
     import asyncio
 
-    from tui_search.cli import main as cli
+    from tui_search.cli.main import build_app
+    from tui_search.cli.parse import parse_options
 
-    args = cli.build_parser().parse_args(argv)
-    cli.check_modes(args)
-    app = cli.build_app(args, *cli.load_problem(args))
+    app = build_app(parse_options(argv))
 
     async def count() -> int:
         async with app.run_test(size=TERMINAL) as pilot:

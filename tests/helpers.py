@@ -87,3 +87,16 @@ def summary(run) -> dict:
     from tui_search.cli.headless import json_summary
 
     return json_summary(run.outcome())
+
+
+def flags_of(*argv: str):
+    """The command line's options as typed, nothing read (no map, no exercise): what
+    :func:`~tui_search.cli.parse.parse_options` starts from, for tests of the flags alone."""
+    from tui_search.cli.options import Options
+    from tui_search.cli.parser import build_parser
+    from tui_search.engine.search.registry import DEFAULT_ALGORITHM
+
+    args = build_parser().parse_args(list(argv))
+    return Options.made(vars(args), maps=tuple(args.maps),
+                        algorithm_given=args.algorithm is not None,
+                        algorithm=args.algorithm or DEFAULT_ALGORITHM)

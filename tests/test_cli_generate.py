@@ -100,8 +100,8 @@ def test_a_missing_folder_is_one_line(capsys, tmp_path: Path) -> None:
 def test_without_output_the_app_opens_the_map_untitled(capsys, monkeypatch) -> None:
     seen = {}
 
-    def fake_run_app(args, grid, path) -> int:
-        seen["app"] = cli.build_app(args, grid, path)
+    def fake_run_app(options) -> int:
+        seen["app"] = cli.build_app(options)
         return 0
 
     monkeypatch.setattr(cli, "run_app", fake_run_app)

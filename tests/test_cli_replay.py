@@ -15,8 +15,8 @@ from tui_search.cli import main as cli
 def opened(monkeypatch) -> list:
     """What the app would have been opened on (the app itself is not run)."""
     apps: list = []
-    monkeypatch.setattr(cli, "run_app", lambda args, grid, path: apps.append(
-        cli.build_app(args, grid, path)) or 0)
+    monkeypatch.setattr(cli, "run_app", lambda options: apps.append(
+        cli.build_app(options)) or 0)
     return apps
 
 

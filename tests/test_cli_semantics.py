@@ -9,9 +9,8 @@ import pytest
 
 from tests.helpers import MAPS
 from tests.test_cli import TUTORIAL, run_cli
-from tui_search.cli.flags import load_problem
 from tui_search.cli.headless import moves_text, run_headless
-from tui_search.cli.main import build_parser
+from tui_search.cli.parse import parse_options
 
 
 def headless_json(capsys, *argv: str) -> tuple[int, dict]:
@@ -117,12 +116,11 @@ def _peak_bytes(capsys, path, max_steps: int) -> int:
     """Peak memory of a headless tree-search iterative deepening (depth-limited search with
     path checking: its steps grow exponentially) that gives up after ``max_steps``, from the
     map loaded to the result printed."""
-    args = build_parser().parse_args([str(path), "--headless", "--json", "-a", "iddfs",
-                                      "--tree-search", "--max-steps", str(max_steps)])
-    grid, where = load_problem(args)
+    options = parse_options([str(path), "--headless", "--json", "-a", "iddfs",
+                             "--tree-search", "--max-steps", str(max_steps)])
     tracemalloc.start()
     try:
-        code = run_headless(args, grid, where)
+        code = run_headless(options)
         _, peak = tracemalloc.get_traced_memory()
     finally:
         tracemalloc.stop()
@@ -152,11 +150,11 @@ def test_a_streamed_trace_is_the_recorded_runs_trace(capsys, argv) -> None:
     from tui_search.engine.maps.load import load_map
     from tui_search.engine.run.recorded import Run
 
-    args = build_parser().parse_args([TUTORIAL, "--headless", *argv, "--max-steps", "400"])
+    options = parse_options([TUTORIAL, "--headless", *argv, "--max-steps", "400"])
     _code, out, _ = run_cli(capsys, TUTORIAL, "--headless", "--trace", "-", *argv,
                            "--max-steps", "400")
-    semantics = semantics_from(args)  # resolves -a's default too
-    run = Run(load_map(TUTORIAL), args.algorithm, semantics, 400)
+    semantics = semantics_from(options)
+    run = Run(load_map(TUTORIAL), options.algorithm, semantics, 400)
     recorded = StringIO()
     for step in run.steps.all():
         recorded.write(trace_line(step))

@@ -9,7 +9,7 @@ import pytest
 
 from tests.helpers import MAPS, MOVINGAI
 from tests.test_cli import run_cli
-from tui_search.cli.main import build_parser
+from tui_search.cli.parser import build_parser
 
 
 def test_the_help_names_terrain() -> None:

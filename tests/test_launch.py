@@ -103,10 +103,9 @@ def test_the_first_frame_imports_no_module_only_a_key_needs() -> None:
     # (benchmarks/README.md, "startup", session 12): the tutorial's first frame, in a fresh
     # process, goes without them.
     probe = ("import asyncio, sys\n"
-             "from tui_search.cli import flags, main as cli\n"
-             "args = cli.build_parser().parse_args(['maps/tutorial.txt'])\n"
-             "cli.check_modes(args)\n"
-             "app = cli.build_app(args, *flags.load_problem(args))\n"
+             "from tui_search.cli.main import build_app\n"
+             "from tui_search.cli.parse import parse_options\n"
+             "app = build_app(parse_options(['maps/tutorial.txt']))\n"
              "async def first_frame():\n"
              "    async with app.run_test(size=(160, 50)) as pilot:\n"
              "        await pilot.pause()\n"

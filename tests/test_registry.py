@@ -7,7 +7,7 @@ from pathlib import Path
 
 from textual.binding import Binding
 
-from tui_search.cli.main import build_parser
+from tui_search.cli.parser import build_parser
 from tui_search.engine.search.registry import ALGORITHMS, Frontier
 from tui_search.tui.dialogs.help import KEYS
 from tui_search.tui.screens.main import MainScreen

@@ -183,8 +183,7 @@ def test_two_hundred_tutorial_maps_grade_well_within_three_seconds(tmp_path: Pat
 
 
 def test_a_teachers_exercise_without_a_map_starts_on_its_own_map(capsys, tmp_path) -> None:
-    from tui_search.cli.flags import load_problem
-    from tui_search.cli.main import build_parser, check_modes
+    from tui_search.cli.parse import parse_options
 
     exercise = tmp_path / "maze.toml"
     exercise.write_text('title = "Maze"\ntext = "Fewer for DFS."\ngenerate = "maze 15x11 7"\n'
@@ -192,10 +191,9 @@ def test_a_teachers_exercise_without_a_map_starts_on_its_own_map(capsys, tmp_pat
                         'solved = "dfs.expanded < bfs.expanded"\n')
     code, out, _ = run_cli(capsys, "--exercise", str(exercise), "--headless")
     assert code == 0 and out.startswith("maze.toml's map: exercise maze solved")
-    args = build_parser().parse_args(["--exercise", str(exercise)])
-    check_modes(args)
-    grid, path = load_problem(args)  # what the app opens
-    assert (grid.width, grid.height, path) == (15, 11, None)
+    options = parse_options(["--exercise", str(exercise)])  # what the app opens
+    grid = options.grid
+    assert grid is not None and (grid.width, grid.height, options.path) == (15, 11, None)
 
 
 def test_csv_of_one_bad_map_is_still_a_table(capsys, tmp_path) -> None:

@@ -4,7 +4,6 @@ a free local port whose page and websocket deliver the app's first screen."""
 
 from __future__ import annotations
 
-import argparse
 import asyncio
 import os
 import re
@@ -13,12 +12,15 @@ from pathlib import Path
 
 import pytest
 
-from tests.helpers import MAPS
+from tests.helpers import MAPS, flags_of
 from tests.served import descendants, first_screen, running, served, visit, wait_for
 from tests.test_cli import run_cli
 from tui_search.cli.flags import EXIT_BAD_INPUT
-from tui_search.cli.main import build_parser
-from tui_search.serve.web import NEEDS_EXTRA, SERVER_FLAGS, served_args
+from tui_search.cli.main import FORK_COMMAND
+from tui_search.cli.options import FLAGS, Options
+from tui_search.cli.parse import parse_options
+from tui_search.cli.parser import build_parser
+from tui_search.cli.serve_flags import NEEDS_EXTRA, SERVER_FLAGS, served_args
 from tui_search.tui.config import Config, config_path
 from tui_search.tui.model.file_rules import OFF_MESSAGE, FileAccess, NameRefused
 
@@ -49,15 +51,19 @@ def test_nonsense_with_serve_is_one_line_and_exit_2(capsys, argv: list[str], say
 
 
 def test_without_the_web_extra_serve_says_how_to_get_it(capsys, monkeypatch) -> None:
-    import tui_search.serve.web
+    import tui_search.cli.serve_flags
 
-    monkeypatch.setattr(tui_search.serve.web, "web_extra_installed", lambda: False)
+    monkeypatch.setattr(tui_search.cli.serve_flags, "web_extra_installed", lambda: False)
     code, out, err = run_cli(capsys, "--serve")
     assert (code, out, err) == (EXIT_BAD_INPUT, "", f"tui-search: error: {NEEDS_EXTRA}\n")
 
 
-def parse(*argv: str) -> argparse.Namespace:
-    return build_parser().parse_args(list(argv))
+def parse(*argv: str) -> Options:
+    return flags_of(*argv)
+
+
+def visitors_args(options: Options, save_folder: str | None = None) -> list[str]:
+    return served_args(build_parser(), options, save_folder)
 
 
 def test_the_served_apps_command_line_carries_the_apps_flags_and_none_of_the_servers(
@@ -69,12 +75,13 @@ def test_the_served_apps_command_line_carries_the_apps_flags_and_none_of_the_ser
                  "light", "--order", "N,E,S,W", "--tree-search", "--max-steps", "500",
                  "--serve", "--host", "0.0.0.0", "--port", "9999", "--save-dir", "saves",
                  "--app-memory", "300")
-    words = served_args(build_parser(), args)
+    words = visitors_args(args, str((tmp_path / "saves").resolve()))
     assert words[-2:] == ["--", str(tmp_path / "my map's copy.txt")]
     app_args = parse(*words)
     assert app_args.served and app_args.save_dir == str((tmp_path / "saves").resolve())
-    for dest, value in vars(args).items():
-        if dest in ("map", "maps", "served", *SERVER_FLAGS):
+    for dest in FLAGS:
+        value = getattr(args, dest)
+        if dest in ("map", "served", *SERVER_FLAGS):
             continue
         assert getattr(app_args, dest) == value, dest
     assert not app_args.serve and app_args.host is None and app_args.port is None
@@ -85,8 +92,7 @@ def test_the_served_apps_command_line_carries_the_apps_flags_and_none_of_the_ser
 def test_the_served_apps_get_the_terrain_and_exercise_files_as_absolute_paths(
         tmp_path, monkeypatch, exercise: str) -> None:
     monkeypatch.chdir(tmp_path)
-    words = served_args(build_parser(), parse("--terrain", "t.txt", "--exercise", exercise,
-                                              "--serve"))
+    words = visitors_args(parse("--terrain", "t.txt", "--exercise", exercise, "--serve"))
     app_args = parse(*words)
     assert app_args.terrain == str(tmp_path / "t.txt")
     assert app_args.exercise == (exercise if exercise == "1" else str(tmp_path / exercise))
@@ -103,9 +109,8 @@ EXERCISE_FILE = str(Path(__file__).parent / "data" / "exercises" / "greedy-not-o
 def test_the_served_apps_accept_the_command_line_the_server_gives_them(
         capsys, monkeypatch, argv: list[str]) -> None:
     """Through main, as typed: its checks fill in -a's default, which --exercise and --compare
-    refuse; the served app must pass the same checks (the fork server runs check_modes)."""
+    refuse; the served app must pass the same checks (the fork server parses them)."""
     import tui_search.serve.web
-    from tui_search.cli.main import check_modes
 
     started: list[list[str]] = []
 
@@ -121,24 +126,24 @@ def test_the_served_apps_accept_the_command_line_the_server_gives_them(
     code, _, err = run_cli(capsys, *argv, "--serve", "--theme", "dark")
     assert (code, err) == (0, ""), err
     (app_args,) = started
-    served = parse(*app_args)
-    check_modes(served)  # no UsageError
-    assert served.served and served.exercise == (argv[1] if "--exercise" in argv else None)
+    visitors = parse_options(app_args)  # no UsageError
+    assert visitors.served
+    assert visitors.exercise == (argv[1] if "--exercise" in argv else None)
 
 
 def test_the_web_extra_is_found_without_importing_it() -> None:
-    from tui_search.serve.web import web_extra_installed
+    from tui_search.cli.serve_flags import web_extra_installed
 
     assert web_extra_installed()  # the test extra brings it
 
 
 def test_the_served_apps_command_line_without_a_save_dir_or_map() -> None:
-    assert served_args(build_parser(), parse("--serve")) == ["--served"]
+    assert visitors_args(parse("--serve")) == ["--served"]
 
 
 def test_a_name_reaches_the_app_as_one_word(tmp_path) -> None:
     name = tmp_path / "$(touch pwned); `touch pwned2` && rm -rf x.txt"
-    assert served_args(build_parser(), parse(str(name), "--serve"))[-1] == str(name)
+    assert visitors_args(parse(str(name), "--serve"))[-1] == str(name)
 
 
 # -- where a served app may read and write ---------------------------------------------
@@ -349,7 +354,8 @@ def test_past_the_visitor_limit_the_next_visitor_is_told_to_try_later() -> None:
     from tui_search.serve.web import make_server
 
     async def visit() -> int:
-        server = make_server(["--served"], "127.0.0.1", 8000, "t", max_visitors=0)
+        server = make_server(["--served"], FORK_COMMAND, "127.0.0.1", 8000, "t",
+                             max_visitors=0)
         async with TestClient(TestServer(await server._make_app())) as client:
             with pytest.raises(aiohttp.WSServerHandshakeError) as refused:
                 await client.ws_connect("/ws")

@@ -287,13 +287,10 @@ def test_a_shared_save_dir_is_one_folder_for_all(tmp_path) -> None:
 
 
 def test_a_visitors_folder_is_made_by_the_app_from_its_id(tmp_path) -> None:
-    import argparse
+    from tui_search.tui.model.file_rules import FileAccess, NameRefused
 
-    from tui_search.cli.flags import UsageError
-    from tui_search.serve.web import file_access
-
-    access = file_access(argparse.Namespace(served=True, save_dir=str(tmp_path),
-                                            visitor="0a1b2c"))
+    access = FileAccess.for_app(True, str(tmp_path), "0a1b2c")
     assert access.folder == (tmp_path / "0a1b2c").resolve() and access.folder.is_dir()
-    with pytest.raises(UsageError, match="not a visitor's id"):
-        file_access(argparse.Namespace(served=True, save_dir=str(tmp_path), visitor="../x"))
+    with pytest.raises(NameRefused, match="not a visitor's id"):
+        FileAccess.for_app(True, str(tmp_path), "../x")
+    assert FileAccess.for_app(False, str(tmp_path), "0a1b2c") == FileAccess()

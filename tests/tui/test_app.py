@@ -889,12 +889,11 @@ async def test_a_run_that_reaches_the_step_limit_says_it_gave_up() -> None:
 @sync
 async def test_a_movingai_map_opens_with_its_scenario_and_z_shows_it_whole() -> None:
     """``tui-search arena.map --scen arena.map.scen --scen-row 5``, as the CLI builds it."""
-    from tui_search.cli.flags import load_problem
-    from tui_search.cli.main import build_parser
+    from tui_search.cli.parse import parse_options
 
     arena = ARENA
-    args = build_parser().parse_args([str(arena), "--scen", f"{arena}.scen", "--scen-row", "5"])
-    grid, path = load_problem(args)
+    options = parse_options([str(arena), "--scen", f"{arena}.scen", "--scen-row", "5"])
+    grid, path = options.grid, options.path
     scen = load_scenario(f"{arena}.scen", 5)
     app = SearchApp(grid, path=path)
     async with app.run_test(size=(120, 40)) as pilot:

@@ -235,14 +235,12 @@ def test_start_up_without_a_lesson_does_not_load_the_markdown_widget() -> None:
 
 @sync
 async def test_the_command_line_opens_a_lesson_file_beside_the_panes() -> None:
-    from tui_search.cli.flags import load_problem
-    from tui_search.cli.main import build_app, build_parser, open_lesson
+    from tui_search.cli.main import build_app
+    from tui_search.cli.parse import parse_options
 
-    args = build_parser().parse_args(["--lesson", str(TEACHER)])
-    assert not open_lesson(args)
-    args.algorithm = "bfs"
-    grid, path = load_problem(args)
-    app = build_app(args, grid, path)
+    options = parse_options(["--lesson", str(TEACHER)])
+    assert options.lesson_read is not None
+    app = build_app(options)
     async with app.run_test(size=(120, 40)) as pilot:
         panel = app.main.query_one(".lesson")
         await wait_until(pilot, lambda: "teacher 1/6" in str(panel.border_title))

@@ -6,9 +6,7 @@ No Textual or Rich here, so scripts and graders start in a fraction of the app's
 
 from __future__ import annotations
 
-import argparse
 import sys
-from pathlib import Path
 from typing import IO, TYPE_CHECKING
 
 from tui_search.cli.flags import (
@@ -38,27 +36,28 @@ from tui_search.engine.search.registry import get_algorithm
 from tui_search.engine.util.filenames import describe_name
 
 if TYPE_CHECKING:
+    from tui_search.cli.options import Options
     from tui_search.engine.maps.scenarios import Scenario
     from tui_search.engine.search.reference import Expansion
 
 
 
-def print_pseudocode(args: argparse.Namespace) -> int:
+def print_pseudocode(options: Options) -> int:
     """``--pseudocode``: the code of ``-a``'s search under the flags' choices, numbered, on
     stdout (:mod:`tui_search.engine.search.pseudocode`); exit 0."""
     from tui_search.engine.search.pseudocode import MOVE_COST, TERRAIN_MOVE_COST, pseudocode
 
     for flag in ("compare", "exercise", "trace", "lesson"):
-        if getattr(args, flag, None) not in (None, False):  # --lesson alone is ""
+        if getattr(options, flag, None) not in (None, False):  # --lesson alone is ""
             raise UsageError(f"--pseudocode prints one search's code: leave out "
                              f"--{flag.replace('_', '-')}")
-    if args.headless or args.json:
+    if options.headless or options.json:
         raise UsageError("--pseudocode prints the code without a search: leave out "
                          "--headless and --json")
     costed = False
-    if args.map is not None or args.terrain is not None:  # the code of a search on this map
-        costed = load_problem(args)[0].costs is not None
-    code = pseudocode(get_algorithm(args.algorithm), semantics_from(args),
+    if options.map is not None or options.terrain is not None:  # the code of a search on this map
+        costed = load_problem(options)[0].costs is not None
+    code = pseudocode(get_algorithm(options.algorithm), semantics_from(options),
                       move_cost=TERRAIN_MOVE_COST if costed else MOVE_COST)
     print(code.title)
     print("\n".join(code.numbered()))
@@ -208,36 +207,45 @@ def human_summary(
     return "\n".join(lines)
 
 
-def run_headless(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
-    if args.trace == "-" and args.json:
-        raise UsageError("--trace - and --json both want stdout; give --trace a file")
-    where = describe_name(map_name(args, path))  # escape sequences shown, not run
+def _grid_of(options: Options) -> tuple[Grid, str]:
+    """The map the command line read, and its name as the output says it (escape sequences
+    shown, not run); a map with no start or goal is an error."""
+    grid = options.grid
+    assert grid is not None, "a headless search runs on the map the command line read"
+    where = describe_name(map_name(options, options.path))
     need_endpoints(grid, where)
-    semantics = semantics_from(args)
+    return grid, where
+
+
+def run_headless(options: Options) -> int:
+    if options.trace == "-" and options.json:
+        raise UsageError("--trace - and --json both want stdout; give --trace a file")
+    grid, where = _grid_of(options)
+    semantics = semantics_from(options)
 
     def search(out: IO[str] | None) -> Outcome:
-        return search_headless(grid, args.algorithm, semantics, args.max_steps, out)
+        return search_headless(grid, options.algorithm, semantics, options.max_steps, out)
 
-    if args.trace == "-":
+    if options.trace == "-":
         outcome = search(sys.stdout)
-    elif args.trace:
+    elif options.trace:
         try:
-            with open(args.trace, "w", encoding="utf-8") as fh:
+            with open(options.trace, "w", encoding="utf-8") as fh:
                 outcome = search(fh)
         except OSError as exc:
-            raise MapError(args.trace, f"cannot write the trace: {exc.strerror}") from None
+            raise MapError(options.trace, f"cannot write the trace: {exc.strerror}") from None
     else:
         outcome = search(None)
-    scenario = getattr(args, "scenario", None)
-    if args.json:
+    scenario = options.scenario
+    if options.json:
         print(to_json(json_summary(outcome, scenario)))
-    elif args.trace != "-":
+    elif options.trace != "-":
         blocked_by = None
         if not outcome.found and not outcome.gave_up and not semantics.is_default:
             from tui_search.engine.run.blocked import blocking_rule
 
             blocked_by = blocking_rule(grid, semantics)
-        print(human_summary(outcome, where, args.max_steps, blocked_by, scenario))
+        print(human_summary(outcome, where, options.max_steps, blocked_by, scenario))
     if outcome.gave_up:
         return EXIT_GAVE_UP
     return EXIT_FOUND if outcome.found else EXIT_NO_PATH
@@ -251,14 +259,13 @@ def compare_table(labels: list[str], outcomes: list[Outcome], terrain: bool = Fa
     return "\n".join("  " + line for line in lines)
 
 
-def run_compare(args: argparse.Namespace, grid: Grid, path: Path | None) -> int:
-    where = describe_name(map_name(args, path))  # escape sequences shown, not run
-    need_endpoints(grid, where)
-    contenders = contenders_from(args)
-    outcomes = [search_headless(grid, c.algorithm, c.semantics, args.max_steps, None)
+def run_compare(options: Options) -> int:
+    grid, where = _grid_of(options)
+    contenders = contenders_from(options)
+    outcomes = [search_headless(grid, c.algorithm, c.semantics, options.max_steps, None)
                 for c in contenders]
-    if args.json:
-        print(to_json({"runs": [json_summary(o, getattr(args, "scenario", None))
+    if options.json:
+        print(to_json({"runs": [json_summary(o, options.scenario)
                                    for o in outcomes]}))
     else:
         print(f"Comparison on {where}:")

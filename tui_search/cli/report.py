@@ -8,10 +8,9 @@ No Textual or Rich here.
 
 from __future__ import annotations
 
-import argparse
 import csv
 import sys
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
 from tui_search.cli.flags import (
     EXIT_FOUND,
@@ -26,6 +25,9 @@ from tui_search.engine.course.exercise_file import Exercise
 from tui_search.engine.course.grading import Verdict, grade
 from tui_search.engine.maps.read import MapError
 from tui_search.engine.util.filenames import describe_name
+
+if TYPE_CHECKING:
+    from tui_search.cli.options import Options
 
 
 class Graded(NamedTuple):
@@ -65,16 +67,16 @@ def _error_text(exc: MapError) -> str:
     return f"{where}: {exc.message}" if where else exc.message
 
 
-def grade_one(args: argparse.Namespace, exercise: Exercise) -> Graded:
-    """``args.map`` (with the command line's --start, --goal and --terrain) graded."""
-    where = describe_name(args.map) if args.map else map_name(args, None)
+def grade_one(options: Options, exercise: Exercise) -> Graded:
+    """``options.map`` (with the command line's --start, --goal and --terrain) graded."""
+    where = describe_name(options.map) if options.map else map_name(options, None)
     try:
-        grid, path = load_problem(args)
-        where = describe_name(map_name(args, path))  # escape sequences shown, not run
+        grid, path, _ = load_problem(options)
+        where = describe_name(map_name(options, path))  # escape sequences shown, not run
         need_endpoints(grid, where)
     except MapError as exc:
         return Graded(where, None, _error_text(exc))
-    return Graded(where, grade(exercise, grid, args.max_steps))
+    return Graded(where, grade(exercise, grid, options.max_steps))
 
 
 def summary(rows: list[Graded]) -> str:
@@ -102,25 +104,25 @@ def _cell(value: object) -> str:
     return str(value)
 
 
-def run_exercise(args: argparse.Namespace) -> int:
-    """Grade ``args.maps`` (none: the tutorial's map, or --generate's) on ``--exercise``."""
-    exercise: Exercise = args.exercise_read
+def run_exercise(options: Options) -> int:
+    """Grade ``options.maps`` (none: the tutorial's map, or --generate's) on ``--exercise``."""
+    exercise = options.exercise_read
+    assert exercise is not None, "the exercise --exercise names, read"
     # A report (a line, a CSV row or a JSON object a map, a bad map one of them) for several
     # maps, and for one under --csv or --json, so that a spreadsheet gets its table and a
     # gradebook script its list whatever the folder holds.
-    if len(args.maps) <= 1 and not ((args.csv or args.json) and args.maps):
-        grid, path = load_problem(args)  # a bad map is bad input: exit 2
-        where = describe_name(map_name(args, path))
+    if len(options.maps) <= 1 and not ((options.csv or options.json) and options.maps):
+        grid, path, _ = load_problem(options)  # a bad map is bad input: exit 2
+        where = describe_name(map_name(options, path))
         need_endpoints(grid, where)
-        rows = [Graded(where, grade(exercise, grid, args.max_steps))]
+        rows = [Graded(where, grade(exercise, grid, options.max_steps))]
     else:
-        if args.scen:
+        if options.scen:
             raise UsageError("--scen is for one map, not the class report")
-        rows = [grade_one(argparse.Namespace(**{**vars(args), "map": name}), exercise)
-                for name in args.maps]
-    if args.csv:
+        rows = [grade_one(options.replace(map=name), exercise) for name in options.maps]
+    if options.csv:
         write_csv(rows, exercise)
-    elif args.json:
+    elif options.json:
         print(to_json([row.as_json() for row in rows]))
     elif len(rows) == 1:
         _print_one(rows[0])

@@ -6,8 +6,6 @@ No Textual or Rich here (the headless path).
 
 from __future__ import annotations
 
-import argparse
-from pathlib import Path
 from typing import TYPE_CHECKING
 
 from tui_search.cli.flags import UsageError, changed_choice_flags, map_name, semantics_from
@@ -16,46 +14,49 @@ from tui_search.engine.maps.read import MapError
 from tui_search.engine.util.filenames import describe_name
 
 if TYPE_CHECKING:
+    from tui_search.cli.options import Options
     from tui_search.engine.traces.replay import Replay
 
 EXIT_MATCH, EXIT_DIFFERENCE = 0, 1
 
 
-def _needs_ends(args: argparse.Namespace, grid: Grid, path: Path | None) -> str:
-    """The map's name as the messages say it; a map with no start or goal is an error."""
-    where = describe_name(map_name(args, path))
+def _needs_ends(options: Options) -> tuple[Grid, str]:
+    """The map, and its name as the messages say it; a map with no start or goal is an
+    error."""
+    grid = options.grid
+    assert grid is not None, "a trace is read for the map the command line read"
+    where = describe_name(map_name(options, options.path))
     missing = [name for name in ("start", "goal") if getattr(grid, name) is None]
     if missing:
         raise MapError(where, f"the map has no {' or '.join(missing)}: give --start X,Y "
                        "--goal X,Y")
-    return where
+    return grid, where
 
 
-def _no_choices_without_a(flag: str, what: str, verb: str, args: argparse.Namespace) -> None:
+def _no_choices_without_a(flag: str, what: str, verb: str, options: Options) -> None:
     """Without ``-a`` the choices are found, not given: a choice flag is a usage error."""
-    given = changed_choice_flags(args)
+    given = changed_choice_flags(options)
     if given:
         raise UsageError(f"without -a, {flag} {what}: give -a to {verb} {', '.join(given)}")
 
 
-def read_replay(args: argparse.Namespace, grid: Grid, path: Path | None,
-                algorithm_given: bool) -> Replay:
+def read_replay(options: Options) -> Replay:
     """``--replay FILE``: the trace beside ``-a``'s search under the choice flags, else the
     search the diagnosis finds it nearest (a malformed trace is a MapError: exit 2)."""
     from tui_search.engine.traces.read import load_trace
     from tui_search.engine.traces.replay import replay_of
 
-    _needs_ends(args, grid, path)
-    if not algorithm_given:
+    grid, _ = _needs_ends(options)
+    if not options.algorithm_given:
         _no_choices_without_a("--replay", "replays beside the search it matches best",
-                              "replay beside", args)
-    trace = load_trace(args.replay, grid)
-    return replay_of(trace, grid, args.algorithm if algorithm_given else None,
-                     semantics_from(args), args.max_steps)
+                              "replay beside", options)
+    assert options.replay is not None, "the trace --replay names"
+    trace = load_trace(options.replay, grid)
+    return replay_of(trace, grid, options.algorithm if options.algorithm_given else None,
+                     semantics_from(options), options.max_steps)
 
 
-def run_check_trace(args: argparse.Namespace, grid: Grid, path: Path | None,
-                    algorithm_given: bool) -> int:
+def run_check_trace(options: Options) -> int:
     """Read the trace, check it against ``-a``'s search, print the verdict; exit 0 on a
     match, 1 on a difference (a malformed trace is a MapError: exit 2)."""
     from tui_search.cli.headless import to_json
@@ -63,32 +64,33 @@ def run_check_trace(args: argparse.Namespace, grid: Grid, path: Path | None,
     from tui_search.engine.traces.read import load_trace
 
     for flag in ("trace", "compare", "exercise"):
-        if getattr(args, flag):
+        if getattr(options, flag):
             raise UsageError(f"--check-trace checks one search: leave out --{flag}")
-    where = _needs_ends(args, grid, path)
-    if not algorithm_given:
-        return _diagnose(args, grid, where)
-    semantics = semantics_from(args)
-    trace = load_trace(args.check_trace, grid)
-    verdict = check_trace(trace, grid, args.algorithm, semantics, max_steps=args.max_steps)
-    if args.json:
-        print(to_json({"trace": describe_name(args.check_trace), "map": where,
+    grid, where = _needs_ends(options)
+    assert options.check_trace is not None, "the trace --check-trace names"
+    if not options.algorithm_given:
+        return _diagnose(options, grid, options.check_trace, where)
+    semantics = semantics_from(options)
+    trace = load_trace(options.check_trace, grid)
+    verdict = check_trace(trace, grid, options.algorithm, semantics, max_steps=options.max_steps)
+    if options.json:
+        print(to_json({"trace": describe_name(options.check_trace), "map": where,
                        **verdict.as_json()}))
     else:
         print(verdict.text())
     return EXIT_MATCH if verdict.matches else EXIT_DIFFERENCE
 
 
-def _diagnose(args: argparse.Namespace, grid: Grid, where: str) -> int:
+def _diagnose(options: Options, grid: Grid, trace: str, where: str) -> int:
     """Without ``-a``: the searches and choices that match the trace longest."""
     from tui_search.cli.headless import to_json
     from tui_search.engine.traces.diagnose import diagnose
     from tui_search.engine.traces.read import load_trace
 
-    _no_choices_without_a("--check-trace", "tries every search and choice", "check", args)
-    diagnosis = diagnose(load_trace(args.check_trace, grid), grid, args.max_steps)
-    if args.json:
-        print(to_json({"trace": describe_name(args.check_trace), "map": where,
+    _no_choices_without_a("--check-trace", "tries every search and choice", "check", options)
+    diagnosis = diagnose(load_trace(trace, grid), grid, options.max_steps)
+    if options.json:
+        print(to_json({"trace": describe_name(trace), "map": where,
                        **diagnosis.as_json()}))
     else:
         print(diagnosis.text())

@@ -3,8 +3,9 @@ app once, then forks a visitor's app for each request, so that a visitor's start
 the app's own first frame (a class of 30 connecting at once shares the imports instead of
 paying them 30 times on two cores).
 
-``tui-search --serve`` starts it as ``python -m tui_search.serve.forks SOCKET -- APP-ARGS`` (the
-app's command line, :func:`tui_search.serve.web.served_args`) with textual-serve's environment for
+``tui-search --serve`` starts it as ``python -m tui_search.cli.fork_entry SOCKET -- APP-ARGS``
+(the app's command line, :func:`tui_search.cli.serve_flags.served_args`; the command line's
+entry gives :func:`main` its ways to build and run an app) with textual-serve's environment for
 apps (Textual reads its driver from it when imported).  The server asks for an app over the
 unix socket ``SOCKET``: one message of JSON (the terminal's size, the visitor's id) carrying the
 app's stdin, stdout and stderr (:func:`socket.send_fds`); the reply is the app's process id.
@@ -24,7 +25,14 @@ import signal
 import socket
 import sys
 import time
+from collections.abc import Callable
 from pathlib import Path
+from typing import Any
+
+#: Makes the app of a command line (not run): the command line's way, given to the fork server.
+AppBuilder = Callable[[list[str]], Any]
+#: Runs the app of a command line to its end: its exit code.
+AppMain = Callable[[list[str]], int]
 
 #: How often the fork server looks at its apps' memory and at its own parent (seconds).
 WATCH_EVERY = 0.25
@@ -33,10 +41,11 @@ KILL_AFTER = 1.5
 _PAGE = os.sysconf("SC_PAGE_SIZE") if hasattr(os, "sysconf") else 4096
 
 
-def preload(app_args: list[str]) -> None:
+def preload(app_args: list[str], build_app: AppBuilder) -> None:
     """Import what every visitor's app imports, and run the app once, headless, for what it
     builds on its first run and keeps (Textual's parsed CSS, the modules imported late):
-    each visitor's app then starts from there."""
+    each visitor's app then starts from there.  ``build_app`` makes the app of a command
+    line (the command line's own way)."""
     import asyncio
     import threading
 
@@ -49,13 +58,8 @@ def preload(app_args: list[str]) -> None:
         # code shown): imported here once, for every visitor.
         import tui_search.engine.course.grading
         import tui_search.engine.search.pseudocode  # noqa: F401
-        from tui_search.cli.flags import load_problem
-        from tui_search.cli.main import build_app, build_parser, check_modes
 
-        args = build_parser().parse_args(app_args)
-        check_modes(args)
-        grid, path = load_problem(args)
-        app = build_app(args, grid, path)
+        app = build_app(app_args)
 
     async def first_frame() -> None:
         async with app.run_test(size=(120, 36)) as pilot:
@@ -66,8 +70,10 @@ def preload(app_args: list[str]) -> None:
         raise RuntimeError("threads left running before the first fork")
 
 
-def run_app(app_args: list[str], fds: list[int], request: dict[str, object]) -> int:
-    """In the forked child: the visitor's app on the fds given, at the size asked."""
+def run_app(app_args: list[str], fds: list[int], request: dict[str, object],
+            app_main: AppMain) -> int:
+    """In the forked child: the visitor's app on the fds given, at the size asked, run by
+    ``app_main`` (the command line's ``main``)."""
     for target, fd in enumerate(fds):
         os.dup2(fd, target)
         os.close(fd)
@@ -77,17 +83,17 @@ def run_app(app_args: list[str], fds: list[int], request: dict[str, object]) -> 
     args = [*app_args]
     if isinstance(visitor, str):
         args[:0] = ["--visitor", visitor]
-    from tui_search.cli.main import main
-
-    return main(args)
+    return app_main(args)
 
 
 class ForkServer:
     """The accept loop, the apps it forked (pid -> lease connection) and their ends."""
 
-    def __init__(self, listener: socket.socket, app_args: list[str], memory_mb: int) -> None:
+    def __init__(self, listener: socket.socket, app_args: list[str], memory_mb: int,
+                 app_main: AppMain) -> None:
         self.listener = listener
         self.app_args = app_args
+        self.app_main = app_main
         self.memory = memory_mb * 1024 * 1024
         self.memory_mb = memory_mb
         self.parent = os.getppid()
@@ -133,7 +139,7 @@ class ForkServer:
                     lease.close()
                 for sig in (signal.SIGINT, signal.SIGTERM, signal.SIGCHLD):
                     signal.signal(sig, signal.SIG_DFL)
-                code = run_app(self.app_args, fds, request)
+                code = run_app(self.app_args, fds, request, self.app_main)
             finally:
                 os._exit(code)
         for fd in fds:
@@ -216,17 +222,18 @@ def _signal(pid: int, sig: int) -> None:
         pass
 
 
-def main(argv: list[str] | None = None) -> int:
-    argv = sys.argv[1:] if argv is None else argv
+def main(argv: list[str], build_app: AppBuilder, app_main: AppMain) -> int:
+    """The fork server's process: ``argv`` is ``SOCKET -- APP-ARGS``; ``build_app`` makes the
+    app of a command line (for the preload), ``app_main`` runs one (in each fork)."""
     path, app_args = argv[0], argv[argv.index("--") + 1:]
     from tui_search.serve.web import APP_MEMORY_MB
 
     memory_mb = int(os.environ.get("TUI_SEARCH_APP_MEMORY_MB", APP_MEMORY_MB))
-    preload(app_args)
+    preload(app_args, build_app)
     listener = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
     listener.bind(path)
     listener.listen(64)
-    server = ForkServer(listener, app_args, memory_mb)
+    server = ForkServer(listener, app_args, memory_mb, app_main)
 
     def stop(_sig: int, _frame: object) -> None:
         server.stopping = True
@@ -240,6 +247,3 @@ def main(argv: list[str] | None = None) -> int:
     server.serve()
     return 0
 
-
-if __name__ == "__main__":  # pragma: no cover
-    raise SystemExit(main())

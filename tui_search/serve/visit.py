@@ -24,7 +24,6 @@ import os
 import signal
 import socket
 import subprocess
-import sys
 import tempfile
 from pathlib import Path
 from types import SimpleNamespace
@@ -66,7 +65,8 @@ def clamp(width: object, height: object) -> tuple[int, int]:
 class Forks:
     """The fork server process, and asking it for apps."""
 
-    def __init__(self, app_args: list[str], memory_mb: int) -> None:
+    def __init__(self, command: list[str], app_args: list[str], memory_mb: int) -> None:
+        self.command = command  # starts the fork server: SOCKET -- APP-ARGS follow
         self.app_args = app_args
         self.memory_mb = memory_mb
         self.folder = Path(tempfile.mkdtemp(prefix="tui-search-"))
@@ -81,7 +81,7 @@ class Forks:
         env = AppService._build_environment(cast(AppService, SimpleNamespace(debug=False)))
         env["TUI_SEARCH_APP_MEMORY_MB"] = str(self.memory_mb)
         self.process = subprocess.Popen(
-            [sys.executable, "-m", "tui_search.serve.forks", self.path, "--", *self.app_args],
+            [*self.command, self.path, "--", *self.app_args],
             env=env, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, text=True)
         assert self.process.stdout is not None
         if self.process.stdout.readline() != "ready\n":

@@ -1,9 +1,9 @@
 """``tui-search --serve``: the app in web browsers, one app per visitor, with textual-serve
-(the optional extra ``tui-search[web]``).
+(the optional extra ``web``: ``pip install -e '.[web]'`` in the project's folder).
 
-:func:`served_args` builds a visitor's app's command line from the one the teacher typed (the
-map, the search flags, the theme) with the hidden ``--served`` flag, which makes that app keep
-off the server's files (:class:`~tui_search.tui.model.file_rules.FileAccess`: no saving or opening,
+The server is given plain values: each visitor's app's command line (the command line's
+:func:`~tui_search.cli.serve_flags.served_args` makes it from the one the teacher typed, with
+the hidden ``--served`` flag, which makes that app keep off the server's files (:class:`~tui_search.tui.model.file_rules.FileAccess`: no saving or opening,
 or plain names in ``--save-dir`` only -- in a folder of the visitor's own unless
 ``--shared-save-dir``) and off the config file (:meth:`~tui_search.tui.config.Config.in_memory`).
 The apps are forked by one process that has imported the app once (:mod:`tui_search.serve.forks`);
@@ -19,170 +19,37 @@ the CLI.
 
 from __future__ import annotations
 
-import argparse
 import asyncio
 import os
 import re
 import sys
 from typing import TYPE_CHECKING, Any
 
-from tui_search.cli.flags import UsageError
-
 if TYPE_CHECKING:
     from aiohttp import web
 
     from tui_search.serve.guard import Guard
-    from tui_search.tui.model.file_rules import FileAccess
 
 DEFAULT_HOST = "127.0.0.1"
 DEFAULT_PORT = 8000
 #: Apps running at once (each is a Python process of some 60 MB): the next visitor is told to
 #: try later.  A class fits; a script opening sockets in a loop does not exhaust the machine.
 MAX_VISITORS = 60
-#: The flags that configure the server, not the visitors' apps.
-SERVER_FLAGS = ("serve", "host", "port", "save_dir", "shared_save_dir", "app_memory")
-#: Flags whose value is a file: given to the visitors' apps as absolute paths (``--exercise``
-#: only when it names a file, not the tutorial's ``1`` or ``2``).
-FILE_FLAGS = ("map", "scen", "terrain")
-#: What the served app cannot do (the flags it refuses).
-NOT_SERVED = {"headless": "--headless", "json": "--json", "trace": "--trace"}
 #: A visitor's app using more memory than this (MB) is ended: the tutorial's uses ~40, and a
 #: record of 20 million steps (--max-steps' default) some 400.
 APP_MEMORY_MB = 1000
-#: A visitor's id: the name of their own folder in --save-dir.
-VISITOR_ID = re.compile(r"[0-9a-f]{6}")
-NEEDS_EXTRA = "--serve needs textual-serve: pip install 'tui-search[web]'"
 HOST_HEADER = re.compile(r"^[A-Za-z0-9.\-]+(:[0-9]+)?$|^\[[0-9A-Fa-f:.]+\](:[0-9]+)?$")
 
 
-def add_arguments(p: argparse.ArgumentParser) -> None:
-    """The serving flags, on the CLI's parser."""
-    p.add_argument("--serve", action="store_true",
-                   help="serve the app to web browsers, one app per visitor (needs "
-                   "pip install 'tui-search[web]'); visitors cannot save or open files")
-    p.add_argument("--host", default=None,
-                   help=f"with --serve: the address to listen on (default {DEFAULT_HOST}: this "
-                   "computer only; 0.0.0.0: every network it is on)")
-    p.add_argument("--port", type=_port, default=None,
-                   help=f"with --serve: the port to listen on (default {DEFAULT_PORT})")
-    p.add_argument("--save-dir", metavar="DIR", default=None,
-                   help="with --serve: let visitors save and open maps by name in DIR, and "
-                   "nowhere else: each visitor in a folder of their own, DIR/ID, the ID shown "
-                   "in their app")
-    p.add_argument("--shared-save-dir", action="store_true", default=None,
-                   help="with --save-dir: every visitor saves in DIR itself (they can "
-                   "overwrite each other's maps)")
-    p.add_argument("--app-memory", metavar="MB", type=_positive_mb, default=None,
-                   help=f"with --serve: end a visitor's app that uses more than MB megabytes "
-                   f"(default {APP_MEMORY_MB})")
-    p.add_argument("--served", action="store_true", help=argparse.SUPPRESS)  # the visitor's app
-    p.add_argument("--visitor", default=None, help=argparse.SUPPRESS)  # the visitor's id
+class ServeError(Exception):
+    """The server could not start (the address cannot be listened on): one line, exit 2."""
 
 
-def _positive_mb(text: str) -> int:
-    if not text.isdigit() or int(text) < 1:
-        raise argparse.ArgumentTypeError(f"{text!r} is not a number of megabytes")
-    return int(text)
-
-
-def _port(text: str) -> int:
-    try:
-        n = int(text)
-    except ValueError:
-        n = 0
-    if not 0 < n < 65536:
-        raise argparse.ArgumentTypeError(f"{text!r} is not a port (1 to 65535)")
-    return n
-
-
-def check_args(args: argparse.Namespace) -> None:
-    """Refuse what makes no sense with --serve (or the server's flags without it)."""
-    if not args.serve:
-        given = [f"--{f.replace('_', '-')}" for f in SERVER_FLAGS[1:]
-                 if getattr(args, f) is not None and not (args.served and f == "save_dir")]
-        if given:
-            raise UsageError(f"{', '.join(given)} go{'es' if len(given) == 1 else ''} with "
-                             "--serve")
-        return
-    for dest, flag in NOT_SERVED.items():
-        if getattr(args, dest):
-            raise UsageError(f"--serve serves the app: {flag} is for a search without it")
-    if args.served:
-        raise UsageError("--served is what --serve gives the visitors' apps: leave it out")
-    if args.shared_save_dir and args.save_dir is None:
-        raise UsageError("--shared-save-dir goes with --save-dir")
-    if os.name != "posix":
-        raise UsageError("--serve needs a Unix-like system (it forks each visitor's app)")
-    if not web_extra_installed():
-        raise UsageError(NEEDS_EXTRA)
-
-
-def web_extra_installed() -> bool:
-    """Is textual-serve there (``pip install 'tui-search[web]'``)?  Found, not imported."""
-    from importlib.util import find_spec  # (this module is imported by every run: lazily)
-
-    return find_spec("textual_serve") is not None
-
-
-def file_access(args: argparse.Namespace) -> FileAccess:
-    """Where the app may read and write maps: anywhere, or the served app's rules (in the
-    visitor's own folder ``DIR/ID`` when the server gave the app a visitor's id)."""
-    from tui_search.tui.model.file_rules import FileAccess, NameRefused
-
-    if not args.served:
-        return FileAccess()
-    try:
-        access = FileAccess.served_in(args.save_dir)
-        visitor = getattr(args, "visitor", None)
-        if visitor is None or access.folder is None:
-            return access
-        if not VISITOR_ID.fullmatch(visitor):
-            raise NameRefused(f"--visitor {visitor!r}: not a visitor's id")
-        own = access.folder / visitor
-        own.mkdir(mode=0o700, exist_ok=True)
-        return FileAccess.served_in(own)
-    except NameRefused as exc:
-        raise UsageError(str(exc)) from None
-
-
-def served_args(parser: argparse.ArgumentParser, args: argparse.Namespace) -> list[str]:
-    """The command line of one visitor's app (after ``python -m tui_search``): the flags given
-    (other than the server's own), file paths made absolute, ``--served``, and ``--save-dir``
-    as an absolute path."""
-    words: list[str] = []
-    positional: list[str] = []
-    # argparse keeps a parser's actions in ``_actions`` (no public list): reading them here
-    # means a flag added to the CLI reaches the served app without a change here.
-    for action in parser._actions:
-        dest = action.dest
-        if dest in ("help", "version", "served", "visitor", *SERVER_FLAGS):
-            continue
-        value = getattr(args, dest, None)
-        if value is None or value is False or value == action.default:
-            continue
-        if dest in FILE_FLAGS or (dest == "exercise" and str(value) not in ("1", "2")):
-            value = os.path.abspath(value)
-        if not action.option_strings:
-            positional.append(str(value))
-        elif action.nargs == 0:  # a store_true switch
-            words.append(action.option_strings[-1])
-        else:
-            for item in value if isinstance(value, list) else [value]:
-                words += [action.option_strings[-1], str(item)]
-    words.append("--served")
-    access = file_access(argparse.Namespace(served=True, save_dir=args.save_dir))
-    if access.folder is not None:
-        words += ["--save-dir", str(access.folder)]
-    if positional:
-        words += ["--", *positional]
-    return words
-
-
-def greet_visitor(app: Any, args: argparse.Namespace) -> None:
+def greet_visitor(app: Any, visitor: str | None, save_dir: str | None) -> None:
     """Tell a visitor with a folder of their own its name (their id), once the app is up."""
-    if args.visitor is not None and args.save_dir is not None:
-        app.call_later(app.notify, f"You are visitor {args.visitor}: your maps are saved in "
-                       f"a folder of your own, {args.visitor}.", title="Welcome", timeout=20)
+    if visitor is not None and save_dir is not None:
+        app.call_later(app.notify, f"You are visitor {visitor}: your maps are saved in "
+                       f"a folder of your own, {visitor}.", title="Welcome", timeout=20)
 
 
 #: How often a served app checks that its server is still there (seconds).
@@ -211,28 +78,26 @@ def exit_with_server(app: Any, every: float = WATCH_EVERY) -> None:
     threading.Thread(target=watch, name="exit-with-server", daemon=True).start()
 
 
-def serve(parser: argparse.ArgumentParser, args: argparse.Namespace, title: str) -> int:
-    """Serve until Ctrl+C; 0, or 2 when the address cannot be listened on."""
-    if args.theme is None:  # the teacher's remembered theme, for every visitor
-        from tui_search.tui.config import Config
-
-        args.theme = Config.load().theme
-    host = args.host or DEFAULT_HOST
-    port = args.port or DEFAULT_PORT
-    folder = file_access(argparse.Namespace(served=True, save_dir=args.save_dir)).folder
+def serve(app_args: list[str], fork_command: list[str], *, host: str | None,
+          port: int | None, title: str, save_folder: str | None, own_folders: bool,
+          memory_mb: int | None) -> int:
+    """Serve the app ``app_args`` until Ctrl+C, each visitor's app forked by the process
+    ``fork_command`` starts; 0, or a ServeError when the address cannot be listened on."""
     from tui_search.serve.guard import Guard
 
-    server = make_server(served_args(parser, args), host, port, title,
-                         saving=str(folder) if folder is not None else None,
-                         own_folders=not args.shared_save_dir,
-                         memory_mb=args.app_memory or APP_MEMORY_MB,
+    host = host or DEFAULT_HOST
+    port = port or DEFAULT_PORT
+    server = make_server(app_args, fork_command, host, port, title, saving=save_folder,
+                         own_folders=own_folders, memory_mb=memory_mb or APP_MEMORY_MB,
                          guard=Guard.for_host(host))
     try:
         server.serve()
     except OSError as exc:
-        raise UsageError(f"cannot listen on {host}:{port}: {exc.strerror or exc}") from None
+        raise ServeError(f"cannot listen on {host}:{port}: {exc.strerror or exc}") from None
     return 0
-def make_server(app_args: list[str], host: str, port: int, title: str,
+
+
+def make_server(app_args: list[str], fork_command: list[str], host: str, port: int, title: str,
                 saving: str | None = None, *, own_folders: bool = True,
                 memory_mb: int = APP_MEMORY_MB, guard: Guard | None = None,
                 max_visitors: int = MAX_VISITORS) -> Any:
@@ -251,7 +116,7 @@ def make_server(app_args: list[str], host: str, port: int, title: str,
 
     rules = guard or Guard.for_host(host)
     own_url = f"http://{_url_host(host)}:{port}"
-    forks = Forks(app_args, memory_mb)
+    forks = Forks(fork_command, app_args, memory_mb)
 
     class ClassroomServer(Server):
         visitors = 0

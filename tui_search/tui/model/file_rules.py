@@ -11,6 +11,7 @@ rules are tested as plain functions.
 # No `from __future__ import annotations`: typing compiles a NamedTuple's string
 # annotations one by one at import (~5 M instructions of every start in all: session 14).
 import os
+import re
 from collections.abc import Callable
 from pathlib import Path
 from typing import NamedTuple
@@ -21,6 +22,8 @@ from tui_search.engine.util.filenames import describe_name, name_problem
 #: a script, a dotfile or a web page there).
 MAP_ENDINGS = (".txt", ".map")
 MAX_NAME = 80
+#: A served visitor's id: the name of their own folder in the server's save folder.
+VISITOR_ID = re.compile(r"[0-9a-f]{6}")
 
 OFF_MESSAGE = ("Saving and opening files are off in the served app "
                "(the teacher can allow them in one folder: tui-search --serve --save-dir DIR)")
@@ -48,6 +51,23 @@ class FileAccess(NamedTuple):
         if not path.is_dir():
             raise NameRefused(f"--save-dir {os.fspath(folder)!r}: not a folder")
         return cls(served=True, folder=path.resolve())
+
+    @classmethod
+    def for_app(cls, served: bool, save_dir: str | None = None,
+                visitor: str | None = None) -> "FileAccess":
+        """Where an app may read and write maps: anywhere, or the served app's rules (in the
+        visitor's own folder ``save_dir/visitor``, made if need be, when the server gave the
+        app a visitor's id)."""
+        if not served:
+            return cls()
+        access = cls.served_in(save_dir)
+        if visitor is None or access.folder is None:
+            return access
+        if not VISITOR_ID.fullmatch(visitor):
+            raise NameRefused(f"--visitor {visitor!r}: not a visitor's id")
+        own = access.folder / visitor
+        own.mkdir(mode=0o700, exist_ok=True)
+        return cls.served_in(own)
 
     @property
     def off(self) -> str | None:

@@ -1,15 +1,8 @@
 """The map's drawing codes: what a cell is drawn as (a search state, or what the grid says),
 its glyph, its name and its rank in a block of the overview.  The map, the legend and the help
-screen draw from the same table."""
+screen draw from the same table (no Textual or Rich here: plain data)."""
 
 from __future__ import annotations
-
-from collections.abc import Iterable, Iterator
-from itertools import groupby
-
-from rich.color import Color
-from rich.segment import Segment
-from rich.style import Style
 
 # Drawing codes: the search states of a free cell (CellState's values), then what the grid says.
 FREE, FRONTIER, EXPANDED, CURRENT, PATH, WALL, START, GOAL = range(8)
@@ -24,14 +17,3 @@ UPPER_HALF = "▀"
 #: frontier > expanded > obstacle > free.
 RANK = {START: 7, GOAL: 6, PATH: 5, CURRENT: 4, FRONTIER: 3, EXPANDED: 2, WALL: 1, FREE: 0}
 BY_RANK = sorted(RANK, key=RANK.__getitem__)
-
-
-def half_blocks(colours: Iterable[tuple[Color | None, Color | None]]) -> Iterator[Segment]:
-    """The overview's characters for ``(upper, lower)`` colour pairs: a half block each, one
-    segment a run of equal pairs."""
-    styles: dict[tuple[Color | None, Color | None], Style] = {}
-    for pair, like in groupby(colours):
-        style = styles.get(pair)
-        if style is None:
-            style = styles[pair] = Style(color=pair[0], bgcolor=pair[1])
-        yield Segment(UPPER_HALF * len(list(like)), style)

@@ -17,13 +17,16 @@ what the visible part costs.
 
 from __future__ import annotations
 
+from collections.abc import Iterable, Iterator
 from itertools import groupby
 from typing import TYPE_CHECKING
 
+from rich.color import Color
 from rich.segment import Segment
+from rich.style import Style
 from textual.strip import Strip
 
-from tui_search.tui.view.cell_codes import half_blocks
+from tui_search.tui.view.cell_codes import UPPER_HALF
 from tui_search.tui.widgets.cell_style import (
     CURSOR,
     MARKED,
@@ -38,7 +41,6 @@ from tui_search.tui.widgets.line_panel import window_strip
 if TYPE_CHECKING:
     from typing import Protocol
 
-    from rich.style import Style
     from textual.geometry import Offset, Region
 
     from tui_search.engine.maps.grid import Cell, Grid
@@ -155,3 +157,14 @@ def overview_line(view: MapView, line: int, sx: int, width: int) -> Strip:
         colours.append((a, b))
     return window_strip([Segment(" " * view.pad_x, background), *half_blocks(colours)], 0,
                         width, background)
+
+
+def half_blocks(colours: Iterable[tuple[Color | None, Color | None]]) -> Iterator[Segment]:
+    """The overview's characters for ``(upper, lower)`` colour pairs: a half block each, one
+    segment a run of equal pairs."""
+    styles: dict[tuple[Color | None, Color | None], Style] = {}
+    for pair, like in groupby(colours):
+        style = styles.get(pair)
+        if style is None:
+            style = styles[pair] = Style(color=pair[0], bgcolor=pair[1])
+        yield Segment(UPPER_HALF * len(list(like)), style)

@@ -1,0 +1,112 @@
+"""The command line as one frozen, typed value: every flag as typed (``-a``'s default
+resolved), and what the flags named, read: the exercise, the lesson, the generated map's
+recipe, the map, its scenario and the replay.
+
+:func:`tui_search.cli.parse.parse_options` makes it, once; nothing changes it after (a changed
+copy is :meth:`~tui_search.engine.util.frozen.Frozen.replace`'s), and nothing below the
+command line sees argparse.  A :class:`~tui_search.engine.util.frozen.Frozen` value, not a
+frozen dataclass: it is made at every start (CONTRIBUTING.md, "Start-up").
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from tui_search.engine.util.frozen import Frozen
+
+if TYPE_CHECKING:
+    from tui_search.engine.course.exercise_file import Exercise
+    from tui_search.engine.course.lesson import Lesson
+    from tui_search.engine.maps.generate import Recipe
+    from tui_search.engine.maps.grid import Grid
+    from tui_search.engine.maps.scenarios import Scenario
+    from tui_search.engine.traces.replay import Replay
+
+#: The flags, by argparse's names for them (the parser's ``dest``s; a test holds the two equal).
+FLAGS = (
+    "map", "algorithm", "start", "goal", "terrain", "scen", "scen_row", "order", "corners",
+    "no_corner_cutting", "visit", "goal_test", "heuristic", "tree_search", "compare",
+    "exercise", "generate", "size", "seed", "output", "max_steps", "theme", "pseudocode",
+    "lesson", "headless", "json", "csv", "trace", "check_trace", "replay", "serve", "host",
+    "port", "save_dir", "shared_save_dir", "app_memory", "served", "visitor",
+)
+#: What the command line worked out or read from the flags.
+READ = ("maps", "algorithm_given", "exercise_read", "lesson_read", "recipe", "grid", "path",
+        "scenario", "replay_read")
+
+
+class Options(Frozen):
+    """Every flag as typed (``map`` the one MAP, ``maps`` every MAP given, ``algorithm``
+    ``-a``'s search or the default, ``algorithm_given`` whether ``-a`` was given), then what
+    they named, read (None where a flag was not given or the run does not read it)."""
+
+    __slots__ = _FIELDS = FLAGS + READ
+
+    # -- the flags, as typed
+    map: str | None
+    algorithm: str
+    start: str | None
+    goal: str | None
+    terrain: str | None
+    scen: str | None
+    scen_row: int | None
+    order: str
+    corners: str | None
+    no_corner_cutting: bool
+    visit: str | None
+    goal_test: str | None
+    heuristic: str | None
+    tree_search: bool
+    compare: str | None
+    exercise: str | None
+    generate: str | None
+    size: str | None
+    seed: str | None
+    output: str | None
+    max_steps: int
+    theme: str | None
+    pseudocode: bool
+    lesson: str | None  # "": list the built-in lessons
+    headless: bool
+    json: bool
+    csv: bool
+    trace: str | None
+    check_trace: str | None
+    replay: str | None
+    serve: bool
+    host: str | None
+    port: int | None
+    save_dir: str | None
+    shared_save_dir: bool | None
+    app_memory: int | None
+    served: bool
+    visitor: str | None
+    # -- what they named, read
+    maps: tuple[str, ...]
+    algorithm_given: bool
+    exercise_read: Exercise | None
+    lesson_read: Lesson | None
+    recipe: Recipe | None
+    grid: Grid | None  # the map to search (None: several maps, or none read by this run)
+    path: Path | None  # its file (None: built in, generated, an exercise's own)
+    scenario: Scenario | None  # --scen's row, while it holds for the map as read
+    replay_read: Replay | None
+
+    def __init__(self, **values: Any) -> None:
+        given = set(values)
+        if given != set(self._FIELDS):
+            missing = sorted(set(self._FIELDS) - given)
+            unknown = sorted(given - set(self._FIELDS))
+            raise TypeError(f"Options: missing {missing}, unknown {unknown}")
+        self._assign(**values)
+
+    @classmethod
+    def made(cls, flags: dict[str, Any], **read: Any) -> Options:
+        """Options from the flags as parsed (argparse's names) and what was read (the rest
+        None, ``maps`` empty, ``algorithm_given`` False)."""
+        values: dict[str, Any] = dict.fromkeys(READ)
+        values.update(maps=(), algorithm_given=False)
+        values.update({name: flags[name] for name in FLAGS})
+        values.update(read)
+        return cls(**values)

@@ -1,0 +1,163 @@
+"""The command line's parser: every flag, its help, and one-line errors (exit 2).
+
+:func:`tui_search.cli.parse.parse_options` is its one user: it turns what this parses into the
+frozen :class:`~tui_search.cli.options.Options` the rest of the program reads.
+"""
+
+from __future__ import annotations
+
+import argparse
+import shutil
+from collections.abc import Sequence
+from typing import NoReturn
+
+from tui_search import __version__
+from tui_search.cli.flags import UsageError
+from tui_search.cli.serve_flags import add_serve_arguments
+from tui_search.engine.maps.grid import DEFAULT_ORDER
+from tui_search.engine.maps.recipes import DEFAULT_SEED, DEFAULT_SIZE, KINDS, MAX_SIDE
+from tui_search.engine.run.recorded import MAX_STEPS
+from tui_search.engine.search.choices import CORNER_RULES, GOAL_TESTS, VISIT_RULES
+from tui_search.engine.search.heuristics import DEFAULT_HEURISTIC, HEURISTICS
+from tui_search.engine.search.loops.compiled import core_name
+from tui_search.engine.search.registry import ALGORITHMS
+from tui_search.tui.view.themes import THEMES  # plain data: no Textual
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message: str) -> NoReturn:  # one line, not argparse's usage + message
+        raise UsageError(f"{message} (see tui-search --help)")
+
+    def parse_known_args(  # type: ignore[override]
+        self, args: Sequence[str] | None = None, namespace: argparse.Namespace | None = None,
+    ) -> tuple[argparse.Namespace, list[str]]:
+        """The arguments, ``map`` the one MAP (:func:`split_maps`)."""
+        parsed, extra = super().parse_known_args(args, namespace)
+        split_maps(parsed)
+        return parsed, extra
+
+
+def build_parser() -> argparse.ArgumentParser:
+    # argparse makes a help formatter for every argument it adds, and each asks the terminal's
+    # size: asked once here (build_parser 0.85 -> 0.46 ms).
+    width = shutil.get_terminal_size().columns - 2
+    p = _Parser(
+        prog="tui-search",
+        formatter_class=lambda prog: argparse.HelpFormatter(prog, width=width),
+        description="Watch a robot plan a path on a grid with breadth-first, depth-first, "
+        "iterative-deepening, uniform-cost, greedy best-first and A* search. With no MAP, opens "
+        "the tutorial's 6x6 map.",
+        epilog="Exit codes (headless): 0 path found, 1 no path, 2 bad input, 3 gave up (--max-steps).",
+    )
+    p.add_argument("map", nargs="*", default=None, metavar="MAP",
+                   help="a text map (.txt) or a MovingAI map (.map); several only with "
+                   "--exercise E --headless (the class report)")
+    p.add_argument("--version", action="version", version=f"tui-search {__version__} ({core_name()})")
+    p.add_argument("-a", "--algorithm", choices=list(ALGORITHMS), default=None,
+                   help="; ".join(f"{a.key}: {a.name}" for a in ALGORITHMS.values()))
+    p.add_argument("--start", metavar="X,Y", help="start cell (overrides the map's S)")
+    p.add_argument("--goal", metavar="X,Y", help="goal cell (overrides the map's G)")
+    p.add_argument("--terrain", metavar="FILE",
+                   help="a terrain table: lines 'CHAR COST' (a positive number) or 'CHAR "
+                   "blocked' naming the map's letters (f 5 in a text map; S, W, T in a .map); "
+                   "a text map's digits 1-9 cost themselves")
+    p.add_argument("--scen", metavar="FILE", help="a MovingAI .scen file to take start and goal from")
+    p.add_argument("--scen-row", metavar="N", type=int, default=None,
+                   help="problem N of --scen, counted from 0 after the version line")
+    p.add_argument("--order", metavar="DIRS", default=",".join(DEFAULT_ORDER),
+                   help="the moves tried, in order: any of the 8 directions, e.g. N,W,S,E for "
+                   "a 4-connected grid (default %(default)s)")
+    p.add_argument("--corners", choices=CORNER_RULES, default=None,
+                   help="may a diagonal pass blocked corners: always (default); one: not when "
+                   "both side cells are blocked; never: not when either is (MovingAI's rule)")
+    p.add_argument("--no-corner-cutting", action="store_true",
+                   help="the same as --corners never")
+    p.add_argument("--visit", choices=VISIT_RULES, default=None,
+                   help="when a cell counts as visited: generate (when pushed, default) or "
+                   "expand (when taken off: a cell may be on the frontier several times)")
+    p.add_argument("--goal-test", choices=GOAL_TESTS, default=None,
+                   help="stop when the goal is pushed (generate: the default of bfs, dfs and "
+                   "iddfs) or taken off (expand: the default of ucs, greedy and astar)")
+    p.add_argument("--heuristic", choices=list(HEURISTICS), default=None,
+                   help="greedy's and A*'s estimate of the cost to the goal (default "
+                   f"{DEFAULT_HEURISTIC}; manhattan is not admissible with diagonal moves)")
+    p.add_argument("--tree-search", action="store_true",
+                   help="no visited set: skip only cells on the node's own path")
+    p.add_argument("--compare", metavar="A,B",
+                   help="two to four searches side by side in the app (compare mode); with "
+                   "--headless, run them on the map and print a table (e.g. bfs,dfs or "
+                   "astar:manhattan,ucs: an informed search may name its heuristic)")
+    p.add_argument("--exercise", metavar="N|FILE",
+                   help="the tutorial's exercise N or an exercise FILE (TOML: see the README) "
+                   "as a live challenge in the app; with --headless, grade the maps on it (1: "
+                   "BFS expands fewer nodes than DFS; 2: DFS's path has more moves than "
+                   "BFS's): exit 0 all solved, 1 not, 2 bad input, 3 a search gave up (one "
+                   "map); several maps print the class report")
+    p.add_argument("--generate", metavar="KIND",
+                   help="make a map instead of reading one: " + "; ".join(
+                       f"{k.name}: {k.help}".replace("%", "%%") for k in KINDS.values())
+                   + " (with --output FILE, write it and exit; else open it in the app)")
+    p.add_argument("--size", metavar="WxH",
+                   help=f"with --generate: the map's size (default {DEFAULT_SIZE}, at most "
+                   f"{MAX_SIDE}x{MAX_SIDE})")
+    p.add_argument("--seed", metavar="SEED",
+                   help=f"with --generate: a whole number or any text (default {DEFAULT_SEED}); "
+                   "the same kind, size and seed make the same map everywhere")
+    p.add_argument("--output", metavar="FILE",
+                   help="with --generate: write the map to FILE (never over an existing file; "
+                   "- for standard output)")
+    p.add_argument("--max-steps", metavar="N", type=_positive, default=MAX_STEPS,
+                   help=f"give up after N expansions (default {MAX_STEPS:,}: iterative "
+                   "deepening on a big map can take billions)")
+    p.add_argument("--theme", choices=list(THEMES), default=None,
+                   help="the app's colours for this run (the app remembers a theme chosen in "
+                   "it with t or ctrl+p): " + "; ".join(f"{t.name}: {t.description}"
+                                                         for t in THEMES.values()))
+    p.add_argument("--pseudocode", action="store_true",
+                   help="print the pseudocode of -a's search under the choice flags, one "
+                   "numbered line per line (for handouts), and exit")
+    p.add_argument("--lesson", metavar="NAME|FILE.md", nargs="?", const="",
+                   help="open a lesson beside the panes: a built-in one by name (tutorial, "
+                   "choices) or a Markdown file (its format: the README); pgdn and pgup move "
+                   "between its sections. With no name, list the built-in lessons")
+    p.add_argument("--headless", action="store_true",
+                   help="search without the app and print the result")
+    p.add_argument("--json", action="store_true",
+                   help="with --headless: print the result as one JSON object")
+    p.add_argument("--csv", action="store_true",
+                   help="with --exercise E --headless: print the grades as CSV (file, verdict, "
+                   "then a column per field the exercise's condition names)")
+    p.add_argument("--trace", metavar="FILE",
+                   help="with --headless: write one JSON line per expansion to FILE "
+                   "('-' for stdout, without --json)")
+    p.add_argument("--check-trace", metavar="FILE",
+                   help="with --headless: compare a trace another program wrote (the --trace "
+                   "format) with -a's search under the choice flags, step by step, or without "
+                   "-a find the searches it matches longest: exit 0 a match, 1 a difference, "
+                   "2 a malformed trace")
+    p.add_argument("--replay", metavar="FILE",
+                   help="open the app on a trace another program wrote (the --trace format), "
+                   "beside -a's search under the choice flags (without -a: the search it "
+                   "matches best) in lockstep, its first difference marked (d: to it and back)")
+    add_serve_arguments(p)
+    return p
+
+
+def _positive(text: str) -> int:
+    try:
+        n = int(text)
+    except ValueError:
+        n = 0
+    if n < 1:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a positive whole number")
+    return n
+
+
+def split_maps(args: argparse.Namespace) -> None:
+    """``args.maps``, every MAP given; ``args.map``, the one map (None: none).  Several
+    maps are only for the class report (``--exercise E --headless``)."""
+    args.maps = list(args.map or [])
+    if len(args.maps) > 1 and not (args.exercise and args.headless):
+        raise UsageError("one MAP at a time (several only with --exercise E --headless: "
+                         "the class report)")
+    args.map = args.maps[0] if args.maps else None
