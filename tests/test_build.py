@@ -21,7 +21,8 @@ from tests.helpers import ROOT
 from tui_search.engine.search.loops.compiled import CORE_ENV
 
 #: What a build reads: the package and the files beside it the sdist carries.
-BUILD_INPUT = ["tui_search", "maps", "pyproject.toml", "setup.py", "MANIFEST.in", "README.md"]
+BUILD_INPUT = ["tui_search", "maps", "docs", "pyproject.toml", "setup.py", "MANIFEST.in",
+               "README.md"]
 
 
 def _source(tmp: Path) -> Path:
@@ -75,7 +76,7 @@ def test_without_a_compiler_the_python_core_runs_and_says_so(tmp_path: Path) -> 
 
 
 def test_the_sdist_and_the_wheel_carry_the_core_and_the_maps(tmp_path: Path) -> None:
-    """``python -m build``: the sdist carries the C source and the maps and builds the
+    """``python -m build``: the sdist carries the C source, the maps and the docs and builds the
     compiled core (the wheel is built from it); the wheel, installed, runs it."""
     dist = tmp_path / "dist"
     built = _run(sys.executable, "-m", "build", "--outdir", dist, _source(tmp_path))
@@ -86,7 +87,8 @@ def test_the_sdist_and_the_wheel_carry_the_core_and_the_maps(tmp_path: Path) -> 
     assert {"setup.py", "tui_search/engine/search/_core.c", "tui_search/engine/search/_core_loops.c",
             "tui_search/engine/search/_core_position.c",
             "tui_search/engine/search/_core.h", "maps/tutorial.txt",
-            "tui_search/maps/tutorial.txt", "tui_search/tui/app.tcss"} <= names
+            "tui_search/maps/tutorial.txt", "tui_search/tui/app.tcss", "docs/README.md",
+            "docs/03-traces.md"} <= names
     with zipfile.ZipFile(wheel) as whl:
         names = set(whl.namelist())
     assert {"tui_search/maps/tutorial.txt", "tui_search/tui/app.tcss",

@@ -187,7 +187,7 @@ def test_max_steps_must_be_a_positive_number(capsys, bad) -> None:
     assert code == 2 and err.count("\n") == 1 and "--max-steps" in err
 
 
-# -- files of the wrong kind, scenarios for another map, the README's example --------------
+# -- files of the wrong kind, scenarios for another map, the docs' example ----------------
 
 DATA = ROOT / "tests" / "data" / "movingai"
 
@@ -219,15 +219,16 @@ def test_a_movingai_map_without_its_type_line_says_so(capsys, tmp_path: Path) ->
     )
 
 
-def test_the_readmes_error_example_is_what_the_cli_prints(capsys, monkeypatch) -> None:
-    readme = (ROOT / "README.md").read_text()
+def test_the_docs_error_example_is_what_the_cli_prints(capsys, monkeypatch) -> None:
+    """The command line's page shows a bad map's one-line error (docs/02-command-line.md)."""
+    docs = (ROOT / "docs" / "02-command-line.md").read_text()
     command = "$ tui-search maps/broken.txt --headless\n"
-    assert command in readme
-    printed = readme.split(command, 1)[1].split("\n", 1)[0]
+    assert command in docs
+    printed = docs.split(command, 1)[1].split("\n", 1)[0]
     monkeypatch.chdir(ROOT)
     code, out, err = run_cli(capsys, "maps/broken.txt", "--headless")
     assert code == 2 and out == "" and err == printed + "\n"
-    assert ":4:7: " in printed  # a line and a column, as the README says
+    assert ":4:7: " in printed  # a line and a column, as the page says
 
 
 def test_a_file_name_with_escape_sequences_is_shown_escaped_never_run(capsys, tmp_path) -> None:

@@ -1,5 +1,6 @@
-"""``--check-trace FILE``: the command line's verdicts, exit codes and errors, and the README's
-complete example (a student's BFS in plain Python, examples/student_bfs.py) run for real."""
+"""``--check-trace FILE``: the command line's verdicts, exit codes and errors, and the complete
+example of docs/03-traces.md (a student's BFS in plain Python, examples/student_bfs.py) run for
+real."""
 
 from __future__ import annotations
 
@@ -97,9 +98,10 @@ def test_bad_input_is_one_line_and_exit_2(capsys, tmp_path: Path, monkeypatch, a
     assert err.count("\n") == 1
 
 
-def test_the_readme_shows_the_example_and_its_trace_is_current(student_trace: Path) -> None:
-    readme = (ROOT / "README.md").read_text()
-    assert f"```python\n{EXAMPLE.read_text()}```" in readme
+def test_the_traces_page_shows_the_example_and_its_trace_is_current(student_trace: Path) -> None:
+    """docs/03-traces.md shows examples/student_bfs.py whole, and the trace it writes."""
+    page = (ROOT / "docs" / "03-traces.md").read_text()
+    assert f"```python\n{EXAMPLE.read_text()}```" in page
     assert (ROOT / "examples" / "student_bfs.jsonl").read_text() == student_trace.read_text()
 
 

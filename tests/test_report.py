@@ -159,7 +159,7 @@ def test_several_maps_and_csv_only_for_the_report(capsys, argv: list[str],
 
 
 def test_two_hundred_tutorial_maps_grade_well_within_three_seconds(tmp_path: Path) -> None:
-    """The report's speed: 200 tutorial-sized maps graded in one process (the README says
+    """The report's speed: 200 tutorial-sized maps graded in one process (docs/04-exercises.md says
     about 0.5 s for the whole command, start-up included, on the project's 2-core machine)."""
     import time
 

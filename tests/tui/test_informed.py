@@ -51,7 +51,7 @@ async def test_the_keys_pick_the_informed_searches_from_the_registry() -> None:
 
 @sync
 async def test_a_star_shows_its_queue_in_order_with_g_h_f_and_stale_entries() -> None:
-    """The tutorial under A* after five steps (the README's example): (0,3) was pushed at
+    """The tutorial under A* after five steps (docs/01-keys.md's example): (0,3) was pushed at
     g 3.83, then reached at g 3.00 -- its first entry is struck out as stale."""
     app = tutorial_app("astar")
     async with app.run_test(size=SIZE) as pilot:

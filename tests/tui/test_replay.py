@@ -157,10 +157,10 @@ def test_a_trace_that_stops_with_cells_left_does_not_say_its_frontier_is_empty()
 
 
 def test_the_readme_examples_replay_names_no_moves_at_its_end() -> None:
-    """The README's example (examples/student_bfs.py on maps/tutorial.txt) finds no path: at
-    its end the trace's pane says its frontier is empty, not that moves block the way -- the
-    trace declared none (the moves are the matched search's, inferred).  The search beside
-    it keeps its reason: those are its own rules."""
+    """The replay example of docs/03-traces.md (examples/student_bfs.py on maps/tutorial.txt)
+    finds no path: at its end the trace's pane says its frontier is empty, not that moves block
+    the way -- the trace declared none (the moves are the matched search's, inferred).  The
+    search beside it keeps its reason: those are its own rules."""
     example = Path(__file__).resolve().parents[2] / "examples" / "student_bfs.py"
     done = subprocess.run([sys.executable, str(example), TUTORIAL], capture_output=True,
                           text=True, check=True, timeout=60)

@@ -72,7 +72,7 @@ def test_the_config_dir_is_the_tests_own() -> None:
 def test_without_the_variable_the_file_is_in_the_users_config_dir(tmp_path: Path,
                                                                     monkeypatch) -> None:
     """What a user gets: platformdirs' user config directory for "tui-search", which on Linux
-    is the README's ``~/.config/tui-search/`` (or ``$XDG_CONFIG_HOME/tui-search/``); a theme
+    is docs/01-keys.md's ``~/.config/tui-search/`` (or ``$XDG_CONFIG_HOME/tui-search/``); a theme
     chosen is saved there."""
     import platformdirs
 
