@@ -138,7 +138,7 @@ def to_json(obj: object, separators: tuple[str, str] | None = None) -> str:
 
 
 def json_summary(outcome: Outcome, scenario: Scenario | None = None) -> dict[str, object]:
-    """The headless JSON object (README: "Headless output")."""
+    """The headless JSON object (docs/02-command-line.md, "The JSON")."""
     path, moves = outcome.path, outcome.moves
     extra = {} if scenario is None else {
         "optimal_length": round(scenario.optimal_length, 6),

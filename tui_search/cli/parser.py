@@ -88,7 +88,7 @@ def build_parser() -> argparse.ArgumentParser:
                    "--headless, run them on the map and print a table (e.g. bfs,dfs or "
                    "astar:manhattan,ucs: an informed search may name its heuristic)")
     p.add_argument("--exercise", metavar="N|FILE",
-                   help="the tutorial's exercise N or an exercise FILE (TOML: see the README) "
+                   help="the tutorial's exercise N or an exercise FILE (TOML: docs/04-exercises.md) "
                    "as a live challenge in the app; with --headless, grade the maps on it (1: "
                    "BFS expands fewer nodes than DFS; 2: DFS's path has more moves than "
                    "BFS's): exit 0 all solved, 1 not, 2 bad input, 3 a search gave up (one "
@@ -118,7 +118,7 @@ def build_parser() -> argparse.ArgumentParser:
                    "numbered line per line (for handouts), and exit")
     p.add_argument("--lesson", metavar="NAME|FILE.md", nargs="?", const="",
                    help="open a lesson beside the panes: a built-in one by name (tutorial, "
-                   "choices) or a Markdown file (its format: the README); pgdn and pgup move "
+                   "choices) or a Markdown file (its format: docs/05-lessons.md); pgdn and pgup move "
                    "between its sections. With no name, list the built-in lessons")
     p.add_argument("--headless", action="store_true",
                    help="search without the app and print the result")

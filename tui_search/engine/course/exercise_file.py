@@ -1,4 +1,4 @@
-"""Exercise files: a teacher's exercise in TOML (README: "Exercise files").
+"""Exercise files: a teacher's exercise in TOML (docs/04-exercises.md, "Exercise files").
 
     title = "Greedy is not optimal"
     text = "Move obstacles so that greedy best-first's path costs more than A*'s."
@@ -141,7 +141,7 @@ class _Reader:
     def string(self, key: str, default: str | None = None) -> str:
         value = self.data.get(key, default)
         if value is None:
-            raise MapError(self.path, f"the exercise has no {key} (README: Exercise files)")
+            raise MapError(self.path, f"the exercise has no {key} (docs/04-exercises.md)")
         if not isinstance(value, str):
             raise self.error(key, "expected a string")
         return value
@@ -149,7 +149,7 @@ class _Reader:
     def strings(self, key: str, default: list[str] | None = None) -> list[str]:
         value = self.data.get(key, default)
         if value is None:
-            raise MapError(self.path, f"the exercise has no {key} (README: Exercise files)")
+            raise MapError(self.path, f"the exercise has no {key} (docs/04-exercises.md)")
         if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
             raise self.error(key, "expected a list of strings, as in [\"bfs\", \"dfs\"]")
         return value

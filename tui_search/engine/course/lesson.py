@@ -30,7 +30,7 @@ from tui_search.engine.search.registry import ALGORITHMS, DEFAULT_ALGORITHM, get
 #: The built-in lessons: ``tui_search/lessons/NAME.md``.
 LESSON_DIR = Path(__file__).resolve().parents[2] / "lessons"  # tui_search/lessons
 ON_OFF = {"on": True, "off": False}
-#: A block's keys, and what each takes (for the README and the errors).
+#: A block's keys, and what each takes (for the docs and the errors).
 KEYS: dict[str, str] = {
     "map": "a map file, relative to the lesson file",
     "algorithm": ", ".join(ALGORITHMS),
