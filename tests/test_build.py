@@ -21,7 +21,8 @@ from tests.helpers import ROOT
 from tui_search.engine.search.loops.compiled import CORE_ENV
 
 #: What a build reads: the package and the files beside it the sdist carries.
-BUILD_INPUT = ["tui_search", "maps", "pyproject.toml", "setup.py", "MANIFEST.in", "README.md"]
+BUILD_INPUT = ["tui_search", "maps", "pyproject.toml", "setup.py", "MANIFEST.in", "README.md",
+               "CONTRIBUTING.md"]
 
 
 def _source(tmp: Path) -> Path:

@@ -26,8 +26,8 @@ from tui_search.engine.run.recorded import MAX_STEPS, Run
 from tui_search.engine.search.outcome import Outcome
 
 #: Maps bigger than this are not checked at each edit by the app (two whole searches an edit,
-#: and a mouse stroke is an edit a cell; a BFS and a DFS of 10,000 cells: ~20 ms) but in a
-#: thread once the edits pause.
+#: and a mouse stroke is an edit a cell: benchmarks/README.md, "limits") but in a thread once
+#: the edits pause.
 LIVE_CELLS = 10_000
 _PATH_FIGURES = ("moves", "cost")
 

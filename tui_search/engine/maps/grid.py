@@ -88,7 +88,7 @@ class Grid:
     def __init__(self, width: int, height: int, blocked: bytearray | None = None,
                  start: Cell | None = None, goal: Cell | None = None,
                  source: MapSource | None = None, costs: array[float] | None = None) -> None:
-        # Written out, not a dataclass: one costs ~0.7 ms of every start (session 14).
+        # Written out, not a dataclass (compiled at import: benchmarks/README.md, "startup").
         if width < 1 or height < 1:
             raise ValueError("a grid needs at least one row and one column")
         if blocked is None:
@@ -234,8 +234,9 @@ class Grid:
         old, self.costs[i] = self.costs[i], value
         self._lowest = None
         self._derived = {}
-        # The lowest free cost follows a free cell's edit with no scan of the map (~5 ms on
-        # 512x512), unless the cell was the lowest and is dearer now (another may be as low).
+        # The lowest free cost follows a free cell's edit with no scan of the map
+        # (benchmarks/README.md, "terrain"), unless the cell was the lowest and is dearer now
+        # (another may be as low).
         if known is not None and not self.blocked[i] and (value <= known or old != known):
             self._lowest = self.costs, min(known, value)
         if value == 1.0:

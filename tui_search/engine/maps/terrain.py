@@ -10,8 +10,7 @@ digits ``1``-``9`` cost themselves.  Every problem is a one-line
 :class:`~tui_search.engine.maps.read.MapError` naming the table's line.
 """
 
-# No `from __future__ import annotations`: typing compiles a NamedTuple's string
-# annotations one by one at import (~5 M instructions of every start in all: session 14).
+# No future import: CONTRIBUTING.md, "Start-up".
 import math
 import re
 from array import array

@@ -119,8 +119,8 @@ def _plain_map(raw: Lines, cells_of: Alphabet, path: str, *, need_start: bool,
     ASCII cells, all as wide, from the first line, no comment, ``\\r`` or blank line but at
     the end, at most one ``S`` and one ``G``.  None for any other text, which the line by line
     reader takes (and names its first problem).  A map of millions of rows then reads in
-    about a second, not a minute.  Gives the same grid as the line by line reader (a
-    hypothesis test checks it)."""
+    a few passes, not line by line (benchmarks/README.md, "big_map").  Gives the same grid
+    as the line by line reader (a hypothesis test checks it)."""
     body = raw.text.rstrip("\n")
     width = body.find("\n")
     width = len(body) if width < 0 else width

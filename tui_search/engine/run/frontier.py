@@ -137,7 +137,8 @@ class PriorityFrontier:
     event's g from its generating step's, which is then looked up once a step."""
 
     def __init__(self, keys: Callable[[Sequence[int]], list[float]]) -> None:
-        # imported with the first priority queue, not at start-up (~2 ms)
+        # imported with the first priority queue, not at start-up (benchmarks/README.md,
+        # "startup")
         from sortedcontainers import SortedList
 
         self._sorted = SortedList

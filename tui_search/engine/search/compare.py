@@ -6,8 +6,7 @@ and the tutorial's sentence.
 Plain Python, no UI.
 """
 
-# No `from __future__ import annotations`: typing compiles a NamedTuple's string
-# annotations one by one at import (~5 M instructions of every start in all: session 14).
+# No future import: CONTRIBUTING.md, "Start-up".
 from collections.abc import Sequence
 from typing import NamedTuple
 

@@ -4,8 +4,7 @@ A recorded :class:`~tui_search.engine.run.recorded.Run` and the streaming refere
 command line) both end in an :class:`Outcome`; the command line turns it into its text and JSON.
 """
 
-# No `from __future__ import annotations`: typing compiles a NamedTuple's string
-# annotations one by one at import (~5 M instructions of every start in all: session 14).
+# No future import: CONTRIBUTING.md, "Start-up".
 from typing import NamedTuple
 
 from tui_search.engine.maps.grid import Cell, Grid

@@ -55,7 +55,7 @@ class Problem:
     @cached_property
     def _masks(self) -> tuple[bytes, list[tuple[int, ...]]]:
         """``mask`` and ``moves``, worked out when a loop first asks: the corner masks cost
-        a pass over the whole map (~20 ms on 1024x1024), which a loop that checks corners
+        a pass over the whole map (benchmarks/README.md, "core"), which a loop that checks corners
         itself (the priority queue's, which may expand a handful of cells) never pays."""
         order, offsets = self.semantics.order, self.offsets
         if corner_free(self.semantics):

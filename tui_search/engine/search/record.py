@@ -40,7 +40,7 @@ class Record:
               "iter_root", "iter_limit", "discarded", "done", "goal_gen", "gave_up")
 
     def __init__(self) -> None:
-        # Written out, not a dataclass: one costs ~0.7 ms of every start (session 14).
+        # Written out, not a dataclass (compiled at import: benchmarks/README.md, "startup").
         self.gen_node: array[int] = array("i")
         self.step_end: array[int] = array("i", [1])
         self.step_exp: array[int] | _InOrder = _InOrder()

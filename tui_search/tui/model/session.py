@@ -26,7 +26,7 @@ from tui_search.tui.model.searches import DEFAULT_COMPARE, normal_spec, searches
 
 if TYPE_CHECKING:
     # Imported where used: exercises are read and graded only once one is shown, so the first
-    # frame does without their modules (~8 ms: benchmarks/README.md, "startup").
+    # frame does without their modules (benchmarks/README.md, "startup").
     from tui_search.engine.course.exercise_file import Exercise
     from tui_search.engine.course.grading import Verdict
     from tui_search.engine.maps.scenarios import Optimum

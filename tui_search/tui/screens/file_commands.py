@@ -56,8 +56,9 @@ if TYPE_CHECKING:
 # app's start-up time for nothing.
 
 NO_ENDPOINTS_IN_MAP = "MovingAI format: the start and goal are not part of a .map file"
-#: A generated map of more cells is made in a thread (kruskal 999x999 takes some 5 s), the
-#: status line saying "Generating ..." meanwhile; a smaller one at once (under ~0.2 s).
+#: A generated map of more cells is made in a thread (the biggest take seconds), the status
+#: line saying "Generating ..." meanwhile; a smaller one at once (benchmarks/README.md,
+#: "limits").
 GENERATE_AT_ONCE_CELLS = 40_000
 
 

@@ -77,7 +77,7 @@ class PanesScreen(Screen[None]):
     @cached_property
     def files(self) -> FileCommands:
         """Saving, opening, generating and quitting, made when first used: the first frame
-        imports none of it (-1.6 M instructions: benchmarks/README.md, session 14)."""
+        imports none of it (benchmarks/README.md, "startup")."""
         from tui_search.tui.screens.file_commands import FileCommands
 
         return FileCommands(self)
@@ -135,7 +135,8 @@ class PanesScreen(Screen[None]):
         self.show_lesson()
         # reckoned: the first frame is laid out already.  The classes it sets are not restyled
         # here: the ScreenResume that follows the mount restyles the whole screen before the
-        # first frame (restyling the pane here as well was ~10 ms of a ~350 ms start)
+        # first frame (restyling the pane here as well cost the start: benchmarks/README.md,
+        # "startup")
         self.fit_panes(restyle=False)
         self.present()
         self.call_after_refresh(self.fit_panes)  # measured

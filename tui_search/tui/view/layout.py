@@ -11,8 +11,7 @@ When the status lines under the panes wrap to more rows, the map stays where it 
 the room they left at their least) while the rows under it that they take were blank.
 """
 
-# No `from __future__ import annotations`: typing compiles a NamedTuple's string
-# annotations one by one at import (~5 M instructions of every start in all: session 14).
+# No future import: CONTRIBUTING.md, "Start-up".
 from collections.abc import Callable
 from typing import NamedTuple
 

@@ -168,7 +168,7 @@ _BLOCKED: WeakKeyDictionary[Run, str | None] = WeakKeyDictionary()
 
 
 #: Maps bigger than this are not searched again to name the rule that blocked a path (up to
-#: three BFS runs: about 0.2 s on a 512x512 maze, seconds on a 4096x4096 map).
+#: three BFS runs, too slow on the biggest maps: benchmarks/README.md, "limits").
 BLOCKED_BY_CELLS = 300_000
 
 
@@ -227,8 +227,8 @@ def result_text(run: Run) -> str:
 _LOWEST: WeakKeyDictionary[Run, float | None] = WeakKeyDictionary()
 
 
-#: Maps bigger than this are not searched again for the lowest cost (a uniform-cost search of
-#: 40,000 cells takes about a tenth of a second).
+#: Maps bigger than this are not searched again for the lowest cost (a whole uniform-cost
+#: search: benchmarks/README.md, "limits").
 LOWEST_COST_CELLS = 40_000
 
 

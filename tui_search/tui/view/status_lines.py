@@ -10,8 +10,7 @@ the playing speed, the frontier's peak, ... go first, never the narration or the
 over the number of panes, :func:`~tui_search.tui.view.layout.own_lines`.
 """
 
-# No `from __future__ import annotations`: typing compiles a NamedTuple's string
-# annotations one by one at import (~5 M instructions of every start in all: session 14).
+# No future import: CONTRIBUTING.md, "Start-up".
 from typing import NamedTuple
 
 from tui_search.engine.run.recorded import Run

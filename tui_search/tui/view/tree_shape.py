@@ -17,7 +17,8 @@ MAX_LEVELS = 40
 #: Deepest part of the ancestor chain the focused view lists (above it: START and a "⋮" line).
 SHOW_LEVELS = 200
 #: Longest walk up the tree a show() makes to find where a new chain meets the old one or
-#: the root (about 0.6 µs a level); past it a deep depth-first chain's depth is left uncounted.
+#: the root, so that a step stays cheap (benchmarks/README.md, "step"); past it a deep
+#: depth-first chain's depth is left uncounted.
 WALK_MAX = 2000
 
 

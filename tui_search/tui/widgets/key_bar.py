@@ -150,7 +150,8 @@ class KeyBar(Widget):
 
     def render_line(self, y: int) -> Strip:
         """The hints as one line of segments (the line API: Textual lays out no text for it,
-        ~7.7 M instructions of every start: benchmarks/README.md, session 14).  What is still too wide ends in "…"."""
+        work every start paid for: benchmarks/README.md, "startup").  What is still too wide
+        ends in "…"."""
         width = self.content_size.width
         base = self.rich_style
         self._spans = []

@@ -52,7 +52,7 @@ class RunPane(Vertical):
     def compose(self) -> ComposeResult:
         # The parts a layout may leave hidden (the Code panel, the note, the pane's own status
         # lines) are mounted when one first shows them (:meth:`_show_part`): a first frame
-        # without them neither composes nor styles them (~18 M instructions of the tutorial's)
+        # without them neither composes nor styles them (benchmarks/README.md, "startup").
         with self.lists:  # docked first: beside the map, it spans the pane's whole height
             yield self.frontier
             yield self.tree_panel

@@ -38,13 +38,13 @@ from tui_search.engine.search.record import CHUNK, Record
 
 INF = float("inf")
 
-# What made the graph-search loop cheaper, counted with callgrind on maze512 row 3 under
-# corners never (recorded run against the bare heapq search): closing expanded cells under a
-# consistent heuristic, so most neighbours fail a byte test before any float is made (UCS 1.33
-# -> 1.28x, A* 1.28 -> 1.24x, with the next two); the corner test before the float test; the
-# record's lists appended as methods and the step numbers taken from the chunk's ``range``.
-# Tried and dropped: ``(priority, event, cell)`` entries with each cell's latest event for the
-# stale test (no fewer instructions: the test and the g then cost a lookup each).
+# What made the graph-search loop cheaper, counted in instructions against the bare heapq
+# search (benchmarks/README.md, "informed"): closing expanded cells under a consistent
+# heuristic, so most neighbours fail a byte test before any float is made; the corner test
+# before the float test; the record's lists appended as methods and the step numbers taken
+# from the chunk's ``range``.  Tried and dropped: ``(priority, event, cell)`` entries with
+# each cell's latest event for the stale test (no fewer instructions: the test and the g then
+# cost a lookup each).
 
 
 def _costed_moves(problem: Problem) -> tuple[tuple[int, float, int, int], ...]:

@@ -52,8 +52,8 @@ def source_hash() -> str:
     """The C source's fingerprint as the build takes it (setup.py embeds it in the module):
     the CRC-32 of its files' bytes in order, and their total size.  A staleness check, not a
     seal: any edit of up to 32 bits in a row changes the CRC, any other all but surely.  Not
-    SHA-256: ``hashlib`` loads OpenSSL (~6 M instructions of every start), ``zlib`` is
-    already imported by Textual."""
+    SHA-256: ``hashlib`` loads OpenSSL at every start (benchmarks/README.md, "startup"),
+    ``zlib`` is already imported by Textual."""
     source = b"".join(path.read_bytes() for path in SOURCES)
     return f"crc32:{zlib.crc32(source):08x}:{len(source)}"
 
