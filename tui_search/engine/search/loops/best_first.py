@@ -31,7 +31,7 @@ from struct import pack
 
 from tui_search.engine.maps.grid import DELTAS, SQRT2
 from tui_search.engine.search import heuristics
-from tui_search.engine.search.heuristics import CHEAPER_BY, heuristic_for
+from tui_search.engine.search.heuristics import CHEAPER_BY, Heuristic, heuristic_for
 from tui_search.engine.search.loops.tree import Path
 from tui_search.engine.search.problem import Problem
 from tui_search.engine.search.record import CHUNK, Record
@@ -75,13 +75,42 @@ def _blocked_sides_refused(problem: Problem) -> int:
     return 1 if problem.semantics.corners == "never" else 2
 
 
+def _start_heap(problem: Problem, rec: Record, best: array[float], goal_on_push: int,
+                heuristic: Heuristic, priority: str) -> list[tuple[float, int, int, float]]:
+    """Record the start's event and make the heap of its entry: empty when the start is the
+    goal tested on push (the run is then done)."""
+    start, stride = problem.start, problem.stride
+    rec.gen_node.append(start)
+    best[start] = 0.0
+    if start == goal_on_push:
+        rec.goal_gen, rec.done = 0, True
+        return []
+    if "h" in priority:
+        sy, sx = divmod(start, stride)
+        gy, gx = divmod(problem.goal, stride)
+        h0 = heuristic(abs(sx - gx), abs(sy - gy))
+        f0 = 0.0 + h0 if "g" in priority else h0
+    else:
+        f0 = 0.0
+    return [(f0, 0, start, 0.0)]
+
+
+def _flush(buffers: tuple[tuple[array[int] | array[float], list[int] | list[float], str], ...]
+           ) -> None:
+    """Append each list to its record array (``(array, list, typecode)``) and empty it."""
+    for arr, buf, code in buffers:
+        if buf:
+            arr.frombytes(pack(f"{len(buf)}{code}", *buf))
+            buf.clear()
+
+
 def best_first(problem: Problem, rec: Record, chunk: int = CHUNK, priority: str = "g+h"
                ) -> Iterator[int]:
     """Graph search in order of ``priority`` (the algorithm's: "g", "h" or "g+h")."""
     moves = [(off, cost, cost + CHEAPER_BY, a, b) for off, cost, a, b in _costed_moves(problem)]
     walls, stride = problem.walls, problem.stride
     refused = _blocked_sides_refused(problem)
-    goal, start = problem.goal, problem.start
+    goal = problem.goal
     goal_on_push = goal if problem.goal_test == "generate" else -1
     goal_on_pop = -1 if problem.goal_test == "generate" else goal
     heuristic = heuristic_for(problem.semantics.heuristic, problem.lowest)
@@ -99,33 +128,15 @@ def best_first(problem: Problem, rec: Record, chunk: int = CHUNK, priority: str 
         problem.semantics.heuristic, problem.semantics.order)) else 0
     rec.step_exp = step_exp = array("i", [-1])
     rec.step_g = step_g = array("d", [0.0])  # index 0: before any step
-    rec.gen_node.append(start)
-    best[start] = 0.0
-    if start == goal_on_push:
-        rec.goal_gen, rec.done = 0, True
-        return
-    if use_h:
-        sy, sx = divmod(start, stride)
-        h0 = heuristic(abs(sx - gx), abs(sy - gy))
-        f0 = 0.0 + h0 if use_g else h0
-    else:
-        f0 = 0.0
-    heap = [(f0, 0, start, 0.0)]
+    heap = _start_heap(problem, rec, best, goal_on_push, heuristic, priority)  # []: found
     pop, push = heapq.heappop, heapq.heappush
     nodes: list[int] = []
     gs: list[float] = []  # each step's g
     ends: list[int] = []
     exps: list[int] = []
     discarded: list[int] = []
-
-    def flush() -> None:
-        for arr, buf, code in ((rec.gen_node, nodes, "i"), (step_g, gs, "d"),
-                               (rec.step_end, ends, "i"), (step_exp, exps, "i"),
-                               (rec.discarded, discarded, "i")):
-            if buf:
-                arr.frombytes(pack(f"{len(buf)}{code}", *buf))
-                buf.clear()
-
+    buffers = ((rec.gen_node, nodes, "i"), (step_g, gs, "d"), (rec.step_end, ends, "i"),
+               (step_exp, exps, "i"), (rec.discarded, discarded, "i"))
     count = 1
     while heap:
         first = rec.steps + 1
@@ -142,7 +153,7 @@ def best_first(problem: Problem, rec: Record, chunk: int = CHUNK, priority: str 
                 continue
             if n == goal_on_pop:
                 ends.append(count)
-                flush()
+                _flush(buffers)
                 rec.goal_gen, rec.done = e, True
                 return
             closed[n] = close
@@ -176,11 +187,11 @@ def best_first(problem: Problem, rec: Record, chunk: int = CHUNK, priority: str 
                 count += 1
                 if m == goal_on_push:
                     ends.append(count)
-                    flush()
+                    _flush(buffers)
                     rec.goal_gen, rec.done = count - 1, True
                     return
             ends.append(count)
-        flush()
+        _flush(buffers)
         if heap:
             yield rec.steps
     rec.done = True

@@ -16,6 +16,24 @@ from tui_search.engine.search.problem import Problem
 from tui_search.engine.search.record import CHUNK, Record
 
 
+def _new_iteration(rec: Record, gen_depth: array[int], path: Path, tree: bool, start: int,
+                   limit: int) -> int:
+    """Begin iteration ``limit`` (its first step, its root, its limit) with a new root event
+    at the start, at depth 0 (``gen_depth``: the record's); the root's event number."""
+    root = len(rec.gen_node)
+    if limit:
+        rec.iter_first_step.append(len(rec.step_end))
+        rec.iter_root.append(root)
+        rec.iter_limit.append(limit)
+    else:
+        rec.iter_limit[0] = 0
+    rec.gen_node.append(start)
+    gen_depth.append(0)
+    if tree:
+        path.add(-1)
+    return root
+
+
 def iddfs(problem: Problem, rec: Record, chunk: int = CHUNK) -> Iterator[int]:
     """Iterative deepening: depth-limited DFS with limits 0, 1, 2, ...
 
@@ -39,17 +57,7 @@ def iddfs(problem: Problem, rec: Record, chunk: int = CHUNK) -> Iterator[int]:
     start = problem.start
     steps, pause, limit = 0, chunk, 0
     while True:
-        root = len(gen_node)
-        if limit:
-            rec.iter_first_step.append(len(rec.step_end))
-            rec.iter_root.append(root)
-            rec.iter_limit.append(limit)
-        else:
-            rec.iter_limit[0] = 0
-        add(start)
-        add_depth(0)
-        if tree:
-            path.add(-1)
+        root = _new_iteration(rec, gen_depth, path, tree, start, limit)
         if test_on_push and start == goal:
             rec.goal_gen, rec.done = root, True
             return
