@@ -84,8 +84,8 @@ def test_the_sdist_and_the_wheel_carry_the_core_and_the_maps(tmp_path: Path) -> 
     (sdist,), (wheel,) = dist.glob("*.tar.gz"), dist.glob("*.whl")
     with tarfile.open(sdist) as tar:
         names = {name.split("/", 1)[1] for name in tar.getnames() if "/" in name}
-    assert {"setup.py", "tui_search/engine/search/_core.c", "tui_search/engine/search/_core_loops.c",
-            "tui_search/engine/search/_core_position.c",
+    assert {"setup.py", "tui_search/engine/search/_core.c",
+            "tui_search/engine/search/_core_loops.c", "tui_search/engine/search/_core_position.c",
             "tui_search/engine/search/_core.h", "maps/tutorial.txt",
             "tui_search/maps/tutorial.txt", "tui_search/tui/app.tcss"} <= names
     with zipfile.ZipFile(wheel) as whl:
@@ -94,8 +94,8 @@ def test_the_sdist_and_the_wheel_carry_the_core_and_the_maps(tmp_path: Path) -> 
             "tui_search/lessons/tutorial.md", "tui_search/lessons/choices.md",
             "tui_search/lessons/dfs-longer.txt", "tui_search/exercises/1-bfs-expands-less.toml",
             "tui_search/exercises/2-dfs-not-optimal.toml"} <= names
-    assert any(name.startswith("tui_search/engine/search/_core.") and not name.endswith((".c", ".h"))
-               for name in names)
+    assert any(name.startswith("tui_search/engine/search/_core.")
+               and not name.endswith((".c", ".h")) for name in names)
     bin_dir = _venv(tmp_path)
     _pip_install(bin_dir, wheel)
     _check_the_app_runs(bin_dir, "compiled search core")

@@ -4,9 +4,9 @@ and their order.
 Coordinates follow MovingAI: ``x`` is the column counted from 0 at the left, ``y`` the row
 counted from 0 at the top.  A move costs its length (1 straight, sqrt(2) diagonal) times the
 cost of the cell it enters; a map whose every cell costs 1 keeps no costs at all (``costs``
-is None), so the plain maps pay nothing for terrain.  The grid is a plain, mutable value: editing it never touches a
-search, because every search copies what it needs when it starts (search state lives in the
-run, never on the grid).  A copy shares what is worked out from the cells (the padded arrays
+is None), so the plain maps pay nothing for terrain.  The grid is a plain, mutable value: editing it
+never touches a search, because every search copies what it needs when it starts (search state lives
+in the run, never on the grid).  A copy shares what is worked out from the cells (the padded arrays
 of :mod:`~tui_search.engine.search.problem`: :meth:`Grid.derived`) and its costs, until either grid
 is edited: a search started on an unedited map pays neither again.
 """

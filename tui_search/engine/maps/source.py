@@ -96,7 +96,7 @@ class Lines(Sequence[str]):
         if isinstance(other, Lines):
             return self.text == other.text
         if isinstance(other, (tuple, list)):
-            return len(other) == len(self) and all(a == b for a, b in zip(self, other))
+            return len(other) == len(self) and all(a == b for a, b in zip(self, other, strict=True))
         return NotImplemented
 
     def __hash__(self) -> int:

@@ -239,7 +239,8 @@ class Recording:
         rec = self.rec
         step_exp, step_end = rec.step_exp, rec.step_end
         it = self.iteration_of(first)
-        if first <= last and it and rec.iter_first_step[it] == first:  # skip the new iteration's root
+        # skip the new iteration's root
+        if first <= last and it and rec.iter_first_step[it] == first:
             yield step_exp[first], range(step_end[first - 1] + 1, step_end[first])
             first += 1
         for j in range(first, last + 1):

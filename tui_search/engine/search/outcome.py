@@ -1,7 +1,8 @@
 """What a whole search came to: the path and the counts, however the search was run.
 
-A recorded :class:`~tui_search.engine.run.recorded.Run` and the streaming reference search (the headless
-command line) both end in an :class:`Outcome`; the command line turns it into its text and JSON.
+A recorded :class:`~tui_search.engine.run.recorded.Run` and the streaming reference search (the
+headless command line) both end in an :class:`Outcome`; the command line turns it into its text and
+JSON.
 """
 
 # No future import: CONTRIBUTING.md, "Start-up".

@@ -2,7 +2,8 @@
 
 Every loop of :mod:`tui_search.engine.search.loops` writes one :class:`Record` (8 to 16 bytes an
 expansion), and :class:`tui_search.engine.run.recording.Recording` and the run read "the state at
-step k" from it; the reference loop (:mod:`tui_search.engine.search.reference`) writes the same arrays.
+step k" from it; the reference loop (:mod:`tui_search.engine.search.reference`) writes the same
+arrays.
 """
 
 from __future__ import annotations

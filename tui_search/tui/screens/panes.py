@@ -236,7 +236,7 @@ class PanesScreen(Screen[None]):
         anew), then show."""
         session = self.session
         labels = session.labels
-        for pane, label in zip(self.panes, labels):
+        for pane, label in zip(self.panes, labels, strict=False):
             pane.label = label
         if len(self.panes) != len(labels):
             state = self.views[0].view_state()
@@ -307,8 +307,8 @@ class PanesScreen(Screen[None]):
         self.show_readout()
 
     def show_status(self) -> None:
-        """The status lines (:func:`~tui_search.tui.view.status_lines.screen_status`) and the key bar:
-        all a seek's progress changes."""
+        """The status lines (:func:`~tui_search.tui.view.status_lines.screen_status`) and the key
+        bar: all a seek's progress changes."""
         session = self.session
         status = screen_status(session, self.size.width,
                                panes_lines=self.panes[0].stats.display)
@@ -343,8 +343,9 @@ class PanesScreen(Screen[None]):
         """Show the runs after a move from ``before``: only the cells a one-step move
         changed."""
         if before is not None:
+            runs = zip(self.session.runs, before, strict=True)
             self.present(per_run=[playback.step_changes(run, k, was_at_end)
-                                  for run, (k, was_at_end) in zip(self.session.runs, before)])
+                                  for run, (k, was_at_end) in runs])
 
     def warn(self, text: str | None, timeout: float = 3) -> None:
         if text:

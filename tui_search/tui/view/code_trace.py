@@ -180,4 +180,5 @@ def focus_line(run: Run) -> int | None:
     return None
 
 
-__all__ = ["FOCUS_KINDS", "Skip", "code_of", "focus_line", "line_notes", "lit_kinds", "lit_lines", "skipped"]
+__all__ = ["FOCUS_KINDS", "Skip", "code_of", "focus_line", "line_notes", "lit_kinds", "lit_lines",
+           "skipped"]

@@ -2,9 +2,9 @@
 (:func:`entry_line`), and, wider than its panel, its rows.  Those: the cell on the
 first row, and the figures -- iterative deepening's ``d=3``, a priority queue's ``f6.41``,
 ``g2.41``, ``h4.00`` -- the depth after it while it fits, the figures on rows of their own,
-indented under the cell, together while they fit.  The least important parts go first, never a figure: the move (``NE``) goes when it
-would open a row, then the marker column (``▶+``) when the cell does not fit beside it (the
-entry expanded next is highlighted anyway).
+indented under the cell, together while they fit.  The least important parts go first, never a
+figure: the move (``NE``) goes when it would open a row, then the marker column (``▶+``) when the
+cell does not fit beside it (the entry expanded next is highlighted anyway).
 
 Every entry of a panel takes the same rows (their columns have the same widths), so the
 entry on a line is found by a division, whatever the frontier's size."""

@@ -246,4 +246,5 @@ def lesson_width(screen_width: int) -> int:
     return max(28, min(56, screen_width * 2 // 5))
 
 
-__all__ = ["CODE_MIN_HEIGHT", "MAP_MIN_LINES", "Arrangement", "arrange", "lesson_width", "own_lines", "pane_grid"]
+__all__ = ["CODE_MIN_HEIGHT", "MAP_MIN_LINES", "Arrangement", "arrange", "lesson_width",
+           "own_lines", "pane_grid"]

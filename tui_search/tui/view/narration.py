@@ -193,7 +193,8 @@ def blocked_by(run: Run) -> str | None:
     """The rule that left the map without a path, if one did (searched once per run, on
     maps of at most :data:`BLOCKED_BY_CELLS` cells: the app must not freeze to say it).  Never
     for a replayed trace: its rules are the matched search's, not ones the trace declared."""
-    if run.replayed or run.semantics.is_default or run.grid.width * run.grid.height > BLOCKED_BY_CELLS:
+    too_big = run.grid.width * run.grid.height > BLOCKED_BY_CELLS
+    if run.replayed or run.semantics.is_default or too_big:
         return None
     if run not in _BLOCKED:
         from tui_search.engine.run.blocked import blocking_rule  # only when a choice is changed

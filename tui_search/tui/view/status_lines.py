@@ -100,7 +100,7 @@ def search_status(run: Run | None, name: str, *, in_pane: bool, playing: str = "
             # too: it may go; the path's moves and cost never go, they take another row)
             ranks = (0, BOUND_RANK) if in_pane else (0, 0)
             line += [Piece([(text, "stats--result")], rank, (" · ", "stats--label"))
-                     for text, rank in zip(result_text(run).split(" · "), ranks)]
+                     for text, rank in zip(result_text(run).split(" · "), ranks, strict=False)]
     return Status([Line(status), Line(line, prose=True)], PANE_ROWS if in_pane else MAX_ROWS)
 
 
@@ -116,7 +116,7 @@ def lockstep_status(labels: list[str], *, playing: str = "", note: str = "",
     lines = [Line(status)]
     if runs:
         lines.append(Line([Piece(_counts(label, run), 0, SEP)
-                           for label, run in zip(labels, runs)]))
+                           for label, run in zip(labels, runs, strict=True)]))
     line = [Piece([(note, "stats--note")] if note else [(sentence, "stats--narration")])]
     return Status([*lines, Line(line, prose=True)], MAX_ROWS)
 

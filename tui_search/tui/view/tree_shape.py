@@ -1,7 +1,8 @@
 """The search tree's shape at a run's position, kept in step with it from the record (no
 Textual): the listing's event ids in preorder with their depths, the focused view's chain of
-ancestors, a node's siblings and its tree guides.  :class:`~tui_search.tui.view.tree_listing.TreeModel`
-keeps them from one position to the next and says them as lines.
+ancestors, a node's siblings and its tree guides.
+:class:`~tui_search.tui.view.tree_listing.TreeModel` keeps them from one position to the next and
+says them as lines.
 """
 
 from __future__ import annotations

@@ -130,7 +130,7 @@ class KeyBar(Widget):
             else:
                 hints.extend((([key], self.labels.get(action, a.binding.description),
                                a.enabled), action)
-                             for key, a, action in zip(keys, members, actions))
+                             for key, a, action in zip(keys, members, actions, strict=True))
         return hints
 
     def shown_hints(self, width: int | None = None) -> list[Hint]:

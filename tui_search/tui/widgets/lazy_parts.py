@@ -26,7 +26,8 @@ def show_part(parent: Widget, part: Widget, shown: bool,
     that is mounted."""
     if not shown or part.parent is not None:
         return
-    later = [w for w in order[list(order).index(part) + 1:] if w is not None and w.parent is not None]
+    later = [w for w in order[list(order).index(part) + 1:]
+             if w is not None and w.parent is not None]
     parent.mount(part, before=later[0] if later else None)
 
 

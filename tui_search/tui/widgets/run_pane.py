@@ -81,8 +81,8 @@ class RunPane(Vertical):
                 restyle: bool = True) -> None:
         """Lay the pane out: its lists beside or under the map, or not at all; its trees and
         its own status lines shown or not; with ``code``, the Code panel in the tree's place
-        (where the arrangement has room for it: fewer lines than a tree needs).  ``restyle=False``: the classes are set
-        and left for the next restyle of the screen."""
+        (where the arrangement has room for it: fewer lines than a tree needs).  ``restyle=False``:
+        the classes are set and left for the next restyle of the screen."""
         self.set_class(arrangement.beside, "-beside", update=restyle)
         self.stats.display = arrangement.pane_stats
         beside = arrangement.lists_width if arrangement.beside else 0

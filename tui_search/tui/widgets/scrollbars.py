@@ -78,7 +78,7 @@ def update_scrollbar(bar: ScrollBar, **values: float) -> None:
     if not bar.vertical or len(after) != len(before):
         bar.refresh()
         return
-    refresh_rows(bar, [new != old for new, old in zip(after, before)], bar.size.width)
+    refresh_rows(bar, [new != old for new, old in zip(after, before, strict=True)], bar.size.width)
 
 
 def refresh_rows(widget: Widget, changed: list[bool], width: int) -> None:

@@ -2,16 +2,17 @@
 and A*, a priority queue's.
 
 One loop serves the three: they differ only in the priority an entry is pushed with (``g``,
-``h`` or ``g + h``; :func:`~tui_search.engine.search.heuristics.priority_of`).  The definition is the
-reference loop (:class:`tui_search.engine.search.reference.ReferenceSearch`), and a
-hypothesis test in ``tests/engine`` holds these equal to it, array for array.
+``h`` or ``g + h``; :func:`~tui_search.engine.search.heuristics.priority_of`).  The definition is
+the reference loop (:class:`tui_search.engine.search.reference.ReferenceSearch`), and a hypothesis
+test in ``tests/engine`` holds these equal to it, array for array.
 
 The queue is a binary heap of ``(priority, event, cell, g)``: the event number breaks ties, so
 equal priorities come out in the order they were pushed (as in the frontier model the app
 shows, :class:`~tui_search.engine.run.frontier.PriorityFrontier`).  A cell is pushed again when
 reached with a lower g than its best so far (by more than
-:data:`~tui_search.engine.search.heuristics.CHEAPER_BY`: float noise), and an entry taken off with a g above its cell's
-best is stale: a discarded step ("lazy deletion": nothing is removed from the heap early).
+:data:`~tui_search.engine.search.heuristics.CHEAPER_BY`: float noise), and an entry taken off with a
+g above its cell's best is stale: a discarded step ("lazy deletion": nothing is removed from the
+heap early).
 
 Besides the arrays every loop records, these record ``step_g``: the g of the entry each step
 took off.  An event's g is its generating step's plus its move's cost (its length, 1 or
@@ -54,7 +55,7 @@ def _costed_moves(problem: Problem) -> tuple[tuple[int, float, int, int], ...]:
     rather than ask for the problem's corner masks (a pass over the whole map)."""
     rule = problem.semantics.corners
     out = []
-    for name, off in zip(problem.semantics.order, problem.offsets):
+    for name, off in zip(problem.semantics.order, problem.offsets, strict=True):
         dx, dy = DELTAS[name]
         diagonal = bool(dx and dy)
         sides = (dx, dy * problem.stride) if diagonal and rule != "always" else (0, 0)

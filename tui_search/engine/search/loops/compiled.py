@@ -3,12 +3,13 @@
 The compiled module (``tui_search/engine/search/_core.c`` and ``_core_loops.c``, built at ``pip
 install`` as an optional extension) records every algorithm under every choice into the same
 :class:`~tui_search.engine.search.record.Record` the Python loops write, so nothing downstream knows
-which core ran; its ``_core_position.c`` reads a record in bulk (:mod:`~tui_search.engine.run.rebuild`).  It runs unless the environment variable ``TUI_SEARCH_CORE`` says ``python``,
-the module was not built (no compiler), or the build is stale (the C source changed since: an
-editable install that was not rebuilt) -- then the Python loops run, and a stale build says so
-on stderr.  ``TUI_SEARCH_CORE=compiled`` makes a missing or stale module an error
-(:class:`CoreUnavailable`).  The reference loop stays the specification: a hypothesis test in
-``tests/engine`` holds both cores equal to it, array for array.
+which core ran; its ``_core_position.c`` reads a record in bulk
+(:mod:`~tui_search.engine.run.rebuild`).  It runs unless the environment variable
+``TUI_SEARCH_CORE`` says ``python``, the module was not built (no compiler), or the build is stale
+(the C source changed since: an editable install that was not rebuilt) -- then the Python loops run,
+and a stale build says so on stderr.  ``TUI_SEARCH_CORE=compiled`` makes a missing or stale module
+an error (:class:`CoreUnavailable`).  The reference loop stays the specification: a hypothesis test
+in ``tests/engine`` holds both cores equal to it, array for array.
 """
 
 from __future__ import annotations

@@ -23,8 +23,8 @@ def general(
 ) -> Iterator[int]:
     """BFS (``lifo`` False) or DFS, graph search, under any visit rule, goal test and corner
     rule: visit on expand (a cell is closed when taken off, and taking off a closed cell is a
-    discarded step), the goal tested on expand, or a corner rule (each cell's moves).  The goal tests compare with -1 (no cell) where they do not
-    apply, so a step tests no choice."""
+    discarded step), the goal tested on expand, or a corner rule (each cell's moves).  The goal
+    tests compare with -1 (no cell) where they do not apply, so a step tests no choice."""
     sem = problem.semantics
     closed = bytearray(problem.walls)
     goal_on_push = problem.goal if problem.goal_test == "generate" else -1

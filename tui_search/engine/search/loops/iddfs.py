@@ -1,9 +1,9 @@
 """Iterative deepening: depth-limited DFS with limits 0, 1, 2, ..., one loop for every choice.
 
 Its record has an iteration per limit, each from a new root event, and each event's depth
-(:class:`~tui_search.engine.search.record.Record`'s ``gen_depth`` and ``iter_*``).  The specification
-is the reference loop (:mod:`tui_search.engine.search.reference`); a hypothesis test in
-``tests/engine`` holds this equal to it, array for array.
+(:class:`~tui_search.engine.search.record.Record`'s ``gen_depth`` and ``iter_*``).  The
+specification is the reference loop (:mod:`tui_search.engine.search.reference`); a hypothesis test
+in ``tests/engine`` holds this equal to it, array for array.
 """
 
 from __future__ import annotations
