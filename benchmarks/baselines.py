@@ -101,7 +101,7 @@ PACK_EVERY = 4096
 def _pack(out: tuple[array, ...], bufs: tuple[list[int], ...]) -> None:
     """Append each list to its array as one ``struct.pack`` (``array.append`` converts
     each int through ``PyArg_Parse``) and empty it."""
-    for arr, buf in zip(out, bufs):
+    for arr, buf in zip(out, bufs, strict=True):
         arr.frombytes(pack(f"{len(buf)}i", *buf))
         buf.clear()
 

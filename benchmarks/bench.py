@@ -15,7 +15,8 @@ gives a "not installed" row.  See benchmarks/README.md for what each row means.
 
 This file is the entry point only: each section lives in its own module of this package
 (core.py, fallback.py, engine.py, choices.py, informed.py, jump.py, step.py, startup.py,
-instructions.py, class_load.py, terrain.py, big_map.py), on the shared table.py, harness.py and maps.py.
+instructions.py, class_load.py, terrain.py, big_map.py), on the shared table.py, harness.py and
+maps.py.
 """
 
 from __future__ import annotations

@@ -13,8 +13,8 @@
 The two DFS rows have a second, *recorded* floor: the same bare DFS plus the least record of
 its steps, the same arrays as the engine's (``bare_dfs_recorded``,
 ``bare_dfs_visit_on_expand_recorded``).  A target below its floor cannot be met by any
-recording loop: the row says so, and its verdict reads "FAIL, target below the floor".  Times are CPU
-seconds of this process (``harness.CPU``): the searches are single-threaded and CPU-bound, and
+recording loop: the row says so, and its verdict reads "FAIL, target below the floor".  Times are
+CPU seconds of this process (``harness.CPU``): the searches are single-threaded and CPU-bound, and
 on a shared machine the wall clock also counts the waits for a CPU.
 """
 

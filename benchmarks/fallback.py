@@ -162,7 +162,8 @@ def _reference_alone(times: dict[str, dict[str, list[float]]], base: str) -> Non
         steps = sum(1 for _ in ReferenceSearch(g, get_algorithm(key), sem))
         ref = time.process_time() - t
         r = ref / med(times[base][case])
+        against = "the engine before the compiled core" if base == "before" else "the Python core"
         add(Row("fallback", f"maze512 {key.upper()} ({steps:,} steps): the reference loop alone, "
-                f"no record, vs {'the engine before the compiled core' if base == 'before' else 'the Python core'}",
+                f"no record, vs {against}",
                 fmt_time(ref), f"{base} {fmt_time(times[base][case])}", r,
                 "report: ≤ 1.5 retires the fast loops"))

@@ -64,7 +64,7 @@ def med(xs: list[float]) -> float:
 def paired(xs: list[float], base: list[float]) -> float:
     """The median of the per-repeat ratios: each repeat's pair ran back to back (interleaved),
     so a slow patch of the shared machine mostly cancels out."""
-    return med([x / b for x, b in zip(xs, base)])
+    return med([x / b for x, b in zip(xs, base, strict=True)])
 
 
 def spread(xs: list[float]) -> float:

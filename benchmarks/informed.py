@@ -34,7 +34,7 @@ def bare_best_first(grid: Grid, astar: bool) -> float:
     Dijkstra.  A diagonal needs both side cells free; a cell is closed when first popped."""
     walls, stride, start, goal, offs = pad(grid)
     moves = []  # (offset, cost, the two side cells' offsets for a diagonal)
-    for off, name in zip(offs, DEFAULT_ORDER):
+    for off, name in zip(offs, DEFAULT_ORDER, strict=True):
         dx, dy = DELTAS[name]
         sides = (dx, dy * stride) if dx and dy else None
         moves.append((off, SQRT2 if sides else 1.0, sides))

@@ -35,7 +35,8 @@ async def _jump_times(app_cls, grid: Grid, algorithm: str = "bfs",
         await fast_press(pilot, "end")
         # Poll without forcing repaints (pilot.pause() would repaint every poll, which the
         # app's own screen-update timer does not): the app paints as it would in a terminal.
-        while app.session.seeking or not app.session.runs or not all(r.at_end for r in app.session.runs):
+        session = app.session
+        while session.seeking or not session.runs or not all(r.at_end for r in session.runs):
             await asyncio.sleep(0.01)
             if time.perf_counter() - t0 > 120:
                 raise TimeoutError("end did not reach the end in 120 s")

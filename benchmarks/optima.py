@@ -7,7 +7,8 @@ relative).  Prints a line per file and the count; exit 1 when any row misses.
     python benchmarks/optima.py --every 50          # one row in 50 (a quick look)
     python benchmarks/optima.py --only arena,den312d --searches astar:octile
     python benchmarks/optima.py --log optima.jsonl  # resumable: rows already in the log are
-                                                    # not run again (the whole check is ~5 CPU-hours)
+                                                    # not run again (the whole check is ~5
+                                                    # CPU-hours)
     python benchmarks/optima.py --log optima.jsonl --reverse  # beside it: from the other end
 
 The maps folder is ``TUI_SEARCH_MAPS`` (default ``/work/shared/maps/movingai``; the test suite

@@ -172,15 +172,17 @@ def bench_step(quick: bool) -> None:
         add(Row("step", f"n/p on maze512 vs trivial app redrawing the same {first} lines",
                 cpu_text(mc, mg), f"trivial {fmt_time(sc)}", r, "≤ 5", r <= 5))
         add(Row("step", "lines drawn afresh per press: trivial 1-line / whole screen / as many as "
-                "maze512 / as many as the tutorial / tutorial / maze512", " / ".join(f"{lines[k]:.1f}" for k in names), "",
-                None, "report"))
-        per_line = [(m / lines["maze"]) / (u / lines["tutorial"]) for m, u in zip(mc, uc)]
+                "maze512 / as many as the tutorial / tutorial / maze512",
+                " / ".join(f"{lines[k]:.1f}" for k in names), "", None, "report"))
+        per_line = [(m / lines["maze"]) / (u / lines["tutorial"])
+                    for m, u in zip(mc, uc, strict=True)]
         r = med(per_line)
         add(Row("step", "n/p on maze512 vs tutorial 6×6, CPU per line drawn",
                 f"{med(mc) / lines['maze'] * 1e6:.0f} µs/line",
                 f"tutorial {med(uc) / lines['tutorial'] * 1e6:.0f} µs/line", r, "≤ 1.3",
                 r <= 1.3))
-        per_line = [(m / lines["maze"]) / (f / lines["trivial-full"]) for m, f in zip(mc, fc)]
+        per_line = [(m / lines["maze"]) / (f / lines["trivial-full"])
+                    for m, f in zip(mc, fc, strict=True)]
         add(Row("step", "n/p on maze512: CPU per line drawn vs the trivial app's whole-screen "
                 "redraw", f"{med(mc) / lines['maze'] * 1e6:.0f} µs/line",
                 f"{med(fc) / lines['trivial-full'] * 1e6:.0f} µs/line", med(per_line),

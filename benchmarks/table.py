@@ -74,7 +74,7 @@ def print_table(rows: list[Row]) -> None:
     line = "  ".join("-" * w for w in widths)
     print(line)
     for i, c in enumerate(cells):
-        print("  ".join(s.ljust(w) for s, w in zip(c, widths)).rstrip())
+        print("  ".join(s.ljust(w) for s, w in zip(c, widths, strict=True)).rstrip())
         if i == 0:
             print(line)
     print(line)

@@ -2,7 +2,8 @@
 ``tui_search/tui/`` reaches the raw record (its arrays are the engine's to lay out, and the
 run's parts keep them consistent), whatever the attribute is called, nor imports the
 record's or the recording's class or module, nor opens the engine-only door to the recording
-(``tui_search.engine.run.recorded.recording_of``, for the engine's own checks and the benchmarks)."""
+(``tui_search.engine.run.recorded.recording_of``, for the engine's own checks and the
+benchmarks)."""
 
 from __future__ import annotations
 
@@ -70,7 +71,8 @@ recording_of(run)
 run._recording
 """
     assert [line for line, _ in record_uses(source)] == list(range(1, 14))
-    fine = "run.steps.expanded_event(k)\nrun.nodes.goal\nfrom tui_search.engine.run.recorded import Run\n"
+    fine = ("run.steps.expanded_event(k)\nrun.nodes.goal\n"
+            "from tui_search.engine.run.recorded import Run\n")
     assert record_uses(fine) == []
 
 

@@ -172,7 +172,8 @@ def test_the_harness_and_the_table(capsys, monkeypatch: pytest.MonkeyPatch) -> N
     assert paired([2.0, 4.0], [1.0, 1.0]) == 3.0 and fmt_ratio(0.0712) == "0.071"
     print_table([Row("engine", "what", "1 ms", "base", 0.5, "≤ 1", True)])
     out = capsys.readouterr().out
-    assert "what" in out and "pass" in out and out.rstrip().endswith("1 pass, 0 fail, 0 reported only")
+    assert "what" in out and "pass" in out
+    assert out.rstrip().endswith("1 pass, 0 fail, 0 reported only")
     below = Row("choices", "slow", "2 s", "base", 3.5, "≤ 3", False, floor=3.2)
     assert below.verdict == "FAIL, target below the floor (3.20)"
     assert Row("choices", "slow", "2 s", "base", 3.5, "≤ 3", False, floor=2.0).verdict == "FAIL"

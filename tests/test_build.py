@@ -22,7 +22,7 @@ from tui_search.engine.search.loops.compiled import CORE_ENV
 
 #: What a build reads: the package and the files beside it the sdist carries.
 BUILD_INPUT = ["tui_search", "maps", "docs", "pyproject.toml", "setup.py", "MANIFEST.in",
-               "README.md"]
+               "README.md", "CONTRIBUTING.md"]
 
 
 def _source(tmp: Path) -> Path:
@@ -84,8 +84,8 @@ def test_the_sdist_and_the_wheel_carry_the_core_and_the_maps(tmp_path: Path) -> 
     (sdist,), (wheel,) = dist.glob("*.tar.gz"), dist.glob("*.whl")
     with tarfile.open(sdist) as tar:
         names = {name.split("/", 1)[1] for name in tar.getnames() if "/" in name}
-    assert {"setup.py", "tui_search/engine/search/_core.c", "tui_search/engine/search/_core_loops.c",
-            "tui_search/engine/search/_core_position.c",
+    assert {"setup.py", "tui_search/engine/search/_core.c",
+            "tui_search/engine/search/_core_loops.c", "tui_search/engine/search/_core_position.c",
             "tui_search/engine/search/_core.h", "maps/tutorial.txt",
             "tui_search/maps/tutorial.txt", "tui_search/tui/app.tcss", "docs/README.md",
             "docs/03-traces.md"} <= names
@@ -95,8 +95,8 @@ def test_the_sdist_and_the_wheel_carry_the_core_and_the_maps(tmp_path: Path) -> 
             "tui_search/lessons/tutorial.md", "tui_search/lessons/choices.md",
             "tui_search/lessons/dfs-longer.txt", "tui_search/exercises/1-bfs-expands-less.toml",
             "tui_search/exercises/2-dfs-not-optimal.toml"} <= names
-    assert any(name.startswith("tui_search/engine/search/_core.") and not name.endswith((".c", ".h"))
-               for name in names)
+    assert any(name.startswith("tui_search/engine/search/_core.")
+               and not name.endswith((".c", ".h")) for name in names)
     bin_dir = _venv(tmp_path)
     _pip_install(bin_dir, wheel)
     _check_the_app_runs(bin_dir, "compiled search core")

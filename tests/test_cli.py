@@ -161,9 +161,11 @@ def test_console_script_headless_exit_codes() -> None:
     exe = Path(sys.executable).with_name("tui-search")
     if not exe.exists():
         pytest.skip("console script not installed in this environment")
-    ok = subprocess.run([str(exe), TUTORIAL, "--headless"], capture_output=True, text=True, check=False)
+    ok = subprocess.run([str(exe), TUTORIAL, "--headless"], capture_output=True, text=True,
+                        check=False)
     assert ok.returncode == 0 and "path found" in ok.stdout
-    bad = subprocess.run([str(exe), "missing.txt", "--headless"], capture_output=True, text=True, check=False)
+    bad = subprocess.run([str(exe), "missing.txt", "--headless"], capture_output=True, text=True,
+                         check=False)
     assert bad.returncode == 2 and "Traceback" not in bad.stderr
 
 

@@ -84,7 +84,8 @@ def test_the_apps_own_trace_of_the_tutorial(capsys, tmp_path: Path) -> None:
       "to check --visit")),
     (["--headless", "-a", "bfs", "--check-trace", "T", "--trace", "U"],
      "tui-search: error: --check-trace checks one search: leave out --trace"),
-    (["--headless", "-a", "bfs", "--check-trace", "T"], "tui-search: T:2:10: not JSON: Expecting value"),
+    (["--headless", "-a", "bfs", "--check-trace", "T"],
+     "tui-search: T:2:10: not JSON: Expecting value"),
     (["--headless", "-a", "bfs", "--check-trace", "missing.jsonl"],
      "tui-search: missing.jsonl: cannot read the trace"),
 ])

@@ -36,8 +36,8 @@ UI_LIBRARIES = ("textual", "rich")
 #: that its text is measured as Textual draws it.
 WIDTHS = "rich.cells"
 #: Held to no Textual whatever their docstrings say: the session model and what it stands on.
-TEXTUAL_FREE = ("tui_search.tui.model.session", "tui_search.tui.model.seek", "tui_search.tui.view.layout",
-                "tui_search.tui.model.quiz")
+TEXTUAL_FREE = ("tui_search.tui.model.session", "tui_search.tui.model.seek",
+                "tui_search.tui.view.layout", "tui_search.tui.model.quiz")
 ENGINE_MAY_NOT = ("tui_search.tui", "tui_search.cli.main", *UI_LIBRARIES)
 WIDGETS_MAY_NOT = ("tui_search.tui.app", "tui_search.tui.screens")
 

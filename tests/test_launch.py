@@ -4,6 +4,7 @@ imported, and while the app is built and draws its first frame, and left as it w
 from __future__ import annotations
 
 import ast
+import functools
 import gc
 import subprocess
 import sys
@@ -98,10 +99,10 @@ def test_the_collector_is_on_again_once_the_first_frame_is_drawn(monkeypatch) ->
     assert seen == [False, True]
 
 
-def test_the_first_frame_imports_no_module_only_a_key_needs() -> None:
-    # The exercise modules, the pseudocode and the class report are imported on first use
-    # (benchmarks/README.md, "startup", session 12): the tutorial's first frame, in a fresh
-    # process, goes without them.
+@functools.cache
+def _first_frame_modules() -> frozenset[str]:
+    """The package's modules loaded once the tutorial's first frame is drawn, in a fresh
+    process."""
     probe = ("import asyncio, sys\n"
              "from tui_search.cli.main import build_app\n"
              "from tui_search.cli.parse import parse_options\n"
@@ -114,35 +115,65 @@ def test_the_first_frame_imports_no_module_only_a_key_needs() -> None:
     out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True,
                          check=False, cwd=_repo())
     assert out.returncode == 0, out.stderr
-    loaded = set(out.stdout.split())
+    return frozenset(out.stdout.split())
+
+
+def test_the_first_frame_imports_no_module_only_a_key_needs() -> None:
+    """The modules only a key or a flag needs are imported where first used
+    (CONTRIBUTING.md, "Start-up"): the tutorial's first frame goes without them."""
+    loaded = _first_frame_modules()
     assert "tui_search.tui.app" in loaded
     late = {"tui_search.engine.course.exercise_file", "tui_search.engine.course.grading",
-            "tui_search.engine.course.condition", "tui_search.engine.search.pseudocode", "tui_search.cli.report",
+            "tui_search.engine.course.condition", "tui_search.engine.search.pseudocode",
+            "tui_search.cli.report",
             # the headless output, the traces' checks and replays, --scen's scenario files
             "tui_search.cli.headless", "tui_search.cli.traces", "tui_search.engine.maps.scenarios",
             # the map generators (ctrl+n, --generate): the help reads recipe_kinds only
-            "tui_search.engine.maps.generate", "tui_search.engine.maps.mazes", "tui_search.engine.util.prng",
-            # saving and opening (session 14), the settings dialog's choices
+            "tui_search.engine.maps.generate", "tui_search.engine.maps.mazes",
+            "tui_search.engine.util.prng",
+            # saving and opening, the settings dialog's choices
             "tui_search.tui.screens.file_commands", "tui_search.tui.screens.save_questions",
             "tui_search.tui.dialogs.settings_choice",
-            # a seek (end, home), the challenge's check (session 14, the split of issue 20)
+            # a seek (end, home), the challenge's check
             "tui_search.tui.model.seek", "tui_search.tui.screens.exercise_check"}
     assert not loaded & late
-    # What the first frame imports defines no dataclass (each compiles its methods at import)
-    # and no NamedTuple under ``from __future__ import annotations`` (typing compiles each
-    # string annotation): ~1 ms and ~5 M instructions of every start (session 14).
+
+
+def classes_slow_to_import(source: str) -> list[str]:
+    """The classes of ``source`` that cost every start that imports it: a dataclass (it
+    compiles its methods at import), and a NamedTuple under ``from __future__ import
+    annotations`` (typing compiles each string annotation)."""
+    tree = ast.parse(source)
+    future = any(isinstance(n, ast.ImportFrom) and n.module == "__future__" for n in tree.body)
     slow = []
-    for name in sorted(loaded):
+    for node in ast.walk(tree):
+        if isinstance(node, ast.ClassDef):
+            named = any(ast.unparse(b).endswith("NamedTuple") for b in node.bases)
+            made = any("dataclass" in ast.unparse(d) for d in node.decorator_list)
+            if made or (named and future):
+                slow.append(node.name)
+    return slow
+
+
+def test_no_module_of_the_first_frame_defines_a_class_slow_to_import() -> None:
+    """No dataclass, and no NamedTuple under ``from __future__ import annotations``, in the
+    modules the tutorial's first frame imports: the rule of CONTRIBUTING.md, "Start-up",
+    which the modules' one-line comments point to."""
+    slow = []
+    for name in sorted(_first_frame_modules()):
         base = Path(_repo()) / name.replace(".", "/")
         found = [p for p in (base.with_suffix(".py"), base / "__init__.py") if p.exists()]
-        if not found:  # the compiled core
-            continue
-        tree = ast.parse(found[0].read_text(encoding="utf-8"))
-        future = any(isinstance(n, ast.ImportFrom) and n.module == "__future__" for n in tree.body)
-        for node in ast.walk(tree):
-            if isinstance(node, ast.ClassDef):
-                named = any(ast.unparse(b).endswith("NamedTuple") for b in node.bases)
-                made = any("dataclass" in ast.unparse(d) for d in node.decorator_list)
-                if made or (named and future):
-                    slow.append(f"{name}.{node.name}")
+        if found:  # else the compiled core
+            source = found[0].read_text(encoding="utf-8")
+            slow += [f"{name}.{cls}" for cls in classes_slow_to_import(source)]
     assert not slow
+
+
+def test_the_import_check_sees_what_it_forbids() -> None:
+    named = "from typing import NamedTuple\nclass P(NamedTuple):\n    x: int\n"
+    future = "from __future__ import annotations\n"
+    assert classes_slow_to_import(future + named) == ["P"]
+    assert classes_slow_to_import(named) == []
+    assert classes_slow_to_import("import dataclasses\n@dataclasses.dataclass\nclass D:\n"
+                                  "    x: int\n") == ["D"]
+    assert classes_slow_to_import(future + "class C:\n    x: int\n") == []

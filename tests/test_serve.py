@@ -316,7 +316,7 @@ def png(width: int, height: int, colour_at) -> bytes:
     for y in range(height):
         line = bytes(c for x in range(width) for c in colour_at(x, y))
         if y == 1:
-            raw += b"\x02" + bytes((a - b) & 255 for a, b in zip(line, prev))
+            raw += b"\x02" + bytes((a - b) & 255 for a, b in zip(line, prev, strict=True))
         else:
             raw += b"\x00" + line
         prev = line

@@ -3,8 +3,9 @@ re-check them when the pin moves).  ``tui_search/`` itself uses Textual's public
 
 Textual has no public way to see the terminal as painted (its compositor's cached lines), to
 let an app handle what is queued and paint without Pilot's idle waits (20 ms or more each,
-which would make a test of hundreds of steps slow) or until nothing is queued, to read the notifications shown, or (for the benchmarks) to count the lines it draws afresh.
-The benchmarks import these too: one module holds every private name outside ``tui_search``.
+which would make a test of hundreds of steps slow) or until nothing is queued, to read the
+notifications shown, or (for the benchmarks) to count the lines it draws afresh.  The benchmarks
+import these too: one module holds every private name outside ``tui_search``.
 """
 
 from __future__ import annotations

@@ -69,8 +69,8 @@ def test_the_whole_text_reader_takes_the_plain_map_and_leaves_the_rest() -> None
     grid = parse_text_map(big)
     assert (grid.width, grid.height, grid.start, grid.goal) == (10, 1002, (0, 0), (9, 1001))
     assert grid.source is not None and grid.source.text() == big
-    for text in ("3333\n3\n33", "S..\n.\n.G\n", "; c\nSG\n", "S\r\nG\n", "S \nG\n", "SG\n\n..\n", "S.\nG\n", "\nSG\n",
-                 "SS\nG.\n", "Sé\nG.\n"):
+    for text in ("3333\n3\n33", "S..\n.\n.G\n", "; c\nSG\n", "S\r\nG\n", "S \nG\n", "SG\n\n..\n",
+                 "S.\nG\n", "\nSG\n", "SS\nG.\n", "Sé\nG.\n"):
         assert not _read_whole(text), text
 
 

@@ -1,8 +1,8 @@
 """One search core: the fast recorded loops equal the reference loop, under every choice.
 
 The reference (:mod:`tui_search.engine.search.reference`) is the definition; every loop of
-:mod:`tui_search.engine.search.loops` must record exactly what it does -- the same events in the same
-order, the same expansions, the same discarded steps, iterations and goal -- on random maps
+:mod:`tui_search.engine.search.loops` must record exactly what it does -- the same events in the
+same order, the same expansions, the same discarded steps, iterations and goal -- on random maps
 under random algorithms and choices.  Then the properties the choices promise.
 """
 
@@ -201,7 +201,7 @@ def test_every_path_is_legal_under_its_rules(grid: Grid, choice) -> None:
     path = out.path
     assert path[0] == grid.start and path[-1] == grid.goal
     assert len(set(path)) == len(path)
-    for (a, b), move in zip(itertools.pairwise(path), out.moves):
+    for (a, b), move in zip(itertools.pairwise(path), out.moves, strict=True):
         assert (move, b) in grid.neighbours(a, sem.order, sem.corners)
 
 

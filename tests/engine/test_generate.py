@@ -142,7 +142,8 @@ def test_recipes_read_back_and_next_seeds() -> None:
 
 
 @pytest.mark.parametrize(("kind", "size", "seed", "message"), [
-    ("blob", "9x9", "1", "unknown kind 'blob' (kinds: random:P, maze, prim, kruskal, division, rooms)"),
+    ("blob", "9x9", "1",
+     "unknown kind 'blob' (kinds: random:P, maze, prim, kruskal, division, rooms)"),
     ("random", "9x9", "1", "random needs its percentage of obstacles: random:P, e.g. random:30"),
     ("random:101", "9x9", "1", "random:101: P must be a number from 0 to 100"),
     ("random:-1", "9x9", "1", "random:-1: P must be a number from 0 to 100"),

@@ -74,7 +74,7 @@ def test_greedy_paths_are_legal_and_never_cheaper(grid, sem, name) -> None:
         assert greedy.cost >= ucs.cost - 1e-9
         path = greedy.path
         assert path[0] == grid.start and path[-1] == grid.goal
-        for (a, b), move in zip(itertools.pairwise(path), greedy.moves):
+        for (a, b), move in zip(itertools.pairwise(path), greedy.moves, strict=True):
             assert (move, b) in grid.neighbours(a, sem.order, sem.corners)
 
 

@@ -193,7 +193,7 @@ def test_an_edit_changes_exactly_the_edited_cells(file, data: st.DataObject) -> 
     after = cell_letters(grid)
     saved = format_text_map(grid)
     assert len(saved) == len(text)
-    differ = {i for i, (a, b) in enumerate(zip(text, saved)) if a != b}
+    differ = {i for i, (a, b) in enumerate(zip(text, saved, strict=True)) if a != b}
     assert differ == {where[c] for c in cells if before[c] != after[c]}
     assert all(saved[where[c]] == after[c] for c in cells)
     assert parse_text_map(saved) == grid
@@ -244,7 +244,7 @@ def test_saving_the_tutorial_keeps_its_comments_byte_for_byte(tmp_path: Path) ->
     grid.source = save_map(grid, path)
     old = (MAPS / "tutorial.txt").read_text().split("\n")
     new = path.read_text().split("\n")
-    changed = [i for i, (a, b) in enumerate(zip(old, new)) if a != b]
+    changed = [i for i, (a, b) in enumerate(zip(old, new, strict=True)) if a != b]
     assert len(old) == len(new) and len(changed) == 2
     assert old[changed[0]].startswith(".#.##.") and new[changed[0]].startswith(".#.##G")
     assert old[changed[1]].startswith("...##G") and new[changed[1]].startswith("...##.")
@@ -267,7 +267,7 @@ def test_saving_a_real_movingai_map_in_place(tmp_path: Path) -> None:
     lines = path.read_text().split("\n")
     assert lines[:4] == original.decode().split("\n")[:4]
     assert lines[4 + tree[1]][tree[0]] == "." and lines[4 + free[1]][free[0]] == "@"
-    differ = [i for i, (a, b) in enumerate(zip(original, path.read_bytes())) if a != b]
+    differ = [i for i, (a, b) in enumerate(zip(original, path.read_bytes(), strict=True)) if a != b]
     assert len(differ) == 2 and len(path.read_bytes()) == len(original)
     # The next save compares with the file as saved: freeing the cell again writes '.'.
     grid.set_blocked(free, False)

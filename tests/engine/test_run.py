@@ -301,7 +301,8 @@ def public_names(obj: object) -> set[str]:
 RUN_NAMES = {
     "grid", "algorithm", "algo", "semantics", "max_steps", "known_lowest",
     "advance", "advance_some", "done", "found", "gave_up", "recorded", "total", "goal_test",
-    "differences", "replayed", "k", "goto", "forward", "backward", "reset", "at_end", "rebuild_pieces",
+    "differences", "replayed", "k", "goto", "forward", "backward", "reset", "at_end",
+    "rebuild_pieces",
     "REBUILD_AFTER", "REBUILD_PIECE", "REBUILD_CELLS",
     "outcome", "outcome_so_far", "path", "moves", "admissible",
     "nodes", "steps", "now",

@@ -57,7 +57,8 @@ def test_a_file_changed_on_disk_is_not_saved_over(tmp_path: Path) -> None:
     path.write_text(theirs)
     error = raised(save_map, grid, path)
     assert isinstance(error, ChangedOnDisk)
-    assert str(error) == f"{path}: cannot save: the file changed on disk since it was opened or saved"
+    assert str(error) == (f"{path}: cannot save: the file changed on disk since it was opened "
+                          "or saved")
     assert path.read_text() == theirs and os.listdir(tmp_path) == ["m.txt"]
     # Overwrite when told to; the next save compares with what was written.
     grid.source = save_map(grid, path, overwrite=True)
@@ -201,7 +202,8 @@ def test_a_symlink_stays_a_link_and_its_target_is_written_beside_it(
     grid.source = save_map(grid, link)
     assert [(os.path.dirname(s), d) for s, d in renames] == [(str(tmp_path / "real"), str(target))]
     assert link.is_symlink() and load_map(target) == grid
-    assert os.listdir(tmp_path / "links") == ["m.txt"] and os.listdir(tmp_path / "real") == ["m.txt"]
+    assert os.listdir(tmp_path / "links") == ["m.txt"]
+    assert os.listdir(tmp_path / "real") == ["m.txt"]
     grid.set_blocked((0, 2), True)
     save_map(grid, link)  # the stamp names the target: the second save is no "change on disk"
     assert load_map(target) == grid
@@ -259,7 +261,8 @@ def test_hard_links_are_written_in_place_only_when_asked(tmp_path: Path) -> None
     grid.set_blocked((0, 1), True)
     error = raised(save_map, grid, path)
     assert isinstance(error, HardLinked)
-    assert str(error) == f"{path}: cannot save: the file has 2 hard links, which replacing it would split"
+    assert str(error) == (f"{path}: cannot save: the file has 2 hard links, which replacing it "
+                          "would split")
     assert snapshot(path) == before and sorted(os.listdir(tmp_path)) == ["also.txt", "m.txt"]
     grid.source = save_map(grid, path, in_place=True)
     assert path.stat().st_ino == before[4] and path.stat().st_nlink == 2

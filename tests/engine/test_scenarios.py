@@ -251,8 +251,9 @@ _ODD = ["-1", "x", "", " 6", "1234567890", "0001234567", "12345678901", "1e2", "
 _NUMBER = st.sampled_from(_PLAIN * 6 + _ODD)
 _NAME = st.sampled_from(["a.map"] * 6 + ["", " a.map", "a.map ", "sub dir/a.map", "6"])
 _LENGTH = st.sampled_from(["3", "9.41421356", "0.5"] * 4 + ["1e2", "nan", "-1", "x", "5."])
+# now and then a field fewer or more
 _ROW = st.tuples(_NUMBER, _NAME, *[_NUMBER] * 6, _LENGTH, st.integers(-1, 1)).map(
-    lambda t: [*t[:8 + min(t[9], 0) + 1], *['1'] * max(t[9], 0)])  # now and then a field fewer or more
+    lambda t: [*t[:8 + min(t[9], 0) + 1], *['1'] * max(t[9], 0)])
 
 
 @given(st.lists(_ROW, max_size=6), st.sampled_from(["\t"] * 4 + [" ", "\t\t"]))

@@ -181,7 +181,7 @@ def assert_valid_path(grid: Grid, result: dict, corners: str = "always") -> None
     path = [tuple(c) for c in result["path"]]
     assert path[0] == grid.start and path[-1] == grid.goal
     assert len(set(path)) == len(path), "a cell twice on the path"
-    for (a, b), move in zip(itertools.pairwise(path), result["moves"]):
+    for (a, b), move in zip(itertools.pairwise(path), result["moves"], strict=True):
         legal = {c: d for d, c in grid.neighbours(a, corners=corners)}
         assert legal.get(b) == move
     assert result["length"] == len(path) - 1

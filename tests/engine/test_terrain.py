@@ -134,7 +134,7 @@ def test_greedy_paths_are_legal_and_never_cheaper_than_ucs(problem, name: str) -
     if out.found:
         path = out.path
         assert path[0] == grid.start and path[-1] == grid.goal
-        for (a, b), move in zip(itertools.pairwise(path), out.moves):
+        for (a, b), move in zip(itertools.pairwise(path), out.moves, strict=True):
             assert (move, b) in grid.neighbours(a, sem.order, sem.corners)
         assert out.cost >= ucs.cost - 1e-9
 

@@ -348,7 +348,7 @@ async def test_end_on_a_big_map_runs_in_slices_and_keys_are_still_answered(
     assert seen and seen[0][0], "the cursor key waited for the whole seek"
     assert seen[0][1].startswith("Computing the search…")
     # Several slices, each recording one chunk, the last one the end of the search.
-    gains = [b - a for a, b in zip([first, *recorded], recorded)]
+    gains = [b - a for a, b in zip([first, *recorded], recorded, strict=False)]
     assert len(gains) > 3 and all(0 < gain <= CHUNK for gain in gains)
     assert recorded[-1] == run.total
 

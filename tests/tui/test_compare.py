@@ -93,7 +93,7 @@ async def test_the_table_equals_the_headless_comparison(capsys) -> None:
         await pilot.press("end")
         await pilot.pause()
         rows = [line.replace(" *", "").split() for line in table.text_lines[1:4]]
-        for row, run in zip(rows, headless):
+        for row, run in zip(rows, headless, strict=True):
             _label, found, moves, cost, expanded, generated, peak = row
             assert found == "yes" and int(moves) == run["length"]
             assert float(cost) == round(run["cost"], 3)
@@ -215,9 +215,11 @@ async def test_end_on_a_big_map_computes_each_run_in_slices_and_esc_stops(monkey
         post_keys(app, "end", "escape")
         await wait_until(pilot, lambda: recorded and not app.session.seeking)
         await pilot.pause()  # a slice that esc failed to stop would be recorded by now
-        assert len(recorded) == 1 and not app.session.runs[0].at_end and "esc" not in app.session.note
+        assert len(recorded) == 1 and not app.session.runs[0].at_end
+        assert "esc" not in app.session.note
         post_keys(app, "end")
-        await wait_until(pilot, lambda: app.session.seeking and "IDDFS: computing" in app.session.note)
+        await wait_until(pilot,
+                         lambda: app.session.seeking and "IDDFS: computing" in app.session.note)
         await wait_until(pilot, lambda: not app.session.seeking, seconds=60)
         assert all(r.at_end and r.found for r in app.session.runs) and app.session.note == ""
         assert len(set(recorded)) > 3  # in slices
@@ -289,7 +291,8 @@ async def test_keys_pressed_at_once_act_on_the_new_comparison() -> None:
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:
         post_keys(app, "c", "n", "n")
-        await wait_until(pilot, lambda: all(p.is_mounted for p in app.main.panes) and app.main.panes)
+        await wait_until(pilot,
+                         lambda: all(p.is_mounted for p in app.main.panes) and app.main.panes)
         await pilot.pause()
         assert app.session.spec == "bfs,dfs" and steps(app) == [2, 2]
         post_keys(app, "3", "4")
@@ -366,7 +369,8 @@ async def test_the_palette_offers_comparisons_and_a_bad_one_is_said_not_crashed(
         names = [name for name, _, _ in SearchCommands(app.screen).commands()]
         assert "Compare: A* · A* (manhattan)" in names and "Compare: BFS · DFS" in names
         await app.main.run_action("show_compare('astar,astar:manhattan')")
-        await wait_until(pilot, lambda: all(p.is_mounted for p in app.main.panes) and app.main.panes)
+        await wait_until(pilot,
+                         lambda: all(p.is_mounted for p in app.main.panes) and app.main.panes)
         assert [p.label for p in app.main.panes] == ["A*", "A* (manhattan)"]
         await app.main.run_action("show_compare('bfs,nope')")
         await pilot.pause()

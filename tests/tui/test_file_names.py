@@ -73,7 +73,8 @@ async def test_the_open_prompt_refuses_such_names_in_one_line(tmp_path: Path) ->
         for name, error in [("n" * 300, "the name is too long (at most 255 bytes between slashes)"),
                             ("a\x00b", "a file name cannot hold a NUL character (\\x00)"),
                             (str(tmp_path / "x[/]y.txt"), f"{tmp_path}/x[/]y.txt: no such file"),
-                            (str(tmp_path / "\x1b[2J.txt"), f"{tmp_path}/\\x1b[2J.txt: no such file")]:
+                            (str(tmp_path / "\x1b[2J.txt"),
+                             f"{tmp_path}/\\x1b[2J.txt: no such file")]:
             await type_name(pilot, name)
             assert isinstance(app.screen, OpenMapScreen) and app.screen.error == error
 

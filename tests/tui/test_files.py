@@ -37,7 +37,7 @@ def app_on(path: Path) -> SearchApp:
 
 def differing(a: bytes, b: bytes) -> list[int]:
     assert len(a) == len(b)
-    return [i for i, (x, y) in enumerate(zip(a, b)) if x != y]
+    return [i for i, (x, y) in enumerate(zip(a, b, strict=True)) if x != y]
 
 
 async def type_name(pilot, name: str) -> None:
@@ -284,7 +284,8 @@ async def test_opening_a_map_over_unsaved_edits_asks_first(tmp_path: Path) -> No
         question = await screen_shown(pilot, ConfirmQuitScreen)
         assert "Open no-path.txt anyway?" in str(question.query_one("Label").content)
         await answer(pilot, ConfirmQuitScreen, "n")  # cancel
-        assert app.session.map_path == path and app.session.dirty and app.session.grid.is_blocked((0, 1))
+        assert app.session.map_path == path and app.session.dirty
+        assert app.session.grid.is_blocked((0, 1))
         await pilot.press("ctrl+o")
         await type_name(pilot, str(other))
         await answer(pilot, ConfirmQuitScreen, "s")  # save, then open
@@ -311,7 +312,8 @@ async def test_replace_map_is_what_an_exercise_calls(tmp_path: Path) -> None:
     async with app.run_test(size=SIZE) as pilot:
         app.main.files.replace_map(exercise, None, "Exercise 2")
         await pilot.pause()
-        assert app.session.grid is exercise and app.session.map_path is None  # nothing unsaved: no question
+        # nothing unsaved: no question
+        assert app.session.grid is exercise and app.session.map_path is None
         await pilot.press("down", "o")  # the cursor is on the start (1,1): blocks (1,2)
         await wait_until(pilot, lambda: app.session.dirty)
         app.main.files.replace_map(load_map(TUTORIAL), None, "the tutorial")

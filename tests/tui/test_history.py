@@ -97,7 +97,8 @@ def test_an_edit_makes_new_runs_and_undo_does_too_with_the_cursor_on_the_cell() 
     session = tutorial()
     session.step(forward=True)
     session.move_cursor((1, 2))
-    assert session.edits.toggle_wall(session.cursor) is None and session.title == "tutorial.txt · modified"
+    assert session.edits.toggle_wall(session.cursor) is None
+    assert session.title == "tutorial.txt · modified"
     session.step(forward=True)
     session.move_cursor((4, 4))
     old = session.runs[0]
@@ -105,7 +106,8 @@ def test_an_edit_makes_new_runs_and_undo_does_too_with_the_cursor_on_the_cell() 
     assert session.cursor == (1, 2) and not session.grid.is_blocked((1, 2))
     assert session.runs[0] is not old and session.runs[0].k == 0
     assert session.runs[0].grid == session.grid and not session.dirty
-    assert session.edits.undo(redo=True) is None and session.grid.is_blocked((1, 2)) and session.dirty
+    assert session.edits.undo(redo=True) is None
+    assert session.grid.is_blocked((1, 2)) and session.dirty
 
 
 def test_undoing_a_moved_start_puts_it_back_and_the_cursor_on_it() -> None:

@@ -104,7 +104,8 @@ TUTORIAL_CLAIMS: list[Callable[[Seen], bool]] = [
 def test_every_section_of_the_tutorial_lesson_shows_what_it_says() -> None:
     seen = walk("tutorial")
     assert len(seen) == len(TUTORIAL_CLAIMS)
-    failed = [i + 1 for i, (claim, s) in enumerate(zip(TUTORIAL_CLAIMS, seen)) if not claim(s)]
+    failed = [i + 1 for i, (claim, s) in enumerate(zip(TUTORIAL_CLAIMS, seen, strict=True))
+              if not claim(s)]
     assert failed == []
     assert not any(s.code for s in seen)
 
@@ -157,7 +158,8 @@ CHOICES_CLAIMS: list[Callable[[Seen], bool]] = [
 def test_every_section_of_the_choices_lesson_has_the_code_panel_and_its_choice() -> None:
     seen = walk("choices")
     assert len(seen) == len(CHOICES_CLAIMS) and all(s.code for s in seen)
-    failed = [i + 1 for i, (claim, s) in enumerate(zip(CHOICES_CLAIMS, seen)) if not claim(s)]
+    failed = [i + 1 for i, (claim, s) in enumerate(zip(CHOICES_CLAIMS, seen, strict=True))
+              if not claim(s)]
     assert failed == []
 
 

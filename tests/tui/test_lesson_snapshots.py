@@ -40,8 +40,9 @@ def test_the_tutorial_lesson_at_section_2_at_80_by_24(snap_compare) -> None:
 
 def test_dfs_visit_on_expand_at_a_discarded_step_with_the_code_panel(snap_compare) -> None:
     """DFS, visit on expand, on tests/data/lessons/discard.txt at step 4: (3,3) comes off the
-    stack already expanded (struck out, "discarded"); the Code panel lights line 4 (the pop) and line 5, 'if node is
-    already visited: discard it, go on', with ▶; the narration says it was discarded."""
+    stack already expanded (struck out, "discarded"); the Code panel lights line 4 (the pop) and
+    line 5, 'if node is already visited: discard it, go on', with ▶; the narration says it was
+    discarded."""
     path = LESSONS / "discard.txt"
     app = SearchApp(load_map(path), path=path, algorithm="dfs",
                     semantics=Semantics(visit="expand"))

@@ -506,7 +506,7 @@ async def test_a_step_repaints_a_scrollbar_only_where_its_thumb_moves() -> None:
             panel.show(run)
             await settle(pilot)  # handled and painted, without pilot.pause()'s idle wait
             after = scrollbar_cells(bar)
-            changed += sum(a != b for a, b in zip(after, before))
+            changed += sum(a != b for a, b in zip(after, before, strict=True))
             assert (bar.window_virtual_size == panel.virtual_size.height
                     == 1 + run.now.frontier_len())
             assert bar.window_size == panel.scrollable_content_region.height

@@ -138,7 +138,8 @@ async def test_home_from_far_moves_in_slices_too(monkeypatch: pytest.MonkeyPatch
         monkeypatch.setattr(playback, "SLICE_SECONDS", 0.0)
         monkeypatch.setattr(playback, "SLICE_PAUSE", 3600.0)
         await pilot.press("home")
-        assert app.session.seeking and run.k == total and stats(app)[1].startswith("Moving to step 0… ")
+        assert app.session.seeking and run.k == total
+        assert stats(app)[1].startswith("Moving to step 0… ")
         await pilot.press("escape")
         assert not app.session.seeking and run.k == total and run.at_end
         monkeypatch.setattr(playback, "SLICE_PAUSE", 0.01)
@@ -159,7 +160,8 @@ async def test_keys_do_nothing_behind_the_too_small_message() -> None:
         await pilot.press("n", "n", "n", "end", "space", "o", "right", "3", "z", "question_mark")
         await pilot.pause()
         run = app.session.run
-        assert run is not None and run.k == 0 and not app.session.playing and not app.session.seeking
+        assert run is not None and run.k == 0
+        assert not app.session.playing and not app.session.seeking
         assert app.session.run is run and app.session.algorithm == "bfs"  # no new run either
         assert app.session.grid == walls and not app.session.dirty and app.session.cursor == (0, 0)
         assert not app.query_one(GridView).overview and len(app.screen_stack) == 1
@@ -284,7 +286,8 @@ async def test_space_at_the_last_step_plays_again_from_step_0() -> None:
         total = app.session.run.k
         await pilot.press("space")
         assert app.session.playing and app.session.run.k < total
-        assert app.main.check_action("play", ()) is False and app.main.check_action("pause", ()) is True
+        assert app.main.check_action("play", ()) is False
+        assert app.main.check_action("pause", ()) is True
 
 
 @sync

@@ -100,7 +100,8 @@ async def test_a_click_on_the_front_entry_picks_it_and_enter_answers_right() -> 
         panel = app.query_one(FrontierPanel)
         assert panel.border_subtitle == "+ just added · click picks"
         await click_entry(pilot, answer)
-        assert app.session.cursor == answer and app.main.views[0].cursor == answer  # the pick is the cursor
+        # the pick is the cursor
+        assert app.session.cursor == answer and app.main.views[0].cursor == answer
         assert app.session.run.k == 2  # a click picks; it does not answer
         assert panel.entry_cell(panel.pick_line()) == answer
         assert panel.line_band(panel.pick_line()) is not None  # the picked line is marked

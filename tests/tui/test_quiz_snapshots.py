@@ -19,7 +19,8 @@ def test_the_quiz_with_an_entry_picked(snap_compare) -> None:
 
     async def pick(pilot) -> None:
         await pilot.press("n", "n", "i")
-        await pilot.click(pilot.app.main.panes[0].frontier, offset=(4, 3))  # border, count, 1st entry
+        # past the border and the count: the first entry
+        await pilot.click(pilot.app.main.panes[0].frontier, offset=(4, 3))
         await pilot.pause()
 
     assert snap_compare(tutorial_app(), run_before=pick, terminal_size=(100, 30))

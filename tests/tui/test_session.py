@@ -86,7 +86,8 @@ def test_an_edit_marks_the_map_and_restarts_every_run() -> None:
     session.step(forward=True)
     old = list(session.runs)
     session.move_cursor((1, 2))
-    assert session.edits.toggle_wall(session.cursor) is None and session.grid.is_blocked((1, 2)) and session.dirty
+    assert session.edits.toggle_wall(session.cursor) is None
+    assert session.grid.is_blocked((1, 2)) and session.dirty
     assert steps(session) == [0, 0] and not set(session.runs) & set(old)
     assert session.title == "tutorial.txt · modified"
     refusal = session.edits.place("start", session.cursor)  # on the obstacle just made
@@ -138,7 +139,8 @@ def test_a_seek_says_how_far_it_is_and_stop_abandons_it() -> None:
     session.start_seek(to_end=True)
     assert session.seek is not None
     progress = session.seek.work(seconds=0.0)
-    assert progress is not None and progress.startswith("IDDFS: computing the search…") and progress.endswith("esc to stop")
+    assert progress is not None and progress.startswith("IDDFS: computing the search…")
+    assert progress.endswith("esc to stop")
     session.note = progress
     session.stop()
     assert session.seek is None and session.note == "" and not session.at_end()

@@ -49,10 +49,9 @@ def test_tree_search_greys_out_the_visit_rule(snap_compare) -> None:
 
 def test_a_discarded_step(snap_compare) -> None:
     """BFS with visit on expand at its first discarded step: the queue's first line marks
-    under its count the entry thrown away (✗ … discarded, struck through), the tree marks it '◀ discarded';
-    the status line counts
-    'discarded 1' and says 'visit on expand'; the narration says the cell was taken off again
-    and discarded."""
+    under its count the entry thrown away (✗ … discarded, struck through), the tree marks it
+    '◀ discarded'; the status line counts 'discarded 1' and says 'visit on expand'; the narration
+    says the cell was taken off again and discarded."""
     from tests.tui.test_app import TUTORIAL
     from tui_search.engine.maps.load import load_map
     from tui_search.engine.run.recorded import Run, recording_of

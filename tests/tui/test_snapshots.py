@@ -49,7 +49,8 @@ def test_dfs_after_three_steps(snap_compare) -> None:
 
 def test_bfs_at_the_end_with_the_path(snap_compare) -> None:
     """BFS at its last step: the path ◆ from S to G (7 moves, cost 8.66) over the blue
-    expanded cells; narration 'Goal (5,2) found from (5,1)' with the tutorial's bound; n, space greyed."""
+    expanded cells; narration 'Goal (5,2) found from (5,1)' with the tutorial's bound; n, space
+    greyed."""
     assert snap_compare(tutorial_app(), press=["end"], terminal_size=SIZE)
 
 

@@ -198,7 +198,7 @@ async def test_a_save_writes_the_painted_digits_and_keeps_every_other_line(tmp_p
         await pilot.press("m", "ctrl+s")
         await wait_until(pilot, lambda: not app.session.dirty)
     after = path.read_text().split("\n")
-    changed = [i for i, (a, b) in enumerate(zip(before, after)) if a != b]
+    changed = [i for i, (a, b) in enumerate(zip(before, after, strict=True)) if a != b]
     assert len(after) == len(before) and changed == [4, 5]  # the two map rows, nothing else
     assert after[4] == ".........3" and after[5] == ".S.m3mm..."
     assert load_map(path).cost((4, 1)) == 3.0
@@ -222,7 +222,8 @@ def test_the_brush_refuses_an_obstacle_and_undo_of_an_obstacle_keeps_the_terrain
     session.edits.brush = 9.0
     assert session.edits.paint_cost(session.cursor) == "(3,1) already costs 9"
     session.edits.toggle_wall(session.cursor)  # an obstacle on the mud
-    assert session.edits.paint_cost(session.cursor) == "Cannot paint terrain on an obstacle at (3,1)"
+    assert (session.edits.paint_cost(session.cursor)
+            == "Cannot paint terrain on an obstacle at (3,1)")
     session.edits.undo()
     assert session.grid == load_map(MUD)  # the mud is back under it
 

@@ -168,9 +168,9 @@ def _cropped(panel: LinePanel, rows: list[str]) -> list[str]:
     wrap to its width, so none is scrolled sideways or cut at the edge, even between two
     words (which the words seen cannot tell)."""
     top = round(panel.scroll_y)
+    shown = (panel.line_text(top + y) for y in range(len(rows)))
     return [f"{type(panel).__name__} shows {row.strip()!r} of {line!r}"
-            for row, line in zip(rows, (panel.line_text(top + y) for y in range(len(rows))))
-            if row.rstrip() != line]
+            for row, line in zip(rows, shown, strict=True) if row.rstrip() != line]
 
 
 def problems(app: SearchApp, screen: list[str], lesson: list[str]) -> list[str]:

@@ -318,7 +318,8 @@ def seen(colour: Color, vision) -> tuple[float, float, float]:
         return c / 12.92 if c <= 0.04045 else ((c + 0.055) / 1.055) ** 2.4
 
     rgb = [linear(c) for c in colour.get_truecolor()]
-    r, g, b = (max(0.0, min(1.0, sum(m * c for m, c in zip(row, rgb)))) for row in vision)
+    r, g, b = (max(0.0, min(1.0, sum(m * c for m, c in zip(row, rgb, strict=True))))
+               for row in vision)
     x, y, z = (0.4124 * r + 0.3576 * g + 0.1805 * b) / 0.9505, \
         0.2126 * r + 0.7152 * g + 0.0722 * b, (0.0193 * r + 0.1192 * g + 0.9505 * b) / 1.089
 

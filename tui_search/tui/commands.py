@@ -1,6 +1,6 @@
 """The app's own commands in Textual's command palette (``ctrl+p``), beside Textual's: each
-algorithm of the registry, each theme, each cost of the terrain brush, and the actions a key does (settings, save, save as,
-open, overview, zoom, cell labels, help).
+algorithm of the registry, each theme, each cost of the terrain brush, and the actions a key does
+(settings, save, save as, open, overview, zoom, cell labels, help).
 
 A command runs the same action as its key (the main screen's ``run_action``), so the palette
 can never do
@@ -68,7 +68,8 @@ class SearchCommands(Provider):
             found.append((f"Theme: {spec.title}", partial(setattr, app, "theme", spec.name),
                           f"{spec.description} · t cycles the themes{now}"))
         for n in BUILT_IN_FILES:
-            found.append((f"Exercise {n}: {built_in_exercise(n).text}", partial(main.run_action, f"show_exercise({n})"),
+            found.append((f"Exercise {n}: {built_in_exercise(n).text}",
+                          partial(main.run_action, f"show_exercise({n})"),
                           "the tutorial's exercise, checked live as you edit (key x cycles)"))
         found.append(("Exercise: off", partial(main.run_action, "show_exercise(0)"),
                       "hide the challenge panel (key x)"))
@@ -78,7 +79,8 @@ class SearchCommands(Provider):
                           partial(main.run_action, f"show_compare({spec_text!r})"),
                           f"{why} (side by side, in lockstep; key c toggles)"))
         for cost in (*BRUSHES, 0.0):
-            found.append((f"Terrain brush: {brush_name(cost) if cost else 'off'}", partial(main.run_action, f"brush({cost})"),
+            found.append((f"Terrain brush: {brush_name(cost) if cost else 'off'}",
+                          partial(main.run_action, f"brush({cost})"),
                           "m or a mouse drag paints it (key b cycles the brush)"))
         bindings = {b.action: b for b in Binding.make_bindings(KEYS)}
         for action, name in ACTIONS.items():

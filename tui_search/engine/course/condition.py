@@ -284,7 +284,7 @@ def unparse(node: Node) -> str:
     if isinstance(node, Compare):
         above = _PRECEDENCE["compare"] + 1  # (a < b) < c is not the chain a < b < c
         parts = [_wrapped(node.first, above)]
-        for op, operand in zip(node.ops, node.rest):
+        for op, operand in zip(node.ops, node.rest, strict=True):
             parts += [op, _wrapped(operand, above)]
         return " ".join(parts)
     level = _PRECEDENCE[node.op]  # left to right: the right operand binds more tightly
@@ -350,7 +350,7 @@ def evaluate(node: Node, figures: Mapping[str, Value | None]) -> Value:
         return not _truth(evaluate(node.operand, figures))
     if isinstance(node, Compare):
         left = float(evaluate(node.first, figures))
-        for op, operand in zip(node.ops, node.rest):
+        for op, operand in zip(node.ops, node.rest, strict=True):
             right = float(evaluate(operand, figures))
             if not _compare(op, left, right):
                 return False

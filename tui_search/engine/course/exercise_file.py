@@ -219,9 +219,10 @@ def parse_exercise(text: str, path: str, number: int | None = None) -> Exercise:
     if grid.start is None or grid.goal is None:
         raise reader.error("generate" if "generate" in data else "map",
                            "the exercise's map needs a start (S) and a goal (G)")
+    searches = tuple(zip(labels, contenders, strict=False))  # as before: not checked equal
     return Exercise(path, number, reader.string("title"), reader.string("text"), grid,
-                    tuple(zip(labels, contenders)), frozenset(edits), condition, solved,
-                    fields, shown, reader.string("hint", ""), other)
+                    searches, frozenset(edits), condition, solved, fields, shown,
+                    reader.string("hint", ""), other)
 
 
 def load_exercise(path: str | Path, number: int | None = None) -> Exercise:

@@ -26,8 +26,8 @@ from tui_search.engine.run.recorded import MAX_STEPS, Run
 from tui_search.engine.search.outcome import Outcome
 
 #: Maps bigger than this are not checked at each edit by the app (two whole searches an edit,
-#: and a mouse stroke is an edit a cell; a BFS and a DFS of 10,000 cells: ~20 ms) but in a
-#: thread once the edits pause.
+#: and a mouse stroke is an edit a cell: benchmarks/README.md, "limits") but in a thread once
+#: the edits pause.
 LIVE_CELLS = 10_000
 _PATH_FIGURES = ("moves", "cost")
 
@@ -92,11 +92,11 @@ def figure_phrase(field: str, runs: list[tuple[str, Outcome]]) -> str:
     if field in ("expanded", "generated"):
         values = [getattr(o, field) for o in outs]
         return (f"{labels[0]} {field} {values[0]:,} nodes"
-                + "".join(f", {la} {v:,}" for la, v in zip(labels[1:], values[1:])))
+                + "".join(f", {la} {v:,}" for la, v in zip(labels[1:], values[1:], strict=True)))
     if field == "max_frontier":
         return (f"{_possessive(labels[0])} frontier peaked at {outs[0].max_frontier:,}"
                 + "".join(f", {_possessive(la)} {o.max_frontier:,}"
-                          for la, o in zip(labels[1:], outs[1:])))
+                          for la, o in zip(labels[1:], outs[1:], strict=True)))
     if field == "found":
         missing = [la for la, o in runs if not o.found]
         if not missing:
@@ -114,7 +114,8 @@ def figure_phrase(field: str, runs: list[tuple[str, Outcome]]) -> str:
         return f"{paths} have {values[0]} moves" if unit else f"{paths} cost {values[0]}"
     first = (f"{_possessive(labels[0])} path has {values[0]} moves" if unit
              else f"{_possessive(labels[0])} path costs {values[0]}")
-    return first + "".join(f", {_possessive(la)} {v}" for la, v in zip(labels[1:], values[1:]))
+    return first + "".join(f", {_possessive(la)} {v}"
+                           for la, v in zip(labels[1:], values[1:], strict=True))
 
 
 def changes(grid: Grid, base: Grid) -> list[str]:

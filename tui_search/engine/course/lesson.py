@@ -128,11 +128,7 @@ def _value(key: str, text: str, base: Path) -> object:
             raise ValueError(f"use {KEYS[key]}")
         return None if text == "default" else text
     if key == "step":
-        if text == "end":
-            return None
-        if not text.isdigit():
-            raise ValueError("use a step number (0, 1, ...) or end")
-        return int(text)
+        return _step(text)
     if key == "exercise":
         if text not in ("1", "2", "off"):
             raise ValueError(f"use {KEYS[key]}")
@@ -144,7 +140,21 @@ def _value(key: str, text: str, base: Path) -> object:
             return None
         parse_compare(text)
         return ",".join(p.strip() for p in text.split(","))
-    path = (base / text).resolve()  # map
+    return _map_path(text, base)
+
+
+def _step(text: str) -> int | None:
+    """``step: N`` or ``step: end`` (None)."""
+    if text == "end":
+        return None
+    if not text.isdigit():
+        raise ValueError("use a step number (0, 1, ...) or end")
+    return int(text)
+
+
+def _map_path(text: str, base: Path) -> Path:
+    """``map: FILE``, relative to the lesson's folder: a map that loads."""
+    path = (base / text).resolve()
     try:
         load_map(path)
     except MapError as exc:

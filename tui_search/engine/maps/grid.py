@@ -4,9 +4,9 @@ and their order.
 Coordinates follow MovingAI: ``x`` is the column counted from 0 at the left, ``y`` the row
 counted from 0 at the top.  A move costs its length (1 straight, sqrt(2) diagonal) times the
 cost of the cell it enters; a map whose every cell costs 1 keeps no costs at all (``costs``
-is None), so the plain maps pay nothing for terrain.  The grid is a plain, mutable value: editing it never touches a
-search, because every search copies what it needs when it starts (search state lives in the
-run, never on the grid).  A copy shares what is worked out from the cells (the padded arrays
+is None), so the plain maps pay nothing for terrain.  The grid is a plain, mutable value: editing it
+never touches a search, because every search copies what it needs when it starts (search state lives
+in the run, never on the grid).  A copy shares what is worked out from the cells (the padded arrays
 of :mod:`~tui_search.engine.search.problem`: :meth:`Grid.derived`) and its costs, until either grid
 is edited: a search started on an unedited map pays neither again.
 """
@@ -88,7 +88,7 @@ class Grid:
     def __init__(self, width: int, height: int, blocked: bytearray | None = None,
                  start: Cell | None = None, goal: Cell | None = None,
                  source: MapSource | None = None, costs: array[float] | None = None) -> None:
-        # Written out, not a dataclass: one costs ~0.7 ms of every start (session 14).
+        # Written out, not a dataclass (compiled at import: benchmarks/README.md, "startup").
         if width < 1 or height < 1:
             raise ValueError("a grid needs at least one row and one column")
         if blocked is None:
@@ -234,8 +234,9 @@ class Grid:
         old, self.costs[i] = self.costs[i], value
         self._lowest = None
         self._derived = {}
-        # The lowest free cost follows a free cell's edit with no scan of the map (~5 ms on
-        # 512x512), unless the cell was the lowest and is dearer now (another may be as low).
+        # The lowest free cost follows a free cell's edit with no scan of the map
+        # (benchmarks/README.md, "terrain"), unless the cell was the lowest and is dearer now
+        # (another may be as low).
         if known is not None and not self.blocked[i] and (value <= known or old != known):
             self._lowest = self.costs, min(known, value)
         if value == 1.0:

@@ -3,7 +3,8 @@
 A file whose first non-empty line is ``type ...`` is read as a MovingAI map
 (:mod:`tui_search.engine.maps.movingai`), anything else as our text format
 (:mod:`tui_search.engine.maps.text`).  Problems are :class:`~tui_search.engine.maps.read.MapError`;
-saving is :mod:`tui_search.engine.maps.write`, scenario files :mod:`tui_search.engine.maps.scenarios`.
+saving is :mod:`tui_search.engine.maps.write`, scenario files
+:mod:`tui_search.engine.maps.scenarios`.
 """
 
 from __future__ import annotations

@@ -50,45 +50,7 @@ def parse_movingai_map(text: str, path: str = "<map>", terrain: Terrain | None =
     bom, raw = split_lines(text)  # kept in the grid's source (the text itself, not a copy)
     lines = _Stripped(raw)  # each line without trailing whitespace, made when read
     n = len(lines)
-    i = 0
-    while i < n and not lines[i]:
-        i += 1
-    if i == n or lines[i].split()[0].lower() != "type":
-        raise MapError(path, "expected 'type octile' on the first line", i + 1 if i < n else 1)
-    i += 1
-    header: dict[str, tuple[int, int]] = {}  # name -> (value, line)
-    map_line = 0
-    while i < n:
-        number, line = i + 1, lines[i]
-        i += 1
-        if not line:
-            continue
-        words = line.split()
-        key = words[0].lower()
-        if key == "map" and len(words) == 1:
-            map_line = number
-            break
-        if key in ("height", "width"):
-            if key in header:
-                raise MapError(path, f"{key} is given twice", number)
-            if len(words) != 2 or not NUMBER.fullmatch(words[1]):
-                raise MapError(path, f"expected '{key} N', found {quoted(line)}", number)
-            if len(words[1].lstrip("0")) > MAX_DIGITS:
-                raise MapError(path, f"{key} is too large: {quoted(words[1], 12)}", number)
-            value = int(words[1])
-            if value < 1:
-                raise MapError(path, f"{key} must be at least 1", number)
-            header[key] = (value, number)
-            continue
-        raise MapError(path, f"expected 'height', 'width' or 'map', found {quoted(line)}", number)
-    if not map_line:
-        last_text = max((k + 1 for k in range(n) if lines[k]), default=1)
-        raise MapError(path, "the header has no 'map' line", last_text)
-    for key in ("height", "width"):
-        if key not in header:
-            raise MapError(path, f"the header has no {key}", map_line)
-    height, height_line = header["height"]
-    width = header["width"][0]
+    i, width, height, height_line = _read_header(lines, path)
     last = n
     while last > i and not lines[last - 1]:
         last -= 1  # trailing blank lines (a final newline, or more) are not rows
@@ -112,6 +74,57 @@ def parse_movingai_map(text: str, path: str = "<map>", terrain: Terrain | None =
         )
     source = MapSource(MOVINGAI, raw, range(i, last), width, bom, terrain=table.pairs())
     return Grid(width, height, blocked, source=source, costs=costs)
+
+
+def _read_header(lines: _Stripped, path: str) -> tuple[int, int, int, int]:
+    """The header: ``type``, then ``height`` and ``width`` in any order, then ``map``, blank
+    lines allowed.  The index of the line after ``map``, the width, the height and the
+    height's line number."""
+    n = len(lines)
+    i = 0
+    while i < n and not lines[i]:
+        i += 1
+    if i == n or lines[i].split()[0].lower() != "type":
+        raise MapError(path, "expected 'type octile' on the first line", i + 1 if i < n else 1)
+    i += 1
+    header: dict[str, tuple[int, int]] = {}  # name -> (value, line)
+    map_line = 0
+    while i < n:
+        number, line = i + 1, lines[i]
+        i += 1
+        if not line:
+            continue
+        words = line.split()
+        key = words[0].lower()
+        if key == "map" and len(words) == 1:
+            map_line = number
+            break
+        if key in ("height", "width"):
+            if key in header:
+                raise MapError(path, f"{key} is given twice", number)
+            header[key] = (_header_number(key, words, line, number, path), number)
+            continue
+        raise MapError(path, f"expected 'height', 'width' or 'map', found {quoted(line)}", number)
+    if not map_line:
+        last_text = max((k + 1 for k in range(n) if lines[k]), default=1)
+        raise MapError(path, "the header has no 'map' line", last_text)
+    for key in ("height", "width"):
+        if key not in header:
+            raise MapError(path, f"the header has no {key}", map_line)
+    height, height_line = header["height"]
+    return i, header["width"][0], height, height_line
+
+
+def _header_number(key: str, words: list[str], line: str, number: int, path: str) -> int:
+    """The value of the header's line ``key N`` (``words``: ``line``'s, line ``number``)."""
+    if len(words) != 2 or not NUMBER.fullmatch(words[1]):
+        raise MapError(path, f"expected '{key} N', found {quoted(line)}", number)
+    if len(words[1].lstrip("0")) > MAX_DIGITS:
+        raise MapError(path, f"{key} is too large: {quoted(words[1], 12)}", number)
+    value = int(words[1])
+    if value < 1:
+        raise MapError(path, f"{key} must be at least 1", number)
+    return value
 
 
 def movingai_rows(grid: Grid, old_rows: list[str] | None = None,

@@ -2,8 +2,7 @@
 largest side.  The command line's help reads them without importing the generators
 (:mod:`~tui_search.engine.maps.generate`, which uses them)."""
 
-# No `from __future__ import annotations`: typing compiles a NamedTuple's string
-# annotations one by one at import (~5 M instructions of every start in all: session 14).
+# No future import: CONTRIBUTING.md, "Start-up".
 from typing import NamedTuple
 
 __all__ = ["DEFAULT_SEED", "DEFAULT_SIZE", "KINDS", "MAX_SIDE", "Kind"]

@@ -77,7 +77,7 @@ def _read_rows(text: str, path: str, only: int | None = None) -> tuple[list[Scen
     fast = _PLAIN_ROW.fullmatch
     for number, line in enumerate(lines[1:], start=2):
         m = fast(line)
-        if m is not None:  # the common row, checked at once (12,000 rows: 95 -> ~35 ms)
+        if m is not None:  # the common row, checked at once (benchmarks/README.md, "startup")
             b, name, w, h, sx, sy, gx, gy, length = m.groups()
             width, height = int(w), int(h)
             start, goal = (int(sx), int(sy)), (int(gx), int(gy))

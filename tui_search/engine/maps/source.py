@@ -7,8 +7,7 @@ characters of edited cells changed, and refuses to write over a file that change
 since it was read or saved (:class:`FileStamp`).
 """
 
-# No `from __future__ import annotations`: typing compiles a NamedTuple's string
-# annotations one by one at import (~5 M instructions of every start in all: session 14).
+# No future import: CONTRIBUTING.md, "Start-up".
 from array import array
 from collections.abc import Iterable, Iterator, Sequence
 from itertools import accumulate, islice, repeat
@@ -26,7 +25,7 @@ class FileStamp(NamedTuple):
     CRC differs has been changed by someone else (the time alone only says it was touched).
     The CRC catches every edit of up to 32 bits in a row and any other but one in 2**32 (of
     the same size): a guard against someone's edit, not an adversary.  Not SHA-256: it is
-    taken as the map loads, and ``hashlib`` loads OpenSSL (~6 M instructions of the start;
+    taken as the map loads, and ``hashlib`` loads OpenSSL (benchmarks/README.md, "startup";
     ``zlib`` is imported by Textual already)."""
 
     path: str
@@ -41,8 +40,8 @@ class FileStamp(NamedTuple):
 class Lines(Sequence[str]):
     """A text's lines split on ``\\n`` only, each as written, kept as the one string and where
     each line ends.  A map of millions of short rows then costs 4 bytes a line instead of a
-    string object each (about 50 bytes): the 64 MB map of ``..`` rows takes about 5x its size
-    to read, not 28x.  A line is made when asked for."""
+    string object each: a few times the file's size to read, not tens of times
+    (benchmarks/README.md, "big_map").  A line is made when asked for."""
 
     __slots__ = ("_ends", "text")
 
@@ -97,7 +96,7 @@ class Lines(Sequence[str]):
         if isinstance(other, Lines):
             return self.text == other.text
         if isinstance(other, (tuple, list)):
-            return len(other) == len(self) and all(a == b for a, b in zip(self, other))
+            return len(other) == len(self) and all(a == b for a, b in zip(self, other, strict=True))
         return NotImplemented
 
     def __hash__(self) -> int:

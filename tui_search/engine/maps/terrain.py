@@ -10,8 +10,7 @@ digits ``1``-``9`` cost themselves.  Every problem is a one-line
 :class:`~tui_search.engine.maps.read.MapError` naming the table's line.
 """
 
-# No `from __future__ import annotations`: typing compiles a NamedTuple's string
-# annotations one by one at import (~5 M instructions of every start in all: session 14).
+# No future import: CONTRIBUTING.md, "Start-up".
 import math
 import re
 from array import array
@@ -194,7 +193,7 @@ def write_row(blocked: bytes, costs: Iterable[float], old: str | None,
     obstacle and :func:`char_for` its cost for a free cell (``.`` when no character has that
     cost: :func:`lost_costs` says so)."""
     out = []
-    for x, (wall_here, cost) in enumerate(zip(blocked, costs)):
+    for x, (wall_here, cost) in enumerate(zip(blocked, costs, strict=True)):
         meaning = None if wall_here else cost
         was = old[x] if old is not None else None
         if was is not None and was not in endpoints and was in chars and chars[was] == meaning:

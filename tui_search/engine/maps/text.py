@@ -77,24 +77,7 @@ def parse_text_map(
             width = len(line)
         elif len(line) != width:
             raise MapError(path, f"row has {len(line)} cells, expected {width}", number)
-        for letter, what in (("S", "start"), ("G", "goal")):
-            x = line.find(letter)
-            if x < 0:
-                continue
-            if letter not in seen_at:
-                cells[letter] = (x, height)
-                seen_at[letter] = (number, x + 1)
-                x = line.find(letter, x + 1)
-                if x < 0:
-                    continue
-            first_line, first_col = seen_at[letter]
-            raise MapError(
-                path,
-                f"a second {what} {letter!r} (the first is at line {first_line}, "
-                f"column {first_col})",
-                number,
-                x + 1,
-            )
+        _note_ends(line, number, height, cells, seen_at, path)
         costs = cells_of.add_row(line, blocked, costs)
         row_lines.append(number - 1)
         height += 1
@@ -110,6 +93,30 @@ def parse_text_map(
     return Grid(width, height, blocked, cells.get("S"), cells.get("G"), source, costs)
 
 
+def _note_ends(line: str, number: int, y: int, cells: dict[str, Cell],
+               seen_at: dict[str, tuple[int, int]], path: str) -> None:
+    """The start and the goal on row ``y`` (``line``, line ``number`` of the file) put in
+    ``cells``, and where each was in ``seen_at``; a second one is an error naming the first."""
+    for letter, what in (("S", "start"), ("G", "goal")):
+        x = line.find(letter)
+        if x < 0:
+            continue
+        if letter not in seen_at:
+            cells[letter] = (x, y)
+            seen_at[letter] = (number, x + 1)
+            x = line.find(letter, x + 1)
+            if x < 0:
+                continue
+        first_line, first_col = seen_at[letter]
+        raise MapError(
+            path,
+            f"a second {what} {letter!r} (the first is at line {first_line}, "
+            f"column {first_col})",
+            number,
+            x + 1,
+        )
+
+
 _Plain = tuple[int, int, bytearray, dict[str, Cell], "array[float] | None"]
 
 
@@ -119,8 +126,8 @@ def _plain_map(raw: Lines, cells_of: Alphabet, path: str, *, need_start: bool,
     ASCII cells, all as wide, from the first line, no comment, ``\\r`` or blank line but at
     the end, at most one ``S`` and one ``G``.  None for any other text, which the line by line
     reader takes (and names its first problem).  A map of millions of rows then reads in
-    about a second, not a minute.  Gives the same grid as the line by line reader (a
-    hypothesis test checks it)."""
+    a few passes, not line by line (benchmarks/README.md, "big_map").  Gives the same grid
+    as the line by line reader (a hypothesis test checks it)."""
     body = raw.text.rstrip("\n")
     width = body.find("\n")
     width = len(body) if width < 0 else width

@@ -54,7 +54,7 @@ def _updated(source: MapSource, grid: Grid) -> MapSource:
     new = (text_rows(grid, old, chars) if source.kind == TEXT
            else movingai_rows(grid, old, chars))
     lines = list(source.lines)
-    for i, before, after in zip(source.rows, old, new):
+    for i, before, after in zip(source.rows, old, new, strict=True):
         if before != after:
             lines[i] = after + lines[i][w:]
     return source._replace(lines=tuple(lines))
@@ -107,7 +107,7 @@ def save_notes(grid: Grid, kind: str) -> list[str]:
                              f"under the {what} is not kept")
     if grid.costs is not None:
         source = grid.source if grid.source is not None and grid.source.kind == kind else None
-        free = [c for c, b in zip(grid.costs, grid.blocked) if not b]
+        free = [c for c, b in zip(grid.costs, grid.blocked, strict=True) if not b]
         lost = lost_costs(free, characters(grid, kind, source), "SG" if kind == TEXT else "")
         if lost:
             costs = ", ".join(f"{c:g}" for c in lost)
@@ -207,7 +207,8 @@ def save_map(
     try:
         parse_map_text(text, target, terrain=given_table(grid, kind))
     except MapError as err:
-        raise WouldNotLoad(target, f"cannot save: the file would not open again: {err.message}")
+        raise WouldNotLoad(target,
+                           f"cannot save: the file would not open again: {err.message}") from err
     data = text.encode("utf-8")
     if len(data) > MAX_MAP_BYTES:  # (a .map's header, or costs written out, can add bytes)
         raise WouldNotLoad(target, f"cannot save: the file would not open again: "

@@ -1,12 +1,11 @@
 """The three named query facets of a recorded run: its generation events (``run.nodes``), its
 steps (``run.steps``) and the state at its position (``run.now``).
 
-A :class:`~tui_search.engine.run.recorded.Run` answers about itself (progress, position, outcome); what
-it knows of one event, one step or one cell at step ``k`` it answers through these, so its own
-surface stays small.  Each facet only *names* queries of the run's parts (the recording, the
-event tree, the position): its names are the parts' methods bound once, so asking through a
-facet costs no forwarding call.  A hot loop still fetches the facet (or the method) once,
-outside the loop.
+A :class:`~tui_search.engine.run.recorded.Run` answers about itself (progress, position, outcome);
+what it knows of one event, one step or one cell at step ``k`` it answers through these, so its own
+surface stays small.  Each facet only *names* queries of the run's parts (the recording, the event
+tree, the position): its names are the parts' methods bound once, so asking through a facet costs no
+forwarding call.  A hot loop still fetches the facet (or the method) once, outside the loop.
 """
 
 from __future__ import annotations

@@ -59,7 +59,8 @@ class FifoFrontier:
         """Units of work :meth:`rebuild_pieces` takes (for a progress figure)."""
         return expanded
 
-    def rebuild_pieces(self, root: int, end: int, expanded: Iterable[Sequence[int]]) -> Iterator[int]:
+    def rebuild_pieces(self, root: int, end: int, expanded: Iterable[Sequence[int]]
+                       ) -> Iterator[int]:
         """Become the queue after the pieces of ``expanded`` were taken off the events
         ``root .. end - 1``, yielding the work done by each piece."""
         n = 0
@@ -98,7 +99,8 @@ class LifoFrontier:
     def rebuild_work(root: int, end: int, expanded: int) -> int:
         return expanded + (end - root)
 
-    def rebuild_pieces(self, root: int, end: int, expanded: Iterable[Sequence[int]]) -> Iterator[int]:
+    def rebuild_pieces(self, root: int, end: int, expanded: Iterable[Sequence[int]]
+                       ) -> Iterator[int]:
         """Become the stack after the pieces of ``expanded`` were taken off the events
         ``root .. end - 1``: the events not taken off, in generation order (every event is
         pushed in that order and only the top is popped)."""
@@ -137,7 +139,8 @@ class PriorityFrontier:
     event's g from its generating step's, which is then looked up once a step."""
 
     def __init__(self, keys: Callable[[Sequence[int]], list[float]]) -> None:
-        # imported with the first priority queue, not at start-up (~2 ms)
+        # imported with the first priority queue, not at start-up (benchmarks/README.md,
+        # "startup")
         from sortedcontainers import SortedList
 
         self._sorted = SortedList
@@ -150,11 +153,11 @@ class PriorityFrontier:
     def forward(self, g: int, succ: range) -> None:
         _, first = self.queue.pop(0)
         assert first == g, "the recorded step does not match the priority queue"
-        self.queue.update(zip(self.keys(succ), succ))
+        self.queue.update(zip(self.keys(succ), succ, strict=True))
 
     def backward(self, g: int, succ: range) -> None:
         queue = self.queue
-        for entry in zip(self.keys(succ), succ):
+        for entry in zip(self.keys(succ), succ, strict=True):
             queue.remove(entry)
         queue.add((self.keys((g,))[0], g))
 
@@ -162,14 +165,15 @@ class PriorityFrontier:
     def rebuild_work(root: int, end: int, expanded: int) -> int:
         return expanded + 2 * (end - root)
 
-    def rebuild_pieces(self, root: int, end: int, expanded: Iterable[Sequence[int]]) -> Iterator[int]:
+    def rebuild_pieces(self, root: int, end: int, expanded: Iterable[Sequence[int]]
+                       ) -> Iterator[int]:
         """Become the queue after the pieces of ``expanded`` were taken off the events
         ``root .. end - 1``: the events not taken off, sorted by priority."""
         keys = self.keys
         entries: list[tuple[float, int]] = []
 
         def take(open_: list[int]) -> None:
-            entries.extend(zip(keys(open_), open_))
+            entries.extend(zip(keys(open_), open_, strict=True))
 
         yield from _open_events(root, end, expanded, take)
         self.queue = self._sorted(entries)
@@ -224,7 +228,8 @@ class AddedFrontier:
     def rebuild_work(root: int, end: int, expanded: int) -> int:
         return expanded + (end - root)
 
-    def rebuild_pieces(self, root: int, end: int, expanded: Iterable[Sequence[int]]) -> Iterator[int]:
+    def rebuild_pieces(self, root: int, end: int, expanded: Iterable[Sequence[int]]
+                       ) -> Iterator[int]:
         """Become the events of ``root .. end - 1`` not in the pieces of ``expanded`` (an
         event taken off more than once counted absent for each time after the first)."""
         events: list[int] = []

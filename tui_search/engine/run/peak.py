@@ -62,7 +62,7 @@ class PeakTable:
         core = selected()[0]
         # One iteration (every search but iterative deepening): a block past step 0 is one
         # call of the compiled core's scan, which reads 4,096 sizes faster than _max_size
-        # decides which of its pieces to read (a full DFS of maze512: 32 blocks, ~0.5 ms).
+        # decides which of its pieces to read (benchmarks/README.md, "core").
         scan = core.largest_size if core is not None and len(rec.iter_first_step) == 1 else None
         first = rec.iter_first_step[0]
         c = rec.iter_root[0] - first + 1
@@ -82,10 +82,9 @@ class PeakTable:
         ``a .. b - 1`` exceeds ``step_end[b - 1] - a - c``: a piece of :attr:`PEAK_PIECE`
         steps whose bound does not beat the largest so far is not read (a DFS's stack
         draining, a frontier below its old peak); the others are read by
-        :func:`_largest_size`, a piece at once.  Counted with callgrind on open 256², this
-        took a recorded run's cost above its loop (nearly all of it this table) from 0.12x
-        a bare BFS to 0.02x (a full DFS traversal) and from 0.55x to 0.18x (BFS visit on
-        expand, 257,000 steps); pieces of 256 or 512 steps, or none, cost more."""
+        :func:`_largest_size`, a piece at once.  Nearly all a recorded run cost above its
+        loop was this table, and this cut most of it (benchmarks/README.md, "choices");
+        pieces of 256 or 512 steps, or none, cost more."""
         rec = self._rec
         it = self._iteration_of(lo)
         first = rec.iter_first_step[it]
@@ -143,8 +142,9 @@ def _packed_constants(n: int, width: int) -> tuple[int, int, int, int]:
 
 def _largest_size(ends: array[int], lo: int, hi: int, c: int) -> int:
     """``max(ends[j] - j - c for j in range(lo, hi))`` with every size >= 0, in whole-int
-    arithmetic, which CPython runs in C a machine word at a time: ~20 ns a step instead of
-    ~100 for a ``max`` over a ``map`` of ``operator.sub`` (which makes three ints a step).
+    arithmetic, which CPython runs in C a machine word at a time: a fraction of a ``max``
+    over a ``map`` of ``operator.sub``, which makes three ints a step (benchmarks/README.md,
+    "choices").
 
     The ends are packed into one int, a field of ``width`` bits a step; subtracting
     ``j + c`` from every field at once leaves the sizes there (no field borrows: none is

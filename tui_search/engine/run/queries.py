@@ -1,7 +1,7 @@
 """What a record says of its generation events, wherever a run stands: each event's cell,
 parent and move, the chain from the root, the path and the outcome -- the tree's and the
-answer's queries of a recorded run.  A :class:`~tui_search.engine.run.recorded.Run` has one, over its
-:class:`~tui_search.engine.run.recording.Recording`."""
+answer's queries of a recorded run.  A :class:`~tui_search.engine.run.recorded.Run` has one,
+over its :class:`~tui_search.engine.run.recording.Recording`."""
 
 from __future__ import annotations
 
@@ -139,7 +139,7 @@ class EventTree:
         if self._algo.priority == "g":
             return costs
         priority, cell = self._priority, self.gen_cell
-        return [priority(g, *cell(e)) for g, e in zip(costs, events)]
+        return [priority(g, *cell(e)) for g, e in zip(costs, events, strict=True)]
 
     def pushed_again(self, g: int) -> int:
         """The next event of event ``g``'s cell, -1 when none was recorded.  A cost-ordered

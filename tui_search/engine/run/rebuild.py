@@ -8,8 +8,7 @@ compiled core runs, its C twins (``_core_position.c``) do them; the Python ones 
 fallback and the specification (``tests/engine/test_rebuild.py`` holds the two equal).
 """
 
-# No `from __future__ import annotations`: typing compiles a NamedTuple's string
-# annotations one by one at import (~5 M instructions of every start in all: session 14).
+# No future import: CONTRIBUTING.md, "Start-up".
 from array import array
 from collections.abc import Callable, Sequence
 from itertools import compress

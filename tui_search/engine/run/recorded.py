@@ -51,8 +51,8 @@ class Run:
     #: Events one piece of :meth:`rebuild_pieces` handles: a few milliseconds of work.
     REBUILD_PIECE = 1 << 14
 
-    #: Counters one piece of :meth:`rebuild_pieces` allocates (zeroing 2 MB: a millisecond or
-    #: two; a 4096x4096 map's counters are 67 MB each, which took a tenth of a second in one go).
+    #: Counters one piece of :meth:`rebuild_pieces` allocates (2 MB; a 4096x4096 map's counters
+    #: are 67 MB each, too long to zero in one go: benchmarks/README.md, "jump").
     REBUILD_CELLS = 1 << 19
 
     def __init__(

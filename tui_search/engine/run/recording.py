@@ -7,8 +7,7 @@ one else reads the record's arrays but the run's other parts, the tree of
 It knows the steps, never where the run is.
 """
 
-# No `from __future__ import annotations`: typing compiles a NamedTuple's string
-# annotations one by one at import (~5 M instructions of every start in all: session 14).
+# No future import: CONTRIBUTING.md, "Start-up".
 from array import array
 from bisect import bisect_right
 from collections.abc import Generator, Iterator
@@ -27,8 +26,8 @@ from tui_search.engine.util.frozen import Frozen
 class Step(Frozen):
     """One step: the node taken off the frontier and the successors it added, in order (none
     for a discarded step, which took off a cell already expanded).  A :class:`Frozen` value,
-    not a frozen slotted dataclass (~3.6 M instructions of every start), nor a NamedTuple
-    (its field ``index`` would hide ``tuple.index``)."""
+    not a frozen slotted dataclass (which every start would pay for: benchmarks/README.md,
+    "startup"), nor a NamedTuple (its field ``index`` would hide ``tuple.index``)."""
 
     __slots__ = ("depth_limit", "discarded", "found_goal", "index", "node", "successors")
     _FIELDS = ("index", "node", "successors", "depth_limit", "found_goal", "discarded")
@@ -48,8 +47,9 @@ class Step(Frozen):
 
 
 #: The default step limit: expansions recorded before a run gives up (iterative deepening
-#: on a 512x512 maze takes ~102 million steps; 20 million take ~400 MB).  A whole number of
-#: chunks, so a run stops exactly there; smaller limits (at most a chunk) are exact too.
+#: on a big maze would record far more than memory holds: benchmarks/README.md, "limits").
+#: A whole number of chunks, so a run stops exactly there; smaller limits (at most a chunk)
+#: are exact too.
 MAX_STEPS = 5000 * CHUNK
 
 
@@ -239,7 +239,8 @@ class Recording:
         rec = self.rec
         step_exp, step_end = rec.step_exp, rec.step_end
         it = self.iteration_of(first)
-        if first <= last and it and rec.iter_first_step[it] == first:  # skip the new iteration's root
+        # skip the new iteration's root
+        if first <= last and it and rec.iter_first_step[it] == first:
             yield step_exp[first], range(step_end[first - 1] + 1, step_end[first])
             first += 1
         for j in range(first, last + 1):

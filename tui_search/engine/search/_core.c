@@ -32,7 +32,7 @@ static int append_bytes(PyObject *arr, Buf *b) {  /* the chunk's entries into th
 /* Steps run between two appends to the record: the scratch buffers stay this small (a few
  * hundred kB, in cache), so a long run's memory is touched once, in the record's own arrays,
  * not first in a scratch buffer as large as the run and then again in the copy (that
- * doubled the page faults: a BFS of open 1024x1024 spent 5 ms of its 30 in them). */
+ * doubled the page faults: benchmarks/README.md, "core"). */
 #define SLICE 65536
 
 static long run_slice(Search *s, Py_ssize_t chunk) {  /* PAUSED, NO_GOAL, the goal's event, -3 */

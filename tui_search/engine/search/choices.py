@@ -45,9 +45,9 @@ EXPLAIN: dict[str, str] = {
 
 class Semantics(Frozen):
     """Every choice that changes what a search does, with the tutorial's defaults.  A
-    :class:`~tui_search.engine.util.frozen.Frozen` value (not a frozen dataclass: ~1 ms of
-    every start); :meth:`~tui_search.engine.util.frozen.Frozen.replace` makes a
-    changed copy."""
+    :class:`~tui_search.engine.util.frozen.Frozen` value (not a frozen dataclass, which every
+    start would pay for: benchmarks/README.md, "startup");
+    :meth:`~tui_search.engine.util.frozen.Frozen.replace` makes a changed copy."""
 
     __slots__ = _FIELDS = ("order", "corners", "visit", "goal_test", "tree_search", "heuristic")
 

@@ -6,8 +6,7 @@ and the tutorial's sentence.
 Plain Python, no UI.
 """
 
-# No `from __future__ import annotations`: typing compiles a NamedTuple's string
-# annotations one by one at import (~5 M instructions of every start in all: session 14).
+# No future import: CONTRIBUTING.md, "Start-up".
 from collections.abc import Sequence
 from typing import NamedTuple
 
@@ -78,7 +77,7 @@ def comparison(labels: list[str], outcomes: list[Outcome], marks: bool = True) -
     cheapest = min(costs) if costs else None
     return [TableRow(label, o, marks and o.expanded == fewest, marks and o.cost is not None
                      and cheapest is not None and o.cost <= cheapest + 1e-9)
-            for label, o in zip(labels, outcomes)]
+            for label, o in zip(labels, outcomes, strict=True)]
 
 
 #: The comparison table's columns.
@@ -114,7 +113,8 @@ def table_cells(rows: list[TableRow], steps: Sequence[int | None] | None = None
 def table_lines(cells: list[tuple[str, ...]]) -> list[str]:
     """The cells in aligned columns, a line a row."""
     widths = [max(len(c[i]) for c in cells) for i in range(len(cells[0]))]
-    return ["  ".join(c.ljust(w) for c, w in zip(row, widths)).rstrip() for row in cells]
+    return ["  ".join(c.ljust(w) for c, w in zip(row, widths, strict=True)).rstrip()
+            for row in cells]
 
 
 def summary_sentence(rows: list[TableRow], terrain: bool = False) -> str:

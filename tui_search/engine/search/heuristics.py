@@ -14,8 +14,9 @@ path.  A heuristic estimates the cost from a cell to the goal from the two offse
 
 On a map with terrain every estimate is multiplied by the map's lowest cell cost
 (:func:`scaled`): no move costs less than its length times that, so the estimates stay
-admissible (and consistent).  The recorded loops and the reference loop call the same function, so a priority is the same
-float whichever loop computed it (the frontier's order depends on it, ties and all).
+admissible (and consistent).  The recorded loops and the reference loop call the same function, so a
+priority is the same float whichever loop computed it (the frontier's order depends on it, ties and
+all).
 """
 
 from __future__ import annotations
@@ -115,5 +116,5 @@ def priority_of(priority: str, heuristic: Heuristic, goal: tuple[int, int]
     return lambda g, x, y: g + heuristic(abs(x - gx), abs(y - gy))
 
 
-__all__ = ["CHEAPER_BY", "DEFAULT_HEURISTIC", "EXPLAIN_HEURISTIC", "HEURISTICS", "INADMISSIBLE", "admissible",
-           "heuristic_for", "priority_of", "scaled"]
+__all__ = ["CHEAPER_BY", "DEFAULT_HEURISTIC", "EXPLAIN_HEURISTIC", "HEURISTICS", "INADMISSIBLE",
+           "admissible", "heuristic_for", "priority_of", "scaled"]

@@ -1,11 +1,11 @@
 """What a whole search came to: the path and the counts, however the search was run.
 
-A recorded :class:`~tui_search.engine.run.recorded.Run` and the streaming reference search (the headless
-command line) both end in an :class:`Outcome`; the command line turns it into its text and JSON.
+A recorded :class:`~tui_search.engine.run.recorded.Run` and the streaming reference search (the
+headless command line) both end in an :class:`Outcome`; the command line turns it into its text and
+JSON.
 """
 
-# No `from __future__ import annotations`: typing compiles a NamedTuple's string
-# annotations one by one at import (~5 M instructions of every start in all: session 14).
+# No future import: CONTRIBUTING.md, "Start-up".
 from typing import NamedTuple
 
 from tui_search.engine.maps.grid import Cell, Grid

@@ -2,8 +2,8 @@
 
 Cells are indices into a copy of the map padded with a border of walls, so the loops need no
 bounds checks: ``p = (y + 1) * (width + 2) + (x + 1)``.  The move order and the corner rule live
-here too, so no loop of :mod:`tui_search.engine.search.loops` tests corners: a cell's legal moves are
-``moves[mask[p]]``.  A map with terrain gives its costs padded alike (``terrain[p]``; None on a
+here too, so no loop of :mod:`tui_search.engine.search.loops` tests corners: a cell's legal moves
+are ``moves[mask[p]]``.  A map with terrain gives its costs padded alike (``terrain[p]``; None on a
 map whose every cell costs 1, which the loops then never read) and its lowest cell cost.
 """
 
@@ -49,13 +49,13 @@ class Problem:
         self.goal_test = goal_test or semantics.goal_test or "generate"
         order = semantics.order
         offsets = [DELTAS[name][1] * stride + DELTAS[name][0] for name in order]
-        self.dir_of_offset = {off: DIR_CODE[name] for name, off in zip(order, offsets)}
+        self.dir_of_offset = {off: DIR_CODE[name] for name, off in zip(order, offsets, strict=True)}
         self.offsets = offsets
 
     @cached_property
     def _masks(self) -> tuple[bytes, list[tuple[int, ...]]]:
         """``mask`` and ``moves``, worked out when a loop first asks: the corner masks cost
-        a pass over the whole map (~20 ms on 1024x1024), which a loop that checks corners
+        a pass over the whole map (benchmarks/README.md, "core"), which a loop that checks corners
         itself (the priority queue's, which may expand a handful of cells) never pays."""
         order, offsets = self.semantics.order, self.offsets
         if corner_free(self.semantics):

@@ -93,6 +93,35 @@ def _marks(tree: bool, weighted: bool, iterative: bool, on_expand: bool
     return "mark START visited", "mark s visited"
 
 
+def _successor_lines(algorithm: Algorithm, semantics: Semantics, move_cost: str,
+                     marks: tuple[str, str] | None, goal_test: str
+                     ) -> list[tuple[str, int, str]]:
+    """The loop over a node's successors, as ``(kind, indent, text)``: the checks that skip
+    one, its push, what the push records and the goal test on push."""
+    tree, weighted = semantics.tree_search, algorithm.weighted
+    out = [("for", 1, f"for each successor s of node, moves in order {','.join(semantics.order)}:"),
+           ("blocked", 2, "if s is off the map or an obstacle: skip s")]
+    if semantics.corners in _CORNER_WORDS:
+        out.append(("corner", 2, _CORNER_WORDS[semantics.corners]))
+    if weighted:
+        out.append(("cost", 2, f"g ← node.g + {move_cost}"))
+    if tree:
+        out.append(("on_path", 2, "if s is on the path from START to node: skip s"))
+    elif weighted:
+        out.append(("reached", 2, "if best g[s] ≤ g: reached as cheaply, skip s"))
+    elif algorithm.iterative:
+        out.append(("reached", 2, "if s was reached at depth ≤ node's + 1: skip s"))
+    else:
+        out.append(("reached", 2, "if s is already visited: skip s"))
+    by = PRIORITIES.get(algorithm.priority or "", "")
+    out.append(("push", 2, algorithm.frontier.push_words(by)))
+    if marks:
+        out.append(("mark_succ", 2, marks[1]))
+    if goal_test == "generate":
+        out.append(("goal_succ", 2, "goal test: if s is the goal, return its path"))
+    return out
+
+
 @lru_cache(maxsize=64)
 def _generate(algorithm: Algorithm, semantics: Semantics, move_cost: str) -> Pseudocode:
     lines: list[CodeLine] = []
@@ -132,25 +161,8 @@ def _generate(algorithm: Algorithm, semantics: Semantics, move_cost: str) -> Pse
         add("goal_node", 1, "goal test: if node is the goal, return its path")
     if iterative:
         add("cutoff", 1, "if node's depth = the depth limit: cut off, go on")
-    add("for", 1, f"for each successor s of node, moves in order {','.join(semantics.order)}:")
-    add("blocked", 2, "if s is off the map or an obstacle: skip s")
-    if semantics.corners in _CORNER_WORDS:
-        add("corner", 2, _CORNER_WORDS[semantics.corners])
-    if weighted:
-        add("cost", 2, f"g ← node.g + {move_cost}")
-    if tree:
-        add("on_path", 2, "if s is on the path from START to node: skip s")
-    elif weighted:
-        add("reached", 2, "if best g[s] ≤ g: reached as cheaply, skip s")
-    elif iterative:
-        add("reached", 2, "if s was reached at depth ≤ node's + 1: skip s")
-    else:
-        add("reached", 2, "if s is already visited: skip s")
-    add("push", 2, frontier.push_words(by))
-    if marks:
-        add("mark_succ", 2, marks[1])
-    if goal_test == "generate":
-        add("goal_succ", 2, "goal test: if s is the goal, return its path")
+    for kind, indent, text in _successor_lines(algorithm, semantics, move_cost, marks, goal_test):
+        add(kind, indent, text)
     if iterative:
         add("fail", 0, "if nothing was cut off at the limit: return no path")
     else:

@@ -2,7 +2,8 @@
 
 Every loop of :mod:`tui_search.engine.search.loops` writes one :class:`Record` (8 to 16 bytes an
 expansion), and :class:`tui_search.engine.run.recording.Recording` and the run read "the state at
-step k" from it; the reference loop (:mod:`tui_search.engine.search.reference`) writes the same arrays.
+step k" from it; the reference loop (:mod:`tui_search.engine.search.reference`) writes the same
+arrays.
 """
 
 from __future__ import annotations
@@ -40,7 +41,7 @@ class Record:
               "iter_root", "iter_limit", "discarded", "done", "goal_gen", "gave_up")
 
     def __init__(self) -> None:
-        # Written out, not a dataclass: one costs ~0.7 ms of every start (session 14).
+        # Written out, not a dataclass (compiled at import: benchmarks/README.md, "startup").
         self.gen_node: array[int] = array("i")
         self.step_end: array[int] = array("i", [1])
         self.step_exp: array[int] | _InOrder = _InOrder()

@@ -25,11 +25,12 @@ which entries taken off are thrown away (:class:`Visited`, :class:`Cheapest`,
 BFS takes the oldest entry, DFS the newest.  Uniform-cost, greedy best-first and A* take the
 entry of lowest priority (g, h or g + h; ties in the order pushed).  A move costs its length
 (1 straight, sqrt(2) diagonally) times the cost of the cell it enters (1 on a plain map), and
-the estimates h are scaled by the map's lowest cell cost; a cell is pushed again whenever it is reached with a lower g than its
-best so far (lower by more than ``CHEAPER_BY``, 1e-9: the floats' rounding is no cheaper path)
-(even after it was expanded: it is *re-opened*), and an entry taken off with a g above its
-cell's best is *stale*: a discarded step.  Tree search keeps no best g: a successor is skipped
-only when it is on the node's own path.  The goal is tested on expansion unless told otherwise.
+the estimates h are scaled by the map's lowest cell cost; a cell is pushed again whenever it is
+reached with a lower g than its best so far (lower by more than ``CHEAPER_BY``, 1e-9: the floats'
+rounding is no cheaper path) (even after it was expanded: it is *re-opened*), and an entry taken off
+with a g above its cell's best is *stale*: a discarded step.  Tree search keeps no best g: a
+successor is skipped only when it is on the node's own path.  The goal is tested on expansion unless
+told otherwise.
 
 Iterative deepening runs the same loop on a stack with depth limits 0, 1, 2, ...: a node taken
 off at the limit is expanded with no successors, and within an iteration a cell is pushed again

@@ -41,17 +41,19 @@ def trace_loop(trace: Trace, pick: str = "oldest", infer_discards: bool = True) 
 
     A step that says ``"discarded": true`` is a discarded step, and so, with
     ``infer_discards`` (not for tree search, iterative deepening or a priority queue, which
-    may expand a cell again), is one that takes off a cell already expanded and adds nothing.  A step that expands the start when no entry
-    of it is left begins a new iteration from it (iterative deepening's restart); a cell
-    expanded again with no entry left takes its latest entry again.  The goal is found where
-    the trace expanded it, else (goal test on generate) where it first added it."""
+    may expand a cell again), is one that takes off a cell already expanded and adds nothing.  A
+    step that expands the start when no entry of it is left begins a new iteration from it
+    (iterative deepening's restart); a cell expanded again with no entry left takes its latest entry
+    again.  The goal is found where the trace expanded it, else (goal test on generate) where it
+    first added it."""
 
     def loop(problem: Problem, rec: Record, chunk: int = CHUNK) -> Iterator[int]:
         pad = problem.pad
         rec.step_exp = step_exp = array("i", [-1])
         gen_node, step_end = rec.gen_node, rec.step_end
         gen_node.append(problem.start)
-        open_of: dict[int, list[int]] = {problem.start: [0]}  # cell -> its open events, oldest first
+        # cell -> its open events, oldest first
+        open_of: dict[int, list[int]] = {problem.start: [0]}
         latest: dict[int, int] = {problem.start: 0}
         costs = _costs(problem) if pick == "cheapest" else None
         gs = [0.0]  # each event's path cost (the cheapest pick only)

@@ -2,11 +2,11 @@
 step by step: the first expansion or the first successor list that differs, in words a
 student can act on.
 
-The reference is the app's own recorded :class:`~tui_search.engine.run.recorded.Run`, read through its
-named queries.  A search that visits on expand takes cells off the frontier that it has already
+The reference is the app's own recorded :class:`~tui_search.engine.run.recorded.Run`, read through
+its named queries.  A search that visits on expand takes cells off the frontier that it has already
 expanded and does nothing with them (a *discarded* step): a trace may list those pops (with
-``"discarded": true`` or with no successors) or leave them out, and both match.  Steps are
-numbered as the trace numbers them (its own expansion lines).
+``"discarded": true`` or with no successors) or leave them out, and both match.  Steps are numbered
+as the trace numbers them (its own expansion lines).
 """
 
 from __future__ import annotations
@@ -209,7 +209,7 @@ class _Checker:
             if c not in seen:
                 return diff(f"{name} adds {show(c)} from {show(t.node)}; your trace does not",
                             c, None)
-        first = next(i for i, (a, b) in enumerate(zip(got, want)) if a != b)
+        first = next(i for i, (a, b) in enumerate(zip(got, want, strict=True)) if a != b)
         order = ",".join(self.run.semantics.order)
         return diff(f"your trace added {', '.join(map(show, got))}; {name} adds "
                     f"{', '.join(map(show, want))} (order {order}): {show(want[first])} "

@@ -80,6 +80,23 @@ class _Reader:
             return self.cell(value["node"], "successor")
         return self.cell(value, "successor")
 
+    def endpoints(self, obj: dict[str, object]) -> tuple[Cell | None, Cell | None]:
+        """The first line's ``start`` and ``goal`` (None where it gives none): the map's."""
+        grid = self.grid
+        assert grid.start is not None  # as read_trace holds
+        start = goal = None
+        if "start" in obj:
+            start = self.cell(obj["start"], "start")
+            if start != grid.start:
+                raise self.fail(f"the trace starts at {show(start)}, the map at "
+                                f"{show(grid.start)}")
+        if "goal" in obj:
+            goal = self.cell(obj["goal"], "goal")
+            if grid.goal is not None and goal != grid.goal:
+                raise self.fail(f"the trace's goal is {show(goal)}, the map's "
+                                f"{show(grid.goal)}")
+        return start, goal
+
     def obj(self, text: str) -> dict[str, object]:
         try:
             value = json.loads(text)
@@ -112,16 +129,7 @@ def read_trace(text: str, grid: Grid, name: str) -> Trace:
         if "start" in obj or "goal" in obj:
             if steps or start is not None or goal is not None:
                 raise reader.fail('"start" and "goal" belong on the first line only')
-            if "start" in obj:
-                start = reader.cell(obj["start"], "start")
-                if start != grid.start:
-                    raise reader.fail(f"the trace starts at {show(start)}, the map at "
-                                      f"{show(grid.start)}")
-            if "goal" in obj:
-                goal = reader.cell(obj["goal"], "goal")
-                if grid.goal is not None and goal != grid.goal:
-                    raise reader.fail(f"the trace's goal is {show(goal)}, the map's "
-                                      f"{show(grid.goal)}")
+            start, goal = reader.endpoints(obj)
             continue
         if "path" in obj and "node" not in obj:
             cells = obj["path"]

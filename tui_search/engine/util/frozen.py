@@ -1,6 +1,6 @@
 """Immutable values written out instead of frozen dataclasses, for the start's sake: a frozen
 dataclass compiles six methods when its module is imported (``slots=True`` builds its class
-twice too), ~0.6 M instructions a method at every start (benchmarks/README.md, session 13).
+twice too), at every start (benchmarks/README.md, "startup").
 A :class:`Frozen` subclass names the fields it is compared, hashed and shown by and sets
 them once (:meth:`Frozen._assign`); it behaves as a frozen dataclass does (``__init__``
 takes the fields by name, so :meth:`Frozen.replace`, pickling and copying remake it)."""

@@ -49,7 +49,8 @@ class YesNoScreen(QuestionScreen):
 
     def __init__(self, title: str, text: str, yes: str, no: str) -> None:
         """``yes`` and ``no``: the buttons' words (the keys are added)."""
-        super().__init__(title, text, [(YES, f"{yes} (y)", "error"), (CANCEL, f"{no} (n)", "primary")])
+        super().__init__(title, text, [(YES, f"{yes} (y)", "error"),
+                                       (CANCEL, f"{no} (n)", "primary")])
 
 
 class DropEditsScreen(YesNoScreen):

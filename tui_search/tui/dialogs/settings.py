@@ -1,5 +1,5 @@
-"""Search settings (``,``): every choice of :mod:`tui_search.engine.search.choices`, each with a line
-on what it changes, and the searches compare mode compares.  Dismisses with a
+"""Search settings (``,``): every choice of :mod:`tui_search.engine.search.choices`, each with a
+line on what it changes, and the searches compare mode compares.  Dismisses with a
 :class:`SettingsChoice`, or None when cancelled; the app then starts a new run at step 0 on the
 same map.
 

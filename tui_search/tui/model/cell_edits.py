@@ -1,7 +1,7 @@
 """Edits of the map: the cursor, start/goal/obstacle/terrain keys and mouse strokes.
 
-:func:`place`, :func:`set_wall` and :func:`paint_terrain` edit a grid and return ``None``, or a one-line reason they
-refused (start on an obstacle, an obstacle on the goal ...).  The session
+:func:`place`, :func:`set_wall` and :func:`paint_terrain` edit a grid and return ``None``, or a
+one-line reason they refused (start on an obstacle, an obstacle on the goal ...).  The session
 (:class:`~tui_search.tui.model.session.Session`) records every edit that happens (undo, redo, the
 title's "modified": :mod:`~tui_search.tui.model.history`) and starts new runs at step 0.
 """

@@ -39,8 +39,8 @@ class Edit:
 
     def apply(self, grid: Grid, undo: bool) -> Cell:
         """Put ``grid`` as it was before this edit (``undo``) or after it; the cell the edit
-        is about, for the cursor: its first obstacle (or painted) cell, else where the end that moved is
-        now (or was, when it left the map)."""
+        is about, for the cursor: its first obstacle (or painted) cell, else where the end that
+        moved is now (or was, when it left the map)."""
         for cell, before, after in reversed(self.walls) if undo else self.walls:
             grid.set_blocked(cell, before if undo else after)
         for cell, cost_before, cost_after in reversed(self.costs) if undo else self.costs:
@@ -48,7 +48,7 @@ class Edit:
         if self.ends is not None:
             now, then = self.ends if undo else self.ends[::-1]
             grid.start, grid.goal = now
-            moved = [c for pair in zip(now, then) if pair[0] != pair[1]
+            moved = [c for pair in zip(now, then, strict=True) if pair[0] != pair[1]
                      for c in pair if c is not None]
             if moved:
                 return moved[0]

@@ -1,8 +1,8 @@
 """Moving the runs' positions: a step of the lockstep, time-boxed slices, and what a move
 changes on screen.
 
-Plain functions over :class:`~tui_search.engine.run.recorded.Run` (no Textual), so the app's playback
-timer, its ``end`` key and the tests share them.
+Plain functions over :class:`~tui_search.engine.run.recorded.Run` (no Textual), so the app's
+playback timer, its ``end`` key and the tests share them.
 """
 
 from __future__ import annotations

@@ -8,8 +8,7 @@ the answer is the queue's front, under DFS the stack's top, under A* the lowest 
 lesson in one habit.
 """
 
-# No `from __future__ import annotations`: typing compiles a NamedTuple's string
-# annotations one by one at import (~5 M instructions of every start in all: session 14).
+# No future import: CONTRIBUTING.md, "Start-up".
 from typing import NamedTuple
 
 from tui_search.engine.maps.grid import Cell

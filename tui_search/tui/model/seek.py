@@ -23,7 +23,7 @@ class Seek:
 
     def __init__(self, targets: list[tuple[Run, int | None]], labels: list[str],
                  before: list[tuple[int, bool]], then_play: bool = False) -> None:
-        self.queue = list(zip(targets, labels))
+        self.queue = list(zip(targets, labels, strict=True))
         self.before = before
         self.then_play = then_play  # play once there (space at the last step)
         self.noted = False  # a progress text was given: the note is the seek's

@@ -3,8 +3,8 @@ their runs in lockstep, the cursor, playback, the quiz and the exercise.
 
 The screen turns keys into calls here and shows the result; nothing here draws.  Every search
 shown is a pane: one search is a session with one contender, and comparing is more of them.
-A new :class:`~tui_search.engine.run.recorded.Run` for every pane is made whenever the map is edited,
-a search or a setting changes or ``r`` is pressed, so no search state outlives its map.
+A new :class:`~tui_search.engine.run.recorded.Run` for every pane is made whenever the map is
+edited, a search or a setting changes or ``r`` is pressed, so no search state outlives its map.
 """
 
 from __future__ import annotations
@@ -26,7 +26,7 @@ from tui_search.tui.model.searches import DEFAULT_COMPARE, normal_spec, searches
 
 if TYPE_CHECKING:
     # Imported where used: exercises are read and graded only once one is shown, so the first
-    # frame does without their modules (~8 ms: benchmarks/README.md, "startup").
+    # frame does without their modules (benchmarks/README.md, "startup").
     from tui_search.engine.course.exercise_file import Exercise
     from tui_search.engine.course.grading import Verdict
     from tui_search.engine.maps.scenarios import Optimum
@@ -43,8 +43,8 @@ class Session:
 
     ``optimal_cost`` is a benchmark's lowest cost for this map, start and goal (a MovingAI
     ``.scen`` row: 8 moves, no corner cutting), shown beside a path's cost while the map (its
-    obstacles and terrain costs), its ends and those rules stay as they are.  ``exercise`` is an exercise (or the
-    tutorial's number 1 or 2) shown as a live challenge.
+    obstacles and terrain costs), its ends and those rules stay as they are.  ``exercise`` is an
+    exercise (or the tutorial's number 1 or 2) shown as a live challenge.
 
     Its parts: ``edits``, the map and its edits (:class:`~tui_search.tui.model.map_edits.MapEdits`:
     the history, the terrain brush); ``jumps``, the replay shown and the jump to where it
@@ -373,4 +373,5 @@ class Session:
         return grade(self.exercise, self.grid, self.max_steps)
 
 
-__all__ = ["BRUSHES", "DEFAULT_COMPARE", "LOCKSTEP", "LOCKSTEP_SHORT", "NEEDS_ENDPOINTS", "NO_BRUSH", "Before", "Session", "normal_spec"]
+__all__ = ["BRUSHES", "DEFAULT_COMPARE", "LOCKSTEP", "LOCKSTEP_SHORT", "NEEDS_ENDPOINTS",
+           "NO_BRUSH", "Before", "Session", "normal_spec"]

@@ -6,8 +6,8 @@ Saving writes the file the map was read from back with only the edited cells cha
 ``.map`` saves it in place as a ``.map`` (which has no start or goal, and the notification
 says so).  A new name picks the format by its ending: ``.map`` MovingAI, anything else text.
 A save the engine refuses loses nothing: a file changed on disk or with hard links is asked
-about (:mod:`~tui_search.tui.screens.save_questions`), a read-only one opens save-as with the reason,
-any other refusal is one line.
+about (:mod:`~tui_search.tui.screens.save_questions`), a read-only one opens save-as with the
+reason, any other refusal is one line.
 
 Where files may be read and written is the app's ``file_access``
 (:class:`~tui_search.tui.model.file_rules.FileAccess`): anywhere in a terminal; served to browsers,
@@ -56,8 +56,9 @@ if TYPE_CHECKING:
 # app's start-up time for nothing.
 
 NO_ENDPOINTS_IN_MAP = "MovingAI format: the start and goal are not part of a .map file"
-#: A generated map of more cells is made in a thread (kruskal 999x999 takes some 5 s), the
-#: status line saying "Generating ..." meanwhile; a smaller one at once (under ~0.2 s).
+#: A generated map of more cells is made in a thread (the biggest take seconds), the status
+#: line saying "Generating ..." meanwhile; a smaller one at once (benchmarks/README.md,
+#: "limits").
 GENERATE_AT_ONCE_CELLS = 40_000
 
 
@@ -124,7 +125,8 @@ class FileCommands:
         source = self.host.session.grid.source
         if source is not None:
             return source.kind
-        return kind_for_path(self.host.session.map_path) if self.host.session.map_path is not None else TEXT
+        map_path = self.host.session.map_path
+        return kind_for_path(map_path) if map_path is not None else TEXT
 
     def write_map(self, path: Path, kind: str, done: Done, *, in_prompt: bool = False,
                   overwrite: bool = False, in_place: bool = False) -> None:
@@ -179,7 +181,8 @@ class FileCommands:
         self.write_map(path, self._own_kind(), done)
 
     def _save_as(self, path: Path, answer: Callable[[str | None], None]) -> None:
-        own = self.host.session.map_path is not None and path.resolve() == self.host.session.map_path.resolve()
+        map_path = self.host.session.map_path
+        own = map_path is not None and path.resolve() == map_path.resolve()
 
         def done(error: MapError | None) -> None:
             answer(None if error is None else one_line(error))

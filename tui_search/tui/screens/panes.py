@@ -77,7 +77,7 @@ class PanesScreen(Screen[None]):
     @cached_property
     def files(self) -> FileCommands:
         """Saving, opening, generating and quitting, made when first used: the first frame
-        imports none of it (-1.6 M instructions: benchmarks/README.md, session 14)."""
+        imports none of it (benchmarks/README.md, "startup")."""
         from tui_search.tui.screens.file_commands import FileCommands
 
         return FileCommands(self)
@@ -135,7 +135,8 @@ class PanesScreen(Screen[None]):
         self.show_lesson()
         # reckoned: the first frame is laid out already.  The classes it sets are not restyled
         # here: the ScreenResume that follows the mount restyles the whole screen before the
-        # first frame (restyling the pane here as well was ~10 ms of a ~350 ms start)
+        # first frame (restyling the pane here as well cost the start: benchmarks/README.md,
+        # "startup")
         self.fit_panes(restyle=False)
         self.present()
         self.call_after_refresh(self.fit_panes)  # measured
@@ -235,7 +236,7 @@ class PanesScreen(Screen[None]):
         anew), then show."""
         session = self.session
         labels = session.labels
-        for pane, label in zip(self.panes, labels):
+        for pane, label in zip(self.panes, labels, strict=False):
             pane.label = label
         if len(self.panes) != len(labels):
             state = self.views[0].view_state()
@@ -306,8 +307,8 @@ class PanesScreen(Screen[None]):
         self.show_readout()
 
     def show_status(self) -> None:
-        """The status lines (:func:`~tui_search.tui.view.status_lines.screen_status`) and the key bar:
-        all a seek's progress changes."""
+        """The status lines (:func:`~tui_search.tui.view.status_lines.screen_status`) and the key
+        bar: all a seek's progress changes."""
         session = self.session
         status = screen_status(session, self.size.width,
                                panes_lines=self.panes[0].stats.display)
@@ -342,8 +343,9 @@ class PanesScreen(Screen[None]):
         """Show the runs after a move from ``before``: only the cells a one-step move
         changed."""
         if before is not None:
+            runs = zip(self.session.runs, before, strict=True)
             self.present(per_run=[playback.step_changes(run, k, was_at_end)
-                                  for run, (k, was_at_end) in zip(self.session.runs, before)])
+                                  for run, (k, was_at_end) in runs])
 
     def warn(self, text: str | None, timeout: float = 3) -> None:
         if text:

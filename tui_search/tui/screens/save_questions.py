@@ -2,8 +2,9 @@
 the file changed on disk since it was read or saved, or it has other names (hard links).
 
 Each question's answer carries the save on (:meth:`FileCommands.write_map
-<tui_search.tui.screens.file_commands.FileCommands.write_map>` again, with ``overwrite`` or ``in_place``), or
-reloads the file, or goes to another name; cancel leaves the map and the file as they were.
+<tui_search.tui.screens.file_commands.FileCommands.write_map>` again, with ``overwrite`` or
+``in_place``), or reloads the file, or goes to another name; cancel leaves the map and the file as
+they were.
 """
 
 from __future__ import annotations
@@ -25,7 +26,8 @@ Done = Callable[[MapError | None], None]
 
 class SaveCommands(Protocol):
     """What the questions call back: the file commands
-    (:class:`tui_search.tui.screens.file_commands.FileCommands`, which import this module, not the reverse)."""
+    (:class:`tui_search.tui.screens.file_commands.FileCommands`, which import this module, not the
+    reverse)."""
 
     @property
     def dirty(self) -> bool:

@@ -71,7 +71,7 @@ def cell_line(run: Run | None, cell: Cell, width: int, height: int, sub: int, mo
         text[(width - 1) // 2] = arrow
     slots = [0] + ([height - 1] if height > 1 and (height - 1 != middle or not arrow) else [])
     right_free = True  # nothing right-aligned on this line yet
-    for line, value in zip(slots, numbers):
+    for line, value in zip(slots, numbers, strict=False):
         if line != sub:
             continue
         shown = number_text(value, width - 2)

@@ -8,15 +8,14 @@ pushed; a goal test when it found the goal.  Step 0 lights the lines that set th
 Stepping back lights that earlier step's lines: everything here is computed from the position.
 """
 
-# No `from __future__ import annotations`: typing compiles a NamedTuple's string
-# annotations one by one at import (~5 M instructions of every start in all: session 14).
+# No future import: CONTRIBUTING.md, "Start-up".
 from typing import TYPE_CHECKING, NamedTuple
 
 from tui_search.engine.maps.grid import DELTAS, Cell
 from tui_search.engine.run.recorded import Run
 from tui_search.engine.search.choices import corner_allowed
 
-if TYPE_CHECKING:  # imported by code_of: the first frame shows no code (~2 ms of import)
+if TYPE_CHECKING:  # imported by code_of: the first frame shows no code
     from tui_search.engine.search.pseudocode import Pseudocode
 
 
@@ -181,4 +180,5 @@ def focus_line(run: Run) -> int | None:
     return None
 
 
-__all__ = ["FOCUS_KINDS", "Skip", "code_of", "focus_line", "line_notes", "lit_kinds", "lit_lines", "skipped"]
+__all__ = ["FOCUS_KINDS", "Skip", "code_of", "focus_line", "line_notes", "lit_kinds", "lit_lines",
+           "skipped"]

@@ -2,15 +2,14 @@
 (:func:`entry_line`), and, wider than its panel, its rows.  Those: the cell on the
 first row, and the figures -- iterative deepening's ``d=3``, a priority queue's ``f6.41``,
 ``g2.41``, ``h4.00`` -- the depth after it while it fits, the figures on rows of their own,
-indented under the cell, together while they fit.  The least important parts go first, never a figure: the move (``NE``) goes when it
-would open a row, then the marker column (``▶+``) when the cell does not fit beside it (the
-entry expanded next is highlighted anyway).
+indented under the cell, together while they fit.  The least important parts go first, never a
+figure: the move (``NE``) goes when it would open a row, then the marker column (``▶+``) when the
+cell does not fit beside it (the entry expanded next is highlighted anyway).
 
 Every entry of a panel takes the same rows (their columns have the same widths), so the
 entry on a line is found by a division, whatever the frontier's size."""
 
-# No `from __future__ import annotations`: typing compiles a NamedTuple's string
-# annotations one by one at import (~5 M instructions of every start in all: session 14).
+# No future import: CONTRIBUTING.md, "Start-up".
 from typing import TYPE_CHECKING, NamedTuple
 
 from tui_search.engine.search.heuristics import octile
@@ -29,8 +28,8 @@ HINT_GAP = 2
 class EntryRows(NamedTuple):
     """An entry's layout on more than one row: ``rows`` holds each row's indent and the
     slots on it ("depth", "move", and "0", "1", "2": the figures), the first row's after the
-    cell; ``marker``: the marker column is shown.  (A NamedTuple: a frozen dataclass costs
-    ~1 ms of every start: benchmarks/README.md, session 14.)"""
+    cell; ``marker``: the marker column is shown.  (A NamedTuple: a frozen dataclass would
+    cost every start more: benchmarks/README.md, "startup".)"""
 
     marker: bool
     rows: tuple[tuple[int, tuple[str, ...]], ...]

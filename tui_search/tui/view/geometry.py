@@ -34,8 +34,9 @@ def _ceil_div(a: int, b: int) -> int:
 class Geometry(Frozen):
     """A ``columns`` x ``rows`` map laid out at cell size ``level`` (``2 * level`` x ``level``
     characters), or, with ``block`` > 0, as an overview of blocks of cells.  A
-    :class:`~tui_search.engine.util.frozen.Frozen` value (not a frozen dataclass: ~4 M
-    instructions of every start), compared, hashed and shown by those four numbers."""
+    :class:`~tui_search.engine.util.frozen.Frozen` value (not a frozen dataclass, which every
+    start would pay for: benchmarks/README.md, "startup"), compared, hashed and shown by those
+    four numbers."""
 
     __slots__ = ("across", "block", "cell_height", "cell_width", "columns", "down", "halves",
                  "level", "rows")

@@ -11,8 +11,7 @@ When the status lines under the panes wrap to more rows, the map stays where it 
 the room they left at their least) while the rows under it that they take were blank.
 """
 
-# No `from __future__ import annotations`: typing compiles a NamedTuple's string
-# annotations one by one at import (~5 M instructions of every start in all: session 14).
+# No future import: CONTRIBUTING.md, "Start-up".
 from collections.abc import Callable
 from typing import NamedTuple
 
@@ -247,4 +246,5 @@ def lesson_width(screen_width: int) -> int:
     return max(28, min(56, screen_width * 2 // 5))
 
 
-__all__ = ["CODE_MIN_HEIGHT", "MAP_MIN_LINES", "Arrangement", "arrange", "lesson_width", "own_lines", "pane_grid"]
+__all__ = ["CODE_MIN_HEIGHT", "MAP_MIN_LINES", "Arrangement", "arrange", "lesson_width",
+           "own_lines", "pane_grid"]

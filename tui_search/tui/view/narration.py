@@ -108,19 +108,12 @@ def _narrate(run: Run) -> str:
     k = run.k
     limit = run.steps.depth_limit() if run.algo.iterative else None
     if k == 0:
-        first = f"START {cell_text(run.grid.start)} is on the {word}"
-        if limit is not None:
-            first += f" (depth limit {limit})"
-        if run.at_end and run.found:
-            return f"{first}: the start is the goal"
-        return f"{first}. Press n to expand it."
+        return _before_the_first_step(run, word, limit)
     expanded = run.steps.expanded_event(k)
     node = _node_text(run, expanded)
     costs = costs_text(run, expanded)
     if costs:
         node = f"{node} {costs}"
-    added = run.now.added_now()
-    dirs = [run.nodes.move(h) for h in added]
     prefix = ""
     if limit is not None and run.steps.first_of_iteration(run.steps.iteration_of(k)) == k:
         prefix = f"Depth limit {limit}, a new iteration from START. "
@@ -129,46 +122,70 @@ def _narrate(run: Run) -> str:
         if run.nodes.goal == expanded:  # the goal tested when taken off the frontier
             return f"{prefix}Took the goal {goal} off the {word}: found"
         return f"{prefix}Goal {goal} found from {node}"
-    if run.steps.is_discarded(k) and run.algo.weighted:
-        text = (f"{prefix}Took {node} off the {word}: stale (its cell was reached with a "
+    return _how_it_ended(run, prefix + _what_the_step_did(run, node, expanded, word, limit),
+                         word, limit)
+
+
+def _before_the_first_step(run: Run, word: str, limit: int | None) -> str:
+    """Step 0: the start on the frontier, and what the first step does."""
+    first = f"START {cell_text(run.grid.start)} is on the {word}"
+    if limit is not None:
+        first += f" (depth limit {limit})"
+    if run.at_end and run.found:
+        return f"{first}: the start is the goal"
+    return f"{first}. Press n to expand it."
+
+
+def _what_the_step_did(run: Run, node: str, expanded: int, word: str, limit: int | None
+                       ) -> str:
+    """The step's node (``node``, event ``expanded``) discarded, or expanded and what that
+    added to the frontier."""
+    added = run.now.added_now()
+    dirs = [run.nodes.move(h) for h in added]
+    if run.steps.is_discarded(run.k) and run.algo.weighted:
+        return (f"Took {node} off the {word}: stale (its cell was reached with a "
                 f"lower g since), discarded")
-    elif run.steps.is_discarded(k):
-        text = f"{prefix}Took {node} off the {word}: already expanded, discarded"
-    elif dirs and run.algo.weighted:
-        text = f"{prefix}Expanded {node}: added {', '.join(dirs)}"
+    if run.steps.is_discarded(run.k):
+        return f"Took {node} off the {word}: already expanded, discarded"
+    if dirs and run.algo.weighted:
+        text = f"Expanded {node}: added {', '.join(dirs)}"
         reopened = _reopened(run, added)
         if reopened:
             text += "; " + ", ".join(reopened)
         terrain = _terrain(run, expanded, added)
         if terrain:
             text += "; " + ", ".join(terrain)
-    elif dirs:
-        text = f"{prefix}Expanded {node}: added {', '.join(dirs)} to the {word}"
-    elif limit is not None and run.nodes.depth(expanded) >= limit:
-        text = f"{prefix}Expanded {node} at the depth limit {limit}: no successors added"
-    else:
-        text = f"{prefix}Expanded {node}: no new successors"
-    if run.at_end and run.gave_up:
+        return text
+    if dirs:
+        return f"Expanded {node}: added {', '.join(dirs)} to the {word}"
+    if limit is not None and run.nodes.depth(expanded) >= limit:
+        return f"Expanded {node} at the depth limit {limit}: no successors added"
+    return f"Expanded {node}: no new successors"
+
+
+def _how_it_ended(run: Run, text: str, word: str, limit: int | None) -> str:
+    """``text`` and, once the run is at its end without the goal, why it ended there."""
+    if not run.at_end:
+        return text
+    if run.gave_up:
         return f"{text}. {gave_up_text(run).capitalize()}"
-    if run.at_end and run.now.frontier_len() and limit is None:
+    if run.now.frontier_len() and limit is None:
         # ended with cells still to expand: only a replayed trace stops so (a search of
         # the app goes on until its frontier is empty), and nothing blocked it
         return (f"{text}. It stops here, {run.now.frontier_len()} still on the {word}: "
                 f"no path found")
-    if run.at_end:  # done, not found
-        why = blocked_by(run)
-        why = f" — {why}" if why else ""
-        if limit is not None:
-            return f"{text}. Depth limit {limit} cut nothing off: no path{why}"
-        return f"{text}. Frontier empty: no path{why}"
-    return text
+    why = blocked_by(run)
+    why = f" — {why}" if why else ""
+    if limit is not None:
+        return f"{text}. Depth limit {limit} cut nothing off: no path{why}"
+    return f"{text}. Frontier empty: no path{why}"
 
 
 _BLOCKED: WeakKeyDictionary[Run, str | None] = WeakKeyDictionary()
 
 
 #: Maps bigger than this are not searched again to name the rule that blocked a path (up to
-#: three BFS runs: about 0.2 s on a 512x512 maze, seconds on a 4096x4096 map).
+#: three BFS runs, too slow on the biggest maps: benchmarks/README.md, "limits").
 BLOCKED_BY_CELLS = 300_000
 
 
@@ -176,7 +193,8 @@ def blocked_by(run: Run) -> str | None:
     """The rule that left the map without a path, if one did (searched once per run, on
     maps of at most :data:`BLOCKED_BY_CELLS` cells: the app must not freeze to say it).  Never
     for a replayed trace: its rules are the matched search's, not ones the trace declared."""
-    if run.replayed or run.semantics.is_default or run.grid.width * run.grid.height > BLOCKED_BY_CELLS:
+    too_big = run.grid.width * run.grid.height > BLOCKED_BY_CELLS
+    if run.replayed or run.semantics.is_default or too_big:
         return None
     if run not in _BLOCKED:
         from tui_search.engine.run.blocked import blocking_rule  # only when a choice is changed
@@ -227,8 +245,8 @@ def result_text(run: Run) -> str:
 _LOWEST: WeakKeyDictionary[Run, float | None] = WeakKeyDictionary()
 
 
-#: Maps bigger than this are not searched again for the lowest cost (a uniform-cost search of
-#: 40,000 cells takes about a tenth of a second).
+#: Maps bigger than this are not searched again for the lowest cost (a whole uniform-cost
+#: search: benchmarks/README.md, "limits").
 LOWEST_COST_CELLS = 40_000
 
 

@@ -17,8 +17,7 @@ Redrawn on every step, so wrapping is O(pieces) (a line that fits is not split i
 is done once per text and width.
 """
 
-# No `from __future__ import annotations`: typing compiles a NamedTuple's string
-# annotations one by one at import (~5 M instructions of every start in all: session 14).
+# No future import: CONTRIBUTING.md, "Start-up".
 import re
 from typing import NamedTuple
 

@@ -1,5 +1,6 @@
 """Ask the map: what the run knows of one cell, in a line -- "(12,40): expanded at step 345,
-depth 17, reached by NE from (11,41)", "(3,4) costs 5: never reached" (no Textual: the readout widget shows the string)."""
+depth 17, reached by NE from (11,41)", "(3,4) costs 5: never reached" (no Textual: the readout
+widget shows the string)."""
 
 from __future__ import annotations
 
@@ -78,7 +79,7 @@ def describe_each(runs: list[Run], names: list[str], grid: Grid, cell: Cell) -> 
         return describe(runs[0] if runs else None, grid, cell)
     bodies = [describe(run, grid, cell).partition(": ")[2] for run in runs]
     return f"{cell_head(grid, cell)}: " + " │ ".join(
-        f"{name} {body}".lstrip() for name, body in zip(names, bodies))
+        f"{name} {body}".lstrip() for name, body in zip(names, bodies, strict=True))
 
 
 __all__ = ["cell_head", "describe", "describe_each"]

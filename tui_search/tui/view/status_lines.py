@@ -10,8 +10,7 @@ the playing speed, the frontier's peak, ... go first, never the narration or the
 over the number of panes, :func:`~tui_search.tui.view.layout.own_lines`.
 """
 
-# No `from __future__ import annotations`: typing compiles a NamedTuple's string
-# annotations one by one at import (~5 M instructions of every start in all: session 14).
+# No future import: CONTRIBUTING.md, "Start-up".
 from typing import NamedTuple
 
 from tui_search.engine.run.recorded import Run
@@ -101,7 +100,7 @@ def search_status(run: Run | None, name: str, *, in_pane: bool, playing: str = "
             # too: it may go; the path's moves and cost never go, they take another row)
             ranks = (0, BOUND_RANK) if in_pane else (0, 0)
             line += [Piece([(text, "stats--result")], rank, (" · ", "stats--label"))
-                     for text, rank in zip(result_text(run).split(" · "), ranks)]
+                     for text, rank in zip(result_text(run).split(" · "), ranks, strict=False)]
     return Status([Line(status), Line(line, prose=True)], PANE_ROWS if in_pane else MAX_ROWS)
 
 
@@ -117,7 +116,7 @@ def lockstep_status(labels: list[str], *, playing: str = "", note: str = "",
     lines = [Line(status)]
     if runs:
         lines.append(Line([Piece(_counts(label, run), 0, SEP)
-                           for label, run in zip(labels, runs)]))
+                           for label, run in zip(labels, runs, strict=True)]))
     line = [Piece([(note, "stats--note")] if note else [(sentence, "stats--narration")])]
     return Status([*lines, Line(line, prose=True)], MAX_ROWS)
 

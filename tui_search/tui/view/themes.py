@@ -12,8 +12,7 @@ importing Textual (its headless path must not), and the app builds the Textual o
 starts (:func:`tui_search.tui.app.textual_themes`).
 """
 
-# No `from __future__ import annotations`: typing compiles a NamedTuple's string
-# annotations one by one at import (~5 M instructions of every start in all: session 14).
+# No future import: CONTRIBUTING.md, "Start-up".
 from typing import NamedTuple, TypedDict
 
 

@@ -1,7 +1,8 @@
 """The search tree's shape at a run's position, kept in step with it from the record (no
 Textual): the listing's event ids in preorder with their depths, the focused view's chain of
-ancestors, a node's siblings and its tree guides.  :class:`~tui_search.tui.view.tree_listing.TreeModel`
-keeps them from one position to the next and says them as lines.
+ancestors, a node's siblings and its tree guides.
+:class:`~tui_search.tui.view.tree_listing.TreeModel` keeps them from one position to the next and
+says them as lines.
 """
 
 from __future__ import annotations
@@ -17,7 +18,8 @@ MAX_LEVELS = 40
 #: Deepest part of the ancestor chain the focused view lists (above it: START and a "⋮" line).
 SHOW_LEVELS = 200
 #: Longest walk up the tree a show() makes to find where a new chain meets the old one or
-#: the root (about 0.6 µs a level); past it a deep depth-first chain's depth is left uncounted.
+#: the root, so that a step stays cheap (benchmarks/README.md, "step"); past it a deep
+#: depth-first chain's depth is left uncounted.
 WALK_MAX = 2000
 
 

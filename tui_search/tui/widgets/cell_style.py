@@ -122,7 +122,7 @@ class CellLooks:
         """Line ``sub`` of the cells ``columns`` of map row ``row``, each ``width`` x
         ``height`` characters: glyph, label (:func:`cell_line`) and terrain cost."""
         out = []
-        for i, (x, code) in enumerate(zip(columns, codes)):
+        for i, (x, code) in enumerate(zip(columns, codes, strict=True)):
             base = code % len(COMPONENTS)
             style = self.codes[code][1]
             cost = None
@@ -182,7 +182,7 @@ def block_costs(grid: Grid, rows: range, x0: int, x1: int, across: int) -> list[
         a, b = y * width + x0, y * width + x1
         row: Sequence[float] = costs[a:b]
         if blocked.find(1, a, b) >= 0:  # an obstacle's cost is never paid: not shown
-            row = [0.0 if wall else cost for cost, wall in zip(row, blocked[a:b])]
+            row = [0.0 if wall else cost for cost, wall in zip(row, blocked[a:b], strict=True)]
         if across > 1:
             row = [max(row[i : i + across]) for i in range(0, len(row), across)]
         best = list(row) if best is None else list(map(max, best, row))
@@ -191,12 +191,13 @@ def block_costs(grid: Grid, rows: range, x0: int, x1: int, across: int) -> list[
 
 def shaded(codes: list[int], costs: list[float] | None) -> list[int]:
     """The overview's swatch (:func:`swatches`) of each block of ``codes``: its code, or, for
-    a free block with terrain, the ramp's step of its dearest cell (``costs``: :func:`block_costs`)."""
+    a free block with terrain, the ramp's step of its dearest cell (``costs``:
+    :func:`block_costs`)."""
     if costs is None:
         return codes
     ramp = len(COMPONENTS) - 1
     return [ramp + level if code == FREE and (level := cost_level(cost)) else code
-            for code, cost in zip(codes, costs)]
+            for code, cost in zip(codes, costs, strict=True)]
 
 
 __all__ = [

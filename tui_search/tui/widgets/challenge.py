@@ -1,8 +1,8 @@
 """The challenge panel: an exercise (the tutorial's or a teacher's file), checked live on the map
 being edited.
 
-It quotes the exercise under its title, shows its searches' figures on the map as it is now, and says
-**Solved** the moment an edit satisfies the exercise -- or that an edit unsolved it.  What the
+It quotes the exercise under its title, shows its searches' figures on the map as it is now, and
+says **Solved** the moment an edit satisfies the exercise -- or that an edit unsolved it.  What the
 figures are and whether they solve it comes from :mod:`tui_search.engine.course.grading`; the app
 pushes each new verdict with :meth:`ChallengePanel.show`.
 """

@@ -39,7 +39,7 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
     """
 
     # The messages write their __init__ rather than being dataclasses: a dataclass compiles
-    # its methods at import (~1.3 M instructions each of the app's start).
+    # its methods at import, on every start (benchmarks/README.md, "startup").
     class CellClicked(Message):
         """The mouse went down on a map cell (button 1 left, 3 right)."""
 

@@ -130,7 +130,7 @@ class KeyBar(Widget):
             else:
                 hints.extend((([key], self.labels.get(action, a.binding.description),
                                a.enabled), action)
-                             for key, a, action in zip(keys, members, actions))
+                             for key, a, action in zip(keys, members, actions, strict=True))
         return hints
 
     def shown_hints(self, width: int | None = None) -> list[Hint]:
@@ -150,7 +150,8 @@ class KeyBar(Widget):
 
     def render_line(self, y: int) -> Strip:
         """The hints as one line of segments (the line API: Textual lays out no text for it,
-        ~7.7 M instructions of every start: benchmarks/README.md, session 14).  What is still too wide ends in "…"."""
+        work every start paid for: benchmarks/README.md, "startup").  What is still too wide
+        ends in "…"."""
         width = self.content_size.width
         base = self.rich_style
         self._spans = []

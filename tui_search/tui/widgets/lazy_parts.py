@@ -26,14 +26,15 @@ def show_part(parent: Widget, part: Widget, shown: bool,
     that is mounted."""
     if not shown or part.parent is not None:
         return
-    later = [w for w in order[list(order).index(part) + 1:] if w is not None and w.parent is not None]
+    later = [w for w in order[list(order).index(part) + 1:]
+             if w is not None and w.parent is not None]
     parent.mount(part, before=later[0] if later else None)
 
 
 class Later(Generic[W]):
     """A part made by ``make`` the first time it is asked for (:meth:`get`); :attr:`made` is
-    None until then (~5 M instructions of the tutorial's first frame for the three parts:
-    benchmarks/README.md, session 13)."""
+    None until then: a first frame that does not show the part neither imports, composes nor
+    styles it (benchmarks/README.md, "startup")."""
 
     def __init__(self, make: Callable[[], W]) -> None:
         self._build = make

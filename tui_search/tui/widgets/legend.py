@@ -62,8 +62,10 @@ class Legend(Widget):
         out.append(Text.assemble(look(FREE + len(COMPONENTS)), " cursor"))
         if self.view.grid.costs is not None:  # terrain: the ramp that shades a free cell's cost
             ramp: list[Style | str] = list(looks.ramp[1:]) if looks else [""] * len(RAMP_NAMES)
+            # the ramp's steps for each look (plain, under the cursor, marked): the plain ones named
             out.append(Text.assemble(*(
-                (f" {name} ", style) for name, style in zip(RAMP_NAMES, ramp)), " cost"))
+                (f" {name} ", style) for name, style in zip(RAMP_NAMES, ramp, strict=False)),
+                " cost"))
         return out
 
     def _lines(self, width: int, styled: bool = True) -> Text:

@@ -245,4 +245,5 @@ class LinePanel(QuietScrollbars, CachedStyles, ScrollView, can_focus=True):
         if painted is None or painted[0] != offset or painted[1] != size:
             self.refresh()
             return
-        refresh_rows(self, [new != old for new, old in zip(rows, painted[2])], size.width)
+        changed = [new != old for new, old in zip(rows, painted[2], strict=True)]
+        refresh_rows(self, changed, size.width)

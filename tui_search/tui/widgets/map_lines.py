@@ -4,10 +4,10 @@ render_line>` draws on each terminal row, from the view's grid, run, cursor and
 what the visible part costs.
 
 * **cells** -- each map cell is 2x1, 4x2, 6x3 ... characters and carries a glyph as well as a
-  colour, so the picture reads without colour too (see :data:`~tui_search.tui.view.cell_codes.GLYPHS`,
-  which the legend shows).  Cells at least 4 wide also carry a label
-  (:mod:`~tui_search.tui.view.cell_labels`): the arrow of the move that reached the cell and, where
-  there is room, its depth or its costs;
+  colour, so the picture reads without colour too (see
+  :data:`~tui_search.tui.view.cell_codes.GLYPHS`, which the legend shows).  Cells at least 4 wide
+  also carry a label (:mod:`~tui_search.tui.view.cell_labels`): the arrow of the move that reached
+  the cell and, where there is room, its depth or its costs;
 * **overview** -- half blocks (``▀`` with a foreground and a background colour), each half
   standing for a block of cells drawn by the state that matters most in it (see
   :data:`~tui_search.tui.view.cell_codes.RANK`), so every row and column of a 512x512 map shows in a

@@ -55,7 +55,8 @@ class MapTree(DirectoryTree):
             return False
         try:
             if self.flat:
-                return path.is_file() and not path.is_symlink() and path.suffix.lower() in MAP_ENDINGS
+                return (path.is_file() and not path.is_symlink()
+                        and path.suffix.lower() in MAP_ENDINGS)
             return path.is_dir() or (path.is_file() and path.suffix.lower() in MAP_ENDINGS)
         except (OSError, ValueError):
             return False

@@ -52,7 +52,7 @@ class RunPane(Vertical):
     def compose(self) -> ComposeResult:
         # The parts a layout may leave hidden (the Code panel, the note, the pane's own status
         # lines) are mounted when one first shows them (:meth:`_show_part`): a first frame
-        # without them neither composes nor styles them (~18 M instructions of the tutorial's)
+        # without them neither composes nor styles them (benchmarks/README.md, "startup").
         with self.lists:  # docked first: beside the map, it spans the pane's whole height
             yield self.frontier
             yield self.tree_panel
@@ -81,8 +81,8 @@ class RunPane(Vertical):
                 restyle: bool = True) -> None:
         """Lay the pane out: its lists beside or under the map, or not at all; its trees and
         its own status lines shown or not; with ``code``, the Code panel in the tree's place
-        (where the arrangement has room for it: fewer lines than a tree needs).  ``restyle=False``: the classes are set
-        and left for the next restyle of the screen."""
+        (where the arrangement has room for it: fewer lines than a tree needs).  ``restyle=False``:
+        the classes are set and left for the next restyle of the screen."""
         self.set_class(arrangement.beside, "-beside", update=restyle)
         self.stats.display = arrangement.pane_stats
         beside = arrangement.lists_width if arrangement.beside else 0

@@ -5,17 +5,17 @@ Resizing:
 
 Setting ``virtual_size`` through its reactive asks Textual for a layout of the whole screen,
 and the layout repaints every scrollbar on it: the panels change their length on nearly every
-step, and that was two thirds of a step (measured: 16 ms more a step, on maze512 and on the
-tutorial alike).  So :func:`set_virtual_size` sets the size without the layout and updates the
-panels' scrollbars itself; it asks for the layout only when a scrollbar must come or go.
+step, and that was most of a step (benchmarks/README.md, "step").  So :func:`set_virtual_size`
+sets the size without the layout and updates the panels' scrollbars itself; it asks for the
+layout only when a scrollbar must come or go.
 
 Scrollbars:
 
 Textual repaints a scrollbar whenever its length, window or position changes, though a queue
 of 2,000 entries that grows by one moves no glyph of it: on a step, repainting the two
-panels' scrollbars (some 45 lines) was a quarter of the step.  :func:`update_scrollbar` sets
-the same values and repaints only the rows whose cells change (Textual draws them).  A
-scrollbar is drawn at all only while it has a thumb (:func:`fit_bars`).
+panels' scrollbars was a good part of the step (benchmarks/README.md, "step").
+:func:`update_scrollbar` sets the same values and repaints only the rows whose cells change
+(Textual draws them).  A scrollbar is drawn at all only while it has a thumb (:func:`fit_bars`).
 """
 
 from __future__ import annotations
@@ -78,7 +78,7 @@ def update_scrollbar(bar: ScrollBar, **values: float) -> None:
     if not bar.vertical or len(after) != len(before):
         bar.refresh()
         return
-    refresh_rows(bar, [new != old for new, old in zip(after, before)], bar.size.width)
+    refresh_rows(bar, [new != old for new, old in zip(after, before, strict=True)], bar.size.width)
 
 
 def refresh_rows(widget: Widget, changed: list[bool], width: int) -> None:
@@ -132,9 +132,9 @@ def set_virtual_size(view: ScrollView, size: Size) -> None:
 def fit_bars(view: ScrollView) -> None:
     """Draw ``view``'s scrollbars only while one has a thumb (its lines overflow it): one
     without is a blank track of the panel's own background, which Textual renders and
-    composites all the same (~27 M instructions of the tutorial's first frame;
-    benchmarks/README.md, session 13).  Their room stays (``overflow: scroll``).  Before
-    its first layout the view is left as its CSS has it (hidden); its first Resize decides."""
+    composites all the same (benchmarks/README.md, "startup").  Their room stays
+    (``overflow: scroll``).  Before its first layout the view is left as its CSS has it
+    (hidden); its first Resize decides."""
     if not view.container_size:
         return
     window, virtual = view.scrollable_content_region.size, view.virtual_size

@@ -5,7 +5,8 @@ The reference -- the definition of every algorithm under every choice -- is the 
 hypothesis test in ``tests/engine``.  They exist because they pay: the app records a million
 expansions in about the time a bare BFS takes.
 
-* :mod:`~tui_search.engine.search.loops.tutorial`: BFS and DFS under the tutorial's rules, the hot paths;
+* :mod:`~tui_search.engine.search.loops.tutorial`: BFS and DFS under the tutorial's rules, the hot
+  paths;
 * :mod:`~tui_search.engine.search.loops.general`: BFS and DFS, graph search, under any other choice;
 * :mod:`~tui_search.engine.search.loops.tree`: BFS and DFS as tree search;
 * :mod:`~tui_search.engine.search.loops.iddfs`: iterative deepening, under every choice;

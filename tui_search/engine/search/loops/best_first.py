@@ -2,16 +2,17 @@
 and A*, a priority queue's.
 
 One loop serves the three: they differ only in the priority an entry is pushed with (``g``,
-``h`` or ``g + h``; :func:`~tui_search.engine.search.heuristics.priority_of`).  The definition is the
-reference loop (:class:`tui_search.engine.search.reference.ReferenceSearch`), and a
-hypothesis test in ``tests/engine`` holds these equal to it, array for array.
+``h`` or ``g + h``; :func:`~tui_search.engine.search.heuristics.priority_of`).  The definition is
+the reference loop (:class:`tui_search.engine.search.reference.ReferenceSearch`), and a hypothesis
+test in ``tests/engine`` holds these equal to it, array for array.
 
 The queue is a binary heap of ``(priority, event, cell, g)``: the event number breaks ties, so
 equal priorities come out in the order they were pushed (as in the frontier model the app
 shows, :class:`~tui_search.engine.run.frontier.PriorityFrontier`).  A cell is pushed again when
 reached with a lower g than its best so far (by more than
-:data:`~tui_search.engine.search.heuristics.CHEAPER_BY`: float noise), and an entry taken off with a g above its cell's
-best is stale: a discarded step ("lazy deletion": nothing is removed from the heap early).
+:data:`~tui_search.engine.search.heuristics.CHEAPER_BY`: float noise), and an entry taken off with a
+g above its cell's best is stale: a discarded step ("lazy deletion": nothing is removed from the
+heap early).
 
 Besides the arrays every loop records, these record ``step_g``: the g of the entry each step
 took off.  An event's g is its generating step's plus its move's cost (its length, 1 or
@@ -31,20 +32,20 @@ from struct import pack
 
 from tui_search.engine.maps.grid import DELTAS, SQRT2
 from tui_search.engine.search import heuristics
-from tui_search.engine.search.heuristics import CHEAPER_BY, heuristic_for
+from tui_search.engine.search.heuristics import CHEAPER_BY, Heuristic, heuristic_for
 from tui_search.engine.search.loops.tree import Path
 from tui_search.engine.search.problem import Problem
 from tui_search.engine.search.record import CHUNK, Record
 
 INF = float("inf")
 
-# What made the graph-search loop cheaper, counted with callgrind on maze512 row 3 under
-# corners never (recorded run against the bare heapq search): closing expanded cells under a
-# consistent heuristic, so most neighbours fail a byte test before any float is made (UCS 1.33
-# -> 1.28x, A* 1.28 -> 1.24x, with the next two); the corner test before the float test; the
-# record's lists appended as methods and the step numbers taken from the chunk's ``range``.
-# Tried and dropped: ``(priority, event, cell)`` entries with each cell's latest event for the
-# stale test (no fewer instructions: the test and the g then cost a lookup each).
+# What made the graph-search loop cheaper, counted in instructions against the bare heapq
+# search (benchmarks/README.md, "informed"): closing expanded cells under a consistent
+# heuristic, so most neighbours fail a byte test before any float is made; the corner test
+# before the float test; the record's lists appended as methods and the step numbers taken
+# from the chunk's ``range``.  Tried and dropped: ``(priority, event, cell)`` entries with
+# each cell's latest event for the stale test (no fewer instructions: the test and the g then
+# cost a lookup each).
 
 
 def _costed_moves(problem: Problem) -> tuple[tuple[int, float, int, int], ...]:
@@ -54,7 +55,7 @@ def _costed_moves(problem: Problem) -> tuple[tuple[int, float, int, int], ...]:
     rather than ask for the problem's corner masks (a pass over the whole map)."""
     rule = problem.semantics.corners
     out = []
-    for name, off in zip(problem.semantics.order, problem.offsets):
+    for name, off in zip(problem.semantics.order, problem.offsets, strict=True):
         dx, dy = DELTAS[name]
         diagonal = bool(dx and dy)
         sides = (dx, dy * problem.stride) if diagonal and rule != "always" else (0, 0)
@@ -75,13 +76,42 @@ def _blocked_sides_refused(problem: Problem) -> int:
     return 1 if problem.semantics.corners == "never" else 2
 
 
+def _start_heap(problem: Problem, rec: Record, best: array[float], goal_on_push: int,
+                heuristic: Heuristic, priority: str) -> list[tuple[float, int, int, float]]:
+    """Record the start's event and make the heap of its entry: empty when the start is the
+    goal tested on push (the run is then done)."""
+    start, stride = problem.start, problem.stride
+    rec.gen_node.append(start)
+    best[start] = 0.0
+    if start == goal_on_push:
+        rec.goal_gen, rec.done = 0, True
+        return []
+    if "h" in priority:
+        sy, sx = divmod(start, stride)
+        gy, gx = divmod(problem.goal, stride)
+        h0 = heuristic(abs(sx - gx), abs(sy - gy))
+        f0 = 0.0 + h0 if "g" in priority else h0
+    else:
+        f0 = 0.0
+    return [(f0, 0, start, 0.0)]
+
+
+def _flush(buffers: tuple[tuple[array[int] | array[float], list[int] | list[float], str], ...]
+           ) -> None:
+    """Append each list to its record array (``(array, list, typecode)``) and empty it."""
+    for arr, buf, code in buffers:
+        if buf:
+            arr.frombytes(pack(f"{len(buf)}{code}", *buf))
+            buf.clear()
+
+
 def best_first(problem: Problem, rec: Record, chunk: int = CHUNK, priority: str = "g+h"
                ) -> Iterator[int]:
     """Graph search in order of ``priority`` (the algorithm's: "g", "h" or "g+h")."""
     moves = [(off, cost, cost + CHEAPER_BY, a, b) for off, cost, a, b in _costed_moves(problem)]
     walls, stride = problem.walls, problem.stride
     refused = _blocked_sides_refused(problem)
-    goal, start = problem.goal, problem.start
+    goal = problem.goal
     goal_on_push = goal if problem.goal_test == "generate" else -1
     goal_on_pop = -1 if problem.goal_test == "generate" else goal
     heuristic = heuristic_for(problem.semantics.heuristic, problem.lowest)
@@ -99,33 +129,15 @@ def best_first(problem: Problem, rec: Record, chunk: int = CHUNK, priority: str 
         problem.semantics.heuristic, problem.semantics.order)) else 0
     rec.step_exp = step_exp = array("i", [-1])
     rec.step_g = step_g = array("d", [0.0])  # index 0: before any step
-    rec.gen_node.append(start)
-    best[start] = 0.0
-    if start == goal_on_push:
-        rec.goal_gen, rec.done = 0, True
-        return
-    if use_h:
-        sy, sx = divmod(start, stride)
-        h0 = heuristic(abs(sx - gx), abs(sy - gy))
-        f0 = 0.0 + h0 if use_g else h0
-    else:
-        f0 = 0.0
-    heap = [(f0, 0, start, 0.0)]
+    heap = _start_heap(problem, rec, best, goal_on_push, heuristic, priority)  # []: found
     pop, push = heapq.heappop, heapq.heappush
     nodes: list[int] = []
     gs: list[float] = []  # each step's g
     ends: list[int] = []
     exps: list[int] = []
     discarded: list[int] = []
-
-    def flush() -> None:
-        for arr, buf, code in ((rec.gen_node, nodes, "i"), (step_g, gs, "d"),
-                               (rec.step_end, ends, "i"), (step_exp, exps, "i"),
-                               (rec.discarded, discarded, "i")):
-            if buf:
-                arr.frombytes(pack(f"{len(buf)}{code}", *buf))
-                buf.clear()
-
+    buffers = ((rec.gen_node, nodes, "i"), (step_g, gs, "d"), (rec.step_end, ends, "i"),
+               (step_exp, exps, "i"), (rec.discarded, discarded, "i"))
     count = 1
     while heap:
         first = rec.steps + 1
@@ -142,7 +154,7 @@ def best_first(problem: Problem, rec: Record, chunk: int = CHUNK, priority: str 
                 continue
             if n == goal_on_pop:
                 ends.append(count)
-                flush()
+                _flush(buffers)
                 rec.goal_gen, rec.done = e, True
                 return
             closed[n] = close
@@ -176,11 +188,11 @@ def best_first(problem: Problem, rec: Record, chunk: int = CHUNK, priority: str 
                 count += 1
                 if m == goal_on_push:
                     ends.append(count)
-                    flush()
+                    _flush(buffers)
                     rec.goal_gen, rec.done = count - 1, True
                     return
             ends.append(count)
-        flush()
+        _flush(buffers)
         if heap:
             yield rec.steps
     rec.done = True

@@ -14,8 +14,9 @@ from tui_search.engine.search.record import Record
 
 
 def _flush(arr: array[int], buf: list[int]) -> None:
-    """Append ``buf`` to ``arr`` and empty it (a list of the caller's own, or a copy).  ``array.append`` converts each int through
-    ``PyArg_Parse`` (~100 ns); a list append and one ``struct.pack`` per chunk take ~45."""
+    """Append ``buf`` to ``arr`` and empty it (a list of the caller's own, or a copy).
+    ``array.append`` converts each int through ``PyArg_Parse``; a list append and one
+    ``struct.pack`` per chunk cost less (benchmarks/README.md, "engine")."""
     if buf:
         arr.frombytes(pack(f"{len(buf)}i", *buf))
         buf.clear()

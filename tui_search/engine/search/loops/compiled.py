@@ -3,12 +3,13 @@
 The compiled module (``tui_search/engine/search/_core.c`` and ``_core_loops.c``, built at ``pip
 install`` as an optional extension) records every algorithm under every choice into the same
 :class:`~tui_search.engine.search.record.Record` the Python loops write, so nothing downstream knows
-which core ran; its ``_core_position.c`` reads a record in bulk (:mod:`~tui_search.engine.run.rebuild`).  It runs unless the environment variable ``TUI_SEARCH_CORE`` says ``python``,
-the module was not built (no compiler), or the build is stale (the C source changed since: an
-editable install that was not rebuilt) -- then the Python loops run, and a stale build says so
-on stderr.  ``TUI_SEARCH_CORE=compiled`` makes a missing or stale module an error
-(:class:`CoreUnavailable`).  The reference loop stays the specification: a hypothesis test in
-``tests/engine`` holds both cores equal to it, array for array.
+which core ran; its ``_core_position.c`` reads a record in bulk
+(:mod:`~tui_search.engine.run.rebuild`).  It runs unless the environment variable
+``TUI_SEARCH_CORE`` says ``python``, the module was not built (no compiler), or the build is stale
+(the C source changed since: an editable install that was not rebuilt) -- then the Python loops run,
+and a stale build says so on stderr.  ``TUI_SEARCH_CORE=compiled`` makes a missing or stale module
+an error (:class:`CoreUnavailable`).  The reference loop stays the specification: a hypothesis test
+in ``tests/engine`` holds both cores equal to it, array for array.
 """
 
 from __future__ import annotations
@@ -52,8 +53,8 @@ def source_hash() -> str:
     """The C source's fingerprint as the build takes it (setup.py embeds it in the module):
     the CRC-32 of its files' bytes in order, and their total size.  A staleness check, not a
     seal: any edit of up to 32 bits in a row changes the CRC, any other all but surely.  Not
-    SHA-256: ``hashlib`` loads OpenSSL (~6 M instructions of every start), ``zlib`` is
-    already imported by Textual."""
+    SHA-256: ``hashlib`` loads OpenSSL at every start (benchmarks/README.md, "startup"),
+    ``zlib`` is already imported by Textual."""
     source = b"".join(path.read_bytes() for path in SOURCES)
     return f"crc32:{zlib.crc32(source):08x}:{len(source)}"
 

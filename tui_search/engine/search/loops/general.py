@@ -23,8 +23,8 @@ def general(
 ) -> Iterator[int]:
     """BFS (``lifo`` False) or DFS, graph search, under any visit rule, goal test and corner
     rule: visit on expand (a cell is closed when taken off, and taking off a closed cell is a
-    discarded step), the goal tested on expand, or a corner rule (each cell's moves).  The goal tests compare with -1 (no cell) where they do not
-    apply, so a step tests no choice."""
+    discarded step), the goal tested on expand, or a corner rule (each cell's moves).  The goal
+    tests compare with -1 (no cell) where they do not apply, so a step tests no choice."""
     sem = problem.semantics
     closed = bytearray(problem.walls)
     goal_on_push = problem.goal if problem.goal_test == "generate" else -1
@@ -45,21 +45,18 @@ def general(
 # The loops of `general` are four, not one with a branch a step: FIFO takes the events in the
 # order generated, so it walks the record like `bfs` (no queue, no counter); LIFO keeps a stack
 # like `dfs`; and each is written once for each visit rule, so that no step tests the rule.
-# Their successor loops are alike, but the split pays: BFS visit on expand on open 1024^2 went
-# from 3.3x a bare BFS (one deque serving both frontiers) to 2.9x (CPU time, the loop alone;
-# 4.4x before the chunk buffers; 2.0-2.3x with the discarded steps buffered too), and the
-# recorded run from 3.5x to 3.1x with one loop a visit rule (DFS: 4.6x to 4.2x).  What is left
-# over the bare floors (1.9x): the record (an append or two a step, the events stack of LIFO);
-# the run's peak-frontier table outside the loop, ~0.6x a bare BFS for 4.2 M steps, now costs
-# ~0.2x (:meth:`~tui_search.engine.run.peak.PeakTable._max_size`).
+# Their successor loops are alike, but the split pays, against one deque serving both
+# frontiers and against one loop testing the visit rule a step (benchmarks/README.md,
+# "choices").  What is left over the bare floors: the record (an append or two a step, the
+# events stack of LIFO); the run's peak-frontier table outside the loop
+# (:meth:`~tui_search.engine.run.peak.PeakTable._max_size`).
 
 
 def _plain_moves(problem: Problem) -> tuple[int, ...]:
     """For the loops of `general`: the moves every cell tries when no corner rule is in force,
     else ``()``; a loop tries ``plain or moves[mask[n]]``, so a corner-free search skips the
-    two lookups a cell (the ``bytes`` subscript is no specialised one).  Counted with callgrind
-    on a full traversal of open 256², DFS visit on expand: the loop went from 2.50x a bare
-    BFS to 2.48x (its recorded floor, ``benchmarks/baselines.py``: 2.43x)."""
+    two lookups a cell (the ``bytes`` subscript is no specialised one), which brings DFS
+    visit on expand close to its recorded floor (benchmarks/README.md, "choices")."""
     return problem.plain_moves if corner_free(problem.semantics) else ()
 
 
@@ -197,11 +194,11 @@ def _expand_lifo(problem: Problem, rec: Record, chunk: int, closed: bytearray,
     """`general` with a LIFO stack, visit on expand.  The stack holds events only, and the
     cell of every event of the run stays in a list (``cell_of``, the record's ``gen_node``
     as Python ints, written to it at each pause): a step reads its cell with a subscript
-    rather than a second pop, and a push is one append fewer.  On a full traversal of open
-    256² (four steps a cell, three of them discarded) this and the step numbers from the
-    chunk's ``range`` took the loop from 2.87x a bare BFS to 2.51x (callgrind); the price is
-    memory while recording: every event's cell (~36 bytes an event) where the stack held
-    the cells of its entries only."""
+    rather than a second pop, and a push is one append fewer.  On a full traversal (four
+    steps a cell, three of them discarded) this and the step numbers from the chunk's
+    ``range`` cut the loop's instructions (benchmarks/README.md, "choices"); the price is
+    memory while recording: every event's cell, as a Python int, where the stack held the
+    cells of its entries only."""
     moves, mask = problem.moves, problem.mask
     plain = _plain_moves(problem)
     rec.step_exp = array("i", [-1])

@@ -1,9 +1,9 @@
 """Iterative deepening: depth-limited DFS with limits 0, 1, 2, ..., one loop for every choice.
 
 Its record has an iteration per limit, each from a new root event, and each event's depth
-(:class:`~tui_search.engine.search.record.Record`'s ``gen_depth`` and ``iter_*``).  The specification
-is the reference loop (:mod:`tui_search.engine.search.reference`); a hypothesis test in
-``tests/engine`` holds this equal to it, array for array.
+(:class:`~tui_search.engine.search.record.Record`'s ``gen_depth`` and ``iter_*``).  The
+specification is the reference loop (:mod:`tui_search.engine.search.reference`); a hypothesis test
+in ``tests/engine`` holds this equal to it, array for array.
 """
 
 from __future__ import annotations
@@ -14,6 +14,24 @@ from collections.abc import Iterator
 from tui_search.engine.search.loops.tree import Path
 from tui_search.engine.search.problem import Problem
 from tui_search.engine.search.record import CHUNK, Record
+
+
+def _new_iteration(rec: Record, gen_depth: array[int], path: Path, tree: bool, start: int,
+                   limit: int) -> int:
+    """Begin iteration ``limit`` (its first step, its root, its limit) with a new root event
+    at the start, at depth 0 (``gen_depth``: the record's); the root's event number."""
+    root = len(rec.gen_node)
+    if limit:
+        rec.iter_first_step.append(len(rec.step_end))
+        rec.iter_root.append(root)
+        rec.iter_limit.append(limit)
+    else:
+        rec.iter_limit[0] = 0
+    rec.gen_node.append(start)
+    gen_depth.append(0)
+    if tree:
+        path.add(-1)
+    return root
 
 
 def iddfs(problem: Problem, rec: Record, chunk: int = CHUNK) -> Iterator[int]:
@@ -39,17 +57,7 @@ def iddfs(problem: Problem, rec: Record, chunk: int = CHUNK) -> Iterator[int]:
     start = problem.start
     steps, pause, limit = 0, chunk, 0
     while True:
-        root = len(gen_node)
-        if limit:
-            rec.iter_first_step.append(len(rec.step_end))
-            rec.iter_root.append(root)
-            rec.iter_limit.append(limit)
-        else:
-            rec.iter_limit[0] = 0
-        add(start)
-        add_depth(0)
-        if tree:
-            path.add(-1)
+        root = _new_iteration(rec, gen_depth, path, tree, start, limit)
         if test_on_push and start == goal:
             rec.goal_gen, rec.done = root, True
             return

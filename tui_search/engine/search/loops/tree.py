@@ -3,8 +3,8 @@
 Tree search is exponential by nature (a run stops at its step limit), so its loop is written
 plainly; it exists because the app teaches what graph search saves.  :class:`Path` serves
 every tree search (iterative deepening's and the priority queue's too).  The specification is
-the reference loop (:mod:`tui_search.engine.search.reference`); a hypothesis test in ``tests/engine``
-holds this equal to it, array for array.
+the reference loop (:mod:`tui_search.engine.search.reference`); a hypothesis test in
+``tests/engine`` holds this equal to it, array for array.
 """
 
 from __future__ import annotations

@@ -68,10 +68,9 @@ def dfs(problem: Problem, rec: Record, chunk: int = CHUNK) -> Iterator[int]:
 
     Written for CPython's specialising interpreter: the lists' ``append`` and ``pop`` are
     called as methods (``cells.append(m)``, which 3.11 runs inline) rather than as bound
-    methods kept in locals, and every cell tries the same moves (no corner mask to look up).
-    Together they cut ~7 % of a bare BFS's instructions from a full traversal of open 256²:
-    the loop went from 1.28x a bare BFS to 1.21x, the recorded run from 1.30x to 1.23x
-    (callgrind; the bare DFS is 1.00x)."""
+    methods kept in locals, and every cell tries the same moves (no corner mask to look up):
+    fewer instructions a step, counted on a full traversal (benchmarks/README.md,
+    "choices")."""
     goal, offsets = problem.goal, problem.plain_moves
     closed = bytearray(problem.walls)
     rec.step_exp = array("i", [-1])
