@@ -278,3 +278,17 @@ def test_a_heuristic_for_searches_that_use_none_is_refused(tmp_path: Path) -> No
         load_exercise(path)
     assert str(caught.value) == (f"{path}:6:13: heuristic: none of the searches uses a "
                                  "heuristic (greedy and astar do)")
+
+
+def test_a_verdict_groups_its_figures_in_thousands() -> None:
+    """A corridor 1,200 moves long: "both paths have 1,200 moves", as every count is said;
+    the comparison's sentence too."""
+    from tui_search.engine.maps.grid import Grid
+    from tui_search.engine.search.compare import comparison, summary_sentence
+
+    corridor = Grid(1, 1201, start=(0, 0), goal=(0, 1200))
+    verdict = grade(built_in_exercise(2), corridor)
+    assert verdict.reason.startswith("both paths have 1,200 moves; BFS expanded 1,200 nodes")
+    outcomes = [out for _, _, out in verdict.outcomes]
+    assert summary_sentence(comparison(["BFS", "DFS"], outcomes)) == (
+        "BFS expanded 1,200 nodes, DFS 1,200; both paths have 1,200 moves")

@@ -110,7 +110,7 @@ def _narrate(run: Run) -> str:
     if k == 0:
         first = f"START {cell_text(run.grid.start)} is on the {word}"
         if limit is not None:
-            first += f" (depth limit {limit})"
+            first += f" (depth limit {group_digits(limit)})"
         if run.at_end and run.found:
             return f"{first}: the start is the goal"
         return f"{first}. Press n to expand it."
@@ -123,7 +123,7 @@ def _narrate(run: Run) -> str:
     dirs = [run.nodes.move(h) for h in added]
     prefix = ""
     if limit is not None and run.steps.first_of_iteration(run.steps.iteration_of(k)) == k:
-        prefix = f"Depth limit {limit}, a new iteration from START. "
+        prefix = f"Depth limit {group_digits(limit)}, a new iteration from START. "
     if run.at_end and run.found:
         goal = cell_text(run.nodes.cell(run.nodes.goal))
         if run.nodes.goal == expanded:  # the goal tested when taken off the frontier
@@ -145,7 +145,8 @@ def _narrate(run: Run) -> str:
     elif dirs:
         text = f"{prefix}Expanded {node}: added {', '.join(dirs)} to the {word}"
     elif limit is not None and run.nodes.depth(expanded) >= limit:
-        text = f"{prefix}Expanded {node} at the depth limit {limit}: no successors added"
+        text = (f"{prefix}Expanded {node} at the depth limit {group_digits(limit)}: no "
+                "successors added")
     else:
         text = f"{prefix}Expanded {node}: no new successors"
     if run.at_end and run.gave_up:
@@ -153,13 +154,13 @@ def _narrate(run: Run) -> str:
     if run.at_end and run.now.frontier_len() and limit is None:
         # ended with cells still to expand: only a replayed trace stops so (a search of
         # the app goes on until its frontier is empty), and nothing blocked it
-        return (f"{text}. It stops here, {run.now.frontier_len()} still on the {word}: "
+        return (f"{text}. It stops here, {group_digits(run.now.frontier_len())} still on the {word}: "
                 f"no path found")
     if run.at_end:  # done, not found
         why = blocked_by(run)
         why = f" — {why}" if why else ""
         if limit is not None:
-            return f"{text}. Depth limit {limit} cut nothing off: no path{why}"
+            return f"{text}. Depth limit {group_digits(limit)} cut nothing off: no path{why}"
         return f"{text}. Frontier empty: no path{why}"
     return text
 
@@ -217,7 +218,7 @@ def result_text(run: Run) -> str:
         return "no path"
     moves = run.moves() or []
     cost = run.grid.path_cost(run.path() or [])
-    text = f"path: {len(moves)} moves, cost {cost:.2f}"
+    text = f"path: {group_digits(len(moves))} moves, cost {cost:.2f}"
     lowest = lowest_cost(run)
     if lowest is not None:
         text += " (the lowest)" if cost <= lowest * (1 + 1e-9) else f" (lowest {lowest:.2f})"
