@@ -83,16 +83,17 @@ def exit_with_server(app: Any, every: float = WATCH_EVERY) -> None:
 
 def serve(app_args: list[str], fork_command: list[str], *, host: str | None,
           port: int | None, title: str, save_folder: str | None, own_folders: bool,
-          memory_mb: int | None) -> int:
+          memory_mb: int | None, token: str | None = None) -> int:
     """Serve the app ``app_args`` until Ctrl+C, each visitor's app forked by the process
-    ``fork_command`` starts; 0, or a ServeError when the address cannot be listened on."""
+    ``fork_command`` starts; 0, or a ServeError when the address cannot be listened on.
+    ``token``: the one the links need off loopback (None: a random one)."""
     from tui_search.serve.guard import Guard
 
     host = host or DEFAULT_HOST
     port = port or DEFAULT_PORT
     server = make_server(app_args, fork_command, host, port, title, saving=save_folder,
                          own_folders=own_folders, memory_mb=memory_mb or APP_MEMORY_MB,
-                         guard=Guard.for_host(host))
+                         guard=Guard.for_host(host, token))
     try:
         server.serve()
     except OSError as exc:
