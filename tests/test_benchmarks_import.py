@@ -247,11 +247,14 @@ def test_the_optima_command_resumes_from_its_log(tmp_path, capsys) -> None:
 
 
 def test_the_class_load_floor_is_measured_on_the_fork_server() -> None:
-    """class_load's floor (untimed): one app forked, its CPU to the first frame read."""
+    """class_load's floor (untimed): apps forked, one alone then two together, each one's CPU
+    to its first frame read."""
     from benchmarks.class_load import floor_cpu
 
     (cpu,) = floor_cpu(1)
     assert 0 < cpu < 60
+    together = floor_cpu(1, at_once=2)
+    assert len(together) == 2 and all(0 < c < 60 for c in together)
 
 
 def test_the_startup_floors_count_the_screens_widgets() -> None:

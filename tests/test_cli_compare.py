@@ -71,7 +71,9 @@ def test_compare_exits_3_when_any_run_gives_up(capsys) -> None:
         (["--exercise", ""], "--exercise: the name is empty (give 1, 2 or an exercise file)"),
         (["--exercise", " "], "--exercise: the name is empty"),
         (["--exercise", "1", "--corners", "never"], "leave out --corners"),
-        (["--exercise", "2", "--order", "N,W,S,E"], "leave out --order"),
+        (["--exercise", "2", "--order", "N,W,S,E"],
+         ("--exercise grades under the exercise's own rules: leave out --order (an exercise "
+         "file sets its rules: docs/04-exercises.md)")),
         (["--exercise", "3"], "--exercise 3: the tutorial has exercises 1 and 2"),
     ],
 )

@@ -37,8 +37,11 @@ def folder(tmp_path: Path) -> list[str]:
 def test_a_line_a_map_and_the_summary(capsys, folder: list[str]) -> None:
     code, out, err = run_cli(capsys, "--exercise", "1", "--headless", *folder)
     lines = out.splitlines()
-    assert code == 1 and err == "" and len(lines) == len(folder) + 1
-    by_name = {Path(line.split(": ")[0]).name: line for line in lines[:-1]}
+    assert code == 1 and err == "" and len(lines) == 1 + len(folder) + 1
+    assert lines[0] == ("Exercise 1: Change the location of the target such that breadth "
+                        "first search will give a faster result than depth first search "
+                        "(expand less nodes).")  # the title and the words, once, at the top
+    by_name = {Path(line.split(": ")[0]).name: line for line in lines[1:-1]}
     assert by_name["broken.txt"].endswith(
         "broken.txt: unreadable — line 4, column 7: unknown cell character 'q'")
     assert "no-goal.txt: unreadable — no goal 'G' in the map" in by_name["no-goal.txt"]
@@ -88,12 +91,25 @@ def test_csv_has_a_column_per_condition_field(capsys, folder: list[str]) -> None
     code, out, _ = run_cli(capsys, "--exercise", "1", "--headless", "--csv", *folder)
     rows = list(csv.reader(io.StringIO(out)))
     assert code == 1
-    assert rows[0] == ["file", "verdict", "bfs.found", "dfs.found", "bfs.expanded",
+    assert rows[0] == ["file", "verdict", "reason", "bfs.found", "dfs.found", "bfs.expanded",
                        "dfs.expanded"]
     table = {Path(r[0]).name: r[1:] for r in rows[1:]}
-    assert table["exercise1-goal-moved.txt"] == ["solved", "true", "true", "5", "18"]
-    assert table["tutorial.txt"] == ["not solved", "true", "true", "22", "7"]
-    assert table["broken.txt"] == ["unreadable", "", "", "", ""]
+    assert table["exercise1-goal-moved.txt"] == [
+        "solved", "BFS expanded 5 nodes, DFS 18; BFS's path has 4 moves, DFS's 8", "true",
+        "true", "5", "18"]
+    assert table["tutorial.txt"] == [
+        "not solved", "BFS expanded 22 nodes, DFS 7; both paths have 7 moves", "true", "true",
+        "22", "7"]
+    assert table["broken.txt"] == ["unreadable", "line 4, column 7: unknown cell character 'q'",
+                                   "", "", "", ""]
+    assert table["no-goal.txt"][:2] == ["unreadable", "no goal 'G' in the map"]
+    assert table["exercise1-bfs-wins.txt"][1].endswith(
+        " (hint: the exercise changes only the goal: here the map's size changed)")
+    # each reason is the text report's words after its dash
+    _, text, _ = run_cli(capsys, "--exercise", "1", "--headless", *folder)
+    said = {Path(line.split(": ")[0]).name: line.split(" — ", 1)[1]
+            for line in text.splitlines()[1:-1]}
+    assert said == {name: row[1] for name, row in table.items()}
 
 
 def test_a_teacher_s_exercise_file_grades_a_class(capsys, tmp_path: Path) -> None:
@@ -106,10 +122,25 @@ def test_a_teacher_s_exercise_file_grades_a_class(capsys, tmp_path: Path) -> Non
     code, out, _ = run_cli(capsys, "--exercise", str(exercise), "--headless",
                            str(tmp_path / "tutorial.txt"), str(moved))
     assert code == 1
-    assert out.splitlines()[1] == (f"{moved}: not solved — changed the start, which the "
-                                   "exercise does not allow; both found the goal; Greedy's "
-                                   "path costs 11.07, A*'s 9.66")
-    assert out.splitlines()[-1] == "0 of 2 solved, 2 not solved"
+    lines = out.splitlines()
+    assert lines[0] == ("Greedy is not optimal: Move obstacles so that greedy best-first's "
+                        "path costs more than A*'s.")
+    assert lines[2] == (f"{moved}: not solved — changed the start, which the "
+                        "exercise does not allow; both found the goal; Greedy's "
+                        "path costs 11.07, A*'s 9.66")
+    assert lines[-1] == "0 of 2 solved, 2 not solved"  # no hint: the exercise has none
+    exercise.write_text(GREEDY + 'hint = "Greedy looks only at h."\norder = "N,E,S,W"\n')
+    _, out, _ = run_cli(capsys, "--exercise", str(exercise), "--headless", "--csv",
+                        str(tmp_path / "tutorial.txt"), str(moved))
+    assert next(csv.reader(io.StringIO(out.splitlines()[2])))[:3] == [
+        str(moved), "not solved", ("changed the start, which the exercise does not allow; "
+        "no path to the goal")]  # under its rules: with 4 moves the goal is walled in
+    _, out, _ = run_cli(capsys, "--exercise", str(exercise), "--headless",
+                        str(tmp_path / "tutorial.txt"), str(moved))
+    lines = out.splitlines()
+    assert lines[1] == "Rules: moves N,E,S,W"
+    assert lines[-2:] == ["0 of 2 solved, 2 not solved",
+                          "Hint (shown while not solved): Greedy looks only at h."]
 
 
 def test_a_map_whose_searches_gave_up_reads_not_graded(capsys, tmp_path: Path) -> None:
@@ -119,7 +150,7 @@ def test_a_map_whose_searches_gave_up_reads_not_graded(capsys, tmp_path: Path) -
     code, out, _ = run_cli(capsys, "--exercise", "1", "--headless", "--max-steps", "10",
                            str(long), str(long))
     assert code == 1
-    assert out.splitlines()[0] == (f"{long}: not graded — BFS and DFS gave up at 10 steps "
+    assert out.splitlines()[1] == (f"{long}: not graded — BFS and DFS gave up at 10 steps "
                                    "before finding the goal (BFS expanded 10 nodes, DFS 10)")
     assert out.splitlines()[-1] == "0 of 2 solved, 2 not graded"
 
@@ -134,7 +165,7 @@ def test_a_condition_naming_no_field_has_no_dash_after_the_verdict(capsys,
     _, one, _ = run_cli(capsys, "--exercise", str(exercise), "--headless", maps[0])
     _, several, _ = run_cli(capsys, "--exercise", str(exercise), "--headless", *maps)
     assert one == f"{maps[0]}: exercise always solved\n"
-    assert several.splitlines()[0] == f"{maps[0]}: solved"
+    assert several.splitlines()[1] == f"{maps[0]}: solved"
 
 
 def test_a_bad_exercise_file_is_bad_input(capsys, tmp_path: Path) -> None:

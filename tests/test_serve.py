@@ -257,24 +257,55 @@ def test_the_page_sends_its_websocket_to_the_address_the_browser_used(tmp_path: 
         assert f'data-session-websocket-url="ws://{server.url[7:]}ws"' in page
 
 
-def test_the_banner_for_every_network_says_how_to_reach_it_and_who_can() -> None:
+def test_the_banner_for_every_network_links_each_address_with_the_token_loopback_last() -> None:
+    from tui_search.serve.addresses import Address
     from tui_search.serve.web import banner_text
 
-    assert banner_text("0.0.0.0", 8123, "tutorial.txt", None, True, "T0K").splitlines() == [
+    found = [Address("192.168.1.20", "wlan0"), Address("10.0.0.7", "eth0"),
+             Address("127.0.0.1", "lo")]
+    assert banner_text("0.0.0.0", 8123, "tutorial.txt", None, True, "T0K",
+                       found).splitlines() == [
         ("Serving tui-search (tutorial.txt) on port 8123 of every network this computer is on "
          "— one app per visitor, visitors cannot save or open files."),
-        ("Open http://THIS-COMPUTER'S-ADDRESS:8123/?token=T0K in the class's browsers (and "
-         "allow the port through the firewall)."),
+        ("Open the link for the class's network in their browsers (and allow the port "
+         "through the firewall):"),
+        "  http://192.168.1.20:8123/?token=T0K  (wlan0)",
+        "  http://10.0.0.7:8123/?token=T0K      (eth0)",
+        "  http://127.0.0.1:8123/?token=T0K     (lo: this computer only)",
         ("Warning: every computer on this computer's networks can reach port 8123; only a "
          "browser given the link with its token can open an app."),
         "Press Ctrl+C to stop.",
     ]
+    six = banner_text("::", 80, "t", None, True, "T", [Address("fd00::2", "eth0"),
+                                                        Address("::1")])
+    assert six.splitlines()[2:4] == ["  http://[fd00::2]:80/?token=T  (eth0)",
+                                     "  http://[::1]:80/?token=T      (this computer only)"]
     assert banner_text("10.1.2.3", 80, "t", "/s", False, "T").splitlines()[:2] == [
         ("Serving tui-search (t) on http://10.1.2.3:80/?token=T — one app per visitor, "
          "visitors may save and open maps in /s only."),
         ("Warning: every computer that can reach 10.1.2.3 can reach port 80; only a browser "
          "given the link with its token can open an app."),
     ]
+
+
+def test_this_computers_addresses_are_found_each_once_loopback_last() -> None:
+    """The real call: at least the loopback, last; no link-local or repeated address; the
+    fallback (the name's and the route's addresses) never fails either."""
+    import ipaddress
+    import socket
+
+    from tui_search.serve.addresses import Address, _by_name_and_route, loopback_last, own_addresses
+
+    for family, loopback in ((socket.AF_INET, "127.0.0.1"), (socket.AF_INET6, "::1")):
+        found = own_addresses(family)
+        assert found[-1].ip == loopback, found
+        ips = [ipaddress.ip_address(a.ip) for a in found]
+        assert len(set(ips)) == len(ips) and not any(ip.is_link_local for ip in ips)
+        assert all(ip.version == (4 if family == socket.AF_INET else 6) for ip in ips)
+        assert all(isinstance(a, Address) for a in _by_name_and_route(family))
+    assert loopback_last([Address("127.0.0.1"), Address("fe80::1"), Address("10.0.0.1"),
+                          Address("10.0.0.1", "again")]) == [Address("10.0.0.1"),
+                                                             Address("127.0.0.1")]
 
 
 def test_another_sites_page_may_not_open_an_app() -> None:

@@ -294,3 +294,39 @@ def test_a_visitors_folder_is_made_by_the_app_from_its_id(tmp_path) -> None:
     with pytest.raises(NameRefused, match="not a visitor's id"):
         FileAccess.for_app(True, str(tmp_path), "../x")
     assert FileAccess.for_app(False, str(tmp_path), "0a1b2c") == FileAccess()
+
+
+def test_servers_behind_one_proxy_share_the_token_of_their_token_file(tmp_path: Path) -> None:
+    """Two servers started with one ``--token-file`` (as behind a proxy, docs/06-browser.md):
+    each prints that token and opens an app with it, reached by an address the student typed
+    (the proxy passes it as ``Host``); another token is refused by both."""
+    token = "class-of-2026_" + "x" * 10
+    (tmp_path / "class.token").write_text(token + "\n")
+    flags = ("--host", "0.0.0.0", "--token-file", str(tmp_path / "class.token"))
+    with served(*flags) as first, served(*flags) as second:
+        for server in (first, second):
+            assert server.token == token and f"?token={token}" in server.banner
+            assert asyncio.run(status(server.url + "?token=" + "y" * 24)) == 403
+            assert asyncio.run(status(server.url, host="10.1.2.3:80",
+                                      cookies={"tui_search_token": token})) == 200
+            _, screen = asyncio.run(first_screen(server.page, "Quit"))
+            assert "tutorial" in screen
+
+
+@pytest.mark.parametrize(("flags", "message"), [
+    (["--token-file", "{tmp}/gone"], "cannot read it: no such file"),
+    (["--token-file", "{tmp}/short"], "the first line must be a token of at least 16"),
+    (["--token-file", "{tmp}/short", "--host", "127.0.0.1"], "needs no token: give --host"),
+])
+def test_a_bad_token_file_is_one_line(capsys, tmp_path: Path, flags: list[str],
+                                      message: str) -> None:
+    from tests.test_cli import run_cli
+
+    (tmp_path / "short").write_text("abc\n")
+    argv = [f.format(tmp=tmp_path) for f in flags]
+    if "--host" not in argv:
+        argv += ["--host", "0.0.0.0"]
+    code, out, err = run_cli(capsys, "--serve", *argv)
+    assert (code, out) == (2, "") and message in err and err.count("\n") == 1
+    code, _, err = run_cli(capsys, "--token-file", str(tmp_path / "short"))
+    assert code == 2 and "--token-file goes with --serve" in err

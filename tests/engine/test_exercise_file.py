@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.helpers import MAPS
+from tests.helpers import MAPS, ROOT
 from tui_search.engine.course import exercise_file
 from tui_search.engine.course.exercise_file import built_in_exercise, find_exercise, load_exercise
 from tui_search.engine.course.grading import grade
@@ -201,3 +201,94 @@ def test_python_3_10_reads_exercises_with_tomli(monkeypatch, tmp_path: Path) -> 
     assert (bad.value.line, bad.value.col) == (1, 7)
     pyproject = real.loads((Path(__file__).parents[2] / "pyproject.toml").read_text())
     assert 'tomli>=1.1; python_version < "3.11"' in pyproject["project"]["dependencies"]
+
+
+# -- the rules an exercise sets ------------------------------------------------------------
+
+SQUEEZE = """\
+title = "Between the walls"
+text = "Reach the goal."
+map = "squeeze.txt"
+searches = ["bfs", "astar"]
+solved = "bfs.found"
+"""
+
+
+def test_the_rules_an_exercise_sets_are_every_search_s(tmp_path: Path) -> None:
+    """With eight moves the robot slips diagonally between two walls; with ``order`` (N, E,
+    S, W) it cannot, in every search the exercise runs, and the verdict says so."""
+    (tmp_path / "squeeze.txt").write_text("S#\n#G\n")
+    eight = load_exercise(write(tmp_path, SQUEEZE, "eight.toml"))
+    assert eight.rules == "" and grade(eight, eight.grid).solved
+    four = load_exercise(write(tmp_path, SQUEEZE + 'order = "N,E,S,W"\n', "four.toml"))
+    assert four.rules == "moves N,E,S,W"
+    assert [c.semantics.order for _, c in four.searches] == [("N", "E", "S", "W")] * 2
+    verdict = grade(four, four.grid)
+    assert not verdict.solved and verdict.reason == "no path to the goal"
+    never = load_exercise(write(tmp_path, SQUEEZE + 'corners = "never"\n', "never.toml"))
+    assert never.rules == "corners: never" and not grade(never, never.grid).solved
+    every = load_exercise(write(tmp_path, SQUEEZE + (
+        'order = "N,E,S,W,NE,SE,SW,NW"\ncorners = "one"\ngoal_test = "expand"\n'
+        'heuristic = "manhattan"\ntree_search = true\n'), "every.toml"))
+    (_, bfs), (_, astar) = every.searches
+    assert (bfs.semantics.corners, bfs.semantics.goal_test, bfs.semantics.tree_search,
+            astar.semantics.heuristic) == ("one", "expand", True, "manhattan")
+    assert every.rules == ("moves N,E,S,W,NE,SE,SW,NW · corners: one · tree search · "
+                           "goal test on expand · heuristic manhattan")
+    visits = load_exercise(write(tmp_path, SQUEEZE.replace('"astar"', '"dfs"')
+                                 + 'visit = "expand"\n', "visit.toml"))
+    assert all(c.semantics.visit == "expand" for _, c in visits.searches)
+
+
+def test_the_shipped_maze_exercise_is_four_connected() -> None:
+    """tests/data/exercises/maze-4-connected.toml (docs/04-exercises.md's example): unsolved
+    as it starts, solved with the goal moved, under its own rules."""
+    ex = load_exercise(ROOT / "tests/data/exercises/maze-4-connected.toml")
+    assert ex.rules == "moves N,E,S,W · corners: never"
+    assert not grade(ex, ex.grid).solved
+    grid = ex.grid.copy()
+    grid.goal = (8, 0)
+    assert grade(ex, grid).said == "BFS's path has 8 moves, DFS's 16; BFS expanded 10 nodes, DFS 58"
+
+
+@pytest.mark.parametrize(("rules", "where", "message"), [
+    ('order = "N,Q"\n', ":6:9", "order: "),
+    ('order = ["N", "E"]\n', ":6:9", "order: expected a string"),
+    ('corners = "sometimes"\n', ":6:11", "corners: 'sometimes': use always, one, never"),
+    ('visit = "later"\n', ":6:9", "visit: 'later': use generate, expand"),
+    ('goal_test = "never"\n', ":6:13", "goal_test: 'never': use generate, expand"),
+    ('heuristic = "guess"\n', ":6:13", "heuristic: 'guess': use octile"),
+    ('tree_search = "yes"\n', ":6:15", "tree_search: expected true or false"),
+    ('tree_search = true\nvisit = "expand"\n', ":7:9", "visit: does not apply with tree_search"),
+    ('visit = "expand"\n', ":6:9", "visit: the visit rule does not apply to A*"),
+])
+def test_a_bad_rule_names_its_line_and_column(tmp_path: Path, rules: str, where: str,
+                                              message: str) -> None:
+    (tmp_path / "squeeze.txt").write_text("S#\n#G\n")
+    path = write(tmp_path, SQUEEZE + rules, "rules.toml")
+    with pytest.raises(MapError) as caught:
+        load_exercise(path)
+    assert str(caught.value).startswith(f"{path}{where}: {message}"), str(caught.value)
+
+
+def test_a_heuristic_for_searches_that_use_none_is_refused(tmp_path: Path) -> None:
+    (tmp_path / "squeeze.txt").write_text("S#\n#G\n")
+    path = write(tmp_path, SQUEEZE.replace('"astar"', '"dfs"') + 'heuristic = "zero"\n')
+    with pytest.raises(MapError) as caught:
+        load_exercise(path)
+    assert str(caught.value) == (f"{path}:6:13: heuristic: none of the searches uses a "
+                                 "heuristic (greedy and astar do)")
+
+
+def test_a_verdict_groups_its_figures_in_thousands() -> None:
+    """A corridor 1,200 moves long: "both paths have 1,200 moves", as every count is said;
+    the comparison's sentence too."""
+    from tui_search.engine.maps.grid import Grid
+    from tui_search.engine.search.compare import comparison, summary_sentence
+
+    corridor = Grid(1, 1201, start=(0, 0), goal=(0, 1200))
+    verdict = grade(built_in_exercise(2), corridor)
+    assert verdict.reason.startswith("both paths have 1,200 moves; BFS expanded 1,200 nodes")
+    outcomes = [out for _, _, out in verdict.outcomes]
+    assert summary_sentence(comparison(["BFS", "DFS"], outcomes)) == (
+        "BFS expanded 1,200 nodes, DFS 1,200; both paths have 1,200 moves")

@@ -36,7 +36,9 @@ def test_the_teacher_s_lesson_uses_every_key_and_each_block_carries_the_rest_on(
     assert moves is not None and moves.order == ("N", "W", "S", "E")
     assert (moves.corners, moves.tree_search, moves.goal_test, moves.spec) == (
         "never", True, None, "bfs")
-    assert side is not None and (side.spec, side.exercise, side.corners) == ("bfs,dfs", 2, "one")
+    # an exercise's rules are the section's: exercise 2's, the tutorial's (corners: always)
+    assert side is not None and (side.spec, side.exercise, side.corners) == ("bfs,dfs", 2,
+                                                                             "always")
     assert back is not None and (back.spec, back.exercise, back.step) == ("ucs", None, 1)
 
 
@@ -64,7 +66,10 @@ BAD = [
     ("## A\n```lesson\norder: N,UP\n```\n", "lesson.md:3:8: order 'N,UP': unknown direction"),
     ("## A\n```lesson\ncompare: bfs\n```\n", "lesson.md:3:10: compare 'bfs': compare two"),
     ("## A\n```lesson\ncode: yes\n```\n", "lesson.md:3:7: code 'yes': use on or off"),
-    ("## A\n```lesson\nexercise: 3\n```\n", "lesson.md:3:11: exercise '3': use 1, 2, off"),
+    ("## A\n```lesson\nexercise: 3\n```\n", ("lesson.md:3:11: exercise '3': use 1, 2, an "
+                                           "exercise file (FILE.toml, relative to the "
+                                           "lesson file), off")),
+    ("## A\n```lesson\nexercise: gone.toml\n```\n", "lesson.md:3:11: exercise 'gone.toml': "),
     ("## A\n```lesson\nmap: nowhere.txt\n```\n", "lesson.md:3:6: map 'nowhere.txt': "),
     # a combination: at the key the block set last that makes it (its line and column)
     ("## A\n```lesson\nalgorithm: iddfs\n  visit: expand\n```\n",
@@ -87,6 +92,39 @@ def test_a_bad_block_is_one_line_naming_file_line_and_column(text: str, expected
         parse_lesson(text, tmp_path / "lesson.md", "lesson.md")
     message = str(info.value).replace(str(tmp_path / "lesson.md"), "lesson.md")
     assert message.startswith(expected) and "\n" not in message
+
+
+MAZE = ROOT / "tests" / "data" / "exercises" / "maze-4-connected.toml"
+
+
+def test_a_section_shows_an_exercise_file_beside_the_lesson_under_its_rules(
+        tmp_path: Path) -> None:
+    """``exercise: FILE.toml`` is read relative to the lesson; the section takes the
+    exercise's rules (its searches and the panes run under them), and the next section keeps
+    them as it keeps any choice; a choice the same block names otherwise is refused there."""
+    (tmp_path / "maze.toml").write_text(MAZE.read_text())
+    lesson = parse_lesson("## A\n```lesson\nexercise: maze.toml\nstep: 3\n```\n"
+                          "## B\n```lesson\nexercise: off\n```\n",
+                          tmp_path / "lesson.md")
+    first, second = (s.state for s in lesson.sections)
+    assert first is not None and second is not None
+    assert not isinstance(first.exercise, int) and first.exercise is not None
+    assert first.exercise.title == "The long way round"
+    assert (first.order, first.corners, first.step) == (("N", "E", "S", "W"), "never", 3)
+    assert first.semantics == first.exercise.semantics and first.map is None  # its own map
+    assert second.exercise is None and second.order == ("N", "E", "S", "W")
+    with pytest.raises(MapError) as info:
+        parse_lesson("## A\n```lesson\ncorners: one\nexercise: maze.toml\n```\n",
+                     tmp_path / "lesson.md")
+    assert str(info.value) == (f"{tmp_path / 'lesson.md'}:3:1: corners: the exercise runs "
+                               "under its own rules (moves N,E,S,W · corners: never): leave "
+                               "out corners")
+    (tmp_path / "bad.toml").write_text(MAZE.read_text().replace('order = "N,E,S,W"',
+                                                                 'order = "N,E,UP"'))
+    with pytest.raises(MapError) as info:
+        parse_lesson("## A\n```lesson\nexercise: bad.toml\n```\n", tmp_path / "lesson.md")
+    assert str(info.value).startswith(f"{tmp_path / 'lesson.md'}:3:11: exercise 'bad.toml': "
+                                      f"{tmp_path / 'bad.toml'}:12:9: order: ")
 
 
 def test_the_command_line_lists_the_lessons_and_refuses_a_bad_one(capsys,

@@ -34,6 +34,8 @@ from tui_search.tui.dialogs.save_as import SaveAsScreen
 from tui_search.tui.model import playback
 from tui_search.tui.model.session import NEEDS_ENDPOINTS
 from tui_search.tui.screens.main import MainScreen
+from tui_search.tui.view.cell_codes import START
+from tui_search.tui.widgets.cell_style import CURSOR
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.key_bar import KeyBar
@@ -140,9 +142,15 @@ async def test_starts_paused_at_step_0_with_the_cursor_on_the_start() -> None:
         assert status.startswith("BFS │ step 0/22")
         assert narration == "START (0,0) is on the queue. Press n to expand it."
         lines = map_lines(app)
-        row0 = next(line for line in lines if "S " in line)
-        # the 6x6 map fills the room it has: cells of 8x4 characters, the start's depth 0
-        assert row0.strip().startswith("S      0" + "█" * 8 + "·       " * 3 + "█" * 8)
+        row0 = next(line for line in lines if "S◀" in line)
+        # the 6x6 map fills the room it has: cells of 8x4 characters, the start's depth 0,
+        # the cursor's mark beside the start's glyph and a bar under its cell
+        assert row0.strip().startswith("S◀     0" + "█" * 8 + "·       " * 3 + "█" * 8)
+        assert lines[lines.index(row0) + 3].strip().startswith("▂" * 8 + "█" * 8)
+        view = app.main.views[0]
+        start = view.cell_looks().codes[START + CURSOR][1]  # its own colours, not reversed
+        assert start.bgcolor == view.get_component_rich_style("grid-view--start").bgcolor
+        assert not start.reverse
 
 
 @sync

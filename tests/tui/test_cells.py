@@ -18,6 +18,8 @@ from tui_search.engine.maps.grid import Cell, Grid
 from tui_search.tui.app import SearchApp
 from tui_search.tui.view.cell_codes import (
     CURRENT,
+    CURSOR_BAR,
+    CURSOR_MARK,
     EXPANDED,
     FREE,
     FRONTIER,
@@ -164,13 +166,21 @@ async def check_click(app: SearchApp, pilot, view: GridView, zoom: int, scroll_x
     await pilot.click(GridView, offset=(1 + x, 1 + y), button=3)  # 1: the view's border
     assert app.session.cursor == expected
     after = drawn_chars(view)
-    if zoom:  # the cursor's cell drawn reversed, and nothing else
+    if zoom:  # the cursor's cell marked (its mark beside its glyph, a bar under a big
+        # cell), in its own colours, and nothing else
         ox, oy = view.scroll_offset  # the view may have followed the cursor
         left, top = expected[0] * cell_w - ox, expected[1] * cell_h - oy
-        reversed_at = {(i, j) for j, line in enumerate(after) for i, s in enumerate(line)
-                       if s.reverse}
-        assert reversed_at == {(i, j) for i in range(max(0, left), min(width, left + cell_w))
-                               for j in range(max(0, top), min(height, top + cell_h))}
+        text = [view.render_line(y).text for y in range(height)]
+        marks = {(i, j) for j, line in enumerate(text) for i, c in enumerate(line)
+                 if c == CURSOR_MARK}
+        assert marks == ({(left + 1, top)} if 0 <= left + 1 < width and 0 <= top < height
+                         else set())
+        bar = top + cell_h - 1
+        barred = {(i, j) for j, line in enumerate(text) for i, c in enumerate(line)
+                  if c == CURSOR_BAR}
+        assert barred == ({(i, bar) for i in range(max(0, left), min(width, left + cell_w))}
+                          if cell_h > 1 and 0 <= bar < height else set())
+        assert not any(s.reverse for line in after for s in line)
     else:  # the cursor's colour: in the clicked character's upper half, and only there
         cursor = view.get_component_rich_style("grid-view--cursor").color or (
             view.rich_style.color)

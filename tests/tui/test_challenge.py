@@ -178,3 +178,52 @@ async def test_a_map_the_searches_gave_up_on_is_not_graded(tmp_path) -> None:
         await wait_until(pilot, lambda: "gave up" in panel.text)
         assert "Not graded: BFS and DFS gave up at 10 steps" in panel.text
         assert "not solved" not in panel.text.lower() and "no path" not in panel.text
+
+
+MAZE = MAPS.parent / "tests" / "data" / "exercises" / "maze-4-connected.toml"
+
+
+@sync
+async def test_an_exercise_s_rules_are_the_panes_and_the_panel_names_them() -> None:
+    """``--exercise maze-4-connected.toml``: the panes run under its rules (N, E, S, W; no
+    corner cut), the panel says them; ``x`` to exercise 1 puts the tutorial's back, saying
+    so, and back round to the file its rules again."""
+    from tui_search.cli.main import build_app
+    from tui_search.cli.parse import parse_options
+
+    app = build_app(parse_options(["--exercise", str(MAZE)]))
+    async with app.run_test(size=SIZE) as pilot:
+        panel = challenge(app)
+        assert panel.border_title == "The long way round"
+        assert "Rules: moves N,E,S,W · corners: never" in panel.text
+        assert "Not solved yet: BFS's path has 24 moves, DFS's 28" in panel.text
+        assert [r.semantics.order for r in app.session.runs] == [("N", "E", "S", "W")]
+        await pilot.press("end")
+        await wait_until(pilot, lambda: app.session.runs[0].at_end)
+        assert app.session.runs[0].outcome().length == 24  # as the challenge counts it
+        await pilot.press("x")
+        assert number(app) == 1 and "Rules" not in panel.text
+        assert app.session.semantics.is_default and app.session.runs[0].k == 0
+        assert app.session.note == "The searches run under Exercise 1's rules: the tutorial's"
+        await pilot.press("x", "x", "x")
+        assert app.session.exercise is not None and app.session.exercise.path == str(MAZE)
+        assert app.session.semantics.corners == "never"
+
+
+@sync
+async def test_a_lesson_shows_an_exercise_file_beside_it(tmp_path) -> None:
+    from tui_search.engine.course.lesson import read_lesson
+
+    (tmp_path / "maze.toml").write_text(MAZE.read_text())
+    (tmp_path / "lesson.md").write_text("# Mazes\n\n## Four moves\n\n```lesson\n"
+                                        "exercise: maze.toml\n```\n\nMove the goal.\n")
+    app = SearchApp(load_map(TUTORIAL), path=TUTORIAL,
+                    lesson=read_lesson(tmp_path / "lesson.md"))
+    async with app.run_test(size=SIZE) as pilot:
+        panel = challenge(app)
+        await wait_until(pilot, lambda: shown(panel))
+        assert panel.border_title == "The long way round"
+        assert "Rules: moves N,E,S,W · corners: never" in panel.text
+        assert "Not solved yet: BFS's path has 24 moves, DFS's 28" in panel.text  # its map
+        assert app.session.map_name == "maze.toml's map"
+        assert app.session.runs[0].semantics.order == ("N", "E", "S", "W")

@@ -381,8 +381,9 @@ async def test_big_tree_shows_the_focused_view() -> None:
 
 @sync
 async def test_focused_view_on_the_tutorial(monkeypatch: pytest.MonkeyPatch) -> None:
-    """The focused view in full on a small tree (forced): START to the expanding node, sibling
-    counts, depths, and the goal under it."""
+    """The focused view in full on a small tree (forced): START to the last node expanded
+    (the search over: no longer "◀ expanding"), sibling counts, depths, and the goal under
+    it."""
     monkeypatch.setattr(tree_model, "SMALL_TREE", 3)
     run = tutorial_run("dfs")
     panel = SearchTreePanel()
@@ -396,7 +397,7 @@ async def test_focused_view_on_the_tutorial(monkeypatch: pytest.MonkeyPatch) -> 
             "3       └─ ● NE (2,1)  child 4 of 4",
             "4          └─ ● NE (3,0)  child 2 of 2",
             "5             └─ ● E (4,0)  only child",
-            "6                └─ ● SE (5,1)  ◀ expanding  only child",
+            "6                └─ ● SE (5,1)  only child",
             "7                   └─ ★ S (5,2)  ★ goal",
         ]
 

@@ -258,6 +258,26 @@ async def test_counts_are_grouped_with_commas_everywhere() -> None:
 
 
 @sync
+async def test_a_path_of_thousands_of_moves_is_grouped_and_the_end_expands_nothing() -> None:
+    """``path: 1,200 moves`` beside ``generated 1,201``, as every count; and at the end the
+    tree's last node expanded no longer says "◀ expanding" (the search is over)."""
+    app = SearchApp(Grid(1, 1201, start=(0, 0), goal=(0, 1200)))
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("n")
+        tree = app.query_one(SearchTreePanel)
+        await wait_until(pilot, lambda: "◀ expanding" in "".join(
+            tree.line_text(y) for y in range(4)))
+        await pilot.press("end")
+        await wait_until(pilot, lambda: app.session.run.at_end)
+        app.main.present()
+        await pilot.pause()
+        status, narration = stats(app)
+        assert "path: 1,200 moves" in narration and "generated 1,201" in status
+        shown = [tree.line_text(y) for y in range(tree.model.line_count())]
+        assert not any("◀ expanding" in line for line in shown)
+
+
+@sync
 async def test_the_built_in_map_is_titled_tutorial_built_in(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:

@@ -37,7 +37,8 @@ async def test_screenshot_saves_in_the_current_folder_and_says_where(
         (shot,) = svgs(folder)
         await wait_until(pilot, lambda: any(n.title == "Screenshot" for n in notifications(app)))
         (note,) = [n for n in notifications(app) if n.title == "Screenshot"]
-        assert note.message == f"Saved {describe_name(str(shot))}" and "\\x1b" in note.message
+        assert note.message == (f"Saved {describe_name(shot.name)} in the folder "
+                                f"{describe_name(str(folder))}") and "\\x1b" in note.message
     assert shot.read_text().startswith("<svg")
 
 
@@ -65,3 +66,22 @@ async def test_a_folder_it_cannot_write_is_one_line(tmp_path: Path) -> None:
         (note,) = [n for n in notifications(app) if n.title == "Screenshot"]
         assert note.message == f"Not saved in {tmp_path / 'missing'}: no such file"
         assert note.severity == "error"
+
+
+@sync
+async def test_the_help_names_the_screenshot_and_where_it_goes() -> None:
+    """The palette's Screenshot, in ``?``'s keys (under ctrl+p): what it saves, and where."""
+    from tests.textual_internals import repainted
+    from tests.tui.test_app import screen_shown
+    from tui_search.tui.dialogs.help import HelpScreen
+
+    app = tutorial_app()
+    async with app.run_test(size=(120, 80)) as pilot:
+        await pilot.press("question_mark")
+        await screen_shown(pilot, HelpScreen)
+        keys = app.screen.query_one("#help-keys")
+        await wait_until(pilot, lambda: keys.region.area > 0)
+        screen = ["".join(text for text, _ in line) for line in await repainted(pilot)]
+        at = next(i for i, row in enumerate(screen) if "Screenshot" in row)
+        said = " ".join(" ".join(row.split("│")[1].split()) for row in screen[at:at + 2])
+        assert "ctrl+p" in screen[at - 1] and "current folder, which a note names" in said

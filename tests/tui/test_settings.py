@@ -160,3 +160,27 @@ async def test_a_discarded_step_shows_the_entry_it_threw_away() -> None:
         await pilot.press("n")  # the next step expands: the mark goes
         if not run.steps.is_discarded(k + 1):
             assert "✗" not in " ".join(app.query_one(FrontierPanel).lines())
+
+
+@sync
+async def test_a_box_ticked_holds_a_tick_and_one_not_is_empty() -> None:
+    """Textual's checkbox draws an ``X`` in every box, dim when off: here a ticked box holds
+    ✓ and a picked radio button ●, the others nothing, and a click changes the mark."""
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("comma")
+        await screen_shown(pilot, SettingsScreen)
+        screen = app.screen
+
+        def mark(selector: str) -> str:
+            return screen.query_one(selector).render().plain[1]  # inside ▐ ▌
+
+        assert (mark("#compare-bfs"), mark("#compare-ucs"), mark("#tree_search")) == (
+            "✓", " ", " ")
+        assert (mark("#corners-always"), mark("#corners-never")) == ("●", " ")
+        await click_shown(pilot, "#tree_search")
+        await wait_until(pilot, lambda: mark("#tree_search") == "✓")
+        await click_shown(pilot, "#corners-never")
+        await wait_until(pilot, lambda: mark("#corners-never") == "●")
+        assert mark("#corners-always") == " "
+        assert "X" not in "".join(mark(f"#compare-{k}") for k in ("bfs", "dfs", "ucs"))

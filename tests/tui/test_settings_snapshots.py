@@ -64,3 +64,19 @@ def test_a_discarded_step(snap_compare) -> None:
     k = recording_of(probe).discarded_steps()[0]
     app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, semantics=sem)
     assert snap_compare(app, press=["n"] * k, terminal_size=SIZE)
+
+
+def test_settings_ticked_and_empty_in_the_light_theme(snap_compare) -> None:
+    """The settings on a projector's light theme: a ticked box holds ✓ and a picked radio
+    button ●, an unticked or unpicked one is an empty box (BFS and DFS ticked for c, IDDFS to
+    A* empty; tree search empty)."""
+    from tests.tui.test_snapshots_themes import themed_app
+
+    assert snap_compare(themed_app("light"), press=["comma"], terminal_size=SIZE)
+
+
+def test_settings_ticked_and_empty_in_the_colour_blind_theme(snap_compare) -> None:
+    """As in the light theme: ✓ and ● in the boxes ticked or picked, the others empty."""
+    from tests.tui.test_snapshots_themes import themed_app
+
+    assert snap_compare(themed_app("colour-blind"), press=["comma"], terminal_size=SIZE)

@@ -93,3 +93,34 @@ def test_the_model_kept_in_step_equals_one_built_afresh(grid, choice, targets) -
         fresh.update(run)
         assert [kept.line(y) for y in range(kept.line_count())] == [
             fresh.line(y) for y in range(fresh.line_count())]
+
+
+def test_at_the_end_no_node_is_still_expanding() -> None:
+    """The last node expanded says "◀ expanding" while the search runs, not once it ended
+    (the goal found, or no path): the listing and the focused view of a big tree alike."""
+    run, model = at("bfs", 21)
+    assert sum("◀ expanding" in line for line in lines(model)) == 1
+    run.goto(10**6)
+    model.update(run)
+    assert run.at_end and not any("◀ expanding" in line for line in lines(model))
+    walled = grid_from_rows(["S#.", "##.", "..G"])
+    blocked = Run(walled, "dfs")
+    blocked.goto(10**6)
+    model = TreeModel()
+    model.update(blocked)
+    assert not blocked.found and not any("◀" in line for line in lines(model))
+
+
+def test_a_deep_tree_s_depths_are_grouped_in_thousands() -> None:
+    """The focused view of a tree some 1,300 deep (tree search down a corridor): its depth
+    column reads 1,299, as every count the app shows groups its digits."""
+    from tui_search.engine.maps.grid import Grid
+    from tui_search.engine.search.choices import Semantics
+
+    run = Run(Grid(3, 2000, start=(1, 0), goal=(1, 1999)), "dfs", Semantics(tree_search=True))
+    run.goto(1500)
+    model = TreeModel()
+    model.update(run)
+    text = lines(model)
+    assert text[3].startswith("1,299 └─ ● S (2,1298)"), text[:4]
+    assert text[1] == "    0 ● START (1,0)"

@@ -90,8 +90,8 @@ def run_server(options: Options) -> int:
     """``--serve``: the visitors' apps get the flags as typed (not -a's default, which
     --exercise and --compare refuse), the theme the teacher's."""
     from tui_search.cli.parser import build_parser
-    from tui_search.cli.serve_flags import served_args
-    from tui_search.serve.web import ServeError, serve
+    from tui_search.cli.serve_flags import read_token, served_args
+    from tui_search.serve.web import DEFAULT_HOST, ServeError, serve
     from tui_search.tui.config import Config
     from tui_search.tui.model.file_rules import FileAccess, NameRefused
 
@@ -102,11 +102,14 @@ def run_server(options: Options) -> int:
         raise UsageError(str(exc)) from None
     save_folder = str(folder) if folder is not None else None
     app_args = served_args(build_parser(), options.replace(theme=theme), save_folder)
+    token = (read_token(options.token_file, options.host or DEFAULT_HOST)
+             if options.token_file is not None else None)
     title = options.path.name if options.path else app_title(options)
     try:
         return serve(app_args, FORK_COMMAND, host=options.host, port=options.port,
                      title=title, save_folder=save_folder,
-                     own_folders=not options.shared_save_dir, memory_mb=options.app_memory)
+                     own_folders=not options.shared_save_dir, memory_mb=options.app_memory,
+                     token=token)
     except ServeError as exc:
         raise UsageError(str(exc)) from None
 

@@ -29,7 +29,7 @@ FLAGS = (
     "no_corner_cutting", "visit", "goal_test", "heuristic", "tree_search", "compare",
     "exercise", "generate", "size", "seed", "output", "max_steps", "theme", "pseudocode",
     "lesson", "headless", "json", "csv", "trace", "check_trace", "replay", "serve", "host",
-    "port", "save_dir", "shared_save_dir", "app_memory", "served", "visitor",
+    "port", "save_dir", "shared_save_dir", "app_memory", "token_file", "served", "visitor",
 )
 #: What the command line worked out or read from the flags.
 READ = ("maps", "algorithm_given", "exercise_read", "lesson_read", "recipe", "grid", "path",
@@ -80,6 +80,7 @@ class Options(Frozen):
     save_dir: str | None
     shared_save_dir: bool | None
     app_memory: int | None
+    token_file: str | None
     served: bool
     visitor: str | None
     # -- what they named, read

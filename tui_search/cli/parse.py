@@ -109,8 +109,9 @@ def _exercise_of(options: Options) -> Exercise | None:
     exercise = _read_exercise(options.exercise)
     changed = changed_choice_flags(options)
     if changed:
-        raise UsageError(f"--exercise grades with the tutorial's rules: leave out "
-                         f"{', '.join(changed)}")
+        raise UsageError(f"--exercise grades under the exercise's own rules: leave out "
+                         f"{', '.join(changed)} (an exercise file sets its rules: "
+                         "docs/04-exercises.md)")
     return exercise
 
 

@@ -25,6 +25,7 @@ from tui_search.engine.course.exercise_file import Exercise
 from tui_search.engine.course.grading import Verdict, grade
 from tui_search.engine.maps.read import MapError
 from tui_search.engine.util.filenames import describe_name
+from tui_search.engine.util.numbers import group_digits
 
 if TYPE_CHECKING:
     from tui_search.cli.options import Options
@@ -41,12 +42,17 @@ class Graded(NamedTuple):
     def status(self) -> str:
         return "unreadable" if self.verdict is None else self.verdict.status
 
-    def line(self) -> str:
+    @property
+    def reason(self) -> str:
+        """Why: the figures (and what else changed), or why the map is unreadable -- the
+        words of its line, after the dash, as the CSV's ``reason`` column has them."""
         v = self.verdict
         if v is None:
-            return f"{self.where}: unreadable — {self.error}"
-        return (f"{self.where}: {v.status}{_dash(v.said)}"
-                + (f" (hint: {v.hint})" if v.hint else ""))
+            return self.error
+        return v.said + (f" (hint: {v.hint})" if v.hint else "")
+
+    def line(self) -> str:
+        return f"{self.where}: {self.status}{_dash(self.reason)}"
 
     def as_json(self) -> dict[str, object]:
         if self.verdict is None:
@@ -83,17 +89,26 @@ def summary(rows: list[Graded]) -> str:
     """"14 of 17 solved, 2 not solved, 1 unreadable"."""
     counts = {s: sum(r.status == s for r in rows)
               for s in ("solved", "not solved", "not graded", "unreadable")}
-    return ", ".join([f"{counts['solved']} of {len(rows)} solved"] + [
-        f"{n} {s}" for s, n in counts.items() if n and s != "solved"])
+    return ", ".join([f"{group_digits(counts['solved'])} of {group_digits(len(rows))} solved"]
+                     + [f"{group_digits(n)} {s}" for s, n in counts.items()
+                        if n and s != "solved"])
+
+
+def heading(exercise: Exercise) -> list[str]:
+    """The report's first lines: the exercise's title and words, and its rules where they
+    are not the tutorial's."""
+    return [f"{exercise.title}: {exercise.text}"] + (
+        [f"Rules: {exercise.rules}"] if exercise.rules else [])
 
 
 def write_csv(rows: list[Graded], exercise: Exercise) -> None:
-    """``file,verdict,`` then a column per field the condition names."""
+    """``file,verdict,reason,`` then a column per field the condition names."""
     out = csv.writer(sys.stdout, lineterminator="\n")
-    out.writerow(["file", "verdict", *exercise.fields])
+    out.writerow(["file", "verdict", "reason", *exercise.fields])
     for row in rows:
         figures = row.verdict.figures if row.verdict is not None else {}
-        out.writerow([row.where, row.status, *(_cell(figures.get(f)) for f in exercise.fields)])
+        out.writerow([row.where, row.status, row.reason,
+                      *(_cell(figures.get(f)) for f in exercise.fields)])
 
 
 def _cell(value: object) -> str:
@@ -126,10 +141,14 @@ def run_exercise(options: Options) -> int:
         print(to_json([row.as_json() for row in rows]))
     elif len(rows) == 1:
         _print_one(rows[0])
-    else:
+    else:  # the class report: the exercise, a line a map, the summary, the exercise's hint
+        for line in heading(exercise):
+            print(line)
         for row in rows:
             print(row.line())
         print(summary(rows))
+        if exercise.hint:
+            print(f"Hint (shown while not solved): {exercise.hint}")
     if len(rows) == 1 and rows[0].verdict is not None and not rows[0].verdict.graded:
         return EXIT_GAVE_UP
     return EXIT_FOUND if all(row.status == "solved" for row in rows) else EXIT_NO_PATH

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import re
 from typing import TYPE_CHECKING
 
 from tui_search.cli.flags import UsageError
@@ -19,7 +20,8 @@ if TYPE_CHECKING:
     from tui_search.cli.options import Options
 
 #: The flags that configure the server, not the visitors' apps.
-SERVER_FLAGS = ("serve", "host", "port", "save_dir", "shared_save_dir", "app_memory")
+SERVER_FLAGS = ("serve", "host", "port", "save_dir", "shared_save_dir", "app_memory",
+                "token_file")
 #: Flags whose value is a file: given to the visitors' apps as absolute paths (``--exercise``
 #: only when it names a file, not the tutorial's ``1`` or ``2``).
 FILE_FLAGS = ("map", "scen", "terrain")
@@ -50,6 +52,10 @@ def add_serve_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--app-memory", metavar="MB", type=_positive_mb, default=None,
                    help=f"with --serve: end a visitor's app that uses more than MB megabytes "
                    f"(default {APP_MEMORY_MB})")
+    p.add_argument("--token-file", metavar="FILE", default=None,
+                   help="with --serve off loopback: the token the link needs, FILE's first "
+                   "line (the servers of one class behind one proxy share it; default: a "
+                   "random one)")
     p.add_argument("--served", action="store_true", help=argparse.SUPPRESS)  # the visitor's app
     p.add_argument("--visitor", default=None, help=argparse.SUPPRESS)  # the visitor's id
 
@@ -86,10 +92,43 @@ def check_serve_flags(args: argparse.Namespace) -> None:
         raise UsageError("--served is what --serve gives the visitors' apps: leave it out")
     if args.shared_save_dir and args.save_dir is None:
         raise UsageError("--shared-save-dir goes with --save-dir")
+    if args.token_file is not None:
+        read_token(args.token_file, args.host or DEFAULT_HOST)
     if os.name != "posix":
         raise UsageError("--serve needs a Unix-like system (it forks each visitor's app)")
     if not web_extra_installed():
         raise UsageError(NEEDS_EXTRA)
+
+
+#: A shared token: at least this many characters, each a letter, a digit, ``-`` or ``_`` (as
+#: ``secrets.token_urlsafe`` writes them, so it goes in a URL as it is).
+TOKEN_LENGTH = 16
+_TOKEN = re.compile(r"[A-Za-z0-9_-]+")
+
+
+def read_token(path: str, host: str) -> str:
+    """``--token-file``'s token: the file's first line, stripped; a UsageError (one line) for
+    a file that cannot be read, a token too short or with other characters, or a server on
+    loopback (which needs none)."""
+    from tui_search.engine.util.atomic import os_reason
+    from tui_search.engine.util.filenames import describe_name
+    from tui_search.serve.guard import is_loopback
+
+    where = f"--token-file {describe_name(path)}"
+    if is_loopback(host):
+        raise UsageError(f"{where}: a server on {host} (this computer only) needs no token: "
+                         "give --host too")
+    try:
+        with open(path, encoding="utf-8") as file:
+            token = file.readline().strip()
+    except (OSError, UnicodeDecodeError) as err:
+        reason = os_reason(err) if isinstance(err, OSError) else "not a text file"
+        raise UsageError(f"{where}: cannot read it: {reason}") from None
+    if len(token) < TOKEN_LENGTH or not _TOKEN.fullmatch(token):
+        raise UsageError(f"{where}: the first line must be a token of at least "
+                         f"{TOKEN_LENGTH} letters, digits, - or _ (python3 -c \"import "
+                         "secrets; print(secrets.token_urlsafe(18))\" makes one)")
+    return token
 
 
 def web_extra_installed() -> bool:

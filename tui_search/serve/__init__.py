@@ -1,6 +1,7 @@
 """The class server (``--serve``): the app in web browsers, one app per visitor.
 
 * :mod:`~tui_search.serve.web`: the server, its rules for a class, and what the served app does;
+* :mod:`~tui_search.serve.addresses`: this computer's own addresses, for the banner's links;
 * :mod:`~tui_search.serve.guard`: who may talk to it (host names, the token off loopback);
 * :mod:`~tui_search.serve.visit`: one visitor's websocket and app;
 * :mod:`~tui_search.serve.forks`: the fork server that starts each visitor's app.

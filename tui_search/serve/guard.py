@@ -62,14 +62,15 @@ class Guard(NamedTuple):
     token: str | None = None
 
     @classmethod
-    def for_host(cls, host: str) -> Guard:
-        """The guard of a server listening on ``host``: a token unless it is loopback."""
+    def for_host(cls, host: str, token: str | None = None) -> Guard:
+        """The guard of a server listening on ``host``: a token unless it is loopback --
+        ``token`` (the servers of one class behind one proxy share it), else a random one."""
         names = {*LOOPBACK_NAMES, host_name(host)}
         every = host in EVERY_NETWORK
         if every:
             names |= {socket.gethostname().lower(), socket.getfqdn().lower()}
-        token = None if is_loopback(host) else secrets.token_urlsafe(18)
-        return cls(frozenset(names - {""}), every, token)
+        chosen = None if is_loopback(host) else token or secrets.token_urlsafe(18)
+        return cls(frozenset(names - {""}), every, chosen)
 
     def host_allowed(self, header: str) -> bool:
         name = host_name(header)

@@ -28,8 +28,11 @@ import sys
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
+    from collections.abc import Sequence
+
     from aiohttp import web
 
+    from tui_search.serve.addresses import Address
     from tui_search.serve.guard import Guard
 
 DEFAULT_HOST = "127.0.0.1"
@@ -83,16 +86,17 @@ def exit_with_server(app: Any, every: float = WATCH_EVERY) -> None:
 
 def serve(app_args: list[str], fork_command: list[str], *, host: str | None,
           port: int | None, title: str, save_folder: str | None, own_folders: bool,
-          memory_mb: int | None) -> int:
+          memory_mb: int | None, token: str | None = None) -> int:
     """Serve the app ``app_args`` until Ctrl+C, each visitor's app forked by the process
-    ``fork_command`` starts; 0, or a ServeError when the address cannot be listened on."""
+    ``fork_command`` starts; 0, or a ServeError when the address cannot be listened on.
+    ``token``: the one the links need off loopback (None: a random one)."""
     from tui_search.serve.guard import Guard
 
     host = host or DEFAULT_HOST
     port = port or DEFAULT_PORT
     server = make_server(app_args, fork_command, host, port, title, saving=save_folder,
                          own_folders=own_folders, memory_mb=memory_mb or APP_MEMORY_MB,
-                         guard=Guard.for_host(host))
+                         guard=Guard.for_host(host, token))
     try:
         server.serve()
     except OSError as exc:
@@ -196,9 +200,10 @@ def make_server(app_args: list[str], fork_command: list[str], host: str, port: i
 
 
 def banner_text(host: str, port: int, title: str, saving: str | None, own_folders: bool,
-                token: str | None) -> str:
+                token: str | None, addresses: Sequence[Address] | None = None) -> str:
     """What the server prints once it listens: where, who can reach it, what visitors may
-    do with files, how to stop it."""
+    do with files, how to stop it.  Served on every network, a link for each of this
+    computer's ``addresses`` (found when not given), the loopback last."""
     files = "visitors cannot save or open files"
     if saving:
         files = (f"visitors may save and open maps in {saving} only"
@@ -209,8 +214,20 @@ def banner_text(host: str, port: int, title: str, saving: str | None, own_folder
              else f"http://{_url_host(host)}:{port}{query}")
     lines = [f"Serving tui-search ({title}) on {where} — one app per visitor, {files}."]
     if every:
-        lines.append(f"Open http://THIS-COMPUTER'S-ADDRESS:{port}{query} in the class's "
-                     "browsers (and allow the port through the firewall).")
+        if addresses is None:
+            import socket
+
+            from tui_search.serve.addresses import own_addresses
+
+            addresses = own_addresses(socket.AF_INET6 if ":" in host else socket.AF_INET)
+        lines.append("Open the link for the class's network in their browsers (and allow the "
+                     "port through the firewall):")
+        links = [f"http://{_url_host(a.ip)}:{port}{query}" for a in addresses]
+        wide = max(map(len, links), default=0)
+        for a, link in zip(addresses, links, strict=True):
+            on = "this computer only" if a.is_loopback else ""
+            said = ": ".join(part for part in (a.interface, on) if part)
+            lines.append(f"  {link:<{wide}}  ({said})" if said else f"  {link}")
     if token:
         who = ("every computer on this computer's networks" if every
                else f"every computer that can reach {host}")

@@ -157,7 +157,9 @@ class SearchApp(App[int]):
             self.notify(f"Not saved in {describe_name(folder)}: {os_reason(err)}",
                         title="Screenshot", severity="error", markup=False)
             return None
-        self.notify(f"Saved {describe_name(saved)}", title="Screenshot", markup=False)
+        where, name = os.path.split(saved)
+        self.notify(f"Saved {describe_name(name)} in the folder {describe_name(where)}",
+                    title="Screenshot", markup=False)
         return saved
 
     def _config_note(self, text: str) -> None:

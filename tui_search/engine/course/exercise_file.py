@@ -7,6 +7,8 @@
     edits = ["obstacles"]             # what the student may change
     solved = "greedy.found and astar.found and greedy.cost > astar.cost"
     hint = "Greedy looks only at h."  # optional
+    order = "N,E,S,W"                 # optional: the rules every search of it runs under,
+    corners = "never"                 # as the settings name them (the tutorial's otherwise)
 
 The tutorial's two exercises ship as two such files (``tui_search/exercises/``), named ``1``
 and ``2``.  A bad file is a :class:`~tui_search.engine.maps.read.MapError` naming the file, the
@@ -24,9 +26,18 @@ from types import ModuleType
 from typing import Any
 
 from tui_search.engine.course.condition import ConditionError, Node, names, parse_condition
-from tui_search.engine.maps.grid import Grid
+from tui_search.engine.maps.grid import Grid, parse_order
 from tui_search.engine.maps.read import MapError
+from tui_search.engine.search.choices import (
+    CORNER_RULES,
+    DEFAULT_SEMANTICS,
+    GOAL_TESTS,
+    VISIT_RULES,
+    Semantics,
+)
 from tui_search.engine.search.compare import Contender, parse_compare
+from tui_search.engine.search.heuristics import HEURISTICS
+from tui_search.engine.search.registry import get_algorithm
 
 
 def toml_parser() -> ModuleType:
@@ -48,8 +59,10 @@ OTHER_EDITS = ("fail", "hint")
 FIGURES = ("found", "moves", "cost", "expanded", "generated", "max_frontier")
 BUILT_IN = Path(__file__).resolve().parents[2] / "exercises"  # tui_search/exercises
 BUILT_IN_FILES = {1: "1-bfs-expands-less.toml", 2: "2-dfs-not-optimal.toml"}
+#: The rules' keys (the search choices, :mod:`tui_search.engine.search.choices`).
+RULE_KEYS = ("order", "corners", "visit", "goal_test", "heuristic", "tree_search")
 _KEYS = ("title", "text", "map", "generate", "searches", "edits", "solved", "hint",
-         "other_edits", "figures")
+         "other_edits", "figures", *RULE_KEYS)
 
 
 @dataclass(frozen=True, eq=False)
@@ -70,6 +83,13 @@ class Exercise:
     figures: tuple[str, ...]  # the fields the reason shows
     hint: str
     other_edits: str
+    semantics: Semantics = DEFAULT_SEMANTICS  # the rules every search of it runs under
+
+    @property
+    def rules(self) -> str:
+        """Its rules where they are not the tutorial's, in a few words ("moves N,E,S,W ·
+        corners: never"); "" for the tutorial's."""
+        return " · ".join(self.semantics.differences())
 
     @property
     def name(self) -> str:
@@ -155,6 +175,52 @@ class _Reader:
         return value
 
 
+def _semantics(reader: _Reader) -> Semantics:
+    """The rules the file's keys set (the tutorial's for those it leaves out)."""
+    data = reader.data
+    choices: dict[str, Any] = {}
+    if "order" in data:
+        try:
+            choices["order"] = parse_order(reader.string("order"))
+        except ValueError as exc:
+            raise reader.error("order", f"{exc} (as in \"N,E,S,W\")") from None
+    for key, allowed in (("corners", CORNER_RULES), ("visit", VISIT_RULES),
+                         ("goal_test", GOAL_TESTS), ("heuristic", tuple(HEURISTICS))):
+        if key in data:
+            value = reader.string(key)
+            if value not in allowed:
+                raise reader.error(key, f"{value!r}: use {', '.join(allowed)}")
+            choices[key] = value
+    if "tree_search" in data:
+        if not isinstance(data["tree_search"], bool):
+            raise reader.error("tree_search", "expected true or false")
+        choices["tree_search"] = data["tree_search"]
+        if data["tree_search"] and "visit" in data:
+            raise reader.error("visit", "does not apply with tree_search = true (it has no "
+                               "visited set)")
+    try:
+        return Semantics(**choices)
+    except ValueError as exc:  # each was checked: only a combination is left
+        raise reader.error(next(k for k in RULE_KEYS if k in data), str(exc)) from None
+
+
+def _contenders(reader: _Reader, specs: list[str], semantics: Semantics) -> list[Contender]:
+    """``searches`` under the rules: a bad search named at ``searches``, a rule that does not
+    apply to one of them at the rule's key."""
+    try:
+        parse_compare(",".join(specs), fewest=1)
+    except ValueError as exc:
+        raise reader.error("searches", str(exc)) from None
+    informed = any(get_algorithm(s.partition(":")[0].strip()).informed for s in specs)
+    if "heuristic" in reader.data and not informed:
+        raise reader.error("heuristic", "none of the searches uses a heuristic (greedy "
+                               "and astar do)")
+    try:
+        return parse_compare(",".join(specs), semantics, fewest=1)
+    except ValueError as exc:  # only the visit rule is refused for a search
+        raise reader.error("visit", str(exc)) from None
+
+
 def _grid(reader: _Reader) -> Grid:
     from tui_search.engine.maps.generate import generate, parse_recipe
     from tui_search.engine.maps.load import load_map
@@ -188,10 +254,8 @@ def parse_exercise(text: str, path: str, number: int | None = None) -> Exercise:
     if unknown:
         raise reader.error(unknown[0], f"unknown key (use {', '.join(_KEYS)})")
     specs = reader.strings("searches")
-    try:
-        contenders = parse_compare(",".join(specs), fewest=1)
-    except ValueError as exc:
-        raise reader.error("searches", str(exc)) from None
+    semantics = _semantics(reader)
+    contenders = _contenders(reader, specs, semantics)
     labels = [search_name(s) for s in specs]
     if len(set(labels)) != len(labels):
         raise reader.error("searches", "a search is named twice")
@@ -222,7 +286,7 @@ def parse_exercise(text: str, path: str, number: int | None = None) -> Exercise:
     searches = tuple(zip(labels, contenders, strict=False))  # as before: not checked equal
     return Exercise(path, number, reader.string("title"), reader.string("text"), grid,
                     searches, frozenset(edits), condition, solved, fields, shown,
-                    reader.string("hint", ""), other)
+                    reader.string("hint", ""), other, semantics)
 
 
 def load_exercise(path: str | Path, number: int | None = None) -> Exercise:

@@ -104,7 +104,7 @@ def figure_phrase(field: str, runs: list[tuple[str, Outcome]]) -> str:
                     else f"all {len(runs)}") + " found the goal"
         return " and ".join(missing) + " found no path"
     if field == "moves":
-        values = [f"{o.length}" for o in outs]
+        values = [f"{o.length:,}" if o.length is not None else "none" for o in outs]
         unit = "moves"
     else:
         values = [f"{o.cost:.2f}" if o.cost is not None else "none" for o in outs]

@@ -17,7 +17,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, replace
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from tui_search.engine.maps.grid import DEFAULT_ORDER, parse_order
 from tui_search.engine.maps.load import load_map
@@ -26,6 +26,9 @@ from tui_search.engine.search.choices import CORNER_RULES, GOAL_TESTS, VISIT_RUL
 from tui_search.engine.search.compare import parse_compare
 from tui_search.engine.search.heuristics import DEFAULT_HEURISTIC, HEURISTICS
 from tui_search.engine.search.registry import ALGORITHMS, DEFAULT_ALGORITHM, get_algorithm
+
+if TYPE_CHECKING:  # read only when a lesson shows one (tomllib and the conditions)
+    from tui_search.engine.course.exercise_file import Exercise
 
 #: The built-in lessons: ``tui_search/lessons/NAME.md``.
 LESSON_DIR = Path(__file__).resolve().parents[2] / "lessons"  # tui_search/lessons
@@ -42,7 +45,7 @@ KEYS: dict[str, str] = {
     "goal-test": ", ".join((*GOAL_TESTS, "default")),
     "tree-search": "on, off",
     "heuristic": ", ".join(HEURISTICS),
-    "exercise": "1, 2, off",
+    "exercise": "1, 2, an exercise file (FILE.toml, relative to the lesson file), off",
     "code": "on, off",
 }
 _FIELDS = {"compare": "searches"}  # a block's key: its State field, where the names differ
@@ -52,8 +55,8 @@ _FENCE = re.compile(r"^( {0,3})(`{3,}|~{3,})\s*([^`\s]*)")
 @dataclass(frozen=True)
 class State:
     """What a section shows: ``step`` None is the end of the search; ``map`` None keeps the
-    map shown; ``searches`` (the block's ``compare``), when set, are shown a pane each, else
-    ``algorithm`` alone."""
+    map shown (or shows an exercise file's own); ``searches`` (the block's ``compare``), when
+    set, are shown a pane each, else ``algorithm`` alone."""
 
     map: Path | None = None
     algorithm: str = DEFAULT_ALGORITHM
@@ -65,7 +68,7 @@ class State:
     goal_test: str | None = None
     tree_search: bool = False
     heuristic: str = DEFAULT_HEURISTIC
-    exercise: int | None = None
+    exercise: int | Exercise | None = None  # the tutorial's 1 or 2, or a file's
     code: bool = False
 
     @property
@@ -130,9 +133,16 @@ def _value(key: str, text: str, base: Path) -> object:
     if key == "step":
         return _step(text)
     if key == "exercise":
-        if text not in ("1", "2", "off"):
+        if text in ("1", "2", "off"):
+            return None if text == "off" else int(text)
+        if not text.endswith(".toml"):
             raise ValueError(f"use {KEYS[key]}")
-        return None if text == "off" else int(text)
+        from tui_search.engine.course.exercise_file import load_exercise
+
+        try:
+            return load_exercise(base / text)
+        except MapError as exc:
+            raise ValueError(str(exc)) from None
     if key == "order":
         return parse_order(text)
     if key == "compare":
@@ -190,7 +200,35 @@ def _block(lines: list[str], first: int, base: Path, name: str,
             raise MapError(name, f"{key} {text!r}: {exc}", n, at) from None
         seen[key] = value
         where[key] = (n, col)
-    return replace(state, **{_field(key): value for key, value in seen.items()}), where
+    state = replace(state, **{_field(key): value for key, value in seen.items()})
+    if seen.get("exercise") is not None:
+        state = _exercise_rules(state, seen, where, name)
+        if not isinstance(state.exercise, int) and "map" not in seen:
+            state = replace(state, map=None)  # a file's exercise: on its own map
+    return state, where
+
+
+#: The block's keys that are choices: the State's fields of the same names.
+_CHOICES = ("order", "corners", "visit", "goal-test", "tree-search", "heuristic")
+
+
+def _exercise_rules(state: State, seen: dict[str, Any], where: dict[str, tuple[int, int]],
+                    name: str) -> State:
+    """``state`` under the rules of the exercise it shows (its searches, and so the panes,
+    run under them); a choice the block names that differs is refused at its key."""
+    from tui_search.engine.course.exercise_file import built_in_exercise
+
+    exercise = state.exercise
+    if isinstance(exercise, int):
+        exercise = built_in_exercise(exercise)
+    assert exercise is not None
+    rules = exercise.semantics
+    said = exercise.rules or "the tutorial's"
+    for key in _CHOICES:
+        if key in seen and getattr(rules, _field(key)) != seen[key]:
+            raise MapError(name, f"{key}: the exercise runs under its own rules ({said}): "
+                           f"leave out {key}", *where[key])
+    return replace(state, **{_field(key): getattr(rules, _field(key)) for key in _CHOICES})
 
 
 def _field(key: str) -> str:

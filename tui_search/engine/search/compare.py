@@ -136,15 +136,15 @@ def summary_sentence(rows: list[TableRow], terrain: bool = False) -> str:
         said: list[str] = []
         for r in rows:
             o = r.outcome
-            what = f"{o.length} moves, cost {o.cost or 0.0:.2f}"
+            what = f"{o.length or 0:,} moves, cost {o.cost or 0.0:.2f}"
             said.append(f"{r.label} found none" if not o.found else
                         f"{r.label}'s {what}" if said else f"{r.label}'s path has {what}")
         paths = "; ".join(said)
     elif len(found) == len(rows) and len(lengths) == 1:
         n = found[0].outcome.length
-        paths = f"{'both' if len(rows) == 2 else 'all'} paths have {n} moves"
+        paths = f"{'both' if len(rows) == 2 else 'all'} paths have {n or 0:,} moves"
     else:
-        paths = ", ".join(f"{r.label}'s path has {r.outcome.length} moves" if r.outcome.found
+        paths = ", ".join(f"{r.label}'s path has {r.outcome.length or 0:,} moves" if r.outcome.found
                           else f"{r.label} found none" for r in rows)
     return f"{expanded}; {paths}"
 

@@ -57,6 +57,8 @@ KEYS = (
     ("ctrl+o", "open a map … (asks first when there are unsaved edits)"),
     ("ctrl+n", "generate a maze (DFS carves it) or a random map, from a seed"),
     ("ctrl+p", "command palette: every command by name (algorithms, themes, …)"),
+    ("", ("its Screenshot: a picture of the screen (SVG) in the current folder, which a "
+     "note names")),
     ("?", "this help"),
     ("q", "quit (asks first when there are unsaved edits)"),
 )

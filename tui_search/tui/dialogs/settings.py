@@ -29,6 +29,8 @@ from tui_search.engine.search.choices import (
 from tui_search.engine.search.heuristics import HEURISTICS, INADMISSIBLE, admissible
 from tui_search.engine.search.registry import ALGORITHMS, Algorithm
 from tui_search.tui.dialogs.settings_choice import SettingsChoice
+from tui_search.tui.widgets.pick_button import PickButton
+from tui_search.tui.widgets.tick_box import TickBox
 
 #: A word on each value, shown beside its radio button.
 VALUE_WORDS: dict[str, str] = {
@@ -114,7 +116,7 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
             yield Label(EXPLAIN["goal_test"], classes="explain")
             yield self._radios("goal_test", GOAL_TESTS, sem.goal_test_for(self.algorithm))
             yield Label("Graph or tree search", classes="choice")
-            yield Checkbox("tree search", sem.tree_search, id="tree_search", compact=True)
+            yield TickBox("tree search", sem.tree_search, id="tree_search", compact=True)
             yield Label(EXPLAIN["tree_search"], classes="explain")
             yield Label("Heuristic", classes="choice")
             yield Label("", id="heuristic-explain", classes="explain")
@@ -123,7 +125,7 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
             picked = {part.strip().partition(":")[0] for part in self.comparison.split(",")}
             with Horizontal(id="compare-picks"):
                 for algo in ALGORITHMS.values():
-                    yield Checkbox(algo.short, algo.key in picked, id=f"compare-{algo.key}",
+                    yield TickBox(algo.short, algo.key in picked, id=f"compare-{algo.key}",
                                    compact=True)
             yield Label("two to four searches side by side, in lockstep on the same map",
                         id="compare-explain", classes="explain")
@@ -138,7 +140,7 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
     @staticmethod
     def _radios(name: str, values: tuple[str, ...], chosen: str) -> RadioSet:
         return RadioSet(
-            *(RadioButton(VALUE_WORDS[v], v == chosen, id=f"{name}-{v}") for v in values),
+            *(PickButton(VALUE_WORDS[v], v == chosen, id=f"{name}-{v}") for v in values),
             id=name.replace("_", "-"),
             compact=True,
         )

@@ -11,6 +11,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Protocol
 
+from tui_search.engine.course.exercise_file import Exercise
 from tui_search.engine.course.lesson import Lesson, Section, State
 from tui_search.engine.maps.grid import Grid
 from tui_search.engine.maps.load import load_map
@@ -31,7 +32,7 @@ class Session(Protocol):
     def use_map(self, grid: Grid, path: Path | None, untitled: str | None = None) -> None: ...
     def show_searches(self, spec: str) -> str | None: ...
     def goto(self, k: int | None) -> None: ...
-    def show_exercise(self, exercise: int | None) -> None: ...
+    def show_exercise(self, exercise: Exercise | int | None) -> str: ...
 
 
 class LessonPlay:
@@ -71,7 +72,8 @@ class LessonPlay:
 
 
 def apply_state(session: Session, state: State) -> None:
-    """Put ``session`` in ``state``: its map (read anew from the file), its searches at
+    """Put ``session`` in ``state``: its map (read anew from the file; an exercise file's own
+    when it names none), its searches at
     ``state.step`` (None: the end), the choices, the exercise and the Code panel."""
     session.stop()
     problem = ""
@@ -80,9 +82,12 @@ def apply_state(session: Session, state: State) -> None:
             session.use_map(load_map(state.map), state.map)  # read anew: edits undone
         except MapError as exc:  # checked when the lesson was read, changed since
             problem = str(exc)
+    elif state.exercise is not None and not isinstance(state.exercise, int):
+        own = state.exercise  # a file's exercise, no map named: its own map, anew
+        session.use_map(own.grid.copy(), None, f"{Path(own.path).name}'s map")
     session.algorithm = state.algorithm
     session.semantics = state.semantics
-    session.show_exercise(state.exercise)
+    session.show_exercise(state.exercise)  # its rules are the state's (lesson.py)
     session.show_code = state.code
     refusal = session.show_searches(state.spec)
     assert refusal is None, refusal  # checked when the lesson was read

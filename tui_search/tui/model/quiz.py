@@ -34,7 +34,7 @@ class Quiz(NamedTuple):
 
     @property
     def score(self) -> str:
-        return f"{self.right} of {self.asked}"
+        return f"{self.right:,} of {self.asked:,}"
 
     def question(self, run: Run) -> str:
         where = _where(run)

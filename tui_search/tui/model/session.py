@@ -84,8 +84,9 @@ class Session:
         self.seek: Seek | None = None
         self.note = ""
         self.quiz = Quiz()
+        self.jumps = ReplayJumps(replay, lambda: self.runs, self.goto)
         self.exercise: Exercise | None = None
-        self.show_exercise(exercise)
+        self.show_exercise(exercise)  # its rules are the panes'
         #: What x cycles through: the exercise given at start (a file), the tutorial's two.
         self._exercises = [e for e in (self.exercise,) if e is not None and e.number is None]
         self.fold_trees = False  # the panes' trees folded away by the user
@@ -97,7 +98,6 @@ class Session:
             from tui_search.engine.maps.scenarios import Optimum
 
             self._optimum = Optimum(grid, optimal_cost)
-        self.jumps = ReplayJumps(replay, lambda: self.runs, self.goto)
         self.new_runs()
 
     # -- what is shown -------------------------------------------------------------------
@@ -349,21 +349,30 @@ class Session:
         return before
 
     # -- the exercise ----------------------------------------------------------------------
-    def show_exercise(self, exercise: Exercise | int | None) -> None:
-        """Show ``exercise`` (1 or 2: the tutorial's) as the live challenge; None: none."""
+    def show_exercise(self, exercise: Exercise | int | None) -> str:
+        """Show ``exercise`` (1 or 2: the tutorial's) as the live challenge; None: none.  The
+        panes take its rules, as its searches run under them: when that changed them, a note
+        saying so (the caller runs the searches anew), else ""."""
         if isinstance(exercise, int):
             from tui_search.engine.course.exercise_file import built_in_exercise
 
             exercise = built_in_exercise(exercise)
         self.exercise = exercise
+        if exercise is None or exercise.semantics == self.semantics:
+            return ""
+        self.jumps.end()  # other rules: a replay is over
+        self.semantics = exercise.semantics
+        rules = exercise.rules or "the tutorial's"
+        return f"The searches run under {exercise.title}'s rules: {rules}"
 
-    def cycle_exercise(self) -> None:
-        """The next challenge: the exercise file given at start, exercise 1, 2, none."""
+    def cycle_exercise(self) -> str:
+        """The next challenge: the exercise file given at start, exercise 1, 2, none (a note
+        when the panes took its rules, as :meth:`show_exercise`)."""
         from tui_search.engine.course.exercise_file import built_in_exercise
 
         cycle: list[Exercise | None] = [*self._exercises, built_in_exercise(1),
                                         built_in_exercise(2), None]
-        self.exercise = cycle[(cycle.index(self.exercise) + 1) % len(cycle)]
+        return self.show_exercise(cycle[(cycle.index(self.exercise) + 1) % len(cycle)])
 
     def verdict(self) -> Verdict:
         """The exercise's verdict on the map as it is (its searches, whole)."""

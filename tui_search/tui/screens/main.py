@@ -146,13 +146,21 @@ class MainScreen(PanesScreen):
     # -- the exercise and the quiz ---------------------------------------------------------
     def action_exercise(self) -> None:
         """Cycle the challenge: the exercise file given at start, exercise 1, 2, none."""
-        self.session.cycle_exercise()
-        self._check_exercise()
+        self._exercise_shown(self.session.cycle_exercise())
 
     def action_show_exercise(self, exercise: int) -> None:
         """Show exercise 1 or 2 as a live challenge on the map (0: none)."""
-        self.session.show_exercise(exercise or None)
-        self._check_exercise()
+        self._exercise_shown(self.session.show_exercise(exercise or None))
+
+    def _exercise_shown(self, rules: str) -> None:
+        """The challenge checked; the panes' searches anew under the exercise's rules when
+        they changed (``rules``: the note saying so)."""
+        if rules:
+            self.playback.pause()
+            self.session.new_runs(rules)
+            self.new_runs_shown()
+        else:
+            self._check_exercise()
 
     def action_quiz(self) -> None:
         self.session.toggle_quiz()

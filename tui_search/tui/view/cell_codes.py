@@ -12,6 +12,11 @@ GLYPHS = ("· ", "○ ", "● ", "◉ ", "◆ ", "██", "S ", "G ")
 NAMES = ("free", "frontier (generated)", "expanded", "being expanded", "path", "obstacle",
          "start", "goal")
 UPPER_HALF = "▀"
+#: The cursor: drawn beside the glyph of the cell under it, pointing at it, so the cell keeps
+#: its own colours (the start stays green under the cursor at step 0).
+CURSOR_MARK = "◀"
+#: A big cell under the cursor: a bar along its last line (in the blanks: what it says kept).
+CURSOR_BAR = "▂"
 #: What draws a block of the overview: the code of highest rank in it.  Start and goal first
 #: (one cell each, they would vanish in a block otherwise), then path > node being expanded >
 #: frontier > expanded > obstacle > free.

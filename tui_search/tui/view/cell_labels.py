@@ -5,7 +5,8 @@ directions.
 
 A cell ``width`` x ``height`` characters (4x2 or more) is laid out as::
 
-    ●  17      glyph top left, the first number right-aligned on the first line
+    ●◀ 17      glyph top left (under the cursor, its mark beside it and a bar along the
+               last line), the first number right-aligned on the first line
       ↗        the arrow in the middle line
     5  31      the second number (f), right-aligned on the last line when there is one free;
                the cell's terrain cost (when not 1) on the last line: right, else left
@@ -15,6 +16,7 @@ from __future__ import annotations
 
 from tui_search.engine.maps.grid import DIRECTIONS, Cell
 from tui_search.engine.run.recorded import Run
+from tui_search.tui.view.cell_codes import CURSOR_BAR, CURSOR_MARK
 
 #: What a cell's label shows, in the order the label key cycles them.
 LABEL_MODES = ("arrows", "depth/cost", "none")
@@ -56,12 +58,17 @@ def label(run: Run, cell: Cell, mode: str) -> tuple[str, list[float]]:
 
 
 def cell_line(run: Run | None, cell: Cell, width: int, height: int, sub: int, mode: str,
-              glyph: str, wall: bool, cost: str | None = None) -> str:
+              glyph: str, wall: bool, cost: str | None = None, cursor: bool = False) -> str:
     """Line ``sub`` (0 .. height-1) of ``cell`` drawn ``width`` characters wide; ``cost``
     (the cell's terrain cost, when it is not 1) on the last line, right-aligned when no
-    number is there, else at its left."""
+    number is there, else at its left; ``cursor``: the cursor's mark beside the glyph (the
+    second character of the first line, which a number never takes) and a bar along the
+    last line."""
     if wall:
-        return "█" * width
+        return "█" + CURSOR_MARK + "█" * (width - 2) if cursor and sub == 0 else "█" * width
+    if cursor and sub == height - 1 and height > 1:  # a bar under the cell, what it says kept
+        return cell_line(run, cell, width, height, sub, mode, glyph, wall, cost).replace(
+            " ", CURSOR_BAR)
     arrow, numbers = label(run, cell, mode) if run is not None else ("", [])
     middle = height // 2 if height > 1 else 0
     text = [" "] * width
@@ -81,6 +88,8 @@ def cell_line(run: Run | None, cell: Cell, width: int, height: int, sub: int, mo
     if cost is not None and height > 1 and sub == height - 1:
         at = width - len(cost) if right_free else 0
         text[at:at + len(cost)] = cost
+    if cursor and sub == 0:
+        text[1] = CURSOR_MARK
     return "".join(text)
 
 

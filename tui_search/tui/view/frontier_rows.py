@@ -13,6 +13,7 @@ entry on a line is found by a division, whatever the frontier's size."""
 from typing import TYPE_CHECKING, NamedTuple
 
 from tui_search.engine.search.heuristics import octile
+from tui_search.engine.util.numbers import group_digits
 from tui_search.tui.view.frontier_text import DIR_W, costs_column, figures
 from tui_search.tui.view.pieces import Parts
 
@@ -45,7 +46,7 @@ def column_widths(run: "Run") -> tuple[int, int, int, int]:
     grid = run.grid
     coord_w = len(f"({grid.width - 1},{grid.height - 1})")
     limit = run.steps.depth_limit() if run.algo.iterative else None
-    depth_w = len(f"d={limit}") if limit is not None else 0
+    depth_w = len(f"d={group_digits(limit)}") if limit is not None else 0
     cost_w = len(f"{octile(grid.width - 1, grid.height - 1):.2f}") if run.algo.weighted else 0
     move_w = max(DIR_W, len(run.nodes.move(run.now.frontier(0, 1)[0]))
                  if run.now.frontier_len() == 1 else 0)
@@ -126,7 +127,8 @@ def entry_row(run: "Run", g: int, plan: EntryRows, row: int, marks: tuple[bool, 
     for slot in slots:
         piece: tuple[str, str]
         if slot == "depth":
-            piece = (f"d={run.nodes.depth(g)}".ljust(depth_w), "frontier-panel--detail")
+            piece = (f"d={group_digits(run.nodes.depth(g))}".ljust(depth_w),
+                     "frontier-panel--detail")
         elif slot == "move":
             piece = (run.nodes.move(g).ljust(DIR_W), main)
         else:  # a figure, pressed close: "f6.41"
@@ -155,7 +157,7 @@ def entry_line(run: "Run", g: int, marks: tuple[bool, bool], widths: tuple[int, 
     ]
     used = MARKER_W + coord_w + 1
     if iddfs:
-        depth = f"d={run.nodes.depth(g)}".ljust(depth_w)
+        depth = f"d={group_digits(run.nodes.depth(g))}".ljust(depth_w)
         parts.append((depth, "frontier-panel--detail"))
         parts.append((" ", main))
         used += len(depth) + 1

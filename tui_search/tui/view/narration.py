@@ -116,7 +116,7 @@ def _narrate(run: Run) -> str:
         node = f"{node} {costs}"
     prefix = ""
     if limit is not None and run.steps.first_of_iteration(run.steps.iteration_of(k)) == k:
-        prefix = f"Depth limit {limit}, a new iteration from START. "
+        prefix = f"Depth limit {group_digits(limit)}, a new iteration from START. "
     if run.at_end and run.found:
         goal = cell_text(run.nodes.cell(run.nodes.goal))
         if run.nodes.goal == expanded:  # the goal tested when taken off the frontier
@@ -130,7 +130,7 @@ def _before_the_first_step(run: Run, word: str, limit: int | None) -> str:
     """Step 0: the start on the frontier, and what the first step does."""
     first = f"START {cell_text(run.grid.start)} is on the {word}"
     if limit is not None:
-        first += f" (depth limit {limit})"
+        first += f" (depth limit {group_digits(limit)})"
     if run.at_end and run.found:
         return f"{first}: the start is the goal"
     return f"{first}. Press n to expand it."
@@ -159,7 +159,8 @@ def _what_the_step_did(run: Run, node: str, expanded: int, word: str, limit: int
     if dirs:
         return f"Expanded {node}: added {', '.join(dirs)} to the {word}"
     if limit is not None and run.nodes.depth(expanded) >= limit:
-        return f"Expanded {node} at the depth limit {limit}: no successors added"
+        return (f"Expanded {node} at the depth limit {group_digits(limit)}: no successors "
+                "added")
     return f"Expanded {node}: no new successors"
 
 
@@ -172,12 +173,12 @@ def _how_it_ended(run: Run, text: str, word: str, limit: int | None) -> str:
     if run.now.frontier_len() and limit is None:
         # ended with cells still to expand: only a replayed trace stops so (a search of
         # the app goes on until its frontier is empty), and nothing blocked it
-        return (f"{text}. It stops here, {run.now.frontier_len()} still on the {word}: "
-                f"no path found")
+        return (f"{text}. It stops here, {group_digits(run.now.frontier_len())} still on the "
+                f"{word}: no path found")
     why = blocked_by(run)
     why = f" — {why}" if why else ""
     if limit is not None:
-        return f"{text}. Depth limit {limit} cut nothing off: no path{why}"
+        return f"{text}. Depth limit {group_digits(limit)} cut nothing off: no path{why}"
     return f"{text}. Frontier empty: no path{why}"
 
 
@@ -235,7 +236,7 @@ def result_text(run: Run) -> str:
         return "no path"
     moves = run.moves() or []
     cost = run.grid.path_cost(run.path() or [])
-    text = f"path: {len(moves)} moves, cost {cost:.2f}"
+    text = f"path: {group_digits(len(moves))} moves, cost {cost:.2f}"
     lowest = lowest_cost(run)
     if lowest is not None:
         text += " (the lowest)" if cost <= lowest * (1 + 1e-9) else f" (lowest {lowest:.2f})"

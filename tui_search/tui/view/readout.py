@@ -7,6 +7,7 @@ from __future__ import annotations
 from tui_search.engine.maps.grid import Cell, Grid
 from tui_search.engine.run.position import CellState
 from tui_search.engine.run.recorded import Run
+from tui_search.engine.util.numbers import group_digits
 from tui_search.tui.model.cell_edits import cell_text
 
 
@@ -54,7 +55,7 @@ def describe(run: Run | None, grid: Grid, cell: Cell) -> str:
     else:
         since = run.nodes.generated_at(g)
         parts.append(f"on the frontier since step {since}")
-    parts.append(f"depth {run.nodes.depth(g)}")
+    parts.append(f"depth {group_digits(run.nodes.depth(g))}")
     costs = run.nodes.costs(g)
     if costs is not None:
         cost, h, priority = costs

@@ -86,6 +86,7 @@ class TreeModel:
         self._mode = ""  # "list" or "focus"
         self._current = -1  # event expanded at the position (-1 at step 0)
         self._current_discarded = False  # ...or taken off and discarded
+        self._ended = False  # the run at its end: nothing is being expanded any more
         self._limit: int | None = None
         self._coord_w = 5
         self._tree_size = 0
@@ -160,6 +161,7 @@ class TreeModel:
         self._run, self._k, self._root, self._mode = run, k, root, mode
         self._current = run.steps.expanded_event(k) if k else -1
         self._current_discarded = bool(k) and run.steps.is_discarded(k)
+        self._ended = run.at_end
         self._tree_size = size
         self._limit = run.steps.depth_limit() if run.algo.iterative else None
         grid = run.grid
@@ -228,7 +230,7 @@ class TreeModel:
         """Width of the focused view's depth column (0 when the depth is not counted)."""
         if self._top_depth is None:
             return 0
-        return len(str(self._top_depth + len(self._chain))) + 1
+        return len(group_digits(self._top_depth + len(self._chain))) + 1
 
     def label_width(self) -> int:
         # glyph, space, direction (START: 5), space, coordinates
@@ -283,8 +285,10 @@ class TreeModel:
             cls = "expanded" if expanded else "frontier"
         glyph = GLYPH_GOAL if goal else (GLYPH_EXPANDED if expanded else GLYPH_FRONTIER)
         parts = [(f"{glyph} {label}", cls)]
-        if g == self._current:
-            parts.append((SUFFIX_DISCARDED if self._current_discarded else SUFFIX_CURRENT, cls))
+        if g == self._current and self._current_discarded:
+            parts.append((SUFFIX_DISCARDED, cls))
+        elif g == self._current and not self._ended:  # the search over: none is expanding
+            parts.append((SUFFIX_CURRENT, cls))
         elif goal:
             parts.append((SUFFIX_GOAL, cls))
         elif expanded and self._limit is not None and depth >= self._limit:
@@ -324,7 +328,7 @@ class TreeModel:
         if self._elided and y <= 2:
             if y == 1:
                 root = self._run.now.tree_root()  # type: ignore[union-attr]
-                parts: Parts = [(f"{0:>{depth_w - 1}} " if depth_w else "", "detail")]
+                parts: Parts = [(f"{'0':>{depth_w - 1}} " if depth_w else "", "detail")]
                 return parts + self._node_parts(root, 0, True)
             return [(" " * depth_w + self._elision(), "detail")]
         i = y - self._head()
@@ -340,7 +344,8 @@ class TreeModel:
         depth = None
         if self._top_depth is not None:
             depth = self._top_depth + min(i, len(chain))
-        parts = [(f"{depth:>{depth_w - 1}} " if depth is not None else "", "detail")]
+        parts = [(f"{group_digits(depth):>{depth_w - 1}} " if depth is not None else "",
+                  "detail")]
         if level:
             # Indentation stops growing at FOCUS_LEVELS, but children stay under their parent.
             shown = min(level, FOCUS_LEVELS) if i < len(chain) else (

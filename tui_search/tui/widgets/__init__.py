@@ -15,6 +15,8 @@
 * :mod:`~tui_search.tui.widgets.lesson_panel`: the lesson beside the panes;
 * :mod:`~tui_search.tui.widgets.key_bar`: the key hints at the bottom;
 * :mod:`~tui_search.tui.widgets.map_tree`: the file picker;
+* :mod:`~tui_search.tui.widgets.tick_box`: the settings' checkbox, ticked or empty;
+* :mod:`~tui_search.tui.widgets.pick_button`: the settings' radio button, a dot or empty;
 * :mod:`~tui_search.tui.widgets.error_line`: a prompt's error;
 * :mod:`~tui_search.tui.widgets.lazy_parts`: parts mounted the first time they show;
 * :mod:`~tui_search.tui.widgets.line_panel`: what the line-API views share;

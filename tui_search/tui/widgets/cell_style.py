@@ -20,6 +20,7 @@ from tui_search.engine.run.recorded import Run
 from tui_search.tui.view.cell_codes import (
     BY_RANK,
     COMPONENTS,
+    CURSOR_MARK,
     FREE,
     GLYPHS,
     GOAL,
@@ -88,39 +89,60 @@ def row_costs(grid: Grid, y: int, x0: int, x1: int) -> Sequence[float] | None:
 CURSOR, MARKED = len(COMPONENTS), 2 * len(COMPONENTS)
 
 
+def under_cursor(code: int) -> bool:
+    """Is a drawing code (cursor and mark added) one of a cell under the cursor?"""
+    return code // CURSOR in (1, 3)
+
+
 class CellLooks:
     """The glyph and style of each drawing code, and each step of the ramp: plain, under
-    the cursor (``code + CURSOR``), marked (``code + MARKED``) and both."""
+    the cursor (``code + CURSOR``), marked (``code + MARKED``) and both.
+
+    Under the cursor a cell keeps its colours: its glyph gets the cursor's mark beside it
+    (:data:`~tui_search.tui.view.cell_codes.CURSOR_MARK`), bold in the cell's own text colour
+    (made to read on its fill in every theme); a free cell's, which is dim, in
+    ``grid-view--cursor``'s; a big cell has a bar along its last line too."""
 
     def __init__(self, style_of: Callable[[str], Style]) -> None:
         cursor, marked = style_of("grid-view--cursor"), style_of("grid-view--marked")
         # the mark's own fill and colour over the cell's (its glyph says its state)
         marked = Style(color=marked.color, bgcolor=marked.bgcolor, bold=marked.bold,
                        underline=marked.underline)
+        bold = Style(bold=True)
         n = len(COMPONENTS)
         styles = [style_of(f"grid-view--{name}") for name in COMPONENTS]
-        looks = (Style(), cursor, marked, marked + cursor)
+
+        def look(style: Style, k: int, free: bool) -> Style:
+            """``style`` as drawing codes of the ``k``-th kind (plain, cursor, marked, both)."""
+            if k >= 2:
+                style += marked
+            return style + (cursor if free and k == 1 else bold) if k % 2 else style
+
         self.codes: list[tuple[str, Style]] = [
-            (GLYPHS[i], styles[i] + look) for look in looks for i in range(n)]
+            (GLYPHS[i][0] + CURSOR_MARK if k % 2 else GLYPHS[i], look(styles[i], k, i == FREE))
+            for k in range(4) for i in range(n)]
         ramp = [styles[FREE]] + [style_of(f"grid-view--{name}") for name in RAMP_COMPONENTS]
-        self.ramp: list[Style] = [style + look for look in looks for style in ramp]
+        self.ramp: list[Style] = [look(style, k, level == 0) for k in range(4)
+                                  for level, style in enumerate(ramp)]
 
     def terrain(self, code: int, cost: float) -> tuple[str, Style]:
         """A cell of ``code`` (cursor included) that costs ``cost``: a free cell shaded by
-        the ramp, any cell but an obstacle with its cost's digit beside its glyph."""
+        the ramp, any cell but an obstacle with its cost's digit beside its glyph (under the
+        cursor, the cursor's mark: the readout says the cost)."""
         glyph, style = self.codes[code]
         base = code % len(COMPONENTS)
-        if base == WALL:
-            return glyph, style
         if base == FREE:
             style = self.ramp[cost_level(cost) + (RAMP_LEVELS + 1) * (code // CURSOR)]
+        if base == WALL or under_cursor(code):
+            return glyph, style
         return glyph[0] + cost_mark(cost), style
 
     def big_cells(self, run: Run | None, row: int, columns: range, codes: list[int],
                   costs: Sequence[float] | None, width: int, height: int, sub: int,
                   labels: str) -> list[Segment]:
         """Line ``sub`` of the cells ``columns`` of map row ``row``, each ``width`` x
-        ``height`` characters: glyph, label (:func:`cell_line`) and terrain cost."""
+        ``height`` characters: glyph, label (:func:`cell_line`) and terrain cost; under the
+        cursor, its mark beside the glyph and a bar along the last line."""
         out = []
         for i, (x, code) in enumerate(zip(columns, codes, strict=True)):
             base = code % len(COMPONENTS)
@@ -130,7 +152,7 @@ class CellLooks:
                 style = self.terrain(code, costs[i])[1]
                 cost = cost_text(costs[i], width)
             text = cell_line(run, (x, row), width, height, sub, labels, GLYPHS[base][0],
-                             base == WALL, cost)
+                             base == WALL, cost, under_cursor(code))
             out.append(Segment(text, style))
         return out
 
@@ -216,4 +238,5 @@ __all__ = [
     "row_costs",
     "shaded",
     "swatches",
+    "under_cursor",
 ]

@@ -1,8 +1,10 @@
 """The challenge panel: an exercise (the tutorial's or a teacher's file), checked live on the map
 being edited.
 
-It quotes the exercise under its title, shows its searches' figures on the map as it is now, and
-says **Solved** the moment an edit satisfies the exercise -- or that an edit unsolved it.  What the
+It quotes the exercise under its title, names its rules where they are not the tutorial's
+(its searches, and the panes, run under them), shows its searches' figures on the map as it is
+now, and says **Solved** the moment an edit satisfies the exercise -- or that an edit unsolved
+it.  What the
 figures are and whether they solve it comes from :mod:`tui_search.engine.course.grading`; the app
 pushes each new verdict with :meth:`ChallengePanel.show`.
 """
@@ -57,6 +59,8 @@ class ChallengePanel(Static):
         style = self.get_component_rich_style
         out = Text()
         out.append(exercise.text + "\n", style("challenge--quote"))
+        if exercise.rules:  # the searches' rules, where they are not the tutorial's
+            out.append(f"Rules: {exercise.rules}\n", style("challenge--hint"))
         if verdict is None:
             out.append(note, style("challenge--hint"))
         else:

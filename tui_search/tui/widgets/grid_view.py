@@ -81,7 +81,9 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         & > .grid-view--current { background: $map-current; color: $map-current-text;
                                   text-style: bold; }
         & > .grid-view--path { background: $map-path; color: $map-path-text; text-style: bold; }
-        & > .grid-view--cursor { text-style: reverse; }
+        /* The cursor keeps the cell's colours: its mark beside the glyph, bold; this is a
+           free cell's mark's colour (tui_search/tui/widgets/cell_style.py). */
+        & > .grid-view--cursor { color: $foreground; text-style: bold; }
         /* A replay's first difference: the cell each run expands where they part, filled
            with a colour of its own (no state's, no obstacle's), its glyph kept. */
         & > .grid-view--marked { background: $map-mark; color: $map-mark-text;

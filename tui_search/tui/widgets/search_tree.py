@@ -22,6 +22,7 @@ from typing import TYPE_CHECKING, Any, ClassVar
 
 from textual.geometry import Size
 
+from tui_search.engine.util.numbers import group_digits
 from tui_search.tui.view.pieces import Parts
 from tui_search.tui.view.tree_listing import GLYPH_EXPANDED, GLYPH_FRONTIER, GLYPH_GOAL, TreeModel
 from tui_search.tui.view.tree_listing import Parts as TreeParts
@@ -106,8 +107,9 @@ class SearchTreePanel(LinePanel):
         moved = model.update(run)
         limit = model.limit
         titles = ("Search tree", "Tree") if limit is None else (
-            f"Search tree · depth limit {limit}", f"Tree · depth limit {limit}",
-            f"Tree · limit {limit}", f"limit {limit}", "Tree")
+            f"Search tree · depth limit {group_digits(limit)}",
+            f"Tree · depth limit {group_digits(limit)}", f"Tree · limit {group_digits(limit)}",
+            f"limit {group_digits(limit)}", "Tree")
         goal = f"  {GLYPH_GOAL} goal" if model.path_shown else ""
         self.show_titles(titles, (
             f"{GLYPH_EXPANDED} expanded  {GLYPH_FRONTIER} frontier{goal}",
