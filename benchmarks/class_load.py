@@ -14,8 +14,9 @@ of a start that cannot be shared.  The visitors' own CPU to their first frames, 
 the CPUs, is the least time the slowest of them can wait: measured with 30 (and 10) apps
 started together, as a class's are (each one's CPU is more than an app's alone: they share
 the caches), one at a time beside it.  The targets (issue 42): the slowest of 30 first frames
-≤ 1.5 × the floor; every step answered in ≤ 0.5 s with the 30 connected.  Without ``--quick`` the **old design** (textual-serve's
-own server starting ``python -m tui_search --served`` per visitor) is measured beside it.
+≤ 1.5 × the floor; every step answered in ≤ 0.5 s with the 30 connected.  Without ``--quick``
+the **old design** (textual-serve's own server starting ``python -m tui_search --served`` per
+visitor) is measured beside it.
 
     python benchmarks/class_load.py [--quick]      # or: bench.py --only class_load
 """
