@@ -18,6 +18,7 @@ from collections.abc import Iterable, Mapping
 from typing import NamedTuple
 
 from tui_search.engine.maps.read import MapError, block_table, quoted, read_text
+from tui_search.engine.maps.source import Lines
 
 __all__ = ["EMPTY", "MIN_COST", "TEXT_OWN", "Alphabet", "Terrain", "char_for", "comment_table",
            "load_terrain", "lost_costs", "parse_terrain", "text_costs", "write_row"]
@@ -33,6 +34,9 @@ MIN_COST = 0.01
 #: A comment line that is a table's line: ``; terrain CHAR COST`` (one character, one word).
 #: Any other comment, ``; terrain is rough here`` included, stays a comment.
 _COMMENT_TABLE = re.compile(r"\s*;\s*terrain\s+(\S\s+\S+)\s*$")
+#: The same lines found in a whole text (``[^\S\n]``: a space that does not end the line).
+_COMMENT_TABLES = re.compile(
+    r"^[^\S\n]*;[^\S\n]*terrain[^\S\n]+(\S[^\S\n]+\S+)[^\S\n]*$", re.MULTILINE)
 
 #: The text format's own characters and what they mean (None: blocked), which no table
 #: redefines: the digits cost themselves.
@@ -81,6 +85,14 @@ def comment_table(lines: Iterable[str], path: str) -> Terrain:
     """The table a text map carries in its comments: its ``; terrain CHAR COST`` lines."""
     found: list[tuple[int, str]] = []
     offsets: dict[int, int] = {}
+    if isinstance(lines, Lines):  # a file's: searched whole, not a line at a time
+        number, at = 1, 0
+        for found_line in _COMMENT_TABLES.finditer(lines.text):
+            number += lines.text.count("\n", at, found_line.start())
+            at = found_line.start()
+            found.append((number, found_line.group(1)))
+            offsets[number] = found_line.start(1) - found_line.start()
+        lines = ()
     for number, line in enumerate(lines, start=1):
         match = _COMMENT_TABLE.match(line)
         if match is not None:
