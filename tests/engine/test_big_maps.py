@@ -12,8 +12,10 @@ from unittest import mock
 from hypothesis import given
 from hypothesis import strategies as st
 
+from tui_search.engine.maps import movingai
 from tui_search.engine.maps import text as textmap
 from tui_search.engine.maps.grid import Grid
+from tui_search.engine.maps.movingai import parse_movingai_map
 from tui_search.engine.maps.read import MapError
 from tui_search.engine.maps.source import Lines
 from tui_search.engine.maps.terrain import parse_terrain
@@ -82,6 +84,32 @@ def test_a_comment_table_found_in_the_whole_text_is_the_one_found_line_by_line(
     assert table(Lines("\n".join(lines))) == table(lines)
 
 
+mai_cells = "..@TSW"
+
+
+@given(st.integers(1, 4), st.integers(1, 4), st.data(),
+       st.sampled_from(["", "\n", "\n\n", "\n \r\n"]), st.sampled_from(["\n", "\r\n"]))
+def test_movingai_rows_read_whole_are_the_rows_read_line_by_line(
+        width: int, height: int, data: st.DataObject, end: str, newline: str) -> None:
+    even = st.text(alphabet=mai_cells, min_size=width, max_size=width)
+    row = st.one_of(even, even, st.text(alphabet=mai_cells + " \r", max_size=5))
+    rows = data.draw(st.lists(row, min_size=height - 1, max_size=height + 1))
+    text = f"type octile\nheight {height}\nwidth {width}\nmap\n" + newline.join(rows) + end
+
+    def outcome() -> object:
+        try:
+            grid = parse_movingai_map(text, "m.map", parse_terrain("S 3\nT 5"))
+        except MapError as err:
+            return str(err)
+        return grid, grid.costs, grid.source
+
+    whole = outcome()
+    with mock.patch.object(movingai, "_whole_rows", return_value=None) as plain:
+        by_line = outcome()
+    assert plain.called or isinstance(by_line, str)
+    assert whole == by_line
+
+
 def _read_whole(text: str) -> bool:
     """Does the whole-text reader take ``text`` (rather than leave it to the line reader)?"""
     return textmap._plain_map(Lines(text), textmap.Alphabet(textmap.text_costs(textmap.EMPTY)),
@@ -126,7 +154,7 @@ def test_a_map_padded_in_blocks_or_columns_is_the_map_with_a_border(
     assert len(walls) == stride * (height + 2)
     assert [walls[p] for p in inside] == list(blocked)
     assert walls.count(1) == len(walls) - len(inside) + blocked.count(1)
-    if not costed:
+    if grid.costs is None:  # (all 1: a plain map)
         assert terrain is None
     else:
         assert terrain is not None and [terrain[p] for p in inside] == list(costs)

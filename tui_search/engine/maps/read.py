@@ -32,6 +32,7 @@ __all__ = [
     "check_cell",
     "current_stamp",
     "first_bad",
+    "plain_rows",
     "quoted",
     "read_map_file",
     "read_text",
@@ -205,6 +206,23 @@ def too_big(size: int) -> str:
     mb = math.ceil(size * 10 / (1024 * 1024)) / 10
     limit = MAX_MAP_BYTES // (1024 * 1024)
     return f"file is {mb:.1f} MB; a map may be at most {limit} MB"
+
+
+def plain_rows(body: str, allowed: str) -> tuple[int, int] | None:
+    """The width and height of ``body`` when it is rows of the ASCII characters ``allowed``,
+    all as wide, each but the last ended by ``\\n`` (no ``\\r``, space, blank line or other
+    character): a map's rows checked in a few passes over the whole text, not a line at a
+    time.  None for any other text, which a reader then reads line by line (and names its
+    first problem)."""
+    width = body.find("\n")
+    width = len(body) if width < 0 else width
+    if not width or not body.isascii() or re.search("[^" + re.escape(allowed + "\n") + "]", body):
+        return None  # also any "\r", space or tab
+    height = (len(body) + 1) // (width + 1)
+    if (height * (width + 1) - 1 != len(body) or body.count("\n") != height - 1
+            or body[width :: width + 1] != "\n" * (height - 1)):
+        return None  # rows of other widths, or blank lines: each newline where a row ends
+    return width, height
 
 
 def first_bad(row: str, bad: re.Pattern[str]) -> int:

@@ -45,7 +45,7 @@ class Lines(Sequence[str]):
 
     __slots__ = ("_found_ends", "text")
 
-    _CHUNK = 1 << 20  # characters split at a time while finding the line ends
+    _CHUNK = 1 << 16  # characters split at a time while finding the line ends (a string each)
 
     def __init__(self, text: str) -> None:
         self.text = text
@@ -75,6 +75,10 @@ class Lines(Sequence[str]):
     @classmethod
     def joined(cls, lines: Iterable[str]) -> "Lines":
         return cls("\n".join(lines))
+
+    def offset(self, index: int) -> int:
+        """Where line ``index`` (from 0) starts in the text."""
+        return self._ends[index - 1] + 1 if index else 0
 
     def __len__(self) -> int:
         if self._found_ends is None:

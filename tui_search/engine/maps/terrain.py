@@ -178,6 +178,16 @@ class Alphabet:
         return costs
 
 
+    def whole(self, flat: str) -> "tuple[bytearray, array[float] | None]":
+        """The cells of ``flat``, every row of a map one after the other (ASCII, and no
+        character :attr:`bad` finds): which are blocked, and their costs (None: all 1)."""
+        blocked = bytearray(flat.encode("ascii").translate(self.block))
+        if self.costed is None or not self.costed.search(flat):
+            return blocked, None
+        cost_of = {c: 1.0 if v is None else v for c, v in self.chars.items()}
+        return blocked, array("d", map(cost_of.__getitem__, flat))
+
+
 def text_costs(table: Terrain) -> dict[str, float | None]:
     """Every character of a text map with this table: its own and the table's."""
     return {**TEXT_OWN, **table.costs}

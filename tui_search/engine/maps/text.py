@@ -19,7 +19,7 @@ import re
 from array import array
 
 from tui_search.engine.maps.grid import Cell, Grid
-from tui_search.engine.maps.read import MapError, first_bad, quoted, split_lines
+from tui_search.engine.maps.read import MapError, first_bad, plain_rows, quoted, split_lines
 from tui_search.engine.maps.source import TEXT, Lines, MapSource
 from tui_search.engine.maps.terrain import (
     EMPTY,
@@ -150,14 +150,10 @@ def _plain_map(raw: Lines, cells_of: Alphabet, path: str, *, need_start: bool,
     body = text[start:stop]
     if "\r" in body:
         body = body.replace("\r\n", "\n")
-    width = body.find("\n")
-    width = len(body) if width < 0 else width
-    if not width or not body.isascii() or re.search("[^" + re.escape(allowed + "\n") + "]", body):
-        return None  # also any other "\r", space or tab
-    height = (len(body) + 1) // (width + 1)
-    if (height * (width + 1) - 1 != len(body) or body.count("\n") != height - 1
-            or body[width :: width + 1] != "\n" * (height - 1)):
-        return None  # rows of other widths, or blank lines: each newline where a row ends
+    size = plain_rows(body, allowed)
+    if size is None:
+        return None
+    width, height = size
     cells: dict[str, Cell] = {}
     for letter in "SG":
         at = body.find(letter)
@@ -168,12 +164,7 @@ def _plain_map(raw: Lines, cells_of: Alphabet, path: str, *, need_start: bool,
     for letter, what, needed in (("S", "start", need_start), ("G", "goal", need_goal)):
         if needed and letter not in cells:
             raise MapError(path, f"no {what} {letter!r} in the map")
-    flat = body.replace("\n", "")
-    blocked = bytearray(flat.encode("ascii").translate(cells_of.block))
-    costs = None
-    if cells_of.costed is not None and cells_of.costed.search(flat):
-        cost_of = {c: 1.0 if v is None else v for c, v in cells_of.chars.items()}
-        costs = array("d", map(cost_of.__getitem__, flat))
+    blocked, costs = cells_of.whole(body.replace("\n", ""))
     return first, width, height, blocked, cells, costs
 
 
