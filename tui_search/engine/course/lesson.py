@@ -21,12 +21,19 @@ from typing import Any
 
 from tui_search.engine.maps.grid import DEFAULT_ORDER, parse_order
 from tui_search.engine.maps.load import load_map
-from tui_search.engine.maps.read import MapError
+from tui_search.engine.maps.read import MapError, read_text
 from tui_search.engine.search.choices import CORNER_RULES, GOAL_TESTS, VISIT_RULES, Semantics
 from tui_search.engine.search.compare import parse_compare
 from tui_search.engine.search.heuristics import DEFAULT_HEURISTIC, HEURISTICS
 from tui_search.engine.search.registry import ALGORITHMS, DEFAULT_ALGORITHM, get_algorithm
 
+#: Bigger lessons are refused before reading (a long one is a few pages of text).
+MAX_LESSON_BYTES = 64 * 1024
+#: A lesson's sections, and a section's text (what the panel shows at once), are at most
+#: this many: the panel's Markdown parser takes time and memory many times the text of some
+#: texts (``[[[[``, tables of thousands of cells).
+MAX_SECTIONS = 200
+MAX_SECTION_CHARS = 4000
 #: The built-in lessons: ``tui_search/lessons/NAME.md``.
 LESSON_DIR = Path(__file__).resolve().parents[2] / "lessons"  # tui_search/lessons
 ON_OFF = {"on": True, "off": False}
@@ -243,6 +250,8 @@ def parse_lesson(text: str, path: Path, name: str | None = None) -> Lesson:
             heads.append(i)
     if fence:
         raise MapError(shown, "a fenced block is not closed by the end of the file")
+    if len(heads) > MAX_SECTIONS:
+        raise MapError(shown, f"more than {MAX_SECTIONS} sections", heads[MAX_SECTIONS] + 1, 1)
     if not heads:
         raise MapError(shown, "no sections: start each with a '## ' heading", 1)
     title = next((ln[2:].strip() for ln in lines[:heads[0]] if ln.startswith("# ")),
@@ -271,17 +280,16 @@ def parse_lesson(text: str, path: Path, name: str | None = None) -> Lesson:
                                head + i + 2, 1)
         opening = lines[:heads[0]] if s == 0 else []
         shown_text = "\n".join([*opening, lines[head], *body]).strip() + "\n"
+        if len(shown_text) > MAX_SECTION_CHARS:
+            raise MapError(shown, f"the section has {len(shown_text):,} characters; a section "
+                           f"may have at most {MAX_SECTION_CHARS:,}", head + 1, 1)
         sections.append(Section(lines[head][3:].strip(), shown_text, section_state, head + 1))
     return Lesson(name or path.stem, path, title, tuple(sections))
 
 
 def read_lesson(path: Path, name: str | None = None) -> Lesson:
     """Read and check the lesson at ``path`` (``MapError`` if it cannot be read or is bad)."""
-    try:
-        text = path.read_text("utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        reason = exc.strerror if isinstance(exc, OSError) and exc.strerror else str(exc)
-        raise MapError(str(path), f"cannot read the lesson: {reason}") from None
+    text = read_text(str(path), "a lesson", MAX_LESSON_BYTES)
     return parse_lesson(text.replace("\r\n", "\n"), path, name)
 
 

@@ -17,12 +17,16 @@ from array import array
 from collections.abc import Iterable, Mapping
 from typing import NamedTuple
 
-from tui_search.engine.maps.read import MapError, block_table, quoted, read_text
+from tui_search.engine.maps.read import MapError, block_table, each_line, quoted, read_text
 from tui_search.engine.maps.source import Lines
 
 __all__ = ["EMPTY", "MIN_COST", "TEXT_OWN", "Alphabet", "Terrain", "char_for", "comment_table",
            "load_terrain", "lost_costs", "parse_terrain", "text_costs", "write_row"]
 
+#: Bigger terrain tables are refused before reading (a table is a line a terrain), and so are
+#: tables of more terrains than this.
+MAX_TERRAIN_BYTES = 16 * 1024
+MAX_TERRAINS = 256
 #: A cost as a table writes it: digits with at most one decimal point.
 _COST = re.compile(r"[0-9]+(?:\.[0-9]*)?|\.[0-9]+")
 #: Costs above this are refused: a typo, not a terrain (and no sum of them loses precision).
@@ -73,12 +77,12 @@ EMPTY = Terrain({}, {})
 
 def parse_terrain(text: str, path: str = "<terrain>") -> Terrain:
     """Parse a terrain file (see the module's docstring)."""
-    return _parse_lines(enumerate(text.split("\n"), start=1), path)
+    return _parse_lines(enumerate(each_line(text), start=1), path)
 
 
 def load_terrain(path: str) -> Terrain:
     """Read and parse the terrain file at ``path`` (a MapError says why not)."""
-    return parse_terrain(read_text(path), path)
+    return parse_terrain(read_text(path, "a terrain table", MAX_TERRAIN_BYTES), path)
 
 
 def comment_table(lines: Iterable[str], path: str) -> Terrain:
@@ -92,12 +96,16 @@ def comment_table(lines: Iterable[str], path: str) -> Terrain:
             at = found_line.start()
             found.append((number, found_line.group(1)))
             offsets[number] = found_line.start(1) - found_line.start()
+            if len(found) > MAX_TERRAINS:
+                break  # (_parse_lines names the line too many)
         lines = ()
     for number, line in enumerate(lines, start=1):
         match = _COMMENT_TABLE.match(line)
         if match is not None:
             found.append((number, match.group(1)))
             offsets[number] = match.start(1)
+            if len(found) > MAX_TERRAINS:
+                break
     if not found:
         return EMPTY
     return _parse_lines(found, path, offsets)
@@ -126,6 +134,8 @@ def _parse_lines(lines: Iterable[tuple[int, str]], path: str,
         if char in costs:
             first = where[char][1]
             raise MapError(path, f"{char!r} is given twice (first at line {first})", number, col)
+        if len(costs) == MAX_TERRAINS:
+            raise MapError(path, f"more than {MAX_TERRAINS} terrains in one table", number, col)
         value_col = shift + line.index(value, line.index(char) + 1) + 1
         costs[char] = _cost(value, path, number, value_col)
         where[char] = (path, number, col)
