@@ -27,7 +27,7 @@ from tui_search.engine.course.condition import ConditionError, Node, names, pars
 from tui_search.engine.maps.grid import Grid
 from tui_search.engine.maps.read import MapError, bad_file, read_text
 from tui_search.engine.search.compare import Contender, parse_compare
-from tui_search.engine.util.untrusted import BadInput, check_nesting
+from tui_search.engine.util.untrusted import BadInput, check_nesting, check_values
 
 
 def toml_parser() -> ModuleType:
@@ -184,6 +184,7 @@ def parse_exercise(text: str, path: str, number: int | None = None) -> Exercise:
     """The exercise ``text`` (the file ``path``'s contents) says; MapError when it is bad."""
     try:
         check_nesting(text, toml=True)  # before tomllib, which recurses
+        check_values(text, 8 * len(text) + MAX_EXERCISE_BYTES, "[{,=")
         data: dict[str, Any] = _toml.loads(text)
     except BadInput as err:
         raise bad_file(path, err) from None

@@ -22,6 +22,7 @@ from typing import Any
 from tui_search.engine.maps.grid import DEFAULT_ORDER, parse_order
 from tui_search.engine.maps.load import load_map
 from tui_search.engine.maps.read import MapError, read_text
+from tui_search.engine.maps.source import Lines
 from tui_search.engine.search.choices import CORNER_RULES, GOAL_TESTS, VISIT_RULES, Semantics
 from tui_search.engine.search.compare import parse_compare
 from tui_search.engine.search.heuristics import DEFAULT_HEURISTIC, HEURISTICS
@@ -233,10 +234,21 @@ def _check(before: State, state: State, where: dict[str, tuple[int, int]], name:
     raise MapError(name, reason, line, 1)
 
 
+def _check_sizes(lines: Lines, heads: list[int], shown: str) -> None:
+    """Refuse a section (with its block and blank lines; the first with what comes before
+    it) of more than :data:`MAX_SECTION_CHARS` characters, at its heading."""
+    for s, head in enumerate(heads):
+        begin = lines.offset(0 if s == 0 else head)
+        end = lines.offset(heads[s + 1]) if s + 1 < len(heads) else len(lines.text) + 1
+        if end - begin - 1 > MAX_SECTION_CHARS:
+            raise MapError(shown, f"the section has {end - begin - 1:,} characters; a section "
+                           f"may have at most {MAX_SECTION_CHARS:,}", head + 1, 1)
+
+
 def parse_lesson(text: str, path: Path, name: str | None = None) -> Lesson:
     """The lesson in ``text`` (read from ``path``: maps are relative to its folder)."""
     shown = str(path)
-    lines = text.split("\n")
+    lines = Lines(text)  # (no string a line: a lesson of blank lines is many times its size)
     heads: list[int] = []  # the indexes of the ## lines, outside fenced blocks
     fence = ""
     for i, line in enumerate(lines):
@@ -248,12 +260,13 @@ def parse_lesson(text: str, path: Path, name: str | None = None) -> Lesson:
             fence = match.group(2)
         elif line.startswith("## "):
             heads.append(i)
+            if len(heads) > MAX_SECTIONS:
+                raise MapError(shown, f"more than {MAX_SECTIONS} sections", i + 1, 1)
     if fence:
         raise MapError(shown, "a fenced block is not closed by the end of the file")
-    if len(heads) > MAX_SECTIONS:
-        raise MapError(shown, f"more than {MAX_SECTIONS} sections", heads[MAX_SECTIONS] + 1, 1)
     if not heads:
         raise MapError(shown, "no sections: start each with a '## ' heading", 1)
+    _check_sizes(lines, heads, shown)
     title = next((ln[2:].strip() for ln in lines[:heads[0]] if ln.startswith("# ")),
                  path.stem)
     state = State()
@@ -280,9 +293,6 @@ def parse_lesson(text: str, path: Path, name: str | None = None) -> Lesson:
                                head + i + 2, 1)
         opening = lines[:heads[0]] if s == 0 else []
         shown_text = "\n".join([*opening, lines[head], *body]).strip() + "\n"
-        if len(shown_text) > MAX_SECTION_CHARS:
-            raise MapError(shown, f"the section has {len(shown_text):,} characters; a section "
-                           f"may have at most {MAX_SECTION_CHARS:,}", head + 1, 1)
         sections.append(Section(lines[head][3:].strip(), shown_text, section_state, head + 1))
     return Lesson(name or path.stem, path, title, tuple(sections))
 

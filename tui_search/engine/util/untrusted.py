@@ -111,15 +111,16 @@ def check_nesting(text: str, depth: int = MAX_DEPTH, *, toml: bool = False) -> N
             line_dots = 0
 
 
-def check_values(text: str, budget: int) -> None:
-    """Refuse JSON ``text`` whose parsed value could take more than ``budget`` bytes: each
-    bracket, brace, comma and colon stands for at most :data:`VALUE_BYTES` of objects (a
-    string's characters count one each).  Separators inside strings count too, so the bound
-    is cautious; a trace's line is far below it."""
-    values = sum(map(text.count, "[{,:"))
+def check_values(text: str, budget: int, separators: str = "[{,:") -> None:
+    """Refuse JSON ``text`` (TOML's: ``separators`` ``[{,=``) whose parsed value could take
+    more than ``budget`` bytes: each bracket, brace and separator stands for at most
+    :data:`VALUE_BYTES` of objects (a string's characters count one each).  Separators inside
+    strings count too, so the bound is cautious; a trace's line, or an exercise file, is far
+    below it."""
+    values = sum(map(text.count, separators))
     if values * VALUE_BYTES + len(text) > budget:
-        raise BadInput(f"too many values on one line ({values:,} arrays, objects and "
-                       f"separators, over {budget // VALUE_BYTES:,} for a file of this size)")
+        raise BadInput(f"too many values ({values:,} brackets, braces and separators, over "
+                       f"{budget // VALUE_BYTES:,} for a file of this size)")
 
 
 def load_json(text: str, budget: int, depth: int = MAX_DEPTH) -> Any:
