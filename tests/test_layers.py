@@ -150,7 +150,8 @@ def test_each_init_names_its_folder_s_job_and_each_module() -> None:
 SYNTHETIC = {
     "pkg": "",
     "pkg.low": "",
-    "pkg.low.a": "from typing import TYPE_CHECKING\nif TYPE_CHECKING:\n    from pkg.high import b\n",
+    "pkg.low.a": ("from typing import TYPE_CHECKING\nif TYPE_CHECKING:\n"
+                  "    from pkg.high import b\n"),
     "pkg.low.c": "def later():\n    import rich.text\n    import rich.cells\n",
     "pkg.high": "",
     "pkg.high.b": "from pkg.low import a\nfrom pkg import low\n",

@@ -458,7 +458,7 @@ BASH = bash_commands()
 def path_args(words: list[str]) -> list[str]:
     """The arguments of a command that name a file or folder it reads."""
     paths = []
-    for before, word in zip(["", *words], words):
+    for before, word in zip(["", *words], words, strict=False):
         if before in WRITES or word.startswith("-") or "://" in word:
             continue
         if "/" in word or FILE_LIKE.search(word):

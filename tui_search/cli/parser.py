@@ -39,7 +39,7 @@ class _Parser(argparse.ArgumentParser):
 
 def build_parser() -> argparse.ArgumentParser:
     # argparse makes a help formatter for every argument it adds, and each asks the terminal's
-    # size: asked once here (build_parser 0.85 -> 0.46 ms).
+    # size: asked once here (benchmarks/README.md, "startup").
     width = shutil.get_terminal_size().columns - 2
     p = _Parser(
         prog="tui-search",
@@ -47,12 +47,14 @@ def build_parser() -> argparse.ArgumentParser:
         description="Watch a robot plan a path on a grid with breadth-first, depth-first, "
         "iterative-deepening, uniform-cost, greedy best-first and A* search. With no MAP, opens "
         "the tutorial's 6x6 map.",
-        epilog="Exit codes (headless): 0 path found, 1 no path, 2 bad input, 3 gave up (--max-steps).",
+        epilog="Exit codes (headless): 0 path found, 1 no path, 2 bad input, 3 gave up "
+        "(--max-steps).",
     )
     p.add_argument("map", nargs="*", default=None, metavar="MAP",
                    help="a text map (.txt) or a MovingAI map (.map); several only with "
                    "--exercise E --headless (the class report)")
-    p.add_argument("--version", action="version", version=f"tui-search {__version__} ({core_name()})")
+    p.add_argument("--version", action="version",
+                   version=f"tui-search {__version__} ({core_name()})")
     p.add_argument("-a", "--algorithm", choices=list(ALGORITHMS), default=None,
                    help="; ".join(f"{a.key}: {a.name}" for a in ALGORITHMS.values()))
     p.add_argument("--start", metavar="X,Y", help="start cell (overrides the map's S)")
@@ -61,7 +63,8 @@ def build_parser() -> argparse.ArgumentParser:
                    help="a terrain table: lines 'CHAR COST' (a positive number) or 'CHAR "
                    "blocked' naming the map's letters (f 5 in a text map; S, W, T in a .map); "
                    "a text map's digits 1-9 cost themselves")
-    p.add_argument("--scen", metavar="FILE", help="a MovingAI .scen file to take start and goal from")
+    p.add_argument("--scen", metavar="FILE",
+                   help="a MovingAI .scen file to take start and goal from")
     p.add_argument("--scen-row", metavar="N", type=int, default=None,
                    help="problem N of --scen, counted from 0 after the version line")
     p.add_argument("--order", metavar="DIRS", default=",".join(DEFAULT_ORDER),
@@ -88,11 +91,11 @@ def build_parser() -> argparse.ArgumentParser:
                    "--headless, run them on the map and print a table (e.g. bfs,dfs or "
                    "astar:manhattan,ucs: an informed search may name its heuristic)")
     p.add_argument("--exercise", metavar="N|FILE",
-                   help="the tutorial's exercise N or an exercise FILE (TOML: docs/04-exercises.md) "
-                   "as a live challenge in the app; with --headless, grade the maps on it (1: "
-                   "BFS expands fewer nodes than DFS; 2: DFS's path has more moves than "
-                   "BFS's): exit 0 all solved, 1 not, 2 bad input, 3 a search gave up (one "
-                   "map); several maps print the class report")
+                   help="the tutorial's exercise N or an exercise FILE (TOML: "
+                   "docs/04-exercises.md) as a live challenge in the app; with --headless, "
+                   "grade the maps on it (1: BFS expands fewer nodes than DFS; 2: DFS's path "
+                   "has more moves than BFS's): exit 0 all solved, 1 not, 2 bad input, 3 a "
+                   "search gave up (one map); several maps print the class report")
     p.add_argument("--generate", metavar="KIND",
                    help="make a map instead of reading one: " + "; ".join(
                        f"{k.name}: {k.help}".replace("%", "%%") for k in KINDS.values())
@@ -118,8 +121,8 @@ def build_parser() -> argparse.ArgumentParser:
                    "numbered line per line (for handouts), and exit")
     p.add_argument("--lesson", metavar="NAME|FILE.md", nargs="?", const="",
                    help="open a lesson beside the panes: a built-in one by name (tutorial, "
-                   "choices) or a Markdown file (its format: docs/05-lessons.md); pgdn and pgup move "
-                   "between its sections. With no name, list the built-in lessons")
+                   "choices) or a Markdown file (its format: docs/05-lessons.md); pgdn and "
+                   "pgup move between its sections. With no name, list the built-in lessons")
     p.add_argument("--headless", action="store_true",
                    help="search without the app and print the result")
     p.add_argument("--json", action="store_true",

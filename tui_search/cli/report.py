@@ -1,7 +1,7 @@
 """Maps graded on an exercise, headless (``--exercise E --headless MAP...``): one map as a line
 or the **class report** of many -- a line a map and a summary.  ``--json`` is always a list (an
-object a map) and ``--csv`` always a table, whatever the folder holds.  One bad map never stops the report: it is a line
-saying why it is unreadable.
+object a map) and ``--csv`` always a table, whatever the folder holds.  One bad map never
+stops the report: it is a line saying why it is unreadable.
 
 No Textual or Rich here.
 """

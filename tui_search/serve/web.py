@@ -3,10 +3,12 @@
 
 The server is given plain values: each visitor's app's command line (the command line's
 :func:`~tui_search.cli.serve_flags.served_args` makes it from the one the teacher typed, with
-the hidden ``--served`` flag, which makes that app keep off the server's files (:class:`~tui_search.tui.model.file_rules.FileAccess`: no saving or opening,
-or plain names in ``--save-dir`` only -- in a folder of the visitor's own unless
-``--shared-save-dir``) and off the config file (:meth:`~tui_search.tui.config.Config.in_memory`).
-The apps are forked by one process that has imported the app once (:mod:`tui_search.serve.forks`);
+the hidden ``--served`` flag, which makes that app keep off the server's files
+(:class:`~tui_search.tui.model.file_rules.FileAccess`: no saving or opening, or plain names in
+``--save-dir`` only -- in a folder of the visitor's own unless ``--shared-save-dir``) and off
+the config file (:meth:`~tui_search.tui.config.Config.in_memory`)), where to listen, and where
+visitors may save.  The apps are forked by one process that has imported the app once
+(:mod:`tui_search.serve.forks`);
 each visitor's websocket and app are :mod:`tui_search.serve.visit`'s; who may connect at all
 is :mod:`tui_search.serve.guard`'s (the host names, the token off loopback).
 
@@ -32,11 +34,12 @@ if TYPE_CHECKING:
 
 DEFAULT_HOST = "127.0.0.1"
 DEFAULT_PORT = 8000
-#: Apps running at once (each is a Python process of some 60 MB): the next visitor is told to
-#: try later.  A class fits; a script opening sockets in a loop does not exhaust the machine.
+#: Apps running at once (each is a Python process; benchmarks/README.md, "limits"): the next
+#: visitor is told to try later.  A class fits; a script opening sockets in a loop does not
+#: exhaust the machine.
 MAX_VISITORS = 60
-#: A visitor's app using more memory than this (MB) is ended: the tutorial's uses ~40, and a
-#: record of 20 million steps (--max-steps' default) some 400.
+#: A visitor's app using more memory than this (MB) is ended: far above the tutorial's, and
+#: above a record of --max-steps' default (benchmarks/README.md, "limits").
 APP_MEMORY_MB = 1000
 HOST_HEADER = re.compile(r"^[A-Za-z0-9.\-]+(:[0-9]+)?$|^\[[0-9A-Fa-f:.]+\](:[0-9]+)?$")
 
@@ -61,7 +64,7 @@ GRACE = 3.0
 def exit_with_server(app: Any, every: float = WATCH_EVERY) -> None:
     """End the served ``app`` when the process that started it is gone (killed, crashed):
     else it would run on with no visitor, and a Textual app whose output pipe is gone can
-    spin on a core (seen: 37 % of one for 40 minutes).  A daemon thread watches the parent
+    spin on a core (seen: a third of one, for most of an hour).  A daemon thread watches the parent
     process; once this process is re-parented it asks the app to exit and, should it not
     within :data:`GRACE` seconds, ends the process."""
     import threading

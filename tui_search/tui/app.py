@@ -95,7 +95,8 @@ class SearchApp(App[int]):
         if chosen.dark == self.current_theme.dark:
             # What Textual set up for its default (the ANSI palette, -dark-mode) holds: set the
             # name without the watcher, whose restyle of a stylesheet not read yet would cost
-            # the first frame ~10 ms.  (A light theme takes the watcher: it changes those.)
+            # the first frame time (benchmarks/README.md, "startup").  (A light theme takes the
+            # watcher: it changes those.)
             self.set_reactive(App.theme, chosen.name)
         else:
             self.theme = chosen.name
@@ -117,7 +118,7 @@ class SearchApp(App[int]):
     # -- themes ---------------------------------------------------------------------------
     #: False while ``App.__init__`` asks for the variables of Textual's default theme: the
     #: app sets its chosen theme's in their place (``__init__``) before any CSS is read, so
-    #: generating those (~3.3 M instructions of the first frame) would be wasted.
+    #: generating those would be wasted (benchmarks/README.md, "startup").
     _theme_chosen = False
 
     def get_css_variables(self) -> dict[str, str]:

@@ -5,8 +5,8 @@ made: :func:`collector_paused`, around the ``tui-search`` command's imports
 
 Importing builds objects that live as long as the process (modules, classes, functions), so
 the collector's passes over them free almost nothing: without the pause, importing the app
-and Textual ran ~90 young-generation passes, ~4 % of a first frame's instructions and 20-30 ms
-of its wall time (``benchmarks/README.md``, "startup").  Refcounting frees objects as usual
+and Textual ran dozens of young-generation passes, a share of a first frame's instructions
+and of its wall time (``benchmarks/README.md``, "startup").  Refcounting frees objects as usual
 meanwhile; only cycles wait for the collector, which is back on once the first frame is drawn.
 """
 
@@ -35,8 +35,8 @@ def collector_held() -> Iterator[Callable[[], None]]:
     app calls it once its first frame is drawn: :func:`tui_search.cli.main.run_app`), and as it was
     after the block in any case.  Styling and drawing the first frame make objects that mostly
     live as long as the app, as importing does: with the collector on from ``app.run()``, the
-    tutorial's first frame ran 67 more young-generation passes and 6 more middle ones, ~8 ms
-    of CPU time of ~480 ms (counted with ``gc.callbacks``; benchmarks/README.md, "startup")."""
+    tutorial's first frame ran dozens more passes over them (counted with ``gc.callbacks``;
+    benchmarks/README.md, "startup")."""
     was_on = gc.isenabled()
     gc.disable()
 

@@ -8,8 +8,7 @@ ctrl+s writes the map's own file only when that file is in the folder.  No Textu
 rules are tested as plain functions.
 """
 
-# No `from __future__ import annotations`: typing compiles a NamedTuple's string
-# annotations one by one at import (~5 M instructions of every start in all: session 14).
+# No future import: CONTRIBUTING.md, "Start-up".
 import os
 import re
 from collections.abc import Callable
