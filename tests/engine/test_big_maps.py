@@ -6,9 +6,11 @@ reader gives, grid and error alike.  The memory itself is measured in benchmarks
 from __future__ import annotations
 
 import random
+import tracemalloc
 from array import array
 from unittest import mock
 
+import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
@@ -20,7 +22,9 @@ from tui_search.engine.maps.read import MapError
 from tui_search.engine.maps.source import Lines
 from tui_search.engine.maps.terrain import parse_terrain
 from tui_search.engine.maps.text import parse_text_map
+from tui_search.engine.run.recorded import Run
 from tui_search.engine.search import problem
+from tui_search.engine.search.choices import Semantics
 
 texts = st.text(alphabet="ab\n\r", max_size=40)
 
@@ -159,3 +163,21 @@ def test_a_map_padded_in_blocks_or_columns_is_the_map_with_a_border(
     else:
         assert terrain is not None and [terrain[p] for p in inside] == list(costs)
         assert sum(terrain) == sum(costs) + len(walls) - len(inside)
+
+
+@pytest.mark.parametrize("header", ["", "; a comment first\n"])
+def test_a_map_of_one_cell_rows_is_searched_within_ten_times_its_size(header: str) -> None:
+    """Issue 42's map, a megabyte of it: ``S``, one-cell rows, ``G``, read and searched one
+    step (``--headless --max-steps 1``) in at most ten times its size, where a slice object
+    a row once took 143 times (the 64 MB one is benchmarks/big_map.py's)."""
+    text = header + "S\n" + ".\n" * 500_000 + "G\n"
+    Run(parse_text_map("S.G\n"), "bfs", Semantics(), 1).advance()  # one-off costs first
+    tracemalloc.start()
+    try:
+        run = Run(parse_text_map(text), "bfs", Semantics(), 1)
+        run.advance()
+        _, peak = tracemalloc.get_traced_memory()
+    finally:
+        tracemalloc.stop()
+    assert run.grid.height == 500_002 and run.recorded == 1
+    assert peak <= 10 * len(text)
