@@ -14,13 +14,12 @@ NUL, each line's JSON checked before it is parsed; its steps are kept in flat ar
 (:class:`TraceSteps`), a few bytes a step.
 """
 
-from __future__ import annotations
-
+# No future import: CONTRIBUTING.md, "Start-up".
 import json
 from array import array
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
-from typing import overload
+from typing import NamedTuple, overload
 
 from tui_search.engine.maps.grid import Cell, Grid
 from tui_search.engine.maps.read import MapError, each_line, read_text
@@ -35,10 +34,10 @@ LINE_BUDGET = 8
 LINE_ALLOWANCE = 256 * 1024
 
 
-@dataclass(frozen=True)
-class TraceStep:
+class TraceStep(NamedTuple):
     """One expansion of the trace: the line it is on, the cell taken off, the cells added (in
-    order, repeats kept: the check reports them) and whether it says it was discarded."""
+    order, repeats kept: the check reports them) and whether it says it was discarded.  (A
+    tuple: made each time a step is read from :class:`TraceSteps`, it must be quick.)"""
 
     line: int
     node: Cell
@@ -67,11 +66,11 @@ class TraceSteps(Sequence[TraceStep]):
         self._succ_end.append(len(self._succ))
         self._discarded.append(discarded)
 
-    def empty(self) -> TraceSteps:
+    def empty(self) -> "TraceSteps":
         """No steps, on the same map."""
         return TraceSteps(self._width)
 
-    def mirrored(self) -> TraceSteps:
+    def mirrored(self) -> "TraceSteps":
         """The same steps, each with its successors in reverse order."""
         other = self.empty()
         other._lines, other._nodes = self._lines, self._nodes
@@ -106,7 +105,15 @@ class TraceSteps(Sequence[TraceStep]):
                          bool(self._discarded[index]))
 
     def __iter__(self) -> Iterator[TraceStep]:
-        return (self[i] for i in range(len(self)))
+        w, lines, nodes, succ, discarded = (self._width, self._lines, self._nodes, self._succ,
+                                            self._discarded)
+        begin = 0
+        for i, end in enumerate(self._succ_end):
+            node = nodes[i]
+            yield TraceStep(lines[i], (node % w, node // w),
+                            tuple([(c % w, c // w) for c in succ[begin:end]]),
+                            bool(discarded[i]))
+            begin = end
 
     def __eq__(self, other: object) -> bool:
         if not isinstance(other, Sequence):
