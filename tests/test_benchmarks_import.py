@@ -273,3 +273,25 @@ def test_the_startup_floors_count_the_screens_widgets() -> None:
             return len(app.query(Lines))
 
     assert asyncio.run(count()) == one
+
+
+def test_the_big_map_section_s_readers_and_app_run_on_small_files(tmp_path) -> None:
+    """Each reader's script of the big_map section on its heaviest file of 2 KB, and the app's
+    first frame on the tutorial (untimed): each runs to its end."""
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    from benchmarks import big_map
+
+    root = Path(__file__).resolve().parents[1]
+    for name, imports, call, _, heaviest in big_map.READERS:
+        path = tmp_path / "heavy"
+        path.write_text(heaviest(2000))
+        script = big_map._READ_WITH.format(imports=imports, call=call)
+        done = subprocess.run([sys.executable, "-c", script, str(path)], cwd=root,
+                              capture_output=True, text=True, timeout=60)
+        assert done.returncode == 0 and done.stderr == "", (name, done.stderr)
+    done = subprocess.run([sys.executable, "-c", big_map._APP_FRAME, str(TUTORIAL)], cwd=root,
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr

@@ -45,7 +45,7 @@ REFUSED = "tui-search: error: --replay shows one trace beside one search in the 
 
 @pytest.mark.parametrize("argv, expected", [
     (["--replay", "T"], "tui-search: T:2:10: not JSON: Expecting value"),
-    (["--replay", "missing.jsonl"], "tui-search: missing.jsonl: cannot read the trace"),
+    (["--replay", "missing.jsonl"], "tui-search: missing.jsonl: no such file"),
     (["--replay", "T", "--compare", "bfs,dfs"], REFUSED + "--compare"),
     (["--replay", "T", "--exercise", "1"], REFUSED + "--exercise"),
     (["--replay", "T", "--lesson", "tutorial"], REFUSED + "--lesson"),

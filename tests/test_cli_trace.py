@@ -87,7 +87,7 @@ def test_the_apps_own_trace_of_the_tutorial(capsys, tmp_path: Path) -> None:
     (["--headless", "-a", "bfs", "--check-trace", "T"],
      "tui-search: T:2:10: not JSON: Expecting value"),
     (["--headless", "-a", "bfs", "--check-trace", "missing.jsonl"],
-     "tui-search: missing.jsonl: cannot read the trace"),
+     "tui-search: missing.jsonl: no such file"),
 ])
 def test_bad_input_is_one_line_and_exit_2(capsys, tmp_path: Path, monkeypatch, argv,
                                           expected) -> None:

@@ -178,7 +178,8 @@ def test_an_exercise_that_is_not_text_says_so(tmp_path: Path) -> None:
     path.write_bytes(GREEDY.encode().replace(b"Greedy", b"Gr\xffedy"))
     with pytest.raises(MapError) as caught:
         load_exercise(path)
-    assert str(caught.value) == f"{path}: not a text file (an exercise is TOML, in UTF-8)"
+    assert str(caught.value) == (f"{path}:1:12: not UTF-8 (byte 0xff): an exercise file is "
+                                 "UTF-8 text")
 
 
 def test_python_3_10_reads_exercises_with_tomli(monkeypatch, tmp_path: Path) -> None:

@@ -159,7 +159,7 @@ def test_a_map_longer_than_stat_said_is_read_in_chunks_up_to_the_cap(
     monkeypatch.setattr(mapread, "open", spying_open, raising=False)
     monkeypatch.setattr(mapread, "_READ_CHUNK", 64 * 1024)
     path = write(tmp_path, "big.txt", b"." * (3 * 1024 * 1024))
-    monkeypatch.setattr(mapread, "_check_kind", lambda path, st: None)  # past the os.stat
+    monkeypatch.setattr(mapread, "_check_kind", lambda *args: None)  # past the os.stat
     assert error_of(load_map, path) == f"{path}: file is 1.1 MB; a map may be at most 1 MB"
     assert max(reads) <= 64 * 1024 and sum(reads) == 1024 * 1024 + 1
 
@@ -206,13 +206,18 @@ def test_a_device_is_refused(tmp_path: Path) -> None:
         assert isinstance(error, MapError) and str(error) == f"{path}: not a regular file"
 
 
-@pytest.mark.parametrize(
-    "content",
-    [b"S.\n.G\x00\n", b"\x89PNG\r\n\x1a\n", "S.\n.G\n".encode("utf-16"), b"S.\n\xff\xfe\n"],
-)
-def test_load_map_binary(tmp_path: Path, content: bytes) -> None:
+@pytest.mark.parametrize("content, where, what", [
+    (b"S.\n.G\x00\n", "2:3", "binary file (a NUL byte), not a map"),
+    (b"\x89PNG\r\n\x1a\n", "1:1", "not UTF-8 (byte 0x89): a map is UTF-8 text"),
+    ("S.\n.G\n".encode("utf-16"), "1:4", "binary file (a NUL byte), not a map"),
+    (b"S.\n\xff\xfe\n", "2:1", "not UTF-8 (byte 0xff): a map is UTF-8 text"),
+    ("Sé\n.\xffG\n".encode("utf-8").replace(b"\xc3\xbf", b"\xbf"), "2:2",
+     "not UTF-8 (byte 0xbf): a map is UTF-8 text"),
+])
+def test_load_map_binary(tmp_path: Path, content: bytes, where: str, what: str) -> None:
+    """A NUL or a byte that is not UTF-8 is named at its line and column (in characters)."""
     path = write(tmp_path, "b.map", content)
-    assert error_of(load_map, path) == f"{path}: binary file, not a text map"
+    assert error_of(load_map, path) == f"{path}:{where}: {what}"
 
 
 @pytest.mark.parametrize("row", [".", "..........", "T" * 80])

@@ -120,7 +120,8 @@ def test_scenario_errors(tmp_path: Path, text: str, expected: str) -> None:
 def test_scenario_file_errors(tmp_path: Path) -> None:
     assert error_of(read_scenarios, tmp_path / "no.scen") == f"{tmp_path / 'no.scen'}: no such file"
     path = write(tmp_path, "b.scen", b"version 1\n\x00")
-    assert error_of(read_scenarios, path) == f"{path}: binary file, not a text map"
+    assert error_of(read_scenarios, path) == (
+        f"{path}:2:1: binary file (a NUL byte), not a scenario file")
 
 
 def test_load_scenario_missing_row(tmp_path: Path) -> None:

@@ -27,7 +27,7 @@ from typing import Any
 
 from tui_search.engine.course.condition import ConditionError, Node, names, parse_condition
 from tui_search.engine.maps.grid import Grid, parse_order
-from tui_search.engine.maps.read import MapError
+from tui_search.engine.maps.read import MapError, bad_file, read_text
 from tui_search.engine.search.choices import (
     CORNER_RULES,
     DEFAULT_SEMANTICS,
@@ -38,6 +38,7 @@ from tui_search.engine.search.choices import (
 from tui_search.engine.search.compare import Contender, parse_compare
 from tui_search.engine.search.heuristics import HEURISTICS
 from tui_search.engine.search.registry import get_algorithm
+from tui_search.engine.util.untrusted import BadInput, check_nesting, check_values
 
 
 def toml_parser() -> ModuleType:
@@ -52,6 +53,8 @@ def toml_parser() -> ModuleType:
 
 _toml = toml_parser()
 
+#: Bigger exercise files are refused before reading (one is a few hundred bytes).
+MAX_EXERCISE_BYTES = 64 * 1024
 #: What a student may be allowed to change.
 EDITS = ("start", "goal", "obstacles", "terrain")
 OTHER_EDITS = ("fail", "hint")
@@ -246,9 +249,15 @@ def _grid(reader: _Reader) -> Grid:
 def parse_exercise(text: str, path: str, number: int | None = None) -> Exercise:
     """The exercise ``text`` (the file ``path``'s contents) says; MapError when it is bad."""
     try:
+        check_nesting(text, toml=True)  # before tomllib, which recurses
+        check_values(text, 8 * len(text) + MAX_EXERCISE_BYTES, "[{,=")
         data: dict[str, Any] = _toml.loads(text)
+    except BadInput as err:
+        raise bad_file(path, err) from None
     except _toml.TOMLDecodeError as exc:
         raise _toml_error(path, exc) from None
+    except RecursionError:  # (a guard: check_nesting refuses anything this deep)
+        raise MapError(path, "nested too deep") from None
     reader = _Reader(path, text, data)
     unknown = [k for k in data if k not in _KEYS]
     if unknown:
@@ -291,15 +300,8 @@ def parse_exercise(text: str, path: str, number: int | None = None) -> Exercise:
 
 def load_exercise(path: str | Path, number: int | None = None) -> Exercise:
     """Read the exercise file at ``path``."""
-    from tui_search.engine.maps.read import NOT_TEXT, read_text
-
     where = str(path)
-    try:
-        text = read_text(where)
-    except MapError as exc:
-        if exc.message != NOT_TEXT:
-            raise
-        raise MapError(where, "not a text file (an exercise is TOML, in UTF-8)") from None
+    text = read_text(where, "an exercise file", MAX_EXERCISE_BYTES)
     # A byte order mark (some Windows editors write one) is no part of the TOML.
     return parse_exercise(text.removeprefix("\ufeff"), where, number)
 

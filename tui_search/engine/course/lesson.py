@@ -21,7 +21,8 @@ from typing import TYPE_CHECKING, Any
 
 from tui_search.engine.maps.grid import DEFAULT_ORDER, parse_order
 from tui_search.engine.maps.load import load_map
-from tui_search.engine.maps.read import MapError
+from tui_search.engine.maps.read import MapError, read_text
+from tui_search.engine.maps.source import Lines
 from tui_search.engine.search.choices import CORNER_RULES, GOAL_TESTS, VISIT_RULES, Semantics
 from tui_search.engine.search.compare import parse_compare
 from tui_search.engine.search.heuristics import DEFAULT_HEURISTIC, HEURISTICS
@@ -30,6 +31,13 @@ from tui_search.engine.search.registry import ALGORITHMS, DEFAULT_ALGORITHM, get
 if TYPE_CHECKING:  # read only when a lesson shows one (tomllib and the conditions)
     from tui_search.engine.course.exercise_file import Exercise
 
+#: Bigger lessons are refused before reading (a long one is a few pages of text).
+MAX_LESSON_BYTES = 64 * 1024
+#: A lesson's sections, and a section's text (what the panel shows at once), are at most
+#: this many: the panel's Markdown parser takes time and memory many times the text of some
+#: texts (``[[[[``, tables of thousands of cells).
+MAX_SECTIONS = 200
+MAX_SECTION_CHARS = 4000
 #: The built-in lessons: ``tui_search/lessons/NAME.md``.
 LESSON_DIR = Path(__file__).resolve().parents[2] / "lessons"  # tui_search/lessons
 ON_OFF = {"on": True, "off": False}
@@ -264,10 +272,21 @@ def _check(before: State, state: State, where: dict[str, tuple[int, int]], name:
     raise MapError(name, reason, line, 1)
 
 
+def _check_sizes(lines: Lines, heads: list[int], shown: str) -> None:
+    """Refuse a section (with its block and blank lines; the first with what comes before
+    it) of more than :data:`MAX_SECTION_CHARS` characters, at its heading."""
+    for s, head in enumerate(heads):
+        begin = lines.offset(0 if s == 0 else head)
+        end = lines.offset(heads[s + 1]) if s + 1 < len(heads) else len(lines.text) + 1
+        if end - begin - 1 > MAX_SECTION_CHARS:
+            raise MapError(shown, f"the section has {end - begin - 1:,} characters; a section "
+                           f"may have at most {MAX_SECTION_CHARS:,}", head + 1, 1)
+
+
 def parse_lesson(text: str, path: Path, name: str | None = None) -> Lesson:
     """The lesson in ``text`` (read from ``path``: maps are relative to its folder)."""
     shown = str(path)
-    lines = text.split("\n")
+    lines = Lines(text)  # (no string a line: a lesson of blank lines is many times its size)
     heads: list[int] = []  # the indexes of the ## lines, outside fenced blocks
     fence = ""
     for i, line in enumerate(lines):
@@ -279,10 +298,13 @@ def parse_lesson(text: str, path: Path, name: str | None = None) -> Lesson:
             fence = match.group(2)
         elif line.startswith("## "):
             heads.append(i)
+            if len(heads) > MAX_SECTIONS:
+                raise MapError(shown, f"more than {MAX_SECTIONS} sections", i + 1, 1)
     if fence:
         raise MapError(shown, "a fenced block is not closed by the end of the file")
     if not heads:
         raise MapError(shown, "no sections: start each with a '## ' heading", 1)
+    _check_sizes(lines, heads, shown)
     title = next((ln[2:].strip() for ln in lines[:heads[0]] if ln.startswith("# ")),
                  path.stem)
     state = State()
@@ -315,11 +337,7 @@ def parse_lesson(text: str, path: Path, name: str | None = None) -> Lesson:
 
 def read_lesson(path: Path, name: str | None = None) -> Lesson:
     """Read and check the lesson at ``path`` (``MapError`` if it cannot be read or is bad)."""
-    try:
-        text = path.read_text("utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        reason = exc.strerror if isinstance(exc, OSError) and exc.strerror else str(exc)
-        raise MapError(str(path), f"cannot read the lesson: {reason}") from None
+    text = read_text(str(path), "a lesson", MAX_LESSON_BYTES)
     return parse_lesson(text.replace("\r\n", "\n"), path, name)
 
 

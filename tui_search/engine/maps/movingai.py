@@ -19,6 +19,7 @@ from tui_search.engine.maps.read import (
     MapError,
     block_table,
     first_bad,
+    plain_rows,
     quoted,
     split_lines,
 )
@@ -51,6 +52,10 @@ def parse_movingai_map(text: str, path: str = "<map>", terrain: Terrain | None =
     lines = _Stripped(raw)  # each line without trailing whitespace, made when read
     n = len(lines)
     i, width, height, height_line = _read_header(lines, path)
+    whole = _whole_rows(raw, i, width, height, cells_of)
+    if whole is not None:
+        source = MapSource(MOVINGAI, raw, range(i, i + height), width, bom, terrain=table.pairs())
+        return Grid(width, height, whole[0], source=source, costs=whole[1])
     last = n
     while last > i and not lines[last - 1]:
         last -= 1  # trailing blank lines (a final newline, or more) are not rows
@@ -74,6 +79,21 @@ def parse_movingai_map(text: str, path: str = "<map>", terrain: Terrain | None =
         )
     source = MapSource(MOVINGAI, raw, range(i, last), width, bom, terrain=table.pairs())
     return Grid(width, height, blocked, source=source, costs=costs)
+
+
+def _whole_rows(raw: Lines, first: int, width: int, height: int,
+                cells_of: Alphabet) -> "tuple[bytearray, array[float] | None] | None":
+    """The rows from line ``first`` on read in a few passes over the whole text, when they
+    are plain (:func:`~tui_search.engine.maps.read.plain_rows`, each ended by ``\\n`` or
+    ``\\r\\n``, then only blank lines) and as many and as wide as the header says: which cells
+    are blocked, and their costs.  None for any other rows, read line by line (which names
+    their first problem); a hypothesis test holds the two equal."""
+    body = raw.text[raw.offset(first):].rstrip()
+    if "\r" in body:
+        body = body.replace("\r\n", "\n")
+    if plain_rows(body, "".join(cells_of.chars)) != (width, height):
+        return None
+    return cells_of.whole(body.replace("\n", ""))
 
 
 def _read_header(lines: _Stripped, path: str) -> tuple[int, int, int, int]:

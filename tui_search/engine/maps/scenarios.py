@@ -47,6 +47,9 @@ class Scenario(NamedTuple):
     line: int  # 1-based line in the .scen file, for error messages
 
 
+#: Bigger scenario files are refused before reading (MovingAI's are a few hundred KB; every
+#: row is read, each on its own).
+MAX_SCEN_BYTES = 16 * 1024 * 1024
 _VERSION = re.compile(r"version\s+[0-9]+(\.[0-9]+)?", re.IGNORECASE)
 _FIELDS = (
     "bucket", "map", "map width", "map height",
@@ -57,7 +60,7 @@ _FIELDS = (
 def read_scenarios(path: str | os.PathLike[str]) -> list[Scenario]:
     """Every problem in a ``.scen`` file, in file order."""
     where = os.fsdecode(path)
-    return parse_scenarios(read_text(where), where)
+    return parse_scenarios(read_text(where, "a scenario file", MAX_SCEN_BYTES), where)
 
 
 def parse_scenarios(text: str, path: str = "<scen>") -> list[Scenario]:
@@ -69,13 +72,14 @@ def _read_rows(text: str, path: str, only: int | None = None) -> tuple[list[Scen
     """The problems in the text of a ``.scen`` file, or only problem number ``only`` (every
     row is checked all the same), and how many there are."""
     lines = stripped_lines(text)
-    if not _VERSION.fullmatch(lines[0].strip()):
-        found = quoted(lines[0]) if lines[0] else "an empty line"
+    first = next(lines)
+    if not _VERSION.fullmatch(first.strip()):
+        found = quoted(first) if first else "an empty line"
         raise MapError(path, f"expected 'version 1' on the first line, found {found}", 1)
     out = []
     count = 0
     fast = _PLAIN_ROW.fullmatch
-    for number, line in enumerate(lines[1:], start=2):
+    for number, line in enumerate(lines, start=2):
         m = fast(line)
         if m is not None:  # the common row, checked at once (benchmarks/README.md, "startup")
             b, name, w, h, sx, sy, gx, gy, length = m.groups()
@@ -146,7 +150,7 @@ def _parse_row(line: str, number: int, path: str) -> Scenario:
 def load_scenario(path: str | os.PathLike[str], row: int) -> Scenario:
     """Problem number ``row`` (from 0, after the version line) of a ``.scen`` file."""
     where = os.fsdecode(path)
-    found, count = _read_rows(read_text(where), where, row)
+    found, count = _read_rows(read_text(where, "a scenario file", MAX_SCEN_BYTES), where, row)
     if found:
         return found[0]
     if not count:

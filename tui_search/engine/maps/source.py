@@ -43,29 +43,47 @@ class Lines(Sequence[str]):
     string object each: a few times the file's size to read, not tens of times
     (benchmarks/README.md, "big_map").  A line is made when asked for."""
 
-    __slots__ = ("_ends", "text")
+    __slots__ = ("_found_ends", "text")
 
-    _CHUNK = 1 << 20  # characters split at a time while finding the line ends
+    _CHUNK = 1 << 16  # characters split at a time while finding the line ends (a string each)
 
     def __init__(self, text: str) -> None:
         self.text = text
+        self._found_ends: array[int] | None = None
+
+    @property
+    def _ends(self) -> "array[int]":
+        """Where each line ends, found when a line is first asked for: a map read only to
+        be searched never asks (and 4 bytes a row are twice a file of one-cell rows)."""
+        if self._found_ends is None:
+            self._found_ends = self._line_ends(self.text)
+        return self._found_ends
+
+    @classmethod
+    def _line_ends(cls, text: str) -> "array[int]":
         # "I" (4 bytes) holds every offset of a map (at most 64 MB); longer texts take "q".
         ends: array[int] = array("I" if len(text) < 1 << 32 else "q")
-        for start in range(0, len(text), self._CHUNK):
-            parts = text[start : start + self._CHUNK].split("\n")
+        for start in range(0, len(text), cls._CHUNK):
+            parts = text[start : start + cls._CHUNK].split("\n")
             del parts[-1]  # what follows the chunk's last newline (or the whole chunk)
             # each newline's offset: the lengths before it, plus one for each newline before
             steps = map(add, map(len, parts), repeat(1))
             ends.extend(islice(accumulate(steps, initial=start - 1), 1, None))
         ends.append(len(text))  # the last line ends with the text
-        self._ends = ends
+        return ends
 
     @classmethod
     def joined(cls, lines: Iterable[str]) -> "Lines":
         return cls("\n".join(lines))
 
+    def offset(self, index: int) -> int:
+        """Where line ``index`` (from 0) starts in the text."""
+        return self._ends[index - 1] + 1 if index else 0
+
     def __len__(self) -> int:
-        return len(self._ends)
+        if self._found_ends is None:
+            return self.text.count("\n") + 1
+        return len(self._found_ends)
 
     @overload
     def __getitem__(self, index: int) -> str: ...

@@ -17,11 +17,16 @@ from array import array
 from collections.abc import Iterable, Mapping
 from typing import NamedTuple
 
-from tui_search.engine.maps.read import MapError, block_table, quoted, read_text
+from tui_search.engine.maps.read import MapError, block_table, each_line, quoted, read_text
+from tui_search.engine.maps.source import Lines
 
 __all__ = ["EMPTY", "MIN_COST", "TEXT_OWN", "Alphabet", "Terrain", "char_for", "comment_table",
            "load_terrain", "lost_costs", "parse_terrain", "text_costs", "write_row"]
 
+#: Bigger terrain tables are refused before reading (a table is a line a terrain), and so are
+#: tables of more terrains than this.
+MAX_TERRAIN_BYTES = 16 * 1024
+MAX_TERRAINS = 256
 #: A cost as a table writes it: digits with at most one decimal point.
 _COST = re.compile(r"[0-9]+(?:\.[0-9]*)?|\.[0-9]+")
 #: Costs above this are refused: a typo, not a terrain (and no sum of them loses precision).
@@ -33,6 +38,9 @@ MIN_COST = 0.01
 #: A comment line that is a table's line: ``; terrain CHAR COST`` (one character, one word).
 #: Any other comment, ``; terrain is rough here`` included, stays a comment.
 _COMMENT_TABLE = re.compile(r"\s*;\s*terrain\s+(\S\s+\S+)\s*$")
+#: The same lines found in a whole text (``[^\S\n]``: a space that does not end the line).
+_COMMENT_TABLES = re.compile(
+    r"^[^\S\n]*;[^\S\n]*terrain[^\S\n]+(\S[^\S\n]+\S+)[^\S\n]*$", re.MULTILINE)
 
 #: The text format's own characters and what they mean (None: blocked), which no table
 #: redefines: the digits cost themselves.
@@ -69,23 +77,35 @@ EMPTY = Terrain({}, {})
 
 def parse_terrain(text: str, path: str = "<terrain>") -> Terrain:
     """Parse a terrain file (see the module's docstring)."""
-    return _parse_lines(enumerate(text.split("\n"), start=1), path)
+    return _parse_lines(enumerate(each_line(text), start=1), path)
 
 
 def load_terrain(path: str) -> Terrain:
     """Read and parse the terrain file at ``path`` (a MapError says why not)."""
-    return parse_terrain(read_text(path), path)
+    return parse_terrain(read_text(path, "a terrain table", MAX_TERRAIN_BYTES), path)
 
 
 def comment_table(lines: Iterable[str], path: str) -> Terrain:
     """The table a text map carries in its comments: its ``; terrain CHAR COST`` lines."""
     found: list[tuple[int, str]] = []
     offsets: dict[int, int] = {}
+    if isinstance(lines, Lines):  # a file's: searched whole, not a line at a time
+        number, at = 1, 0
+        for found_line in _COMMENT_TABLES.finditer(lines.text):
+            number += lines.text.count("\n", at, found_line.start())
+            at = found_line.start()
+            found.append((number, found_line.group(1)))
+            offsets[number] = found_line.start(1) - found_line.start()
+            if len(found) > MAX_TERRAINS:
+                break  # (_parse_lines names the line too many)
+        lines = ()
     for number, line in enumerate(lines, start=1):
         match = _COMMENT_TABLE.match(line)
         if match is not None:
             found.append((number, match.group(1)))
             offsets[number] = match.start(1)
+            if len(found) > MAX_TERRAINS:
+                break
     if not found:
         return EMPTY
     return _parse_lines(found, path, offsets)
@@ -114,6 +134,8 @@ def _parse_lines(lines: Iterable[tuple[int, str]], path: str,
         if char in costs:
             first = where[char][1]
             raise MapError(path, f"{char!r} is given twice (first at line {first})", number, col)
+        if len(costs) == MAX_TERRAINS:
+            raise MapError(path, f"more than {MAX_TERRAINS} terrains in one table", number, col)
         value_col = shift + line.index(value, line.index(char) + 1) + 1
         costs[char] = _cost(value, path, number, value_col)
         where[char] = (path, number, col)
@@ -164,6 +186,16 @@ class Alphabet:
         chars = self.chars
         costs.extend(1.0 if chars[c] is None else chars[c] for c in line)  # type: ignore[misc]
         return costs
+
+
+    def whole(self, flat: str) -> "tuple[bytearray, array[float] | None]":
+        """The cells of ``flat``, every row of a map one after the other (ASCII, and no
+        character :attr:`bad` finds): which are blocked, and their costs (None: all 1)."""
+        blocked = bytearray(flat.encode("ascii").translate(self.block))
+        if self.costed is None or not self.costed.search(flat):
+            return blocked, None
+        cost_of = {c: 1.0 if v is None else v for c, v in self.chars.items()}
+        return blocked, array("d", map(cost_of.__getitem__, flat))
 
 
 def text_costs(table: Terrain) -> dict[str, float | None]:

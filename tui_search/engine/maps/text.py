@@ -19,7 +19,7 @@ import re
 from array import array
 
 from tui_search.engine.maps.grid import Cell, Grid
-from tui_search.engine.maps.read import MapError, first_bad, quoted, split_lines
+from tui_search.engine.maps.read import MapError, first_bad, plain_rows, quoted, split_lines
 from tui_search.engine.maps.source import TEXT, Lines, MapSource
 from tui_search.engine.maps.terrain import (
     EMPTY,
@@ -46,8 +46,8 @@ def parse_text_map(
     cells_of = Alphabet(text_costs(table))
     fast = _plain_map(raw, cells_of, path, need_start=need_start, need_goal=need_goal)
     if fast is not None:
-        width, height, blocked, ends, costs = fast
-        source = MapSource(TEXT, raw, range(height), width, bom,
+        first, width, height, blocked, ends, costs = fast
+        source = MapSource(TEXT, raw, range(first, first + height), width, bom,
                            terrain=(terrain or EMPTY).pairs())
         return Grid(width, height, blocked, ends.get("S"), ends.get("G"), source, costs)
     costs = None
@@ -117,29 +117,43 @@ def _note_ends(line: str, number: int, y: int, cells: dict[str, Cell],
         )
 
 
-_Plain = tuple[int, int, bytearray, dict[str, Cell], "array[float] | None"]
+_Plain = tuple[int, int, int, bytearray, dict[str, Cell], "array[float] | None"]
+
+#: Comment and blank lines, each ended by its newline: what may come before and after the rows
+#: of a map read whole.
+_NOT_ROWS = re.compile(r"(?:[^\S\n]*(?:;[^\n]*)?\n)*")
+
+
+def _not_rows(text: str) -> int:
+    """Where the comment and blank lines at the start of ``text`` end."""
+    found = _NOT_ROWS.match(text)
+    return 0 if found is None else found.end()
 
 
 def _plain_map(raw: Lines, cells_of: Alphabet, path: str, *, need_start: bool,
                need_goal: bool) -> _Plain | None:
-    """The map read in a few passes over the whole text, when it is plain: only rows of
-    ASCII cells, all as wide, from the first line, no comment, ``\\r`` or blank line but at
-    the end, at most one ``S`` and one ``G``.  None for any other text, which the line by line
-    reader takes (and names its first problem).  A map of millions of rows then reads in
-    a few passes, not line by line (benchmarks/README.md, "big_map").  Gives the same grid
-    as the line by line reader (a hypothesis test checks it)."""
-    body = raw.text.rstrip("\n")
-    width = body.find("\n")
-    width = len(body) if width < 0 else width
-    if not width or not body.isascii() or ";" in body:
+    """The map read in a few passes over the whole text, when it is plain: rows of ASCII
+    cells, all as wide, one after the other (each ended by ``\\n`` or ``\\r\\n``), with comment
+    and blank lines only before and after them, at most one ``S`` and one ``G``.  None for
+    any other text, which the line by line reader takes (and names its first problem).  A
+    map of millions of rows then reads in a few passes, not line by line
+    (benchmarks/README.md, "big_map").  Gives the lines before the rows and the same grid as
+    the line by line reader (a hypothesis test checks it)."""
+    text = raw.text
+    start = _not_rows(text)
+    first = text.count("\n", 0, start)
+    allowed = "".join(cells_of.chars)  # never ";" nor a space: no table names them
+    after = re.compile("\r?\n(?![" + re.escape(allowed) + "])").search(text, start)
+    stop = len(text) if after is None else after.start()
+    if after is not None and _not_rows(text[after.end():] + "\n") < len(text) - after.end() + 1:
+        return None  # a row after a comment or a blank line, or a line of spaces and cells
+    body = text[start:stop]
+    if "\r" in body:
+        body = body.replace("\r\n", "\n")
+    size = plain_rows(body, allowed)
+    if size is None:
         return None
-    allowed = "".join(cells_of.chars) + "\n"
-    if re.search("[^" + re.escape(allowed) + "]", body):
-        return None  # also any "\r", space or tab
-    height = (len(body) + 1) // (width + 1)
-    if (height * (width + 1) - 1 != len(body) or body.count("\n") != height - 1
-            or body[width :: width + 1] != "\n" * (height - 1)):
-        return None  # rows of other widths, or blank lines: each newline where a row ends
+    width, height = size
     cells: dict[str, Cell] = {}
     for letter in "SG":
         at = body.find(letter)
@@ -150,13 +164,8 @@ def _plain_map(raw: Lines, cells_of: Alphabet, path: str, *, need_start: bool,
     for letter, what, needed in (("S", "start", need_start), ("G", "goal", need_goal)):
         if needed and letter not in cells:
             raise MapError(path, f"no {what} {letter!r} in the map")
-    flat = body.replace("\n", "")
-    blocked = bytearray(flat.encode("ascii").translate(cells_of.block))
-    costs = None
-    if cells_of.costed is not None and cells_of.costed.search(flat):
-        cost_of = {c: 1.0 if v is None else v for c, v in cells_of.chars.items()}
-        costs = array("d", map(cost_of.__getitem__, flat))
-    return width, height, blocked, cells, costs
+    blocked, costs = cells_of.whole(body.replace("\n", ""))
+    return first, width, height, blocked, cells, costs
 
 
 _SCEN_START = re.compile(r"version(?:\s|$)", re.IGNORECASE)

@@ -10,7 +10,9 @@ map whose every cell costs 1, which the loops then never read) and its lowest ce
 from __future__ import annotations
 
 from array import array
+from collections.abc import MutableSequence, Sequence
 from functools import cached_property
+from typing import Any
 
 from tui_search.engine.maps.grid import DELTAS, DIR_CODE, Grid
 from tui_search.engine.search.choices import DEFAULT_SEMANTICS, Semantics
@@ -107,19 +109,50 @@ class Problem:
 
 
 def padded(grid: Grid) -> tuple[bytes, array[float] | None]:
-    """``grid``'s walls with a border of walls, and its costs (None: all 1) with a border of 1:
-    the walls' rows joined by the two border cells between them, in one ``join``."""
-    w, size = grid.width, len(grid.blocked)
-    edge = b"\x01" * (w + 1)  # with the separator: the top border row and a left border
-    cells = memoryview(grid.blocked)
-    walls = b"\x01\x01".join([edge, *(cells[i : i + w] for i in range(0, size, w)), edge])
+    """``grid``'s walls with a border of walls, and its costs (None: all 1) with a border of 1.
+
+    The walls' rows are joined by the two border cells between them, a block of rows at a
+    time, or for a narrow map copied a column at a time (a strided slice): never an object
+    a row alive at once, which cost a map of millions of one-cell rows many times its file
+    (benchmarks/README.md, "big_map")."""
+    w, h = grid.width, grid.height
+    stride = w + 2
+    if w < _NARROW:
+        walls = bytearray(b"\x01") * (stride * (h + 2))
+        _copy_columns(walls, grid.blocked, w, h)
+        walls_bytes = bytes(walls)
+    else:
+        edge = b"\x01" * (w + 1)  # with the separator: the top border row and a left border
+        cells = memoryview(grid.blocked)
+        block = max(1, _BLOCK_BYTES // w)
+        blocks = (b"\x01\x01".join([cells[y * w : (y + 1) * w]
+                                    for y in range(lo, min(lo + block, h))])
+                  for lo in range(0, h, block))
+        walls_bytes = b"\x01\x01".join([edge, *blocks, edge])
     if grid.costs is None:
-        return walls, None
-    stride, costs = w + 2, grid.costs
-    terrain = array("d", [1.0]) * len(walls)
-    for y, i in enumerate(range(0, size, w), start=1):
-        terrain[y * stride + 1 : y * stride + 1 + w] = costs[i : i + w]
-    return walls, terrain
+        return walls_bytes, None
+    costs = grid.costs
+    terrain = array("d", [1.0]) * len(walls_bytes)
+    if w < _NARROW:
+        _copy_columns(terrain, costs, w, h)
+    else:
+        for y in range(h):
+            terrain[(y + 1) * stride + 1 : (y + 1) * stride + 1 + w] = costs[y * w : (y + 1) * w]
+    return walls_bytes, terrain
+
+
+#: Maps narrower than this are copied a column at a time; wider ones in blocks of rows of
+#: about this many bytes.
+_NARROW = 16
+_BLOCK_BYTES = 1 << 16
+
+
+def _copy_columns(out: MutableSequence[Any], cells: Sequence[Any], w: int, h: int) -> None:
+    """Put the ``w`` x ``h`` ``cells`` (row by row) inside ``out``'s border of one cell, a
+    column at a time (a strided copy: slow for wide maps, one pass for a narrow one)."""
+    stride = w + 2
+    for x in range(w):  # column x: every w-th cell, every stride-th place
+        out[stride + 1 + x : stride * (h + 1) : stride] = cells[x :: w]
 
 
 def corner_free(semantics: Semantics) -> bool:

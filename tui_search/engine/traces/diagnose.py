@@ -310,8 +310,7 @@ def mirrored(trace: Trace) -> Trace:
     cells in the order a stack DFS does that visits on expand and pushes them in reverse
     order (the cells it skips are the stack's discarded pops): its mirror is that search's
     trace."""
-    steps = tuple(replace(s, successors=s.successors[::-1]) for s in trace.steps)
-    return replace(trace, steps=steps)
+    return replace(trace, steps=trace.steps.mirrored())
 
 
 def _recursive_candidates(mirror: Trace) -> Iterator[Semantics]:

@@ -8,22 +8,36 @@ Coordinates are (column, row) from the top left.  Blank lines are skipped.
 
 A malformed trace is a :class:`~tui_search.engine.maps.read.MapError` naming the file and the
 line: bad JSON, a cell off the map or on an obstacle, a node expanded that was never added, a
-start (or goal) that is not the map's.
+start (or goal) that is not the map's.  A trace is a student's, so untrusted
+(:mod:`~tui_search.engine.util.untrusted`): at most :data:`MAX_TRACE_BYTES`, UTF-8 without
+NUL, each line's JSON checked before it is parsed; its steps are kept in flat arrays
+(:class:`TraceSteps`), a few bytes a step.
 """
 
-from __future__ import annotations
-
+# No future import: CONTRIBUTING.md, "Start-up".
 import json
+from array import array
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
+from typing import NamedTuple, overload
 
 from tui_search.engine.maps.grid import Cell, Grid
-from tui_search.engine.maps.read import MapError
+from tui_search.engine.maps.read import MapError, each_line, read_text
+from tui_search.engine.util.untrusted import BadInput, load_json
+
+#: Bigger traces are refused before reading (each line an expansion: a search of a 512x512
+#: map writes a few MB).
+MAX_TRACE_BYTES = 64 * 1024 * 1024
+#: What a line's JSON may take in memory beyond this many times the whole trace's size
+#: (:func:`~tui_search.engine.util.untrusted.check_values`).
+LINE_BUDGET = 8
+LINE_ALLOWANCE = 256 * 1024
 
 
-@dataclass(frozen=True)
-class TraceStep:
+class TraceStep(NamedTuple):
     """One expansion of the trace: the line it is on, the cell taken off, the cells added (in
-    order, repeats kept: the check reports them) and whether it says it was discarded."""
+    order, repeats kept: the check reports them) and whether it says it was discarded.  (A
+    tuple: made each time a step is read from :class:`TraceSteps`, it must be quick.)"""
 
     line: int
     node: Cell
@@ -31,12 +45,93 @@ class TraceStep:
     discarded: bool = False
 
 
+class TraceSteps(Sequence[TraceStep]):
+    """A trace's expansions in a few flat arrays: each step's line, its node and where its
+    successors end, each cell as ``y * width + x``.  A :class:`TraceStep` is made when asked
+    for, so a trace of millions of lines costs a few bytes a step, not objects."""
+
+    __slots__ = ("_discarded", "_lines", "_nodes", "_succ", "_succ_end", "_width")
+
+    def __init__(self, width: int) -> None:
+        self._width = width
+        self._lines, self._nodes = array("I"), array("i")
+        self._succ_end, self._succ = array("I"), array("i")
+        self._discarded = bytearray()
+
+    def add(self, line: int, node: Cell, successors: Sequence[Cell], discarded: bool) -> None:
+        w = self._width
+        self._lines.append(line)
+        self._nodes.append(node[1] * w + node[0])
+        self._succ.extend(y * w + x for x, y in successors)
+        self._succ_end.append(len(self._succ))
+        self._discarded.append(discarded)
+
+    def empty(self) -> "TraceSteps":
+        """No steps, on the same map."""
+        return TraceSteps(self._width)
+
+    def mirrored(self) -> "TraceSteps":
+        """The same steps, each with its successors in reverse order."""
+        other = self.empty()
+        other._lines, other._nodes = self._lines, self._nodes
+        other._succ_end, other._discarded = self._succ_end, self._discarded
+        begin = 0
+        for end in self._succ_end:
+            part = self._succ[begin:end]
+            part.reverse()
+            other._succ.extend(part)
+            begin = end
+        return other
+
+    def __len__(self) -> int:
+        return len(self._lines)
+
+    @overload
+    def __getitem__(self, index: int) -> TraceStep: ...
+    @overload
+    def __getitem__(self, index: slice) -> list[TraceStep]: ...
+    def __getitem__(self, index: int | slice) -> TraceStep | list[TraceStep]:
+        if isinstance(index, slice):
+            return [self[i] for i in range(*index.indices(len(self)))]
+        if index < 0:
+            index += len(self)
+        if not 0 <= index < len(self):
+            raise IndexError("trace step out of range")
+        w = self._width
+        begin = self._succ_end[index - 1] if index else 0
+        successors = tuple((c % w, c // w) for c in self._succ[begin:self._succ_end[index]])
+        node = self._nodes[index]
+        return TraceStep(self._lines[index], (node % w, node // w), successors,
+                         bool(self._discarded[index]))
+
+    def __iter__(self) -> Iterator[TraceStep]:
+        w, lines, nodes, succ, discarded = (self._width, self._lines, self._nodes, self._succ,
+                                            self._discarded)
+        begin = 0
+        for i, end in enumerate(self._succ_end):
+            node = nodes[i]
+            yield TraceStep(lines[i], (node % w, node // w),
+                            tuple([(c % w, c // w) for c in succ[begin:end]]),
+                            bool(discarded[i]))
+            begin = end
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Sequence):
+            return NotImplemented
+        return len(self) == len(other) and all(a == b for a, b in zip(self, other, strict=True))
+
+    __hash__ = None  # type: ignore[assignment]  # (equal to a list of its steps)
+
+    def __repr__(self) -> str:
+        return f"TraceSteps({len(self)} steps)"
+
+
 @dataclass(frozen=True)
 class Trace:
     """A whole trace: its expansions, and the start, goal and path when it gives them."""
 
     name: str
-    steps: tuple[TraceStep, ...]
+    steps: TraceSteps
     start: Cell | None = None
     goal: Cell | None = None
     path: tuple[Cell, ...] | None = None
@@ -97,13 +192,11 @@ class _Reader:
                                 f"{show(grid.goal)}")
         return start, goal
 
-    def obj(self, text: str) -> dict[str, object]:
+    def obj(self, text: str, budget: int) -> dict[str, object]:
         try:
-            value = json.loads(text)
-        except ValueError as exc:
-            msg = getattr(exc, "msg", str(exc))
-            col = getattr(exc, "colno", None)
-            raise MapError(self.name, f"not JSON: {msg}", self.line, col) from None
+            value = load_json(text, budget)
+        except BadInput as err:
+            raise MapError(self.name, err.message, self.line, err.col) from None
         if not isinstance(value, dict):
             raise self.fail("each line should be a JSON object ({...})")
         return value
@@ -112,20 +205,22 @@ class _Reader:
 def read_trace(text: str, grid: Grid, name: str) -> Trace:
     """The trace in ``text`` (the contents of file ``name``), checked against ``grid``."""
     reader = _Reader(grid, name)
-    steps: list[TraceStep] = []
+    steps = TraceSteps(grid.width)
     start = goal = None
     path: tuple[Cell, ...] | None = None
     assert grid.start is not None
-    added: set[Cell] = {grid.start}
+    added = bytearray(grid.width * grid.height)  # 1: a cell some line added (or the start)
+    added[grid.start[1] * grid.width + grid.start[0]] = 1
+    budget = LINE_BUDGET * len(text) + LINE_ALLOWANCE
     path_line = 0
-    for number, raw in enumerate(text.split("\n"), 1):
+    for number, raw in enumerate(each_line(text), 1):
         reader.line = number
         if not raw.strip():
             continue
         if path is not None:
             reader.line = path_line
             raise reader.fail('the "path" line should be the last')
-        obj = reader.obj(raw)
+        obj = reader.obj(raw, budget)
         if "start" in obj or "goal" in obj:
             if steps or start is not None or goal is not None:
                 raise reader.fail('"start" and "goal" belong on the first line only')
@@ -142,30 +237,25 @@ def read_trace(text: str, grid: Grid, name: str) -> Trace:
             raise reader.fail('an expansion needs "node": [x, y] (or the first line "start", '
                               'the last "path")')
         node = reader.cell(obj["node"], "node")
-        if node not in added:
+        if not added[node[1] * grid.width + node[0]]:
             raise reader.fail(f"expands {show(node)}, which no earlier line added "
                               "(nor is it the start)")
         successors = obj.get("successors", [])
         if not isinstance(successors, list):
             raise reader.fail('"successors" should be a list')
-        cells = tuple(reader.successor(s) for s in successors)
-        added.update(cells)
-        steps.append(TraceStep(number, node, cells, obj.get("discarded") is True))
+        cells = [reader.successor(s) for s in successors]
+        for x, y in cells:
+            added[y * grid.width + x] = 1
+        steps.add(number, node, cells, obj.get("discarded") is True)
     if not steps:
         raise MapError(name, "the trace has no expansions (lines with \"node\")")
-    return Trace(name, tuple(steps), start, goal, path)
+    return Trace(name, steps, start, goal, path)
 
 
 def load_trace(path: str, grid: Grid) -> Trace:
     """:func:`read_trace` of a file; a file that cannot be read is a one-line error."""
-    try:
-        with open(path, encoding="utf-8") as fh:
-            text = fh.read()
-    except OSError as exc:
-        raise MapError(path, f"cannot read the trace: {exc.strerror}") from None
-    except UnicodeDecodeError:
-        raise MapError(path, "the trace is not UTF-8 text") from None
-    return read_trace(text, grid, path)
+    return read_trace(read_text(path, "a trace", MAX_TRACE_BYTES), grid, path)
 
 
-__all__ = ["Trace", "TraceStep", "load_trace", "read_trace", "show"]
+__all__ = ["MAX_TRACE_BYTES", "Trace", "TraceStep", "TraceSteps", "load_trace", "read_trace",
+           "show"]

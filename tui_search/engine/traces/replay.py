@@ -19,7 +19,7 @@ from tui_search.engine.search.choices import Semantics
 from tui_search.engine.search.registry import get_algorithm
 from tui_search.engine.traces.as_run import TRACE_ALGORITHM, trace_run
 from tui_search.engine.traces.check import Verdict, check_trace
-from tui_search.engine.traces.read import Trace, TraceStep, show
+from tui_search.engine.traces.read import Trace, show
 from tui_search.engine.util.filenames import describe_name
 
 #: What the app calls the trace's pane.
@@ -155,15 +155,15 @@ def with_discards(trace: Trace, left_out: tuple[tuple[int, Cell], ...]) -> Trace
     before (after the last step: its line)."""
     if not left_out:
         return trace
-    steps: list[TraceStep] = []
+    steps = trace.steps.empty()
     pending = list(left_out)[::-1]
     for i, step in enumerate((*trace.steps, None)):
         while pending and pending[-1][0] == i:
             line = step.line if step is not None else trace.steps[-1].line
-            steps.append(TraceStep(line, pending.pop()[1], (), discarded=True))
+            steps.add(line, pending.pop()[1], (), discarded=True)
         if step is not None:
-            steps.append(step)
-    return replace(trace, steps=tuple(steps))
+            steps.add(step.line, step.node, step.successors, step.discarded)
+    return replace(trace, steps=steps)
 
 
 __all__ = ["RECURSIVE_LABEL", "TRACE_LABEL", "Replay", "replay_of", "with_discards"]

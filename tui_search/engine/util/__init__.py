@@ -6,5 +6,7 @@
   one;
 * :mod:`~tui_search.engine.util.frozen`: immutable values written out (cheap to import);
 * :mod:`~tui_search.engine.util.numbers`: numbers as the app writes them;
-* :mod:`~tui_search.engine.util.prng`: the generators' random numbers, the same everywhere.
+* :mod:`~tui_search.engine.util.prng`: the generators' random numbers, the same everywhere;
+* :mod:`~tui_search.engine.util.untrusted`: a file someone else wrote: strict text, shallow JSON,
+  TOML.
 """
