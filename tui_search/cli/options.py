@@ -29,7 +29,8 @@ FLAGS = (
     "no_corner_cutting", "visit", "goal_test", "heuristic", "tree_search", "compare",
     "exercise", "generate", "size", "seed", "output", "max_steps", "theme", "pseudocode",
     "lesson", "headless", "json", "csv", "trace", "check_trace", "replay", "serve", "host",
-    "port", "save_dir", "shared_save_dir", "app_memory", "served", "visitor",
+    "port", "save_dir", "shared_save_dir", "app_memory", "served", "visitor", "export", "fps",
+    "export_view", "force", "handout_steps", "plain",
 )
 #: What the command line worked out or read from the flags.
 READ = ("maps", "algorithm_given", "exercise_read", "lesson_read", "recipe", "grid", "path",
@@ -82,6 +83,12 @@ class Options(Frozen):
     app_memory: int | None
     served: bool
     visitor: str | None
+    export: str | None
+    fps: float | None
+    export_view: str | None
+    force: bool
+    handout_steps: int | None
+    plain: bool
     # -- what they named, read
     maps: tuple[str, ...]
     algorithm_given: bool

@@ -112,6 +112,7 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         self._last: Cell | None = None  # the cell the stroke is on
         self._looks: CellLooks | None = None  # cells: code + 8 * cursor, and terrain
         self._swatches: list[Style] | None = None  # the overview's: a colour per code
+        self.whole = True  #: the whole map shows (else a part, and the view scrolls)
 
     # -- what to show (attributes pushed down by the screen) --------------------------------
     def set_grid(self, grid: Grid) -> None:
@@ -236,6 +237,7 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         self.styles.overflow_x = "hidden" if new.size[0] <= width else "auto"
         self.styles.overflow_y = "hidden" if new.size[1] <= height else "auto"
         whole = new.size[0] <= width and new.size[1] <= height  # else it says so, and how
+        self.whole = whole
         self.border_subtitle = "" if whole else "part of the map · z: all of it"
         old, self.geometry = self.geometry, new
         return new != old
