@@ -19,7 +19,8 @@ from tui_search.tui.view.code_trace import code_of
 def _markdown_table(cells: list[tuple[str, ...]]) -> list[str]:
     head, *rows = cells
     return [f"| {' | '.join(head)} |", f"|{'---|' * len(head)}",
-            *(f"| {' | '.join(cell.replace('|', '/') for cell in row)} |" for row in rows)]
+            *(f"| {' | '.join(cell.strip().replace('|', '/') for cell in row)} |"
+              for row in rows)]
 
 
 def handout_of(job: Job, film: Film, picture: str) -> tuple[str, str]:

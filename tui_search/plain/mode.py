@@ -159,9 +159,10 @@ class PlainMode:
         for run in self.session.runs:
             code = code_of(run)
             lit = lit_lines(run) if run.k else frozenset()
-            self.say(code.title)
-            for i, text in enumerate(code.numbered(indent="  "), start=1):
-                self.say(f"{'ran ' if i in lit else ''}{text.strip()}")
+            self.say(f"{code.title}, the lines the step ran marked:")
+            for i, line in enumerate(code.lines, start=1):
+                self.say(f"Line {i}{', ran' if i in lit else ''}: {'  ' * line.indent}"
+                         f"{line.text}")
             self.say(*(note + "." for note in line_notes(run)))
 
     # -- the searches, the quiz, the exercise, the settings -----------------------------------
