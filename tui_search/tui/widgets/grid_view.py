@@ -15,7 +15,7 @@ from collections.abc import Iterable
 
 from rich.style import Style
 from textual import events
-from textual.geometry import Size
+from textual.geometry import Offset, Size
 from textual.message import Message
 from textual.scroll_view import ScrollView
 from textual.strip import Strip
@@ -128,6 +128,7 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
             self.refresh()
         else:
             self.refresh_cells(changed)
+        self.call_after_refresh(self.place_terminal_cursor)
 
     def set_mark(self, cell: Cell | None) -> None:
         """Draw ``cell`` marked (None: no cell)."""
@@ -139,6 +140,21 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         old, self.cursor = self.cursor, cell
         self.refresh_cells((old, cell))
         self.follow(cell)
+        self.call_after_refresh(self.place_terminal_cursor)
+
+    def place_terminal_cursor(self) -> None:
+        """Put the terminal's own cursor on the cursor's cell while the map has the focus
+        (Textual's public ``App.cursor_position``, moved after every update): a braille
+        display, and a screen reader's review, follow it there (Textual issue #2348)."""
+        if not self.has_focus or not self.size.area:
+            return
+        x, y = self.screen_offset(self.cursor)
+        view = self.scrollable_content_region
+        if 0 <= x < view.width and 0 <= y < view.height:
+            self.app.cursor_position = Offset(view.x + x, view.y + y)
+
+    def on_focus(self) -> None:
+        self.call_after_refresh(self.place_terminal_cursor)
 
     @property
     def overview(self) -> bool:
@@ -197,6 +213,7 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         x, y = self.geometry.follow(cell, (int(self.scroll_x), int(self.scroll_y)), view)
         if (x, y) != self.scroll_offset:
             self.scroll_to(x, y, animate=False, immediate=True)
+            self.call_after_refresh(self.place_terminal_cursor)
 
     # -- geometry ---------------------------------------------------------------------------
     def on_mount(self) -> None:
@@ -205,6 +222,7 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
     def on_resize(self) -> None:
         self._update_virtual_size()
         self.follow(self.cursor)
+        self.call_after_refresh(self.place_terminal_cursor)
 
     def get_content_width(self, container: Size, viewport: Size) -> int:
         """The layout offers the map ``container`` (the room the other widgets leave, less
