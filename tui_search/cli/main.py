@@ -28,7 +28,7 @@ from tui_search.engine.util.collector import collector_held
 from tui_search.engine.util.filenames import describe_name
 
 if TYPE_CHECKING:
-    from collections.abc import Iterable, Iterator
+    from collections.abc import Callable, Iterable, Iterator
 
     from tui_search.tui.app import SearchApp
     from tui_search.tui.model.session import Session
@@ -61,7 +61,31 @@ def build_app(options: Options) -> SearchApp:
                      exercise=options.exercise_read, compare=options.compare,
                      file_access=access,
                      config=Config.in_memory() if options.served else None,
-                     lesson=options.lesson_read)
+                     lesson=options.lesson_read, exporter=LazyExporter())
+
+
+class LazyExporter:
+    """The palette's exporter (:class:`tui_search.export.files.AppExporter`), imported when
+    first used: the first frame does without the exports' modules."""
+
+    @staticmethod
+    def problem(target: str) -> str | None:
+        from tui_search.export.files import AppExporter
+
+        return AppExporter.problem(target)
+
+    @staticmethod
+    def targets(target: str) -> list[str]:
+        from tui_search.export.files import AppExporter
+
+        return AppExporter.targets(target)
+
+    @staticmethod
+    def work(session: Session, target: str, theme: str | None, force: bool
+             ) -> Callable[[], list[str]]:
+        from tui_search.export.files import AppExporter
+
+        return AppExporter.work(session, target, theme, force)
 
 
 def app_title(options: Options) -> str:
