@@ -67,3 +67,19 @@ async def test_an_app_with_no_exporter_says_so() -> None:
         await app.main.run_action("export")
         await pilot.pause()
         assert NO_EXPORTER in said(app)
+
+
+@sync
+async def test_the_help_says_how_to_use_plain_mode_and_the_exports() -> None:
+    from textual.widgets import Static
+
+    from tui_search.tui.dialogs.help import HelpScreen
+
+    app = tutorial_app()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await pilot.press("question_mark")
+        await pilot.pause()
+        assert isinstance(app.screen, HelpScreen)
+        text = str(app.screen.query_one("#help-elsewhere", Static).render())
+        assert "tui-search --plain MAP" in text and "Export the run" in text
+        assert "--headless --export FILE" in text
