@@ -218,3 +218,26 @@ def test_the_tree_the_frontier_the_code_and_the_status() -> None:
     assert "Line 5, ran:   node ← take off the front of the queue (pop front)" in said
     assert "Line 11:     goal test: if s is the goal, return its path" in said
     assert "step 4/22, expanded 4, generated 8, queue 4 (peak 4)." in said
+
+
+def test_the_terrain_brush_paints_the_cursor_s_cell() -> None:
+    said = plain("b 7", "b 5", "go 2,0", "m", "cell")
+    assert said[3] == "brush takes a cost (2, 3, 5, 9, 1: 1 is plain floor) or off."
+    assert "Terrain brush: cost 5 (m paints it at the cursor)." in said
+    assert "Painted (2,0). The searches start again from step 0." in said
+    assert said[-2:] == ["(2,0) costs 5: never reached.",
+                         "The input ended: the map's unsaved edits are not saved."]
+
+
+def test_open_and_generate_another_map_asking_first_with_unsaved_edits() -> None:
+    other = "maps/exercise2-dfs-longer.txt"
+    said = plain("go 2,0", "o", f"open {other}", f"open {other}", "generate maze 11x7 3",
+                 "generate maze 11x7 3")
+    assert ("The map has unsaved edits: save (or save as FILE) keeps them; open again opens "
+            "the other map without saving.") in said
+    assert any(s.startswith("tui-search, plain mode: BFS on exercise2-dfs-longer.txt, a map")
+               for s in said)
+    assert said[-3].startswith("tui-search, plain mode: BFS on maze") and "11 wide and 7 high" \
+        in said[-3]
+    assert plain("open maps/nowhere.txt")[-1].startswith("Not opened: maps/nowhere.txt")
+    assert plain("generate blob")[-1].startswith("Not generated: ")

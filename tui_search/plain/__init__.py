@@ -6,5 +6,6 @@ SSH, on the app's own Textual-free session; no Textual or Rich here (a test hold
 * :mod:`~tui_search.plain.telling`: a step in the tutorial's words, the frontier, the tree;
 * :mod:`~tui_search.plain.describe`: the map, a row, a column, a cell or around, in words;
 * :mod:`~tui_search.plain.settings`: the search settings said, and ``set``;
+* :mod:`~tui_search.plain.editing`: the edits of the map, and opening and generating one;
 * :mod:`~tui_search.plain.files`: ``save`` and ``save as``, never losing a line.
 """

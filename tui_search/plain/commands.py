@@ -81,6 +81,11 @@ COMMANDS: tuple[Command, ...] = (
     Command(("save",), "save, or save as FILE",
             "save the map to its file (only the cells edited change), or to a new FILE",
             "save"),
+    Command(("open",), "open FILE", "open another map (with unsaved edits: asks first)",
+            "open"),
+    Command(("generate",), "generate KIND [WxH] [SEED]",
+            "make a map: maze, prim, kruskal, division, rooms or random:P (asks first too)",
+            "generate"),
     Command(("help", "?"), "help", "this list", "help"),
     Command(("q", "quit", "exit"), "q", "quit (with unsaved edits: asks first)", "quit"),
 )

@@ -14,9 +14,8 @@ from tui_search.engine.maps.load import parse_cell
 from tui_search.engine.search.registry import ALGORITHMS, get_algorithm
 from tui_search.plain import describe, telling
 from tui_search.plain.commands import APP_ONLY, find, help_lines
-from tui_search.plain.files import save_lines
+from tui_search.plain.editing import EditCommands
 from tui_search.plain.settings import apply_setting, settings_lines
-from tui_search.tui.model.map_edits import brush_name
 from tui_search.tui.model.session import Session
 from tui_search.tui.view.narration import cell_text, status_parts
 
@@ -29,7 +28,8 @@ class PlainMode:
     def __init__(self, session: Session, write: Callable[[str], None]) -> None:
         self.session = session
         self.write = write
-        self._quit_asked = False
+        #: The edits of the map and its files: a part, with its own commands.
+        self.edits = EditCommands(self)
 
     def say(self, *lines: str) -> None:
         for line in lines:
@@ -52,14 +52,14 @@ class PlainMode:
         rest = rest.strip()
         if not word:
             return True
-        if word != "q" and word.lower() not in ("q", "quit", "exit"):
-            self._quit_asked = False
         command = find(word)
+        self.edits.asked_before(command.action if command is not None else "")
         if command is None:
             said = APP_ONLY.get(word) or APP_ONLY.get(word.lower())
             self.say(said or f"Unknown command {word!r}: help lists them.")
             return True
-        result: bool | None = getattr(self, f"do_{command.action}")(rest, word)
+        owner = self if hasattr(self, f"do_{command.action}") else self.edits
+        result: bool | None = getattr(owner, f"do_{command.action}")(rest, word)
         return result is not False
 
     # -- what is said after a change --------------------------------------------------------
@@ -221,9 +221,9 @@ class PlainMode:
             return
         else:
             s.cycle_exercise()
-        self._exercise_said(always=True)
+        self.exercise_said(always=True)
 
-    def _exercise_said(self, always: bool = False) -> None:
+    def exercise_said(self, always: bool = False) -> None:
         s = self.session
         if s.exercise is None:
             if always:
@@ -332,69 +332,12 @@ class PlainMode:
         run = self.session.run
         self._to(run.now.current_node() if run else None, "No node is being expanded (step 0).")
 
-    # -- edits ---------------------------------------------------------------------------------
-    def _edited(self, refusal: str | None, done: str) -> None:
-        if refusal is not None:
-            self.say(refusal + ("" if refusal.endswith(".") else "."))
-            return
-        self.say(f"{done} The searches start again from step 0.")
-        self.report()
-        self._exercise_said()
-
-    def do_place_start(self, rest: str, word: str) -> None:
-        s = self.session
-        self._edited(s.edits.place("start", s.cursor), f"Start at {cell_text(s.cursor)}.")
-
-    def do_place_goal(self, rest: str, word: str) -> None:
-        s = self.session
-        self._edited(s.edits.place("goal", s.cursor), f"Goal at {cell_text(s.cursor)}.")
-
-    def do_obstacle(self, rest: str, word: str) -> None:
-        s = self.session
-        wall = not s.grid.is_blocked(s.cursor)
-        self._edited(s.edits.toggle_wall(s.cursor),
-                     f"{'An obstacle' if wall else 'No obstacle'} at {cell_text(s.cursor)}.")
-
-    def do_brush(self, rest: str, word: str) -> None:
-        edits = self.session.edits
-        if not rest:
-            edits.cycle_brush()
-        elif rest == "off":
-            edits.brush = None
-        else:
-            try:
-                edits.brush = float(rest)
-            except ValueError:
-                self.say("brush takes a cost (2, 3, 5, 9 or 1 for plain floor) or off.")
-                return
-        cost = edits.brush
-        self.say("Terrain brush off." if cost is None else
-                 f"Terrain brush: {brush_name(cost)} (m paints it at the cursor).")
-
-    def do_paint(self, rest: str, word: str) -> None:
-        s = self.session
-        self._edited(s.edits.paint_cost(s.cursor), f"Painted {cell_text(s.cursor)}.")
-
-    def do_undo(self, rest: str, word: str) -> None:
-        self._edited(self.session.edits.undo(), "Undone.")
-
-    def do_redo(self, rest: str, word: str) -> None:
-        self._edited(self.session.edits.undo(redo=True), "Redone.")
-
-    def do_save(self, rest: str, word: str) -> None:
-        self.say(*save_lines(self.session, rest))
-
     # -- help and quit -------------------------------------------------------------------------
     def do_help(self, rest: str, word: str) -> None:
         self.say(*help_lines())
 
     def do_quit(self, rest: str, word: str) -> bool:
-        if self.session.dirty and not self._quit_asked:
-            self._quit_asked = True
-            self.say("The map has unsaved edits: save (or save as FILE) keeps them; q again "
-                     "leaves without saving.")
-            return True
-        return False
+        return not self.edits.may_leave("quit", "leaves")
 
 
 def run_plain(session: Session, lines: Iterable[str], write: Callable[[str], None]) -> int:
