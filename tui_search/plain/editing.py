@@ -7,22 +7,35 @@ edits (``q``, ``open``, ``generate``) asks first: the same command again leaves 
 from __future__ import annotations
 
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import Protocol
 
 from tui_search.engine.maps.read import MapError
 from tui_search.plain.files import save_lines
 from tui_search.tui.model.file_rules import one_line
 from tui_search.tui.model.map_edits import BRUSHES, brush_name
+from tui_search.tui.model.session import Session
 from tui_search.tui.view.narration import cell_text
 
-if TYPE_CHECKING:
-    from tui_search.plain.mode import PlainMode
+
+class Mode(Protocol):
+    """What the edits need of the mode they are part of
+    (:class:`~tui_search.plain.mode.PlainMode`)."""
+
+    session: Session
+
+    def say(self, *lines: str) -> None: ...
+
+    def start(self) -> None: ...
+
+    def report(self, moved: list[bool] | None = None) -> None: ...
+
+    def exercise_said(self, always: bool = False) -> None: ...
 
 
 class EditCommands:
     """The edit and file commands of a :class:`~tui_search.plain.mode.PlainMode`."""
 
-    def __init__(self, mode: PlainMode) -> None:
+    def __init__(self, mode: Mode) -> None:
         self.mode = mode
         self._asked = ""  # the command that asked to leave unsaved edits, just before
 

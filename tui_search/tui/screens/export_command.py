@@ -9,13 +9,13 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from pathlib import Path
-from typing import TYPE_CHECKING, Protocol
+from typing import Any, Protocol
+
+from textual.screen import Screen
 
 from tui_search.engine.util.filenames import describe_name
+from tui_search.tui.model.file_rules import FileAccess
 from tui_search.tui.model.session import Session
-
-if TYPE_CHECKING:
-    from tui_search.tui.screens.main import MainScreen
 
 #: What the command says where the app was started without an exporter.
 NO_EXPORTER = "Export is not available in this app"
@@ -38,23 +38,22 @@ def suggestion(session: Session) -> str:
     return f"{stem}-{session.spec.replace(',', '-').replace(':', '-')}.svg"
 
 
-def ask_export(screen: MainScreen, exporter: Exporter | None) -> None:
-    """Ask for the file, then export the session to it."""
+def ask_export(screen: Screen[Any], session: Session, access: FileAccess,
+               exporter: Exporter | None) -> None:
+    """Ask for the file, then export ``session`` to it (``screen``: the main screen; ``access``:
+    where the app may write)."""
     if exporter is None:
         screen.notify(NO_EXPORTER, severity="warning", timeout=5)
         return
-    access = screen.file_access
     off = access.off
     if off is not None:
         screen.notify(off, title="Not available", severity="warning", timeout=8)
         return
     from tui_search.tui.dialogs.export_prompt import Chosen, ExportScreen
 
-    session = screen.session
-
     def chosen(result: Chosen | None) -> None:
         if result is not None:
-            _export(screen, exporter, *result)
+            _export(screen, session, exporter, *result)
 
     screen.app.push_screen(
         ExportScreen(exporter.problem, exporter.targets, suggestion(session),
@@ -62,11 +61,12 @@ def ask_export(screen: MainScreen, exporter: Exporter | None) -> None:
                      flat=access.served), chosen)
 
 
-def _export(screen: MainScreen, exporter: Exporter, path: Path, force: bool) -> None:
+def _export(screen: Screen[Any], session: Session, exporter: Exporter, path: Path,
+            force: bool) -> None:
     app = screen.app
     name = describe_name(str(path))
     try:
-        work = exporter.work(screen.session, str(path), app.theme, force)
+        work = exporter.work(session, str(path), app.theme, force)
     except ValueError as exc:
         screen.notify(f"Not exported: {exc}", title="Export", severity="error", timeout=8,
                       markup=False)

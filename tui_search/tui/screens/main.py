@@ -333,7 +333,7 @@ class MainScreen(PanesScreen):
         """The palette's Export: the run as a file (tui/screens/export_command.py)."""
         from tui_search.tui.screens.export_command import ask_export  # only when asked
 
-        ask_export(self, getattr(self.app, "exporter", None))
+        ask_export(self, self.session, self.file_access, getattr(self.app, "exporter", None))
 
     def action_help(self) -> None:
         from tui_search.tui.dialogs.help import HelpScreen  # only when asked: start-up time

@@ -144,8 +144,9 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
 
     def place_terminal_cursor(self) -> None:
         """Put the terminal's own cursor on the cursor's cell while the map has the focus
-        (Textual's public ``App.cursor_position``, moved after every update): a braille
-        display, and a screen reader's review, follow it there (Textual issue #2348)."""
+        (Textual's public ``App.cursor_position``, where the terminal's cursor goes after
+        every update; Textual keeps it hidden): a braille display, and a screen reader's
+        review, follow it there."""
         if not self.has_focus or not self.size.area:
             return
         x, y = self.screen_offset(self.cursor)
