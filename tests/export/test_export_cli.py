@@ -130,3 +130,16 @@ def test_a_comparison_is_filmed_in_lockstep(tmp_path: Path) -> None:
     shot = film(job(compare="bfs,dfs", view="map"))
     assert shot.title == "BFS and DFS on tutorial.txt"
     assert len(shot.frames) == 23  # until the longer run, BFS's 22 steps, ends
+
+
+def test_a_map_too_big_to_show_cell_by_cell_is_exported_in_the_app_s_overview(
+        tmp_path: Path) -> None:
+    from tui_search.engine.maps.load import load_map
+
+    path = tmp_path / "big.txt"
+    path.write_text("\n".join(["SG" + "." * 298] + ["." * 300] * 199) + "\n")
+    shot = film(job(grid=load_map(path), path=path, view="map"))
+    assert len(shot.frames) == 2 and shot.width <= 200 and shot.height <= 60
+    text = "\n".join(row_text(r) for r in shot.frames[0])
+    assert "big.txt" in text and "part of the map" not in text
+    assert "▀" in text  # the overview's half blocks, two rows of blocks a line
