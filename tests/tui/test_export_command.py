@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
 from textual.widgets import Input
 
 from tests.export.test_exports import svg_frames
@@ -83,3 +84,25 @@ async def test_the_help_says_how_to_use_plain_mode_and_the_exports() -> None:
         text = str(app.screen.query_one("#help-elsewhere", Static).render())
         assert "tui-search --plain MAP" in text and "Export the run" in text
         assert "--headless --export FILE" in text
+
+
+@pytest.mark.parametrize("size", [(80, 24), (200, 60)])
+@sync
+async def test_the_export_prompt_and_its_question_fit_the_terminal(size, tmp_path: Path) -> None:
+    from tests.tui.test_app import click_shown
+    from tests.tui.test_dialogs_fit import assert_fits
+
+    app = tutorial_app()
+    app.exporter = LazyExporter()
+    there = tmp_path / "there.md"
+    there.write_text("keep me\n")
+    async with app.run_test(size=size) as pilot:
+        await app.main.run_action("export")
+        prompt = await assert_fits(pilot, ExportScreen)
+        await typed(pilot, str(there))
+        await assert_fits(pilot, ConfirmOverwriteScreen)
+        await click_shown(pilot, "#another")
+        await wait_until(pilot, lambda: app.screen is prompt)
+        await pilot.press("escape")
+        await wait_until(pilot, lambda: not isinstance(app.screen, ExportScreen))
+        assert there.read_text() == "keep me\n"

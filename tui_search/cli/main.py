@@ -134,7 +134,10 @@ def run_plain(options: Options) -> int:
 
     session = session_of(options)
     if sys.stdin.isatty():  # a person types: a prompt and line editing
-        import readline  # noqa: F401 -- input() edits lines once it is imported
+        try:
+            import readline  # noqa: F401 -- input() edits lines once it is imported
+        except ImportError:  # (not on every system: input() without it)
+            pass
 
         def typed() -> Iterator[str]:
             while True:
