@@ -52,7 +52,7 @@ def test_a_wrong_theme_is_one_line_naming_the_choices(capsys, started) -> None:
 def test_theme_is_refused_with_headless(capsys) -> None:
     code, out, err = run_cli(capsys, TUTORIAL, "--headless", "--theme", "light")
     assert (code, out) == (EXIT_BAD_INPUT, "")
-    assert err == "tui-search: error: --theme is for the app, not --headless\n"
+    assert err == "tui-search: error: --theme is for the app and --export, not --headless alone\n"
 
 
 def test_help_names_every_theme(capsys) -> None:

@@ -4,8 +4,8 @@
   modules each, and no folder more than sixteen (the widgets aside);
 * each folder's modules import only from their own folder and the folders below it
   (:data:`LAYERS`), ``if TYPE_CHECKING:`` imports included;
-* nothing under ``engine/``, ``tui/model/`` or ``tui/view/`` imports Textual or Rich (Rich's
-  cell widths aside), even in a function;
+* nothing under ``engine/``, ``tui/model/``, ``tui/view/`` or ``plain/`` imports Textual or
+  Rich (Rich's cell widths aside), even in a function;
 * no module's name repeats its folder's;
 * each ``__init__.py`` is a docstring naming its folder's job with a line for each of its
   modules, and nothing else (the package's version aside).
@@ -28,10 +28,11 @@ LAYERS = (
     "tui_search.engine.run", "tui_search.engine.traces", "tui_search.engine.course",
     "tui_search.tui.model", "tui_search.tui.view", "tui_search.tui.widgets",
     "tui_search.tui.dialogs", "tui_search.tui.screens", "tui_search.tui",
-    "tui_search.serve", "tui_search.cli", "tui_search",
+    "tui_search.plain", "tui_search.export", "tui_search.serve", "tui_search.cli", "tui_search",
 )
 #: Held to no Textual or Rich, in any function either.
-TEXTUAL_FREE = ("tui_search.engine", "tui_search.tui.model", "tui_search.tui.view")
+TEXTUAL_FREE = ("tui_search.engine", "tui_search.tui.model", "tui_search.tui.view",
+                "tui_search.plain")
 UI_LIBRARIES = ("textual", "rich")
 WIDTHS = "rich.cells"  # a pure function: text measured as Textual draws it
 MAX_TOP, MAX_FOLDER = 5, 16

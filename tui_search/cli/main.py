@@ -16,6 +16,7 @@ from tui_search.cli.flags import (
     EXIT_BAD_INPUT,
     TUTORIAL_NAME,
     UsageError,
+    contenders_from,
     map_name,
     semantics_from,
 )
@@ -24,9 +25,13 @@ from tui_search.cli.parse import parse_options
 from tui_search.engine.maps.read import MapError
 from tui_search.engine.search.loops.compiled import CoreUnavailable
 from tui_search.engine.util.collector import collector_held
+from tui_search.engine.util.filenames import describe_name
 
 if TYPE_CHECKING:
+    from collections.abc import Callable, Iterable, Iterator
+
     from tui_search.tui.app import SearchApp
+    from tui_search.tui.model.session import Session
 
 BUILT_IN_TITLE = "tutorial (built-in)"  # the app's title for the map with no file
 #: The fork server's process, which ``--serve`` starts: it builds and runs apps this way.
@@ -56,7 +61,31 @@ def build_app(options: Options) -> SearchApp:
                      exercise=options.exercise_read, compare=options.compare,
                      file_access=access,
                      config=Config.in_memory() if options.served else None,
-                     lesson=options.lesson_read)
+                     lesson=options.lesson_read, exporter=LazyExporter())
+
+
+class LazyExporter:
+    """The palette's exporter (:class:`tui_search.export.files.AppExporter`), imported when
+    first used: the first frame does without the exports' modules."""
+
+    @staticmethod
+    def problem(target: str) -> str | None:
+        from tui_search.export.files import AppExporter
+
+        return AppExporter.problem(target)
+
+    @staticmethod
+    def targets(target: str) -> list[str]:
+        from tui_search.export.files import AppExporter
+
+        return AppExporter.targets(target)
+
+    @staticmethod
+    def work(session: Session, target: str, theme: str | None, force: bool
+             ) -> Callable[[], list[str]]:
+        from tui_search.export.files import AppExporter
+
+        return AppExporter.work(session, target, theme, force)
 
 
 def app_title(options: Options) -> str:
@@ -84,6 +113,72 @@ def run_app(options: Options) -> int:
             greet_visitor(app, options.visitor, options.save_dir)
         app.run()
     return app.return_code or 0
+
+
+def session_of(options: Options) -> Session:
+    """The session the app would show (plain mode's: the same searches, choices and
+    exercise), without Textual."""
+    from tui_search.tui.model.session import Session
+
+    assert options.grid is not None, "plain mode opens on the map the command line read"
+    scenario = options.scenario
+    return Session(options.grid, options.path, options.algorithm, semantics_from(options),
+                   options.max_steps, app_title(options),
+                   optimal_cost=scenario.optimal_length if scenario is not None else None,
+                   exercise=options.exercise_read, compare=options.compare)
+
+
+def run_plain(options: Options) -> int:
+    """``--plain``: a command a line from stdin, plain sentences on stdout."""
+    from tui_search.plain.mode import run_plain as plain
+
+    session = session_of(options)
+    if sys.stdin.isatty():  # a person types: a prompt and line editing
+        try:
+            import readline  # noqa: F401 -- input() edits lines once it is imported
+        except ImportError:  # (not on every system: input() without it)
+            pass
+
+        def typed() -> Iterator[str]:
+            while True:
+                try:
+                    yield input("> ")
+                except EOFError:
+                    print()
+                    return
+
+        lines: Iterable[str] = typed()
+    else:
+        lines = sys.stdin
+    return plain(session, lines, lambda line: print(line, flush=True))
+
+
+def run_export(options: Options) -> int:
+    """``--export FILE --headless``: the run, filmed by the app, written to FILE."""
+    from tui_search.cli.headless import need_endpoints
+    from tui_search.export.files import make_export
+    from tui_search.export.job import Job
+
+    grid = options.grid
+    assert grid is not None, "an export runs on the map the command line read"
+    need_endpoints(grid, map_name(options, options.path))
+    if options.compare:
+        contenders_from(options)  # bad searches said before the app starts
+    export = options.export
+    assert export is not None
+    from tui_search.export.kinds import DEFAULT_FPS, DEFAULT_HANDOUT_STEPS
+
+    job = Job(export, grid, options.path, app_title(options), options.algorithm,
+              semantics_from(options, checked=not options.compare), options.compare,
+              options.max_steps, options.theme, options.fps or DEFAULT_FPS,
+              options.export_view or "full", options.force,
+              DEFAULT_HANDOUT_STEPS if options.handout_steps is None else options.handout_steps)
+    try:
+        written = make_export(job)
+    except ValueError as exc:
+        raise UsageError(str(exc)) from None
+    print("Wrote " + ", ".join(describe_name(name) for name in written))
+    return 0
 
 
 def run_server(options: Options) -> int:
@@ -138,6 +233,10 @@ def run(options: Options) -> int:
         from tui_search.cli.traces import run_check_trace
 
         return run_check_trace(options)
+    if options.headless and options.export is not None:
+        return run_export(options)
+    if options.plain:
+        return run_plain(options)
     if options.headless:
         from tui_search.cli.headless import run_compare, run_headless
 

@@ -30,6 +30,7 @@ FLAGS = (
     "exercise", "generate", "size", "seed", "output", "max_steps", "theme", "pseudocode",
     "lesson", "headless", "json", "csv", "trace", "check_trace", "replay", "serve", "host",
     "port", "save_dir", "shared_save_dir", "app_memory", "token_file", "served", "visitor",
+    "export", "fps", "export_view", "force", "handout_steps", "plain",
 )
 #: What the command line worked out or read from the flags.
 READ = ("maps", "algorithm_given", "exercise_read", "lesson_read", "recipe", "grid", "path",
@@ -83,6 +84,12 @@ class Options(Frozen):
     token_file: str | None
     served: bool
     visitor: str | None
+    export: str | None
+    fps: float | None
+    export_view: str | None
+    force: bool
+    handout_steps: int | None
+    plain: bool
     # -- what they named, read
     maps: tuple[str, ...]
     algorithm_given: bool

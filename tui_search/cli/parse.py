@@ -40,6 +40,8 @@ def parse_options(argv: Sequence[str] | None = None) -> Options:
                            algorithm=args.algorithm or DEFAULT_ALGORITHM)
     _refuse_with_traces(options)
     _check_outputs(options)
+    _check_export(options)
+    _check_plain(options)
     options = options.replace(exercise_read=_exercise_of(options),
                               recipe=_generated_recipe(options))
     if options.output is not None or options.pseudocode:
@@ -85,8 +87,50 @@ def _check_outputs(options: Options) -> None:
         raise UsageError("--json, --csv, --trace and --check-trace go with --headless")
     if options.csv and (options.json or not options.exercise):
         raise UsageError("--csv is for --exercise E --headless, without --json")
-    if options.theme and options.headless:
-        raise UsageError("--theme is for the app, not --headless")
+    if options.theme and options.headless and options.export is None:
+        raise UsageError("--theme is for the app and --export, not --headless alone")
+
+
+#: What an export is made of: one run (or a comparison) on one map, none of these.
+_NOT_EXPORTED = ("json", "csv", "trace", "check_trace", "exercise", "lesson", "replay",
+                 "pseudocode", "output")
+
+
+def _check_export(options: Options) -> None:
+    """``--export`` writes a file from a headless run; its companions go with it, and an
+    existing file is replaced only with ``--force`` (checked again when it is written)."""
+    if options.export is None:
+        for flag in ("fps", "export_view", "handout_steps", "force"):
+            if getattr(options, flag) not in (None, False):
+                raise UsageError(f"--{flag.replace('_', '-')} goes with --export FILE")
+        return
+    from tui_search.export.kinds import kind_of, refuse_existing  # only with --export
+
+    if not options.headless:
+        raise UsageError("--export writes a file from a run without the app: add --headless "
+                         "(in the app: the palette's Export command, ctrl+p)")
+    for flag in _NOT_EXPORTED:
+        if getattr(options, flag) not in (None, False):
+            raise UsageError(f"--export writes one run (or a comparison): leave out "
+                             f"--{flag.replace('_', '-')}")
+    try:
+        kind = kind_of(options.export)
+        if options.handout_steps is not None and kind != "md":
+            raise ValueError("--handout-steps goes with a handout, --export FILE.md")
+        refuse_existing(options.export, kind, options.force)
+    except ValueError as exc:
+        raise UsageError(str(exc)) from None
+
+
+def _check_plain(options: Options) -> None:
+    """``--plain`` is the app's other face: a map, its searches and choices, an exercise;
+    not a headless run, a lesson, a replay or a theme."""
+    if not options.plain:
+        return
+    for flag in ("headless", "lesson", "replay", "theme", "export"):
+        if getattr(options, flag) not in (None, False):
+            raise UsageError(f"--plain is the app in plain lines: leave out "
+                             f"--{flag.replace('_', '-')}")
 
 
 def _exercise_of(options: Options) -> Exercise | None:

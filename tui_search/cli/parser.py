@@ -21,6 +21,13 @@ from tui_search.engine.search.choices import CORNER_RULES, GOAL_TESTS, VISIT_RUL
 from tui_search.engine.search.heuristics import DEFAULT_HEURISTIC, HEURISTICS
 from tui_search.engine.search.loops.compiled import core_name
 from tui_search.engine.search.registry import ALGORITHMS
+from tui_search.export.kinds import (
+    DEFAULT_FPS,
+    DEFAULT_HANDOUT_STEPS,
+    EXPORT_VIEWS,
+    MAX_FPS,
+    MIN_FPS,
+)
 from tui_search.tui.view.themes import THEMES  # plain data: no Textual
 
 
@@ -142,8 +149,48 @@ def build_parser() -> argparse.ArgumentParser:
                    help="open the app on a trace another program wrote (the --trace format), "
                    "beside -a's search under the choice flags (without -a: the search it "
                    "matches best) in lockstep, its first difference marked (d: to it and back)")
+    p.add_argument("--export", metavar="FILE",
+                   help="with --headless: write the run to FILE, the kind by its ending: .svg "
+                   "an animated SVG (no script), .cast an asciicast v2 recording, .gif an "
+                   "animated GIF (pip install -e '.[gif]'), .md a handout (its picture FILE's "
+                   "name with -final.svg, beside it); drawn like the app at 100x30, in "
+                   "--theme's colours (docs/12-exports-and-plain.md)")
+    p.add_argument("--fps", metavar="N", type=_fps, default=None,
+                   help=f"with --export: frames (steps) a second (default {DEFAULT_FPS:g})")
+    p.add_argument("--export-view", choices=EXPORT_VIEWS, default=None,
+                   help="with --export: full (default): the map, the frontier and the tree, "
+                   "as the app shows them; map: the map alone (a big map's only view)")
+    p.add_argument("--force", action="store_true",
+                   help="with --export: replace FILE (and a handout's picture) if it exists")
+    p.add_argument("--handout-steps", metavar="N", type=_whole, default=None,
+                   help=f"with --export FILE.md: narrate the first N steps (default "
+                   f"{DEFAULT_HANDOUT_STEPS})")
+    p.add_argument("--plain", action="store_true",
+                   help="the line-oriented mode, for screen readers, braille displays and "
+                   "SSH: type a command a line (help lists them), read plain sentences")
     add_serve_arguments(p)
     return p
+
+
+def _whole(text: str) -> int:
+    try:
+        n = int(text)
+    except ValueError:
+        n = -1
+    if n < 0:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number")
+    return n
+
+
+def _fps(text: str) -> float:
+    try:
+        fps = float(text)
+    except ValueError:
+        fps = 0.0
+    if not MIN_FPS <= fps <= MAX_FPS:  # (NaN too)
+        raise argparse.ArgumentTypeError(
+            f"{text!r}: give frames a second from {MIN_FPS:g} to {MAX_FPS:g}")
+    return fps
 
 
 def _positive(text: str) -> int:

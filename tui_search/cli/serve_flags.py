@@ -26,7 +26,8 @@ SERVER_FLAGS = ("serve", "host", "port", "save_dir", "shared_save_dir", "app_mem
 #: only when it names a file, not the tutorial's ``1`` or ``2``).
 FILE_FLAGS = ("map", "scen", "terrain")
 #: What the served app cannot do (the flags it refuses).
-NOT_SERVED = {"headless": "--headless", "json": "--json", "trace": "--trace"}
+NOT_SERVED = {"headless": "--headless", "json": "--json", "trace": "--trace",
+              "plain": "--plain"}
 #: How the web extra is installed, from a clone of the project (it is not on PyPI).
 NEEDS_EXTRA = "--serve needs textual-serve: in the tui-search folder, pip install -e '.[web]'"
 

@@ -30,6 +30,7 @@ if TYPE_CHECKING:
     from tui_search.engine.course.exercise_file import Exercise
     from tui_search.engine.course.lesson import Lesson
     from tui_search.engine.traces.replay import Replay
+    from tui_search.tui.screens.export_command import Exporter
 
 
 def textual_themes() -> list[Theme]:
@@ -69,6 +70,7 @@ class SearchApp(App[int]):
         file_access: FileAccess | None = None,
         lesson: Lesson | None = None,
         replay: Replay | None = None,
+        exporter: Exporter | None = None,
     ) -> None:
         """The session's arguments (:class:`~tui_search.tui.model.session.Session`), and: ``theme``
         for this run only (``--theme``; without it, the one the config file remembers);
@@ -76,7 +78,8 @@ class SearchApp(App[int]):
         ``file_access``, where saving and opening may go
         (:class:`~tui_search.tui.model.file_rules.FileAccess`: anywhere by default; the served
         app's is narrower); ``lesson``, a lesson shown beside the panes from its first
-        section; ``replay``, a trace beside the search it matches (``--replay``)."""
+        section; ``replay``, a trace beside the search it matches (``--replay``);
+        ``exporter``, what the palette's Export command exports with (None: no export)."""
         super().__init__()
         self.session = Session(grid, path, algorithm, semantics, max_steps, unsaved_name,
                                optimal_cost, exercise, compare, replay)
@@ -86,6 +89,7 @@ class SearchApp(App[int]):
             self.session.lesson = LessonPlay(lesson)
             self.session.lesson.open(self.session)
         self.file_access = file_access or FileAccess()
+        self.exporter = exporter
         self.config = Config.load() if config is None else config
         self._config_noted = False  # a config problem is said once a run
         for own in textual_themes():

@@ -1,6 +1,6 @@
 """The app's own commands in Textual's command palette (``ctrl+p``), beside Textual's: each
 algorithm of the registry, each theme, each cost of the terrain brush, and the actions a key does
-(settings, save, save as, open, overview, zoom, cell labels, help).
+(settings, save, save as, open, overview, zoom, cell labels, help), and the run exported.
 
 A command runs the same action as its key (the main screen's ``run_action``), so the palette
 can never do
@@ -82,6 +82,10 @@ class SearchCommands(Provider):
             found.append((f"Terrain brush: {brush_name(cost) if cost else 'off'}",
                           partial(main.run_action, f"brush({cost})"),
                           "m or a mouse drag paints it (key b cycles the brush)"))
+        if getattr(app, "exporter", None) is not None:
+            found.append(("Export the run as a file…", partial(main.run_action, "export"),
+                          "an animated SVG (.svg), a terminal recording (.cast), a GIF (.gif) "
+                          "or a handout (.md), drawn as the app draws the run"))
         bindings = {b.action: b for b in Binding.make_bindings(KEYS)}
         for action, name in ACTIONS.items():
             binding = bindings[action]

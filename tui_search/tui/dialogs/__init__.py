@@ -10,5 +10,6 @@
 * :mod:`~tui_search.tui.dialogs.question`: a question with a row of buttons;
 * :mod:`~tui_search.tui.dialogs.confirm_quit`: unsaved edits, before leaving a map;
 * :mod:`~tui_search.tui.dialogs.confirm_overwrite`: saving onto a file that exists;
-* :mod:`~tui_search.tui.dialogs.save_refused`: a refused save's questions.
+* :mod:`~tui_search.tui.dialogs.save_refused`: a refused save's questions;
+* :mod:`~tui_search.tui.dialogs.export_prompt`: the file to export the run to.
 """

@@ -93,6 +93,19 @@ generated, the path is traced back up the tree from the goal to START (green). (
 dark theme's colours: the legend above shows the colours of the theme in use, t changes it.)"""
 
 
+#: The app without its screen: plain mode, the terminal's cursor, the exports.
+ELSEWHERE = """\
+With a screen reader, a braille display or over SSH: tui-search --plain MAP runs the same \
+searches as plain lines. Type a command a line (n, p, end, 1 to 6, c, i, x, describe row 3, \
+cell 2,1, around, set order N,W,S,E, help) and it says what changed: the step in the \
+tutorial's words, the frontier in order, the tree's new edges. In this app the terminal's own \
+cursor stays on the map's cursor cell, for a braille display to follow.
+
+For a slide, a web page or a bug report: ctrl+p, Export the run, writes it as an animated SVG \
+(.svg), a terminal recording (.cast), a GIF (.gif) or a handout (.md); without the app, \
+tui-search MAP --headless --export FILE (docs/12-exports-and-plain.md)."""
+
+
 def keys_table() -> Table:
     """The keys and what each does, in two columns: a description wraps in its own column
     (under its first word, never under the keys)."""
@@ -150,5 +163,7 @@ class HelpScreen(ModalScreen[None]):
             yield Legend(self._view)
             yield Static("How the searches work", classes="help-heading")
             yield Static(HOW)
+            yield Static("Without the screen", classes="help-heading")
+            yield Static(Text(ELSEWHERE), id="help-elsewhere")
             yield Static("About", classes="help-heading")
             yield Static(about_text(), id="help-about")

@@ -6,5 +6,7 @@
 * :mod:`~tui_search.tui.screens.playback_driver`: playback and seeks on the screen;
 * :mod:`~tui_search.tui.screens.exercise_check`: the challenge's verdict on the map now;
 * :mod:`~tui_search.tui.screens.file_commands`: saving, opening, never losing edits;
-* :mod:`~tui_search.tui.screens.save_questions`: what a refused save asks.
+* :mod:`~tui_search.tui.screens.save_questions`: what a refused save asks;
+* :mod:`~tui_search.tui.screens.export_command`: the palette's Export, made by the exporter
+  the app is given.
 """

@@ -337,6 +337,12 @@ class MainScreen(PanesScreen):
     def action_quit(self) -> None:
         self.files.quit()
 
+    def action_export(self) -> None:
+        """The palette's Export: the run as a file (tui/screens/export_command.py)."""
+        from tui_search.tui.screens.export_command import ask_export  # only when asked
+
+        ask_export(self, self.session, self.file_access, getattr(self.app, "exporter", None))
+
     def action_help(self) -> None:
         from tui_search.tui.dialogs.help import HelpScreen  # only when asked: start-up time
 

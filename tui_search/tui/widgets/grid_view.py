@@ -15,7 +15,7 @@ from collections.abc import Iterable
 
 from rich.style import Style
 from textual import events
-from textual.geometry import Size
+from textual.geometry import Offset, Size
 from textual.message import Message
 from textual.scroll_view import ScrollView
 from textual.strip import Strip
@@ -114,6 +114,7 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         self._last: Cell | None = None  # the cell the stroke is on
         self._looks: CellLooks | None = None  # cells: code + 8 * cursor, and terrain
         self._swatches: list[Style] | None = None  # the overview's: a colour per code
+        self.whole = True  #: the whole map shows (else a part, and the view scrolls)
 
     # -- what to show (attributes pushed down by the screen) --------------------------------
     def set_grid(self, grid: Grid) -> None:
@@ -129,6 +130,7 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
             self.refresh()
         else:
             self.refresh_cells(changed)
+        self.call_after_refresh(self.place_terminal_cursor)
 
     def set_mark(self, cell: Cell | None) -> None:
         """Draw ``cell`` marked (None: no cell)."""
@@ -140,6 +142,22 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         old, self.cursor = self.cursor, cell
         self.refresh_cells((old, cell))
         self.follow(cell)
+        self.call_after_refresh(self.place_terminal_cursor)
+
+    def place_terminal_cursor(self) -> None:
+        """Put the terminal's own cursor on the cursor's cell while the map has the focus
+        (Textual's public ``App.cursor_position``, where the terminal's cursor goes after
+        every update; Textual keeps it hidden): a braille display, and a screen reader's
+        review, follow it there."""
+        if not self.has_focus or not self.size.area:
+            return
+        x, y = self.screen_offset(self.cursor)
+        view = self.scrollable_content_region
+        if 0 <= x < view.width and 0 <= y < view.height:
+            self.app.cursor_position = Offset(view.x + x, view.y + y)
+
+    def on_focus(self) -> None:
+        self.call_after_refresh(self.place_terminal_cursor)
 
     @property
     def overview(self) -> bool:
@@ -198,6 +216,7 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         x, y = self.geometry.follow(cell, (int(self.scroll_x), int(self.scroll_y)), view)
         if (x, y) != self.scroll_offset:
             self.scroll_to(x, y, animate=False, immediate=True)
+            self.call_after_refresh(self.place_terminal_cursor)
 
     # -- geometry ---------------------------------------------------------------------------
     def on_mount(self) -> None:
@@ -206,6 +225,7 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
     def on_resize(self) -> None:
         self._update_virtual_size()
         self.follow(self.cursor)
+        self.call_after_refresh(self.place_terminal_cursor)
 
     def get_content_width(self, container: Size, viewport: Size) -> int:
         """The layout offers the map ``container`` (the room the other widgets leave, less
@@ -238,6 +258,7 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         self.styles.overflow_x = "hidden" if new.size[0] <= width else "auto"
         self.styles.overflow_y = "hidden" if new.size[1] <= height else "auto"
         whole = new.size[0] <= width and new.size[1] <= height  # else it says so, and how
+        self.whole = whole
         self.border_subtitle = "" if whole else "part of the map · z: all of it"
         old, self.geometry = self.geometry, new
         return new != old
