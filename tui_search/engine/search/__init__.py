@@ -4,6 +4,8 @@
 * :mod:`~tui_search.engine.search.choices`: the search choices as one value (``Semantics``);
 * :mod:`~tui_search.engine.search.heuristics`: the heuristics and what a move costs;
 * :mod:`~tui_search.engine.search.reference`: the reference loop, the specification;
+* :mod:`~tui_search.engine.search.rules`: its frontiers and its rules for what was reached;
+* :mod:`~tui_search.engine.search.recursion`: a recursion's calls form, from its neighbours form;
 * :mod:`~tui_search.engine.search.problem`: a grid prepared for the fast loops;
 * :mod:`~tui_search.engine.search.record`: the flat arrays a loop appends to;
 * :mod:`~tui_search.engine.search.outcome`: what a whole search came to;
