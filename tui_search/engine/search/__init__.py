@@ -11,6 +11,7 @@
 * :mod:`~tui_search.engine.search.outcome`: what a whole search came to;
 * :mod:`~tui_search.engine.search.compare`: the searches compared, and their table;
 * :mod:`~tui_search.engine.search.pseudocode`: a search's pseudocode from its choices;
+* :mod:`~tui_search.engine.search.pseudocode_recursive`: a recursion's pseudocode;
 * :mod:`~tui_search.engine.search.loops`: the fast loops, each held equal to the reference;
 * ``_core*.c``: the optional compiled core of those loops.
 """

@@ -189,8 +189,8 @@ def _generate(algorithm: Algorithm, semantics: Semantics, move_cost: str) -> Pse
             add("discard", 1, "if node is already visited: discard it, go on")
         add("mark_node", 1, "mark node visited")
     elif weighted and not tree and not semantics.reopen:
-        add("discard", 1, "if node.g > best g[node] or node is closed: discard it, go on")
-        add("close_node", 1, "close node (never push it again)")
+        add("discard", 1, "if node is closed (expanded already): discard it, go on")
+        add("close_node", 1, "close node (never push it again); node.g ← best g[node]")
     elif weighted and not tree:
         add("discard", 1, "if node.g > best g[node]: stale, discard it, go on")
     if goal_test == "expand":

@@ -16,6 +16,7 @@ thrown away (``Visited``, ``Cheapest``, ``Shallowest``, or ``OnPath`` for tree s
     while frontier:
         node = frontier.take()
         if reached.discards(node): the step is discarded
+        node = reached.taken(node): the node expanded (a closed set's: its cell's best g)
         if goal test on expand and node.cell is the goal: found
         for each move in the order:
             skip a cell off the map, blocked or refused by the corner rule
@@ -29,10 +30,12 @@ smallest cell, the lower or higher h or g), then to the oldest.  A move costs it
 the estimates h are scaled by the map's lowest cell cost; a cell is pushed again whenever it is
 reached with a lower g than its best so far, lower by more than the cost tolerance (by default
 ``CHEAPER_BY``, 1e-9: the floats' rounding is no cheaper path; 0: compared exactly), even after
-it was expanded (it is *re-opened*) unless re-opening is off (a closed set: a cell expanded is
-never pushed again, and an entry of it taken off later is discarded); an entry taken off with a
-g above its cell's best is *stale*: a discarded step.  Tree search keeps no best g: a successor
-is skipped only when it is on the node's own path, or with no path check never.  With the start
+it was expanded (it is *re-opened*), and an entry taken off with a g above its cell's best is
+*stale*: a discarded step -- unless re-opening is off (a closed set, as published code keeps
+one): a cell expanded is never pushed again, an entry of it taken off later is discarded, and
+the first entry of a cell taken off is expanded at the cell's best g so far.  Tree search keeps
+no best g: a successor is skipped only when it is on the node's own path, or with no path check
+never.  With the start
 left unmarked (``mark_start`` off) the visited set, the best g or the best depth does not
 record the start, so a neighbour may push it again.
 
@@ -209,6 +212,7 @@ class ReferenceSearch:
                 yield Expansion(k, node, (), True, False, len(frontier), limit, new_root)
                 continue
             self.expanded += 1
+            node = reached.taken(node)
             if self.goal_test == "expand" and node.cell == self.grid.goal:
                 self.goal = node
                 yield Expansion(k, node, (), False, True, len(frontier), limit, new_root)

@@ -182,6 +182,11 @@ class Reached(Protocol):
         """Is ``node``, just taken off, thrown away (a discarded step)?"""
         ...
 
+    def taken(self, node: Node) -> Node:
+        """The node expanded for ``node``, taken off and not discarded (itself but for a
+        closed set's, expanded at its cell's best g)."""
+        ...
+
 
 class OnPath:
     """Tree search: no visited set; a cell is skipped only when it lies on the path from the
@@ -199,6 +204,9 @@ class OnPath:
 
     def discards(self, node: Node) -> bool:
         return False
+
+    def taken(self, node: Node) -> Node:
+        return node
 
 
 class Visited:
@@ -230,14 +238,18 @@ class Visited:
         self.cells.add(node.cell)
         return False
 
+    def taken(self, node: Node) -> Node:
+        return node
+
 
 class Cheapest:
     """The priority queue's rule: a cell is pushed again whenever it is reached with a lower g
     than its best so far (lower by more than ``tolerance``), even after it was expanded (it
-    is re-opened) -- unless ``reopen`` is off: then a cell expanded is closed, never pushed
-    again, and an entry of it taken off later is discarded.  An entry taken off with a g above
-    its cell's best is stale: discarded.  With ``mark_start`` off the start's g is not kept, so
-    a neighbour pushes it again."""
+    is re-opened), and an entry taken off with a g above its cell's best is stale: discarded
+    -- unless ``reopen`` is off: then a cell expanded is closed, never pushed again, an entry
+    of it taken off later is discarded, and its first entry taken off is expanded at the
+    cell's best g (as code with a closed set and a table of g does).  With ``mark_start`` off
+    the start's g is not kept, so a neighbour pushes it again."""
 
     def __init__(self, tolerance: float, reopen: bool = True, mark_start: bool = True) -> None:
         self.tolerance, self.reopen, self.mark_start = tolerance, reopen, mark_start
@@ -254,13 +266,18 @@ class Cheapest:
             self.best[node.cell] = node.g
 
     def discards(self, node: Node) -> bool:
-        if node.g > self.best.get(node.cell, INF):
-            return True
         if not self.reopen:
             if node.cell in self.closed:
                 return True
             self.closed.add(node.cell)
-        return False
+            return False
+        return node.g > self.best.get(node.cell, INF)
+
+    def taken(self, node: Node) -> Node:
+        best = self.best.get(node.cell, node.g)
+        if self.reopen or best == node.g:
+            return node
+        return Node(node.event, node.cell, node.parent, node.move, node.depth, best)
 
 
 class Shallowest:
@@ -281,6 +298,9 @@ class Shallowest:
 
     def discards(self, node: Node) -> bool:
         return False
+
+    def taken(self, node: Node) -> Node:
+        return node
 
 
 __all__ = ["CallStack", "Cheapest", "Expansion", "Frontier", "Node", "OnPath", "PriorityQueue",

@@ -3,8 +3,9 @@
 One JSON object a line, one line an expansion: ``{"node": [x, y], "successors": [...]}``, each
 successor ``[x, y]`` or ``{"node": [x, y]}`` (``step``, ``dir`` and ``depth_limit`` are
 allowed and not needed; ``"discarded": true`` marks a pop that did nothing).  An optional first
-line ``{"start": [x, y], "goal": [x, y]}`` and an optional last line ``{"path": [...]}``.
-Coordinates are (column, row) from the top left.  Blank lines are skipped.
+line ``{"start": [x, y], "goal": [x, y]}`` and an optional last line ``{"path": [...]}`` (or
+``{"path": null}``: no path found).  A trace none of whose lines has ``successors`` is of
+expansions only.  Coordinates are (column, row) from the top left.  Blank lines are skipped.
 
 A malformed trace is a :class:`~tui_search.engine.maps.read.MapError` naming the file and the
 line: bad JSON, a cell off the map or on an obstacle, a node expanded that was never added, a
@@ -23,12 +24,14 @@ from tui_search.engine.maps.read import MapError
 @dataclass(frozen=True)
 class TraceStep:
     """One expansion of the trace: the line it is on, the cell taken off, the cells added (in
-    order, repeats kept: the check reports them) and whether it says it was discarded."""
+    order, repeats kept: the check reports them), whether it says it was discarded, and
+    whether it lists its successors at all (a trace of expansions only lists none)."""
 
     line: int
     node: Cell
     successors: tuple[Cell, ...]
     discarded: bool = False
+    listed: bool = True
 
 
 @dataclass(frozen=True)
@@ -65,12 +68,13 @@ class _Reader:
                             f"{json.dumps(value)[:40]}")
         x, y = value
         grid = self.grid
+        hint = "; x is the column, y the row: swapped?" if grid.is_free((y, x)) else ""
         if not (0 <= x < grid.width and 0 <= y < grid.height):
             raise self.fail(f"{what} ({x},{y}) is off the map "
                             f"({grid.width}x{grid.height}: x 0..{grid.width - 1}, "
-                            f"y 0..{grid.height - 1})")
+                            f"y 0..{grid.height - 1}){hint}")
         if grid.blocked[y * grid.width + x]:
-            raise self.fail(f"{what} ({x},{y}) is an obstacle")
+            raise self.fail(f"{what} ({x},{y}) is an obstacle{hint}")
         return (x, y)
 
     def successor(self, value: object) -> Cell:
@@ -118,11 +122,13 @@ def read_trace(text: str, grid: Grid, name: str) -> Trace:
     assert grid.start is not None
     added: set[Cell] = {grid.start}
     path_line = 0
+    unadded: MapError | None = None  # the first node no earlier line added
+    listed = False  # does any line list successors (else the trace is of expansions only)?
     for number, raw in enumerate(text.split("\n"), 1):
         reader.line = number
         if not raw.strip():
             continue
-        if path is not None:
+        if path_line:
             reader.line = path_line
             raise reader.fail('the "path" line should be the last')
         obj = reader.obj(raw)
@@ -133,26 +139,34 @@ def read_trace(text: str, grid: Grid, name: str) -> Trace:
             continue
         if "path" in obj and "node" not in obj:
             cells = obj["path"]
-            if not isinstance(cells, list):
-                raise reader.fail('"path" should be a list of [x, y]')
-            path = tuple(reader.cell(c, "path cell") for c in cells)
+            if cells is not None and not isinstance(cells, list):
+                raise reader.fail('"path" should be a list of [x, y], or null (no path)')
+            path = () if cells is None else tuple(reader.cell(c, "path cell") for c in cells)
             path_line = number
             continue
         if "node" not in obj:
             raise reader.fail('an expansion needs "node": [x, y] (or the first line "start", '
                               'the last "path")')
         node = reader.cell(obj["node"], "node")
-        if node not in added:
-            raise reader.fail(f"expands {show(node)}, which no earlier line added "
-                              "(nor is it the start)")
+        if node not in added and unadded is None:  # an error unless no line lists successors
+            hint = ("; x is the column, y the row: swapped?" if (node[1], node[0]) in added
+                    else "")
+            unadded = MapError(name, f"expands {show(node)}, which no earlier line added "
+                               f"(nor is it the start){hint}", number)
         successors = obj.get("successors", [])
         if not isinstance(successors, list):
             raise reader.fail('"successors" should be a list')
         cells = tuple(reader.successor(s) for s in successors)
         added.update(cells)
-        steps.append(TraceStep(number, node, cells, obj.get("discarded") is True))
+        listed |= "successors" in obj
+        steps.append(TraceStep(number, node, cells, obj.get("discarded") is True,
+                               "successors" in obj))
     if not steps:
         raise MapError(name, "the trace has no expansions (lines with \"node\")")
+    if unadded is not None and listed:
+        raise unadded
+    if not listed:  # expansions only: nothing says a line lists no successors
+        steps = [TraceStep(t.line, t.node, (), t.discarded, False) for t in steps]
     return Trace(name, tuple(steps), start, goal, path)
 
 
