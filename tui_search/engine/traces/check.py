@@ -33,12 +33,17 @@ LOOK_AHEAD = 100_000
 #: The steps a check records at first (then twice as many each time, for the compiled core):
 #: most candidates a diagnosis tries part from the trace within a few steps.
 FIRST_CHUNK = 32
+#: The same for the loop of the choices of published code, which records the reference's steps
+#: (so a step costs more) and keeps the chunk's size.
+FIRST_PUBLISHED = 8
 
 #: What a verdict notes of a trace that matched with a part left out.
 GOAL_LEFT_OUT = "your trace leaves out the goal's pop, this search's last step (a trace may)"
 GOAL_LISTED = "your trace lists the goal's pop, which this search stops before (a trace may)"
 EXPANSIONS_ONLY = ("your trace lists no successors: only the order of its expansions is "
                    "checked, not what each step added")
+#: The notes a check makes of the trace (said once, of the first search listed).
+ALL_NOTES = (GOAL_LEFT_OUT, GOAL_LISTED, EXPANSIONS_ONLY)
 
 
 def choices_text(algo: Algorithm, semantics: Semantics) -> str:
@@ -245,7 +250,10 @@ def check_trace(trace: Trace, grid: Grid, algorithm: str, semantics: Semantics,
     (``look_ahead``: how many of the search's steps to look through for the step at which it
     would expand the cell the trace took instead; 0 leaves that out)."""
     limit = max_steps if max_steps is not None else 4 * len(trace.steps) + LOOK_AHEAD
-    return _Checker(trace, Run(grid, algorithm, semantics, limit, first_chunk=FIRST_CHUNK),
+    # The loop of the published choices pauses every first chunk's steps all along: a few
+    # at first, as most candidates part within them.
+    first = FIRST_CHUNK if semantics.plain else FIRST_PUBLISHED
+    return _Checker(trace, Run(grid, algorithm, semantics, limit, first_chunk=first),
                     look_ahead).check()
 
 

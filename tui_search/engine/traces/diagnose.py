@@ -15,16 +15,16 @@ that matches the whole trace is listed; when none does, the closest, each with w
 
 from __future__ import annotations
 
-from collections import deque
+import heapq
 from collections.abc import Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 from tui_search.engine.maps.grid import Grid
 from tui_search.engine.search.choices import CORNER_RULES, Semantics
 from tui_search.engine.search.heuristics import DEFAULT_HEURISTIC, HEURISTICS
 from tui_search.engine.search.registry import ALGORITHMS, get_algorithm
-from tui_search.engine.traces.check import Verdict, check_trace
+from tui_search.engine.traces.check import ALL_NOTES, Verdict, check_trace
 from tui_search.engine.traces.orders import expansion_orders, inferred_orders, order_notes
 from tui_search.engine.traces.read import Trace, show
 
@@ -32,27 +32,45 @@ from tui_search.engine.traces.read import Trace, show
 BEST = 3
 #: Choices of published code changed in a row from a candidate, each where it parts.
 VARIANTS = 3
+#: The most variants tried in one diagnosis (those of the candidates that matched longest
+#: first): a trace whose every step is a tie (greedy with no estimate) suggests thousands.
+VARIANT_BUDGET = 400
 #: Listed together when either comes first: greedy best-first can match a trace longer than
 #: A* does (an A* with another tie rule), and A* longer than greedy.
 BEST_FIRST = ("greedy", "astar")
 
 
-def candidates(orders: list[tuple[str, ...]]) -> Iterator[tuple[str, Semantics]]:
+def candidates(orders: list[tuple[str, ...]], calls_orders: list[tuple[str, ...]] | None = None
+               ) -> Iterator[tuple[str, Semantics]]:
     """Every (algorithm, choices) worth telling apart, the plainest first (a corner rule only
-    for orders with a diagonal: without one every rule is the same search)."""
+    for orders with a diagonal: without one every rule is the same search).  A recursion's
+    calls form is tried with each of ``calls_orders`` (default ``orders``): its lines leave out
+    the neighbours visited deeper down, and which those are depends on the order of every
+    move, not only of those a line lists."""
     for key, algo in ALGORITHMS.items():
         heuristics = list(HEURISTICS) if algo.informed else [DEFAULT_HEURISTIC]
         heuristics.sort(key=lambda h: h != DEFAULT_HEURISTIC)
-        for order in orders:
+        for kind, order in _shapes(key, orders, calls_orders or orders):
             diagonal = any(len(move) == 2 for move in order)
-            for kind in _kinds(key):
-                for goal_test in (algo.goal_test, "generate" if algo.goal_test == "expand"
-                                  else "expand"):
-                    for corners in CORNER_RULES if diagonal else ("always",):
-                        for heuristic in heuristics:
-                            yield key, Semantics(order=order, corners=corners,
-                                                 goal_test=goal_test, heuristic=heuristic,
-                                                 **kind)
+            for goal_test in (algo.goal_test, "generate" if algo.goal_test == "expand"
+                              else "expand"):
+                for corners in CORNER_RULES if diagonal else ("always",):
+                    for heuristic in heuristics:
+                        yield key, Semantics(order=order, corners=corners, goal_test=goal_test,
+                                             heuristic=heuristic, **kind)
+
+
+def _shapes(key: str, orders: list[tuple[str, ...]], calls_orders: list[tuple[str, ...]]
+            ) -> Iterator[tuple[dict[str, Any], tuple[str, ...]]]:
+    """Each shape of :func:`_kinds` with each order it is tried with."""
+    for order in orders:
+        for kind in _kinds(key):
+            if kind.get("recursive") != "calls":
+                yield kind, order
+    for kind in _kinds(key):
+        if kind.get("recursive") == "calls":
+            for order in calls_orders:
+                yield kind, order
 
 
 def _kinds(key: str) -> list[dict[str, Any]]:
@@ -71,19 +89,20 @@ def _kinds(key: str) -> list[dict[str, Any]]:
 
 
 def _plainness(sem: Semantics) -> int:
-    """How many choices of published code ``sem`` makes (fewer is plainer)."""
-    return len(sem.published_words()) + bool(sem.recursive) + (not sem.path_check) + (
-        sem.visit == "expand-again")
+    """How many choices of published code ``sem`` makes, fewer the plainer (recursion is no
+    tweak of a search but its shape: a recursive DFS is as plain as a stack one)."""
+    return len(sem.published_words()) + (not sem.path_check) + (sem.visit == "expand-again")
 
 
 @dataclass(frozen=True)
 class _Scored:
     """A candidate checked: what ranks it, then the candidate."""
 
-    rank: tuple[int, bool, bool, int, int]
+    rank: tuple[int, bool, bool, int, bool, int]
     key: str
     semantics: Semantics
     verdict: Verdict
+    alike: str = ""  # what matches alike, a few words
 
 
 @dataclass(frozen=True)
@@ -103,9 +122,11 @@ class Diagnosis:
         if self.matches:
             top = self.best[0]
             lines.append(f"your trace is {top.choices}, for all {top.steps} steps")
+            lines += [f"  ({note})" for note in top.notes if note not in ALL_NOTES]
             for v in self.best[1:]:
                 if v.matches:
                     lines.append(f"  also {v.choices}, for all {v.steps} steps")
+                    lines += [f"    ({note})" for note in v.notes if note not in ALL_NOTES]
                 elif v.matched == v.steps:
                     lines.append(f"  next: {v.choices}, all {v.steps} steps, but it does not "
                                  "stop there")
@@ -118,7 +139,7 @@ class Diagnosis:
                     span = (f"up to step {v.matched}" if v.matched
                             else "differs from step 1")
                     lines.append(f"  next: {v.choices} {span}{tie}")
-            lines += [f"  note: {note}" for note in top.notes]
+            lines += [f"  note: {note}" for note in top.notes if note in ALL_NOTES]
         else:
             lines.append("closest:")
             lines += [f"  {v.choices}{self._parted(v)}" for v in self.best]
@@ -159,6 +180,8 @@ class _Search:
         self.trace, self.grid, self.limit = trace, grid, limit
         self.seen: set[tuple[str, Semantics]] = set()
         self.scored: list[_Scored] = []
+        self.queued = 0  # variants queued (what breaks a tie of their order)
+        self.nodes: Trace | None = None  # the trace's expansions alone, once asked for
         goal = trace.goal or grid.goal
         # Every order that keeps each step's successors in the order the trace added them
         # makes the same search of this trace up to its first difference (the same
@@ -171,30 +194,68 @@ class _Search:
                            if step.successors and step.successors[-1] == goal}
 
     def run(self, bases: Iterator[tuple[str, Semantics]]) -> None:
-        todo: deque[tuple[str, Semantics, int, int]] = deque(
-            (key, sem, 0, i) for i, (key, sem) in enumerate(bases))
-        while todo:
-            key, sem, depth, i = todo.popleft()
-            if (key, sem) in self.seen:
+        """Check every base candidate, then their variants, those of the candidates that
+        matched longest first (a variant takes over where its candidate parted), at most
+        :data:`VARIANT_BUDGET` of them."""
+        variants: list[tuple[int, int, int, int, str, Semantics]] = []  # a heap
+        calls: list[tuple[int, str, Semantics]] = []
+        for i, (key, sem) in enumerate(bases):
+            if sem.recursive == "calls":
+                calls.append((i, key, sem))  # checked last: see score
+            else:
+                self.score(key, sem, 0, i, variants)
+        for i, key, sem in calls:
+            self.score(key, sem, 0, i, variants)
+        budget = VARIANT_BUDGET
+        while variants and budget:
+            _, depth, i, _, key, sem = heapq.heappop(variants)
+            if (key, sem) not in self.seen:
+                budget -= 1
+                self.score(key, sem, depth, i, variants)
+
+    def score(self, key: str, sem: Semantics, depth: int, i: int,
+              variants: list[tuple[int, int, int, int, str, Semantics]]) -> None:
+        """Check a candidate, rank it, and queue the variants its difference suggests."""
+        if (key, sem) in self.seen:
+            return
+        self.seen.add((key, sem))
+        if sem.recursive == "calls" and not self.calls_may_lead(key, sem):
+            return
+        verdict, sem = self.check(key, sem)
+        difference = verdict.difference
+        # Of those matching as long, an A* whose f tied where the trace took the lower (or
+        # higher) h first, of those the heuristic exact for the moves the trace made.
+        tie = difference is not None and difference.tie == "h"
+        # Then the plainest (graph search before tree search), then as enumerated.
+        rank = (-verdict.matched, not tie, not (tie and _fits(sem)), _plainness(sem),
+                sem.tree_search, i)
+        self.scored.append(_Scored(rank, key, sem, verdict))
+        if difference is None or depth >= VARIANTS:
+            return
+        algo = ALGORITHMS[key]
+        for change in difference.suggest:
+            try:
+                variant = sem.replace(**dict(change))
+                variant.check(algo)
+            except ValueError:
                 continue
-            self.seen.add((key, sem))
-            verdict, sem = self.check(key, sem)
-            difference = verdict.difference
-            # Of those matching as long, an A* whose f tied where the trace took the lower
-            # (or higher) h first, of those the heuristic exact for the moves the trace made.
-            tie = difference is not None and difference.tie == "h"
-            rank = (-verdict.matched, not tie, not (tie and _fits(sem)), _plainness(sem), i)
-            self.scored.append(_Scored(rank, key, sem, verdict))
-            if difference is None or depth >= VARIANTS:
-                continue
-            algo = ALGORITHMS[key]
-            for change in difference.suggest:
-                try:
-                    variant = sem.replace(**dict(change))
-                    variant.check(algo)
-                except ValueError:
-                    continue
-                todo.append((key, variant, depth + 1, i))
+            self.queued += 1
+            heapq.heappush(variants, (-verdict.matched, depth + 1, i, self.queued, key,
+                                      variant))
+
+    def calls_may_lead(self, key: str, sem: Semantics) -> bool:
+        """May a recursion's calls form match as long as the best candidate so far?  Its
+        lines are known only once the search is done (:mod:`~tui_search.engine.search.
+        recursion`), so it is checked in full only when the order of its expansions -- its
+        neighbours form's, run with the goal tested on expand, the cells it skips left out --
+        matches the trace's at least that long."""
+        best = max((s.verdict.matched for s in self.scored), default=0)
+        if self.nodes is None:
+            self.nodes = replace(self.trace, steps=tuple(
+                replace(t, successors=(), listed=False) for t in self.trace.steps))
+        order = check_trace(self.nodes, self.grid, key, sem.replace(
+            recursive="neighbours", goal_test="expand"), max_steps=self.limit, look_ahead=0)
+        return order.matched >= best
 
     def check(self, key: str, sem: Semantics) -> tuple[Verdict, Semantics]:
         """The candidate checked (with the goal's move first, where that matches longer)."""
@@ -218,12 +279,15 @@ def diagnose(trace: Trace, grid: Grid, max_steps: int | None = None) -> Diagnosi
     if max_steps is not None:
         limit = min(limit, max_steps)
     expansions_only = all(not step.listed for step in trace.steps)
-    orders = expansion_orders() if expansions_only else inferred_orders(trace)
+    orders = (expansion_orders(trace) if expansions_only
+              else inferred_orders(trace, grid=grid))
     search = _Search(trace, grid, limit)
-    search.run(candidates(orders if expansions_only else orders[:1]))
+    search.run(candidates(orders if expansions_only else orders[:1], orders))
     scored = sorted(search.scored, key=lambda s: s.rank)
-    best = [check_trace(trace, grid, s.key, s.semantics, max_steps=limit)
-            for s in _listed(scored)]
+    listed = _listed(scored)
+    best = [check_trace(trace, grid, s.key, s.semantics, max_steps=limit) for s in listed]
+    best = [replace(v, notes=(*v.notes, s.alike)) if s.alike else v
+            for v, s in zip(best, listed, strict=True)]
     notes = ([] if expansions_only else order_notes(orders))
     if expansions_only:
         notes.append(f"the trace lists no successors, so its move order cannot be inferred: "
@@ -266,16 +330,18 @@ def _listed(scored: list[_Scored]) -> list[_Scored]:
 
 
 def _distinct(full: list[_Scored]) -> list[_Scored]:
-    """One of each full match that differs from the others by more than the corner rule or
-    the heuristic (those that differ by that alone behave alike on this trace)."""
-    out: list[_Scored] = []
-    kinds: set[tuple[str, Semantics]] = set()
+    """One of each full match that differs from the others by more than the corner rule, the
+    heuristic or the goal test (those that differ by that alone behave alike on this trace:
+    the goal's pop is optional); the first of each notes the goal tests that match too."""
+    out: dict[tuple[str, Semantics], _Scored] = {}
     for s in full:
-        kind = (s.key, s.semantics.replace(corners="always", heuristic=DEFAULT_HEURISTIC))
-        if kind not in kinds:
-            kinds.add(kind)
-            out.append(s)
-    return out
+        kind = (s.key, s.semantics.replace(corners="always", heuristic=DEFAULT_HEURISTIC,
+                                           goal_test=None))
+        first = out.setdefault(kind, s)
+        test = s.semantics.goal_test_for(ALGORITHMS[s.key])
+        if first is not s and test != first.semantics.goal_test_for(ALGORITHMS[first.key]):
+            out[kind] = replace(first, alike=f"the goal tested on {test} matches too")
+    return list(out.values())
 
 
 def _best_of_each(scored: list[_Scored], count: int, wanted: list[str]) -> list[_Scored]:

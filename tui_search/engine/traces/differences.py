@@ -97,10 +97,38 @@ class Causes:
             words, kind, rules = tie
             return Difference(n, t.line, "expand", f"step {n}: {words}", e.node, cell, kind,
                               tuple(((("ties", r),)) for r in rules))
+        discipline = self._discipline(n, cell, e.node)
+        if discipline is not None:
+            words, suggest = discipline
+            return Difference(n, t.line, "expand", f"step {n}: {words}", e.node, cell,
+                              suggest=suggest)
         return Difference(n, t.line, "expand",
                           f"step {n}: {name} expands {show(e.node)} next "
                           f"({self._next_words()}); your trace expands {show(cell)}, {where}",
                           e.node, cell)
+
+    def _discipline(self, n: int, cell: Cell, theirs: Cell
+                    ) -> tuple[str, tuple[Suggestion, ...]] | None:
+        """When both cells were added by the trace's previous step: a stack takes the last
+        of them, a recursion the first, a queue the oldest.  The trace that takes the first
+        where a stack takes the last is a recursion; the one that takes the newest where a
+        queue takes the oldest, a stack."""
+        if n < 2:
+            return None
+        listed = list(self.trace.steps[n - 2].successors)
+        if cell not in listed or theirs not in listed:
+            return None
+        first = listed.index(cell) < listed.index(theirs)
+        name, algo = self.name, self.algo
+        if algo.frontier is Frontier.LIFO and not self.sem.recursive and first:
+            return (f"{name} takes {show(theirs)}, the last cell step {n - 1} pushed; your trace "
+                    f"takes {show(cell)}, the first it listed, as a recursion calling itself on "
+                    "each neighbour in turn does (--recursive)",
+                    ((("recursive", "neighbours"),), (("recursive", "calls"),)))
+        if algo.frontier is Frontier.FIFO and not first and cell == listed[-1]:
+            return (f"{name} takes {show(theirs)}, the oldest cell on its queue; your trace "
+                    f"takes {show(cell)}, the newest, as a stack does (a DFS: -a dfs)", ())
+        return None
 
     def _twice(self, cell: Cell, before: int) -> str:
         what = f"{show(cell)} was expanded already at step {before}: your search expanded it twice"
@@ -197,8 +225,6 @@ class Causes:
         words = (f"your trace added {', '.join(map(show, got))}; {self.name} adds "
                  f"{', '.join(map(show, want))} (order {order}): {show(want[first])} before "
                  f"{show(got[first])}")
-        if [swapped(c) for c in got] == want:
-            words += "; x is the column, y the row: swapped?"
         return self._diff(n, t, words, want[first], got[first])
 
     @staticmethod
@@ -211,6 +237,11 @@ class Causes:
                ) -> tuple[str, tuple[Suggestion, ...]]:
         """The trace adds ``c``, which the search does not: why, in one cause."""
         name, node, sem = self.name, t.node, self.sem
+        goal = self.run.grid.goal
+        if want and want[-1] == goal and e.found_goal:
+            return (f"your trace added {show(c)} after the goal {show(goal)}; {name} stops when "
+                    "it adds the goal (the goal tested on generate), yours goes on",
+                    ((("goal_test", "expand"),),))
         head = f"your trace added {show(c)}, which {name} does not add from {show(node)}"
         hint = "; x is the column, y the row: swapped?" if swapped(c) in want else ""
         delta = (c[0] - node[0], c[1] - node[1])
@@ -228,16 +259,16 @@ class Causes:
                                r, grid.is_free((node[0] + dx, node[1])),
                                grid.is_free((node[0], node[1] + dy))))
             return (f"{head}: the move {move} passes a blocked corner, and the corner rule "
-                    f"{sem.corners} refuses it{hint}", others)
-        return self._reached(n, t, e, c, head, hint)
+                    f"{sem.corners} refuses it", others)
+        return self._reached(n, t, e, c, head)
 
-    def _reached(self, n: int, t: TraceStep, e: Step, c: Cell, head: str, hint: str
+    def _reached(self, n: int, t: TraceStep, e: Step, c: Cell, head: str
                  ) -> tuple[str, tuple[Suggestion, ...]]:
         """The trace adds ``c``, a legal move the search refuses as reached: which rule."""
         name, sem, algo = self.name, self.sem, self.algo
         if sem.tree_search:
             return (f"{head}: it is on the path to {show(t.node)}, which tree search with a "
-                    f"path check skips; yours skips nothing (--no-path-check){hint}",
+                    "path check skips; yours skips nothing (--no-path-check)",
                     ((("path_check", False),),))
         if c == self.run.grid.start and sem.mark_start:
             return (f"your trace pushes the start {show(c)} again: {name} marks the start "
@@ -250,16 +281,18 @@ class Causes:
         if algo.iterative:
             return (f"{head}: it was reached already in this iteration, no deeper than from "
                     f"{show(t.node)}, and {name} pushes a cell again only when reached "
-                    f"shallower{hint}", ())
+                    "shallower", ())
         if sem.visit == "generate" and not sem.recursive and expanded is None:
-            at = "the start" if added == 0 else f"step {added}"
+            at = {0: "the start", None: "an earlier step"}.get(added, f"step {added}")
             return (f"{head}: it was added already, at {at}; {name} marks a cell visited when "
                     "it adds it, so it adds it once, and your search adds it again, as one "
                     "that marks cells visited when it takes them off does (--visit expand)",
                     ((("visit", "expand"),), (("visit", "expand-again"),)))
-        when = f"step {expanded}" if expanded is not None else "an earlier step"
-        return (f"{head}: it was expanded already, at {when}, and {name} adds a cell it has "
-                f"visited no more{hint}", ())
+        if expanded is None:  # a recursion's calls: visited deeper down before the call
+            return (f"{head}: {name} visits it deeper down, from an earlier call, before this "
+                    "call comes to it", ())
+        return (f"{head}: it was expanded already, at step {expanded}, and {name} adds a cell "
+                "it has visited no more", ())
 
     def _cheaper(self, n: int, t: TraceStep, e: Step, c: Cell, head: str,
                  expanded: int | None) -> tuple[str, tuple[Suggestion, ...]]:
@@ -306,8 +339,7 @@ class Causes:
             return (f"{head}: your line lists the cells the call recursed into, not all the "
                     "neighbours it would try (--recursive-lines calls)",
                     ((("recursive", "calls"),),))
-        hint = "; x is the column, y the row: swapped?" if swapped(c) in got else ""
-        return head + hint, ()
+        return head, ()
 
 
 def _subsequence(short: list[Cell], long: list[Cell]) -> bool:

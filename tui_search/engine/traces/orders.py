@@ -9,7 +9,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from itertools import permutations
 
-from tui_search.engine.maps.grid import DEFAULT_ORDER, DELTAS, Cell
+from tui_search.engine.maps.grid import DEFAULT_ORDER, DELTAS, Cell, Grid
 from tui_search.engine.traces.read import Trace
 
 #: The most move orders tried when the trace leaves their order open.
@@ -26,10 +26,20 @@ EIGHT_MOVE_ORDERS: tuple[tuple[str, ...], ...] = (
 )
 
 
-def expansion_orders() -> list[tuple[str, ...]]:
+def expansion_orders(trace: Trace) -> list[tuple[str, ...]]:
     """The orders an expansions-only trace is tried with: every order of N, E, S, W (the
-    4-connected grid courses use; CS188's N, S, E, W among them), then the eight-move ones."""
-    return [tuple(p) for p in permutations(("N", "S", "E", "W"))] + list(EIGHT_MOVE_ORDERS)
+    4-connected grid courses use; CS188's N, S, E, W among them), then the eight-move ones --
+    unless every cell it expands but the first is a straight move from one it expanded before
+    (then a search with diagonal moves would have expanded one a diagonal away, all but
+    surely: the four-move orders alone)."""
+    fours = [tuple(p) for p in permutations(("N", "S", "E", "W"))]
+    seen: set[Cell] = set()
+    for step in trace.steps:
+        x, y = step.node
+        if seen and not seen & {(x + 1, y), (x - 1, y), (x, y + 1), (x, y - 1), (x, y)}:
+            return fours + list(EIGHT_MOVE_ORDERS)
+        seen.add(step.node)
+    return fours
 
 
 def _move(node: Cell, cell: Cell) -> str | None:
@@ -37,7 +47,8 @@ def _move(node: Cell, cell: Cell) -> str | None:
     return next((d for d, v in DELTAS.items() if v == delta), None)
 
 
-def inferred_orders(trace: Trace, goal: Cell | None = None) -> list[tuple[str, ...]]:
+def inferred_orders(trace: Trace, goal: Cell | None = None, grid: Grid | None = None
+                    ) -> list[tuple[str, ...]]:
     """The move orders consistent with the order in which each step added its successors:
     the moves the trace used, ordered every way the trace allows (at most
     :data:`MAX_ORDERS`; the order first seen first).  When the trace contradicts itself (E
@@ -45,7 +56,8 @@ def inferred_orders(trace: Trace, goal: Cell | None = None) -> list[tuple[str, .
 
     A step that stops at the ``goal`` (its last successor) says nothing of the moves after
     the goal's, so the goal's move is put before every move that step did not add, wherever
-    no other step says otherwise: the search then stops there too."""
+    no other step says otherwise: the search then stops there too.  A trace that adds nothing
+    at all: the moves that lead nowhere from any cell it expands (on ``grid``)."""
     used: list[str] = []
     after: dict[str, set[str]] = {}
     goal_steps: list[list[str]] = []
@@ -64,9 +76,20 @@ def inferred_orders(trace: Trace, goal: Cell | None = None) -> list[tuple[str, .
             if m not in moves and not _reaches(after, m, moves[-1]):
                 after[moves[-1]].add(m)
     if not used:
-        return [("N", "W", "S", "E")]
+        return [_never_moves(trace, grid)]
     orders = list(_linear(used, after, ()))
     return orders or [tuple(used)]
+
+
+def _never_moves(trace: Trace, grid: Grid | None) -> tuple[str, ...]:
+    """The moves blocked (an obstacle, off the map) from every cell ``trace`` expands: what a
+    search that added nothing could have tried (N,W,S,E when none is, or no map is given)."""
+    if grid is None:
+        return ("N", "W", "S", "E")
+    nodes = {step.node for step in trace.steps}
+    moves = tuple(d for d, (dx, dy) in DELTAS.items()
+                  if not any(grid.is_free((x + dx, y + dy)) for x, y in nodes))
+    return moves or ("N", "W", "S", "E")
 
 
 def _reaches(after: dict[str, set[str]], a: str, b: str) -> bool:
