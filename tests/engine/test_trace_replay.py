@@ -9,8 +9,8 @@ from tests.helpers import TUTORIAL, TUTORIAL_ROWS
 from tui_search.engine.maps.load import load_map
 from tui_search.engine.run.recorded import Run, Step
 from tui_search.engine.search.choices import Semantics
-from tui_search.engine.traces.read import read_trace
 from tui_search.engine.traces.check import check_trace
+from tui_search.engine.traces.read import read_trace
 from tui_search.engine.traces.replay import replay_of
 
 GRID = load_map(TUTORIAL)

@@ -29,7 +29,8 @@ FLAGS = (
     "no_corner_cutting", "visit", "goal_test", "heuristic", "tree_search", "no_path_check",
     "recursive", "recursive_lines", "ties", "cost_tolerance", "reopen", "mark_start", "compare",
     "exercise", "generate", "size", "seed", "output", "max_steps", "theme", "pseudocode",
-    "lesson", "headless", "json", "csv", "trace", "check_trace", "replay", "serve", "host",
+    "lesson", "headless", "json", "csv", "trace", "trace_format", "check_trace", "replay",
+    "serve", "host",
     "port", "save_dir", "shared_save_dir", "app_memory", "served", "visitor",
 )
 #: What the command line worked out or read from the flags.
@@ -80,6 +81,7 @@ class Options(Frozen):
     json: bool
     csv: bool
     trace: str | None
+    trace_format: str
     check_trace: str | None
     replay: str | None
     serve: bool

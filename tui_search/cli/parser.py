@@ -166,11 +166,15 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--trace", metavar="FILE",
                    help="with --headless: write one JSON line per expansion to FILE "
                    "('-' for stdout, without --json)")
+    p.add_argument("--trace-format", choices=("jsonl", "posthoc"), default="jsonl",
+                   help="with --trace: jsonl (one JSON line an expansion, the default) or "
+                   "posthoc (Posthoc's search trace, version 1.4.0, as JSON: name the file "
+                   "NAME.trace.json to open it in that visualiser)")
     p.add_argument("--check-trace", metavar="FILE",
                    help="with --headless: compare a trace another program wrote (the --trace "
-                   "format) with -a's search under the choice flags, step by step, or without "
-                   "-a find the searches it matches longest: exit 0 a match, 1 a difference, "
-                   "2 a malformed trace")
+                   "format, or Posthoc's: a .trace.json or .trace.yaml) with -a's search "
+                   "under the choice flags, step by step, or without -a find the searches it "
+                   "matches longest: exit 0 a match, 1 a difference, 2 a malformed trace")
     p.add_argument("--replay", metavar="FILE",
                    help="open the app on a trace another program wrote (the --trace format), "
                    "beside -a's search under the choice flags (without -a: the search it "
