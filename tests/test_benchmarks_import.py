@@ -270,3 +270,17 @@ def test_the_startup_floors_count_the_screens_widgets() -> None:
             return len(app.query(Lines))
 
     assert asyncio.run(count()) == one
+
+
+def test_the_diagnose_section_s_traces_are_each_diagnosed_as_the_search_they_are() -> None:
+    """Section diagnose times the diagnosis of the app's own traces under students' choices
+    (its 6x6 rows): each is matched all through, so the time is of a diagnosis that finds it."""
+    from benchmarks import diagnose as section
+    from tui_search.engine.maps.load import parse_map_text
+    from tui_search.engine.traces.diagnose import diagnose
+
+    grid = parse_map_text("\n".join(section.ROWS) + "\n", "6x6")
+    for what, key, sem, nodes_only in section.SMALL:
+        trace = section.app_trace(grid, key, sem, nodes_only)
+        assert all(t.listed != nodes_only for t in trace.steps), what
+        assert diagnose(trace, grid).matches, what
