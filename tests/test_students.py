@@ -63,7 +63,8 @@ STUDENT_SEARCHES = [
             "a recursive DFS (order E,S,W; a line lists the neighbours; goal test on expand)",
             ["-a", "dfs", "--visit", "expand", "--goal-test", "expand", "--order", "E,S,W"],
             "DFS takes (0,1), the last cell step 1 pushed; your trace takes (1,0), the first it "
-            "listed, as a recursion calling itself on each neighbour in turn does (--recursive)"),
+            "listed, and then a cell it added, as a recursion calling itself on each neighbour "
+            "in turn does (--recursive)"),
     Student("dfs_recursive_calls", ROWS, ["-a", "dfs", "--recursive-lines", "calls", *NESW],
             "a recursive DFS (order E,S,W; a line lists the calls; goal test on generate)",
             ["-a", "dfs", "--recursive", "--order", "E,S,W"],
@@ -106,7 +107,8 @@ STUDENT_SEARCHES = [
             ["-a", "iddfs", "--tree-search", "--no-path-check", "--goal-test", "expand",
              *NESW],
             "IDDFS takes (0,1), the last cell step 2 pushed; your trace takes (1,0), the first "
-            "it listed, as a recursion calling itself on each neighbour in turn does"),
+            "it listed, and then a cell it added, as a recursion calling itself on each "
+            "neighbour in turn does (--recursive)"),
     Student("astar_library_start_again", ROWS,
             ["-a", "astar", "--heuristic", "manhattan", "--mark-start", "no", *NESW],
             "A* (manhattan; start not marked; order E,S,W; goal test on expand)",

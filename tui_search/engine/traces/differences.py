@@ -121,10 +121,19 @@ class Causes:
         first = listed.index(cell) < listed.index(theirs)
         name, algo = self.name, self.algo
         if algo.frontier is Frontier.LIFO and not self.sem.recursive and first:
-            return (f"{name} takes {show(theirs)}, the last cell step {n - 1} pushed; your trace "
-                    f"takes {show(cell)}, the first it listed, as a recursion calling itself on "
-                    "each neighbour in turn does (--recursive)",
-                    ((("recursive", "neighbours"),), (("recursive", "calls"),)))
+            # the first listed: a queue's (its next is a sibling) or a recursion's (a child)
+            later = self.trace.steps[n].node if n < len(self.trace.steps) else None
+            own = self.trace.steps[n - 1].successors
+            head = (f"{name} takes {show(theirs)}, the last cell step {n - 1} pushed; your "
+                    f"trace takes {show(cell)}, the first it listed")
+            recursion = ((("recursive", "neighbours"),), (("recursive", "calls"),))
+            if algo.iterative or (later is not None and later in own):
+                return (f"{head}, and then a cell it added, as a recursion calling itself on "
+                        "each neighbour in turn does (--recursive)", recursion)
+            if own and later in listed:
+                return f"{head}, and then {show(later)}, the next: a queue (a BFS: -a bfs)", ()
+            return (f"{head}, as a queue or a recursion does, not a stack (-a bfs, or "
+                    "--recursive)", recursion)
         if algo.frontier is Frontier.FIFO and not first and cell == listed[-1]:
             return (f"{name} takes {show(theirs)}, the oldest cell on its queue; your trace "
                     f"takes {show(cell)}, the newest, as a stack does (a DFS: -a dfs)", ())
