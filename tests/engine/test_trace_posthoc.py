@@ -17,7 +17,7 @@ from tui_search.engine.search.registry import ALGORITHMS
 from tui_search.engine.traces.check import EXPANSIONS_ONLY, check_trace
 from tui_search.engine.traces.diagnose import diagnose
 from tui_search.engine.traces.posthoc import VERSION, read_posthoc
-from tui_search.engine.traces.read import load_trace
+from tui_search.engine.traces.posthoc import load_any_trace as load_trace
 
 TUTORIAL = str(MAPS / "tutorial.txt")
 GRID = grid_from_rows(TUTORIAL_ROWS)

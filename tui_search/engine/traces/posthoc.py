@@ -24,7 +24,7 @@ from typing import Any
 from tui_search.engine.maps.grid import Cell, Grid
 from tui_search.engine.maps.read import MapError
 from tui_search.engine.run.recording import Step
-from tui_search.engine.traces.read import Trace, read_trace
+from tui_search.engine.traces.read import Trace, load_trace, read_trace
 
 #: The version Posthoc's visualiser needs declared.
 VERSION = "1.4.0"
@@ -95,6 +95,21 @@ def _cell(event: dict[str, Any], cells: dict[object, Cell], i: int, name: str
 def _key(value: object) -> object:
     """An id as a dictionary key (a list or a mapping as its JSON)."""
     return json.dumps(value, sort_keys=True) if isinstance(value, (list, dict)) else value
+
+
+def load_any_trace(path: str, grid: Grid) -> Trace:
+    """A trace file of either format, by its name: Posthoc's (:data:`SUFFIXES`), else the
+    app's own (:func:`~tui_search.engine.traces.read.load_trace`)."""
+    if not is_posthoc(path):
+        return load_trace(path, grid)
+    try:
+        with open(path, encoding="utf-8") as fh:
+            text = fh.read()
+    except OSError as exc:
+        raise MapError(path, f"cannot read the trace: {exc.strerror}") from None
+    except UnicodeDecodeError:
+        raise MapError(path, "the trace is not UTF-8 text") from None
+    return read_posthoc(text, grid, path)
 
 
 def read_posthoc(text: str, grid: Grid, name: str) -> Trace:
@@ -186,4 +201,5 @@ class PosthocWriter:
         return f'{head}, "events": [\n{lines}\n]}}\n'  # an event a line
 
 
-__all__ = ["SUFFIXES", "VERSION", "PosthocWriter", "is_posthoc", "read_posthoc"]
+__all__ = ["SUFFIXES", "VERSION", "PosthocWriter", "is_posthoc", "load_any_trace",
+           "read_posthoc"]

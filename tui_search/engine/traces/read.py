@@ -171,9 +171,7 @@ def read_trace(text: str, grid: Grid, name: str) -> Trace:
 
 
 def load_trace(path: str, grid: Grid) -> Trace:
-    """:func:`read_trace` of a file (Posthoc's, by its name:
-    :mod:`~tui_search.engine.traces.posthoc`); a file that cannot be read is a one-line
-    error."""
+    """:func:`read_trace` of a file; a file that cannot be read is a one-line error."""
     try:
         with open(path, encoding="utf-8") as fh:
             text = fh.read()
@@ -181,10 +179,6 @@ def load_trace(path: str, grid: Grid) -> Trace:
         raise MapError(path, f"cannot read the trace: {exc.strerror}") from None
     except UnicodeDecodeError:
         raise MapError(path, "the trace is not UTF-8 text") from None
-    from tui_search.engine.traces.posthoc import is_posthoc, read_posthoc  # (its own format)
-
-    if is_posthoc(path):
-        return read_posthoc(text, grid, path)
     return read_trace(text, grid, path)
 
 
