@@ -15,7 +15,8 @@ gives a "not installed" row.  See benchmarks/README.md for what each row means.
 
 This file is the entry point only: each section lives in its own module of this package
 (core.py, fallback.py, engine.py, choices.py, informed.py, jump.py, step.py, startup.py,
-instructions.py, class_load.py, terrain.py, big_map.py), on the shared table.py, harness.py and
+instructions.py, class_load.py, terrain.py, big_map.py, diagnose.py), on the shared table.py,
+harness.py and
 maps.py.
 """
 
@@ -40,6 +41,7 @@ from benchmarks.choices import bench_choices
 from benchmarks.class_load import bench_class_load
 from benchmarks.compare import bench_compare
 from benchmarks.core import bench_core
+from benchmarks.diagnose import bench_diagnose
 from benchmarks.engine import bench_engine
 from benchmarks.fallback import bench_fallback
 from benchmarks.harness import NOISE, med
@@ -56,7 +58,7 @@ SECTIONS = {"core": bench_core, "fallback": bench_fallback, "engine": bench_engi
             "choices": bench_choices, "informed": bench_informed, "jump": bench_jump,
             "step": bench_step, "compare": bench_compare, "startup": bench_startup,
             "instructions": bench_instructions, "class_load": bench_class_load,
-            "terrain": bench_terrain, "big_map": bench_big_map}
+            "terrain": bench_terrain, "big_map": bench_big_map, "diagnose": bench_diagnose}
 
 
 def main(argv: list[str] | None = None) -> int:

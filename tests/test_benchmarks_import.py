@@ -48,10 +48,10 @@ def test_every_benchmark_module_imports() -> None:
         importlib.import_module(f"benchmarks.{name}")
 
 
-def test_the_entry_point_has_the_thirteen_sections_and_refuses_another(capsys) -> None:
+def test_the_entry_point_has_the_fourteen_sections_and_refuses_another(capsys) -> None:
     assert list(bench.SECTIONS) == ["core", "fallback", "engine", "choices", "informed", "jump",
                                     "step", "compare", "startup", "instructions", "class_load",
-                                    "terrain", "big_map"]
+                                    "terrain", "big_map", "diagnose"]
     with pytest.raises(SystemExit) as info:
         bench.main(["--only", "engine,nope"])
     assert info.value.code == 2 and "unknown section 'nope'" in capsys.readouterr().err
@@ -295,3 +295,17 @@ def test_the_big_map_section_s_readers_and_app_run_on_small_files(tmp_path) -> N
     done = subprocess.run([sys.executable, "-c", big_map._APP_FRAME, str(TUTORIAL)], cwd=root,
                           capture_output=True, text=True, timeout=120)
     assert done.returncode == 0, done.stderr
+
+
+def test_the_diagnose_section_s_traces_are_each_diagnosed_as_the_search_they_are() -> None:
+    """Section diagnose times the diagnosis of the app's own traces under students' choices
+    (its 6x6 rows): each is matched all through, so the time is of a diagnosis that finds it."""
+    from benchmarks import diagnose as section
+    from tui_search.engine.maps.load import parse_map_text
+    from tui_search.engine.traces.diagnose import diagnose
+
+    grid = parse_map_text("\n".join(section.ROWS) + "\n", "6x6")
+    for what, key, sem, nodes_only in section.SMALL:
+        trace = section.app_trace(grid, key, sem, nodes_only)
+        assert all(t.listed != nodes_only for t in trace.steps), what
+        assert diagnose(trace, grid).matches, what

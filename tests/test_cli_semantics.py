@@ -25,6 +25,8 @@ def test_the_json_names_every_choice_in_force(capsys) -> None:
     assert result["semantics"] == {
         "order": ["N", "E", "S", "W", "NE", "SE", "SW", "NW"], "corners": "one",
         "visit": "generate", "goal_test": "expand", "tree_search": False, "heuristic": None,
+        "ties": None, "cost_tolerance": None, "reopen": None, "recursive": None,
+        "path_check": None, "mark_start": True,
     }
     _, default = headless_json(capsys)
     assert default["semantics"]["corners"] == "always" and default["discarded"] == 0

@@ -426,7 +426,7 @@ def help_text() -> str:
 TUI_SEARCH = {"tui-search", ".venv/bin/tui-search"}
 PYTHON = {"python", "python3", ".venv/bin/python"}
 #: Flags whose value is a file the command writes, not one it reads.
-WRITES = {"--output", "--out", "--save-dir", "--export"}
+WRITES = {"--output", "--out", "--save-dir", "--export", "--trace"}
 FILE_LIKE = re.compile(r"\.(txt|map|scen|toml|md|jsonl|json|py)$")
 
 
@@ -449,6 +449,8 @@ def bash_commands() -> list[tuple[str, list[str], set[str]]]:
                     written.add(word)
                     command.pop()
                 else:
+                    if command and command[-1] in WRITES:  # a file the command writes
+                        written.add(word)
                     command.append(word)
     return found
 

@@ -135,3 +135,69 @@ def test_the_bfs_handout() -> None:
         "11          goal test: if s is the goal, return its path",
         "12  return no path",
     ]
+
+
+def published_combinations() -> list[tuple[Algorithm, Semantics]]:
+    """Every algorithm under the choices of published code it accepts, one at a time."""
+    out = []
+    for algorithm in ALGORITHMS.values():
+        for change in ({"ties": "node"}, {"ties": "low-h"}, {"cost_tolerance": 0.0},
+                       {"reopen": False}, {"recursive": "neighbours"}, {"recursive": "calls"},
+                       {"recursive": "calls", "tree_search": True},
+                       {"tree_search": True, "path_check": False}, {"mark_start": False},
+                       {"visit": "expand-again"}):
+            for goal in GOAL_TESTS:
+                semantics = Semantics(goal_test=goal, **change)  # type: ignore[arg-type]
+                if not semantics.refusal(algorithm):
+                    out.append((algorithm, semantics))
+    return out
+
+
+@pytest.mark.parametrize(("algorithm", "semantics"), published_combinations())
+def test_the_published_choices_put_their_own_lines(algorithm: Algorithm,
+                                                   semantics: Semantics) -> None:
+    """Each parses (one kind a line, blocks where the indentation says) and says its choice:
+    a recursion is a function that calls itself, a closed set closes, a tie names its rule,
+    exact costs say so, no path check has no path line, an unmarked start no mark."""
+    code = pseudocode(algorithm, semantics)
+    tree = parse(code)
+    every = [line.kind for line in code.lines]
+    assert len(every) == len(set(every))
+    text = "\n".join(code.numbered())
+    if semantics.recursive:
+        assert "function visit(node):" in text and "visit(s)" in text
+        assert "frontier" not in text
+        assert ("calls ←" in text) == (semantics.recursive == "neighbours")
+        body = find(tree, "while")
+        assert "recurse" in kinds(find(body, "for") if semantics.recursive == "calls"
+                                  else find(body, "take"))
+        return
+    assert kinds(find(tree[0][1] if algorithm.iterative else tree, "while"))[0] == "take"
+    if not semantics.reopen:
+        assert "close node" in text and "if s is closed" in text
+    if semantics.ties != "fifo":
+        assert "of a tie" in code.lines[code.number("take") - 1].text
+    if semantics.cost_tolerance == 0:
+        assert "compared exactly" in text
+    if not semantics.path_check:
+        assert code.number("on_path") is None and code.number("reached") is None
+    if not semantics.mark_start:
+        assert code.number("mark_start") is None and code.number("mark_succ") is not None
+    if semantics.visit == "expand-again":
+        assert code.number("discard") is None and code.number("mark_node") is not None
+
+
+def test_the_recursive_dfs_handout() -> None:
+    sem = Semantics(order=("N", "W", "S", "E"), recursive="calls")
+    assert pseudocode(ALGORITHMS["dfs"], sem).numbered() == [
+        " 1  visited ← nothing; visit(START)",
+        " 2  return no path",
+        " 3  function visit(node):",
+        " 4      mark node visited",
+        " 5      for each successor s of node, moves in order N,W,S,E:",
+        " 6          if s is off the map or an obstacle: skip s",
+        " 7          if s is already visited (maybe by an earlier call): skip s",
+        " 8          add s to node's line (a call made)",
+        " 9          goal test: if s is the goal, return its path",
+        "10          visit(s)",
+    ]

@@ -108,8 +108,8 @@ def test_a_successor_added_twice_missing_extra_or_out_of_order() -> None:
     assert check(edited("bfs", NWSE, lambda o: None), "bfs") == (
         "step 2: BFS adds (1,2) from (0,1); your trace does not")
     assert check(edited("bfs", Semantics(), lambda o: None), "bfs", NWSE) == (
-        "step 2: your trace added (1,2), which BFS does not add from (0,1) "
-        "(move SE is not in order N,W,S,E)")
+        "step 2: your trace added (1,2), which BFS does not add from (0,1): "
+        "move SE is not in order N,W,S,E")
     order = Semantics(order=("N", "E", "S", "W"))
     assert check(edited("bfs", NWSE, lambda o: None), "bfs", order) == (
         "step 3: your trace added (0,3), (1,2); BFS adds (1,2), (0,3) (order N,E,S,W): "

@@ -116,46 +116,56 @@ def test_the_apps_own_trace_is_diagnosed_as_a_full_match(grid: Grid, key: str, v
     assert diagnosis.matches, diagnosis.text()
 
 
-def test_an_astar_breaking_ties_on_h_is_named_with_the_tie() -> None:
+def test_an_astar_breaking_ties_on_h_is_named_with_its_tie_rule() -> None:
+    """Its A* parts from the app's at an f tie where it took the lower h: the tie rule is
+    tried there, and matches it all; of the heuristics that tie alike, Manhattan, exact for
+    four moves (the student's), is named."""
     lines = diagnosis_of(astar_ties_on_h(ROWS, "N,E,S,W"))
-    assert lines[0] == "closest:"
-    assert lines[1].startswith("  Greedy (order E,S,W; goal test on expand; heuristic "
-                               "manhattan) up to step 8; then step 9:")
-    # Octile, Manhattan and Chebyshev all part at that tie: Manhattan, exact for four moves
-    # (the student's), is named.
-    assert lines[2] == ("  A* (order E,S,W; goal test on expand; heuristic manhattan) up to "
-                        "step 2; then step 3: A* expands (0,1) next (the lowest f in the "
-                        "priority queue); your trace expands (2,0), which A* would expand at "
-                        "step 4; f ties at 9.00: your trace took the lower h (7.00, not 8.00)")
+    assert lines[0] == ("your trace is A* (manhattan; ties: lower h first; order E,S,W; goal "
+                        "test on expand), for all 18 steps")
 
 
-def test_an_astar_trace_lists_greedy_too() -> None:
-    """The app's A* here: BFS, uniform-cost and greedy best-first all match 4 steps, and
-    greedy came after the other two (the plainest first); the issue asks that greedy be
-    listed beside A* all the same (it takes uniform-cost's place)."""
+def test_an_astar_trace_lists_every_full_match() -> None:
+    """The app's A* here: A* with its goal test on generate matches as well (the goal's pop
+    is optional: said under it), and so does A* with Chebyshev once its ties go to the
+    smallest cell: every full match is listed, the plainest first."""
     rows = [".G..", "#.#.", ".#S.", "...."]
     grid = grid_from_rows(rows)
     out = io.StringIO()
     search_headless(grid, "astar", Semantics(order=("N", "E", "S", "W")), 100, out)
-    best = diagnose(read_trace(out.getvalue(), grid, "t"), grid).best
-    assert [v.algorithm for v in best] == ["astar", "bfs", "greedy"]
-    assert best[0].matches and best[1].matched == best[2].matched == 4
+    diagnosis = diagnose(read_trace(out.getvalue(), grid, "t"), grid)
+    full = [v for v in diagnosis.best if v.matches]
+    assert full == diagnosis.best[:len(full)] and {v.algorithm for v in full} == {"astar"}
+    assert full[0].semantics.ties == "fifo" and full[0].semantics.goal_test is None
+    assert any(v.semantics.ties == "node" for v in full)
+    lines = diagnosis.text().splitlines()
+    assert lines[1] == "  (the goal tested on generate matches too)"
+    assert sum(line.startswith("  also ") for line in lines) == len(full) - 1
 
 
-def test_with_a_the_tie_is_named_too() -> None:
+def test_with_a_the_tie_and_its_rule_are_named_too() -> None:
     from tui_search.engine.traces.check import check_trace
 
     verdict = check_trace(read_trace(astar_ties_on_h(ROWS, "N,E,S,W"), GRID, "t"), GRID,
                           "astar", Semantics(order=("N", "E", "S", "W"), heuristic="manhattan"))
     assert verdict.difference is not None and verdict.difference.tie == "h"
-    assert verdict.difference.message.endswith(
-        "f ties at 9.00: your trace took the lower h (7.00, not 8.00)")
+    assert verdict.difference.message == (
+        "step 3: A* expands (0,1) next; your trace expands (2,0): f ties at 9.00, and your "
+        "search takes the lower h of the tie (7.00, not 8.00); this search takes the oldest "
+        "entry (--ties low-h)")
+    again = check_trace(read_trace(astar_ties_on_h(ROWS, "N,E,S,W"), GRID, "t"), GRID,
+                        "astar", Semantics(order=("N", "E", "S", "W"), heuristic="manhattan",
+                                           ties="low-h"))
+    assert again.matches
 
 
 def test_a_recursive_dfs_is_recognised() -> None:
     lines = diagnosis_of(dfs_recursive(ROWS, "S,E,N,W"))
-    assert lines[0] == ("your trace is a recursive DFS (order S,E,N; goal test on expand), for "
-                        "all 12 steps")
+    # It tests the goal when it enters it: so does the recursion that tests it when it
+    # comes to it as a neighbour, its trace ending with the goal's line (optional).
+    assert lines[0] == ("your trace is a recursive DFS (order S,E,N; a line lists the "
+                        "neighbours; goal test on generate), for all 12 steps")
+    assert lines[1] == "  (the goal tested on expand matches too)"
     # Where the stack DFS parts, in the issue's words.
     assert ("  next: DFS (order S,E,N; visit on generate; goal test on generate) up to step 1; "
             "then your trace expands (0,1), which no stack order explains (a recursive DFS "

@@ -9,6 +9,7 @@ from tests.helpers import TUTORIAL, TUTORIAL_ROWS
 from tui_search.engine.maps.load import load_map
 from tui_search.engine.run.recorded import Run, Step
 from tui_search.engine.search.choices import Semantics
+from tui_search.engine.traces.check import check_trace
 from tui_search.engine.traces.read import read_trace
 from tui_search.engine.traces.replay import replay_of
 
@@ -62,14 +63,16 @@ def steps_of_search(run: Run) -> list[Step]:
     return list(run.steps.all())
 
 
-def test_a_difference_after_left_out_pops_is_numbered_as_the_search_numbers_it() -> None:
-    """The first difference's step is the search's (the pops put back counted), so d takes
-    both panes to the step where they part."""
+def test_a_difference_after_left_out_pops_is_said_as_the_check_numbers_it() -> None:
+    """The sentence numbers the step as --check-trace does (the trace's own lines, from 1),
+    and says which step of the panes it is (the search's pops put back there); d takes both
+    panes to that step."""
     sem = Semantics(order=("N", "W", "S", "E"), visit="expand")
     newest_at = 14  # the student's step that takes the queue's back once
     text = _search(TUTORIAL_ROWS, "N,W,S,E", lambda q, n: q.pop() if n + 1 == newest_at
                    else q.popleft(), visit_on_expand=True)
-    replay = replay_of(read_trace(text, GRID, "t.jsonl"), GRID, "bfs", sem)
+    trace = read_trace(text, GRID, "t.jsonl")
+    replay = replay_of(trace, GRID, "bfs", sem)
     ours, theirs = replay.runs(GRID)
     assert replay.step is not None
     put_back = sum(s.discarded for s in replay.trace.steps[:replay.step])
@@ -77,20 +80,24 @@ def test_a_difference_after_left_out_pops_is_numbered_as_the_search_numbers_it()
     for run in (ours, theirs):
         run.goto(replay.step)
     assert replay.marks() == [ours.now.current_node(), theirs.now.current_node()]
-    assert replay.sentence().startswith(f"step {replay.step}: ")
+    checked = check_trace(trace, GRID, "bfs", sem)
+    assert checked.difference is not None and checked.difference.step == newest_at
+    assert replay.sentence().startswith(f"step {newest_at}: your trace expands ")
+    assert replay.sentence().endswith(
+        f"(the panes' step {replay.step}: BFS's discarded pops, which your trace leaves out, "
+        "are put back)")
 
 
-def test_a_recursive_dfs_that_parts_says_it_was_matched_against_a_recursive_dfs() -> None:
-    """A recursive DFS's trace cut short: the difference is said, then that it was matched
-    against a recursive DFS's pattern, and what the DFS beside it is."""
+def test_a_recursive_dfs_is_replayed_beside_the_recursion_it_is() -> None:
+    """A recursive DFS's trace cut short: beside it the recursive DFS (its pane so named),
+    in the student's own order, and where they part."""
     lines = dfs_recursive(TUTORIAL_ROWS, "E,S,W,N").splitlines()
     trace = read_trace("\n".join(lines[:-3]) + "\n", GRID, "rec.jsonl")
     replay = replay_of(trace, GRID, None, Semantics())
-    assert replay.recursive and replay.labels == ["your trace", "DFS (recursive)"]
-    assert replay.algorithm == "dfs" and replay.semantics.order == ("N", "W", "S", "E")
+    assert replay.labels == ["your trace", "DFS (recursive)"]
+    assert replay.algorithm == "dfs" and replay.semantics.recursive == "neighbours"
+    assert replay.semantics.order[:2] == ("E", "S")
     assert replay.step == len(trace.steps) + 1
-    assert replay.sentence() == (
-        f"step {replay.step}: your trace ends after step {replay.step - 1}; DFS goes on and "
-        "expands (0,4) (the stack's top) · matched against a recursive DFS (order E,S,W,N; "
-        "goal test on expand): beside it, the stack DFS that expands as a recursive one does "
-        "(visit on expand, order N,W,S,E: your order reversed)")
+    assert replay.sentence().startswith(
+        f"step {replay.step}: your trace ends after step {replay.step - 1}; this DFS goes on "
+        "and expands")

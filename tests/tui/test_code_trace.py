@@ -116,3 +116,26 @@ def test_no_path_lights_the_last_line() -> None:
     code = code_of(run)
     assert code.number("fail") in lit_lines(at(run, run.recorded))
     assert code.number("fail") not in lit_lines(at(run, run.recorded - 1))
+
+
+def test_a_recursion_lights_its_call_and_its_skip_of_a_cell_visited_meanwhile() -> None:
+    """The neighbours form: each call entered lights the function, its mark and ``visit(s)``;
+    a neighbour visited deeper down since it was listed lights the skip instead."""
+    run = tutorial("dfs", recursive="neighbours", order=("N", "W", "S", "E"))
+    code = code_of(run)
+    run.advance()
+    discarded = next(k for k in range(1, run.total + 1) if run.steps.is_discarded(k))
+    assert code.number("discard") in lit_lines(at(run, discarded))
+    entered = lit_lines(at(run, 2))
+    assert {code.number("while"), code.number("mark_node"), code.number("recurse")} <= entered
+    assert code.number("discard") not in entered
+
+
+def test_a_closed_set_names_the_neighbours_it_skips_as_closed() -> None:
+    """A* with no re-opening: a neighbour expanded already is skipped by the closed line."""
+    run = tutorial("astar", reopen=False)
+    code = code_of(run)
+    k = next(k for k in range(2, 9) if any(s.kind == "closed" for s in skipped(at(run, k))))
+    assert code.number("closed") in lit_lines(at(run, k))
+    assert all(s.kind != "reached" or not run.now.times_reached(s.cell)[1]
+               for s in skipped(run))

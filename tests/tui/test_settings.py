@@ -184,3 +184,35 @@ async def test_a_box_ticked_holds_a_tick_and_one_not_is_empty() -> None:
         await wait_until(pilot, lambda: mark("#corners-never") == "●")
         assert mark("#corners-always") == " "
         assert "X" not in "".join(mark(f"#compare-{k}") for k in ("bfs", "dfs", "ucs"))
+
+
+@sync
+async def test_a_recursion_and_a_closed_set_are_picked_and_applied() -> None:
+    """DFS: pick "a line lists calls", apply: the run is the recursion and the Code panel's
+    code says so.  A*: ties on the smallest cell, no re-opening, exact costs: applied."""
+    from tui_search.tui.view.code_trace import code_of
+
+    app = tutorial_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("2", "comma")
+        await screen_shown(pilot, SettingsScreen)
+        await click_shown(pilot, "#recursive-calls")
+        await wait_until(pilot, lambda: app.screen.query_one("#recursive-calls").value)
+        assert app.screen.query_one("#visit").disabled  # a recursion visits on entry
+        await click_shown(pilot, "#apply")
+        await wait_until(pilot, lambda: not isinstance(app.screen, SettingsScreen))
+        await wait_until(pilot, lambda: app.session.run.semantics.recursive == "calls")
+        assert "function visit(node):" in "\n".join(code_of(app.session.run).numbered())
+        await pilot.press("6", "comma")
+        await screen_shown(pilot, SettingsScreen)
+        assert not app.screen.query_one("#ties").disabled
+        for target in ("#ties-node", "#reopen", "#exact_costs"):
+            await click_shown(pilot, target)
+        await wait_until(pilot, lambda: app.screen.query_one("#ties-node").value
+                         and not app.screen.query_one("#reopen").value)
+        await click_shown(pilot, "#apply")
+        await wait_until(pilot, lambda: not isinstance(app.screen, SettingsScreen))
+        await wait_until(pilot, lambda: app.session.run.algorithm == "astar"
+                         and app.session.run.semantics.ties == "node")
+        sem = app.session.run.semantics
+        assert not sem.reopen and sem.cost_tolerance == 0 and not sem.recursive

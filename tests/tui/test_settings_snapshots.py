@@ -9,8 +9,11 @@ SIZE = (100, 32)
 
 def test_settings_screen(snap_compare) -> None:
     """The settings over the tutorial: moves N,NW,W,SW,S,SE,E,NE in a text field, corners
-    'always' picked, visit 'when pushed', goal test 'when pushed', tree search unticked, each
-    with its line of explanation; Apply, Defaults, Cancel."""
+    'always' picked, visit 'when pushed' (or taken off, or taken off and not checked), goal
+    test 'when pushed', tree search unticked (no path check greyed out), the start marked, a
+    stack (recursion greyed out for BFS), the heuristic and the priority queue's ties ('old'),
+    re-opening (ticked) and exact costs greyed out with their note; each with its line of
+    explanation; Apply, Defaults, Cancel."""
     assert snap_compare(tutorial_app(), press=["comma"], terminal_size=SIZE)
 
 

@@ -142,7 +142,8 @@ def write_generated(options: Options) -> int:
 
 
 #: The choice flags whose default is None (not given).
-_CHOICE_FLAGS = ("corners", "visit", "goal_test", "heuristic")
+_CHOICE_FLAGS = ("corners", "visit", "goal_test", "heuristic", "recursive_lines", "ties",
+                 "cost_tolerance", "reopen", "mark_start")
 
 
 def changed_choice_flags(options: Options) -> list[str]:
@@ -150,14 +151,15 @@ def changed_choice_flags(options: Options) -> list[str]:
     changed = [f"--{f.replace('_', '-')}" for f in _CHOICE_FLAGS if getattr(options, f) is not None]
     changed += [flag for flag, on in (("--order", options.order != ",".join(DEFAULT_ORDER)),
                                       ("--no-corner-cutting", options.no_corner_cutting),
-                                      ("--tree-search", options.tree_search)) if on]
+                                      ("--tree-search", options.tree_search),
+                                      ("--no-path-check", options.no_path_check),
+                                      ("--recursive", options.recursive)) if on]
     return changed
 
 
-def semantics_from(options: Options, checked: bool = True) -> Semantics:
-    """The search choices the flags ask for; a combination that makes no sense is a
-    UsageError.  ``checked`` False leaves out the checks against ``-a`` (a comparison checks
-    each of its searches)."""
+def _choices_of(options: Options) -> dict[str, object]:
+    """The :class:`~tui_search.engine.search.choices.Semantics` fields the flags give (the
+    defaults where they give none); a flag that goes with another missing is a UsageError."""
     try:
         order = parse_order(options.order)
     except ValueError as exc:
@@ -167,28 +169,61 @@ def semantics_from(options: Options, checked: bool = True) -> Semantics:
         raise UsageError(f"--no-corner-cutting means --corners never, not {corners}")
     if options.tree_search and options.visit is not None:
         raise UsageError("--visit does not apply to --tree-search (it has no visited set)")
-    if not checked:
-        try:
-            return Semantics(order=order, corners=corners, visit=options.visit or "generate",
-                             goal_test=options.goal_test, tree_search=options.tree_search,
-                             heuristic=options.heuristic or DEFAULT_HEURISTIC)
-        except ValueError as exc:
-            raise UsageError(str(exc)) from None
+    if options.no_path_check and not options.tree_search:
+        raise UsageError("--no-path-check goes with --tree-search (graph search has a "
+                         "visited set)")
+    recursive = options.recursive_lines or ("neighbours" if options.recursive else "")
+    if recursive and options.visit is not None:
+        raise UsageError("--visit does not apply to --recursive (a recursion visits a cell "
+                         "when it enters it)")
+    choices: dict[str, object] = dict(
+        order=order, corners=corners, visit=options.visit or "generate",
+        goal_test=options.goal_test, tree_search=options.tree_search,
+        heuristic=options.heuristic or DEFAULT_HEURISTIC, recursive=recursive,
+        path_check=not options.no_path_check)
+    for name, value in (("ties", options.ties), ("cost_tolerance", options.cost_tolerance)):
+        if value is not None:
+            choices[name] = value
+    for name, value in (("reopen", options.reopen), ("mark_start", options.mark_start)):
+        if value is not None:
+            choices[name] = value == "yes"
+    return choices
+
+
+def _refused_flag(options: Options) -> str:
+    """Why a choice flag does not apply to ``-a``'s search, naming the flag ("" when all
+    apply)."""
     algorithm = get_algorithm(options.algorithm)
+    key = options.algorithm
     if algorithm.iterative and options.visit is not None:
-        raise UsageError(f"--visit does not apply to -a {options.algorithm} "
-                         "(it re-opens a cell reached at a smaller depth)")
+        return f"--visit does not apply to -a {key} (it re-opens a cell reached at a smaller depth)"
     if algorithm.weighted and options.visit is not None:
-        raise UsageError(f"--visit does not apply to -a {options.algorithm} "
-                         "(it re-opens a cell reached with a lower g)")
+        return f"--visit does not apply to -a {key} (it re-opens a cell reached with a lower g)"
     if options.heuristic is not None and not algorithm.informed:
         informed = ", ".join(a.key for a in ALGORITHMS.values() if a.informed)
-        raise UsageError(f"--heuristic applies to -a {informed} only, not {options.algorithm}")
+        return f"--heuristic applies to -a {informed} only, not {key}"
+    weighted = ", ".join(a.key for a in ALGORITHMS.values() if a.weighted)
+    for flag in ("ties", "cost_tolerance", "reopen"):
+        if getattr(options, flag) is not None and not algorithm.weighted:
+            return f"--{flag.replace('_', '-')} applies to -a {weighted} only, not {key}"
+    if (options.recursive or options.recursive_lines) and algorithm.key not in ("dfs", "iddfs"):
+        return f"--recursive applies to -a dfs, iddfs only, not {key}"
+    return ""
+
+
+def semantics_from(options: Options, checked: bool = True) -> Semantics:
+    """The search choices the flags ask for; a combination that makes no sense is a
+    UsageError.  ``checked`` False leaves out the checks against ``-a`` (a comparison checks
+    each of its searches)."""
+    choices = _choices_of(options)
+    if checked:
+        refused = _refused_flag(options)
+        if refused:
+            raise UsageError(refused)
     try:
-        sem = Semantics(order=order, corners=corners, visit=options.visit or "generate",
-                        goal_test=options.goal_test, tree_search=options.tree_search,
-                        heuristic=options.heuristic or DEFAULT_HEURISTIC)
-        sem.check(algorithm)
+        sem = Semantics(**choices)  # type: ignore[arg-type]
+        if checked:
+            sem.check(get_algorithm(options.algorithm))
     except ValueError as exc:
         raise UsageError(str(exc)) from None
     return sem

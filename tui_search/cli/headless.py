@@ -7,6 +7,7 @@ No Textual or Rich here, so scripts and graders start in a fraction of the app's
 from __future__ import annotations
 
 import sys
+from collections.abc import Callable
 from typing import IO, TYPE_CHECKING
 
 from tui_search.cli.flags import (
@@ -85,22 +86,25 @@ def _as_step(step: Expansion) -> Step:
 
 
 def search_headless(grid: Grid, key: str, semantics: Semantics, max_steps: int,
-                    out: IO[str] | None) -> Outcome:
+                    out: IO[str] | None, on_step: Callable[[Step], object] | None = None
+                    ) -> Outcome:
     """The whole search, its steps written to ``out`` as they happen.  Graph BFS and DFS take
     at most a few steps per cell, so they run on the fast recorded loops (the record is
     bounded by the map); iterative deepening and tree search can take billions of steps on a
     small map, so they stream the reference loop, which keeps only the frontier and the
-    parents it points to.  The two are held equal by a property test."""
+    parents it points to.  The two are held equal by a property test.  ``on_step``: what
+    to do with each step instead of writing its line (a Posthoc trace collects them)."""
     algorithm = get_algorithm(key)
+    emit = on_step or (None if out is None else (lambda step: out.write(trace_line(step))))
     if algorithm.iterative or semantics.tree_search:
         from tui_search.engine.search.reference import stream  # not imported at start-up
 
-        write = None if out is None else (lambda step: out.write(trace_line(_as_step(step))))
+        write = None if emit is None else (lambda step: emit(_as_step(step)))
         return stream(grid, algorithm, semantics, max_steps, write)
     run = Run(grid, key, semantics, max_steps)
-    if out is not None:
+    if emit is not None:
         for step in run.steps.all():
-            out.write(trace_line(step))
+            emit(step)
     return run.outcome()
 
 
@@ -224,7 +228,15 @@ def run_headless(options: Options) -> int:
     semantics = semantics_from(options)
 
     def search(out: IO[str] | None) -> Outcome:
-        return search_headless(grid, options.algorithm, semantics, options.max_steps, out)
+        if out is None or options.trace_format != "posthoc":
+            return search_headless(grid, options.algorithm, semantics, options.max_steps, out)
+        from tui_search.engine.traces.posthoc import PosthocWriter  # only for its format
+
+        writer = PosthocWriter(grid)
+        found = search_headless(grid, options.algorithm, semantics, options.max_steps, None,
+                                writer.add)
+        out.write(writer.text(found.path))
+        return found
 
     if options.trace == "-":
         outcome = search(sys.stdout)

@@ -26,11 +26,12 @@ if TYPE_CHECKING:
 #: The flags, by argparse's names for them (the parser's ``dest``s; a test holds the two equal).
 FLAGS = (
     "map", "algorithm", "start", "goal", "terrain", "scen", "scen_row", "order", "corners",
-    "no_corner_cutting", "visit", "goal_test", "heuristic", "tree_search", "compare",
+    "no_corner_cutting", "visit", "goal_test", "heuristic", "tree_search", "no_path_check",
+    "recursive", "recursive_lines", "ties", "cost_tolerance", "reopen", "mark_start", "compare",
     "exercise", "generate", "size", "seed", "output", "max_steps", "theme", "pseudocode",
-    "lesson", "headless", "json", "csv", "trace", "check_trace", "replay", "serve", "host",
-    "port", "save_dir", "shared_save_dir", "app_memory", "token_file", "served", "visitor",
-    "export", "fps", "export_view", "force", "handout_steps", "plain",
+    "lesson", "headless", "json", "csv", "trace", "trace_format", "check_trace", "replay",
+    "serve", "host", "port", "save_dir", "shared_save_dir", "app_memory", "token_file",
+    "served", "visitor", "export", "fps", "export_view", "force", "handout_steps", "plain",
 )
 #: What the command line worked out or read from the flags.
 READ = ("maps", "algorithm_given", "exercise_read", "lesson_read", "recipe", "grid", "path",
@@ -59,6 +60,13 @@ class Options(Frozen):
     goal_test: str | None
     heuristic: str | None
     tree_search: bool
+    no_path_check: bool
+    recursive: bool
+    recursive_lines: str | None
+    ties: str | None
+    cost_tolerance: float | None
+    reopen: str | None
+    mark_start: str | None
     compare: str | None
     exercise: str | None
     generate: str | None
@@ -73,6 +81,7 @@ class Options(Frozen):
     json: bool
     csv: bool
     trace: str | None
+    trace_format: str
     check_trace: str | None
     replay: str | None
     serve: bool

@@ -87,6 +87,8 @@ def _check_outputs(options: Options) -> None:
         raise UsageError("--json, --csv, --trace and --check-trace go with --headless")
     if options.csv and (options.json or not options.exercise):
         raise UsageError("--csv is for --exercise E --headless, without --json")
+    if options.trace_format != "jsonl" and not options.trace:
+        raise UsageError("--trace-format goes with --trace FILE")
     if options.theme and options.headless and options.export is None:
         raise UsageError("--theme is for the app and --export, not --headless alone")
 

@@ -17,8 +17,14 @@ from tui_search.cli.serve_flags import add_serve_arguments
 from tui_search.engine.maps.grid import DEFAULT_ORDER
 from tui_search.engine.maps.recipes import DEFAULT_SEED, DEFAULT_SIZE, KINDS, MAX_SIDE
 from tui_search.engine.run.recorded import MAX_STEPS
-from tui_search.engine.search.choices import CORNER_RULES, GOAL_TESTS, VISIT_RULES
-from tui_search.engine.search.heuristics import DEFAULT_HEURISTIC, HEURISTICS
+from tui_search.engine.search.choices import (
+    CORNER_RULES,
+    GOAL_TESTS,
+    RECURSIVE_FORMS,
+    TIE_RULES,
+    VISIT_RULES,
+)
+from tui_search.engine.search.heuristics import CHEAPER_BY, DEFAULT_HEURISTIC, HEURISTICS
 from tui_search.engine.search.loops.compiled import core_name
 from tui_search.engine.search.registry import ALGORITHMS
 from tui_search.export.kinds import (
@@ -83,8 +89,10 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--no-corner-cutting", action="store_true",
                    help="the same as --corners never")
     p.add_argument("--visit", choices=VISIT_RULES, default=None,
-                   help="when a cell counts as visited: generate (when pushed, default) or "
-                   "expand (when taken off: a cell may be on the frontier several times)")
+                   help="when a cell counts as visited: generate (when pushed, default), "
+                   "expand (when taken off: a cell may be on the frontier several times, "
+                   "taken off again it is discarded) or expand-again (taken off again it is "
+                   "expanded again: the node taken off is never checked)")
     p.add_argument("--goal-test", choices=GOAL_TESTS, default=None,
                    help="stop when the goal is pushed (generate: the default of bfs, dfs and "
                    "iddfs) or taken off (expand: the default of ucs, greedy and astar)")
@@ -93,6 +101,31 @@ def build_parser() -> argparse.ArgumentParser:
                    f"{DEFAULT_HEURISTIC}; manhattan is not admissible with diagonal moves)")
     p.add_argument("--tree-search", action="store_true",
                    help="no visited set: skip only cells on the node's own path")
+    p.add_argument("--no-path-check", action="store_true",
+                   help="with --tree-search: skip nothing, not even the parent (the "
+                   "textbook's tree search)")
+    p.add_argument("--recursive", action="store_true",
+                   help="-a dfs or iddfs written as recursion: each call lists the neighbours "
+                   "not yet visited, then calls itself on each (skipping one visited meanwhile)")
+    p.add_argument("--recursive-lines", choices=RECURSIVE_FORMS, default=None,
+                   help="what a recursion's trace line lists: neighbours (the default) or "
+                   "calls (the cells the call recursed into; the goal found as a neighbour); "
+                   "implies --recursive")
+    p.add_argument("--ties", choices=TIE_RULES, default=None,
+                   help="which entry of a priority tie comes out first (-a ucs, greedy, "
+                   "astar): fifo the oldest (default), lifo the newest, node the smallest "
+                   "cell (heapq on (f, (x, y)) tuples), low-h/high-h the lower/higher h, "
+                   "low-g/high-g the lower/higher g")
+    p.add_argument("--cost-tolerance", metavar="X", type=_tolerance, default=None,
+                   help="how much lower a new g must be to count as cheaper (default "
+                   f"{CHEAPER_BY:g}: rounding is no cheaper path; 0 compares exactly, as "
+                   "code comparing floats with < does)")
+    p.add_argument("--reopen", choices=("yes", "no"), default=None,
+                   help="may -a ucs, greedy or astar push a cell it has expanded again, "
+                   "reached with a lower g (yes, default); no: a closed set")
+    p.add_argument("--mark-start", choices=("yes", "no"), default=None,
+                   help="is the start marked reached when pushed (yes, default); no: a "
+                   "neighbour may push it again, as some library code does")
     p.add_argument("--compare", metavar="A,B",
                    help="two to four searches side by side in the app (compare mode); with "
                    "--headless, run them on the map and print a table (e.g. bfs,dfs or "
@@ -140,11 +173,15 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--trace", metavar="FILE",
                    help="with --headless: write one JSON line per expansion to FILE "
                    "('-' for stdout, without --json)")
+    p.add_argument("--trace-format", choices=("jsonl", "posthoc"), default="jsonl",
+                   help="with --trace: jsonl (one JSON line an expansion, the default) or "
+                   "posthoc (Posthoc's search trace, version 1.4.0, as JSON: name the file "
+                   "NAME.trace.json to open it in that visualiser)")
     p.add_argument("--check-trace", metavar="FILE",
                    help="with --headless: compare a trace another program wrote (the --trace "
-                   "format) with -a's search under the choice flags, step by step, or without "
-                   "-a find the searches it matches longest: exit 0 a match, 1 a difference, "
-                   "2 a malformed trace")
+                   "format, or Posthoc's: a .trace.json or .trace.yaml) with -a's search "
+                   "under the choice flags, step by step, or without -a find the searches it "
+                   "matches longest: exit 0 a match, 1 a difference, 2 a malformed trace")
     p.add_argument("--replay", metavar="FILE",
                    help="open the app on a trace another program wrote (the --trace format), "
                    "beside -a's search under the choice flags (without -a: the search it "
@@ -191,6 +228,16 @@ def _fps(text: str) -> float:
         raise argparse.ArgumentTypeError(
             f"{text!r}: give frames a second from {MIN_FPS:g} to {MAX_FPS:g}")
     return fps
+
+
+def _tolerance(text: str) -> float:
+    try:
+        x = float(text)
+    except ValueError:
+        x = -1.0
+    if not 0 <= x < float("inf"):  # NaN fails too
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number 0 or more")
+    return x
 
 
 def _positive(text: str) -> int:

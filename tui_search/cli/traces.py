@@ -43,7 +43,7 @@ def _no_choices_without_a(flag: str, what: str, verb: str, options: Options) -> 
 def read_replay(options: Options) -> Replay:
     """``--replay FILE``: the trace beside ``-a``'s search under the choice flags, else the
     search the diagnosis finds it nearest (a malformed trace is a MapError: exit 2)."""
-    from tui_search.engine.traces.read import load_trace
+    from tui_search.engine.traces.posthoc import load_any_trace as load_trace
     from tui_search.engine.traces.replay import replay_of
 
     grid, _ = _needs_ends(options)
@@ -61,7 +61,7 @@ def run_check_trace(options: Options) -> int:
     match, 1 on a difference (a malformed trace is a MapError: exit 2)."""
     from tui_search.cli.headless import to_json
     from tui_search.engine.traces.check import check_trace
-    from tui_search.engine.traces.read import load_trace
+    from tui_search.engine.traces.posthoc import load_any_trace as load_trace
 
     for flag in ("trace", "compare", "exercise"):
         if getattr(options, flag):
@@ -85,7 +85,7 @@ def _diagnose(options: Options, grid: Grid, trace: str, where: str) -> int:
     """Without ``-a``: the searches and choices that match the trace longest."""
     from tui_search.cli.headless import to_json
     from tui_search.engine.traces.diagnose import diagnose
-    from tui_search.engine.traces.read import load_trace
+    from tui_search.engine.traces.posthoc import load_any_trace as load_trace
 
     _no_choices_without_a("--check-trace", "tries every search and choice", "check", options)
     diagnosis = diagnose(load_trace(trace, grid), grid, options.max_steps)

@@ -14,8 +14,8 @@ from tui_search.engine.search.choices import Semantics
 
 
 def _has_path(grid: Grid, semantics: Semantics) -> bool:
-    return Run(grid, "bfs", semantics.replace(visit="generate", goal_test="generate",
-                                    tree_search=False)).outcome().found
+    moves_only = Semantics(order=semantics.order, corners=semantics.corners)  # BFS's own rest
+    return Run(grid, "bfs", moves_only).outcome().found
 
 
 def blocking_rule(grid: Grid, semantics: Semantics) -> str | None:

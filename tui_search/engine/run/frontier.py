@@ -8,10 +8,12 @@ time proportional to the step, and to rebuild itself in bulk for a long jump:
 * :class:`FifoFrontier` (a queue): events leave in the order they were generated, so the queue
   is always the run of events between the next one out and the newest -- two counters.
 * :class:`LifoFrontier` (a stack): pushed in generation order, popped at the top, so after any
-  steps it is the events generated and not yet taken off, in generation order.
+  steps it is the events generated and not yet taken off, in generation order (a recursion's:
+  each step's successors last first, the first call on top).
 * :class:`PriorityFrontier` (a priority queue): the events generated and not yet taken off,
-  kept sorted by ``(priority, event)`` in a :class:`sortedcontainers.SortedList`, so a step
-  costs O(log n) in the frontier's size and the panel reads any window without sorting.
+  kept sorted by ``(priority, event)`` (a tie rule's key beside the priority) in a
+  :class:`sortedcontainers.SortedList`, so a step costs O(log n) in the frontier's size and
+  the panel reads any window without sorting.
 
 * :class:`AddedFrontier` (a replayed trace's, :mod:`~tui_search.engine.traces.as_run`): the
   events generated and not yet taken off, in the order added; any of them may leave next.
@@ -23,7 +25,7 @@ runs.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator, Sequence
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from tui_search.engine.run.rebuild import kernels
 from tui_search.engine.search.registry import Frontier
@@ -78,10 +80,13 @@ class FifoFrontier:
 
 
 class LifoFrontier:
-    """The stack as a list of events, top last."""
+    """The stack as a list of events, top last.  A recursion's (``calls``: the step that
+    generated an event, for a rebuild) has each step's successors pushed last first, so that
+    the first comes out first, as the first call is made first."""
 
-    def __init__(self) -> None:
+    def __init__(self, calls: Callable[[int], int] | None = None) -> None:
         self.stack: list[int] = []
+        self.calls = calls
 
     def reset(self, root: int) -> None:
         self.stack = [root]
@@ -89,7 +94,7 @@ class LifoFrontier:
     def forward(self, g: int, succ: range) -> None:
         top = self.stack.pop()
         assert top == g, "the recorded step does not match the stack"
-        self.stack.extend(succ)
+        self.stack.extend(reversed(succ) if self.calls is not None else succ)
 
     def backward(self, g: int, succ: range) -> None:
         del self.stack[len(self.stack) - len(succ):]
@@ -106,6 +111,8 @@ class LifoFrontier:
         pushed in that order and only the top is popped)."""
         stack: list[int] = []
         yield from _open_events(root, end, expanded, stack.extend)
+        if self.calls is not None:  # each step's successors last first
+            stack = _blocks_reversed(stack, self.calls)
         self.stack = stack
 
     def __len__(self) -> int:
@@ -114,6 +121,21 @@ class LifoFrontier:
     def entries(self, start: int, stop: int) -> list[int]:
         s, n = self.stack, len(self.stack)
         return [s[n - 1 - i] for i in range(start, min(stop, n))]
+
+
+def _blocks_reversed(events: list[int], step_of: Callable[[int], int]) -> list[int]:
+    """``events`` (ascending) with each run of events one step generated reversed."""
+    out: list[int] = []
+    block: list[int] = []
+    step = -1
+    for g in events:
+        k = step_of(g)
+        if k != step:
+            out.extend(reversed(block))
+            block, step = [], k
+        block.append(g)
+    out.extend(reversed(block))
+    return out
 
 
 def _open_events(root: int, end: int, expanded: Iterable[Sequence[int]],
@@ -138,7 +160,7 @@ class PriorityFrontier:
     of a rebuild), the same floats the loop pushed them with, in bulk: the record derives an
     event's g from its generating step's, which is then looked up once a step."""
 
-    def __init__(self, keys: Callable[[Sequence[int]], list[float]]) -> None:
+    def __init__(self, keys: Callable[[Sequence[int]], list[Any]]) -> None:
         # imported with the first priority queue, not at start-up (benchmarks/README.md,
         # "startup")
         from sortedcontainers import SortedList
@@ -170,7 +192,7 @@ class PriorityFrontier:
         """Become the queue after the pieces of ``expanded`` were taken off the events
         ``root .. end - 1``: the events not taken off, sorted by priority."""
         keys = self.keys
-        entries: list[tuple[float, int]] = []
+        entries: list[tuple[Any, int]] = []
 
         def take(open_: list[int]) -> None:
             entries.extend(zip(keys(open_), open_, strict=True))
@@ -257,13 +279,15 @@ class AddedFrontier:
 FrontierModel = FifoFrontier | LifoFrontier | PriorityFrontier | AddedFrontier
 
 
-def frontier_model(kind: Frontier, keys: Callable[[Sequence[int]], list[float]] | None = None
-                   ) -> FrontierModel:
-    """The model of ``kind``; a priority queue needs ``keys``, ascending events' priorities."""
+def frontier_model(kind: Frontier, keys: Callable[[Sequence[int]], list[Any]] | None = None,
+                   calls: Callable[[int], int] | None = None) -> FrontierModel:
+    """The model of ``kind``; a priority queue needs ``keys``, ascending events' priorities
+    (their tie rule's key beside, when it has one); a recursion's stack ``calls``, the step
+    that generated an event."""
     if kind is Frontier.FIFO:
         return FifoFrontier()
     if kind is Frontier.LIFO:
-        return LifoFrontier()
+        return LifoFrontier(calls)
     if kind is Frontier.ADDED:
         return AddedFrontier()
     assert keys is not None, "a priority queue needs its events' priorities"

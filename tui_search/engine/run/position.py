@@ -77,7 +77,8 @@ class Position:
         self._last[node] = root
 
     def _new_frontier(self) -> FrontierModel:
-        return frontier_model(self._recording.algo.frontier, self._tree.priority_keys)
+        calls = self._recording.generated_at if self._recording.semantics.recursive else None
+        return frontier_model(self._recording.algo.frontier, self._tree.priority_keys, calls)
 
     def _enter_iteration(self, it: int) -> None:
         """Set the position to the start of iteration ``it``: only its root is generated."""

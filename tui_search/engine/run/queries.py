@@ -9,6 +9,7 @@ from array import array
 from bisect import bisect_left, bisect_right
 from collections.abc import Iterator, Sequence
 from itertools import pairwise
+from typing import Any
 
 from tui_search.engine.maps.grid import DIRECTIONS, Cell
 from tui_search.engine.run.recording import Recording, Step
@@ -133,13 +134,33 @@ class EventTree:
         x, y = self.gen_cell(g)
         return self._priority(self.gen_g(g), x, y)
 
-    def priority_keys(self, events: Sequence[int]) -> list[float]:
-        """:meth:`priority_key` of each of ``events``, which ascend (see :meth:`gen_gs`)."""
+    def priority_keys(self, events: Sequence[int]) -> list[Any]:
+        """:meth:`priority_key` of each of ``events``, which ascend (see :meth:`gen_gs`);
+        under a tie rule other than the oldest first, ``(priority, tie)`` with the rule's key
+        (:func:`~tui_search.engine.search.rules.tie_key`'s: the frontier model's order)."""
         costs = self.gen_gs(events)
+        ties = self._recording.semantics.ties
         if self._algo.priority == "g":
-            return costs
-        priority, cell = self._priority, self.gen_cell
-        return [priority(g, *cell(e)) for g, e in zip(costs, events, strict=True)]
+            keys = costs
+        else:
+            priority, cell = self._priority, self.gen_cell
+            keys = [priority(g, *cell(e)) for g, e in zip(costs, events, strict=True)]
+        if ties == "fifo":
+            return keys
+        return list(zip(keys, self._tie_keys(ties, events, costs), strict=True))
+
+    def _tie_keys(self, ties: str, events: Sequence[int], costs: list[float]) -> list[Any]:
+        """The tie rule's key of each of ``events`` (with their ``costs``)."""
+        if ties == "lifo":
+            return [-e for e in events]
+        if ties in ("low-g", "high-g"):
+            return costs if ties == "low-g" else [-g for g in costs]
+        cells = [self.gen_cell(e) for e in events]
+        if ties == "node":
+            return cells
+        gx, gy = self._goal
+        h = [self._heuristic(abs(x - gx), abs(y - gy)) for x, y in cells]
+        return h if ties == "low-h" else [-v for v in h]
 
     def pushed_again(self, g: int) -> int:
         """The next event of event ``g``'s cell, -1 when none was recorded.  A cost-ordered

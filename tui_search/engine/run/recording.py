@@ -87,7 +87,12 @@ class Recording:
         self.grid = grid.copy()
         self.algorithm = algorithm
         self.semantics = semantics.for_algorithm(algo)
+        if semantics.recursive == "calls":  # its steps are held until their calls return
+            from tui_search.engine.search.recursion import MAX_HELD
+
+            max_steps = min(max_steps, MAX_HELD)
         self.problem = Problem(self.grid, semantics, semantics.goal_test_for(algo))
+        self.problem.max_steps = max_steps
         #: The raw record: read by the run's parts (tree, position) and by checks, never the app.
         self.rec = Record()
         self.max_steps = max_steps

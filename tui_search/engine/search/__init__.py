@@ -4,11 +4,14 @@
 * :mod:`~tui_search.engine.search.choices`: the search choices as one value (``Semantics``);
 * :mod:`~tui_search.engine.search.heuristics`: the heuristics and what a move costs;
 * :mod:`~tui_search.engine.search.reference`: the reference loop, the specification;
+* :mod:`~tui_search.engine.search.rules`: its frontiers and its rules for what was reached;
+* :mod:`~tui_search.engine.search.recursion`: a recursion's calls form, from its neighbours form;
 * :mod:`~tui_search.engine.search.problem`: a grid prepared for the fast loops;
 * :mod:`~tui_search.engine.search.record`: the flat arrays a loop appends to;
 * :mod:`~tui_search.engine.search.outcome`: what a whole search came to;
 * :mod:`~tui_search.engine.search.compare`: the searches compared, and their table;
 * :mod:`~tui_search.engine.search.pseudocode`: a search's pseudocode from its choices;
+* :mod:`~tui_search.engine.search.pseudocode_recursive`: a recursion's pseudocode;
 * :mod:`~tui_search.engine.search.loops`: the fast loops, each held equal to the reference;
 * ``_core*.c``: the optional compiled core of those loops.
 """

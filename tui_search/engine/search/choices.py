@@ -17,6 +17,27 @@
 * ``heuristic``: greedy best-first's and A*'s estimate of the cost to the goal
   (:mod:`tui_search.engine.search.heuristics`); the other searches use none.
 
+What published code and students' code differ on besides (docs/08-semantics.md):
+
+* ``visit`` ``expand-again``: a cell is marked visited when taken off, but the node taken off
+  is never checked, so a cell on the frontier twice is expanded twice (the commonest bug).
+* ``ties``: which entry of a priority queue's tie comes out first: ``fifo`` the oldest,
+  ``lifo`` the newest, ``node`` the smallest cell (x, then y: ``heapq`` on ``(f, (x, y))``
+  tuples), ``low-h``/``high-h`` the lower/higher h, ``low-g``/``high-g`` the lower/higher g;
+  then the oldest.  Uniform-cost, greedy and A* only (h ties: greedy and A*; g ties: not
+  uniform-cost, whose priority is g).
+* ``cost_tolerance``: how much lower a new g must be to count as cheaper (the default
+  ``CHEAPER_BY``; 0: compared exactly, as code comparing floats with ``<`` does).
+* ``reopen``: may a cost-ordered search push a cell it has expanded again, for a lower g?
+  False: a closed set, as much published greedy and A* code keeps.
+* ``recursive``: DFS or iterative deepening written as recursion: ``neighbours`` (a line lists
+  the neighbours not yet visited on entry; the recursion skips those visited meanwhile) or
+  ``calls`` (a line lists the cells the call recursed into); "" a stack.
+* ``path_check``: tree search skips a successor on the node's own path (False: skips nothing,
+  not even the parent, as textbook tree-search code).
+* ``mark_start``: is the start marked reached when it is pushed?  False: it can be pushed
+  again, as some library code does.
+
 The defaults are the tutorial's semantics.  A combination that makes no sense is refused by
 :meth:`Semantics.check` with a one-line ``ValueError``.
 """
@@ -24,13 +45,21 @@ The defaults are the tutorial's semantics.  A combination that makes no sense is
 from __future__ import annotations
 
 from tui_search.engine.maps.grid import DEFAULT_ORDER, DELTAS
-from tui_search.engine.search.heuristics import DEFAULT_HEURISTIC, HEURISTICS
-from tui_search.engine.search.registry import Algorithm
+from tui_search.engine.search.heuristics import CHEAPER_BY, DEFAULT_HEURISTIC, HEURISTICS
+from tui_search.engine.search.registry import Algorithm, Frontier
 from tui_search.engine.util.frozen import Frozen
 
 CORNER_RULES: tuple[str, ...] = ("always", "one", "never")
-VISIT_RULES: tuple[str, ...] = ("generate", "expand")
+VISIT_RULES: tuple[str, ...] = ("generate", "expand", "expand-again")
 GOAL_TESTS: tuple[str, ...] = ("generate", "expand")
+TIE_RULES: tuple[str, ...] = ("fifo", "lifo", "node", "low-h", "high-h", "low-g", "high-g")
+RECURSIVE_FORMS: tuple[str, ...] = ("neighbours", "calls")
+#: The tie rules, in the words a student would say them.
+TIE_WORDS: dict[str, str] = {
+    "fifo": "oldest first", "lifo": "newest first", "node": "smallest cell first",
+    "low-h": "lower h first", "high-h": "higher h first", "low-g": "lower g first",
+    "high-g": "higher g first",
+}
 
 #: One line per choice, for the settings screen and the help.
 EXPLAIN: dict[str, str] = {
@@ -40,6 +69,12 @@ EXPLAIN: dict[str, str] = {
     "goal_test": "stop when the goal is pushed, or when it is taken off the frontier",
     "tree_search": "no visited set: only cells on the node's own path are skipped",
     "heuristic": "greedy's and A*'s estimate of the cost from a cell to the goal",
+    "ties": "which entry of a priority tie comes out first",
+    "cost_tolerance": "how much lower a new g must be to count as cheaper (0: exactly)",
+    "reopen": "may a cell expanded be pushed again, reached with a lower g?",
+    "recursive": "DFS as recursion: a line lists the unvisited neighbours, or the calls made",
+    "path_check": "tree search skips the cells on the node's own path (off: skips nothing)",
+    "mark_start": "is the start marked reached when pushed (off: it can be pushed again)?",
 }
 
 
@@ -49,7 +84,9 @@ class Semantics(Frozen):
     start would pay for: benchmarks/README.md, "startup");
     :meth:`~tui_search.engine.util.frozen.Frozen.replace` makes a changed copy."""
 
-    __slots__ = _FIELDS = ("order", "corners", "visit", "goal_test", "tree_search", "heuristic")
+    __slots__ = _FIELDS = ("order", "corners", "visit", "goal_test", "tree_search", "heuristic",
+                           "ties", "cost_tolerance", "reopen", "recursive", "path_check",
+                           "mark_start")
 
     order: tuple[str, ...]
     corners: str
@@ -57,10 +94,18 @@ class Semantics(Frozen):
     goal_test: str | None  # None: the algorithm's own
     tree_search: bool
     heuristic: str
+    ties: str
+    cost_tolerance: float
+    reopen: bool
+    recursive: str  # "": a stack
+    path_check: bool
+    mark_start: bool
 
     def __init__(self, order: tuple[str, ...] = DEFAULT_ORDER, corners: str = "always",
                  visit: str = "generate", goal_test: str | None = None,
-                 tree_search: bool = False, heuristic: str = DEFAULT_HEURISTIC) -> None:
+                 tree_search: bool = False, heuristic: str = DEFAULT_HEURISTIC,
+                 ties: str = "fifo", cost_tolerance: float = CHEAPER_BY, reopen: bool = True,
+                 recursive: str = "", path_check: bool = True, mark_start: bool = True) -> None:
         if not order or any(d not in DELTAS for d in order) or len(set(order)) != len(order):
             raise ValueError(f"bad move order {order!r}")
         for name, value, allowed in (
@@ -68,26 +113,72 @@ class Semantics(Frozen):
             ("visit", visit, VISIT_RULES),
             ("goal test", goal_test or GOAL_TESTS[0], GOAL_TESTS),
             ("heuristic", heuristic, tuple(HEURISTICS)),
+            ("ties", ties, TIE_RULES),
+            ("recursive", recursive or RECURSIVE_FORMS[0], RECURSIVE_FORMS),
         ):
             if value not in allowed:
                 raise ValueError(f"{name} {value!r}: use {', '.join(allowed)}")
+        if not (cost_tolerance >= 0 and cost_tolerance != float("inf")):  # NaN fails too
+            raise ValueError(f"cost tolerance {cost_tolerance!r}: a number 0 or more")
         if tree_search and visit != "generate":
             raise ValueError("tree search has no visited set: the visit rule does not apply")
+        if recursive and visit != "generate":
+            raise ValueError("a recursive search visits a cell when it enters it: the visit "
+                             "rule does not apply")
+        if not path_check and not tree_search:
+            raise ValueError("the path check is tree search's: graph search has a visited set")
+        if not mark_start and (tree_search or recursive or visit != "generate"):
+            raise ValueError("only a search that marks what it pushes can leave the start "
+                             "unmarked")
         self._assign(order=order, corners=corners, visit=visit, goal_test=goal_test,
-                     tree_search=tree_search, heuristic=heuristic)
+                     tree_search=tree_search, heuristic=heuristic, ties=ties,
+                     cost_tolerance=float(cost_tolerance), reopen=reopen, recursive=recursive,
+                     path_check=path_check, mark_start=mark_start)
 
     def check(self, algorithm: Algorithm) -> None:
         """Refuse the combinations that make no sense for ``algorithm`` (``ValueError``)."""
+        why = self.refusal(algorithm)
+        if why:
+            raise ValueError(why)
+
+    def refusal(self, algorithm: Algorithm) -> str:
+        """Why these choices make no sense for ``algorithm`` ("" when they do)."""
+        name = algorithm.short
         if algorithm.iterative and self.visit != "generate":
-            raise ValueError(
-                f"the visit rule does not apply to {algorithm.short} "
-                "(it re-opens a cell reached at a smaller depth)"
-            )
+            return (f"the visit rule does not apply to {name} (it re-opens a cell reached at "
+                    "a smaller depth)")
         if algorithm.weighted and self.visit != "generate":
-            raise ValueError(
-                f"the visit rule does not apply to {algorithm.short} "
-                "(it re-opens a cell reached with a lower g)"
-            )
+            return (f"the visit rule does not apply to {name} (it re-opens a cell reached with "
+                    "a lower g)")
+        if not algorithm.weighted:
+            for field, words in (("ties", "ties"), ("cost_tolerance", "the cost tolerance"),
+                                 ("reopen", "re-opening")):
+                if getattr(self, field) != getattr(DEFAULT_SEMANTICS, field):
+                    return (f"{words} apply to a priority queue's search (UCS, greedy, A*), "
+                            f"not {name}")
+        if self.ties in ("low-h", "high-h") and not algorithm.informed:
+            return f"ties on h apply to greedy and A*, not {name} (it uses no h)"
+        if self.ties in ("low-g", "high-g") and algorithm.priority == "g":
+            return f"ties on g do not apply to {name}: its priority is g itself"
+        if self.recursive and algorithm.frontier is not Frontier.LIFO:
+            return f"recursion is a depth-first search's (DFS, IDDFS), not {name}'s"
+        return ""
+
+    def fitted(self, algorithm: Algorithm) -> Semantics:
+        """These choices with those that do not apply to ``algorithm`` put back to their
+        defaults (the app's settings apply to every pane where they can)."""
+        out = self
+        if algorithm.iterative or algorithm.weighted:
+            out = out.replace(visit="generate")
+        if not algorithm.weighted:
+            out = out.replace(ties="fifo", cost_tolerance=CHEAPER_BY, reopen=True)
+        if out.ties in ("low-h", "high-h") and not algorithm.informed:
+            out = out.replace(ties="fifo")
+        if out.ties in ("low-g", "high-g") and algorithm.priority == "g":
+            out = out.replace(ties="fifo")
+        if algorithm.frontier is not Frontier.LIFO and out.recursive:
+            out = out.replace(recursive="")
+        return out
 
     def goal_test_for(self, algorithm: Algorithm) -> str:
         """The goal test in force for ``algorithm``: the one chosen, or the algorithm's own."""
@@ -104,6 +195,15 @@ class Semantics(Frozen):
     def is_default(self) -> bool:
         return self == Semantics()
 
+    @property
+    def plain(self) -> bool:
+        """Are the choices published code differs on all at their defaults (none of ties,
+        cost tolerance, re-opening, recursion, no path check, an unmarked start, visit
+        expand-again)?  The compiled core and the fast loops serve these."""
+        return (self.ties == "fifo" and self.cost_tolerance == CHEAPER_BY and self.reopen
+                and not self.recursive and self.path_check and self.mark_start
+                and self.visit != "expand-again")
+
     def differences(self, algorithm: Algorithm | None = None) -> list[str]:
         """What differs from the defaults (``algorithm``'s, when given), in a few words each
         ("visit on expand")."""
@@ -112,16 +212,34 @@ class Semantics(Frozen):
             out.append(f"moves {','.join(self.order)}")
         if self.corners != "always":
             out.append(f"corners: {self.corners}")
+        if self.recursive:
+            out.append(f"recursive ({RECURSIVE_WORDS[self.recursive]})")
         if self.tree_search:
-            out.append("tree search")
+            out.append("tree search" if self.path_check else "tree search, no path check")
         elif self.visit != "generate":
-            out.append(f"visit on {self.visit}")
+            out.append(VISIT_WORDS[self.visit])
         if self.goal_test is not None and (
             algorithm is None or self.goal_test != algorithm.goal_test
         ):
             out.append(f"goal test on {self.goal_test}")
         if self.heuristic != DEFAULT_HEURISTIC and (algorithm is None or algorithm.informed):
             out.append(f"heuristic {self.heuristic}")
+        out += self.published_words()
+        return out
+
+    def published_words(self) -> list[str]:
+        """The choices of published code that are not the defaults, in a student's words:
+        "ties: smallest cell first", "no re-opening", "exact costs", "start not marked"."""
+        out = []
+        if self.ties != "fifo":
+            out.append(f"ties: {TIE_WORDS[self.ties]}")
+        if not self.reopen:
+            out.append("no re-opening")
+        if self.cost_tolerance != CHEAPER_BY:
+            out.append("exact costs" if self.cost_tolerance == 0
+                       else f"cost tolerance {self.cost_tolerance:g}")
+        if not self.mark_start:
+            out.append("start not marked")
         return out
 
     @property
@@ -137,10 +255,12 @@ class Semantics(Frozen):
 
     def as_json(self, algorithm: Algorithm | None = None) -> dict[str, object]:
         """Every choice by name; the visit rule is null where it does not apply (tree search,
-        iterative deepening, the cost-ordered searches), the heuristic where none is used."""
-        no_visit = self.tree_search or (
+        recursion, iterative deepening, the cost-ordered searches), the heuristic where none
+        is used, and the priority queue's choices where there is none."""
+        no_visit = self.tree_search or bool(self.recursive) or (
             algorithm is not None and (algorithm.iterative or algorithm.weighted))
         goal_test = self.goal_test_for(algorithm) if algorithm else self.goal_test or "generate"
+        queue = algorithm is None or algorithm.weighted
         return {
             "order": list(self.order),
             "corners": self.corners,
@@ -148,7 +268,19 @@ class Semantics(Frozen):
             "goal_test": goal_test,
             "tree_search": self.tree_search,
             "heuristic": self.heuristic if algorithm is None or algorithm.informed else None,
+            "ties": self.ties if queue else None,
+            "cost_tolerance": self.cost_tolerance if queue else None,
+            "reopen": self.reopen if queue else None,
+            "recursive": self.recursive or None,
+            "path_check": self.path_check if self.tree_search else None,
+            "mark_start": self.mark_start,
         }
+
+
+#: The visit rules, and the recursive forms, in a few words.
+VISIT_WORDS = {"generate": "visit on generate", "expand": "visit on expand",
+               "expand-again": "visit on expand, expanded again"}
+RECURSIVE_WORDS = {"neighbours": "a line lists the neighbours", "calls": "a line lists the calls"}
 
 
 DEFAULT_SEMANTICS = Semantics()

@@ -34,7 +34,8 @@ def parse_compare(text: str, semantics: Semantics = DEFAULT_SEMANTICS,
     """``bfs,dfs`` or ``astar:manhattan,ucs``: ``fewest`` (two; the app's panes: one) to four
     registry keys, each informed one with an optional heuristic.  ``ValueError`` (one line)
     for anything else -- or, with ``fit``, for a choice that does not apply to one of them,
-    that one visits on generate (the app's settings apply to every pane where they can)."""
+    that one takes the default instead (:meth:`~tui_search.engine.search.choices.Semantics.
+    fitted`: the app's settings apply to every pane where they can)."""
     from tui_search.engine.search.heuristics import HEURISTICS
 
     parts = [p.strip() for p in text.split(",") if p.strip()]
@@ -57,7 +58,7 @@ def parse_compare(text: str, semantics: Semantics = DEFAULT_SEMANTICS,
         except ValueError:
             if not fit:
                 raise
-            sem = sem.replace(visit="generate")
+            sem = sem.fitted(algo)
         out.append(Contender(key, sem))
     return out
 

@@ -40,6 +40,10 @@ class Problem:
             if grid.is_blocked(cell):
                 raise ValueError(f"the {name} {cell} is on an obstacle")
         w, h = grid.width, grid.height
+        self.grid = grid  # the map itself, for the loop that records the reference's steps
+        #: Where the run stops (None: not said): a recursion's calls form lists the calls
+        #: made by then (:mod:`~tui_search.engine.search.recursion`).
+        self.max_steps: int | None = None
         self.width, self.height = w, h
         self.stride = stride = w + 2
         # Shared with every search of this map until it is edited (Grid.derived): never written.

@@ -20,7 +20,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from functools import lru_cache
 
-from tui_search.engine.search.choices import Semantics
+from tui_search.engine.search.choices import TIE_WORDS, Semantics
+from tui_search.engine.search.heuristics import CHEAPER_BY
 from tui_search.engine.search.registry import PRIORITIES, Algorithm
 
 #: What a move costs, as the line that adds it to g says it.  Terrain costs land here: the
@@ -30,7 +31,7 @@ MOVE_COST = "the move's cost (1 straight, √2 diagonal)"
 TERRAIN_MOVE_COST = "the move's length (1 straight, √2 diagonal) × the cost of the cell it enters"
 
 #: The lines that may skip a successor, and the lines that end a step early, by kind.
-SKIP_KINDS = ("blocked", "corner", "reached", "on_path")
+SKIP_KINDS = ("blocked", "corner", "closed", "reached", "on_path")
 
 _CORNER_WORDS = {
     "one": "if s is diagonal between two obstacles (corner rule one): skip s",
@@ -80,17 +81,42 @@ def pseudocode(algorithm: Algorithm, semantics: Semantics, *,
     return _generate(algorithm, semantics, move_cost)
 
 
-def _marks(tree: bool, weighted: bool, iterative: bool, on_expand: bool
+def _marks(tree: bool, weighted: bool, iterative: bool, on_expand: bool, start: bool = True
            ) -> tuple[str, str] | None:
     """What pushing START and pushing a successor record: the best g, the depth reached, or
-    "visited"; None when a push records nothing (tree search, visit on expand)."""
+    "visited"; None when a push records nothing (tree search, visit on expand).  START's is
+    "" when the start is left unmarked."""
     if tree or on_expand:
         return None
     if weighted:
-        return "best g[START] ← 0", "best g[s] ← g"
-    if iterative:
-        return "mark START reached at depth 0", "mark s reached at depth node's + 1"
-    return "mark START visited", "mark s visited"
+        marks = "best g[START] ← 0", "best g[s] ← g"
+    elif iterative:
+        marks = "mark START reached at depth 0", "mark s reached at depth node's + 1"
+    else:
+        marks = "mark START visited", "mark s visited"
+    return marks if start else ("", marks[1])
+
+
+def _reached_line(algorithm: Algorithm, semantics: Semantics, recursive: bool = False
+                  ) -> tuple[str, str] | None:
+    """The line that skips a successor reached already, as ``(kind, text)``; None for tree
+    search with no path check (it skips nothing)."""
+    if semantics.tree_search:
+        if not semantics.path_check:
+            return None
+        return "on_path", "if s is on the path from START to node: skip s"
+    if algorithm.weighted:
+        tolerance = semantics.cost_tolerance
+        if tolerance == 0:
+            return "reached", "if best g[s] ≤ g (compared exactly): reached as cheaply, skip s"
+        if tolerance != CHEAPER_BY:
+            return "reached", f"if best g[s] ≤ g + {tolerance:g}: reached as cheaply, skip s"
+        return "reached", "if best g[s] ≤ g: reached as cheaply, skip s"
+    if algorithm.iterative:
+        return "reached", "if s was reached at depth ≤ node's + 1: skip s"
+    if recursive and semantics.recursive == "calls":
+        return "reached", "if s is already visited (maybe by an earlier call): skip s"
+    return "reached", "if s is already visited: skip s"
 
 
 def _successor_lines(algorithm: Algorithm, semantics: Semantics, move_cost: str,
@@ -98,21 +124,18 @@ def _successor_lines(algorithm: Algorithm, semantics: Semantics, move_cost: str,
                      ) -> list[tuple[str, int, str]]:
     """The loop over a node's successors, as ``(kind, indent, text)``: the checks that skip
     one, its push, what the push records and the goal test on push."""
-    tree, weighted = semantics.tree_search, algorithm.weighted
+    weighted = algorithm.weighted
     out = [("for", 1, f"for each successor s of node, moves in order {','.join(semantics.order)}:"),
            ("blocked", 2, "if s is off the map or an obstacle: skip s")]
     if semantics.corners in _CORNER_WORDS:
         out.append(("corner", 2, _CORNER_WORDS[semantics.corners]))
+    if weighted and not semantics.reopen and not semantics.tree_search:
+        out.append(("closed", 2, "if s is closed (expanded already): skip s"))
     if weighted:
         out.append(("cost", 2, f"g ← node.g + {move_cost}"))
-    if tree:
-        out.append(("on_path", 2, "if s is on the path from START to node: skip s"))
-    elif weighted:
-        out.append(("reached", 2, "if best g[s] ≤ g: reached as cheaply, skip s"))
-    elif algorithm.iterative:
-        out.append(("reached", 2, "if s was reached at depth ≤ node's + 1: skip s"))
-    else:
-        out.append(("reached", 2, "if s is already visited: skip s"))
+    reached = _reached_line(algorithm, semantics)
+    if reached is not None:
+        out.append((reached[0], 2, reached[1]))
     by = PRIORITIES.get(algorithm.priority or "", "")
     out.append(("push", 2, algorithm.frontier.push_words(by)))
     if marks:
@@ -124,11 +147,17 @@ def _successor_lines(algorithm: Algorithm, semantics: Semantics, move_cost: str,
 
 @lru_cache(maxsize=64)
 def _generate(algorithm: Algorithm, semantics: Semantics, move_cost: str) -> Pseudocode:
+    if semantics.recursive:
+        from tui_search.engine.search.pseudocode_recursive import recursive_lines
+
+        title = _title(algorithm, semantics)
+        return Pseudocode(title, tuple(CodeLine(*line) for line in recursive_lines(
+            algorithm, semantics, _reached_line(algorithm, semantics, recursive=True))))
     lines: list[CodeLine] = []
     tree = semantics.tree_search
     weighted = algorithm.weighted
     iterative = algorithm.iterative
-    on_expand = semantics.visit == "expand" and not tree and not weighted and not iterative
+    on_expand = semantics.visit != "generate" and not tree and not weighted and not iterative
     goal_test = semantics.goal_test_for(algorithm)
     frontier = algorithm.frontier
     order_name = algorithm.priority_name
@@ -145,16 +174,23 @@ def _generate(algorithm: Algorithm, semantics: Semantics, move_cost: str) -> Pse
     holding = f"a {frontier.noun} by {order_by}, holding START" if weighted else (
         f"a {frontier.noun} holding START")
     add("init", 0, f"frontier ← {holding}")
-    marks = _marks(tree, weighted, iterative, on_expand)  # what a push records, if anything
-    if marks:
+    # what a push records, if anything
+    marks = _marks(tree, weighted, iterative, on_expand, semantics.mark_start)
+    if marks and marks[0]:
         add("mark_start", 0, marks[0])
     if goal_test == "generate":
         add("goal_start", 0, "goal test: if START is the goal, return its path")
     add("while", 0, "while the frontier is not empty:")
-    add("take", 1, f"node ← {frontier.take_words(order_name)}")
+    ties = f"; of a tie, the {TIE_WORDS[semantics.ties].replace(' first', '')}" if (
+        semantics.ties != "fifo") else ""
+    add("take", 1, f"node ← {frontier.take_words(order_name)}{ties}")
     if on_expand:
-        add("discard", 1, "if node is already visited: discard it, go on")
+        if semantics.visit == "expand":
+            add("discard", 1, "if node is already visited: discard it, go on")
         add("mark_node", 1, "mark node visited")
+    elif weighted and not tree and not semantics.reopen:
+        add("discard", 1, "if node is closed (expanded already): discard it, go on")
+        add("close_node", 1, "close node (never push it again); node.g ← best g[node]")
     elif weighted and not tree:
         add("discard", 1, "if node.g > best g[node]: stale, discard it, go on")
     if goal_test == "expand":
@@ -167,11 +203,16 @@ def _generate(algorithm: Algorithm, semantics: Semantics, move_cost: str) -> Pse
         add("fail", 0, "if nothing was cut off at the limit: return no path")
     else:
         add("fail", 0, "return no path")
+    return Pseudocode(_title(algorithm, semantics), tuple(lines))
+
+
+def _title(algorithm: Algorithm, semantics: Semantics) -> str:
+    """"BFS: Breadth-first search (visit on expand)": the search and what differs."""
     title = f"{algorithm.short}: {algorithm.name}"
     differences = semantics.for_algorithm(algorithm).differences(algorithm)
     if differences:
         title += f" ({', '.join(differences)})"
-    return Pseudocode(title, tuple(lines))
+    return title
 
 
 __all__ = ["MOVE_COST", "SKIP_KINDS", "CodeLine", "Pseudocode", "pseudocode"]

@@ -6,16 +6,17 @@ step by step, over random maps and random choices.  The headless command line st
 it keeps only the frontier, the visited cells and the chains of parents the frontier still
 points to, so its memory grows with the map and the frontier, never with the number of steps.
 
-The loop, as in AIMA's ``best_first_search``, takes two parameters: the *frontier*, which
-says which entry comes out next (a FIFO :class:`Queue`, a LIFO :class:`Stack`, or a
-:class:`PriorityQueue`), and what was *reached*, which says which successors are pushed and
-which entries taken off are thrown away (:class:`Visited`, :class:`Cheapest`,
-:class:`Shallowest`, or :class:`OnPath` for tree search)::
+The loop, as in AIMA's ``best_first_search``, takes two parameters
+(:mod:`~tui_search.engine.search.rules`): the *frontier*, which says which entry comes out next
+(a FIFO ``Queue``, a LIFO ``Stack``, a ``CallStack`` for recursion, or a ``PriorityQueue``), and
+what was *reached*, which says which successors are pushed and which entries taken off are
+thrown away (``Visited``, ``Cheapest``, ``Shallowest``, or ``OnPath`` for tree search)::
 
     push the root
     while frontier:
         node = frontier.take()
         if reached.discards(node): the step is discarded
+        node = reached.taken(node): the node expanded (a closed set's: its cell's best g)
         if goal test on expand and node.cell is the goal: found
         for each move in the order:
             skip a cell off the map, blocked or refused by the corner rule
@@ -23,229 +24,62 @@ which entries taken off are thrown away (:class:`Visited`, :class:`Cheapest`,
             push the child; if goal test on generate and it is the goal: found
 
 BFS takes the oldest entry, DFS the newest.  Uniform-cost, greedy best-first and A* take the
-entry of lowest priority (g, h or g + h; ties in the order pushed).  A move costs its length
+entry of lowest priority (g, h or g + h); a tie goes by the tie rule (the oldest, the newest, the
+smallest cell, the lower or higher h or g), then to the oldest.  A move costs its length
 (1 straight, sqrt(2) diagonally) times the cost of the cell it enters (1 on a plain map), and
 the estimates h are scaled by the map's lowest cell cost; a cell is pushed again whenever it is
-reached with a lower g than its best so far (lower by more than ``CHEAPER_BY``, 1e-9: the floats'
-rounding is no cheaper path) (even after it was expanded: it is *re-opened*), and an entry taken off
-with a g above its cell's best is *stale*: a discarded step.  Tree search keeps no best g: a
-successor is skipped only when it is on the node's own path.  The goal is tested on expansion unless
-told otherwise.
+reached with a lower g than its best so far, lower by more than the cost tolerance (by default
+``CHEAPER_BY``, 1e-9: the floats' rounding is no cheaper path; 0: compared exactly), even after
+it was expanded (it is *re-opened*), and an entry taken off with a g above its cell's best is
+*stale*: a discarded step -- unless re-opening is off (a closed set, as published code keeps
+one): a cell expanded is never pushed again, an entry of it taken off later is discarded, and
+the first entry of a cell taken off is expanded at the cell's best g so far.  Tree search keeps
+no best g: a successor is skipped only when it is on the node's own path, or with no path check
+never.  With the start
+left unmarked (``mark_start`` off) the visited set, the best g or the best depth does not
+record the start, so a neighbour may push it again.
 
-Iterative deepening runs the same loop on a stack with depth limits 0, 1, 2, ...: a node taken
-off at the limit is expanded with no successors, and within an iteration a cell is pushed again
-only when reached at a smaller depth than before (tree search: when not on the node's own
-path).  It stops with no path when an iteration cuts nothing off at its limit.
+Visit on expand takes off a cell already visited as a discarded step; visit on expand, expanded
+again, expands it again (the node taken off is never checked).  A recursive DFS (``recursive``)
+runs on a ``CallStack``, a cell visited when entered (taken off): its *neighbours* form lists on
+each line the neighbours not yet visited, and the recursion skips those visited meanwhile (the
+discarded steps); its *calls* form is defined from that one by
+:mod:`~tui_search.engine.search.recursion`.
+
+Iterative deepening runs the same loop on a stack (recursive: a call stack) with depth limits 0,
+1, 2, ...: a node taken off at the limit is expanded with no successors, and within an
+iteration a cell is pushed again only when reached at a smaller depth than before (tree search:
+when not on the node's own path).  It stops with no path when an iteration cuts nothing off at
+its limit.
 """
 
 from __future__ import annotations
 
-import heapq
 import itertools
 from array import array
-from collections import deque
 from collections.abc import Callable, Generator, Iterator
-from dataclasses import dataclass
-from typing import Protocol
 
 from tui_search.engine.maps.grid import DELTAS, Cell, Grid, move_cost
 from tui_search.engine.search.choices import Semantics
-from tui_search.engine.search.heuristics import CHEAPER_BY, heuristic_for, priority_of
+from tui_search.engine.search.heuristics import heuristic_for, priority_of
 from tui_search.engine.search.outcome import Outcome, cost_of
 from tui_search.engine.search.registry import Algorithm
 from tui_search.engine.search.registry import Frontier as FrontierKind
-
-
-@dataclass(eq=False, slots=True)
-class Node:
-    """A frontier entry: a cell, the entry it was generated from, and the move between."""
-
-    event: int  # generation events are numbered from 0 (the start) in the order pushed
-    cell: Cell
-    parent: Node | None
-    move: str | None  # the direction it was reached by (None for a root)
-    depth: int
-    g: float = 0.0  # the path's cost from the root: each move's length times its cell's cost
-
-    def path(self) -> list[Cell]:
-        """Cells from the root down to this node."""
-        chain = []
-        node: Node | None = self
-        while node is not None:
-            chain.append(node.cell)
-            node = node.parent
-        chain.reverse()
-        return chain
-
-    def moves(self) -> list[str]:
-        out = []
-        node: Node | None = self
-        while node is not None and node.move is not None:
-            out.append(node.move)
-            node = node.parent
-        out.reverse()
-        return out
-
-    def on_path(self, cell: Cell) -> bool:
-        """Is ``cell`` on the path from the root to this node (this node included)?"""
-        node: Node | None = self
-        while node is not None:
-            if node.cell == cell:
-                return True
-            node = node.parent
-        return False
-
-
-@dataclass(frozen=True, slots=True)
-class Expansion:
-    """One step: the node taken off the frontier and what it added, in order."""
-
-    index: int  # steps are numbered from 1
-    node: Node
-    successors: tuple[Node, ...]
-    discarded: bool  # visit on expand: the cell was expanded before; nothing is done
-    found: bool  # this step found the goal
-    frontier_size: int  # entries on the frontier after the step
-    depth_limit: int | None = None  # iterative deepening's limit in force
-    new_root: Node | None = None  # iterative deepening: this step began a new iteration
-
-
-INF = float("inf")
-
-
-# -- the frontier: which entry comes out next ---------------------------------------------------
-class Frontier(Protocol):
-    def __len__(self) -> int: ...
-    def add(self, node: Node) -> None: ...
-    def take(self) -> Node: ...
-
-
-class Queue:
-    """FIFO (BFS): the oldest entry comes out first."""
-
-    def __init__(self) -> None:
-        self.entries: deque[Node] = deque()
-
-    def __len__(self) -> int:
-        return len(self.entries)
-
-    def add(self, node: Node) -> None:
-        self.entries.append(node)
-
-    def take(self) -> Node:
-        return self.entries.popleft()
-
-
-class Stack(Queue):
-    """LIFO (DFS, iterative deepening): the same line of entries, the newest coming out first."""
-
-    def take(self) -> Node:
-        return self.entries.pop()
-
-
-class PriorityQueue:
-    """Uniform-cost, greedy and A*: the lowest priority (g, h or g + h) first, ties in the order
-    pushed (a heap of ``(priority, event, node)``: the event number breaks ties)."""
-
-    def __init__(self, priority: Callable[[float, int, int], float]) -> None:
-        self.priority = priority
-        self.heap: list[tuple[float, int, Node]] = []
-
-    def __len__(self) -> int:
-        return len(self.heap)
-
-    def add(self, node: Node) -> None:
-        heapq.heappush(self.heap, (self.priority(node.g, *node.cell), node.event, node))
-
-    def take(self) -> Node:
-        return heapq.heappop(self.heap)[2]
-
-
-# -- what was reached: which successors are pushed, which entries taken off are discarded -------
-class Reached(Protocol):
-    def admits(self, parent: Node, cell: Cell, g: float) -> bool:
-        """May ``cell``, reached from ``parent`` with cost ``g``, be pushed?"""
-        ...
-
-    def pushed(self, node: Node) -> None: ...
-
-    def discards(self, node: Node) -> bool:
-        """Is ``node``, just taken off, thrown away (a discarded step)?"""
-        ...
-
-
-class OnPath:
-    """Tree search: no visited set; a cell is skipped only when it lies on the path from the
-    root to the node being expanded (that node included).  Nothing is discarded."""
-
-    def admits(self, parent: Node, cell: Cell, g: float) -> bool:
-        return not parent.on_path(cell)
-
-    def pushed(self, node: Node) -> None:
-        pass
-
-    def discards(self, node: Node) -> bool:
-        return False
-
-
-class Visited:
-    """BFS's and DFS's visited set.  Visit on generate: a cell is visited when pushed, so it is
-    never pushed twice.  Visit on expand: when taken off and expanded, so a cell may sit on the
-    frontier several times, and taking off a cell already expanded is a discarded step."""
-
-    def __init__(self, visit: str) -> None:
-        self.on_expand = visit == "expand"
-        self.cells: set[Cell] = set()
-
-    def admits(self, parent: Node, cell: Cell, g: float) -> bool:
-        return cell not in self.cells
-
-    def pushed(self, node: Node) -> None:
-        if not self.on_expand:
-            self.cells.add(node.cell)
-
-    def discards(self, node: Node) -> bool:
-        if not self.on_expand:
-            return False
-        if node.cell in self.cells:
-            return True
-        self.cells.add(node.cell)
-        return False
-
-
-class Cheapest:
-    """The priority queue's rule: a cell is pushed again whenever it is reached with a lower g
-    than its best so far (lower by more than ``CHEAPER_BY``), even after it was expanded (it
-    is re-opened); an entry taken off with a g above its cell's best is stale: discarded."""
-
-    def __init__(self) -> None:
-        self.best: dict[Cell, float] = {}
-
-    def admits(self, parent: Node, cell: Cell, g: float) -> bool:
-        return g + CHEAPER_BY < self.best.get(cell, INF)
-
-    def pushed(self, node: Node) -> None:
-        self.best[node.cell] = node.g
-
-    def discards(self, node: Node) -> bool:
-        return node.g > self.best[node.cell]
-
-
-class Shallowest:
-    """Iterative deepening, within one iteration: a cell is pushed again when reached at a
-    smaller depth than before.  An entry reached shallower since is still expanded."""
-
-    def __init__(self) -> None:
-        self.best: dict[Cell, int] = {}
-
-    def admits(self, parent: Node, cell: Cell, g: float) -> bool:
-        return parent.depth + 1 < self.best.get(cell, INF)
-
-    def pushed(self, node: Node) -> None:
-        self.best[node.cell] = node.depth
-
-    def discards(self, node: Node) -> bool:
-        return False
+from tui_search.engine.search.rules import (
+    CallStack,
+    Cheapest,
+    Expansion,
+    Frontier,
+    Node,
+    OnPath,
+    PriorityQueue,
+    Queue,
+    Reached,
+    Shallowest,
+    Stack,
+    Visited,
+    tie_key,
+)
 
 
 class ReferenceSearch:
@@ -257,13 +91,23 @@ class ReferenceSearch:
     tested on generation.
     """
 
-    def __init__(self, grid: Grid, algorithm: Algorithm, semantics: Semantics) -> None:
+    def __init__(self, grid: Grid, algorithm: Algorithm, semantics: Semantics,
+                 max_steps: int | None = None) -> None:
+        """``max_steps``: where a run of it stops, for a recursion's calls form, whose lines
+        list the calls made by then (:func:`~tui_search.engine.search.recursion.calls_form`;
+        at most its ``MAX_HELD``, which it holds in memory)."""
         if grid.start is None or grid.goal is None:
             raise ValueError("the map needs a start and a goal")
         semantics.check(algorithm)
         self.grid, self.algorithm, self.semantics = grid, algorithm, semantics
         self._start: Cell = grid.start
         self.goal_test = semantics.goal_test_for(algorithm)
+        # The calls form of a recursion: its neighbours form, the goal tested when entered
+        # (:mod:`~tui_search.engine.search.recursion`).
+        self._calls = semantics.recursive == "calls"
+        self._max_steps = max_steps
+        if self._calls:
+            self.goal_test = "expand"
         self.goal: Node | None = None
         self.generated = self.expanded = self.discarded = self.max_frontier = 0
         self.iterations = 0
@@ -277,26 +121,45 @@ class ReferenceSearch:
                        for move in semantics.order]
 
     def __iter__(self) -> Iterator[Expansion]:
+        steps: Iterator[Expansion]
         if self.algorithm.iterative:
-            return self._deepening()
-        return self._loop(self._frontier(), self._reached())
+            steps = self._deepening()
+        else:
+            steps = self._loop(self._frontier(), self._reached())
+        if self._calls:
+            from tui_search.engine.search.recursion import MAX_HELD, calls_form
+
+            goal_line = self.semantics.goal_test_for(self.algorithm) == "expand"
+            held = min(self._max_steps or MAX_HELD, MAX_HELD)
+            return calls_form(self, steps, goal_line, held)
+        return steps
 
     def _frontier(self) -> Frontier:
+        sem = self.semantics
         if self.algorithm.priority is not None:
             goal = self.grid.goal
             assert goal is not None  # checked in __init__
-            heuristic = heuristic_for(self.semantics.heuristic, self.grid.lowest_cost())
-            return PriorityQueue(priority_of(self.algorithm.priority, heuristic, goal))
+            heuristic = heuristic_for(sem.heuristic, self.grid.lowest_cost())
+            gx, gy = goal
+
+            def h(cell: Cell) -> float:
+                return heuristic(abs(cell[0] - gx), abs(cell[1] - gy))
+
+            return PriorityQueue(priority_of(self.algorithm.priority, heuristic, goal),
+                                 tie_key(sem.ties, h))
+        if sem.recursive:
+            return CallStack()
         return Queue() if self.algorithm.frontier is FrontierKind.FIFO else Stack()
 
     def _reached(self) -> Reached:
-        if self.semantics.tree_search:
-            return OnPath()
+        sem = self.semantics
+        if sem.tree_search:
+            return OnPath(sem.path_check)
         if self.algorithm.iterative:
-            return Shallowest()
+            return Shallowest(sem.mark_start)
         if self.algorithm.priority is not None:
-            return Cheapest()
-        return Visited(self.semantics.visit)
+            return Cheapest(sem.cost_tolerance, sem.reopen, sem.mark_start)
+        return Visited("expand" if sem.recursive else sem.visit, sem.mark_start)
 
     # -- moves -------------------------------------------------------------------------------
     def _legal(self, cell: Cell) -> list[tuple[str, Cell, float]]:
@@ -349,6 +212,7 @@ class ReferenceSearch:
                 yield Expansion(k, node, (), True, False, len(frontier), limit, new_root)
                 continue
             self.expanded += 1
+            node = reached.taken(node)
             if self.goal_test == "expand" and node.cell == self.grid.goal:
                 self.goal = node
                 yield Expansion(k, node, (), False, True, len(frontier), limit, new_root)
@@ -392,7 +256,11 @@ def stream(
     steps but what ``on_step`` does with each (the headless trace): memory grows with the map
     and the frontier only.  Give-up rules as a recorded run's: a search still going after
     ``max_steps`` steps gave up, and a goal it would find later is not found."""
-    search = ReferenceSearch(grid, algorithm, semantics)
+    if semantics.recursive == "calls":
+        from tui_search.engine.search.recursion import MAX_HELD
+
+        max_steps = min(max_steps, MAX_HELD)
+    search = ReferenceSearch(grid, algorithm, semantics, max_steps)
     expanded = discarded = 0
     generated = peak = 1
     gave_up = False

@@ -132,7 +132,9 @@ def trace_run(trace: Trace, grid: Grid, algorithm: str, semantics: Semantics,
     # cell reached by a cheaper path): only a trace's own "discarded" says it discarded one.
     infer = not (semantics.tree_search or algo.iterative or algo.frontier is Frontier.PRIORITY)
     loop = trace_loop(trace, pick, infer_discards=infer)
-    sem = semantics.replace(goal_test=semantics.goal_test_for(algo))
+    # the choices the trace's own run can take (a priority queue's and recursion are the
+    # search's: the trace's frontier is as added)
+    sem = semantics.replace(goal_test=semantics.goal_test_for(algo)).fitted(TRACE_ALGORITHM)
     return Run(grid, TRACE_ALGORITHM.key, sem, max_steps, Source(TRACE_ALGORITHM, loop, notes))
 
 

@@ -3,8 +3,9 @@
 One JSON object a line, one line an expansion: ``{"node": [x, y], "successors": [...]}``, each
 successor ``[x, y]`` or ``{"node": [x, y]}`` (``step``, ``dir`` and ``depth_limit`` are
 allowed and not needed; ``"discarded": true`` marks a pop that did nothing).  An optional first
-line ``{"start": [x, y], "goal": [x, y]}`` and an optional last line ``{"path": [...]}``.
-Coordinates are (column, row) from the top left.  Blank lines are skipped.
+line ``{"start": [x, y], "goal": [x, y]}`` and an optional last line ``{"path": [...]}`` (or
+``{"path": null}``: no path found).  A trace none of whose lines has ``successors`` is of
+expansions only.  Coordinates are (column, row) from the top left.  Blank lines are skipped.
 
 A malformed trace is a :class:`~tui_search.engine.maps.read.MapError` naming the file and the
 line: bad JSON, a cell off the map or on an obstacle, a node expanded that was never added, a
@@ -36,13 +37,15 @@ LINE_ALLOWANCE = 256 * 1024
 
 class TraceStep(NamedTuple):
     """One expansion of the trace: the line it is on, the cell taken off, the cells added (in
-    order, repeats kept: the check reports them) and whether it says it was discarded.  (A
+    order, repeats kept: the check reports them), whether it says it was discarded, and
+    whether it lists its successors at all (a trace of expansions only lists none).  (A
     tuple: made each time a step is read from :class:`TraceSteps`, it must be quick.)"""
 
     line: int
     node: Cell
     successors: tuple[Cell, ...]
     discarded: bool = False
+    listed: bool = True
 
 
 class TraceSteps(Sequence[TraceStep]):
@@ -50,38 +53,24 @@ class TraceSteps(Sequence[TraceStep]):
     successors end, each cell as ``y * width + x``.  A :class:`TraceStep` is made when asked
     for, so a trace of millions of lines costs a few bytes a step, not objects."""
 
-    __slots__ = ("_discarded", "_lines", "_nodes", "_succ", "_succ_end", "_width")
+    __slots__ = ("_discarded", "_lines", "_listed", "_nodes", "_succ", "_succ_end", "_width")
 
     def __init__(self, width: int) -> None:
         self._width = width
         self._lines, self._nodes = array("I"), array("i")
         self._succ_end, self._succ = array("I"), array("i")
         self._discarded = bytearray()
+        self._listed = bytearray()
 
-    def add(self, line: int, node: Cell, successors: Sequence[Cell], discarded: bool) -> None:
+    def add(self, line: int, node: Cell, successors: Sequence[Cell], discarded: bool,
+            listed: bool = True) -> None:
         w = self._width
         self._lines.append(line)
         self._nodes.append(node[1] * w + node[0])
         self._succ.extend(y * w + x for x, y in successors)
         self._succ_end.append(len(self._succ))
         self._discarded.append(discarded)
-
-    def empty(self) -> "TraceSteps":
-        """No steps, on the same map."""
-        return TraceSteps(self._width)
-
-    def mirrored(self) -> "TraceSteps":
-        """The same steps, each with its successors in reverse order."""
-        other = self.empty()
-        other._lines, other._nodes = self._lines, self._nodes
-        other._succ_end, other._discarded = self._succ_end, self._discarded
-        begin = 0
-        for end in self._succ_end:
-            part = self._succ[begin:end]
-            part.reverse()
-            other._succ.extend(part)
-            begin = end
-        return other
+        self._listed.append(listed)
 
     def __len__(self) -> int:
         return len(self._lines)
@@ -102,17 +91,17 @@ class TraceSteps(Sequence[TraceStep]):
         successors = tuple((c % w, c // w) for c in self._succ[begin:self._succ_end[index]])
         node = self._nodes[index]
         return TraceStep(self._lines[index], (node % w, node // w), successors,
-                         bool(self._discarded[index]))
+                         bool(self._discarded[index]), bool(self._listed[index]))
 
     def __iter__(self) -> Iterator[TraceStep]:
-        w, lines, nodes, succ, discarded = (self._width, self._lines, self._nodes, self._succ,
-                                            self._discarded)
+        w, lines, nodes, succ, discarded, listed = (
+            self._width, self._lines, self._nodes, self._succ, self._discarded, self._listed)
         begin = 0
         for i, end in enumerate(self._succ_end):
             node = nodes[i]
             yield TraceStep(lines[i], (node % w, node // w),
                             tuple([(c % w, c // w) for c in succ[begin:end]]),
-                            bool(discarded[i]))
+                            bool(discarded[i]), bool(listed[i]))
             begin = end
 
     def __eq__(self, other: object) -> bool:
@@ -131,7 +120,7 @@ class Trace:
     """A whole trace: its expansions, and the start, goal and path when it gives them."""
 
     name: str
-    steps: TraceSteps
+    steps: Sequence[TraceStep]  # TraceSteps as read; a tuple where a check remade them
     start: Cell | None = None
     goal: Cell | None = None
     path: tuple[Cell, ...] | None = None
@@ -160,12 +149,13 @@ class _Reader:
                             f"{json.dumps(value)[:40]}")
         x, y = value
         grid = self.grid
+        hint = "; x is the column, y the row: swapped?" if grid.is_free((y, x)) else ""
         if not (0 <= x < grid.width and 0 <= y < grid.height):
             raise self.fail(f"{what} ({x},{y}) is off the map "
                             f"({grid.width}x{grid.height}: x 0..{grid.width - 1}, "
-                            f"y 0..{grid.height - 1})")
+                            f"y 0..{grid.height - 1}){hint}")
         if grid.blocked[y * grid.width + x]:
-            raise self.fail(f"{what} ({x},{y}) is an obstacle")
+            raise self.fail(f"{what} ({x},{y}) is an obstacle{hint}")
         return (x, y)
 
     def successor(self, value: object) -> Cell:
@@ -213,11 +203,13 @@ def read_trace(text: str, grid: Grid, name: str) -> Trace:
     added[grid.start[1] * grid.width + grid.start[0]] = 1
     budget = LINE_BUDGET * len(text) + LINE_ALLOWANCE
     path_line = 0
+    unadded: MapError | None = None  # the first node no earlier line added
+    listed = False  # does any line list successors (else the trace is of expansions only)?
     for number, raw in enumerate(each_line(text), 1):
         reader.line = number
         if not raw.strip():
             continue
-        if path is not None:
+        if path_line:
             reader.line = path_line
             raise reader.fail('the "path" line should be the last')
         obj = reader.obj(raw, budget)
@@ -228,27 +220,34 @@ def read_trace(text: str, grid: Grid, name: str) -> Trace:
             continue
         if "path" in obj and "node" not in obj:
             cells = obj["path"]
-            if not isinstance(cells, list):
-                raise reader.fail('"path" should be a list of [x, y]')
-            path = tuple(reader.cell(c, "path cell") for c in cells)
+            if cells is not None and not isinstance(cells, list):
+                raise reader.fail('"path" should be a list of [x, y], or null (no path)')
+            path = () if cells is None else tuple(reader.cell(c, "path cell") for c in cells)
             path_line = number
             continue
         if "node" not in obj:
             raise reader.fail('an expansion needs "node": [x, y] (or the first line "start", '
                               'the last "path")')
         node = reader.cell(obj["node"], "node")
-        if not added[node[1] * grid.width + node[0]]:
-            raise reader.fail(f"expands {show(node)}, which no earlier line added "
-                              "(nor is it the start)")
+        width = grid.width
+        if not added[node[1] * width + node[0]] and unadded is None:  # unless none lists any
+            sx, sy = node[1], node[0]  # the cell with x and y swapped
+            swapped = (0 <= sx < width and 0 <= sy < grid.height and added[sy * width + sx])
+            hint = "; x is the column, y the row: swapped?" if swapped else ""
+            unadded = MapError(name, f"expands {show(node)}, which no earlier line added "
+                               f"(nor is it the start){hint}", number)
         successors = obj.get("successors", [])
         if not isinstance(successors, list):
             raise reader.fail('"successors" should be a list')
         cells = [reader.successor(s) for s in successors]
         for x, y in cells:
-            added[y * grid.width + x] = 1
-        steps.add(number, node, cells, obj.get("discarded") is True)
+            added[y * width + x] = 1
+        listed |= "successors" in obj
+        steps.add(number, node, cells, obj.get("discarded") is True, "successors" in obj)
     if not steps:
         raise MapError(name, "the trace has no expansions (lines with \"node\")")
+    if unadded is not None and listed:
+        raise unadded
     return Trace(name, steps, start, goal, path)
 
 

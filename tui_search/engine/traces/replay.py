@@ -19,21 +19,21 @@ from tui_search.engine.search.choices import Semantics
 from tui_search.engine.search.registry import get_algorithm
 from tui_search.engine.traces.as_run import TRACE_ALGORITHM, trace_run
 from tui_search.engine.traces.check import Verdict, check_trace
-from tui_search.engine.traces.read import Trace, show
+from tui_search.engine.traces.read import Trace, TraceStep, show
 from tui_search.engine.util.filenames import describe_name
 
 #: What the app calls the trace's pane.
 TRACE_LABEL = TRACE_ALGORITHM.short
-#: What it calls the search's pane when the trace is matched against a recursive DFS's
-#: pattern (a stack DFS that visits on expand and pushes the moves in reverse order).
-RECURSIVE_LABEL = "DFS (recursive)"
 
 
 @dataclass(frozen=True)
 class Replay:
     """A trace, the search it is replayed beside (``algorithm`` under ``semantics``) and how
-    the two compare (``verdict``), on the map as it was read (``where``: its obstacles, start
-    and goal; an edit that changes them ends the replay)."""
+    the two compare: ``verdict`` on the trace as the panes step it (the search's discarded
+    pops it leaves out put back, so both panes number their steps alike), ``own`` on the trace
+    as written (its own steps, as ``--check-trace`` numbers them: what the sentence says); on
+    the map as it was read (``where``: its obstacles, start and goal; an edit that changes
+    them ends the replay)."""
 
     trace: Trace
     algorithm: str
@@ -42,24 +42,18 @@ class Replay:
     where: tuple[bytes, Cell | None, Cell | None]
     #: Was the search found by the diagnosis (its order inferred from the trace), not given?
     inferred: bool = False
-
-    @property
-    def recursive(self) -> bool:
-        """Is the trace matched against a recursive DFS's pattern (the diagnosis's
-        :func:`~tui_search.engine.traces.diagnose.mirrored` match), not a search of the app?"""
-        return bool(self.verdict.label)
+    own: Verdict | None = None
 
     @property
     def labels(self) -> list[str]:
-        """The panes' names: the trace's, the search's."""
-        return [TRACE_LABEL,
-                RECURSIVE_LABEL if self.recursive else get_algorithm(self.algorithm).short]
+        """The panes' names: the trace's, the search's ("DFS (recursive)" for a recursion)."""
+        name = get_algorithm(self.algorithm).short
+        return [TRACE_LABEL, f"{name} (recursive)" if self.semantics.recursive else name]
 
     @property
     def order(self) -> tuple[str, ...]:
-        """The moves in the order the trace adds them (a recursive DFS's: the stack DFS's,
-        which pushes them in reverse, reversed)."""
-        return self.semantics.order[::-1] if self.recursive else self.semantics.order
+        """The moves in the order the trace adds them."""
+        return self.semantics.order
 
     def fits(self, grid: Grid) -> bool:
         """Does the trace still apply to ``grid`` (the same obstacles, start and goal)?"""
@@ -82,7 +76,8 @@ class Replay:
 
     @property
     def step(self) -> int | None:
-        """The trace's step at which it first parts from the search (None: it never does)."""
+        """The panes' step at which the trace first parts from the search (None: it never
+        does)."""
         difference = self.verdict.difference
         return None if difference is None else difference.step
 
@@ -95,24 +90,25 @@ class Replay:
         return [difference.got, difference.expected]
 
     def sentence(self) -> str:
-        """The first difference in a line: "step 9: your trace expands (3,2); BFS expands
-        (2,3)", or that they match all through; matched against a recursive DFS's pattern,
-        it says so, and what the search beside the trace is."""
-        difference = self.verdict.difference
+        """The first difference in a line, numbered by the trace's own steps as the check
+        numbers them: "step 9: your trace expands (3,2); BFS expands (2,3)", or that they
+        match all through; where the panes number that step otherwise (the search's pops the
+        trace leaves out are put back), what step it is there."""
+        verdict = self.own or self.verdict
+        difference = verdict.difference
         name = self.labels[1]
         if difference is None:
-            text = f"your trace matches {self.verdict.choices} for all {self.verdict.steps} steps"
-        elif difference.kind == "expand" and difference.got and difference.expected:
+            return f"your trace matches {verdict.choices} for all {verdict.steps} steps"
+        if difference.kind == "expand" and difference.got and difference.expected:
             text = (f"step {difference.step}: your trace expands {show(difference.got)}; "
                     f"{name} expands {show(difference.expected)}")
         else:
             text = difference.message
-        if not self.recursive:
-            return text
-        matched = "" if difference is None else f"matched against {self.verdict.label}: "
-        return (f"{text} · {matched}beside it, the stack DFS that expands as a recursive one "
-                f"does (visit on expand, order {','.join(self.semantics.order)}: your order "
-                f"reversed)")
+        here = self.step
+        if here is not None and here != difference.step:
+            text += (f" (the panes' step {here}: {name}'s discarded pops, which your trace "
+                     "leaves out, are put back)")
+        return text
 
 
 def _where(grid: Grid) -> tuple[bytes, Cell | None, Cell | None]:
@@ -125,28 +121,17 @@ def replay_of(trace: Trace, grid: Grid, algorithm: str | None, semantics: Semant
     it), or with no ``algorithm`` beside the diagnosis's best candidate.  The search's
     discarded pops that the trace left out are put back where the search discards them
     (:func:`with_discards`), so that both panes number their steps alike."""
-    inferred, label = algorithm is None, ""
+    inferred = algorithm is None
     if algorithm is None:
         from tui_search.engine.traces.diagnose import diagnose
 
         best = diagnose(trace, grid, max_steps).best[0]
-        algorithm, semantics, label = best.algorithm, best.semantics, best.label
-    aligned = with_discards(trace, _check(trace, grid, algorithm, semantics, label,
-                                          max_steps).left_out)
-    verdict = _check(aligned, grid, algorithm, semantics, label, max_steps)
-    return Replay(aligned, algorithm, semantics, verdict, _where(grid), inferred)
-
-
-def _check(trace: Trace, grid: Grid, algorithm: str, semantics: Semantics, label: str,
-           max_steps: int) -> Verdict:
-    """:func:`~tui_search.engine.traces.check.check_trace`; for a recursive DFS (``label``
-    names it) the trace mirrored, as the diagnosis matched it, the verdict named so."""
-    if not label:
-        return check_trace(trace, grid, algorithm, semantics, max_steps)
-    from tui_search.engine.traces.diagnose import mirrored
-
-    return replace(check_trace(mirrored(trace), grid, algorithm, semantics, max_steps),
-                   label=label)
+        algorithm, semantics = best.algorithm, best.semantics
+    own = check_trace(trace, grid, algorithm, semantics, max_steps)
+    aligned = with_discards(trace, own.left_out)
+    verdict = own if aligned is trace else check_trace(aligned, grid, algorithm, semantics,
+                                                       max_steps)
+    return Replay(aligned, algorithm, semantics, verdict, _where(grid), inferred, own)
 
 
 def with_discards(trace: Trace, left_out: tuple[tuple[int, Cell], ...]) -> Trace:
@@ -155,15 +140,15 @@ def with_discards(trace: Trace, left_out: tuple[tuple[int, Cell], ...]) -> Trace
     before (after the last step: its line)."""
     if not left_out:
         return trace
-    steps = trace.steps.empty()
+    steps: list[TraceStep] = []
     pending = list(left_out)[::-1]
     for i, step in enumerate((*trace.steps, None)):
         while pending and pending[-1][0] == i:
             line = step.line if step is not None else trace.steps[-1].line
-            steps.add(line, pending.pop()[1], (), discarded=True)
+            steps.append(TraceStep(line, pending.pop()[1], (), True, step is None or step.listed))
         if step is not None:
-            steps.add(step.line, step.node, step.successors, step.discarded)
-    return replace(trace, steps=steps)
+            steps.append(step)
+    return replace(trace, steps=tuple(steps))
 
 
-__all__ = ["RECURSIVE_LABEL", "TRACE_LABEL", "Replay", "replay_of", "with_discards"]
+__all__ = ["TRACE_LABEL", "Replay", "replay_of", "with_discards"]

@@ -23,10 +23,12 @@ from tui_search.engine.search.choices import (
     CORNER_RULES,
     EXPLAIN,
     GOAL_TESTS,
+    RECURSIVE_FORMS,
+    TIE_RULES,
     VISIT_RULES,
     Semantics,
 )
-from tui_search.engine.search.heuristics import HEURISTICS, INADMISSIBLE, admissible
+from tui_search.engine.search.heuristics import CHEAPER_BY, HEURISTICS, INADMISSIBLE, admissible
 from tui_search.engine.search.registry import ALGORITHMS, Algorithm
 from tui_search.tui.dialogs.settings_choice import SettingsChoice
 from tui_search.tui.widgets.pick_button import PickButton
@@ -39,8 +41,16 @@ VALUE_WORDS: dict[str, str] = {
     "never": "if both sides are free",
     "generate": "when pushed",
     "expand": "when taken off",
+    "expand-again": "taken off, not checked",
     **{name: name for name in HEURISTICS},
+    "stack": "a stack",
+    "neighbours": "a line lists neighbours",
+    "calls": "a line lists calls",
+    "fifo": "old", "lifo": "new", "node": "cell", "low-h": "low h",
+    "high-h": "high h", "low-g": "low g", "high-g": "high g",
 }
+#: What recursion's radio buttons stand for: a stack (no recursion), or a trace's form.
+RECURSION = ("stack", *RECURSIVE_FORMS)
 
 
 class SettingsScreen(ModalScreen["SettingsChoice | None"]):
@@ -69,14 +79,16 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
         & .choice { text-style: bold; margin-top: 1; }
         & .explain, & .hint { color: $text-muted; width: 100%; }
         &.-short .choice, &.-tiny .choice { margin-top: 0; }
+        &.-tiny .minor, &.-tiny .extra, &.-short .extra { display: none; }
         &.-tiny .explain { display: none; }
         &.-tiny .explain.-note, &.-tiny .explain.problem { display: block; }
         & .problem { color: $text-error; width: 100%; }
         & RadioSet { layout: horizontal; height: 1; width: 100%; }
         & RadioSet > RadioButton { width: auto; margin-right: 3; }
         & #heuristic > RadioButton { margin-right: 1; }  /* five in a row */
-        & #compare-picks { height: 1; width: 100%; margin-top: 0; }
-        & #compare-picks > Checkbox { width: auto; margin-right: 2; }
+        & #ties > RadioButton { margin-right: 0; }  /* seven */
+        & #compare-picks, .ticks { height: 1; width: 100%; margin-top: 0; }
+        & #compare-picks > Checkbox, .ticks > Checkbox { width: auto; margin-right: 2; }
         & Input { width: 100%; background: $boost; }
         & #settings-buttons { dock: bottom; height: auto; background: $surface; }
         & #settings-buttons > Horizontal { height: 1; margin-top: 1; }
@@ -115,12 +127,26 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
             yield Label("Goal test", classes="choice")
             yield Label(EXPLAIN["goal_test"], classes="explain")
             yield self._radios("goal_test", GOAL_TESTS, sem.goal_test_for(self.algorithm))
-            yield Label("Graph or tree search", classes="choice")
-            yield TickBox("tree search", sem.tree_search, id="tree_search", compact=True)
-            yield Label(EXPLAIN["tree_search"], classes="explain")
-            yield Label("Heuristic", classes="choice")
+            yield Label("Graph or tree search, stack or recursion", classes="choice minor")
+            with Horizontal(classes="ticks"):
+                yield TickBox("tree search", sem.tree_search, id="tree_search", compact=True)
+                yield TickBox("no path check", not sem.path_check, id="no_path_check",
+                               compact=True)
+                yield TickBox("mark the start", sem.mark_start, id="mark_start",
+                               compact=True)
+            yield self._radios("recursive", RECURSION, sem.recursive or "stack")
+            yield Label(f"{EXPLAIN['tree_search']}; {EXPLAIN['recursive']}",
+                        id="recursive-explain", classes="explain extra")
+            yield Label("Heuristic; a priority queue's ties, re-opening and costs",
+                        classes="choice")
             yield Label("", id="heuristic-explain", classes="explain")
             yield self._radios("heuristic", tuple(HEURISTICS), sem.heuristic)
+            yield self._radios("ties", TIE_RULES, sem.ties)
+            with Horizontal(classes="ticks"):
+                yield TickBox("re-open a cell reached cheaper", sem.reopen, id="reopen",
+                               compact=True)
+                yield TickBox("exact costs", sem.cost_tolerance == 0, id="exact_costs",
+                               compact=True)
             yield Label("Compare (c)", classes="choice")
             picked = {part.strip().partition(":")[0] for part in self.comparison.split(",")}
             with Horizontal(id="compare-picks"):
@@ -148,6 +174,7 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
     def on_mount(self) -> None:
         self._sync_visit()
         self._sync_heuristic()
+        self._sync_published()
 
     # -- reading the controls ---------------------------------------------------------------
     def _choice(self, set_id: str) -> str:
@@ -189,11 +216,23 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
         error.update("")
         tree = self.query_one("#tree_search", Checkbox).value
         algo = self.algorithm
-        visit = ("generate" if tree or not self._visit_applies() else self._choice("visit"))
+        recursive = self._choice("recursive")
+        recursive = "" if recursive == "stack" or not self._recursion_applies() else recursive
+        visit = ("generate" if tree or recursive or not self._visit_applies()
+                 else self._choice("visit"))
         goal_test = self._choice("goal-test")
+        mark = self.query_one("#mark_start", Checkbox).value or bool(
+            tree or recursive or visit != "generate")
+        exact = self.query_one("#exact_costs", Checkbox).value
         return Semantics(order=order, corners=self._choice("corners"), visit=visit,
                          goal_test=None if goal_test == algo.goal_test else goal_test,
-                         tree_search=tree, heuristic=self._choice("heuristic"))
+                         tree_search=tree, heuristic=self._choice("heuristic"),
+                         ties=self._choice("ties"), cost_tolerance=0.0 if exact else CHEAPER_BY,
+                         reopen=self.query_one("#reopen", Checkbox).value,
+                         recursive=recursive,
+                         path_check=not (tree and self.query_one("#no_path_check",
+                                                                 Checkbox).value),
+                         mark_start=mark)
 
     def _sync_visit(self) -> None:
         """The visit rule does not apply to tree search nor to iterative deepening: say so
@@ -207,12 +246,33 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
             why = f"does not apply to {names}: it re-opens cells reached with a lower g"
         elif tree:
             why = "does not apply to tree search: it has no visited set"
+        elif self._choice("recursive") != "stack" and self._recursion_applies():
+            why = "does not apply to a recursion: it visits a cell when it enters it"
         else:
             why = ""
         radios.disabled = bool(why)
         explain = self.query_one("#visit-explain", Label)
         explain.update(why or EXPLAIN["visit"])
         explain.set_class(bool(why), "-note")
+
+    def _recursion_applies(self) -> bool:
+        """Recursion applies to DFS and iterative deepening (in compare mode: to one)."""
+        return any(a.key in ("dfs", "iddfs") for a in self.algorithms)
+
+    def _sync_published(self) -> None:
+        """The choices of published code: grey out those that apply to none of the searches
+        (a priority queue's; recursion; the path check without tree search; the start's
+        mark where nothing is marked on a push), and say which."""
+        tree = self.query_one("#tree_search", Checkbox).value
+        recursive = self._choice("recursive") != "stack" and self._recursion_applies()
+        queue = any(a.weighted for a in self.algorithms)
+        visit = self._choice("visit") if self._visit_applies() else "generate"
+        self.query_one("#no_path_check", Checkbox).disabled = not tree
+        self.query_one("#mark_start", Checkbox).disabled = bool(
+            tree or recursive or (visit != "generate" and not queue))
+        self.query_one("#recursive", RadioSet).disabled = not self._recursion_applies()
+        for name in ("#ties", "#reopen", "#exact_costs"):
+            self.query_one(name).disabled = not queue
 
     def _visit_applies(self) -> bool:
         """The visit rule applies to BFS and DFS (in compare mode: to one of the searches)."""
@@ -222,9 +282,11 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
         """The heuristic applies to greedy and A* only; an inadmissible one is named."""
         radios = self.query_one("#heuristic", RadioSet)
         radios.disabled = not any(a.informed for a in self.algorithms)
-        if radios.disabled:
-            names = " or ".join(a.short for a in self.algorithms)
-            text = f"does not apply to {names}: it uses no estimate"
+        names = " or ".join(a.short for a in self.algorithms)
+        if not any(a.weighted for a in self.algorithms):
+            text = f"does not apply to {names}: no estimate, no priority queue"
+        elif radios.disabled:
+            text = f"the heuristic does not apply to {names}: it uses no estimate"
         else:
             name = self._choice("heuristic")
             order = self.query_one("#order", Input).value
@@ -240,9 +302,12 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
     # -- events ------------------------------------------------------------------------------
     def on_radio_set_changed(self, event: RadioSet.Changed) -> None:
         self._sync_heuristic()
+        self._sync_visit()
+        self._sync_published()
 
     def on_checkbox_changed(self, event: Checkbox.Changed) -> None:
         self._sync_visit()
+        self._sync_published()
         self.picked()  # shows or clears the problem as boxes are ticked
 
     def on_input_changed(self, event: Input.Changed) -> None:
@@ -269,11 +334,16 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
         self.query_one("#order", Input).value = ",".join(sem.order)
         for name, value in (("corners", sem.corners), ("visit", sem.visit),
                             ("goal_test", sem.goal_test_for(self.algorithm)),
-                            ("heuristic", sem.heuristic)):
+                            ("heuristic", sem.heuristic), ("ties", sem.ties),
+                            ("recursive", sem.recursive or "stack")):
             self.query_one(f"#{name}-{value}", RadioButton).value = True
-        self.query_one("#tree_search", Checkbox).value = sem.tree_search
+        for name, on in (("tree_search", sem.tree_search), ("no_path_check", not sem.path_check),
+                         ("mark_start", sem.mark_start), ("reopen", sem.reopen),
+                         ("exact_costs", sem.cost_tolerance == 0)):
+            self.query_one(f"#{name}", Checkbox).value = on
         self._sync_visit()
         self._sync_heuristic()
+        self._sync_published()
 
     def action_cancel(self) -> None:
         self.dismiss(None)

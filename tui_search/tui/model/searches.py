@@ -23,11 +23,18 @@ def normal_spec(spec: str) -> str:
 
 def searches_of(spec: str, semantics: Semantics) -> tuple[list[Contender], str]:
     """The searches of ``spec`` under ``semantics``, and a note when a setting does not
-    apply to one of them (the visit rule: that one visits on generate)."""
+    apply to one of them (that one takes the default: the visit rule, a priority queue's
+    choices, recursion)."""
     contenders = parse_compare(spec, semantics, fit=True, fewest=1)
     fitted = [c.label for c in contenders if c.semantics.visit != semantics.visit]
     note = (f"Visit on expand does not apply to {', '.join(fitted)}: visit on generate "
             "there" if fitted else "")
+    if not note:
+        others = [c.label for c in contenders
+                  if c.semantics.replace(heuristic=semantics.heuristic) != semantics]
+        if others:
+            note = (f"Some settings do not apply to {', '.join(others)}: their defaults "
+                    "there")
     return contenders, note
 
 

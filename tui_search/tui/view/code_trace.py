@@ -55,6 +55,7 @@ def skipped(run: Run, k: int | None = None) -> list[Skip]:
     last = nodes.move(nodes.goal) if nodes.goal in added else None  # the loop stopped there
     grid, corners = run.grid, run.semantics.corners
     reached_kind = "on_path" if run.semantics.tree_search else "reached"
+    closed_set = run.algo.weighted and not run.semantics.reopen and not run.semantics.tree_search
     x, y = nodes.cell(event)
     out = []
     for move in run.semantics.order:
@@ -69,6 +70,8 @@ def skipped(run: Run, k: int | None = None) -> list[Skip]:
         elif dx and dy and not corner_allowed(corners, grid.is_free((x + dx, y)),
                                              grid.is_free((x, y + dy))):
             kind = "corner"
+        elif closed_set and run.now.times_reached(cell)[1]:
+            kind = "closed"  # expanded already: a closed set never pushes it again
         else:
             kind = reached_kind
         out.append(Skip(kind, move, cell))
@@ -95,7 +98,7 @@ def lit_kinds(run: Run) -> frozenset[str]:
         return frozenset(kinds)
     nodes = run.nodes
     event = run.steps.expanded_event(k)
-    kinds.add("mark_node")
+    kinds |= {"mark_node", "close_node", "recurse"}
     if event == nodes.goal:
         kinds.add("goal_node")
         return frozenset(kinds)
@@ -119,6 +122,7 @@ def lit_kinds(run: Run) -> frozenset[str]:
 #: How the narration says why a successor was skipped, by the kind of line (one, several).
 _SKIP_WORDS = {
     "reached": ("is already visited", "are already visited"),
+    "closed": ("is closed (expanded already)", "are closed (expanded already)"),
     "on_path": ("is on the path to the node", "are on the path to the node"),
     "corner": ("is past a blocked corner", "are past a blocked corner"),
 }
@@ -164,7 +168,7 @@ def lit_lines(run: Run) -> frozenset[int]:
 
 #: The lit lines that say most about a step, the most specific first: the line the
 #: narration names (a discard, a skip) or that ends the search (the goal found, a cut-off).
-FOCUS_KINDS = ("discard", "corner", "reached", "on_path", "goal_node", "goal_succ",
+FOCUS_KINDS = ("discard", "corner", "closed", "reached", "on_path", "goal_node", "goal_succ",
                "goal_start", "cutoff", "fail")
 
 

@@ -3,7 +3,9 @@ the Python loops, from the loop's family and the rules in force.
 
 The family is the algorithm's frontier (a queue, a stack, a priority queue), or iterative
 deepening; the rules are tree search, graph search under the tutorial's rules with no corner
-rule (the hot paths), or graph search under any other choice.
+rule (the hot paths), or graph search under any other choice.  The choices of published code
+that neither core makes are recorded from the reference loop
+(:mod:`~tui_search.engine.search.loops.published`).
 """
 
 from __future__ import annotations
@@ -63,9 +65,16 @@ def rules(algorithm: Algorithm, semantics: Semantics) -> str:
 
 
 def loop_for(algorithm: Algorithm, semantics: Semantics) -> Loop:
-    """The fastest loop that implements ``algorithm`` under ``semantics``: the compiled
-    core's when it runs (:mod:`~tui_search.engine.search.loops.compiled`), else the table's
-    (:func:`python_loops`)."""
+    """The fastest loop that implements ``algorithm`` under ``semantics``: for the choices of
+    published code the fast loops do not make (ties, a cost tolerance, a closed set,
+    recursion, ...: :attr:`~tui_search.engine.search.choices.Semantics.plain` False) the loop
+    that records the reference (:mod:`~tui_search.engine.search.loops.published`); else the
+    compiled core's when it runs (:mod:`~tui_search.engine.search.loops.compiled`), else the
+    table's (:func:`python_loops`)."""
+    if not semantics.plain:  # a choice only the reference's loop records
+        from tui_search.engine.search.loops.published import published
+
+        return partial(published, algorithm=algorithm)
     compiled = compiled_loop(algorithm)
     if compiled is not None:
         return compiled

@@ -1,0 +1,43 @@
+"""The most copied A* in Python: ``heapq`` of ``(f, (x, y))`` tuples, so a tie of f goes to
+the smallest (x, y); a table of g; no closed set (a cell taken off again is expanded again,
+and adds nothing).  It stops when it takes the goal off.
+Matches: -a astar --heuristic manhattan --ties node."""
+
+import heapq
+import json
+import sys
+
+STEP = {"N": (0, -1), "E": (1, 0), "S": (0, 1), "W": (-1, 0)}
+
+
+def search(rows, moves="N,E,S,W"):
+    cells = {(x, y): c for y, row in enumerate(rows) for x, c in enumerate(row)}
+    start = next(p for p, c in cells.items() if c == "S")
+    goal = next(p for p, c in cells.items() if c == "G")
+
+    def h(p):
+        return abs(p[0] - goal[0]) + abs(p[1] - goal[1])
+
+    open_heap = [(h(start), start)]
+    g = {start: 0}
+    lines = []
+    while open_heap:
+        f, current = heapq.heappop(open_heap)
+        if current == goal:
+            break
+        added = []
+        for m in moves.split(","):
+            nxt = (current[0] + STEP[m][0], current[1] + STEP[m][1])
+            if cells.get(nxt, "#") == "#":
+                continue
+            tentative = g[current] + 1
+            if tentative < g.get(nxt, float("inf")):
+                g[nxt] = tentative
+                heapq.heappush(open_heap, (tentative + h(nxt), nxt))
+                added.append(nxt)
+        lines.append(json.dumps({"node": current, "successors": added}))
+    return "\n".join(lines) + "\n"
+
+
+if __name__ == "__main__":
+    sys.stdout.write(search(open(sys.argv[1]).read().split()))

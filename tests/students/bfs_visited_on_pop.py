@@ -1,0 +1,35 @@
+"""The commonest bug: a BFS that marks a cell visited when it takes it off the queue, and
+never checks the node it takes off, so a cell on the queue twice is expanded twice.
+Matches: -a bfs --visit expand-again --goal-test expand."""
+
+import json
+import sys
+from collections import deque
+
+STEP = {"N": (0, -1), "E": (1, 0), "S": (0, 1), "W": (-1, 0)}
+
+
+def search(rows, moves="N,E,S,W"):
+    cells = {(x, y): c for y, row in enumerate(rows) for x, c in enumerate(row)}
+    start = next(p for p, c in cells.items() if c == "S")
+    goal = next(p for p, c in cells.items() if c == "G")
+    queue = deque([start])
+    visited = set()
+    lines = []
+    while queue:
+        node = queue.popleft()
+        visited.add(node)
+        if node == goal:
+            break
+        added = []
+        for m in moves.split(","):
+            nxt = (node[0] + STEP[m][0], node[1] + STEP[m][1])
+            if cells.get(nxt, "#") != "#" and nxt not in visited:
+                queue.append(nxt)
+                added.append(nxt)
+        lines.append(json.dumps({"node": node, "successors": added}))
+    return "\n".join(lines) + "\n"
+
+
+if __name__ == "__main__":
+    sys.stdout.write(search(open(sys.argv[1]).read().split()))

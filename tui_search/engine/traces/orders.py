@@ -1,0 +1,145 @@
+"""The move orders a trace allows: inferred from the order in which its steps added their
+successors, or, for a trace of expansions only (no successors to infer them from), the orders
+a search is tried with -- every order of the four straight moves, and the common orders of all
+eight -- and what the trace leaves open about them.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from itertools import permutations
+
+from tui_search.engine.maps.grid import DEFAULT_ORDER, DELTAS, Cell, Grid
+from tui_search.engine.traces.read import Trace
+
+#: The most move orders tried when the trace leaves their order open.
+MAX_ORDERS = 24
+
+#: The orders of all eight moves an expansions-only trace is tried with: the app's, and
+#: clockwise and counterclockwise from N and from E.
+EIGHT_MOVE_ORDERS: tuple[tuple[str, ...], ...] = (
+    DEFAULT_ORDER,
+    ("N", "NE", "E", "SE", "S", "SW", "W", "NW"),
+    ("N", "E", "S", "W", "NE", "SE", "SW", "NW"),
+    ("E", "SE", "S", "SW", "W", "NW", "N", "NE"),
+    ("N", "S", "E", "W", "NE", "NW", "SE", "SW"),
+)
+
+
+def expansion_orders(trace: Trace) -> list[tuple[str, ...]]:
+    """The orders an expansions-only trace is tried with: every order of N, E, S, W (the
+    4-connected grid courses use; CS188's N, S, E, W among them), then the eight-move ones --
+    unless every cell it expands but the first is a straight move from one it expanded before
+    (then a search with diagonal moves would have expanded one a diagonal away, all but
+    surely: the four-move orders alone)."""
+    fours = [tuple(p) for p in permutations(("N", "S", "E", "W"))]
+    seen: set[Cell] = set()
+    for step in trace.steps:
+        x, y = step.node
+        if seen and not seen & {(x + 1, y), (x - 1, y), (x, y + 1), (x, y - 1), (x, y)}:
+            return fours + list(EIGHT_MOVE_ORDERS)
+        seen.add(step.node)
+    return fours
+
+
+def _move(node: Cell, cell: Cell) -> str | None:
+    delta = (cell[0] - node[0], cell[1] - node[1])
+    return next((d for d, v in DELTAS.items() if v == delta), None)
+
+
+def inferred_orders(trace: Trace, goal: Cell | None = None, grid: Grid | None = None
+                    ) -> list[tuple[str, ...]]:
+    """The move orders consistent with the order in which each step added its successors:
+    the moves the trace used, ordered every way the trace allows (at most
+    :data:`MAX_ORDERS`; the order first seen first).  When the trace contradicts itself (E
+    before N in one step, N before E in another), the order first seen alone.
+
+    A step that stops at the ``goal`` (its last successor) says nothing of the moves after
+    the goal's, so the goal's move is put before every move that step did not add, wherever
+    no other step says otherwise: the search then stops there too.  A trace that adds nothing
+    at all: the moves that lead nowhere from any cell it expands (on ``grid``)."""
+    used: list[str] = []
+    after: dict[str, set[str]] = {}
+    goal_steps: list[list[str]] = []
+    for step in trace.steps:
+        moves = [m for m in (_move(step.node, c) for c in step.successors) if m is not None]
+        for m in moves:
+            if m not in used:
+                used.append(m)
+                after[m] = set()
+        for i, a in enumerate(moves):
+            after[a].update(b for b in moves[i + 1:] if b != a)
+        if moves and step.successors[-1] == goal:
+            goal_steps.append(moves)
+    for moves in goal_steps:
+        for m in used:
+            if m not in moves and not _reaches(after, m, moves[-1]):
+                after[moves[-1]].add(m)
+    if not used:
+        return [_never_moves(trace, grid)]
+    orders = list(_linear(used, after, ()))
+    return orders or [tuple(used)]
+
+
+def _never_moves(trace: Trace, grid: Grid | None) -> tuple[str, ...]:
+    """The moves blocked (an obstacle, off the map) from every cell ``trace`` expands: what a
+    search that added nothing could have tried (N,W,S,E when none is, or no map is given)."""
+    if grid is None:
+        return ("N", "W", "S", "E")
+    nodes = {step.node for step in trace.steps}
+    moves = tuple(d for d, (dx, dy) in DELTAS.items()
+                  if not any(grid.is_free((x + dx, y + dy)) for x, y in nodes))
+    return moves or ("N", "W", "S", "E")
+
+
+def _reaches(after: dict[str, set[str]], a: str, b: str) -> bool:
+    """Must ``a`` come before ``b`` (a chain of ``after`` from one to the other)?"""
+    todo, seen = [a], {a}
+    while todo:
+        m = todo.pop()
+        if m == b:
+            return True
+        todo += [n for n in after[m] if n not in seen]
+        seen.update(after[m])
+    return False
+
+
+def _linear(used: list[str], after: dict[str, set[str]],
+            done: tuple[str, ...]) -> Iterator[tuple[str, ...]]:
+    """Every order of ``used`` that keeps each ``a`` before everything in ``after[a]`` (the
+    first :data:`MAX_ORDERS` of them)."""
+    if len(done) == len(used):
+        yield done
+        return
+    count = 0
+    for m in used:
+        if m in done or any(m in after[o] for o in used if o not in done and o != m):
+            continue
+        for order in _linear(used, after, (*done, m)):
+            yield order
+            count += 1
+            if count >= MAX_ORDERS:
+                return
+
+
+def order_notes(orders: list[tuple[str, ...]]) -> list[str]:
+    """What the inferred order leaves open: moves the trace never made, and other orders the
+    trace allows as well."""
+    used = set(orders[0])
+    straight = ("N", "E", "S", "W")
+    moves = straight if used <= set(straight) else tuple(DELTAS)
+    notes = []
+    never = [m for m in moves if m not in used]
+    if never:
+        notes.append(f"the trace never moves {', '.join(never)}: where in the order, or "
+                     "whether at all, cannot be told")
+    if len(orders) > 1:
+        more = " or more" if len(orders) >= MAX_ORDERS else ""
+        others = " or ".join(",".join(o) for o in orders[1:4])
+        notes.append(f"{len(orders)}{more} orders of its moves fit the order it added them "
+                     f"in: {','.join(orders[0])} or {others}"
+                     + (" or ..." if len(orders) > 4 else ""))
+    return notes
+
+
+__all__ = ["MAX_ORDERS", "expansion_orders", "inferred_orders", "order_notes"]

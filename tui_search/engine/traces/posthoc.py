@@ -1,0 +1,205 @@
+"""Posthoc's search trace (version 1.4.0: ``.trace.yaml`` or ``.trace.json``), read as a trace
+and written from a search, so a run opens in that visualiser.
+
+A Posthoc trace is one document: ``version``, optional views, and ``events``, each with a
+``type``, an ``id`` (a node), its parent's ``pId`` and here its cell ``x``, ``y``.  Read: each
+``expanding`` (or ``expand``) event is a step taking off its cell, the ``generating`` (or
+``generate``) events after it are the successors it added, in order; ``source`` and
+``destination`` are the start and the goal (checked against the map's when they give a
+cell); ``closing``, ``end`` and any other type are read and ignored.  An event with an ``id``
+and no ``x``, ``y`` takes the cell an earlier event gave that ``id``.  A trace with no
+``generating`` event after an expansion is of expansions only.  YAML is read by PyYAML's safe
+loader, and a document with anchors or aliases is refused (a few lines of them can stand for
+billions of events).  Written: the JSON form (YAML is a superset of JSON), a rectangle a cell
+as its view, every node's id its cell's index ``y * width + x``.
+"""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Iterable
+from dataclasses import replace
+from typing import Any
+
+from tui_search.engine.maps.grid import Cell, Grid
+from tui_search.engine.maps.read import MapError
+from tui_search.engine.run.recording import Step
+from tui_search.engine.traces.read import Trace, load_trace, read_trace
+
+#: The version Posthoc's visualiser needs declared.
+VERSION = "1.4.0"
+#: The file names read as Posthoc's, by their ending.
+SUFFIXES = (".trace.json", ".trace.yaml", ".trace.yml")
+
+_EXPAND, _GENERATE = ("expanding", "expand"), ("generating", "generate")
+
+
+def is_posthoc(name: str) -> bool:
+    """Is ``name`` a Posthoc trace's file name (``.trace.json``, ``.trace.yaml``)?"""
+    return name.lower().endswith(SUFFIXES)
+
+
+def _document(text: str, name: str) -> dict[str, Any]:
+    """The document: JSON, or YAML without anchors or aliases."""
+    if name.lower().endswith(".json"):
+        try:
+            value = json.loads(text)
+        except ValueError as exc:
+            raise MapError(name, f"not JSON: {getattr(exc, 'msg', exc)}",
+                           getattr(exc, "lineno", None), getattr(exc, "colno", None)) from None
+    else:
+        value = _yaml(text, name)
+    if not isinstance(value, dict) or not isinstance(value.get("events"), list):
+        raise MapError(name, 'a Posthoc trace is a document with "events": a list of events')
+    version = value.get("version")
+    if version is not None and str(version) != VERSION:
+        raise MapError(name, f"Posthoc trace version {version}: tui-search reads {VERSION}")
+    return value
+
+
+def _yaml(text: str, name: str) -> Any:
+    import yaml  # only for a .trace.yaml
+
+    loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+    try:
+        for token in yaml.scan(text, Loader=loader):
+            if isinstance(token, (yaml.AnchorToken, yaml.AliasToken)):
+                mark = token.start_mark
+                raise MapError(name, "YAML anchors and aliases are not read (a few of them "
+                               "can stand for billions of events)", mark.line + 1,
+                               mark.column + 1)
+        return yaml.load(text, Loader=loader)
+    except yaml.YAMLError as exc:
+        mark = getattr(exc, "problem_mark", None)
+        problem = getattr(exc, "problem", None) or "not YAML"
+        raise MapError(name, f"not YAML: {problem}", mark.line + 1 if mark else None,
+                       mark.column + 1 if mark else None) from None
+
+
+def _cell(event: dict[str, Any], cells: dict[object, Cell], i: int, name: str
+          ) -> Cell | None:
+    """An event's cell: its ``x``, ``y``, else the cell its ``id`` had (None: neither)."""
+    x, y = event.get("x"), event.get("y")
+    if x is None and y is None:
+        return cells.get(_key(event.get("id")))
+    if not (isinstance(x, int) and isinstance(y, int)) or isinstance(x, bool) or isinstance(
+            y, bool):
+        raise MapError(name, f"event {i}: x and y should be whole numbers, not "
+                       f"{json.dumps([x, y], default=str)[:40]}")
+    cell = (x, y)
+    if "id" in event:
+        cells[_key(event["id"])] = cell
+    return cell
+
+
+def _key(value: object) -> object:
+    """An id as a dictionary key (a list or a mapping as its JSON)."""
+    return json.dumps(value, sort_keys=True) if isinstance(value, (list, dict)) else value
+
+
+def load_any_trace(path: str, grid: Grid) -> Trace:
+    """A trace file of either format, by its name: Posthoc's (:data:`SUFFIXES`), else the
+    app's own (:func:`~tui_search.engine.traces.read.load_trace`)."""
+    if not is_posthoc(path):
+        return load_trace(path, grid)
+    try:
+        with open(path, encoding="utf-8") as fh:
+            text = fh.read()
+    except OSError as exc:
+        raise MapError(path, f"cannot read the trace: {exc.strerror}") from None
+    except UnicodeDecodeError:
+        raise MapError(path, "the trace is not UTF-8 text") from None
+    return read_posthoc(text, grid, path)
+
+
+def read_posthoc(text: str, grid: Grid, name: str) -> Trace:
+    """The Posthoc trace in ``text`` (file ``name``) as a trace of ``grid``: its steps read
+    through :func:`~tui_search.engine.traces.read.read_trace` (the same checks), each step's
+    line the number of its ``expanding`` event (from 1)."""
+    events = _document(text, name)["events"]
+    steps: list[dict[str, Any]] = []
+    numbers: list[int] = []  # each step's event number
+    cells: dict[object, Cell] = {}
+    first: dict[str, object] = {}
+    listed = False
+    for i, event in enumerate(events, 1):
+        if not isinstance(event, dict):
+            raise MapError(name, f"event {i} should be a mapping (type, id, x, y, ...)")
+        kind = event.get("type")
+        cell = _cell(event, cells, i, name)
+        if kind in ("source", "destination") and cell is not None:
+            first["start" if kind == "source" else "goal"] = list(cell)
+        elif kind in _EXPAND:
+            if cell is None:
+                raise MapError(name, f"event {i}: an expansion needs x and y (or an id an "
+                               "earlier event gave them)")
+            steps.append({"node": list(cell), "successors": []})
+            numbers.append(i)
+        elif kind in _GENERATE and steps:
+            if cell is None:
+                raise MapError(name, f"event {i}: a generated node needs x and y")
+            steps[-1]["successors"].append(list(cell))
+            listed = True
+    if not steps:
+        raise MapError(name, "the trace has no expanding events")
+    lines = [json.dumps(first)] if first else []
+    lines += [json.dumps(s if listed else {"node": s["node"]}) for s in steps]
+    try:
+        trace = read_trace("\n".join(lines) + "\n", grid, name)
+    except MapError as exc:  # its line: ours; said as Posthoc's event
+        at = exc.line
+        if at is not None and first:
+            at -= 1
+        where = f"event {numbers[at - 1]}: " if at is not None and 0 < at <= len(numbers) else ""
+        raise MapError(name, where + exc.message) from None
+    offset = 1 if first else 0
+    return replace(trace, steps=tuple(step._replace(line=numbers[step.line - 1 - offset])
+                                      for step in trace.steps))
+
+
+class PosthocWriter:
+    """A search's steps as a Posthoc trace: ``add`` each step, ``text`` the document."""
+
+    def __init__(self, grid: Grid) -> None:
+        self.grid = grid
+        self.events: list[dict[str, object]] = []
+        start, goal = grid.start, grid.goal
+        assert start is not None and goal is not None  # a search ran on it
+        self.parent: dict[Cell, int | None] = {start: None}
+        self.events.append(self._event("source", start))
+        self.events.append(self._event("destination", goal))
+
+    def _id(self, cell: Cell) -> int:
+        return cell[1] * self.grid.width + cell[0]
+
+    def _event(self, kind: str, cell: Cell, parent: Cell | None = None) -> dict[str, object]:
+        return {"type": kind, "id": self._id(cell),
+                "pId": None if parent is None else self._id(parent), "x": cell[0], "y": cell[1]}
+
+    def add(self, step: Step) -> None:
+        node = step.node
+        parent_id = self.parent.get(node)
+        expanding = self._event("expanding", node)
+        expanding["pId"] = parent_id
+        self.events.append(expanding)
+        for _, cell in step.successors:
+            self.parent[cell] = self._id(node)
+            self.events.append(self._event("generating", cell, node))
+        self.events.append({**expanding, "type": "closing"})
+
+    def text(self, path: Iterable[Cell] | None = None) -> str:
+        """The document (its last event ``end`` at the goal when a path was found)."""
+        events = list(self.events)
+        cells = list(path or ())
+        if cells:
+            parent = cells[-2] if len(cells) > 1 else None
+            events.append(self._event("end", cells[-1], parent))
+        view = [{"$": "rect", "width": 1, "height": 1, "x": "${{ $.x }}", "y": "${{ $.y }}",
+                 "fill": "${{ theme.foreground }}"}]
+        head = json.dumps({"version": VERSION, "views": {"main": view}})[:-1]
+        lines = ",\n".join(f"  {json.dumps(event)}" for event in events)
+        return f'{head}, "events": [\n{lines}\n]}}\n'  # an event a line
+
+
+__all__ = ["SUFFIXES", "VERSION", "PosthocWriter", "is_posthoc", "load_any_trace",
+           "read_posthoc"]
