@@ -10,6 +10,7 @@ verdict is checked by :mod:`~tui_search.tui.screens.exercise_check` once an exer
 
 from __future__ import annotations
 
+import time
 from functools import cached_property
 from typing import TYPE_CHECKING, cast
 
@@ -42,6 +43,8 @@ from tui_search.tui.widgets.run_pane import RunPane, own_rows
 from tui_search.tui.widgets.stats import Stats
 
 if TYPE_CHECKING:
+    from textual.notifications import SeverityLevel
+
     from tui_search.tui.screens.file_commands import FileCommands
     from tui_search.tui.widgets.challenge import ChallengePanel
     from tui_search.tui.widgets.compare_table import CompareTable
@@ -73,6 +76,7 @@ class PanesScreen(Screen[None]):
         self._terrain = session.grid.costs is not None  # what the legend was drawn for
         self._fitted_lines = (-1, -1)  # the status lines' heights last fitted to
         self._code_shown = False  # some pane showed the Code panel when last fitted
+        self._last_note: tuple[str, float] | None = None  # the last note's kind, its end
 
     @cached_property
     def files(self) -> FileCommands:
@@ -346,8 +350,23 @@ class PanesScreen(Screen[None]):
                                   for run, (k, was_at_end) in zip(self.session.runs, before)])
 
     def warn(self, text: str | None, timeout: float = 3) -> None:
-        if text:
-            self.notify(text, severity="warning", timeout=timeout)
+        """A warning; the same one again (a key pressed again) replaces it."""
+        self.note(text, text or "", severity="warning", timeout=timeout)
+
+    def note(self, text: str | None, kind: str, *, severity: SeverityLevel = "information",
+             timeout: float = 3) -> None:
+        """Notify ``text``: a note of the same ``kind`` still on screen (``b`` pressed four
+        times, ``l``, a refusal said again) is replaced, not stacked over the map.  Textual
+        removes notifications only all at once (:meth:`~textual.app.App.clear_notifications`):
+        they are cleared only while the last one shown is this kind's."""
+        if not text:
+            return
+        now = time.monotonic()
+        if self._last_note is not None and self._last_note[0] == kind \
+                and now < self._last_note[1]:
+            self.app.clear_notifications()
+        self._last_note = (kind, now + timeout)
+        self.notify(text, severity=severity, timeout=timeout)
 
     # -- the exercise ----------------------------------------------------------------------
     def _check_exercise(self) -> None:
