@@ -202,8 +202,10 @@ class PanesScreen(Screen[None]):
                               stats_rows=lambda w: own_rows(self.panes, w) or stats)
         box.styles.grid_size_columns = arrangement.columns
         box.styles.grid_size_rows = arrangement.rows
-        if arrangement.table and table is not None and not table.display:
-            table.show(self.session.labels, self.session.runs)  # not kept up while hidden
+        if arrangement.table and (table is None or not table.display):
+            # not kept up while hidden, nor filled before it first shows (a resize that makes
+            # room for it showed an empty box, its rows' room a gap, until the next step)
+            self.table.show(self.session.labels, self.session.runs)
         if arrangement.table or table is not None:
             self.table.display = arrangement.table
             self._show_part(self.table, arrangement.table)
