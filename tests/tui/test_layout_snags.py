@@ -4,12 +4,18 @@ Code panel's room, the panes' cells level, the toasts and the key bar."""
 
 from __future__ import annotations
 
+from pathlib import Path
+
 from tests.helpers import TUTORIAL
 from tests.textual_internals import composited, settle
 from tests.tui.test_app import sync, tutorial_app, wait_until
+from tui_search.cli.main import build_app
+from tui_search.cli.main import main as cli_main
+from tui_search.cli.parse import parse_options
 from tui_search.engine.maps.load import load_map
 from tui_search.tui.app import SearchApp
 from tui_search.tui.model.replay_jumps import LOCKSTEP_SHORT
+from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.key_bar import KeyBar
 
 
@@ -85,3 +91,88 @@ async def test_compare_at_the_end_then_a_resize_to_120_by_40_shows_the_table_fil
         assert [line.split()[0] for line in table.text_lines[1:3]] == ["BFS", "DFS"]
         await settle(pilot)
         await wait_until(pilot, lambda: screen_text(app) == expected)
+
+
+# -- the replay's room, and the panes' cells level --------------------------------------------
+def replay_app(tmp_path: Path) -> SearchApp:
+    """``--replay`` of the app's own BFS with the moves E,S,W,N (its ``--trace``), beside
+    the BFS of the default order: they part at step 2."""
+    trace = tmp_path / "student-bfs-ESWN.jsonl"
+    cli_main([str(TUTORIAL), "--headless", "--order", "E,S,W,N", "--trace", str(trace)])
+    assert trace.stat().st_size  # (its exit status says its search found no path)
+    return build_app(parse_options([str(TUTORIAL), "--replay", str(trace), "-a", "bfs"]))
+
+
+def blank_map_rows(view: GridView) -> int:
+    """The rows of ``view``'s box that draw no cells (the map at cells smaller than the box
+    it was sized for)."""
+    return view.scrollable_content_region.height - view.geometry.size[1]
+
+
+@sync
+async def test_the_replay_at_120_by_40_keeps_its_cells_and_its_rows(tmp_path: Path) -> None:
+    """At 120x40 the trace pane's lines wrap to 4 rows at the end: the maps keep their 4x2
+    cells (they dropped to 2x1), the panes' maps start on one row, no row of a map's box is
+    blank, before the end, at it and back from it."""
+    app = replay_app(tmp_path)
+    async with app.run_test(size=(120, 40)) as pilot:
+        views = app.main.views
+        for keys in ([], ["end"], ["p"], ["end"]):
+            await pilot.press(*keys)
+            await settle(pilot)
+            await wait_until(pilot, lambda: all(v.geometry.level == 2 for v in views)
+                             and not any(blank_map_rows(v) for v in views)
+                             and len({v.region.y for v in views}) == 1)
+            if keys == ["end"]:
+                assert max(p.stats.outer_size.height for p in app.main.panes) == 4
+            assert all(p.lists.display and not p.tree_panel.has_class("-folded")
+                       for p in app.main.panes)
+
+
+@sync
+async def test_the_replay_at_80_by_24_shows_both_frontiers(tmp_path: Path) -> None:
+    """At 80x24 the frontier panels show beside each other (a queue against what the trace
+    kept is the clue to a stack-versus-queue bug): the panes' own lines fold first, and the
+    line under the panes says each one's step and nodes expanded."""
+    app = replay_app(tmp_path)
+    async with app.run_test(size=(80, 24)) as pilot:
+        await pilot.press("n", "n", "n", "n")
+        panes = app.main.panes
+        await wait_until(pilot, lambda: all(p.frontier.region.height >= 5 for p in panes))
+        for pane in panes:
+            run = pane.frontier.run
+            assert run is not None and run.k == 4
+            shown = [pane.frontier.render_line(y).text
+                     for y in range(pane.frontier.scrollable_content_region.height)]
+            assert sum("(" in row for row in shown) == run.now.frontier_len()
+        assert "your trace step 4/22 expanded 4" in " ".join(app.main.stats.shown_lines())
+
+
+@sync
+async def test_side_by_side_maps_are_level_when_one_panes_lines_wrap_more() -> None:
+    """``--compare bfs,astar`` at 120x40 after 13 steps: A*'s lines wrap to a row more than
+    BFS's; the panes' own lines take as many rows each, so the maps' cell rows are level
+    (one sat a row lower)."""
+    app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, compare="bfs,astar")
+    async with app.run_test(size=(120, 40)) as pilot:
+        await pilot.press(*["n"] * 13)
+        panes = app.main.panes
+        await settle(pilot)
+        own = [len(p.stats.rows(p.stats.content_size.width)) for p in panes]
+        assert own[0] != own[1], own  # the case: one pane's lines wrap more
+        await wait_until(pilot, lambda: len({v.region.y for v in app.main.views}) == 1
+                         and len({p.stats.outer_size.height for p in panes}) == 1)
+
+
+@sync
+async def test_compare_resized_to_120_by_40_and_back_keeps_no_blank_map_rows() -> None:
+    """The window dragged 80x24 -> 120x40 -> 80x24 -> 120x40: at 120x40 the maps have their
+    4x2 cells each time (the second time they kept the 2x1 cells of 80x24 in a box sized
+    for 4x2: half its rows blank)."""
+    app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, compare="bfs,dfs")
+    async with app.run_test(size=(80, 24)) as pilot:
+        for size in ((120, 40), (80, 24), (120, 40)):
+            await pilot.resize_terminal(*size)
+            level = 2 if size == (120, 40) else 1
+            await wait_until(pilot, lambda level=level: all(
+                v.geometry.level == level and not blank_map_rows(v) for v in app.main.views))

@@ -17,7 +17,6 @@ from typing import TYPE_CHECKING, cast
 from textual import events
 from textual.app import ComposeResult
 from textual.await_remove import AwaitRemove
-from textual.containers import Grid as PaneBox
 from textual.markup import escape
 from textual.screen import Screen
 from textual.widget import AwaitMount, Widget
@@ -30,7 +29,7 @@ from tui_search.tui.model.file_rules import FileAccess
 from tui_search.tui.model.session import NEEDS_ENDPOINTS, Before, Session
 from tui_search.tui.screens.keys import KEY_IMPORTANCE
 from tui_search.tui.screens.playback_driver import PlaybackDriver
-from tui_search.tui.view.layout import PANE_STATS_HEIGHT, arrange, lesson_width
+from tui_search.tui.view.layout import GUTTER, PANE_STATS_HEIGHT, arrange, lesson_width
 from tui_search.tui.view.readout import describe_each
 from tui_search.tui.view.status_lines import screen_rows, screen_status
 from tui_search.tui.widgets.cell_readout import CellReadout
@@ -39,6 +38,7 @@ from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.key_bar import KeyBar
 from tui_search.tui.widgets.lazy_parts import Later, challenge_panel, compare_table, show_part
 from tui_search.tui.widgets.legend import Legend
+from tui_search.tui.widgets.pane_box import PaneBox
 from tui_search.tui.widgets.run_pane import RunPane, own_rows
 from tui_search.tui.widgets.stats import Stats
 
@@ -69,12 +69,13 @@ class PanesScreen(Screen[None]):
         self.session = session
         self.file_access = file_access
         self.panes = self._new_panes()
+        self._level_lines()
         self.playback = PlaybackDriver(self)  # the timer and the seeks' slices
         # what a mouse drag paints: True wall, False free, "brush" the terrain brush's cost
         self._stroke: bool | str | None = None
         self._bindings_key: tuple[object, ...] = ()
         self._terrain = session.grid.costs is not None  # what the legend was drawn for
-        self._fitted_lines = (-1, -1)  # the status lines' heights last fitted to
+        self._fitted_lines = (-1, -1, -1)  # the status lines' heights last fitted to
         self._code_shown = False  # some pane showed the Code panel when last fitted
         self._last_note: tuple[str, float] | None = None  # the last note's kind, its end
 
@@ -126,6 +127,13 @@ class PanesScreen(Screen[None]):
         return [RunPane(session.grid, label, NEEDS_ENDPOINTS)
                 for label in (session.labels if labels is None else labels)]
 
+    def _level_lines(self) -> None:
+        """Each pane's own status lines take as many rows as the tallest's: the maps under
+        them start on one row (a pane whose lines wrapped more had its map a row lower)."""
+        peers = [pane.stats for pane in self.panes]
+        for pane in self.panes:
+            pane.stats.peers = peers
+
     @property
     def views(self) -> list[GridView]:
         return [pane.view for pane in self.panes]
@@ -153,10 +161,17 @@ class PanesScreen(Screen[None]):
         were shown or mounted): fit the panes to the room that leaves."""
         self.call_after_refresh(self._refit)
 
-    def _lines_measured(self) -> tuple[int, int]:
+    def on_pane_box_resized(self, message: PaneBox.Resized) -> None:
+        """The lines around the panes took a row or gave one back (a second search's readout
+        line, the counts said under the panes): fit the panes to the room that leaves."""
+        self.call_after_refresh(self._refit)
+
+    def _lines_measured(self) -> tuple[int, int, int]:
         """What the layout reads of the status lines: the panes' own lines' height (0: not
-        laid out yet, reckoned) and the rows the lines under the panes wrapped to."""
-        return (max(pane.stats.outer_size.height for pane in self.panes), self.stats.wrapped)
+        laid out yet, reckoned), the rows the lines under the panes wrapped to, and the
+        panes' room they leave."""
+        return (max(pane.stats.outer_size.height for pane in self.panes), self.stats.wrapped,
+                self.pane_box.size.height)
 
     def _refit(self) -> None:
         """Fit the panes again if the status lines' heights are not those they were last
@@ -210,8 +225,11 @@ class PanesScreen(Screen[None]):
             self.table.display = arrangement.table
             self._show_part(self.table, arrangement.table)
         panes_lines = self.panes[0].stats.display
+        # the narrowest pane's width: the others' own lines take the rows they take there
+        level = (width - GUTTER * (arrangement.columns - 1)) // arrangement.columns
         for pane in self.panes:
-            pane.lay_out(arrangement, code=self.session.show_code, restyle=restyle)
+            pane.lay_out(arrangement, code=self.session.show_code, restyle=restyle,
+                         level_width=level if len(self.panes) > 1 else 0)
         shown = any(p.code_shown for p in self.panes)
         if self._code_shown and not shown and self.session.show_code:
             self.warn(NO_ROOM_FOR_CODE, timeout=6)  # never folded without a word
@@ -248,6 +266,7 @@ class PanesScreen(Screen[None]):
             kept, gone = self.panes[:len(labels)], self.panes[len(labels):]
             added = self._new_panes(labels[len(kept):])
             self.panes = kept + added
+            self._level_lines()
             removing = [pane.remove() for pane in gone]
             mounting = self.pane_box.mount_all(added) if added else None
             for pane in added:

@@ -3,8 +3,10 @@
 The panes share the space the status lines, the key bar, the legend, the readout and the
 challenge panel leave.  In that room the map comes first: it is shown whole whenever it fits
 at its smallest cells.  What else a pane shows gives way in this order when there is not room
-for all of it: the comparison table, the search trees, the frontier lists, the panes' own
-status lines (the line under them then says each search's step and nodes expanded).  A pane
+for all of it: the comparison table, the search trees, the panes' own status lines (the line
+under them then says each search's step and nodes expanded), the frontier lists (a queue
+beside a stack is what a replay or a comparison is there to show; what a pane's narration
+says of a step, the "+" entries of its frontier show too).  A pane
 much wider than tall keeps its lists beside the map, as a column; else under it.
 
 When the status lines under the panes wrap to more rows, the map stays where it was (placed in
@@ -148,11 +150,11 @@ def arrange(n: int, width: int, height: int, map_size: tuple[int, int], *,
                     pane = _steady(steady, pane, steady_h, pane_h, map_size, fold_trees,
                                    lists_min, beside_h - under_h)
                 shows = (pane.map_height or pane_h) >= min(map_size[1] + 2, MAP_MIN_LINES)
-                candidates.append(((pane.fits, shows, pane.pane_stats or not own, pane.lists,
+                candidates.append(((pane.fits, shows, pane.lists, pane.pane_stats or not own,
                                     pane.trees or fold_trees, columns == preferred, table),
                                    pane))
     # What gives way first: the table, then the grid's best proportions, then the trees,
-    # then the lists, then the panes' own status lines; the map never (where it cannot show
+    # then the panes' own status lines, then the lists; the map never (where it cannot show
     # whole, it keeps MAP_MIN_LINES before the rest keep theirs).
     return max(candidates, key=lambda ranked: ranked[0])[1]
 
@@ -208,22 +210,27 @@ def _pane(columns: int, rows: int, table: bool, pane_stats: bool, pane_w: int, p
         if beside.fits:
             return beside
         under = _under(columns, rows, table, pane_stats, pane_w, pane_h, map_size, fold_trees,
-                       lists_min)
+                       lists_min, own_h)
         return under if under.fits else beside  # under the map when it shows whole there
     return _under(columns, rows, table, pane_stats, pane_w, pane_h, map_size, fold_trees,
-                  lists_min)
+                  lists_min, own_h)
 
 
 def _under(columns: int, rows: int, table: bool, pane_stats: bool, pane_w: int, pane_h: int,
-           map_size: tuple[int, int], fold_trees: bool, lists_min: int) -> Arrangement:
+           map_size: tuple[int, int], fold_trees: bool, lists_min: int,
+           own_h: int = 0) -> Arrangement:
     """One pane's inside with its lists under the map (or none, or the map scrolling): at
-    least ``lists_min`` lines."""
+    least ``lists_min`` lines; ``own_h``, the lines the pane's own status lines take above
+    them."""
     map_w, map_h = map_size
     need_w, need_h = 2 * map_w + 2, map_h + 2  # the smallest cells, in a border
     if need_h + lists_min <= pane_h:
         # The map's box: as tall as the map at the biggest cells that fit the pane's width
-        # and three fifths of its height; the lists get the rest.
-        fitted = Geometry.fit(map_w, map_h, pane_w - 2, max(1, pane_h * 3 // 5 - 2)).size[1]
+        # and three fifths of its height with its own status lines at their least (rows
+        # more in them, wrapped, take from the lists, not from the map's cells); the lists
+        # get the rest.
+        fifths = (pane_h + own_h - min(own_h, PANE_STATS_HEIGHT)) * 3 // 5
+        fitted = Geometry.fit(map_w, map_h, pane_w - 2, max(1, fifths - 2)).size[1]
         box_h = min(pane_h - lists_min, max(need_h, fitted + 2))
         lists_h = pane_h - box_h
         return Arrangement(columns, rows, table, pane_stats, False, 0, lists_h,

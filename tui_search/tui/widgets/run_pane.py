@@ -78,17 +78,17 @@ class RunPane(Vertical):
         return self._code.made is not None and not self._code.made.has_class("-folded")
 
     def lay_out(self, arrangement: Arrangement, code: bool = False,
-                restyle: bool = True) -> None:
+                restyle: bool = True, level_width: int = 0) -> None:
         """Lay the pane out: its lists beside or under the map, or not at all; its trees and
         its own status lines shown or not; with ``code``, the Code panel in the tree's place
-        (where the arrangement has room for it: fewer lines than a tree needs).  ``restyle=False``: the classes are set
-        and left for the next restyle of the screen."""
+        (where the arrangement has room for it: fewer lines than a tree needs).
+        ``restyle=False``: the classes are set and left for the next restyle of the screen;
+        ``level_width``: the narrowest pane's width, its status lines take as many rows as
+        the tallest's there."""
         self.set_class(arrangement.beside, "-beside", update=restyle)
         self.stats.display = arrangement.pane_stats
-        beside = arrangement.lists_width if arrangement.beside else 0
-        if beside != self.stats.beside:  # its lines wrap at another width
-            self.stats.beside = beside
-            self.stats.refresh(layout=True)
+        # its lines wrap at another width
+        self.stats.set_room(arrangement.lists_width if arrangement.beside else 0, level_width)
         self._show_part(self.stats, arrangement.pane_stats)
         lists = self.lists
         lists.display = arrangement.lists
