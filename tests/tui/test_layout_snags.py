@@ -176,3 +176,41 @@ async def test_compare_resized_to_120_by_40_and_back_keeps_no_blank_map_rows() -
             level = 2 if size == (120, 40) else 1
             await wait_until(pilot, lambda level=level: all(
                 v.geometry.level == level and not blank_map_rows(v) for v in app.main.views))
+
+
+# -- the tutorial's own step at 80x24 ---------------------------------------------------------
+def panel_rows(panel) -> list[str]:
+    """The rows a line panel shows on screen, as text."""
+    return [panel.render_line(y).text for y in range(panel.scrollable_content_region.height)]
+
+
+@sync
+async def test_at_80_by_24_the_tutorials_step_4_shows_every_queue_entry_and_the_push() -> None:
+    """The tutorial at 80x24 after n x4 says "added E, NE to the queue": the queue shows all
+    its 4 entries, NE the last (it had room for 3 while the tree got 10 rows); with v, still
+    all 4 (2 showed), and the Code panel shows the push (line 9) with the visited check the
+    narration names (line 8)."""
+    app = tutorial_app()
+    async with app.run_test(size=(80, 24)) as pilot:
+        await pilot.press("n", "n", "n", "n")
+        pane = app.main.panes[0]
+        assert "added E, NE to the queue" in app.main.stats.narration_text
+
+        def queue_whole() -> bool:
+            rows = panel_rows(pane.frontier)
+            return sum("(" in row for row in rows) == 4 and "NE" in rows[-1] + rows[-2] \
+                and "(2,1) NE" in " ".join(rows)
+
+        await wait_until(pilot, queue_whole)
+        assert not pane.tree_panel.has_class("-folded")
+        await pilot.press("v")
+        await wait_until(pilot, lambda: pane.code_shown and pane.code_panel.lit)
+        code = pane.code_panel
+
+        def push_in_sight() -> bool:
+            rows = panel_rows(code)
+            return any(row.lstrip().startswith("▶  9") for row in rows) \
+                and any(row.lstrip().startswith("▶  8") for row in rows)
+
+        await wait_until(pilot, lambda: queue_whole() and push_in_sight())
+        assert code.named == [8, 9]

@@ -248,10 +248,26 @@ def _under(columns: int, rows: int, table: bool, pane_stats: bool, pane_w: int, 
 
 
 
+#: Beside the map, what is under the frontier (the tree, the Code panel) keeps at least this
+#: many lines of the column: its border and three.
+UNDER_FRONTIER_MIN = 5
+
+
+def frontier_lines(column: int, need: int) -> int | None:
+    """The frontier's lines in the lists' column beside the map, ``column`` lines tall, above
+    the tree or the Code panel: what its count and entries ``need`` (its border included),
+    so that its newest entries are in sight before the panel under it gets lines, leaving
+    that one UNDER_FRONTIER_MIN; None (a third, as app.tcss has it) when that is enough."""
+    if need <= column // 3:
+        return None
+    return max(column // 3, min(need, column - UNDER_FRONTIER_MIN))
+
+
 def lesson_width(screen_width: int) -> int:
     """The lesson's column beside the panes (``--lesson``): two fifths of the screen, 28
     columns at least and 56 at most."""
     return max(28, min(56, screen_width * 2 // 5))
 
 
-__all__ = ["CODE_MIN_HEIGHT", "MAP_MIN_LINES", "Arrangement", "arrange", "lesson_width", "own_lines", "pane_grid"]
+__all__ = ["CODE_MIN_HEIGHT", "MAP_MIN_LINES", "Arrangement", "arrange", "frontier_lines",
+           "lesson_width", "own_lines", "pane_grid"]
