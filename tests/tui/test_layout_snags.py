@@ -214,3 +214,47 @@ async def test_at_80_by_24_the_tutorials_step_4_shows_every_queue_entry_and_the_
 
         await wait_until(pilot, lambda: queue_whole() and push_in_sight())
         assert code.named == [8, 9]
+
+
+# -- the Code panel's room --------------------------------------------------------------------
+@sync
+async def test_at_200_by_60_the_code_panel_takes_the_columns_the_map_leaves() -> None:
+    """At 200x60 with v, the Code panel's lines do not wrap (they wrapped while 45 columns
+    beside the map stayed blank), and the map keeps the cells it had without the panel."""
+    app = tutorial_app()
+    async with app.run_test(size=(200, 60)) as pilot:
+        await pilot.press("n", "n", "n", "n")
+        pane = app.main.panes[0]
+        await settle(pilot)
+        level = pane.view.geometry.level
+        await pilot.press("v")
+        await wait_until(pilot, lambda: pane.code_shown and pane.code_panel.lit
+                         and pane.code_panel.scrollable_content_region.width > 0)
+        code = pane.code_panel
+        await wait_until(pilot, lambda: all(code.line_rows(n).stop - code.line_rows(n).start
+                                            == 1 for n in range(1, len(code.code.lines) + 1)))
+        assert pane.view.geometry.level == level and pane.has_class("-beside")
+        assert len(panel_rows(code)) >= len(code.code.lines)  # the whole code in sight
+
+
+@sync
+async def test_in_the_choices_lesson_at_120_by_40_the_code_panel_shows_every_lit_line() -> None:
+    """The choices lesson at 120x40 opens on DFS at step 4 with the Code panel: every line
+    the step ran is in sight (it showed some 6 lines of code, the lit ones cut at line 8,
+    under a map at cells bigger than the lesson needs)."""
+    from tests.tui.test_lesson import lesson_app
+
+    app = lesson_app("choices")
+    async with app.run_test(size=(120, 40)) as pilot:
+        pane = app.main.panes[0]
+        await wait_until(pilot, lambda: pane.code_shown and pane.code_panel.lit
+                         and pane.code_panel.scrollable_content_region.height > 0)
+        code = pane.code_panel
+        assert sorted(code.lit) == [4, 5, 6, 7, 8, 9, 10]
+
+        def every_lit_line_in_sight() -> bool:
+            top, rows = code.scroll_offset.y, code.scrollable_content_region.height
+            return all(top <= code.line_rows(n).start and code.line_rows(n).stop <= top + rows
+                       for n in code.lit)
+
+        await wait_until(pilot, every_lit_line_in_sight)

@@ -35,6 +35,10 @@ TREES_MIN_HEIGHT, TREES_BESIDE_MIN_HEIGHT = 9, 12
 CODE_MIN_HEIGHT = 5
 #: Beside the lists, a map that cannot fit whole gets at least this many columns.
 MAP_MIN_WIDTH = 20
+#: With the Code panel, the lists' column beside the map takes the columns the map's cells
+#: leave blank, up to this many: the default pseudocode's widest line unwrapped (72), with
+#: the panel's border, padding and scrollbar.
+CODE_COLUMN_WIDTH = 80
 #: A pane's own status lines share the map's column beside the lists: at least this wide.
 STATS_MIN_WIDTH = 40
 #: A pane's own status lines (its search's figures and narration).
@@ -141,12 +145,12 @@ def arrange(n: int, width: int, height: int, map_size: tuple[int, int], *,
                                      if stats and stats_rows else (stats, stats))
                 pane_h = max(0, (room - more) // rows - under_h)
                 pane = _pane(columns, rows, table, stats > 0, pane_w, pane_h, map_size,
-                             fold_trees, lists_min, pane_h - beside_h + under_h, under_h)
+                             fold_trees, lists_min, pane_h - beside_h + under_h, under_h, code)
                 if wrap:
                     steady_h = max(0, (room - more + wrap) // rows - under_h)
                     steady = _pane(columns, rows, table, stats > 0, pane_w, steady_h,
                                    map_size, fold_trees, lists_min,
-                                   steady_h - beside_h + under_h, under_h)
+                                   steady_h - beside_h + under_h, under_h, code)
                     pane = _steady(steady, pane, steady_h, pane_h, map_size, fold_trees,
                                    lists_min, beside_h - under_h)
                 shows = (pane.map_height or pane_h) >= min(map_size[1] + 2, MAP_MIN_LINES)
@@ -189,13 +193,14 @@ def _steady(steady: Arrangement, pane: Arrangement, steady_h: int, pane_h: int,
 
 def _pane(columns: int, rows: int, table: bool, pane_stats: bool, pane_w: int, pane_h: int,
           map_size: tuple[int, int], fold_trees: bool, lists_min: int,
-          beside_h: int, own_h: int) -> Arrangement:
+          beside_h: int, own_h: int, code: bool = False) -> Arrangement:
     """One pane's inside: its lists beside the map when the pane is much wider than tall and
     the whole map fits beside them (or would not fit whole under them either); else under
     the map when there is room for both.  ``pane_h``: the lines under the pane's own status
     lines when they span the pane; ``beside_h``: beside the lists (they wrap to more rows
     in the map's column alone), the lines the map's column has under them; ``own_h``: the
-    lines they take spanning the pane (the lists' column beside the map spans them too)."""
+    lines they take spanning the pane (the lists' column beside the map spans them too);
+    ``code``: the Code panel in the trees' place (its lines are long: they wrap)."""
     map_w, map_h = map_size
     need_w, need_h = 2 * map_w + 2, map_h + 2  # the smallest cells, in a border
     side = lists_width(pane_w)
@@ -208,29 +213,35 @@ def _pane(columns: int, rows: int, table: bool, pane_stats: bool, pane_w: int, p
                              # frontier's third keeping an entry in sight, as the trees'
                              code=pane_h + own_h >= TREES_BESIDE_MIN_HEIGHT)
         if beside.fits:
+            if code:  # the columns the map's cells leave blank: the code's, up to its lines
+                drawn = Geometry.fit(map_w, map_h, pane_w - side - 2, beside_h - 2).size[0] + 2
+                wide = min(CODE_COLUMN_WIDTH, pane_w - max(drawn, beside_w))
+                return beside._replace(lists_width=max(side, wide))
             return beside
         under = _under(columns, rows, table, pane_stats, pane_w, pane_h, map_size, fold_trees,
-                       lists_min, own_h)
+                       lists_min, own_h, code)
         return under if under.fits else beside  # under the map when it shows whole there
     return _under(columns, rows, table, pane_stats, pane_w, pane_h, map_size, fold_trees,
-                  lists_min, own_h)
+                  lists_min, own_h, code)
 
 
 def _under(columns: int, rows: int, table: bool, pane_stats: bool, pane_w: int, pane_h: int,
            map_size: tuple[int, int], fold_trees: bool, lists_min: int,
-           own_h: int = 0) -> Arrangement:
+           own_h: int = 0, code: bool = False) -> Arrangement:
     """One pane's inside with its lists under the map (or none, or the map scrolling): at
     least ``lists_min`` lines; ``own_h``, the lines the pane's own status lines take above
-    them."""
+    them; ``code``: the Code panel in the lists, whose long lines wrap: the map's box then
+    has half the pane, not three fifths."""
     map_w, map_h = map_size
     need_w, need_h = 2 * map_w + 2, map_h + 2  # the smallest cells, in a border
     if need_h + lists_min <= pane_h:
         # The map's box: as tall as the map at the biggest cells that fit the pane's width
-        # and three fifths of its height with its own status lines at their least (rows
+        # and three fifths of its height (half beside the Code panel's long lines, which
+        # wrap) with its own status lines at their least (rows
         # more in them, wrapped, take from the lists, not from the map's cells); the lists
         # get the rest.
-        fifths = (pane_h + own_h - min(own_h, PANE_STATS_HEIGHT)) * 3 // 5
-        fitted = Geometry.fit(map_w, map_h, pane_w - 2, max(1, fifths - 2)).size[1]
+        share = (pane_h + own_h - min(own_h, PANE_STATS_HEIGHT)) * (5 if code else 6) // 10
+        fitted = Geometry.fit(map_w, map_h, pane_w - 2, max(1, share - 2)).size[1]
         box_h = min(pane_h - lists_min, max(need_h, fitted + 2))
         lists_h = pane_h - box_h
         return Arrangement(columns, rows, table, pane_stats, False, 0, lists_h,
