@@ -4,6 +4,7 @@ Code panel's room, the panes' cells level, the toasts and the key bar."""
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 from tests.helpers import TUTORIAL
@@ -15,8 +16,10 @@ from tui_search.cli.parse import parse_options
 from tui_search.engine.maps.load import load_map
 from tui_search.tui.app import SearchApp
 from tui_search.tui.model.replay_jumps import LOCKSTEP_SHORT
+from tui_search.tui.view.tree_window import CUT_LEFT, CUT_RIGHT
 from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.key_bar import KeyBar
+from tui_search.tui.widgets.search_tree import SearchTreePanel
 
 
 def toasts(app) -> list[str]:
@@ -258,3 +261,76 @@ async def test_in_the_choices_lesson_at_120_by_40_the_code_panel_shows_every_lit
                        for n in code.lit)
 
         await wait_until(pilot, every_lit_line_in_sight)
+
+
+# -- the trees' fragments ---------------------------------------------------------------------
+NODE = re.compile(r"[●○★◉] (START|[NSEW]{1,2}) \(\d+,\d+\)")
+
+
+def tree_problems(panel: SearchTreePanel) -> list[str]:
+    """What a student would read as a broken tree in ``panel``'s rows: a cell without its
+    node's glyph and move (a lone ``(4,0)``), a node cut with no mark saying so, depths that
+    do not go down the focused view's chain, or the parent of the node being expanded out of
+    sight, or on a row that neither shows it whole nor marks it cut (the listing)."""
+    model, rows = panel.model, panel_rows(panel)
+    problems = []
+    for y, row in enumerate(rows[panel.pinned_rows():], panel.pinned_rows()):
+        whole = list(NODE.finditer(row))
+        cells = re.findall(r"\(\d+,\d+\)", row)
+        if len(cells) != len(whole):
+            problems.append(f"a lone cell: {row!r}")
+        if re.search(r"[●○★◉]", row) and not whole and CUT_RIGHT not in row:
+            problems.append(f"a node cut without a mark: {row!r}")
+    if model.mode == "focus":
+        depths = [int(row.split()[0]) for row in rows[panel.pinned_rows():]
+                  if row.split() and row.split()[0].isdigit()]
+        if depths != sorted(depths) or len(set(depths)) < len(depths) - 2:
+            problems.append(f"the depths do not go down the chain: {depths}")
+    elif (run := panel.run) is not None and run.k:
+        # the line of the parent of the node being expanded, found by its label
+        up = run.nodes.parent(run.steps.expanded_event(run.k))
+        label = f"{run.nodes.move(up)} {run.nodes.cell(up)}".replace(" ", "") if up >= 0 else ""
+        parent = next((y for y in range(model.line_count())
+                       if label and model.line_text(y).replace(" ", "").endswith(label)), None)
+        if parent is not None:
+            row = parent - panel.scroll_offset.y
+            if not panel.pinned_rows() <= row < len(rows):
+                problems.append("the parent of the node being expanded is out of sight")
+            elif not NODE.search(rows[row]) and not (re.search(r"[●○★◉]", rows[row]) and (
+                    CUT_LEFT in rows[row] or CUT_RIGHT in rows[row])):
+                problems.append(f"its parent's row shows no node: {rows[row]!r}")
+    return problems
+
+
+@sync
+async def test_narrow_trees_at_120_by_40_show_no_fragment() -> None:
+    """``--compare bfs,dfs,ucs,astar`` at 120x40, at the end: tree panels 11 columns wide.
+    Each row shows its node whole or says it is cut (they showed a lone '(4,0)', then
+    '● SE' over '└─ ★ S' as if whole)."""
+    app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, compare="bfs,dfs,ucs,astar")
+    async with app.run_test(size=(120, 40)) as pilot:
+        await pilot.press("end")
+        await wait_until(pilot, lambda: app.session.at_end())
+        await settle(pilot)
+        trees = [pane.tree_panel for pane in app.main.panes]
+        assert all(tree.scroll_offset.x > 0 for tree in trees)  # the case: scrolled sideways
+        await wait_until(pilot, lambda: not any(tree_problems(tree) for tree in trees))
+        assert any(CUT_LEFT in " ".join(panel_rows(tree)) for tree in trees)
+
+
+@sync
+async def test_a_deep_dfs_tree_at_80_by_24_reads_as_a_tree() -> None:
+    """DFS on a generated 31x21 maze at 80x24, at its end and back (138 levels deep): the
+    tree scrolled sideways showed nodes beside their parents' rows as if siblings (the
+    listing's guides keep 40 levels), blank rows and lone cells.  Now a tree deeper than
+    its guides is shown by its path to the node being expanded, its depths in view; on
+    the way down, every row shows its node whole or marked."""
+    app = build_app(parse_options(["-a", "dfs", "--generate", "maze", "--size", "31x21",
+                                   "--seed", "1"]))
+    async with app.run_test(size=(80, 24)) as pilot:
+        tree = app.main.panes[0].tree_panel
+        for keys in (["n"] * 40, ["end"], ["p"] * 3):
+            await pilot.press(*keys)
+            await settle(pilot)
+            await wait_until(pilot, lambda: not tree_problems(tree))
+        assert tree.mode == "focus" and tree.scroll_offset.x > 0

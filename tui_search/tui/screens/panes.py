@@ -229,7 +229,7 @@ class PanesScreen(Screen[None]):
         level = (width - GUTTER * (arrangement.columns - 1)) // arrangement.columns
         for pane in self.panes:
             pane.lay_out(arrangement, code=self.session.show_code, restyle=restyle,
-                         level_width=level if len(self.panes) > 1 else 0)
+                         level_width=level)
         shown = any(p.code_shown for p in self.panes)
         if self._code_shown and not shown and self.session.show_code:
             self.warn(NO_ROOM_FOR_CODE, timeout=6)  # never folded without a word

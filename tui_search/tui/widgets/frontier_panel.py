@@ -245,6 +245,14 @@ class FrontierPanel(LinePanel):
             self.scroll_to(0, 0, animate=False, immediate=True, force=True)
         self.refresh_changed()
 
+    def rows_in_sight(self) -> int:
+        """The rows that show the entries the step just added (and the count above them):
+        a stack's are on top, a queue's (and a trace's, as added) at the back, a priority
+        queue's anywhere: all of its rows."""
+        if self._kind is Frontier.LIFO and self._by_cell is None:
+            return self._top() + max(1, len(self._added)) * self._rows_per()
+        return self.virtual_size.height
+
     def _rows_per(self) -> int:
         """The rows each entry takes (more than one in a panel too narrow for it)."""
         return 1 if self._rows is None else len(self._rows.rows)

@@ -124,7 +124,7 @@ class RunPane(Vertical):
         under = not self.tree_panel.has_class("-folded") or self.code_shown
         lines = None
         if self.has_class("-beside") and under and self.size.height:
-            need = frontier.virtual_size.height + frontier.styles.gutter.height
+            need = frontier.rows_in_sight() + frontier.styles.gutter.height
             lines = frontier_lines(self.size.height, need)
         if lines != self._frontier_lines:  # a layout only when they change
             self._frontier_lines = frontier.styles.height = lines
