@@ -69,7 +69,6 @@ class PanesScreen(Screen[None]):
         self.session = session
         self.file_access = file_access
         self.panes = self._new_panes()
-        self._level_lines()
         self.playback = PlaybackDriver(self)  # the timer and the seeks' slices
         # what a mouse drag paints: True wall, False free, "brush" the terrain brush's cost
         self._stroke: bool | str | None = None
@@ -126,13 +125,6 @@ class PanesScreen(Screen[None]):
         session = self.session
         return [RunPane(session.grid, label, NEEDS_ENDPOINTS)
                 for label in (session.labels if labels is None else labels)]
-
-    def _level_lines(self) -> None:
-        """Each pane's own status lines take as many rows as the tallest's: the maps under
-        them start on one row (a pane whose lines wrapped more had its map a row lower)."""
-        peers = [pane.stats for pane in self.panes]
-        for pane in self.panes:
-            pane.stats.peers = peers
 
     @property
     def views(self) -> list[GridView]:
@@ -225,9 +217,12 @@ class PanesScreen(Screen[None]):
             self.table.display = arrangement.table
             self._show_part(self.table, arrangement.table)
         panes_lines = self.panes[0].stats.display
-        # the narrowest pane's width: the others' own lines take the rows they take there
+        # each pane's own lines take as many rows as the tallest's in the narrowest pane: the
+        # maps start on one row (one whose lines wrapped more had its map a row lower)
         level = (width - GUTTER * (arrangement.columns - 1)) // arrangement.columns
+        peers = [pane.stats for pane in self.panes]
         for pane in self.panes:
+            pane.stats.peers = peers
             pane.lay_out(arrangement, code=self.session.show_code, restyle=restyle,
                          level_width=level)
         shown = any(p.code_shown for p in self.panes)
@@ -266,7 +261,6 @@ class PanesScreen(Screen[None]):
             kept, gone = self.panes[:len(labels)], self.panes[len(labels):]
             added = self._new_panes(labels[len(kept):])
             self.panes = kept + added
-            self._level_lines()
             removing = [pane.remove() for pane in gone]
             mounting = self.pane_box.mount_all(added) if added else None
             for pane in added:
@@ -376,10 +370,9 @@ class PanesScreen(Screen[None]):
 
     def note(self, text: str | None, kind: str, *, severity: SeverityLevel = "information",
              timeout: float = 3) -> None:
-        """Notify ``text``: a note of the same ``kind`` still on screen (``b`` pressed four
-        times, ``l``, a refusal said again) is replaced, not stacked over the map.  Textual
-        removes notifications only all at once (:meth:`~textual.app.App.clear_notifications`):
-        they are cleared only while the last one shown is this kind's."""
+        """Notify ``text``, replacing a note of the same ``kind`` still on screen (``b`` four
+        times, a refusal said again), not stacked over the map.  Textual clears notifications
+        only all at once: only while the last one shown is this kind's."""
         if not text:
             return
         now = time.monotonic()
