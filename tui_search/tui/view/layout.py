@@ -266,12 +266,13 @@ UNDER_FRONTIER_MIN = 5
 
 def frontier_lines(column: int, need: int) -> int | None:
     """The frontier's lines in the lists' column beside the map, ``column`` lines tall, above
-    the tree or the Code panel: what its count and entries ``need`` (its border included),
-    so that its newest entries are in sight before the panel under it gets lines, leaving
-    that one UNDER_FRONTIER_MIN; None (a third, as app.tcss has it) when that is enough."""
-    if need <= column // 3:
+    the tree or the Code panel: what its count and the entries down to the newest ``need``
+    (its border included), so that those are in sight before the panel under it gets lines,
+    while that one keeps UNDER_FRONTIER_MIN; None (a third, as app.tcss has it) when a third
+    is enough, or when even those lines would not show them (the panel shows its front)."""
+    if need <= column // 3 or need > column - UNDER_FRONTIER_MIN:
         return None
-    return max(column // 3, min(need, column - UNDER_FRONTIER_MIN))
+    return need
 
 
 def lesson_width(screen_width: int) -> int:
