@@ -216,7 +216,8 @@ def _pane(columns: int, rows: int, table: bool, pane_stats: bool, pane_w: int, p
             if code:  # the columns the map's cells leave blank: the code's, up to its lines
                 drawn = Geometry.fit(map_w, map_h, pane_w - side - 2, beside_h - 2).size[0] + 2
                 wide = min(CODE_COLUMN_WIDTH, pane_w - max(drawn, beside_w))
-                return beside._replace(lists_width=max(side, wide))
+                return Arrangement(columns, rows, table, pane_stats, True, max(side, wide), 0,
+                                   beside.trees, 0, True, pane_w, code=beside.code)
             return beside
         under = _under(columns, rows, table, pane_stats, pane_w, pane_h, map_size, fold_trees,
                        lists_min, own_h, code)
