@@ -312,18 +312,20 @@ async def _tab_row_holds() -> None:
     grid = load_map(MOVINGAI / "arena.map", start=(44, 45), goal=(5, 5))
     app = SearchApp(grid, path=MOVINGAI / "arena.map")
     async with app.run_test(size=(120, 36)) as pilot:
-        await pilot.press(*"n" * 60)
+        # (a queue longer than its panel: one that fits is given the rows to show it whole)
+        app.session.goto(149)
+        await pilot.press("n")
         run, queue, tree = app.session.run, app.main.panes[0].frontier, app.main.panes[0].tree_panel
         assert run is not None and app.focused is app.main.views[0]
         await pilot.press("tab", "pagedown", "down")  # the queue scrolls, the step stays
-        assert app.focused is queue and queue.scroll_offset.y > 1 and run.k == 60
+        assert app.focused is queue and queue.scroll_offset.y > 1 and run.k == 150
         await pilot.press("n")  # the next step brings the queue back to its front
-        assert run.k == 61 and queue.scroll_offset.y == 0
+        assert run.k == 151 and queue.scroll_offset.y == 0
         await pilot.press("tab", "end")  # end scrolls the tree: not the last step
-        assert app.focused is tree and run.k == 61
+        assert app.focused is tree and run.k == 151
         assert tree.max_scroll_y > 0 and tree.scroll_offset.y == tree.max_scroll_y
         await pilot.press("home", "l")  # home scrolls back up; l still moves the cursor
-        assert tree.scroll_offset.y == 0 and run.k == 61 and app.session.cursor == (45, 45)
+        assert tree.scroll_offset.y == 0 and run.k == 151 and app.session.cursor == (45, 45)
         await pilot.press("tab")
         assert app.focused is app.main.views[0]
         await pilot.press("shift+tab", "shift+tab")

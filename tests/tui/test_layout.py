@@ -255,7 +255,8 @@ def test_the_code_panel_needs_fewer_lines_than_a_tree() -> None:
     the Code panel in their place (and with it on, the lists keep CODE_MIN_HEIGHT lines where
     they would need LISTS_MIN_HEIGHT); beside a map too short for it, none."""
     room = arrange(2, 80, 17, (6, 6), stats_height=4)
-    assert not room.lists and not room.code  # the lists give way, as ever
+    # the panes' own lines give way before the lists (issue 42: a queue beside a stack)
+    assert room.lists and not room.pane_stats
     code = arrange(2, 80, 17, (6, 6), stats_height=4, code=True)
     assert code.lists_height == CODE_MIN_HEIGHT and code.code and not code.trees
     assert not arrange(1, 80, 6, (60, 40), code=True).code

@@ -18,8 +18,9 @@ from tests.tui.test_app import sync, wait_until
 from tests.tui.test_replay import replay_app
 from tui_search.engine.maps.load import load_map
 from tui_search.tui.app import SearchApp
+from tui_search.tui.view.tree_window import CUT_LEFT, CUT_RIGHT, label_span, tree_window
 from tui_search.tui.widgets.line_panel import words_from
-from tui_search.tui.widgets.search_tree import SearchTreePanel, label_span, scroll_column
+from tui_search.tui.widgets.search_tree import SearchTreePanel, scroll_column
 
 START = "● START (0,0)"
 
@@ -42,7 +43,10 @@ def tree_rows(screen: list[list[tuple]], panel: SearchTreePanel) -> list[str]:
 
 def check_tree(panel: SearchTreePanel, rows: list[str]) -> None:
     """Whole words only, the count on the first row, the node being expanded in view, and
-    no sideways scroll when its label and its children's fit the panel."""
+    no sideways scroll when its label and its children's fit the panel.  A row whose node
+    the window's edges cut (issue 42) shows it from the left edge after ``◂``, or its words
+    that fit before ``▸``: what :func:`tree_window` says, and every cell on a row is a whole
+    node's (its glyph and move before it)."""
     model = panel.model
     width = panel.scrollable_content_region.width
     count = panel.line_text(0)
@@ -51,6 +55,13 @@ def check_tree(panel: SearchTreePanel, rows: list[str]) -> None:
     for y, shown in enumerate(rows):
         line = panel.line_text(panel.row_line(y))
         x = 0 if y < panel.pinned_rows() else round(panel.scroll_x)
+        cut = tree_window(model.line(panel.row_line(y)), x, width)
+        for cell in re.finditer(r"\(\d+,\d+\)", shown):
+            assert re.search(r"[●○★◉] \S+ $", shown[:cell.start()]), f"a lone cell: {shown!r}"
+        if cut is not None:
+            assert shown.rstrip() == "".join(text for text, _ in cut).rstrip(), (shown, cut)
+            assert shown.startswith(CUT_LEFT) or CUT_RIGHT in shown, shown
+            continue
         for word in re.finditer(r"\S+", shown):
             at, end = x + word.start(), x + word.end()
             assert line[at:end] == word.group(), (y, shown, line)
@@ -113,14 +124,15 @@ async def test_three_searches_after_three_steps_show_whole_words(size, fits) -> 
 def test_scroll_column_keeps_to_zero_then_guide_boundaries_then_the_label() -> None:
     """0 while the node's and its children's labels fit; else the first guide boundary
     (every 3 columns, after the focused view's depth column) from which they fit; else the
-    label's start."""
+    node's link to its parent (``├─``) beside its label; else the label's start."""
     node = [("│  │  ├─ ", "guide"), ("● S (0,4)", "current"), ("  ◀ expanding", "current")]
     kid = [("│  │  │  └─ ", "guide"), ("○ SE (1,5)", "frontier")]
     assert label_span(node) == (9, 18) and label_span(kid) == (12, 22)
     assert scroll_column([node, kid], 22) == 0
     assert scroll_column([node, kid], 21) == 3
     assert scroll_column([node, kid], 17) == 6
-    assert scroll_column([node, kid], 12) == 9  # only from the label's start
+    assert scroll_column([node, kid], 12) == 6  # the node's link to its parent, its label
+    assert scroll_column([node, kid], 8) == 9  # only from the label's start
     assert scroll_column([node], 5) == 9
     focused = [("12 ", "detail"), ("   └─ ", "guide"), ("● E (2,2)", "current")]
     assert scroll_column([focused], 15) == 3  # after the depth column
@@ -136,3 +148,21 @@ def test_words_from_blanks_the_word_the_left_edge_cuts() -> None:
     assert words_from(parts, 6) == [("└─ ", "guide"), ("● S     (0,0)", "expanded")]
     assert words_from(parts, 1) == [("└  ", "guide"), ("● START (0,0)", "expanded")]
     assert words_from(parts, 10) == parts  # after a space
+
+
+def test_a_row_shows_its_node_whole_or_says_it_is_cut() -> None:
+    """Issue 42: a window that starts right of a node shows it at its left edge after ◂
+    (it showed a lone '(19,4)', or nothing); a label past the right edge keeps its whole
+    words before ▸ (it showed '└─ ★ NE' as if whole); a label whole in the window, and a
+    line with no node, are left to the usual cut at word boundaries (None)."""
+    node = [("│  ├─ ", "guide"), ("● NE (19,4)", "expanded")]
+    kid = [("│  │  └─ ", "guide"), ("★ NE (6,4)", "path"), ("  ★ goal", "path")]
+    assert tree_window(node, 0, 30) is None and tree_window(kid, 3, 30) is None
+    assert tree_window([("8 nodes", "note")], 4, 5) is None
+    said = ["".join(text for text, _ in tree_window(line, x, width) or [])
+            for line, x, width in ((node, 9, 20), (node, 30, 12), (kid, 0, 15), (kid, 3, 8),
+                                   (kid, 0, 9), (node, 6, 5))]
+    assert said == ["◂● NE (19,4)", "◂● NE (19,4)", "│  │  └─ ★ NE ▸", "│  └─ ▸",
+                    "│  │  └─▸", "● ▸"]
+    # the roles go with the text (the node's colour, the marks as guides)
+    assert tree_window(node, 9, 20) == [(CUT_LEFT, "guide"), ("● NE (19,4)", "expanded")]

@@ -22,9 +22,9 @@ if TYPE_CHECKING:
 #: Said when an edit ends the replay.
 REPLAY_ENDED = "The map changed: the replay of your trace is over"
 LOCKSTEP = ("Lockstep: n steps every search not done yet, p steps back the latest, "
-            "end runs them all to the end · 1-6 add or take out a search · c one search")
+            "end runs them all to the end · 1-6 add or take out a search · c back to one")
 #: The same where the long one would take two lines (the panes need them more).
-LOCKSTEP_SHORT = "Lockstep: n, p and end move every search · 1-6 add or take out · c one"
+LOCKSTEP_SHORT = "Lockstep: n, p and end move every search · 1-6 add or take out · c back to one"
 
 
 class ReplayJumps:

@@ -229,9 +229,8 @@ class MainScreen(PanesScreen):
         bar.relabel("paint", None if cost is None else f"Paint {brush_name(cost)}")
         bar.raise_hint("paint", cost is not None)
         self.refresh_bindings()
-        self.notify("Terrain brush off" if cost is None else
-                    f"Terrain brush: {brush_name(cost)} (m or a mouse drag paints it)",
-                    timeout=3)
+        self.note("Terrain brush off" if cost is None else
+                  f"Terrain brush: {brush_name(cost)} (m or a mouse drag paints it)", "brush")
 
     def action_paint(self) -> None:
         session = self.session
@@ -299,7 +298,7 @@ class MainScreen(PanesScreen):
     def action_labels(self) -> None:
         for view in self.views:
             mode = view.cycle_labels()
-        self.notify(f"Cell labels: {mode}", timeout=2)
+        self.note(f"Cell labels: {mode}", "labels", timeout=2)
 
     def action_page(self, pages: int) -> None:
         """The cursor a screenful of cells up or down (at least one cell)."""

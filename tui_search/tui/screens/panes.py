@@ -10,13 +10,13 @@ verdict is checked by :mod:`~tui_search.tui.screens.exercise_check` once an exer
 
 from __future__ import annotations
 
+import time
 from functools import cached_property
 from typing import TYPE_CHECKING, cast
 
 from textual import events
 from textual.app import ComposeResult
 from textual.await_remove import AwaitRemove
-from textual.containers import Grid as PaneBox
 from textual.markup import escape
 from textual.screen import Screen
 from textual.widget import AwaitMount, Widget
@@ -29,7 +29,7 @@ from tui_search.tui.model.file_rules import FileAccess
 from tui_search.tui.model.session import NEEDS_ENDPOINTS, Before, Session
 from tui_search.tui.screens.keys import KEY_IMPORTANCE
 from tui_search.tui.screens.playback_driver import PlaybackDriver
-from tui_search.tui.view.layout import PANE_STATS_HEIGHT, arrange, lesson_width
+from tui_search.tui.view.layout import GUTTER, PANE_STATS_HEIGHT, arrange, lesson_width
 from tui_search.tui.view.readout import describe_each
 from tui_search.tui.view.status_lines import screen_rows, screen_status
 from tui_search.tui.widgets.cell_readout import CellReadout
@@ -38,10 +38,13 @@ from tui_search.tui.widgets.grid_view import GridView
 from tui_search.tui.widgets.key_bar import KeyBar
 from tui_search.tui.widgets.lazy_parts import Later, challenge_panel, compare_table, show_part
 from tui_search.tui.widgets.legend import Legend
+from tui_search.tui.widgets.pane_box import PaneBox
 from tui_search.tui.widgets.run_pane import RunPane, own_rows
 from tui_search.tui.widgets.stats import Stats
 
 if TYPE_CHECKING:
+    from textual.notifications import SeverityLevel
+
     from tui_search.tui.screens.file_commands import FileCommands
     from tui_search.tui.widgets.challenge import ChallengePanel
     from tui_search.tui.widgets.compare_table import CompareTable
@@ -71,8 +74,9 @@ class PanesScreen(Screen[None]):
         self._stroke: bool | str | None = None
         self._bindings_key: tuple[object, ...] = ()
         self._terrain = session.grid.costs is not None  # what the legend was drawn for
-        self._fitted_lines = (-1, -1)  # the status lines' heights last fitted to
+        self._fitted_lines = (-1, -1, -1)  # the status lines' heights last fitted to
         self._code_shown = False  # some pane showed the Code panel when last fitted
+        self._last_note: tuple[str, float] | None = None  # the last note's kind, its end
 
     @cached_property
     def files(self) -> FileCommands:
@@ -150,10 +154,17 @@ class PanesScreen(Screen[None]):
         were shown or mounted): fit the panes to the room that leaves."""
         self.call_after_refresh(self._refit)
 
-    def _lines_measured(self) -> tuple[int, int]:
+    def on_pane_box_resized(self, message: PaneBox.Resized) -> None:
+        """The lines around the panes took a row or gave one back (a second search's readout
+        line, the counts said under the panes): fit the panes to the room that leaves."""
+        self.call_after_refresh(self._refit)
+
+    def _lines_measured(self) -> tuple[int, int, int]:
         """What the layout reads of the status lines: the panes' own lines' height (0: not
-        laid out yet, reckoned) and the rows the lines under the panes wrapped to."""
-        return (max(pane.stats.outer_size.height for pane in self.panes), self.stats.wrapped)
+        laid out yet, reckoned), the rows the lines under the panes wrapped to, and the
+        panes' room they leave."""
+        return (max(pane.stats.outer_size.height for pane in self.panes), self.stats.wrapped,
+                self.pane_box.size.height)
 
     def _refit(self) -> None:
         """Fit the panes again if the status lines' heights are not those they were last
@@ -199,14 +210,22 @@ class PanesScreen(Screen[None]):
                               stats_rows=lambda w: own_rows(self.panes, w) or stats)
         box.styles.grid_size_columns = arrangement.columns
         box.styles.grid_size_rows = arrangement.rows
-        if arrangement.table and table is not None and not table.display:
-            table.show(self.session.labels, self.session.runs)  # not kept up while hidden
+        if arrangement.table and (table is None or not table.display):
+            # not kept up while hidden, nor filled before it first shows (a resize that makes
+            # room for it showed an empty box, its rows' room a gap, until the next step)
+            self.table.show(self.session.labels, self.session.runs)
         if arrangement.table or table is not None:
             self.table.display = arrangement.table
             self._show_part(self.table, arrangement.table)
         panes_lines = self.panes[0].stats.display
+        # each pane's own lines take as many rows as the tallest's in the narrowest pane: the
+        # maps start on one row (one whose lines wrapped more had its map a row lower)
+        level = (width - GUTTER * (arrangement.columns - 1)) // arrangement.columns
+        peers = [pane.stats for pane in self.panes]
         for pane in self.panes:
-            pane.lay_out(arrangement, code=self.session.show_code, restyle=restyle)
+            pane.stats.peers = peers
+            pane.lay_out(arrangement, code=self.session.show_code, restyle=restyle,
+                         level_width=level)
         shown = any(p.code_shown for p in self.panes)
         if self._code_shown and not shown and self.session.show_code:
             self.warn(NO_ROOM_FOR_CODE, timeout=6)  # never folded without a word
@@ -348,8 +367,22 @@ class PanesScreen(Screen[None]):
                                   for run, (k, was_at_end) in runs])
 
     def warn(self, text: str | None, timeout: float = 3) -> None:
-        if text:
-            self.notify(text, severity="warning", timeout=timeout)
+        """A warning; the same one again (a key pressed again) replaces it."""
+        self.note(text, text or "", severity="warning", timeout=timeout)
+
+    def note(self, text: str | None, kind: str, *, severity: SeverityLevel = "information",
+             timeout: float = 3) -> None:
+        """Notify ``text``, replacing a note of the same ``kind`` still on screen (``b`` four
+        times, a refusal said again), not stacked over the map.  Textual clears notifications
+        only all at once: only while the last one shown is this kind's."""
+        if not text:
+            return
+        now = time.monotonic()
+        if self._last_note is not None and self._last_note[0] == kind \
+                and now < self._last_note[1]:
+            self.app.clear_notifications()
+        self._last_note = (kind, now + timeout)
+        self.notify(text, severity=severity, timeout=timeout)
 
     # -- the exercise ----------------------------------------------------------------------
     def _check_exercise(self) -> None:

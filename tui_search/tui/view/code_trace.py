@@ -184,5 +184,14 @@ def focus_line(run: Run) -> int | None:
     return None
 
 
+def named_lines(run: Run) -> list[int]:
+    """The lit lines the narration names, in order: the push ("added E, NE to the queue")
+    when the step pushed, and :func:`focus_line` -- what the Code panel keeps in sight before
+    the rest of the lit lines."""
+    code = code_of(run)
+    push = code.number("push") if "push" in lit_kinds(run) else None
+    return sorted({number for number in (push, focus_line(run)) if number is not None})
+
+
 __all__ = ["FOCUS_KINDS", "Skip", "code_of", "focus_line", "line_notes", "lit_kinds", "lit_lines",
-           "skipped"]
+           "named_lines", "skipped"]

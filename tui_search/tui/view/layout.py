@@ -3,8 +3,10 @@
 The panes share the space the status lines, the key bar, the legend, the readout and the
 challenge panel leave.  In that room the map comes first: it is shown whole whenever it fits
 at its smallest cells.  What else a pane shows gives way in this order when there is not room
-for all of it: the comparison table, the search trees, the frontier lists, the panes' own
-status lines (the line under them then says each search's step and nodes expanded).  A pane
+for all of it: the comparison table, the search trees, the panes' own status lines (the line
+under them then says each search's step and nodes expanded), the frontier lists (a queue
+beside a stack is what a replay or a comparison is there to show; what a pane's narration
+says of a step, the "+" entries of its frontier show too).  A pane
 much wider than tall keeps its lists beside the map, as a column; else under it.
 
 When the status lines under the panes wrap to more rows, the map stays where it was (placed in
@@ -32,6 +34,10 @@ TREES_MIN_HEIGHT, TREES_BESIDE_MIN_HEIGHT = 9, 12
 CODE_MIN_HEIGHT = 5
 #: Beside the lists, a map that cannot fit whole gets at least this many columns.
 MAP_MIN_WIDTH = 20
+#: With the Code panel, the lists' column beside the map takes the columns the map's cells
+#: leave blank, up to this many: the default pseudocode's widest line unwrapped (72), with
+#: the panel's border, padding and scrollbar.
+CODE_COLUMN_WIDTH = 80
 #: A pane's own status lines share the map's column beside the lists: at least this wide.
 STATS_MIN_WIDTH = 40
 #: A pane's own status lines (its search's figures and narration).
@@ -138,20 +144,20 @@ def arrange(n: int, width: int, height: int, map_size: tuple[int, int], *,
                                      if stats and stats_rows else (stats, stats))
                 pane_h = max(0, (room - more) // rows - under_h)
                 pane = _pane(columns, rows, table, stats > 0, pane_w, pane_h, map_size,
-                             fold_trees, lists_min, pane_h - beside_h + under_h, under_h)
+                             fold_trees, lists_min, pane_h - beside_h + under_h, under_h, code)
                 if wrap:
                     steady_h = max(0, (room - more + wrap) // rows - under_h)
                     steady = _pane(columns, rows, table, stats > 0, pane_w, steady_h,
                                    map_size, fold_trees, lists_min,
-                                   steady_h - beside_h + under_h, under_h)
+                                   steady_h - beside_h + under_h, under_h, code)
                     pane = _steady(steady, pane, steady_h, pane_h, map_size, fold_trees,
                                    lists_min, beside_h - under_h)
                 shows = (pane.map_height or pane_h) >= min(map_size[1] + 2, MAP_MIN_LINES)
-                candidates.append(((pane.fits, shows, pane.pane_stats or not own, pane.lists,
+                candidates.append(((pane.fits, shows, pane.lists, pane.pane_stats or not own,
                                     pane.trees or fold_trees, columns == preferred, table),
                                    pane))
     # What gives way first: the table, then the grid's best proportions, then the trees,
-    # then the lists, then the panes' own status lines; the map never (where it cannot show
+    # then the panes' own status lines, then the lists; the map never (where it cannot show
     # whole, it keeps MAP_MIN_LINES before the rest keep theirs).
     return max(candidates, key=lambda ranked: ranked[0])[1]
 
@@ -186,13 +192,14 @@ def _steady(steady: Arrangement, pane: Arrangement, steady_h: int, pane_h: int,
 
 def _pane(columns: int, rows: int, table: bool, pane_stats: bool, pane_w: int, pane_h: int,
           map_size: tuple[int, int], fold_trees: bool, lists_min: int,
-          beside_h: int, own_h: int) -> Arrangement:
+          beside_h: int, own_h: int, code: bool = False) -> Arrangement:
     """One pane's inside: its lists beside the map when the pane is much wider than tall and
     the whole map fits beside them (or would not fit whole under them either); else under
     the map when there is room for both.  ``pane_h``: the lines under the pane's own status
     lines when they span the pane; ``beside_h``: beside the lists (they wrap to more rows
     in the map's column alone), the lines the map's column has under them; ``own_h``: the
-    lines they take spanning the pane (the lists' column beside the map spans them too)."""
+    lines they take spanning the pane (the lists' column beside the map spans them too);
+    ``code``: the Code panel in the trees' place (its lines are long: they wrap)."""
     map_w, map_h = map_size
     need_w, need_h = 2 * map_w + 2, map_h + 2  # the smallest cells, in a border
     side = lists_width(pane_w)
@@ -205,24 +212,36 @@ def _pane(columns: int, rows: int, table: bool, pane_stats: bool, pane_w: int, p
                              # frontier's third keeping an entry in sight, as the trees'
                              code=pane_h + own_h >= TREES_BESIDE_MIN_HEIGHT)
         if beside.fits:
+            if code:  # the columns the map's cells leave blank: the code's, up to its lines
+                drawn = Geometry.fit(map_w, map_h, pane_w - side - 2, beside_h - 2).size[0] + 2
+                wide = min(CODE_COLUMN_WIDTH, pane_w - max(drawn, beside_w))
+                return Arrangement(columns, rows, table, pane_stats, True, max(side, wide), 0,
+                                   beside.trees, 0, True, pane_w, code=beside.code)
             return beside
         under = _under(columns, rows, table, pane_stats, pane_w, pane_h, map_size, fold_trees,
-                       lists_min)
+                       lists_min, own_h, code)
         return under if under.fits else beside  # under the map when it shows whole there
     return _under(columns, rows, table, pane_stats, pane_w, pane_h, map_size, fold_trees,
-                  lists_min)
+                  lists_min, own_h, code)
 
 
 def _under(columns: int, rows: int, table: bool, pane_stats: bool, pane_w: int, pane_h: int,
-           map_size: tuple[int, int], fold_trees: bool, lists_min: int) -> Arrangement:
+           map_size: tuple[int, int], fold_trees: bool, lists_min: int,
+           own_h: int = 0, code: bool = False) -> Arrangement:
     """One pane's inside with its lists under the map (or none, or the map scrolling): at
-    least ``lists_min`` lines."""
+    least ``lists_min`` lines; ``own_h``, the lines the pane's own status lines take above
+    them; ``code``: the Code panel in the lists, whose long lines wrap: the map's box then
+    has half the pane, not three fifths."""
     map_w, map_h = map_size
     need_w, need_h = 2 * map_w + 2, map_h + 2  # the smallest cells, in a border
     if need_h + lists_min <= pane_h:
         # The map's box: as tall as the map at the biggest cells that fit the pane's width
-        # and three fifths of its height; the lists get the rest.
-        fitted = Geometry.fit(map_w, map_h, pane_w - 2, max(1, pane_h * 3 // 5 - 2)).size[1]
+        # and three fifths of its height (half beside the Code panel's long lines, which
+        # wrap) with its own status lines at their least (rows
+        # more in them, wrapped, take from the lists, not from the map's cells); the lists
+        # get the rest.
+        share = (pane_h + own_h - min(own_h, PANE_STATS_HEIGHT)) * (5 if code else 6) // 10
+        fitted = Geometry.fit(map_w, map_h, pane_w - 2, max(1, share - 2)).size[1]
         box_h = min(pane_h - lists_min, max(need_h, fitted + 2))
         lists_h = pane_h - box_h
         return Arrangement(columns, rows, table, pane_stats, False, 0, lists_h,
@@ -240,11 +259,27 @@ def _under(columns: int, rows: int, table: bool, pane_stats: bool, pane_w: int, 
 
 
 
+#: Beside the map, what is under the frontier (the tree, the Code panel) keeps at least this
+#: many lines of the column: its border and three.
+UNDER_FRONTIER_MIN = 5
+
+
+def frontier_lines(column: int, need: int) -> int | None:
+    """The frontier's lines in the lists' column beside the map, ``column`` lines tall, above
+    the tree or the Code panel: what its count and the entries down to the newest ``need``
+    (its border included), so that those are in sight before the panel under it gets lines,
+    while that one keeps UNDER_FRONTIER_MIN; None (a third, as app.tcss has it) when a third
+    is enough, or when even those lines would not show them (the panel shows its front)."""
+    if need <= column // 3 or need > column - UNDER_FRONTIER_MIN:
+        return None
+    return need
+
+
 def lesson_width(screen_width: int) -> int:
     """The lesson's column beside the panes (``--lesson``): two fifths of the screen, 28
     columns at least and 56 at most."""
     return max(28, min(56, screen_width * 2 // 5))
 
 
-__all__ = ["CODE_MIN_HEIGHT", "MAP_MIN_LINES", "Arrangement", "arrange", "lesson_width",
-           "own_lines", "pane_grid"]
+__all__ = ["CODE_MIN_HEIGHT", "MAP_MIN_LINES", "Arrangement", "arrange", "frontier_lines",
+           "lesson_width", "own_lines", "pane_grid"]

@@ -35,6 +35,9 @@ BOUND_RANK, PLAYING_RANK, PEAK_RANK, DONE_RANK, FRONTIER_RANK = 9, 8, 7, 6, 3
 #: The narration's naming of the code's lines (the Code panel shown) is shortened at this
 #: rank ("line 8 skipped 4"), and goes at the next (after the counts of lesser note).
 NOTES_RANK, NOTES_SHORT_RANK = 7, 2
+#: Where the panes have no lines of their own, a search's path's moves go (its counts stay)
+#: when the rows under the panes run out, after the playing speed.
+PATH_RANK = 5
 #: The step and the nodes expanded are what the lessons count: they never go (rank 0), they
 #: take another row instead (as the path's moves and cost do).
 RANKS = {"discarded": 5, "generated": 4, "step": 0, "expanded": 0}
@@ -114,8 +117,9 @@ def lockstep_status(labels: list[str], *, playing: str = "", note: str = "",
     if playing:
         status.append(Piece([(playing, "stats--play")], PLAYING_RANK, SEP))
     lines = [Line(status)]
-    if runs:
-        lines.append(Line([Piece(_counts(label, run), 0, SEP)
+    if runs:  # a search's path goes to its counts alone when the rows run out (4 searches)
+        lines.append(Line([Piece(_counts(label, run) + _path(run), PATH_RANK, SEP,
+                                 _counts(label, run))
                            for label, run in zip(labels, runs, strict=True)]))
     line = [Piece([(note, "stats--note")] if note else [(sentence, "stats--narration")])]
     return Status([*lines, Line(line, prose=True)], MAX_ROWS)
@@ -128,6 +132,17 @@ def _counts(label: str, run: Run) -> list[tuple[str, str]]:
         if RANKS.get(count) == 0:
             parts += [(f" {count} ", "stats--label"), (value, "stats--value")]
     return parts
+
+
+def _path(run: Run) -> list[tuple[str, str]]:
+    """`` path 7 moves`` (or `` no path``) once ``run`` is at its end: what its pane's own
+    lines said that a lesson is about (none before)."""
+    if not run.at_end or run.gave_up:
+        return []
+    moves = run.moves()
+    if run.found and moves is not None:
+        return [(" path ", "stats--label"), (f"{len(moves)} moves", "stats--result")]
+    return [(" no path", "stats--no-path")]
 
 
 def playing_text(session: Session) -> str:

@@ -17,7 +17,9 @@ stays cheap however big the run grows:
   C-speed ``list.index`` and a slice assignment); a jump rebuilds it in O(nodes) from the
   record.  Tree guides (``│ ├─ └─``) are drawn per visible line from the record's parent
   array (O(depth), capped at :data:`~tui_search.tui.view.tree_shape.MAX_LEVELS`).
-* **focused** (bigger trees): the chain of ancestors from START to the node being expanded --
+* **focused** (bigger trees, and those deeper than the listing's guides can draw,
+  :data:`~tui_search.tui.view.tree_shape.MAX_LEVELS`: a line there would stand as far in
+  as its parent's): the chain of ancestors from START to the node being expanded --
   one line per edge, each saying which of its parent's children it is -- then that node's
   children.  Only the deepest :data:`~tui_search.tui.view.tree_shape.SHOW_LEVELS` edges are
   listed (START and a "⋮ N levels not shown" line stand above them).  The chain is kept from
@@ -84,6 +86,7 @@ class TreeModel:
         self._k = -1
         self._root = -1
         self._mode = ""  # "list" or "focus"
+        self._listed = False  # the listing kept in step (a small tree, listed or too deep)
         self._current = -1  # event expanded at the position (-1 at step 0)
         self._current_discarded = False  # ...or taken off and discarded
         self._ended = False  # the run at its end: nothing is being expanded any more
@@ -143,9 +146,9 @@ class TreeModel:
         size = run.now.tree_size()
         moved = run is not self._run or k != self._k
         same_tree = run is self._run and root == self._root
-        mode = "list" if size <= SMALL_TREE else "focus"
-        if mode == "list":
-            if not (same_tree and self._mode == "list" and abs(k - self._k) <= INCREMENTAL_STEPS):
+        listed = size <= SMALL_TREE
+        if listed:
+            if not (same_tree and self._listed and abs(k - self._k) <= INCREMENTAL_STEPS):
                 self._order, self._depth, self._expanded = build_listing(run, root, k)
             else:
                 listing = self._order, self._depth, self._expanded
@@ -153,12 +156,19 @@ class TreeModel:
                     listing_forward(run, root, j, *listing)
                 for j in range(self._k, k, -1):
                     listing_backward(run, root, j, *listing)
-            self._chain, self._chain_pos, self._top_depth = [], {}, None
         else:
             self._order, self._depth, self._expanded = [], array("i"), set()
+        # deeper than the listing's guides can draw, a node's line would stand as far in as
+        # its parent's: the path to the node being expanded, its depths counted, instead
+        deep = listed and bool(self._depth) and max(self._depth) > MAX_LEVELS
+        mode = "list" if listed and not deep else "focus"
+        if mode == "list":
+            self._chain, self._chain_pos, self._top_depth = [], {}, None
+        else:
             self._focus(run, same_tree and self._mode == "focus", run.steps.expanded_event(k))
             self._kids = run.now.added_now()
         self._run, self._k, self._root, self._mode = run, k, root, mode
+        self._listed = listed
         self._current = run.steps.expanded_event(k) if k else -1
         self._current_discarded = bool(k) and run.steps.is_discarded(k)
         self._ended = run.at_end
@@ -177,6 +187,18 @@ class TreeModel:
         if self._current < 0:
             return 1
         return 1 + self._order.index(self._current)
+
+    def parent_line(self) -> int | None:
+        """The line of the parent of the node being expanded (None: the root, or step 0)."""
+        run = self._run
+        if run is None or self._current < 0:
+            return None
+        if self._mode == "focus":
+            line = self.current_line() - 1
+            return line if line >= self._head() else None
+        parent = run.nodes.parent(self._current)
+        return None if parent < 0 or parent not in self._expanded else (
+            1 + self._order.index(parent))
 
     def line(self, y: int) -> Parts:
         """Line ``y`` of the whole view as (text, role) pieces; ``[]`` past it."""
@@ -225,6 +247,11 @@ class TreeModel:
         """Lines above the chain in the focused view: the note (and START, "⋮"); above the
         listing: the count."""
         return 3 if self._elided else 1
+
+    def depth_width(self) -> int:
+        """Width of the focused view's depth column, which stays in view when the panel is
+        scrolled sideways (0: none, or the depth is not counted)."""
+        return self._depth_width() if self._mode == "focus" else 0
 
     def _depth_width(self) -> int:
         """Width of the focused view's depth column (0 when the depth is not counted)."""

@@ -1,6 +1,7 @@
 """One widget a module: the map, the panes' panels, the lines under them.
 
 * :mod:`~tui_search.tui.widgets.run_pane`: a search's pane;
+* :mod:`~tui_search.tui.widgets.pane_box`: the panes' grid, which says when its room changes;
 * :mod:`~tui_search.tui.widgets.grid_view`: the map, drawn with the line API;
 * :mod:`~tui_search.tui.widgets.map_lines`: what each row of the map draws;
 * :mod:`~tui_search.tui.widgets.cell_style`: how each map cell looks;

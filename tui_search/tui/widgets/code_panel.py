@@ -21,7 +21,7 @@ from typing import TYPE_CHECKING, Any, ClassVar
 
 from textual.geometry import Region, Size
 
-from tui_search.tui.view.code_trace import code_of, focus_line, lit_lines
+from tui_search.tui.view.code_trace import code_of, focus_line, lit_lines, named_lines
 from tui_search.tui.view.pieces import Parts
 from tui_search.tui.widgets.line_panel import LinePanel
 from tui_search.tui.widgets.scrollbars import set_virtual_size
@@ -91,6 +91,7 @@ class CodePanel(LinePanel):
         self.code: Pseudocode | None = None
         self.lit: frozenset[int] = frozenset()
         self.focus_number: int | None = None  # the lit line kept in view (None: the first)
+        self.named: list[int] = []  # the lit lines the narration names: kept in view first
         self._rows: list[Parts] = []
         self._key: tuple[object, ...] = ()
 
@@ -101,6 +102,7 @@ class CodePanel(LinePanel):
         if (code, lit, focus) == (self.code, self.lit, self.focus_number) and self._rows:
             return
         self.code, self.lit, self.focus_number = code, lit, focus
+        self.named = named_lines(run)
         self.show_titles((f"Code · {code.title}", f"Code · {run.algo.short}", "Code"),
                          LEGENDS)
         self._lay_rows()
@@ -136,8 +138,9 @@ class CodePanel(LinePanel):
         return range(top, starts[number] if number < len(starts) else len(rows))
 
     def _scroll_to_lit(self) -> None:
-        """The lit lines in view, from the first: those down to the focus line when they
-        fit, else the focus line from its top."""
+        """The lit lines in view, from the first, when they fit; else from the first down
+        to the last the narration names (the push, the focus line), or as many lit lines
+        above those as fit (from a line's first row); else the focus line from its top."""
         window = self.scrollable_content_region
         lit = self.lit_rows()
         if not window or not lit:
@@ -145,10 +148,20 @@ class CodePanel(LinePanel):
         top, bottom = lit[0], lit[-1] + 1
         while bottom < len(self._rows) and not self._rows[bottom][0][0].strip():
             bottom += 1  # the last lit line's wrapped rows
-        number = self.focus_number
-        focus = self.line_rows(number) if number is not None else range(0)
-        if focus and focus.stop - top > window.height:  # not all at once: the focus line
-            top, bottom = focus.start, focus.stop
+        spans = [self.line_rows(n) for n in self.named]
+        named = range(min(r.start for r in spans), max(r.stop for r in spans)) \
+            if spans and all(spans) else range(0)
+        if bottom - top > window.height and named:
+            if named.stop - named.start <= window.height:  # the named lines, and above
+                top = min(r.start for r in (self.line_rows(n) for n in self.lit)
+                          if r and r.start >= named.stop - window.height)
+                self.scroll_to(0, min(top, named.start), animate=False, immediate=True,
+                               force=True)  # from a line's first row
+                return
+            else:  # not all at once: the focus line
+                number = self.focus_number if self.focus_number is not None else self.named[0]
+                focus = self.line_rows(number)
+                top, bottom = focus.start, focus.stop
         self.scroll_to_region(Region(0, top, 1, min(bottom - top, window.height)),
                               animate=False, immediate=True, force=True)
 

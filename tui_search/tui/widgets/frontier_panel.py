@@ -245,6 +245,14 @@ class FrontierPanel(LinePanel):
             self.scroll_to(0, 0, animate=False, immediate=True, force=True)
         self.refresh_changed()
 
+    def rows_in_sight(self) -> int:
+        """The rows that show the entries the step just added (and the count above them):
+        a stack's are on top, a queue's (and a trace's, as added) at the back, a priority
+        queue's anywhere: all of its rows."""
+        if self._kind is Frontier.LIFO and self._by_cell is None:
+            return self._top() + max(1, len(self._added)) * self._rows_per()
+        return self.virtual_size.height
+
     def _rows_per(self) -> int:
         """The rows each entry takes (more than one in a panel too narrow for it)."""
         return 1 if self._rows is None else len(self._rows.rows)
@@ -367,7 +375,14 @@ class FrontierPanel(LinePanel):
             return entry_row(run, g, self._rows, row, marks, widths)
         hint = (self._hint_col, end_hint(self._kind, y, n) if self._by_cell is None else ""
                 ) if self._hints_fit() else None
-        return entry_line(run, g, marks, widths, self._squeeze, self._iddfs, hint)
+        parts = entry_line(run, g, marks, widths, self._squeeze, self._iddfs, hint)
+        room, squeeze = self.scrollable_content_region.width, self._squeeze
+        while room and squeeze < 2 and self._cost_w and length(parts) > room:
+            # a figure longer than the map's diagonal (f 10.07 beside 7.07): this entry's
+            # figures pressed closer, so that no number is cut
+            squeeze += 1
+            parts = entry_line(run, g, marks, widths, squeeze, self._iddfs, None)
+        return parts
 
     def line_band(self, y: int) -> Style | None:
         """The entry expanded next is highlighted across the whole line (all its rows), like

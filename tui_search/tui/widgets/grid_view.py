@@ -232,10 +232,14 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         the border): fit the cells to it, then ask for the map's width."""
         area = (container.width, container.height)
         if area != self._area:
-            self._area = area
+            first, self._area = self._area is None, area
             if self._fit():
                 self._update_virtual_size(layout=False)
-                self.refresh()
+                # Textual keeps the size a widget took in each room it was offered, and
+                # offered one of them again takes it without asking here: a layout to come
+                # asks anew (else the cells fitted to the rooms since stayed: a map at 2x1
+                # in a box sized for 4x2, after a resize and back)
+                self.refresh(layout=not first)
                 self.call_after_refresh(self.follow, self.cursor)
         return self.virtual_size.width
 

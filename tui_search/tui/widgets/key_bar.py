@@ -29,6 +29,15 @@ Hint = tuple[list[tuple[str, str, bool]], str, bool]
 
 #: The importance of a raised hint: above every other but help's and quit's (10).
 RAISED = 9
+#: Between the keys of one hint when one of them is a word (``pgdn/pgup``): keys of a
+#: character each read as a row of keys (``np``, ``123456``), a word's would run together.
+KEY_SEP = "/"
+
+
+def key_gaps(keys: list[tuple[str, str, bool]]) -> str:
+    """What goes between two keys of a hint: nothing when each is one character, else
+    :data:`KEY_SEP`."""
+    return KEY_SEP if any(cell_len(display) > 1 for display, _, _ in keys) else ""
 
 
 class KeyBar(Widget):
@@ -140,7 +149,8 @@ class KeyBar(Widget):
         width = self.content_size.width if width is None else width
         hints = self._hints()
         sizes = [
-            sum(cell_len(display) for display, _, _ in keys) + 1 + cell_len(description)
+            sum(cell_len(display) for display, _, _ in keys)
+            + cell_len(key_gaps(keys)) * (len(keys) - 1) + 1 + cell_len(description)
             for (keys, description, _), _ in hints
         ]
         kept = list(range(len(hints)))
@@ -166,7 +176,11 @@ class KeyBar(Widget):
             if n:
                 segments.append(Segment("  ", base))
                 x += 2
-            for display, key, key_enabled in keys:
+            gap = key_gaps(keys)
+            for i, (display, key, key_enabled) in enumerate(keys):
+                if i and gap:
+                    segments.append(Segment(gap, description_style))
+                    x += cell_len(gap)
                 self._spans.append((x, x + cell_len(display), key))
                 segments.append(Segment(display, key_style if key_enabled else disabled_style))
                 x += cell_len(display)

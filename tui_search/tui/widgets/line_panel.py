@@ -186,6 +186,11 @@ class LinePanel(QuietScrollbars, CachedStyles, ScrollView, can_focus=True):
         """The line of the list that row ``y`` of the panel shows."""
         return y if y < self.pinned_rows() else self.scroll_offset.y + y
 
+    def windowed(self, parts: Parts, x: int, width: int) -> tuple[Parts, int]:
+        """A line's ``parts`` as a window ``width`` wide from column ``x`` shows them, and
+        the column of those parts the window starts at: here no half word at either edge."""
+        return words_from(whole_words(parts, x + width), x), x
+
     def render_line(self, y: int) -> Strip:
         width = self.scrollable_content_region.width
         base = self.cached_style()
@@ -194,7 +199,7 @@ class LinePanel(QuietScrollbars, CachedStyles, ScrollView, can_focus=True):
         parts = self.line_parts(line)
         if not parts:
             return Strip.blank(width, base)
-        parts = words_from(whole_words(parts, scroll_x + width), scroll_x)
+        parts, scroll_x = self.windowed(parts, scroll_x, width)
         style = self.cached_style
         band = self.line_band(line)
         if band is None:

@@ -17,7 +17,7 @@ from textual.widgets import Static
 
 from tui_search.engine.maps.grid import Cell, Grid
 from tui_search.engine.run.recorded import Run
-from tui_search.tui.view.layout import Arrangement
+from tui_search.tui.view.layout import Arrangement, frontier_lines
 from tui_search.tui.view.status_lines import search_status
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.grid_view import GridView
@@ -48,6 +48,7 @@ class RunPane(Vertical):
         self.map_box = Vertical(classes="pane-map-box")  # the room the map's cells fit
         self.lists = Vertical(classes="pane-lists")
         self._run: Run | None = None  # the run last shown: the Code panel shows it on unfolding
+        self._frontier_lines: int | None = None  # set beside the map (None: app.tcss's)
 
     def compose(self) -> ComposeResult:
         # The parts a layout may leave hidden (the Code panel, the note, the pane's own status
@@ -78,17 +79,17 @@ class RunPane(Vertical):
         return self._code.made is not None and not self._code.made.has_class("-folded")
 
     def lay_out(self, arrangement: Arrangement, code: bool = False,
-                restyle: bool = True) -> None:
+                restyle: bool = True, level_width: int = 0) -> None:
         """Lay the pane out: its lists beside or under the map, or not at all; its trees and
         its own status lines shown or not; with ``code``, the Code panel in the tree's place
-        (where the arrangement has room for it: fewer lines than a tree needs).  ``restyle=False``:
-        the classes are set and left for the next restyle of the screen."""
+        (where the arrangement has room for it: fewer lines than a tree needs).
+        ``restyle=False``: the classes are set and left for the next restyle of the screen;
+        ``level_width``: the narrowest pane's width, its status lines take as many rows as
+        the tallest's there."""
         self.set_class(arrangement.beside, "-beside", update=restyle)
         self.stats.display = arrangement.pane_stats
-        beside = arrangement.lists_width if arrangement.beside else 0
-        if beside != self.stats.beside:  # its lines wrap at another width
-            self.stats.beside = beside
-            self.stats.refresh(layout=True)
+        # its lines wrap at another width
+        self.stats.set_room(arrangement.lists_width if arrangement.beside else 0, level_width)
         self._show_part(self.stats, arrangement.pane_stats)
         lists = self.lists
         lists.display = arrangement.lists
@@ -113,6 +114,23 @@ class RunPane(Vertical):
             self.code_panel.show(self._run)  # folded, it was not kept up to date
         # room for the map's title where the pane has it, else the map as narrow as it is
         self.view.styles.min_width = min(MAP_TITLE_WIDTH, max(0, arrangement.pane_width - 2))
+        self._split_column()
+
+    def _split_column(self) -> None:
+        """In the lists' column beside the map, the frontier's lines: what its entries need
+        before the tree or the Code panel under it gets lines
+        (:func:`~tui_search.tui.view.layout.frontier_lines`)."""
+        frontier = self.frontier
+        under = not self.tree_panel.has_class("-folded") or self.code_shown
+        lines = None
+        if self.has_class("-beside") and under and self.size.height:
+            need = frontier.rows_in_sight() + frontier.styles.gutter.height
+            lines = frontier_lines(self.size.height, need)
+        if lines != self._frontier_lines:  # a layout only when they change
+            self._frontier_lines = frontier.styles.height = lines
+
+    def on_resize(self) -> None:
+        self._split_column()
 
     def show(self, run: Run | None, changed: list[Cell] | None, *, follow: bool = True,
              hide_order: bool = False, title: str = "", mark: Cell | None = None) -> None:
@@ -127,6 +145,7 @@ class RunPane(Vertical):
         self._show_part(self.side_note, run is None)
         if run is not None:
             self.frontier.show(run, hide_order=hide_order)
+            self._split_column()
             self.tree_panel.show(run)
             if self.code_shown:
                 self.code_panel.show(run)

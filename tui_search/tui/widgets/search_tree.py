@@ -26,6 +26,7 @@ from tui_search.engine.util.numbers import group_digits
 from tui_search.tui.view.pieces import Parts
 from tui_search.tui.view.tree_listing import GLYPH_EXPANDED, GLYPH_FRONTIER, GLYPH_GOAL, TreeModel
 from tui_search.tui.view.tree_listing import Parts as TreeParts
+from tui_search.tui.view.tree_window import label_span, tree_window
 from tui_search.tui.widgets.line_panel import LinePanel
 from tui_search.tui.widgets.scrollbars import set_virtual_size
 
@@ -128,9 +129,19 @@ class SearchTreePanel(LinePanel):
         """Line ``y`` as (text, component class) pieces; ``[]`` past the end."""
         return [(text, PREFIX + role) for text, role in self.model.line(y)]
 
+    def windowed(self, parts: Parts, x: int, width: int) -> tuple[Parts, int]:
+        """A row shows its node whole or says it is cut: a node left of the window at its
+        edge after ``◂``, a label past its right edge cut at a word before ``▸``
+        (:func:`~tui_search.tui.view.tree_window.tree_window`)."""
+        shown = tree_window([(text, role[len(PREFIX):]) for text, role in parts], x, width)
+        if shown is None:
+            return super().windowed(parts, x, width)
+        return [(text, PREFIX + role) for text, role in shown if text], 0
+
     def _scroll_to_current(self) -> None:
         """Bring the node being expanded and its children into view (once laid out), below
-        the pinned count, scrolled sideways only as far as :func:`scroll_column` says."""
+        the pinned count, and its parent when there is room for it too; scrolled sideways
+        only as far as :func:`scroll_column` says."""
         window = self.scrollable_content_region
         if not window:
             self._pending_scroll = True  # done on the first Resize
@@ -140,10 +151,15 @@ class SearchTreePanel(LinePanel):
         top = self.pinned_rows()
         y = model.current_line()
         height = max(1, min(1 + len(model.kids), window.height - top))
-        x = scroll_column([model.line(y + i) for i in range(height)], window.width)
+        # (the focused view's depth column stays at the left edge: the rest scrolls)
+        x = scroll_column([model.line(y + i) for i in range(height)],
+                          window.width - model.depth_width())
         scroll_y = self.scroll_offset.y
-        if y < scroll_y + top:
-            scroll_y = y - top
+        parent = model.parent_line()  # the node's parent in view too, when there is room
+        first = parent if parent is not None and y + height - parent <= window.height - top \
+            else y
+        if first < scroll_y + top:
+            scroll_y = first - top
         elif y + height > scroll_y + window.height:
             scroll_y = y + height - window.height
         self.scroll_to(x, max(0, scroll_y), animate=False, immediate=True, force=True)
@@ -153,24 +169,15 @@ class SearchTreePanel(LinePanel):
             self._scroll_to_current()  # the first time, or a width that changes what fits
 
 
-def label_span(parts: TreeParts) -> tuple[int, int]:
-    """The columns of a tree line's label (glyph, move, cell): after its depth and guides,
-    before its suffix and sibling count."""
-    start = 0
-    for text, role in parts:
-        if role not in ("guide", "detail"):
-            return start, start + len(text)
-        start += len(text)
-    return start, start
-
-
 def scroll_column(lines: list[TreeParts], width: int) -> int:
     """The first column shown of a tree whose node being expanded is ``lines[0]`` and its
     children the others: 0 when all their labels fit ``width`` from there; else the first
     boundary of a guide (every 3 columns after the depth) from which they fit, else the
-    node's label's start: never inside a word (and the node's label always in view)."""
+    node's link to its parent (``└─``, its label beside it), else the node's label's start:
+    never inside a word (and the node's label always in view; a child's cut at the right
+    edge says so: :mod:`~tui_search.tui.view.tree_window`)."""
     spans = [label_span(parts) for parts in lines]
-    start, right = spans[0][0], max(end for _, end in spans)
+    (start, end), right = spans[0], max(end for _, end in spans)
     if right <= width:
         return 0
     text = "".join(text for text, _ in lines[0])
@@ -178,7 +185,9 @@ def scroll_column(lines: list[TreeParts], width: int) -> int:
     for column in range(depth, start, 3):
         if right - column <= width and (column == 0 or text[column - 1] == " "):
             return column
-    return start
+    # the node's own link to its parent ("└─ ") in view when its label fits beside it
+    linked = start - 3
+    return linked if linked >= depth and end - linked <= width else start
 
 
 __all__ = ["PREFIX", "SearchTreePanel", "scroll_column"]

@@ -61,12 +61,23 @@ class Stats(PartsLines):
         #: Textual sizes a split widget against its whole container, not the room the
         #: splits before it left, so its height is worked out at the width it really gets.
         self.beside = 0
+        #: The lines of the panes beside (a pane's own lines, the others' included): each
+        #: takes as many rows as the tallest would in the narrowest pane (``level_width``
+        #: columns, its padding included), so the maps under them start on one row and
+        #: their cells' rows are level.
+        self.peers: list[Stats] = []
+        self.level_width = 0
 
     def show(self, lines: list[Line], max_rows: int) -> None:
         """Show ``lines`` (:mod:`tui_search.tui.view.status_lines`): the counts, then the
         narration; at most ``max_rows`` rows while some piece can go."""
         self.MAX_ROWS = max_rows
+        before = self._level_rows()
         if self.set_lines(lines):
+            if self.peers and self._level_rows() != before:
+                for peer in self.peers:  # they take as many rows as the tallest
+                    if peer is not self and peer.display:
+                        peer.refresh(layout=True)
             *counts, narration = lines
             self.status_text = " ".join(line_text(line.pieces) for line in counts)
             self.narration_text = line_text(narration.pieces)
@@ -74,8 +85,22 @@ class Stats(PartsLines):
                                        for piece in line.pieces
                                        for parts in (piece.parts, piece.short) if parts)
 
+    def set_room(self, beside: int, level_width: int) -> None:
+        """The columns the lists beside it take, and the narrowest pane's width (0: no
+        peers to be level with): laid out anew when they changed."""
+        if (beside, level_width) != (self.beside, self.level_width):
+            self.beside, self.level_width = beside, level_width
+            self.refresh(layout=True)
+
+    def _level_rows(self) -> int:
+        """The rows its lines take in the narrowest pane (0: no peers)."""
+        if not self.peers or not self.level_width:
+            return 0
+        return self.height_at(self.level_width - self.styles.gutter.width - self.beside)
+
     def get_content_height(self, container: object, viewport: object, width: int) -> int:
-        return len(self.rows(max(1, width - self.beside)))
+        return max([len(self.rows(max(1, width - self.beside))),
+                    *(peer._level_rows() for peer in self.peers if peer.display)])
 
     @property
     def wrapped(self) -> int:
