@@ -26,6 +26,7 @@ from hypothesis import strategies as st
 from tests.helpers import MAPS
 from tui_search.engine.course.exercise_file import MAX_EXERCISE_BYTES, load_exercise
 from tui_search.engine.course.lesson import MAX_LESSON_BYTES, read_lesson
+from tui_search.engine.maps.graph_file import MAX_GRAPH_BYTES, load_graph
 from tui_search.engine.maps.load import load_map
 from tui_search.engine.maps.read import MAX_MAP_BYTES, MapError
 from tui_search.engine.maps.scenarios import MAX_SCEN_BYTES, load_scenario
@@ -91,6 +92,12 @@ READERS = [
            "version 1\n0\tm.map\t9\t9\t0\t0\t8\t8\t11.3\n", brackets, (
                lambda n: "version 1\n" + "0\tm.map\t9\t9\t0\t0\t8\t8\t11.3\n" * (n // 31),
                lambda n: "version 1\n" + "\n" * n,
+           )),
+    Reader("graph", load_graph, MAX_GRAPH_BYTES, "edge A B 2\nedge B C\nstart A\ngoal C\n",
+           lambda n: "edge " + brackets(n) + " B\n", (
+               lambda n: "".join(f"edge a{i} b{i}\n" for i in range(n // 14)),
+               lambda n: "".join(f"node n{i} {i} 1\n" for i in range(n // 16)),
+               lambda n: "edge A B\n" + "; c\n" * (n // 4),
            )),
     Reader("trace", lambda p: load_trace(p, TRACE_MAP), MAX_TRACE_BYTES,
            (Path(__file__).parents[2] / "examples" / "student_bfs.jsonl").read_text(),

@@ -1,6 +1,9 @@
-"""The map and its files: the grid, the formats read and written, and the generators.
+"""The maps and their files: the grid and the graph, the formats read and written, and the
+generators.
 
 * :mod:`~tui_search.engine.maps.grid`: the map model: size, obstacles, costs, start, goal, moves;
+* :mod:`~tui_search.engine.maps.graph`: the graph model: named nodes, roads, start, goals, h;
+* :mod:`~tui_search.engine.maps.graph_file`: ``.graph`` files, and the built-in Romania;
 * :mod:`~tui_search.engine.maps.source`: the file a grid was read from, and its format;
 * :mod:`~tui_search.engine.maps.read`: what every reader shares: ``MapError``, reading safely;
 * :mod:`~tui_search.engine.maps.load`: loading a map file of either format;
