@@ -6,11 +6,19 @@ machine generating an example can take seconds, which says nothing about the cod
 The suite leaves the clone as it found it: a file or folder that a test made or changed in the
 repository (a served app's save folder in ``maps/``, a screenshot in the current folder) fails
 the run, named (:func:`pytest_sessionfinish`; not with ``--snapshot-update``, which is meant
-to change files)."""
+to change files).
+
+Tiers (:func:`pytest_collection_modifyitems`, docs/testing-tiers.md): a test that drives the
+app is marked ``app`` by what it uses, not by hand; the tests that build, serve or start whole
+programs are marked ``slow``.  ``pytest -m "not app and not slow"`` is the fast tier."""
 
 from __future__ import annotations
 
+import ast
+import functools
+import inspect
 import subprocess
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
@@ -68,3 +76,102 @@ def pytest_sessionfinish(session: pytest.Session, exitstatus: int) -> None:
 
 
 _BEFORE = pytest.StashKey[set[str] | None]()
+
+
+# -- Tiers ------------------------------------------------------------------------------------
+
+#: Fixtures that drive the app: a test using one is marked ``app``.
+APP_FIXTURES = frozenset({"snap_compare"})
+
+#: Modules marked ``slow`` whole (their paths from tests/), each for what makes it slow.
+SLOW_MODULES = {
+    # pip builds the sdist and the wheel, compiles the C core and installs in fresh venvs
+    "test_build.py",
+    # each test starts the server (``tui-search --serve``) and its apps as processes
+    "test_serve.py",
+    "test_serve_trust.py",
+}
+TESTS = ROOT / "tests"
+
+
+def drives_the_app(item: pytest.Item) -> bool:
+    """Does this test run the app under Pilot?  It uses a fixture of :data:`APP_FIXTURES` (or
+    a fixture of the tests' own that does what follows), or its source calls ``run_test(``,
+    itself or through a function of the tests that it names (``tutorial_in_big_cells``,
+    ``least_difference``, ... followed from module to module)."""
+    names = getattr(item, "fixturenames", ())
+    if APP_FIXTURES & set(names):
+        return True
+    fixtures = getattr(getattr(item, "_fixtureinfo", None), "name2fixturedefs", {})
+    if any(_runs_the_app(d.func) for name in names for d in fixtures.get(name, ())):
+        return True
+    function = getattr(item, "function", None)
+    return function is not None and _runs_the_app(function)
+
+
+def _runs_the_app(function: Callable[..., object]) -> bool:
+    """Does ``function``'s source (its nested functions in it) call ``run_test(``, or name a
+    function of the tests that does?  A function being asked about counts as not (a cycle)."""
+    function = _inner(function)
+    code = getattr(function, "__code__", None)
+    if code is None:
+        return False
+    if code not in _RUNS_THE_APP:
+        _RUNS_THE_APP[code] = False
+        calls, names = _functions_in(code.co_filename).get(code.co_firstlineno, (False, ()))
+        scope = getattr(function, "__globals__", {})
+        _RUNS_THE_APP[code] = calls or any(
+            _is_the_tests(scope.get(name)) and _runs_the_app(scope[name]) for name in names)
+    return _RUNS_THE_APP[code]
+
+
+_RUNS_THE_APP: dict[object, bool] = {}
+
+
+def _inner(function: Callable[..., object]) -> Callable[..., object]:
+    """The function as written: under its decorators (``functools.wraps``), and under
+    Hypothesis's ``@given`` (whose wrapper is compiled in a module of its own)."""
+    function = inspect.unwrap(function)
+    inner = getattr(getattr(function, "hypothesis", None), "inner_test", None)
+    return function if inner is None else inspect.unwrap(inner)
+
+
+def _is_the_tests(thing: object) -> bool:
+    """Is ``thing`` a function written in the tests (not the app's, not a library's)?"""
+    module = getattr(thing, "__module__", None) or ""
+    return (callable(thing) and (module == "tests" or module.startswith("tests."))
+            and inspect.isfunction(_inner(thing)))
+
+
+@functools.cache
+def _functions_in(filename: str) -> dict[int, tuple[bool, frozenset[str]]]:
+    """Every function in a file (by the line its code starts on: its first decorator's):
+    whether its text holds ``run_test(``, and the names it uses."""
+    try:
+        text = Path(filename).read_text(encoding="utf-8")
+    except OSError:
+        return {}
+    lines = text.splitlines()
+    found = {}
+    for node in ast.walk(ast.parse(text)):
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            first = min([node.lineno, *(d.lineno for d in node.decorator_list)])
+            body = "\n".join(lines[first - 1:node.end_lineno])
+            names = frozenset(n.id for n in ast.walk(node) if isinstance(n, ast.Name))
+            found[first] = ("run_test(" in body, names)
+    return found
+
+
+def is_slow(item: pytest.Item) -> bool:
+    """Is this test in one of :data:`SLOW_MODULES`?"""
+    path = Path(item.path).resolve()
+    return path.is_relative_to(TESTS) and path.relative_to(TESTS).as_posix() in SLOW_MODULES
+
+
+@pytest.hookimpl(tryfirst=True)  # before ``-m`` deselects by the marks
+def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
+    for item in items:
+        if drives_the_app(item):
+            item.add_marker(pytest.mark.app)
+        if is_slow(item):
+            item.add_marker(pytest.mark.slow)
