@@ -1,0 +1,128 @@
+"""The tiers (docs/testing-tiers.md): tests/conftest.py's hook marks ``app`` every test that
+drives the app, whatever way it does (a snapshot, ``run_test`` in the test, in a helper of its
+module or of another, under ``@given``, in a fixture), and no test that does not; ``slow`` the
+build and serve modules.  ``--strict-markers`` makes a misspelt mark an error."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from types import SimpleNamespace
+from typing import Any
+
+import pytest
+
+from tests import test_readme
+from tests.conftest import (
+    ROOT,
+    SLOW_MODULES,
+    drives_the_app,
+    is_slow,
+    pytest_collection_modifyitems,
+)
+from tests.helpers import TUTORIAL
+from tests.tui import (
+    test_cells,
+    test_file_names,
+    test_quiz,
+    test_quiz_snapshots,
+    test_session,
+    test_themes,
+)
+from tui_search.engine.maps.load import load_map
+from tui_search.tui.app import SearchApp
+
+
+class FakeItem:
+    """What the hook reads of a collected test, and the marks it adds."""
+
+    def __init__(self, function: Any = None, fixtures: dict[str, Any] | None = None,
+                 path: Path = ROOT / "tests" / "test_example.py") -> None:
+        self.function = function
+        self.fixturenames = list(fixtures or {})
+        self._fixtureinfo = SimpleNamespace(name2fixturedefs={
+            name: [SimpleNamespace(func=func)] for name, func in (fixtures or {}).items()})
+        self.path = path
+        self.marks: list[str] = []
+
+    def add_marker(self, mark: pytest.MarkDecorator) -> None:
+        self.marks.append(mark.name)
+
+
+def _not_a_fixture() -> None:
+    """A fixture of a library (not the tests'): not looked into."""
+
+
+async def _runs_the_tutorial() -> None:
+    async with SearchApp(load_map(TUTORIAL)).run_test() as pilot:
+        await pilot.press("n")
+
+
+def _example_calling_a_helper_that_runs_the_app() -> None:
+    import asyncio
+
+    asyncio.run(_runs_the_tutorial())
+
+
+def _example_fixture_running_the_app() -> Any:
+    return _runs_the_tutorial()
+
+
+def _example_naming_only_the_app() -> None:
+    assert SearchApp(load_map(TUTORIAL)).session.run is not None
+
+
+@pytest.mark.parametrize("item", [
+    # the snapshot fixture
+    FakeItem(test_quiz_snapshots.test_the_quiz_after_a_wrong_answer,
+             {"snap_compare": _not_a_fixture}),
+    # run_test in the test itself, under the tests' @sync
+    FakeItem(test_quiz.test_the_quiz_hides_the_order_asks_and_keeps_a_score),
+    # in a helper of its module: an async context manager, and a plain coroutine
+    FakeItem(test_cells.test_the_tutorial_fills_the_map_area_with_the_largest_cells_that_fit),
+    FakeItem(test_themes.test_the_colour_blind_theme_keeps_every_kind_of_cell_apart),
+    # under Hypothesis's @given, through a helper
+    FakeItem(test_file_names.test_no_typed_name_makes_the_app_raise),
+    FakeItem(_example_calling_a_helper_that_runs_the_app),
+    # a fixture of the tests' own
+    FakeItem(_example_naming_only_the_app, {"app": _example_fixture_running_the_app}),
+], ids=lambda item: item.function.__name__)
+def test_a_test_that_drives_the_app_is_marked_app(item: FakeItem) -> None:
+    assert drives_the_app(item)  # type: ignore[arg-type]
+    pytest_collection_modifyitems([item])  # type: ignore[list-item]
+    assert item.marks == ["app"]
+
+
+@pytest.mark.parametrize("item", [
+    FakeItem(test_session.test_one_search_is_one_pane_and_c_compares_the_pick),
+    FakeItem(test_themes.test_the_config_dir_is_the_tests_own),
+    FakeItem(test_readme.test_the_keys_table_names_every_key_the_app_binds),  # reads the app's bindings
+    FakeItem(_example_naming_only_the_app, {"other": _not_a_fixture}),  # builds, never runs
+], ids=lambda item: item.function.__name__)
+def test_a_test_that_does_not_drive_the_app_is_not_marked(item: FakeItem) -> None:
+    assert not drives_the_app(item)  # type: ignore[arg-type]
+    pytest_collection_modifyitems([item])  # type: ignore[list-item]
+    assert item.marks == []
+
+
+def test_the_build_and_serve_modules_are_slow_and_no_other() -> None:
+    for name in SLOW_MODULES:
+        assert (ROOT / "tests" / name).is_file(), name  # a module renamed is not left out
+    for name in ("test_build.py", "test_serve.py", "test_serve_trust.py"):
+        item = FakeItem(_example_naming_only_the_app, path=ROOT / "tests" / name)
+        assert is_slow(item)  # type: ignore[arg-type]
+        pytest_collection_modifyitems([item])  # type: ignore[list-item]
+        assert item.marks == ["slow"]
+    for name in ("engine/test_core.py", "tui/test_served_files.py", "test_cli.py"):
+        assert not is_slow(FakeItem(path=ROOT / "tests" / name))  # type: ignore[arg-type]
+
+
+def test_the_marks_are_registered_and_strict(pytestconfig: pytest.Config) -> None:
+    assert "--strict-markers" in pytestconfig.getini("addopts")
+    assert "-n" in pytestconfig.getini("addopts")  # the full suite still runs on 4 workers
+    registered = {line.split(":")[0] for line in pytestconfig.getini("markers")}
+    assert {"app", "slow"} <= registered
+
+
+def test_this_test_was_collected_unmarked(request: pytest.FixtureRequest) -> None:
+    assert request.node.get_closest_marker("app") is None
+    assert request.node.get_closest_marker("slow") is None
