@@ -28,6 +28,7 @@ from tests.tui import (
     test_session,
     test_themes,
 )
+from tests.tui.test_cells import tutorial_in_big_cells
 from tui_search.engine.maps.load import load_map
 from tui_search.tui.app import SearchApp
 
@@ -63,6 +64,11 @@ def _example_calling_a_helper_that_runs_the_app() -> None:
     asyncio.run(_runs_the_tutorial())
 
 
+async def _example_through_another_modules_helper() -> None:
+    async with tutorial_in_big_cells() as (app, _pilot, _view):
+        assert app.session.run is not None
+
+
 def _example_fixture_running_the_app() -> Any:
     return _runs_the_tutorial()
 
@@ -83,6 +89,7 @@ def _example_naming_only_the_app() -> None:
     # under Hypothesis's @given, through a helper
     FakeItem(test_file_names.test_no_typed_name_makes_the_app_raise),
     FakeItem(_example_calling_a_helper_that_runs_the_app),
+    FakeItem(_example_through_another_modules_helper),
     # a fixture of the tests' own
     FakeItem(_example_naming_only_the_app, {"app": _example_fixture_running_the_app}),
 ], ids=lambda item: item.function.__name__)
