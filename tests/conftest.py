@@ -96,8 +96,8 @@ TESTS = ROOT / "tests"
 
 def drives_the_app(item: pytest.Item) -> bool:
     """Does this test run the app under Pilot?  It uses a fixture of :data:`APP_FIXTURES` (or
-    a fixture of the tests' own that does what follows), or its source calls ``run_test(``,
-    itself or through a function of the tests that it names (``tutorial_in_big_cells``,
+    a fixture of the tests' own that does what follows), or it calls ``run_test``, itself or
+    through a function of the tests that it names (``tutorial_in_big_cells``,
     ``least_difference``, ... followed from module to module)."""
     names = getattr(item, "fixturenames", ())
     if APP_FIXTURES & set(names):
@@ -110,8 +110,8 @@ def drives_the_app(item: pytest.Item) -> bool:
 
 
 def _runs_the_app(function: Callable[..., object]) -> bool:
-    """Does ``function``'s source (its nested functions in it) call ``run_test(``, or name a
-    function of the tests that does?  A function being asked about counts as not (a cycle)."""
+    """Does ``function`` (its nested functions with it) call ``run_test``, or name a function
+    of the tests that does?  A function being asked about counts as not (a cycle)."""
     function = _inner(function)
     code = getattr(function, "__code__", None)
     if code is None:
@@ -143,23 +143,41 @@ def _is_the_tests(thing: object) -> bool:
             and inspect.isfunction(_inner(thing)))
 
 
+#: The call that runs the app under Pilot (``App.run_test``).
+DRIVER = "run_test"
+
+
 @functools.cache
 def _functions_in(filename: str) -> dict[int, tuple[bool, frozenset[str]]]:
     """Every function in a file (by the line its code starts on: its first decorator's):
-    whether its text holds ``run_test(``, and the names it uses."""
+    whether its body calls :data:`DRIVER` (or holds a script that does, to run in a process:
+    a string, not a docstring, that calls it), and the names it uses (not its decorators':
+    a parametrized test names its cases there)."""
     try:
-        text = Path(filename).read_text(encoding="utf-8")
-    except OSError:
+        tree = ast.parse(Path(filename).read_text(encoding="utf-8"))
+    except (OSError, SyntaxError):
         return {}
-    lines = text.splitlines()
+    docstrings = {id(node.body[0].value) for node in ast.walk(tree)
+                  if isinstance(node, (ast.Module, ast.ClassDef, ast.FunctionDef,
+                                       ast.AsyncFunctionDef))
+                  and node.body and isinstance(node.body[0], ast.Expr)
+                  and isinstance(node.body[0].value, ast.Constant)}
     found = {}
-    for node in ast.walk(ast.parse(text)):
+    for node in ast.walk(tree):
         if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
             first = min([node.lineno, *(d.lineno for d in node.decorator_list)])
-            body = "\n".join(lines[first - 1:node.end_lineno])
-            names = frozenset(n.id for n in ast.walk(node) if isinstance(n, ast.Name))
-            found[first] = ("run_test(" in body, names)
+            inside = [n for statement in node.body for n in ast.walk(statement)]
+            calls = any(isinstance(n, ast.Call) and _callee(n.func) == DRIVER for n in inside) \
+                or any(isinstance(n, ast.Constant) and isinstance(n.value, str)
+                       and DRIVER + "(" in n.value and id(n) not in docstrings for n in inside)
+            found[first] = (calls, frozenset(n.id for n in inside if isinstance(n, ast.Name)))
     return found
+
+
+def _callee(func: ast.expr) -> str | None:
+    """The name a call calls: ``f(...)``, ``x.f(...)``."""
+    return func.attr if isinstance(func, ast.Attribute) else (
+        func.id if isinstance(func, ast.Name) else None)
 
 
 def is_slow(item: pytest.Item) -> bool:

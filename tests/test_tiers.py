@@ -11,7 +11,7 @@ from typing import Any
 
 import pytest
 
-from tests import test_readme
+from tests import test_launch, test_readme
 from tests.conftest import (
     ROOT,
     SLOW_MODULES,
@@ -73,6 +73,10 @@ def _example_fixture_running_the_app() -> Any:
     return _runs_the_tutorial()
 
 
+def _example_speaking_of_run_test() -> None:
+    """Not ``app.run_test()``: only its words."""
+
+
 def _example_naming_only_the_app() -> None:
     assert SearchApp(load_map(TUTORIAL)).session.run is not None
 
@@ -90,6 +94,8 @@ def _example_naming_only_the_app() -> None:
     FakeItem(test_file_names.test_no_typed_name_makes_the_app_raise),
     FakeItem(_example_calling_a_helper_that_runs_the_app),
     FakeItem(_example_through_another_modules_helper),
+    # a script that runs it, in a process of its own
+    FakeItem(test_launch.test_the_first_frame_imports_no_module_only_a_key_needs),
     # a fixture of the tests' own
     FakeItem(_example_naming_only_the_app, {"app": _example_fixture_running_the_app}),
 ], ids=lambda item: item.function.__name__)
@@ -104,6 +110,7 @@ def test_a_test_that_drives_the_app_is_marked_app(item: FakeItem) -> None:
     FakeItem(test_themes.test_the_config_dir_is_the_tests_own),
     FakeItem(test_readme.test_the_keys_table_names_every_key_the_app_binds),  # reads the app's bindings
     FakeItem(_example_naming_only_the_app, {"other": _not_a_fixture}),  # builds, never runs
+    FakeItem(_example_speaking_of_run_test),
 ], ids=lambda item: item.function.__name__)
 def test_a_test_that_does_not_drive_the_app_is_not_marked(item: FakeItem) -> None:
     assert not drives_the_app(item)  # type: ignore[arg-type]
@@ -131,5 +138,15 @@ def test_the_marks_are_registered_and_strict(pytestconfig: pytest.Config) -> Non
 
 
 def test_this_test_was_collected_unmarked(request: pytest.FixtureRequest) -> None:
+    assert not drives_the_app(request.node)
     assert request.node.get_closest_marker("app") is None
     assert request.node.get_closest_marker("slow") is None
+
+
+def test_naming_the_hook_or_parametrizing_over_app_tests_is_not_driving_the_app() -> None:
+    """These tests name the hook's functions (their words speak of run_test) and, in their
+    decorators, tests that drive the app: neither runs it."""
+    for test in (test_a_test_that_drives_the_app_is_marked_app,
+                 test_a_test_that_does_not_drive_the_app_is_not_marked,
+                 test_the_build_and_serve_modules_are_slow_and_no_other):
+        assert not drives_the_app(FakeItem(test))  # type: ignore[arg-type]
