@@ -97,8 +97,8 @@ TESTS = ROOT / "tests"
 def drives_the_app(item: pytest.Item) -> bool:
     """Does this test run the app under Pilot?  It uses a fixture of :data:`APP_FIXTURES` (or
     a fixture of the tests' own that does what follows), or it calls ``run_test``, itself or
-    through a function of the tests that it names (``tutorial_in_big_cells``,
-    ``least_difference``, ... followed from module to module)."""
+    through a function of the tests or the benchmarks that it names (``tutorial_in_big_cells``,
+    ``least_difference``, ``jump._jump_once``, ... followed from module to module)."""
     names = getattr(item, "fixturenames", ())
     if APP_FIXTURES & set(names):
         return True
@@ -111,7 +111,7 @@ def drives_the_app(item: pytest.Item) -> bool:
 
 def _runs_the_app(function: Callable[..., object]) -> bool:
     """Does ``function`` (its nested functions with it) call ``run_test``, or name a function
-    of the tests that does?  A function being asked about counts as not (a cycle)."""
+    of :data:`FOLLOWED` that does?  A function being asked about counts as not (a cycle)."""
     function = _inner(function)
     code = getattr(function, "__code__", None)
     if code is None:
@@ -120,9 +120,17 @@ def _runs_the_app(function: Callable[..., object]) -> bool:
         _RUNS_THE_APP[code] = False
         calls, names = _functions_in(code.co_filename).get(code.co_firstlineno, (False, ()))
         scope = getattr(function, "__globals__", {})
+        named = (_named(scope, name) for name in names)
         _RUNS_THE_APP[code] = calls or any(
-            _is_the_tests(scope.get(name)) and _runs_the_app(scope[name]) for name in names)
+            _is_followed(thing) and _runs_the_app(thing) for thing in named)
     return _RUNS_THE_APP[code]
+
+
+def _named(scope: dict[str, object], name: str) -> object:
+    """What ``name`` (``f``, or ``module.f``) is in ``scope``."""
+    first, _, attribute = name.partition(".")
+    thing = scope.get(first)
+    return getattr(thing, attribute, None) if attribute else thing
 
 
 _RUNS_THE_APP: dict[object, bool] = {}
@@ -136,11 +144,15 @@ def _inner(function: Callable[..., object]) -> Callable[..., object]:
     return function if inner is None else inspect.unwrap(inner)
 
 
-def _is_the_tests(thing: object) -> bool:
-    """Is ``thing`` a function written in the tests (not the app's, not a library's)?"""
-    module = getattr(thing, "__module__", None) or ""
-    return (callable(thing) and (module == "tests" or module.startswith("tests."))
-            and inspect.isfunction(_inner(thing)))
+#: The packages whose functions are followed: those written to drive the app, the tests' and
+#: the benchmarks' (``benchmarks.jump``'s ``end`` under Pilot); not the app's, nor a library's.
+FOLLOWED = ("tests", "benchmarks")
+
+
+def _is_followed(thing: object) -> bool:
+    """Is ``thing`` a function of :data:`FOLLOWED`?"""
+    module = (getattr(thing, "__module__", None) or "").partition(".")[0]
+    return callable(thing) and module in FOLLOWED and inspect.isfunction(_inner(thing))
 
 
 #: The call that runs the app under Pilot (``App.run_test``).
@@ -151,8 +163,8 @@ DRIVER = "run_test"
 def _functions_in(filename: str) -> dict[int, tuple[bool, frozenset[str]]]:
     """Every function in a file (by the line its code starts on: its first decorator's):
     whether its body calls :data:`DRIVER` (or holds a script that does, to run in a process:
-    a string, not a docstring, that calls it), and the names it uses (not its decorators':
-    a parametrized test names its cases there)."""
+    a string, not a docstring, that calls it), and the names it uses, ``f`` and ``module.f``
+    (not its decorators': a parametrized test names its cases there)."""
     try:
         tree = ast.parse(Path(filename).read_text(encoding="utf-8"))
     except (OSError, SyntaxError):
@@ -170,7 +182,10 @@ def _functions_in(filename: str) -> dict[int, tuple[bool, frozenset[str]]]:
             calls = any(isinstance(n, ast.Call) and _callee(n.func) == DRIVER for n in inside) \
                 or any(isinstance(n, ast.Constant) and isinstance(n.value, str)
                        and DRIVER + "(" in n.value and id(n) not in docstrings for n in inside)
-            found[first] = (calls, frozenset(n.id for n in inside if isinstance(n, ast.Name)))
+            names = {n.id for n in inside if isinstance(n, ast.Name)} | {
+                f"{n.value.id}.{n.attr}" for n in inside
+                if isinstance(n, ast.Attribute) and isinstance(n.value, ast.Name)}
+            found[first] = (calls, frozenset(names))
     return found
 
 

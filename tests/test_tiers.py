@@ -1,6 +1,7 @@
 """The tiers (docs/testing-tiers.md): tests/conftest.py's hook marks ``app`` every test that
 drives the app, whatever way it does (a snapshot, ``run_test`` in the test, in a helper of its
-module or of another, under ``@given``, in a fixture), and no test that does not; ``slow`` the
+module or of another or of the benchmarks, under ``@given``, in a fixture, in a script it
+runs), and no test that does not; ``slow`` the
 build and serve modules.  ``--strict-markers`` makes a misspelt mark an error."""
 
 from __future__ import annotations
@@ -11,7 +12,7 @@ from typing import Any
 
 import pytest
 
-from tests import test_launch, test_readme
+from tests import test_benchmarks_import, test_launch, test_readme
 from tests.conftest import (
     ROOT,
     SLOW_MODULES,
@@ -94,6 +95,8 @@ def _example_naming_only_the_app() -> None:
     FakeItem(test_file_names.test_no_typed_name_makes_the_app_raise),
     FakeItem(_example_calling_a_helper_that_runs_the_app),
     FakeItem(_example_through_another_modules_helper),
+    # through a benchmark's function, named by its module
+    FakeItem(test_benchmarks_import.test_the_compare_section_drives_compare_mode_to_the_end),
     # a script that runs it, in a process of its own
     FakeItem(test_launch.test_the_first_frame_imports_no_module_only_a_key_needs),
     # a fixture of the tests' own
