@@ -1,8 +1,8 @@
 """The tiers (docs/testing-tiers.md): tests/conftest.py's hook marks ``app`` every test that
 drives the app, whatever way it does (a snapshot, ``run_test`` in the test, in a helper of its
 module or of another or of the benchmarks, under ``@given``, in a fixture, in a script it
-runs), and no test that does not; ``slow`` the
-build and serve modules.  ``--strict-markers`` makes a misspelt mark an error."""
+runs), and no test that does not; ``slow`` the build and serve modules.  ``--strict-markers``
+makes a misspelt mark an error."""
 
 from __future__ import annotations
 
