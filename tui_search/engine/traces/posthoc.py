@@ -99,11 +99,14 @@ def _key(value: object) -> object:
     return json.dumps(value, sort_keys=True) if isinstance(value, (list, dict)) else value
 
 
-def load_any_trace(path: str, grid: Grid) -> Trace:
-    """A trace file of either format, by its name: Posthoc's (:data:`SUFFIXES`), else the
-    app's own (:func:`~tui_search.engine.traces.read.load_trace`)."""
+def load_any_trace(path: str, grid: Grid | Graph) -> Trace:
+    """A trace file of either format, by its name: Posthoc's (:data:`SUFFIXES`, a grid's),
+    else the app's own (:func:`~tui_search.engine.traces.read.load_trace`)."""
     if not is_posthoc(path):
         return load_trace(path, grid)
+    if not isinstance(grid, Grid):
+        raise MapError(path, "a Posthoc trace is read for a grid; a graph's trace is the "
+                       "app's own (JSON lines naming the nodes)")
     try:
         with open(path, encoding="utf-8") as fh:
             text = fh.read()
