@@ -42,7 +42,7 @@ async def test_the_palette_exports_the_run_as_the_command_line_does(tmp_path: Pa
         assert app.screen.query_one("#filename", Input).value == "tutorial-dfs.svg"
         await typed(pilot, str(tmp_path / "run.txt"))
         assert app.screen.error == (f"{tmp_path / 'run.txt'}: the kind is the file's ending, "
-                                    "one of .svg, .cast, .gif, .md")
+                                    "one of .svg, .cast, .gif, .md, .trace.json, .trace.yaml")
         await typed(pilot, str(target))
         assert not isinstance(app.screen, ExportScreen)
         await wait_until(pilot, lambda: f"Exported {target}" in said(app), seconds=240)

@@ -212,12 +212,10 @@ def run_headless(options: Options) -> int:
     def search(out: IO[str] | None) -> Outcome:
         if out is None or options.trace_format != "posthoc":
             return search_headless(grid, options.algorithm, semantics, options.max_steps, out)
-        from tui_search.engine.traces.posthoc import PosthocWriter  # only for its format
+        from tui_search.engine.traces.posthoc import posthoc_trace  # only for its format
 
-        writer = PosthocWriter(grid)
-        found = search_headless(grid, options.algorithm, semantics, options.max_steps, None,
-                                writer.add)
-        out.write(writer.text(found.path))
+        text, found = posthoc_trace(grid, options.algorithm, semantics, options.max_steps)
+        out.write(text)
         return found
 
     if options.trace == "-":
