@@ -227,7 +227,10 @@ def _flow(value: object) -> str:
         return "{" + ", ".join(pairs) + "}"
     if isinstance(value, list):
         return "[" + ", ".join(_flow(v) for v in value) + "]"
-    return json.dumps(value)
+    text = json.dumps(value)
+    if isinstance(value, float) and "e" in text and "." not in text:
+        text = text.replace("e", ".0e")  # 1.0e-09: a float to YAML 1.1 readers too
+    return text
 
 
 def _key_text(key: object) -> str:
