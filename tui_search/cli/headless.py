@@ -23,7 +23,8 @@ from tui_search.cli.flags import (
 from tui_search.engine.maps.graph import Graph
 from tui_search.engine.maps.grid import Grid
 from tui_search.engine.maps.read import MapError
-from tui_search.engine.run.recorded import Run, Step
+from tui_search.engine.run.each_step import search_each_step
+from tui_search.engine.run.recorded import Step
 from tui_search.engine.search.choices import Semantics
 from tui_search.engine.search.compare import (
     MARKS_KEY,
@@ -40,7 +41,6 @@ from tui_search.engine.util.filenames import describe_name
 if TYPE_CHECKING:
     from tui_search.cli.options import Options
     from tui_search.engine.maps.scenarios import Scenario
-    from tui_search.engine.search.reference import Expansion
     from tui_search.engine.search.state import State
 
 
@@ -88,32 +88,14 @@ def state_json(state: State) -> object:
     return state if isinstance(state, str) else list(state)
 
 
-def _as_step(step: Expansion) -> Step:
-    return Step(step.index, step.node.cell, tuple((s.move or "", s.cell) for s in step.successors),
-                step.depth_limit, step.found, step.discarded)
-
-
 def search_headless(grid: Grid | Graph, key: str, semantics: Semantics, max_steps: int,
                     out: IO[str] | None, on_step: Callable[[Step], object] | None = None
                     ) -> Outcome:
-    """The whole search, its steps written to ``out`` as they happen.  Graph BFS and DFS take
-    at most a few steps per cell, so they run on the fast recorded loops (the record is
-    bounded by the map); iterative deepening and tree search can take billions of steps on a
-    small map, so they stream the reference loop, which keeps only the frontier and the
-    parents it points to.  The two are held equal by a property test.  ``on_step``: what
-    to do with each step instead of writing its line (a Posthoc trace collects them)."""
-    algorithm = get_algorithm(key)
+    """The whole search (:func:`~tui_search.engine.run.each_step.search_each_step`), its
+    steps written to ``out`` as they happen.  ``on_step``: what to do with each step instead
+    of writing its line (a Posthoc trace collects them)."""
     emit = on_step or (None if out is None else (lambda step: out.write(trace_line(step))))
-    if algorithm.iterative or semantics.tree_search:
-        from tui_search.engine.search.reference import stream  # not imported at start-up
-
-        write = None if emit is None else (lambda step: emit(_as_step(step)))
-        return stream(grid, algorithm, semantics, max_steps, write)
-    run = Run(grid, key, semantics, max_steps)
-    if emit is not None:
-        for step in run.steps.all():
-            emit(step)
-    return run.outcome()
+    return search_each_step(grid, key, semantics, max_steps, emit)
 
 
 def benchmark_rules(outcome: Outcome) -> bool:
@@ -262,13 +244,11 @@ def run_headless(options: Options) -> int:
     def search(out: IO[str] | None) -> Outcome:
         if out is None or options.trace_format != "posthoc":
             return search_headless(grid, options.algorithm, semantics, options.max_steps, out)
-        from tui_search.engine.traces.posthoc import PosthocWriter  # only for its format
+        from tui_search.engine.traces.posthoc import posthoc_trace  # only for its format
 
         assert isinstance(grid, Grid), "refused above"
-        writer = PosthocWriter(grid)
-        found = search_headless(grid, options.algorithm, semantics, options.max_steps, None,
-                                writer.add)
-        out.write(writer.text(found.path))
+        text, found = posthoc_trace(grid, options.algorithm, semantics, options.max_steps)
+        out.write(text)
         return found
 
     if options.trace == "-":

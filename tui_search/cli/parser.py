@@ -196,8 +196,9 @@ def build_parser() -> argparse.ArgumentParser:
                    help="with --headless: write the run to FILE, the kind by its ending: .svg "
                    "an animated SVG (no script), .cast an asciicast v2 recording, .gif an "
                    "animated GIF (pip install -e '.[gif]'), .md a handout (its picture FILE's "
-                   "name with -final.svg, beside it); drawn like the app at 100x30, in "
-                   "--theme's colours (docs/12-exports-and-plain.md)")
+                   "name with -final.svg, beside it), .trace.json or .trace.yaml a Posthoc "
+                   "search trace (its map beside it as a MovingAI .map); drawn like the app "
+                   "at 100x30, in --theme's colours (docs/12-exports-and-plain.md)")
     p.add_argument("--fps", metavar="N", type=_fps, default=None,
                    help=f"with --export: frames (steps) a second (default {DEFAULT_FPS:g})")
     p.add_argument("--export-view", choices=EXPORT_VIEWS, default=None,
