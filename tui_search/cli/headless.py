@@ -34,6 +34,7 @@ from tui_search.engine.search.compare import (
 from tui_search.engine.search.heuristics import INADMISSIBLE, admissible
 from tui_search.engine.search.outcome import Outcome
 from tui_search.engine.search.registry import get_algorithm
+from tui_search.engine.traces.read import trace_line
 from tui_search.engine.util.filenames import describe_name
 
 if TYPE_CHECKING:
@@ -63,21 +64,6 @@ def print_pseudocode(options: Options) -> int:
     print(code.title)
     print("\n".join(code.numbered()))
     return EXIT_FOUND
-
-
-def trace_line(step: Step) -> str:
-    """One JSON object per step: the node taken off and exactly the successors it added, in
-    order; iterative deepening adds the depth limit, a discarded step says so."""
-    obj: dict[str, object] = {
-        "step": step.index,
-        "node": list(step.node),
-        "successors": [{"dir": d, "node": list(c)} for d, c in step.successors],
-    }
-    if step.depth_limit is not None:
-        obj["depth_limit"] = step.depth_limit
-    if step.discarded:
-        obj["discarded"] = True
-    return to_json(obj, separators=(", ", ": ")) + "\n"
 
 
 def _as_step(step: Expansion) -> Step:
