@@ -56,7 +56,8 @@ def check_class_flags(options: Options) -> Options:
             if getattr(options, flag) not in (None, False):
                 raise UsageError(f"--by-hand steps one search in the app: leave out "
                                  f"--{flag.replace('_', '-')}")
-    if options.class_list is not None and (not options.serve or options.records is None):
+    if options.class_list is not None and (not (options.serve or options.served)
+                                           or options.records is None):
         raise UsageError("--class FILE goes with --serve --records DIR (the visitors pick "
                          "their name from it)")
     if options.student is not None and options.serve:

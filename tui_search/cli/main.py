@@ -77,7 +77,12 @@ def records_plan(options: Options) -> RecordsPlan | None:
     from tui_search.tui.model.class_records import RecordsPlan
 
     names = read_class_file(options.class_list) if options.class_list is not None else ()
-    return RecordsPlan(Path(options.records), options.student or "", options.visitor, names)
+    visitor = options.visitor
+    if options.served and visitor is None:  # no folder of their own: an id for the records
+        import secrets
+
+        visitor = secrets.token_hex(3)
+    return RecordsPlan(Path(options.records), options.student or "", visitor, names)
 
 
 class LazyExporter:
@@ -220,7 +225,7 @@ def run_server(options: Options) -> int:
         return serve(app_args, FORK_COMMAND, host=options.host, port=options.port,
                      title=title, save_folder=save_folder,
                      own_folders=not options.shared_save_dir, memory_mb=options.app_memory,
-                     token=token)
+                     token=token, records=options.records)
     except ServeError as exc:
         raise UsageError(str(exc)) from None
 
