@@ -207,3 +207,16 @@ async def test_a_whole_run_ends_in_its_summary_and_its_record(tmp_path: Path) ->
     run = events[1]
     assert (run["student"], run["algorithm"], run["finished"], run["steps"], run["mistakes"],
             run["by_cause"]) == ("Ada Lovelace", "bfs", True, hand.k, 1, {"newest": 1})
+
+
+@sync
+async def test_a_by_hand_exercise_opens_on_the_students_own_map() -> None:
+    path = Path(__file__).parents[1] / "data" / "exercises" / "bfs-by-hand.toml"
+    app = build_app(parse_options(["--exercise", str(path), "--student", "Ada Lovelace"]))
+    async with app.run_test(size=SIZE) as pilot:
+        await wait_until(pilot, lambda: isinstance(app.screen, ByHandScreen)
+                         and bool(app.screen.query(GridView)))
+        screen = app.screen
+        assert screen.panel.border_title == "By hand: BFS · BFS by hand"
+        assert "0 of 3 mistakes allowed so far" in panel(screen)
+        assert screen.by_hand.run.grid.blocked == app.session.exercise.grid.blocked
