@@ -49,13 +49,6 @@ KEYS = (
     ("mouse over", "the line under the map says what the run knows of that cell"),
     ("i  enter", "quiz: predict the node that comes off next (cursor, enter)"),
     ("click, tab ↑↓", "quiz: pick the frontier entry instead (double click: answer)"),
-    ("H", "by hand: you make each step of the search, each checked at once"),
-    ("arrows  enter", "by hand: cursor to an entry, take it off (or click it: map or frontier)"),
-    ("arrows  8 9 6 3 2 1 4 7", "by hand: add the successor that way (the number pad's moves)"),
-    ("home  pgup  end  pgdn", "by hand: add the successor NW / NE / SW / SE; a click adds a cell"),
-    ("enter  backspace", "by hand: end the step / take back the last successor added"),
-    ("h  u  r", "by hand: a hint (again: why) / undo / start again"),
-    ("esc", "by hand: back to the searches (the run is recorded as it is)"),
     ("x", "the exercises as live challenges: --exercise FILE's, 1, 2, off"),
     ("d", "--replay: to the step where your trace first differs / back"),
     ("t", "next colour theme: " + ", ".join(t.title.lower() for t in THEMES.values())),
@@ -68,6 +61,8 @@ KEYS = (
      "note names")),
     ("?", "this help"),
     ("q", "quit (asks first when there are unsaved edits)"),
+    ("H", "by hand: you make each step; click or enter takes an entry off"),
+    ("8 9 6 3 2 1 4 7", "by hand: add that move; ⌫ h u r: take back, hint, undo, again"),
 )
 
 HOW = """\
