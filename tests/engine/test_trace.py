@@ -93,11 +93,24 @@ def test_the_apps_trace_matches_with_its_choices_named() -> None:
 
 def test_an_expansion_out_of_turn_names_where_the_search_would_take_it() -> None:
     def swap(objs):
-        objs[8], objs[10] = objs[10], objs[8]
+        objs[6], objs[8] = objs[8], objs[6]
     text = edited("bfs", NWSE, swap)
     assert check(text, "bfs", NWSE) == (
-        "step 9: BFS expands (0,5) next (the queue's front); your trace expands (2,1), "
-        "which BFS would expand at step 11")
+        "step 7: BFS expands (1,3) next (the queue's front); your trace expands (0,5), "
+        "which BFS would expand at step 9")
+
+
+def test_the_newest_entry_of_the_queue_taken_is_named_as_a_stacks() -> None:
+    """The trace takes the queue's newest entry, one an earlier step than the last added:
+    the search's frontier (the trace's too, every step before matching) says it is the
+    newest."""
+    def swap(objs):
+        objs[8], objs[10] = objs[10], objs[8]
+    verdict = check_trace(read_trace(edited("bfs", NWSE, swap), GRID, "t"), GRID, "bfs", NWSE)
+    assert verdict.difference is not None and verdict.difference.cause == "newest"
+    assert verdict.difference.message == (
+        "step 9: BFS takes (0,5), the oldest cell on its queue; your trace takes (2,1), the "
+        "newest, as a stack does (a DFS: -a dfs)")
 
 
 def test_a_successor_added_twice_missing_extra_or_out_of_order() -> None:

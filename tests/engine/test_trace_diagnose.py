@@ -64,8 +64,8 @@ def test_a_bfs_that_takes_the_newest_entry_once_is_closest_to_bfs() -> None:
     lines = diagnosis_of(bfs(ROWS, "N,E,S,W", bug_at=6))
     assert lines[0] == "closest:"
     assert lines[1] == ("  BFS (order E,S,W; visit on generate; goal test on generate) up to "
-                        "step 5; then step 6: BFS expands (3,0) next (the queue's front); your "
-                        "trace expands (0,3), which BFS would expand at step 8")
+                        "step 5; then step 6: BFS takes (3,0), the oldest cell on its queue; "
+                        "your trace takes (0,3), the newest, as a stack does (a DFS: -a dfs)")
 
 
 def test_orders_follow_the_order_successors_were_added() -> None:

@@ -36,12 +36,13 @@ from tui_search.engine.search.compare import (
 from tui_search.engine.search.heuristics import INADMISSIBLE, admissible
 from tui_search.engine.search.outcome import Outcome
 from tui_search.engine.search.registry import get_algorithm
+from tui_search.engine.search.state import state_json
+from tui_search.engine.traces.read import trace_line
 from tui_search.engine.util.filenames import describe_name
 
 if TYPE_CHECKING:
     from tui_search.cli.options import Options
     from tui_search.engine.maps.scenarios import Scenario
-    from tui_search.engine.search.state import State
 
 
 
@@ -67,25 +68,6 @@ def print_pseudocode(options: Options) -> int:
     return EXIT_FOUND
 
 
-def trace_line(step: Step) -> str:
-    """One JSON object per step: the node taken off and exactly the successors it added, in
-    order; iterative deepening adds the depth limit, a discarded step says so."""
-    node = step.node
-    obj: dict[str, object] = {"step": step.index, "node": state_json(node)}
-    if isinstance(node, str):  # a graph's: the nodes reached, by name
-        obj["successors"] = [s for _, s in step.successors]
-    else:
-        obj["successors"] = [{"dir": d, "node": state_json(c)} for d, c in step.successors]
-    if step.depth_limit is not None:
-        obj["depth_limit"] = step.depth_limit
-    if step.discarded:
-        obj["discarded"] = True
-    return to_json(obj, separators=(", ", ": ")) + "\n"
-
-
-def state_json(state: State) -> object:
-    """A cell as ``[x, y]``, a node as its name."""
-    return state if isinstance(state, str) else list(state)
 
 
 def search_headless(grid: Grid | Graph, key: str, semantics: Semantics, max_steps: int,

@@ -31,6 +31,7 @@ if TYPE_CHECKING:
     from collections.abc import Callable, Iterable, Iterator
 
     from tui_search.tui.app import SearchApp
+    from tui_search.tui.model.class_records import RecordsPlan
     from tui_search.tui.model.session import Session
 
 BUILT_IN_TITLE = "tutorial (built-in)"  # the app's title for the map with no file
@@ -61,7 +62,27 @@ def build_app(options: Options) -> SearchApp:
                      exercise=options.exercise_read, compare=options.compare,
                      file_access=access,
                      config=Config.in_memory() if options.served else None,
-                     lesson=options.lesson_read, exporter=LazyExporter())
+                     lesson=options.lesson_read, exporter=LazyExporter(),
+                     records=records_plan(options), by_hand=options.by_hand)
+
+
+def records_plan(options: Options) -> RecordsPlan | None:
+    """``--records``: the folder, the student (or none: the served visitor is asked), the
+    visitor's id and the class list they pick from."""
+    if options.records is None:
+        return None
+    from pathlib import Path
+
+    from tui_search.cli.class_flags import read_class_file
+    from tui_search.tui.model.class_records import RecordsPlan
+
+    names = read_class_file(options.class_list) if options.class_list is not None else ()
+    visitor = options.visitor
+    if options.served and visitor is None:  # no folder of their own: an id for the records
+        import secrets
+
+        visitor = secrets.token_hex(3)
+    return RecordsPlan(Path(options.records), options.student or "", visitor, names)
 
 
 class LazyExporter:
@@ -204,13 +225,17 @@ def run_server(options: Options) -> int:
         return serve(app_args, FORK_COMMAND, host=options.host, port=options.port,
                      title=title, save_folder=save_folder,
                      own_folders=not options.shared_save_dir, memory_mb=options.app_memory,
-                     token=token)
+                     token=token, records=options.records)
     except ServeError as exc:
         raise UsageError(str(exc)) from None
 
 
 def run(options: Options) -> int:
     """What the options ask for, to its exit code."""
+    if options.class_report is not None:
+        from tui_search.cli.records_report import run_class_report
+
+        return run_class_report(options)
     if options.output is not None:
         from tui_search.cli.flags import write_generated
 

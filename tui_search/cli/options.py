@@ -33,6 +33,7 @@ FLAGS = (
     "lesson", "headless", "json", "csv", "trace", "trace_format", "check_trace", "replay",
     "serve", "host", "port", "save_dir", "shared_save_dir", "app_memory", "token_file",
     "served", "visitor", "export", "fps", "export_view", "force", "handout_steps", "plain",
+    "by_hand", "records", "student", "class_list", "class_report",
 )
 #: What the command line worked out or read from the flags.
 READ = ("maps", "algorithm_given", "exercise_read", "lesson_read", "recipe", "grid", "graph",
@@ -100,6 +101,11 @@ class Options(Frozen):
     force: bool
     handout_steps: int | None
     plain: bool
+    by_hand: bool
+    records: str | None  # made absolute, the folder made (cli/class_flags.py)
+    student: str | None
+    class_list: str | None  # --class FILE, made absolute
+    class_report: str | None
     # -- what they named, read
     maps: tuple[str, ...]
     algorithm_given: bool

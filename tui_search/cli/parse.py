@@ -10,6 +10,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
+from tui_search.cli.class_flags import check_class_flags
 from tui_search.cli.flags import (
     UsageError,
     changed_choice_flags,
@@ -39,11 +40,14 @@ def parse_options(argv: Sequence[str] | None = None) -> Options:
     given = args.algorithm is not None
     options = Options.made(vars(args), maps=tuple(args.maps), algorithm_given=given,
                            algorithm=args.algorithm or DEFAULT_ALGORITHM)
+    options = check_class_flags(options)
+    if options.class_report is not None:
+        return options  # a records folder: no map
     _refuse_with_traces(options)
     _check_outputs(options)
     _check_export(options)
     _check_plain(options)
-    options = options.replace(exercise_read=_exercise_of(options),
+    options = options.replace(exercise_read=_own_exercise(options, _exercise_of(options)),
                               recipe=_generated_recipe(options))
     if options.output is not None or options.pseudocode:
         return options
@@ -109,7 +113,8 @@ def _check_outputs(options: Options) -> None:
     """What the headless outputs go with, and what goes with neither."""
     if ((options.json or options.trace or options.csv or options.check_trace)
             and not options.headless):
-        raise UsageError("--json, --csv, --trace and --check-trace go with --headless")
+        raise UsageError("--json, --csv, --trace and --check-trace go with --headless (--json "
+                         "and --csv also with --class-report)")
     if options.csv and (options.json or not options.exercise):
         raise UsageError("--csv is for --exercise E --headless, without --json")
     if options.trace_format != "jsonl" and not options.trace:
@@ -184,6 +189,26 @@ def _exercise_of(options: Options) -> Exercise | None:
                          f"{', '.join(changed)} (an exercise file sets its rules: "
                          "docs/04-exercises.md)")
     return exercise
+
+
+def _own_exercise(options: Options, exercise: Exercise | None) -> Exercise | None:
+    """An exercise whose map is each student's own (``seed = "student"``) on ``--student``'s
+    map; a by-hand exercise is for the app."""
+    if exercise is None:
+        return None
+    if exercise.by_hand and (options.headless or options.plain):
+        raise UsageError(f"--exercise {options.exercise}: it is done by hand, in the app "
+                         "(leave out --headless)")
+    if not exercise.student_seed:
+        return exercise
+    if options.student is not None:
+        return exercise.for_student(options.student)
+    if options.serve or options.served:
+        return exercise  # each visitor is asked their name
+    if options.headless and options.maps:
+        return exercise  # a class's maps: each graded against its own (its recipe line)
+    raise UsageError(f"--exercise {options.exercise}: its map is each student's own (seed = "
+                     "\"student\"): give --student NAME")
 
 
 def _read_exercise(name: str) -> Exercise:

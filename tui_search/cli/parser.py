@@ -12,6 +12,7 @@ from collections.abc import Sequence
 from typing import NoReturn
 
 from tui_search import __version__
+from tui_search.cli.class_flags import add_class_arguments
 from tui_search.cli.flags import UsageError
 from tui_search.cli.serve_flags import add_serve_arguments
 from tui_search.engine.maps.grid import DEFAULT_ORDER
@@ -212,6 +213,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--plain", action="store_true",
                    help="the line-oriented mode, for screen readers, braille displays and "
                    "SSH: type a command a line (help lists them), read plain sentences")
+    add_class_arguments(p)
     add_serve_arguments(p)
     return p
 

@@ -61,6 +61,23 @@ def read_replay(options: Options) -> Replay:
                      semantics_from(options), options.max_steps)
 
 
+def _record(options: Options, where: str, **fields: object) -> None:
+    """``--records DIR --student NAME``: the check's verdict and diagnosis, a line of the
+    student's records (a problem writing it is a warning: the check's answer stands)."""
+    if options.records is None:
+        return
+    import sys
+
+    from tui_search.engine.course.records import Writer
+
+    assert options.check_trace is not None
+    writer = Writer(options.records, options.student or "student")
+    problem = writer.write("trace_check", trace=describe_name(options.check_trace), map=where,
+                           **fields)
+    if problem:
+        print(f"tui-search: warning: {problem}", file=sys.stderr)
+
+
 def run_check_trace(options: Options) -> int:
     """Read the trace, check it against ``-a``'s search, print the verdict; exit 0 on a
     match, 1 on a difference (a malformed trace is a MapError: exit 2)."""
@@ -78,6 +95,11 @@ def run_check_trace(options: Options) -> int:
     semantics = semantics_from(options)
     trace = load_trace(options.check_trace, grid)
     verdict = check_trace(trace, grid, options.algorithm, semantics, max_steps=options.max_steps)
+    difference = verdict.difference
+    _record(options, where, algorithm=verdict.algorithm, search=verdict.choices,
+            verdict="match" if verdict.matches else "difference", steps=verdict.steps,
+            matched_steps=verdict.matched, cause=difference.cause if difference else None,
+            diagnosis=verdict.text())
     if options.json:
         print(to_json({"trace": describe_name(options.check_trace), "map": where,
                        **verdict.as_json()}))
@@ -94,6 +116,13 @@ def _diagnose(options: Options, grid: Grid | Graph, trace: str, where: str) -> i
 
     _no_choices_without_a("--check-trace", "tries every search and choice", "check", options)
     diagnosis = diagnose(load_trace(trace, grid), grid, options.max_steps)
+    best = diagnosis.best[0] if diagnosis.best else None
+    difference = best.difference if best is not None else None
+    _record(options, where, algorithm=best.algorithm if best else None,
+            search=best.choices if best else None,
+            verdict="match" if diagnosis.matches else "closest",
+            steps=best.steps if best else None, matched_steps=best.matched if best else None,
+            cause=difference.cause if difference else None, diagnosis=diagnosis.text())
     if options.json:
         print(to_json({"trace": describe_name(trace), "map": where,
                        **diagnosis.as_json()}))

@@ -9,7 +9,9 @@ sees it (an aiohttp middleware, :meth:`Guard.middleware`).
   host.  Anything else gets 403.
 * **Token**, unless the server listens on loopback only: a random one, printed in the URL
   (``?token=...``, as Jupyter does), then kept in a cookie so the page's further requests and
-  its websocket carry it.  A request without it gets 403.
+  its websocket carry it.  A request without it gets 403 -- but for the paths with a token
+  of their own (``own_paths``: the teacher's page, :mod:`tui_search.serve.teacher`), which
+  check theirs.
 
 textual-serve's static folder is served without its directory listing (in
 :mod:`tui_search.serve.web`, where the routes are made); a folder is "not found" (404) here.
@@ -60,6 +62,7 @@ class Guard(NamedTuple):
     names: frozenset[str]
     any_address: bool = False
     token: str | None = None
+    own_paths: frozenset[str] = frozenset()  # paths that check a token of their own
 
     @classmethod
     def for_host(cls, host: str, token: str | None = None) -> Guard:
@@ -91,6 +94,8 @@ class Guard(NamedTuple):
         origin = request.headers.get("Origin")
         if origin is not None and origin.split("://", 1)[-1].lower() != request.host.lower():
             return "another site's page may not use this server"
+        if request.path in self.own_paths:
+            return None
         if self.token is not None and not (self._given(request.query.get("token"))
                                            or self._given(request.cookies.get(COOKIE))):
             return "open the link the server printed when it started (with its ?token=)"

@@ -86,17 +86,18 @@ def exit_with_server(app: Any, every: float = WATCH_EVERY) -> None:
 
 def serve(app_args: list[str], fork_command: list[str], *, host: str | None,
           port: int | None, title: str, save_folder: str | None, own_folders: bool,
-          memory_mb: int | None, token: str | None = None) -> int:
+          memory_mb: int | None, token: str | None = None, records: str | None = None) -> int:
     """Serve the app ``app_args`` until Ctrl+C, each visitor's app forked by the process
     ``fork_command`` starts; 0, or a ServeError when the address cannot be listened on.
-    ``token``: the one the links need off loopback (None: a random one)."""
+    ``token``: the one the links need off loopback (None: a random one); ``records``: the
+    records folder, shown on the teacher's page."""
     from tui_search.serve.guard import Guard
 
     host = host or DEFAULT_HOST
     port = port or DEFAULT_PORT
     server = make_server(app_args, fork_command, host, port, title, saving=save_folder,
                          own_folders=own_folders, memory_mb=memory_mb or APP_MEMORY_MB,
-                         guard=Guard.for_host(host, token))
+                         guard=Guard.for_host(host, token), records=records)
     try:
         server.serve()
     except OSError as exc:
@@ -107,9 +108,11 @@ def serve(app_args: list[str], fork_command: list[str], *, host: str | None,
 def make_server(app_args: list[str], fork_command: list[str], host: str, port: int, title: str,
                 saving: str | None = None, *, own_folders: bool = True,
                 memory_mb: int = APP_MEMORY_MB, guard: Guard | None = None,
-                max_visitors: int = MAX_VISITORS) -> Any:
+                max_visitors: int = MAX_VISITORS, records: str | None = None,
+                teacher: str | None = None) -> Any:
     """A textual-serve Server for the app ``app_args`` (after ``python -m tui_search``), with
-    the classroom's rules (module doc)."""
+    the classroom's rules (module doc); with ``records``, the teacher's page
+    (:mod:`tui_search.serve.teacher`), its token ``teacher`` (None: a random one)."""
     import logging
     import secrets
 
@@ -119,9 +122,11 @@ def make_server(app_args: list[str], fork_command: list[str], host: str, port: i
     from textual_serve.server import Server
 
     from tui_search.serve.guard import Guard
+    from tui_search.serve.teacher import teacher_routes_of
     from tui_search.serve.visit import Forks, visit
 
-    rules = guard or Guard.for_host(host)
+    rules, teacher_key, teacher_routes = teacher_routes_of(
+        guard or Guard.for_host(host), records, teacher, title)
     own_url = f"http://{_url_host(host)}:{port}"
     forks = Forks(fork_command, app_args, memory_mb)
 
@@ -140,6 +145,7 @@ def make_server(app_args: list[str], fork_command: list[str], host: str, port: i
                 web.get("/", self.handle_index, name="index"),
                 web.get("/ws", self.handle_websocket, name="websocket"),
                 web.get("/download/{key}", self.handle_download, name="download"),
+                *teacher_routes,
                 web.static("/static", self.statics_path, show_index=False, name="static"),
             ])
             app.on_shutdown.append(self.on_shutdown)
@@ -191,8 +197,8 @@ def make_server(app_args: list[str], fork_command: list[str], host: str, port: i
             pass  # not textual-serve's logo and command line: the banner says what matters
 
         def banner(self, _aiohttp_says: str) -> None:
-            print(banner_text(host, port, title, saving, own_folders, rules.token),
-                  flush=True)
+            print(banner_text(host, port, title, saving, own_folders, rules.token,
+                              teacher=teacher_key), flush=True)
 
     visits: set[asyncio.Task[Any]] = set()
     return ClassroomServer(" ".join(app_args), host=host, port=port,
@@ -200,10 +206,12 @@ def make_server(app_args: list[str], fork_command: list[str], host: str, port: i
 
 
 def banner_text(host: str, port: int, title: str, saving: str | None, own_folders: bool,
-                token: str | None, addresses: Sequence[Address] | None = None) -> str:
+                token: str | None, addresses: Sequence[Address] | None = None,
+                teacher: str | None = None) -> str:
     """What the server prints once it listens: where, who can reach it, what visitors may
-    do with files, how to stop it.  Served on every network, a link for each of this
-    computer's ``addresses`` (found when not given), the loopback last."""
+    do with files, the teacher's page (``teacher``: its token; None: no page), how to stop
+    it.  Served on every network, a link for each of this computer's ``addresses`` (found
+    when not given), the loopback last."""
     files = "visitors cannot save or open files"
     if saving:
         files = (f"visitors may save and open maps in {saving} only"
@@ -228,6 +236,14 @@ def banner_text(host: str, port: int, title: str, saving: str | None, own_folder
             on = "this computer only" if a.is_loopback else ""
             said = ": ".join(part for part in (a.interface, on) if part)
             lines.append(f"  {link:<{wide}}  ({said})" if said else f"  {link}")
+    if teacher is not None:
+        from tui_search.serve.teacher import teacher_url
+
+        base = (f"http://{_url_host(addresses[0].ip)}:{port}" if every and addresses
+                else f"http://{_url_host('127.0.0.1' if every else host)}:{port}")
+        lines.append("The teacher's page, the class's records live (this link is printed "
+                     "once: keep it to yourself, it is not the class's):")
+        lines.append(teacher_url(base, teacher))
     if token:
         who = ("every computer on this computer's networks" if every
                else f"every computer that can reach {host}")

@@ -30,6 +30,7 @@ if TYPE_CHECKING:
     from tui_search.engine.course.exercise_file import Exercise
     from tui_search.engine.course.lesson import Lesson
     from tui_search.engine.traces.replay import Replay
+    from tui_search.tui.model.class_records import RecordsPlan
     from tui_search.tui.screens.export_command import Exporter
 
 
@@ -71,6 +72,8 @@ class SearchApp(App[int]):
         lesson: Lesson | None = None,
         replay: Replay | None = None,
         exporter: Exporter | None = None,
+        records: RecordsPlan | None = None,
+        by_hand: bool = False,
     ) -> None:
         """The session's arguments (:class:`~tui_search.tui.model.session.Session`), and: ``theme``
         for this run only (``--theme``; without it, the one the config file remembers);
@@ -79,7 +82,9 @@ class SearchApp(App[int]):
         (:class:`~tui_search.tui.model.file_rules.FileAccess`: anywhere by default; the served
         app's is narrower); ``lesson``, a lesson shown beside the panes from its first
         section; ``replay``, a trace beside the search it matches (``--replay``);
-        ``exporter``, what the palette's Export command exports with (None: no export)."""
+        ``exporter``, what the palette's Export command exports with (None: no export);
+        ``records``, where what the student does is recorded (``--records``: the student
+        named, or asked at start); ``by_hand``, the run by hand at once (``--by-hand``)."""
         super().__init__()
         self.session = Session(grid, path, algorithm, semantics, max_steps, unsaved_name,
                                optimal_cost, exercise, compare, replay)
@@ -111,6 +116,13 @@ class SearchApp(App[int]):
                 self.unregister_theme(name)
         self._remember_theme = True  # from now on a theme chosen in the app is saved
         self.main = MainScreen(self.session, self.file_access)
+        self.records = records
+        self.start_by_hand = by_hand or bool(exercise is not None and not isinstance(
+            exercise, int) and exercise.by_hand)
+        if records is not None and records.student:
+            from tui_search.tui.model.class_records import recorder
+
+            self.session.records = recorder(records, records.student)
 
     def get_default_screen(self) -> Screen[None]:
         return self.main
@@ -118,6 +130,39 @@ class SearchApp(App[int]):
     def on_mount(self) -> None:
         if self.config.problem:
             self._config_note(self.config.problem)
+        if self.records is not None and self.session.records is None:
+            from tui_search.tui.dialogs.visitor_name import VisitorNameScreen  # served: asked
+
+            self.push_screen(VisitorNameScreen(self.records.class_list), self._named)
+        else:
+            self.call_after_refresh(self._started)
+
+    def _named(self, name: str | None) -> None:
+        """The visitor said who they are: their records, their own map (an exercise's
+        ``seed = "student"``), then what the command line asked for."""
+        from tui_search.tui.model.class_records import recorder
+
+        assert self.records is not None
+        self.session.records = recorder(self.records, name or "visitor")
+        exercise = self.session.exercise
+        if exercise is not None and exercise.student_seed:
+            self.session.own_exercise(exercise.for_student(self.session.records.student))
+            self.main.show_map()
+        self.notify(f"Hello, {self.session.records.student}: your work here is recorded for "
+                    "your teacher.", title="Records", timeout=8, markup=False)
+        self._started()
+
+    def _started(self) -> None:
+        """Once the student is known: the records' first line, the run by hand if asked."""
+        records = self.session.records
+        if records is not None:
+            problem = records.start(self.session.map_name, self.session.exercise)
+            if problem:
+                self.notify(problem, severity="warning", timeout=10, markup=False)
+        if self.start_by_hand:
+            from tui_search.tui.screens.by_hand import open_by_hand
+
+            open_by_hand(self.main)
 
     # -- themes ---------------------------------------------------------------------------
     #: False while ``App.__init__`` asks for the variables of Textual's default theme: the

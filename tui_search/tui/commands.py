@@ -34,6 +34,7 @@ COMPARISONS = {
 #: The actions of the app's key table offered by name, with the palette's name for each.
 ACTIONS = {
     "compare": "Compare searches side by side (on / off)",
+    "by_hand": "By hand: make the search's steps yourself, checked step by step",
     "settings": "Search settings",
     "code": "Code panel: the search's pseudocode, the step's lines lit (on / off)",
     "undo": "Undo the last edit of the map",

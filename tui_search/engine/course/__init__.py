@@ -1,7 +1,9 @@
-"""The course: exercises, their ``solved`` conditions, and lessons.
+"""The course: exercises, their ``solved`` conditions, lessons, and the class's records.
 
 * :mod:`~tui_search.engine.course.exercise_file`: a teacher's exercise file;
 * :mod:`~tui_search.engine.course.condition`: the ``solved`` condition's small language;
 * :mod:`~tui_search.engine.course.grading`: an exercise graded on a map;
-* :mod:`~tui_search.engine.course.lesson`: a lesson's sections.
+* :mod:`~tui_search.engine.course.lesson`: a lesson's sections;
+* :mod:`~tui_search.engine.course.records`: what each student did, written and read;
+* :mod:`~tui_search.engine.course.class_table`: the records as a class's table.
 """

@@ -10,6 +10,11 @@
     order = "N,E,S,W"                 # optional: the rules every search of it runs under,
     corners = "never"                 # as the settings name them (the tutorial's otherwise)
 
+A by-hand exercise (``by_hand = true``, its one search run by the student, step by step) has
+no ``solved``: it is solved when the run is finished within ``mistakes`` (its allowance).  A
+generated map's seed may be ``seed = "student"``: each student's own map, from their name
+(:meth:`Exercise.for_student`).
+
 The tutorial's two exercises ship as two such files (``tui_search/exercises/``), named ``1``
 and ``2``.  A bad file is a :class:`~tui_search.engine.maps.read.MapError` naming the file, the
 line and the column.  Plain Python, no UI.
@@ -23,7 +28,7 @@ from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
 from types import ModuleType
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from tui_search.engine.course.condition import ConditionError, Node, names, parse_condition
 from tui_search.engine.maps.grid import Grid, parse_order
@@ -39,6 +44,9 @@ from tui_search.engine.search.compare import Contender, parse_compare
 from tui_search.engine.search.heuristics import HEURISTICS
 from tui_search.engine.search.registry import get_algorithm
 from tui_search.engine.util.untrusted import BadInput, check_nesting, check_values
+
+if TYPE_CHECKING:
+    from tui_search.engine.maps.generate import Recipe
 
 
 def toml_parser() -> ModuleType:
@@ -64,8 +72,12 @@ BUILT_IN = Path(__file__).resolve().parents[2] / "exercises"  # tui_search/exerc
 BUILT_IN_FILES = {1: "1-bfs-expands-less.toml", 2: "2-dfs-not-optimal.toml"}
 #: The rules' keys (the search choices, :mod:`tui_search.engine.search.choices`).
 RULE_KEYS = ("order", "corners", "visit", "goal_test", "heuristic", "tree_search")
-_KEYS = ("title", "text", "map", "generate", "searches", "edits", "solved", "hint",
-         "other_edits", "figures", *RULE_KEYS)
+_KEYS = ("title", "text", "map", "generate", "seed", "searches", "edits", "solved", "hint",
+         "other_edits", "figures", "by_hand", "mistakes", *RULE_KEYS)
+#: ``seed = "student"``: each student's own map, from their name.
+STUDENT_SEED = "student"
+#: A by-hand exercise's allowance at most (a mistake a step of a big map).
+MAX_MISTAKES = 1_000_000
 
 
 @dataclass(frozen=True, eq=False)
@@ -87,12 +99,34 @@ class Exercise:
     hint: str
     other_edits: str
     semantics: Semantics = DEFAULT_SEMANTICS  # the rules every search of it runs under
+    #: Done by hand (its one search stepped by the student): solved when the run is
+    #: finished with at most ``mistakes`` mistakes; no condition then.
+    by_hand: bool = False
+    mistakes: int = 0
+    #: ``seed = "student"``: the map is each student's own (:meth:`for_student`); ``grid``
+    #: is then the map of the seed "student" until a student is named.
+    recipe: Recipe | None = None
+    student_seed: bool = False
+    student: str = ""  # the student whose map ``grid`` is ("" none)
 
     @property
     def rules(self) -> str:
         """Its rules where they are not the tutorial's, in a few words ("moves N,E,S,W ·
         corners: never"); "" for the tutorial's."""
         return " · ".join(self.semantics.differences())
+
+    def for_student(self, name: str) -> Exercise:
+        """The exercise on ``name``'s own map (``seed = "student"``; any other exercise is
+        everyone's, itself)."""
+        from dataclasses import replace
+
+        from tui_search.engine.maps.generate import MAX_SEED_CHARS, generate
+
+        seed = "".join(ch for ch in name if ch.isprintable()).strip()[:MAX_SEED_CHARS]
+        if not self.student_seed or self.recipe is None or not seed:
+            return self
+        recipe = self.recipe._replace(seed=seed)
+        return replace(self, grid=generate(recipe, recipe.title), recipe=recipe, student=seed)
 
     @property
     def name(self) -> str:
@@ -224,8 +258,10 @@ def _contenders(reader: _Reader, specs: list[str], semantics: Semantics) -> list
         raise reader.error("visit", str(exc)) from None
 
 
-def _grid(reader: _Reader) -> Grid:
-    from tui_search.engine.maps.generate import generate, parse_recipe
+def _grid(reader: _Reader) -> tuple[Grid, Recipe | None, bool]:
+    """The exercise's map, its recipe when generated, and whether it is each student's own
+    (``seed = "student"``)."""
+    from tui_search.engine.maps.generate import generate, make_recipe, parse_recipe
     from tui_search.engine.maps.load import load_map
 
     has = [k for k in ("map", "generate") if k in reader.data]
@@ -233,17 +269,53 @@ def _grid(reader: _Reader) -> Grid:
         raise MapError(reader.path, "give the exercise a map = \"FILE\" or a generate = "
                        "\"KIND WxH SEED\" (one of the two)")
     if has[0] == "map":
+        if "seed" in reader.data:
+            raise reader.error("seed", "goes with generate = \"KIND WxH\", not a map file")
         where = Path(reader.path).parent / reader.string("map")
         try:
-            return load_map(where)
+            return load_map(where), None, False
         except MapError as exc:
             raise reader.error("map", str(exc)) from None
     recipe_text = reader.string("generate")
+    seed = reader.string("seed") if "seed" in reader.data else None
     try:
-        recipe = parse_recipe(recipe_text)
+        if seed is None:
+            recipe = parse_recipe(recipe_text)
+        else:
+            parts = recipe_text.split()
+            if len(parts) != 2:
+                raise ValueError(f"{recipe_text.strip()!r}: with seed = ..., expected KIND WxH "
+                                 "(the seed given once), e.g. maze 15x15")
+            recipe = make_recipe(parts[0], parts[1], seed)
     except ValueError as exc:
-        raise reader.error("generate", str(exc)) from None
-    return generate(recipe, recipe.title)
+        raise reader.error("seed" if seed is not None and "seed" in str(exc) else "generate",
+                           str(exc)) from None
+    return generate(recipe, recipe.title), recipe, seed == STUDENT_SEED
+
+
+def _by_hand(reader: _Reader, specs: list[str]) -> tuple[bool, int]:
+    """``by_hand`` and its ``mistakes`` allowance, checked against the other keys."""
+    data = reader.data
+    by_hand = data.get("by_hand", False)
+    if not isinstance(by_hand, bool):
+        raise reader.error("by_hand", "expected true or false")
+    if not by_hand:
+        if "mistakes" in data:
+            raise reader.error("mistakes", "goes with by_hand = true")
+        return False, 0
+    if len(specs) != 1:
+        raise reader.error("searches", "a by-hand exercise names one search, the one the "
+                           "student steps (as [\"bfs\"])")
+    for key in ("solved", "edits", "other_edits", "figures"):
+        if key in data:
+            raise reader.error(key, "not for a by-hand exercise: it is solved when the run is "
+                               "finished within its mistakes")
+    mistakes = data.get("mistakes", 0)
+    if (not isinstance(mistakes, int) or isinstance(mistakes, bool)
+            or not 0 <= mistakes <= MAX_MISTAKES):
+        raise reader.error("mistakes", f"expected a whole number of mistakes allowed, 0 to "
+                           f"{MAX_MISTAKES:,}")
+    return True, mistakes
 
 
 def parse_exercise(text: str, path: str, number: int | None = None) -> Exercise:
@@ -268,6 +340,7 @@ def parse_exercise(text: str, path: str, number: int | None = None) -> Exercise:
     labels = [search_name(s) for s in specs]
     if len(set(labels)) != len(labels):
         raise reader.error("searches", "a search is named twice")
+    by_hand, mistakes = _by_hand(reader, specs)
     edits = reader.strings("edits", [])
     for edit in edits:
         if edit not in EDITS:
@@ -275,7 +348,7 @@ def parse_exercise(text: str, path: str, number: int | None = None) -> Exercise:
     other = reader.string("other_edits", "fail")
     if other not in OTHER_EDITS:
         raise reader.error("other_edits", f"{other!r}: use \"fail\" or \"hint\"")
-    solved = reader.string("solved")
+    solved = reader.string("solved", "1 == 1" if by_hand else None)  # by hand: no condition
     try:
         condition = parse_condition(solved, labels)
     except ConditionError as exc:
@@ -288,14 +361,15 @@ def parse_exercise(text: str, path: str, number: int | None = None) -> Exercise:
             raise reader.error("figures", f"unknown field {figure!r} (use "
                                f"{', '.join(FIGURES)})")
     shown = tuple(figures) or tuple(dict.fromkeys(f.split(".")[1] for f in fields))
-    grid = _grid(reader)
+    grid, recipe, student_seed = _grid(reader)
     if grid.start is None or grid.goal is None:
         raise reader.error("generate" if "generate" in data else "map",
                            "the exercise's map needs a start (S) and a goal (G)")
     searches = tuple(zip(labels, contenders, strict=False))  # as before: not checked equal
     return Exercise(path, number, reader.string("title"), reader.string("text"), grid,
                     searches, frozenset(edits), condition, solved, fields, shown,
-                    reader.string("hint", ""), other, semantics)
+                    reader.string("hint", ""), other, semantics, by_hand, mistakes, recipe,
+                    student_seed)
 
 
 def load_exercise(path: str | Path, number: int | None = None) -> Exercise:
@@ -322,5 +396,5 @@ def find_exercise(name: str) -> Exercise:
     return load_exercise(name)
 
 
-__all__ = ["EDITS", "Exercise", "built_in_exercise", "find_exercise", "load_exercise",
-           "parse_exercise", "search_name"]
+__all__ = ["EDITS", "STUDENT_SEED", "Exercise", "built_in_exercise", "find_exercise",
+           "load_exercise", "parse_exercise", "search_name"]

@@ -31,6 +31,11 @@ def as_cell(state: State) -> Cell:
     return state
 
 
+def state_json(state: State) -> object:
+    """A cell as JSON writes it, ``[x, y]``; a node as its name."""
+    return state if isinstance(state, str) else list(state)
+
+
 def state_width(board: Grid | Graph) -> int:
     """The widest a state of ``board`` is written (:func:`state_text`): the map's farthest
     cell's, or the graph's longest name."""
@@ -39,4 +44,4 @@ def state_width(board: Grid | Graph) -> int:
     return len(f"({board.width - 1},{board.height - 1})")
 
 
-__all__ = ["State", "as_cell", "state_text", "state_width"]
+__all__ = ["State", "as_cell", "state_json", "state_text", "state_width"]

@@ -27,6 +27,7 @@ from tui_search.engine.run.recorded import Run, Step
 from tui_search.engine.search.choices import RECURSIVE_WORDS, VISIT_WORDS, Semantics
 from tui_search.engine.search.registry import Algorithm, get_algorithm
 from tui_search.engine.search.state import State
+from tui_search.engine.traces.causes import TRACE_VOICE, Voice
 from tui_search.engine.traces.differences import Causes, Difference
 from tui_search.engine.traces.read import Trace, TraceStep, show
 
@@ -118,11 +119,12 @@ class Verdict:
 class _Checker:
     """One comparison: the trace's steps against the run's, in lockstep."""
 
-    def __init__(self, trace: Trace, run: Run, look_ahead: int) -> None:
+    def __init__(self, trace: Trace, run: Run, look_ahead: int,
+                 voice: Voice = TRACE_VOICE) -> None:
         self.trace, self.run, self.look_ahead = trace, run, look_ahead
         self.algo = run.algo
         self.name = f"this {run.algo.short}" if run.semantics.recursive else run.algo.short
-        self.causes = Causes(trace, run, self.name)
+        self.causes = Causes(trace, run, self.name, voice)
         self.counts_discarded: bool | None = None  # does the trace list the discarded pops?
         self.left_out: list[tuple[int, State]] = []  # the discarded pops it did not list
         self.notes: list[str] = []
@@ -176,7 +178,7 @@ class _Checker:
                     n, t.line, "goes_on",
                     f"step {n}: your trace expands {show(t.node)}; {self.name} has stopped "
                     f"after its step {self.run.recorded} ({self._why_stopped()})", None, t.node,
-                    suggest=self._goes_on_suggests()))
+                    suggest=self._goes_on_suggests(), cause="goes-on"))
             k = e.index
             if e.discarded:  # the trace lists the pop that did nothing
                 self.counts_discarded = True
@@ -186,7 +188,8 @@ class _Checker:
                 return self.verdict(i, Difference(
                     n, t.line, "expand",
                     f"step {n}: your trace discards {show(t.node)}; {self.name} expands "
-                    f"{show(e.node)} (a cell it has not expanded before)", e.node, t.node))
+                    f"{show(e.node)} (a cell it has not expanded before)", e.node, t.node,
+                    cause="discarded"))
             if e.node != t.node:
                 return self.verdict(i, self.expand_difference(n, k, t, e))
             wrong = self.causes.successors(n, t, e) if t.listed else None
@@ -203,7 +206,7 @@ class _Checker:
                 n + 1, None, "ends",
                 f"step {n + 1}: your trace ends after step {n}; {self.name} goes on and "
                 f"expands {show(e.node)} ({self.causes._next_words()})", e.node, None,
-                suggest=self._ends_suggests()))
+                suggest=self._ends_suggests(), cause="ends"))
         return self.verdict(len(steps), None)
 
     def next_step(self, k: int, i: int, t: TraceStep | None) -> Step | None:
@@ -247,16 +250,18 @@ class _Checker:
 
 
 def check_trace(trace: Trace, grid: Grid | Graph, algorithm: str, semantics: Semantics,
-                max_steps: int | None = None, look_ahead: int = LOOK_AHEAD) -> Verdict:
+                max_steps: int | None = None, look_ahead: int = LOOK_AHEAD,
+                voice: Voice = TRACE_VOICE) -> Verdict:
     """Compare ``trace`` with ``algorithm`` under ``semantics`` on ``grid``, step by step
     (``look_ahead``: how many of the search's steps to look through for the step at which it
-    would expand the cell the trace took instead; 0 leaves that out)."""
+    would expand the cell the trace took instead; 0 leaves that out; ``voice``: whom the
+    sentences speak of, the trace's author by default)."""
     limit = max_steps if max_steps is not None else 4 * len(trace.steps) + LOOK_AHEAD
     # The loop of the published choices pauses every first chunk's steps all along: a few
     # at first, as most candidates part within them.
     first = FIRST_CHUNK if semantics.plain else FIRST_PUBLISHED
     return _Checker(trace, Run(grid, algorithm, semantics, limit, first_chunk=first),
-                    look_ahead).check()
+                    look_ahead, voice).check()
 
 
 __all__ = ["Difference", "Verdict", "check_trace", "choices_text"]

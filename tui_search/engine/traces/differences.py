@@ -7,26 +7,30 @@ module says why, from the run's state just before that step (its frontier, what 
 and at what cost) and from the trace's own earlier steps: a cell expanded twice (a search that
 marks cells visited when it takes them off), a tie of the priority taken another way (and by
 which rule), the start pushed again, a cell re-opened or not, a cost cheaper by rounding only,
-a cell on the node's own path, the corner rule -- never two causes at once.
+a cell on the node's own path, the corner rule -- never two causes at once.  Each cause has
+a code (:data:`~tui_search.engine.traces.causes.CAUSES`), and the sentences speak of a trace's
+author or of a student stepping the search by hand (a
+:class:`~tui_search.engine.traces.causes.Voice`): one vocabulary for both.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 
-from tui_search.engine.maps.grid import DELTAS, move_cost
+from tui_search.engine.maps.grid import DELTAS, Grid, move_cost
 from tui_search.engine.run.recorded import Run, Step
-from tui_search.engine.search.choices import TIE_RULES, corner_allowed
+from tui_search.engine.search.choices import corner_allowed
 from tui_search.engine.search.registry import Frontier
-from tui_search.engine.search.state import State, as_cell
+from tui_search.engine.search.state import State, as_cell, state_json
+from tui_search.engine.traces.causes import TRACE_VOICE, Voice
 from tui_search.engine.traces.read import Trace, TraceStep, show
-
-#: Two priorities closer than this tie (the floats of one cost summed in another order).
-TIE = 1e-9
+from tui_search.engine.traces.ties import tie
 
 #: The choices a difference suggests, as ``(field, value)`` pairs of
 #: :class:`~tui_search.engine.search.choices.Semantics`.
 Suggestion = tuple[tuple[str, object], ...]
+#: A cause in words: the sentence, the choices that would explain it, its code.
+Said = tuple[str, tuple[Suggestion, ...], str]
 
 
 @dataclass(frozen=True)
@@ -46,17 +50,15 @@ class Difference:
     tie: str = ""
     #: The choices that would explain it, each a change the diagnosis tries.
     suggest: tuple[Suggestion, ...] = ()
+    #: What it is, as a code of :data:`~tui_search.engine.traces.causes.CAUSES` ("newest").
+    cause: str = ""
 
     def as_json(self) -> dict[str, object]:
         return {"step": self.step, "line": self.line, "kind": self.kind,
-                "message": self.message,
-                "expected": state_json(self.expected), "got": state_json(self.got),
+                "cause": self.cause or None, "message": self.message,
+                "expected": None if self.expected is None else state_json(self.expected),
+                "got": None if self.got is None else state_json(self.got),
                 "tie": self.tie or None}
-
-
-def state_json(state: State | None) -> object:
-    """A cell as JSON writes it (``[x, y]``), a node as its name, None as null."""
-    return list(state) if isinstance(state, tuple) else state
 
 
 def swapped(cell: State) -> State:
@@ -66,11 +68,14 @@ def swapped(cell: State) -> State:
 
 class Causes:
     """Why a trace parts from ``run`` (a search's run) at a step: the sentence and what would
-    explain it.  ``name`` is what the sentences call the search ("BFS")."""
+    explain it.  ``name`` is what the sentences call the search ("BFS"); ``voice`` whom they
+    speak of (a trace's author, or a student stepping the search by hand)."""
 
-    def __init__(self, trace: Trace, run: Run, name: str) -> None:
-        self.trace, self.run, self.name = trace, run, name
+    def __init__(self, trace: Trace, run: Run, name: str, voice: Voice = TRACE_VOICE) -> None:
+        self.trace, self.run, self.name, self.voice = trace, run, name, voice
         self.algo, self.sem = run.algo, run.semantics
+        self.says, self.flag = voice.says, voice.flag
+        self.by_trace = voice is TRACE_VOICE
 
     # -- the trace's own earlier steps ----------------------------------------------------------
     def first_added(self, cell: State, before: int) -> int | None:
@@ -98,24 +103,35 @@ class Causes:
         before = self.expanded_at(cell, n - 1)
         if before is not None:
             return Difference(n, t.line, "expand", f"step {n}: {self._twice(cell, before)}",
-                              e.node, cell, suggest=self._twice_suggests())
+                              e.node, cell, suggest=self._twice_suggests(), cause="twice")
         tie = self._tie(k, e.node, cell) if self.algo.priority is not None else None
         if tie is not None:
             words, kind, rules = tie
             return Difference(n, t.line, "expand", f"step {n}: {words}", e.node, cell, kind,
-                              tuple(((("ties", r),)) for r in rules))
-        discipline = self._discipline(n, cell, e.node)
+                              tuple(((("ties", r),)) for r in rules), "tie")
+        discipline = self._discipline(n, cell, e.node) or self._by_frontier(k, cell, e.node)
         if discipline is not None:
-            words, suggest = discipline
+            words, suggest, cause = discipline
             return Difference(n, t.line, "expand", f"step {n}: {words}", e.node, cell,
-                              suggest=suggest)
+                              suggest=suggest, cause=cause)
         return Difference(n, t.line, "expand",
                           f"step {n}: {name} expands {show(e.node)} next "
-                          f"({self._next_words()}); your trace expands {show(cell)}, {where}",
-                          e.node, cell)
+                          f"({self._next_words()}); {self.says('expands')} {show(cell)}, "
+                          f"{where}", e.node, cell, cause="out-of-turn")
 
-    def _discipline(self, n: int, cell: State, theirs: State
-                    ) -> tuple[str, tuple[Suggestion, ...]] | None:
+    def not_dropped(self, n: int, e: Step, cell: State) -> Difference:
+        """Step ``n`` takes ``cell`` where the search takes ``e.node`` off first and drops it,
+        a cell it has expanded already (visit on expand: a student stepping by hand takes it
+        off too)."""
+        before = self.expanded_at(e.node, n - 1)
+        at = f" (at step {before})" if before is not None else ""
+        return Difference(n, None, "expand",
+                          f"step {n}: {self.name} takes {show(e.node)} off first "
+                          f"({self._next_words()}): it was expanded already{at}, so "
+                          f"{self.name} drops it; {self.says('takes')} {show(cell)}",
+                          e.node, cell, cause="not-dropped")
+
+    def _discipline(self, n: int, cell: State, theirs: State) -> Said | None:
         """When both cells were added by the trace's previous step: a stack takes the last
         of them, a recursion the first, a queue the oldest.  The trace that takes the first
         where a stack takes the last is a recursion; the one that takes the newest where a
@@ -131,23 +147,52 @@ class Causes:
             # the first listed: a queue's (its next is a sibling) or a recursion's (a child)
             later = self.trace.steps[n].node if n < len(self.trace.steps) else None
             own = self.trace.steps[n - 1].successors
-            head = (f"{name} takes {show(theirs)}, the last cell step {n - 1} pushed; your "
-                    f"trace takes {show(cell)}, the first it listed")
+            which = "the first it listed" if self.by_trace else f"the first step {n - 1} added"
+            head = (f"{name} takes {show(theirs)}, the last cell step {n - 1} pushed; "
+                    f"{self.says('takes')} {show(cell)}, {which}")
             recursion = ((("recursive", "neighbours"),), (("recursive", "calls"),))
             if algo.iterative or (later is not None and later in own):
                 return (f"{head}, and then a cell it added, as a recursion calling itself on "
-                        "each neighbour in turn does (--recursive)", recursion)
+                        f"each neighbour in turn does{self.flag('--recursive')}", recursion,
+                        "recursion")
             if own and later in listed:
-                return f"{head}, and then {show(later)}, the next: a queue (a BFS: -a bfs)", ()
-            return (f"{head}, as a queue or a recursion does, not a stack (-a bfs, or "
-                    "--recursive)", recursion)
+                bfs = ": -a bfs" if self.by_trace else ""
+                return (f"{head}, and then {show(later)}, the next: a queue (a BFS{bfs})", (),
+                        "first-listed")
+            return (f"{head}, as a queue or a recursion does, not a stack"
+                    f"{self.flag('-a bfs, or --recursive')}", recursion, "first-listed")
         if algo.frontier is Frontier.FIFO and not first and cell == listed[-1]:
-            return (f"{name} takes {show(theirs)}, the oldest cell on its queue; your trace "
-                    f"takes {show(cell)}, the newest, as a stack does (a DFS: -a dfs)", ())
+            return self._newest(theirs, cell)
         return None
 
+    def _newest(self, theirs: State, cell: State) -> Said:
+        dfs = ": -a dfs" if self.by_trace else ""
+        return (f"{self.name} takes {show(theirs)}, the oldest cell on its queue; "
+                f"{self.says('takes')} {show(cell)}, the newest, as a stack does (a DFS{dfs})",
+                (), "newest")
+
+    def _by_frontier(self, k: int, cell: State, theirs: State) -> Said | None:
+        """The search's frontier before its step ``k`` (the trace's too: every step before
+        matched): the newest entry taken from a queue, the oldest from a stack."""
+        algo = self.algo
+        if algo.frontier not in (Frontier.FIFO, Frontier.LIFO) or self.sem.recursive:
+            return None
+        run = self.run
+        run.goto(k - 1)
+        cell_of = run.nodes.cell
+        cells = [cell_of(g) for g in run.now.frontier()]  # the next out first
+        if len(cells) < 2 or cells[-1] != cell or cell == theirs:
+            return None
+        if algo.frontier is Frontier.FIFO:
+            return self._newest(theirs, cell)
+        bfs = ": -a bfs" if self.by_trace else ""
+        return (f"{self.name} takes {show(theirs)}, the top of its stack, the newest; "
+                f"{self.says('takes')} {show(cell)}, the oldest, at its bottom, as a queue "
+                f"does (a BFS{bfs})", (), "oldest")
+
     def _twice(self, cell: State, before: int) -> str:
-        what = f"{show(cell)} was expanded already at step {before}: your search expanded it twice"
+        what = (f"{show(cell)} was expanded already at step {before}: "
+                f"{self.says('expanded', search=True)} it twice")
         if self.algo.weighted:
             return (f"{what}; {self.name} expands a cell again only when it is reached cheaper "
                     "after" + ("" if self.sem.reopen else " (and never, with no re-opening)"))
@@ -179,98 +224,79 @@ class Causes:
         return f"the {algo.frontier.noun}'s {algo.frontier.next_end}"
 
     def _tie(self, k: int, mine: State, theirs: State) -> tuple[str, str, list[str]] | None:
-        """When the trace's cell ties with the search's on the priority: the sentence, the
-        tie's kind ("h" where the trace took the lower or higher h of an f tie, else "entry")
-        and the tie rules that would take the trace's cell."""
-        run = self.run
-        run.goto(k - 1)
-        now, cell_of, costs = run.now, run.nodes.cell, run.nodes.costs
-        entries: list[tuple[int, State, tuple[float, float, float]]] = []
-        for g in now.frontier():
-            c = costs(g)
-            if c is not None and not now.is_stale(g):
-                entries.append((g, cell_of(g), c))
-        top = next((c for _, cell, c in entries if cell == mine), None)
-        got = next((c for _, cell, c in entries if cell == theirs), None)
-        if top is None or got is None or abs(top[2] - got[2]) > TIE:
-            return None
-        tied = [(g, cell, c) for g, cell, c in entries if abs(c[2] - top[2]) <= TIE]
-        rules = [r for r in _PREFERRED if r != self.sem.ties and _picks(r, tied) == theirs
-                 and not self.sem.replace(ties=r).refusal(self.algo)]
-        p = self.algo.priority_name
-        mine_words = _RULE_WORDS[self.sem.ties]
-        start = f"{self.name} expands {show(mine)} next; your trace expands {show(theirs)}: "
-        if rules:
-            rule = rules[0]
-            how = f"{_RULE_WORDS[rule]} of the tie"
-            if rule in ("low-h", "high-h"):
-                how += f" ({got[1]:.2f}, not {top[1]:.2f})"
-            elif rule in ("low-g", "high-g"):
-                how += f" ({got[0]:.2f}, not {top[0]:.2f})"
-            words = (f"{start}{p} ties at {top[2]:.2f}, and your search takes {how}"
-                     f"{_RULE_WHY.get(rule, '')}; this search takes {mine_words} "
-                     f"(--ties {rule})")
-            kind = "h" if rule in ("low-h", "high-h") and p == "f" else "entry"
-            return words, kind, rules
-        words = (f"{start}{p} ties at {top[2]:.2f}, and your search takes another entry of the "
-                 f"tie, one no tie rule here takes; this search takes {mine_words}")
-        return words, "entry", []
+        """When the trace's cell ties with the search's on the priority
+        (:func:`~tui_search.engine.traces.ties.tie`)."""
+        return tie(self.run, k, mine, theirs, self.name, self.voice)
 
     # -- a successor list ---------------------------------------------------------------------
-    def successors(self, n: int, t: TraceStep, e: Step) -> Difference | None:
+    def successors(self, n: int, t: TraceStep, e: Step, whole: bool = True
+                   ) -> Difference | None:
         """The first difference between the successors the trace's step ``n`` added and the
-        search's step's (None: the same, in the same order)."""
-        got: list[State] = list(t.successors)
-        want: list[State] = [c for _, c in e.successors]
-        if got == want:
+        search's step's (None: the same, in the same order).  ``whole=False``: the trace's
+        list is the start of one (a student's marks so far): a cell it has not listed yet is
+        no difference, one listed before its turn is."""
+        got, want = list(t.successors), [c for _, c in e.successors]
+        if got == want or (not whole and want[:len(got)] == got):
             return None
         seen: set[State] = set()
         for c in got:
             if c in seen:
-                return self._diff(n, t, f"your trace added {show(c)} twice", None, c)
+                return self._diff(n, t, f"{self.says('added')} {show(c)} twice", None, c,
+                                  cause="added-twice")
             seen.add(c)
         for c in got:
             if c not in want:
-                words, suggest = self._added(n, t, e, c, want)
-                return self._diff(n, t, words, None, c, suggest)
-        for c in want:
+                words, suggest, cause = self._added(n, t, e, c, want)
+                return self._diff(n, t, words, None, c, suggest, cause)
+        for c in want if whole else ():
             if c not in seen:
-                words, suggest = self._left_out(n, t, e, c, got, want)
-                return self._diff(n, t, words, c, None, suggest)
-        first = next(i for i, (a, b) in enumerate(zip(got, want, strict=True)) if a != b)
+                words, suggest, cause = self._left_out(n, t, e, c, got, want)
+                return self._diff(n, t, words, c, None, suggest, cause)
+        first = next(i for i, (a, b) in enumerate(zip(got, want, strict=False)) if a != b)
         order = ",".join(self.sem.order)
-        words = (f"your trace added {', '.join(map(show, got))}; {self.name} adds "
-                 f"{', '.join(map(show, want))} (order {order}): {show(want[first])} before "
-                 f"{show(got[first])}")
-        return self._diff(n, t, words, want[first], got[first])
+        if whole:
+            words = (f"{self.says('added')} {', '.join(map(show, got))}; {self.name} adds "
+                     f"{', '.join(map(show, want))} (order {order}): {show(want[first])} "
+                     f"before {show(got[first])}")
+        else:  # not the whole list: that would give the rest away
+            words = (f"{self.says('added')} {', '.join(map(show, got))}; {self.name} adds "
+                     f"{show(want[first])} before {show(got[first])} (order {order})")
+        return self._diff(n, t, words, want[first], got[first], cause="order")
 
     @staticmethod
     def _diff(n: int, t: TraceStep, words: str, expected: State | None, got: State | None,
-              suggest: tuple[Suggestion, ...] = ()) -> Difference:
+              suggest: tuple[Suggestion, ...] = (), cause: str = "") -> Difference:
         return Difference(n, t.line, "successors", f"step {n}: {words}", expected, got,
-                          suggest=suggest)
+                          suggest=suggest, cause=cause)
 
-    def _added(self, n: int, t: TraceStep, e: Step, c: State, want: list[State]
-               ) -> tuple[str, tuple[Suggestion, ...]]:
+    def _added(self, n: int, t: TraceStep, e: Step, c: State, want: list[State]) -> Said:
         """The trace adds ``c``, which the search does not: why, in one cause."""
         name, node, sem = self.name, t.node, self.sem
         goal = self.run.goal
+        board = self.run.board
+        if isinstance(board, Grid) and isinstance(c, tuple):  # a grid's cell
+            if not board.in_bounds(c):
+                return f"{self.says('added')} {show(c)}, which is off the map", (), "off-map"
+            if board.is_blocked(c):
+                return (f"{self.says('added')} {show(c)}, an obstacle: no search adds it", (),
+                        "obstacle")
         if want and want[-1] == goal and e.found_goal:
-            return (f"your trace added {show(c)} after the goal {show(goal)}; {name} stops when "
-                    "it adds the goal (the goal tested on generate), yours goes on",
-                    ((("goal_test", "expand"),),))
-        head = f"your trace added {show(c)}, which {name} does not add from {show(node)}"
+            return (f"{self.says('added')} {show(c)} after the goal {show(goal)}; {name} stops "
+                    "when it adds the goal (the goal tested on generate), yours goes on",
+                    ((("goal_test", "expand"),),), "after-goal")
+        head = f"{self.says('added')} {show(c)}, which {name} does not add from {show(node)}"
         if isinstance(c, str) or isinstance(node, str):  # a graph's: no move names the cause
-            return f"{head}: no road of it leads there", ()
+            return f"{head}: no road of it leads there", (), "no-road"
         hint = "; x is the column, y the row: swapped?" if swapped(c) in want else ""
         delta = (c[0] - node[0], c[1] - node[1])
         move = next((d for d, v in DELTAS.items() if v == delta), None)
         if move is None:
-            return f"{head}: it is not one move away{hint}", ()
+            return f"{head}: it is not one move away{hint}", (), "not-a-move"
         if move not in sem.order:
-            return f"{head}: move {move} is not in order {','.join(sem.order)}{hint}", ()
-        grid = self.run.grid
+            return (f"{head}: move {move} is not in order {','.join(sem.order)}{hint}", (),
+                    "move-not-allowed")
         dx, dy = delta
+        grid = self.run.grid
         if dx and dy and not corner_allowed(sem.corners, grid.is_free((node[0] + dx, node[1])),
                                             grid.is_free((node[0], node[1] + dy))):
             others = tuple((("corners", r),) for r in ("always", "one", "never")
@@ -278,21 +304,21 @@ class Causes:
                                r, grid.is_free((node[0] + dx, node[1])),
                                grid.is_free((node[0], node[1] + dy))))
             return (f"{head}: the move {move} passes a blocked corner, and the corner rule "
-                    f"{sem.corners} refuses it", others)
+                    f"{sem.corners} refuses it", others, "corner")
         return self._reached(n, t, e, c, head)
 
-    def _reached(self, n: int, t: TraceStep, e: Step, c: State, head: str
-                 ) -> tuple[str, tuple[Suggestion, ...]]:
+    def _reached(self, n: int, t: TraceStep, e: Step, c: State, head: str) -> Said:
         """The trace adds ``c``, a legal move the search refuses as reached: which rule."""
         name, sem, algo = self.name, self.sem, self.algo
         if sem.tree_search:
             return (f"{head}: it is on the path to {show(t.node)}, which tree search with a "
-                    "path check skips; yours skips nothing (--no-path-check)",
-                    ((("path_check", False),),))
+                    f"path check skips; yours skips nothing{self.flag('--no-path-check')}",
+                    ((("path_check", False),),), "on-path")
         if c == self.run.start and sem.mark_start:
-            return (f"your trace pushes the start {show(c)} again: {name} marks the start "
+            return (f"{self.says('pushes')} the start {show(c)} again: {name} marks the start "
                     "reached when it begins; a search that does not (as some library code) "
-                    "pushes it again (--mark-start no)", ((("mark_start", False),),))
+                    f"pushes it again{self.flag('--mark-start no')}",
+                    ((("mark_start", False),),), "start-again")
         added = self.first_added(c, n - 1)
         expanded = self.expanded_at(c, n - 1)
         if algo.weighted:
@@ -300,21 +326,23 @@ class Causes:
         if algo.iterative:
             return (f"{head}: it was reached already in this iteration, no deeper than from "
                     f"{show(t.node)}, and {name} pushes a cell again only when reached "
-                    "shallower", ())
+                    "shallower", (), "reached-shallower")
         if sem.visit == "generate" and not sem.recursive and expanded is None:
             at = {0: "the start", None: "an earlier step"}.get(added, f"step {added}")
+            one = "one" if self.by_trace else "a search"
             return (f"{head}: it was added already, at {at}; {name} marks a cell visited when "
-                    "it adds it, so it adds it once, and your search adds it again, as one "
-                    "that marks cells visited when it takes them off does (--visit expand)",
-                    ((("visit", "expand"),), (("visit", "expand-again"),)))
+                    f"it adds it, so it adds it once, and {self.says('adds', search=True)} it "
+                    f"again, as {one} that marks cells visited when it takes them off does"
+                    f"{self.flag('--visit expand')}",
+                    ((("visit", "expand"),), (("visit", "expand-again"),)), "reached")
         if expanded is None:  # a recursion's calls: visited deeper down before the call
             return (f"{head}: {name} visits it deeper down, from an earlier call, before this "
-                    "call comes to it", ())
+                    "call comes to it", (), "visited")
         return (f"{head}: it was expanded already, at step {expanded}, and {name} adds a cell "
-                "it has visited no more", ())
+                "it has visited no more", (), "expanded")
 
     def _cheaper(self, n: int, t: TraceStep, e: Step, c: State, head: str,
-                 expanded: int | None) -> tuple[str, tuple[Suggestion, ...]]:
+                 expanded: int | None) -> Said:
         """A cost-ordered search refuses ``c``: closed, reached as cheaply, or cheaper by less
         than its cost tolerance."""
         run, sem, name = self.run, self.sem, self.name
@@ -322,7 +350,8 @@ class Causes:
         run.goto(k - 1)
         if not sem.reopen and expanded is not None:
             return (f"{head}: it is closed (expanded at step {expanded}), and {name} never "
-                    "re-opens a cell; yours does (--reopen yes)", ((("reopen", True),),))
+                    f"re-opens a cell; yours does{self.flag('--reopen yes')}",
+                    ((("reopen", True),),), "reopened")
         node_event = run.steps.expanded_event(k)
         g = run.nodes.cost(node_event) + _step_cost(run, t.node, c)
         last = run.now.last_event(c)
@@ -330,34 +359,39 @@ class Causes:
         if g < best:
             return (f"{head}: it costs {g:.6f} from here, cheaper than its best so far "
                     f"({best:.6f}) by only {best - g:.1e}, which {name} calls no cheaper (cost "
-                    f"tolerance {sem.cost_tolerance:g}); yours compares costs exactly "
-                    "(--cost-tolerance 0)", ((("cost_tolerance", 0.0),),))
+                    f"tolerance {sem.cost_tolerance:g}); yours compares costs exactly"
+                    f"{self.flag('--cost-tolerance 0')}", ((("cost_tolerance", 0.0),),),
+                    "rounding")
         return (f"{head}: it was reached already at g {best:.2f}, and this path costs "
-                f"{g:.2f}, no cheaper ({name} pushes a cell again only when reached cheaper)", ())
+                f"{g:.2f}, no cheaper ({name} pushes a cell again only when reached cheaper)",
+                (), "not-cheaper")
 
     def _left_out(self, n: int, t: TraceStep, e: Step, c: State, got: list[State],
-                  want: list[State]) -> tuple[str, tuple[Suggestion, ...]]:
+                  want: list[State]) -> Said:
         """The search adds ``c``, which the trace does not: why, in one cause."""
         name, sem, algo = self.name, self.sem, self.algo
-        head = f"{name} adds {show(c)} from {show(t.node)}; your trace does not"
+        head = f"{name} adds {show(c)} from {show(t.node)}; {self.says('does not')}"
         expanded = self.expanded_at(c, n - 1)
         if algo.weighted and sem.reopen and expanded is not None:
             return (f"{name} re-opens {show(c)} from {show(t.node)} (reached cheaper than when "
-                    f"it was expanded, at step {expanded}); your trace does not: it never "
-                    "re-opens a cell (a closed set: --reopen no)", ((("reopen", False),),))
+                    f"it was expanded, at step {expanded}); {self.says('does not')}: it never "
+                    f"re-opens a cell (a closed set{': --reopen no' if self.by_trace else ''})",
+                    ((("reopen", False),),), "not-reopened")
         if algo.weighted and sem.cost_tolerance == 0:
-            return (f"{head}: {show(c)} is cheaper from here by rounding only, which your "
-                    "search calls no cheaper (--cost-tolerance 1e-09)",
-                    ((("cost_tolerance", 1e-9),),))
+            return (f"{head}: {show(c)} is cheaper from here by rounding only, which "
+                    f"{'your search calls' if self.by_trace else 'you called'} no cheaper"
+                    f"{self.flag('--cost-tolerance 1e-09')}",
+                    ((("cost_tolerance", 1e-9),),), "rounding-missed")
         goal = self.run.goal
         if got and got[-1] == goal and want[:len(got)] == got:
-            return (f"{head}: your trace stops when it adds the goal {show(goal)}, as a search "
-                    "that tests the goal on generate does", ((("goal_test", "generate"),),))
+            return (f"{head}: {self.says('stops')} when it adds the goal {show(goal)}, as a "
+                    "search that tests the goal on generate does",
+                    ((("goal_test", "generate"),),), "stopped-at-goal")
         if sem.recursive == "neighbours" and _subsequence(got, want):
             return (f"{head}: your line lists the cells the call recursed into, not all the "
-                    "neighbours it would try (--recursive-lines calls)",
-                    ((("recursive", "calls"),),))
-        return head, ()
+                    f"neighbours it would try{self.flag('--recursive-lines calls')}",
+                    ((("recursive", "calls"),),), "calls")
+        return head, (), "left-out"
 
 
 def _step_cost(run: Run, a: State, b: State) -> float:
@@ -374,28 +408,6 @@ def _step_cost(run: Run, a: State, b: State) -> float:
 def _subsequence(short: list[State], long: list[State]) -> bool:
     it = iter(long)
     return all(c in it for c in short)
-
-
-#: How a tie rule takes an entry of a tie, and why a student's code does so.
-_RULE_WORDS = {"fifo": "the oldest entry", "lifo": "the newest entry",
-               "node": "the smallest cell", "low-h": "the lower h", "high-h": "the higher h",
-               "low-g": "the lower g", "high-g": "the higher g"}
-_RULE_WHY = {"node": ", as a heap of (f, (x, y)) tuples does"}
-#: The tie rules in the order a difference names them (a student's tuple first).
-_PREFERRED = ("node", "low-h", "high-h", "lifo", "low-g", "high-g", "fifo")
-assert set(_PREFERRED) == set(TIE_RULES)
-
-
-def _picks(rule: str, tied: list[tuple[int, State, tuple[float, float, float]]]) -> State:
-    """The cell the tie ``rule`` takes of ``tied`` entries (event, cell, (g, h, f)); then the
-    oldest, as :func:`~tui_search.engine.search.rules.tie_key` orders them."""
-    def key(entry: tuple[int, State, tuple[float, float, float]]) -> tuple[object, int]:
-        g, cell, (cost, h, _) = entry
-        by: dict[str, object] = {"fifo": 0, "lifo": -g, "node": cell, "low-h": h,
-                                 "high-h": -h, "low-g": cost, "high-g": -cost}
-        return by[rule], g
-
-    return min(tied, key=key)[1]
 
 
 __all__ = ["Causes", "Difference", "Suggestion", "swapped"]

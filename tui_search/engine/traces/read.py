@@ -7,6 +7,8 @@ line ``{"start": [x, y], "goal": [x, y]}`` and an optional last line ``{"path": 
 ``{"path": null}``: no path found).  A trace none of whose lines has ``successors`` is of
 expansions only.  Coordinates are (column, row) from the top left.  Blank lines are skipped.
 
+:func:`trace_line` writes a step in it (``--trace``, and a run stepped by hand).
+
 A malformed trace is a :class:`~tui_search.engine.maps.read.MapError` naming the file and the
 line: bad JSON, a cell off the map or on an obstacle, a node expanded that was never added, a
 start (or goal) that is not the map's.  A trace is a student's, so untrusted
@@ -25,7 +27,8 @@ from typing import NamedTuple, overload
 from tui_search.engine.maps.graph import Graph
 from tui_search.engine.maps.grid import Grid
 from tui_search.engine.maps.read import MapError, each_line, read_text
-from tui_search.engine.search.state import State, as_cell, state_text
+from tui_search.engine.run.recording import Step
+from tui_search.engine.search.state import State, as_cell, state_json, state_text
 from tui_search.engine.util.untrusted import BadInput, load_json
 
 #: Bigger traces are refused before reading (each line an expansion: a search of a 512x512
@@ -320,10 +323,27 @@ def as_grid(board: Grid | Graph) -> Grid:
     return board
 
 
+def trace_line(step: Step) -> str:
+    """A step in this format, the line ``--trace`` writes: the node taken off and exactly the
+    successors it added, in order (a graph's: the nodes' names); iterative deepening adds the
+    depth limit, a discarded step says so."""
+    node = step.node
+    obj: dict[str, object] = {"step": step.index, "node": state_json(node)}
+    if isinstance(node, str):  # a graph's: the nodes reached, by name
+        obj["successors"] = [s for _, s in step.successors]
+    else:
+        obj["successors"] = [{"dir": d, "node": state_json(c)} for d, c in step.successors]
+    if step.depth_limit is not None:
+        obj["depth_limit"] = step.depth_limit
+    if step.discarded:
+        obj["discarded"] = True
+    return json.dumps(obj, separators=(", ", ": ")) + "\n"
+
+
 def load_trace(path: str, grid: Grid | Graph) -> Trace:
     """:func:`read_trace` of a file; a file that cannot be read is a one-line error."""
     return read_trace(read_text(path, "a trace", MAX_TRACE_BYTES), grid, path)
 
 
 __all__ = ["MAX_TRACE_BYTES", "Trace", "TraceStep", "TraceSteps", "load_trace", "read_trace",
-           "show"]
+           "show", "trace_line"]

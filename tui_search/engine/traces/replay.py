@@ -4,6 +4,8 @@ runs for the app's lockstep, and where they first part.
 The search is ``-a``'s under the choice flags, else the diagnosis's best candidate
 (:func:`~tui_search.engine.traces.diagnose.diagnose`); the first difference is the check's
 (:func:`~tui_search.engine.traces.check.check_trace`), numbered as the trace numbers its steps.
+A run stepped by hand (:mod:`~tui_search.engine.traces.hand`) is replayed the same way, its
+mistakes kept beside it, each at its step.
 No Textual here: the app's session holds a :class:`Replay` and asks it for its runs, their
 names, the cells to mark and the sentence to show.
 """
@@ -21,6 +23,7 @@ from tui_search.engine.search.registry import get_algorithm
 from tui_search.engine.search.state import State
 from tui_search.engine.traces.as_run import TRACE_ALGORITHM, trace_run
 from tui_search.engine.traces.check import Verdict, check_trace
+from tui_search.engine.traces.hand import Mistake
 from tui_search.engine.traces.read import Trace, TraceStep, show
 from tui_search.engine.util.filenames import describe_name
 
@@ -45,12 +48,17 @@ class Replay:
     #: Was the search found by the diagnosis (its order inferred from the trace), not given?
     inferred: bool = False
     own: Verdict | None = None
+    #: What the trace's pane is called (a run stepped by hand: "Your run").
+    label: str = TRACE_LABEL
+    #: A run stepped by hand: the mistakes made on the way, each at its step (the trace, the
+    #: steps as finally made, matches its search: these say where it did not at first).
+    mistakes: tuple[Mistake, ...] = ()
 
     @property
     def labels(self) -> list[str]:
         """The panes' names: the trace's, the search's ("DFS (recursive)" for a recursion)."""
         name = get_algorithm(self.algorithm).short
-        return [TRACE_LABEL, f"{name} (recursive)" if self.semantics.recursive else name]
+        return [self.label, f"{name} (recursive)" if self.semantics.recursive else name]
 
     @property
     def order(self) -> tuple[str, ...]:
@@ -100,7 +108,8 @@ class Replay:
         difference = verdict.difference
         name = self.labels[1]
         if difference is None:
-            return f"your trace matches {verdict.choices} for all {verdict.steps} steps"
+            return (f"{self.label.lower()} matches {verdict.choices} for all {verdict.steps} "
+                    "steps")
         if difference.kind == "expand" and difference.got and difference.expected:
             text = (f"step {difference.step}: your trace expands {show(difference.got)}; "
                     f"{name} expands {show(difference.expected)}")
@@ -122,7 +131,8 @@ def _where(board: Grid | Graph) -> tuple[bytes, State | None, State | None]:
 
 
 def replay_of(trace: Trace, grid: Grid | Graph, algorithm: str | None, semantics: Semantics,
-              max_steps: int = MAX_STEPS) -> Replay:
+              max_steps: int = MAX_STEPS, label: str = TRACE_LABEL,
+              mistakes: tuple[Mistake, ...] = ()) -> Replay:
     """``trace`` beside ``algorithm`` under ``semantics`` (as ``--check-trace -a`` checks
     it), or with no ``algorithm`` beside the diagnosis's best candidate.  The search's
     discarded pops that the trace left out are put back where the search discards them
@@ -137,7 +147,8 @@ def replay_of(trace: Trace, grid: Grid | Graph, algorithm: str | None, semantics
     aligned = with_discards(trace, own.left_out)
     verdict = own if aligned is trace else check_trace(aligned, grid, algorithm, semantics,
                                                        max_steps)
-    return Replay(aligned, algorithm, semantics, verdict, _where(grid), inferred, own)
+    return Replay(aligned, algorithm, semantics, verdict, _where(grid), inferred, own, label,
+                  mistakes)
 
 
 def with_discards(trace: Trace, left_out: tuple[tuple[int, State], ...]) -> Trace:

@@ -11,5 +11,7 @@
 * :mod:`~tui_search.tui.dialogs.confirm_quit`: unsaved edits, before leaving a map;
 * :mod:`~tui_search.tui.dialogs.confirm_overwrite`: saving onto a file that exists;
 * :mod:`~tui_search.tui.dialogs.save_refused`: a refused save's questions;
-* :mod:`~tui_search.tui.dialogs.export_prompt`: the file to export the run to.
+* :mod:`~tui_search.tui.dialogs.export_prompt`: the file to export the run to;
+* :mod:`~tui_search.tui.dialogs.by_hand_summary`: the end of a run by hand, and its replay;
+* :mod:`~tui_search.tui.dialogs.visitor_name`: a served visitor says who they are.
 """

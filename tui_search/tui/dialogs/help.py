@@ -61,6 +61,8 @@ KEYS = (
      "note names")),
     ("?", "this help"),
     ("q", "quit (asks first when there are unsaved edits)"),
+    ("H", "by hand: you make each step; click or enter takes an entry off"),
+    ("8 9 6 3 2 1 4 7", "by hand: add that move; ⌫ h u r: take back, hint, undo, again"),
 )
 
 HOW = """\

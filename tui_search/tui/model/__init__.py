@@ -5,6 +5,8 @@
 * :mod:`~tui_search.tui.model.playback`: the runs' positions moved in lockstep;
 * :mod:`~tui_search.tui.model.seek`: runs moved to an end in time-boxed slices;
 * :mod:`~tui_search.tui.model.quiz`: predict the next node;
+* :mod:`~tui_search.tui.model.by_hand`: the search made by hand, step by step, and its end;
+* :mod:`~tui_search.tui.model.class_records`: what the app records of a student (``--records``);
 * :mod:`~tui_search.tui.model.map_edits`: the session's edits of the map, and undo;
 * :mod:`~tui_search.tui.model.cell_edits`: one edit of a cell, or why it is refused;
 * :mod:`~tui_search.tui.model.history`: undo, redo, and whether the map differs from its file;

@@ -31,6 +31,8 @@ if TYPE_CHECKING:
     from tui_search.engine.course.grading import Verdict
     from tui_search.engine.maps.scenarios import Optimum
     from tui_search.engine.traces.replay import Replay
+    from tui_search.tui.model.by_hand import ByHand
+    from tui_search.tui.model.class_records import Recorder
     from tui_search.tui.model.lesson_play import LessonPlay
     from tui_search.tui.model.seek import Seek
 
@@ -92,6 +94,8 @@ class Session:
         self.fold_trees = False  # the panes' trees folded away by the user
         self.show_code = False  # the Code panel in the trees' place (the pseudocode, lit)
         self.lesson: LessonPlay | None = None  # --lesson: the lesson shown beside the panes
+        self.by_hand: ByHand | None = None  # by hand: the student makes the pane's steps
+        self.records: Recorder | None = None  # --records: where what the student did goes
         self._fitted = ""  # the note on a setting fitted to a search, once said
         self._optimum: Optimum | None = None  # while it holds: engine/scenarios.py
         if optimal_cost is not None:  # a --scen row: its module is imported already
@@ -255,6 +259,16 @@ class Session:
         self.jumps.end()
         self.new_runs()
 
+    def show_replay(self, replay: Replay, grid: Grid, name: str) -> None:
+        """Show ``replay`` (a run by hand's) beside its search, on ``grid`` (titled ``name``)
+        when the map shown is another."""
+        if not replay.fits(self.grid):
+            self.use_map(grid.copy(), None, untitled=name)
+        self.semantics = replay.semantics
+        self._remember(replay.algorithm)
+        self.jumps = ReplayJumps(replay, lambda: self.runs, self.goto)
+        self.new_runs()
+
     def saved(self, path: Path) -> None:
         self.map_path = Path(path)
         self.edits.history.saved()
@@ -346,6 +360,8 @@ class Session:
         node = run.now.current_node()
         if node is not None and run.k != before[0][0]:
             self.quiz, self.note = verdict(self.quiz, run, node, guess)
+            if self.records is not None:
+                self.records.quiz(run, node, guess, self.quiz)
         return before
 
     # -- the exercise ----------------------------------------------------------------------
@@ -373,6 +389,15 @@ class Session:
         cycle: list[Exercise | None] = [*self._exercises, built_in_exercise(1),
                                         built_in_exercise(2), None]
         return self.show_exercise(cycle[(cycle.index(self.exercise) + 1) % len(cycle)])
+
+    def own_exercise(self, exercise: Exercise) -> None:
+        """A student's own exercise (``seed = "student"``, now they are named): shown in
+        place of the one given at start, its map too."""
+        self._exercises = [exercise if e is not None and e.path == exercise.path else e
+                           for e in self._exercises]
+        self.show_exercise(exercise)
+        recipe = exercise.recipe
+        self.use_map(exercise.grid.copy(), None, recipe.title if recipe is not None else None)
 
     def verdict(self) -> Verdict:
         """The exercise's verdict on the map as it is (its searches, whole)."""

@@ -36,7 +36,10 @@ def check_exercise(screen: Screen[None], session: Session, panel: ChallengePanel
     exercise = session.exercise
     assert exercise is not None
     grid = session.grid
-    if grid.start is None or grid.goal is None:
+    if exercise.by_hand:  # no map to grade: the run by hand is the answer
+        result = getattr(screen, "hand_result", None)
+        panel.show_by_hand(exercise, result)
+    elif grid.start is None or grid.goal is None:
         panel.show(exercise, None, "Place a start (s) and a goal (g) to check it.")
     elif grid.width * grid.height > LIVE_CELLS:
         panel.show(exercise, None, f"Checking on this map ({group_digits(grid.width)}"
@@ -45,7 +48,12 @@ def check_exercise(screen: Screen[None], session: Session, panel: ChallengePanel
         screen.run_worker(lambda: _check_big(screen, session, panel, exercise, copy),
                           thread=True, exclusive=True, group="exercise")
     else:
-        panel.show(exercise, session.verdict())
+        verdict = session.verdict()
+        panel.show(exercise, verdict)
+        if session.records is not None:
+            problem = session.records.verdict(verdict, grid)
+            if problem:
+                screen.notify(problem, severity="warning", timeout=8)
 
 
 def _check_big(screen: Screen[None], session: Session, panel: ChallengePanel,
@@ -66,3 +74,5 @@ def _show_big_verdict(session: Session, panel: ChallengePanel, exercise: Exercis
     if exercise is session.exercise and (grid.start, grid.goal) == (
             now.start, now.goal) and grid.blocked == now.blocked:
         panel.show(exercise, verdict)
+        if session.records is not None:
+            session.records.verdict(verdict, grid)

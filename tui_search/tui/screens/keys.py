@@ -20,6 +20,7 @@ KEY_IMPORTANCE = {
     "compare": 6, "undo": 5, "settings": 5, "reset": 4, "save": 3, "quiz": 2, "overview": 2,
     "zoom": 1, "paint": 5, "lesson": 9, "difference": 8,
     "pick": 7,  # the frontier panel's, while it has the focus in the quiz
+    "by_hand": 2,
 }
 STEP = Binding.Group("Step", compact=True)
 ZOOM = Binding.Group("Zoom", compact=True)
@@ -100,6 +101,9 @@ KEYS: list[BindingType] = [
             tooltip="Replay: every pane to the step where your trace first differs from the "
             "search (again: back to where you were)"),
     Binding("i", "quiz", "Quiz", tooltip="Predict the next node: a quiz (again to stop)"),
+    # H, not h: h is the cursor's left, as vim's (docs/01-keys.md, "By hand").
+    Binding("H", "by_hand", "By hand", tooltip="By hand: you make each step of the search "
+            "(take an entry off, add its successors), each checked at once"),
     Binding("enter", "answer", "Answer", show=False,
             tooltip="Quiz: the node under the cursor (or the frontier entry picked) "
             "comes off next"),

@@ -163,6 +163,14 @@ class MainScreen(PanesScreen):
         else:
             self._check_exercise()
 
+    def action_by_hand(self) -> None:
+        """H: make the search's steps yourself, each checked at once (a screen of its own,
+        :mod:`~tui_search.tui.screens.by_hand`)."""
+        from tui_search.tui.screens.by_hand import open_by_hand  # only when asked
+
+        self.playback.stop()
+        open_by_hand(self)
+
     def action_quiz(self) -> None:
         self.session.toggle_quiz()
         self.present(changed=[])

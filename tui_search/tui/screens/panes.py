@@ -63,6 +63,8 @@ class PanesScreen(Screen[None]):
     """The session's panes and everything around them."""
 
     AUTO_FOCUS = "GridView"
+    #: How much each key's hint matters in the key bar (the by-hand screen has its own).
+    IMPORTANCE = KEY_IMPORTANCE
 
     def __init__(self, session: Session, file_access: FileAccess) -> None:
         super().__init__()
@@ -77,6 +79,8 @@ class PanesScreen(Screen[None]):
         self._fitted_lines = (-1, -1, -1)  # the status lines' heights last fitted to
         self._code_shown = False  # some pane showed the Code panel when last fitted
         self._last_note: tuple[str, float] | None = None  # the last note's kind, its end
+        #: A by-hand exercise's last run: solved, and its verdict (None: no run yet).
+        self.hand_result: tuple[bool, str] | None = None
 
     @cached_property
     def files(self) -> FileCommands:
@@ -88,7 +92,7 @@ class PanesScreen(Screen[None]):
 
     # -- layout ----------------------------------------------------------------------------
     def compose(self) -> ComposeResult:
-        yield KeyBar(KEY_IMPORTANCE, id="keys")
+        yield KeyBar(self.IMPORTANCE, id="keys")
         self.stats = Stats(id="stats")
         yield self.stats
         # the comparison table, the challenge and the too-small note: mounted when first
@@ -104,8 +108,14 @@ class PanesScreen(Screen[None]):
             from tui_search.tui.widgets.lesson_panel import LessonPanel  # only for a lesson
 
             yield LessonPanel(classes="lesson")
+        yield from self.over_panes()
         self.pane_box = PaneBox(*self.panes, id="panes")
         yield self.pane_box
+
+    def over_panes(self) -> list[Widget]:
+        """What a screen of panes shows over them besides the challenge (by hand: its
+        panel)."""
+        return []
 
     def _show_part(self, part: Widget, shown: bool) -> None:
         """Mount the table, the challenge or the too-small note the first time it shows."""
@@ -196,7 +206,8 @@ class PanesScreen(Screen[None]):
             if self.session.lesson is not None:
                 width -= lesson_width(width)
             legend = self.legend.get_content_height(self.size, self.size, max(1, width - 2))
-            challenge = CHALLENGE_LINES if self.session.exercise is not None else 0
+            challenge = CHALLENGE_LINES if (self.session.exercise is not None
+                                            or self.session.by_hand is not None) else 0
             height = self.size.height - 4 - legend - challenge
         grid = self.session.grid
         self._fitted_lines = self._lines_measured()
@@ -312,13 +323,16 @@ class PanesScreen(Screen[None]):
         session = self.session
         runs = session.runs
         marks = session.jumps.marks()
+        by_hand = session.by_hand
+        highlight = tuple(by_hand.highlight()) if by_hand is not None else ()
         for i, pane in enumerate(self.panes):
             if pane.is_mounted:  # else shown whole once mounted (_panes_changed)
                 pane.show(runs[i] if runs else None,
                           per_run[i] if per_run is not None else changed, follow=follow,
                           hide_order=session.quiz.on and i == 0,
+                          as_added=by_hand is not None,
                           title=escape(describe_name(session.title)),  # a file's name: not markup
-                          mark=marks[i] if i < len(marks) else None)
+                          mark=marks[i] if i < len(marks) else None, marks=highlight)
         if (table := self._table.made) is not None and table.display:
             table.show(session.labels, runs)
         self.show_pick()

@@ -11,6 +11,7 @@
 * :mod:`~tui_search.tui.view.code_trace`: the pseudocode lines a step ran;
 * :mod:`~tui_search.tui.view.frontier_rows`: a frontier entry's columns and rows;
 * :mod:`~tui_search.tui.view.frontier_text`: the frontier panel's wordings;
+* :mod:`~tui_search.tui.view.by_hand_text`: what the by-hand panel and its summary say;
 * :mod:`~tui_search.tui.view.tree_listing`: which nodes the tree panel lists;
 * :mod:`~tui_search.tui.view.tree_shape`: the search tree's shape, kept in step;
 * :mod:`~tui_search.tui.view.tree_window`: a tree's line as a sideways scroll shows it;

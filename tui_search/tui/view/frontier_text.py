@@ -29,17 +29,22 @@ ADDED_LEGENDS = ("+ just added · your trace doesn't say its discipline",
                  "your trace doesn't say its discipline", "+ added · no discipline given",
                  "no discipline given")
 HIDDEN_LEGENDS = ("+ just added · click picks", "+ added · click picks", "click picks")
+#: By hand: the entries as they were added, oldest first, the student taking them.
+HAND_LEGENDS = ("oldest first · + just added · click takes", "oldest first · click takes",
+                "oldest first")
 DISCARDED = "frontier-panel--discarded"
 #: Width of the move column: a direction's name (START, longer, is only ever on its own: the
 #: frontier holds just the root then).
 DIR_W = 2
 
 
-def titles(algo: Algorithm, hide_order: bool = False) -> tuple[str, ...]:
+def titles(algo: Algorithm, hide_order: bool = False, as_added: bool = False
+           ) -> tuple[str, ...]:
     """The panel's title in its wordings, longest first: "Queue (FIFO)", "Queue", "Q";
     a priority queue's says what it orders by as long as it can ("Priority queue (A*: f = g
     + h)" ... "PQ (f)", "PQ"); in the quiz, that the order is hidden ("Queue (FIFO) · order
-    hidden", "Queue (FIFO) · hidden", "Queue · hidden", then the plain wordings)."""
+    hidden", "Queue (FIFO) · hidden", "Queue · hidden", then the plain wordings); by hand
+    (``as_added``), that its entries are listed as added ("Queue (FIFO) · as added")."""
     name, letters = SHORT_NAMES[algo.frontier]
     note = TITLE_NOTES.get(algo.frontier)
     if algo.priority is None:
@@ -51,14 +56,18 @@ def titles(algo: Algorithm, hide_order: bool = False) -> tuple[str, ...]:
         plain = [algo.frontier_title, f"{name} ({what})", f"{name} ({by})", name,
                  f"{letters} ({by})", letters]
     wordings = plain
-    if hide_order:
+    if as_added:
+        wordings = [f"{text} · as added" for text in plain[:-1]] + plain
+    elif hide_order:
         wordings = [f"{plain[0]} · order hidden",
                     *(f"{text} · hidden" for text in plain[:-1]), *plain]
     return _longest_first(wordings)
 
 
-def legends(kind: Frontier, hide_order: bool) -> tuple[str, ...]:
+def legends(kind: Frontier, hide_order: bool, as_added: bool = False) -> tuple[str, ...]:
     """The bottom legend's wordings, longest first."""
+    if as_added:
+        return HAND_LEGENDS
     return HIDDEN_LEGENDS if hide_order else LEGENDS if kind.next_known else ADDED_LEGENDS
 
 

@@ -12,6 +12,7 @@
 * :mod:`~tui_search.tui.widgets.cell_readout`: the line that answers "what is this cell?";
 * :mod:`~tui_search.tui.widgets.compare_table`: compare mode's table;
 * :mod:`~tui_search.tui.widgets.challenge`: the exercise checked live;
+* :mod:`~tui_search.tui.widgets.by_hand_panel`: what to do by hand, a mistake named at once;
 * :mod:`~tui_search.tui.widgets.legend`: every kind of cell as the map draws it;
 * :mod:`~tui_search.tui.widgets.lesson_panel`: the lesson beside the panes;
 * :mod:`~tui_search.tui.widgets.key_bar`: the key hints at the bottom;

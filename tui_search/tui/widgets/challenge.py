@@ -78,5 +78,27 @@ class ChallengePanel(Static):
         self.text = out.plain
         self.update(out)
 
+    def show_by_hand(self, exercise: Exercise, result: tuple[bool, str] | None) -> None:
+        """A by-hand exercise: what it asks, and its last run's verdict (``result``: solved,
+        and in words; None: no run yet)."""
+        self.verdict = None
+        self.border_title = exercise.title
+        style = self.get_component_rich_style
+        out = Text()
+        out.append(exercise.text + "\n", style("challenge--quote"))
+        name = exercise.searches[0][1].label
+        allowed = f"{exercise.mistakes} mistake{'s' if exercise.mistakes != 1 else ''}"
+        out.append(f"By hand: H steps {name} yourself; solved when you finish it with at "
+                   f"most {allowed}\n", style("challenge--hint"))
+        if result is None:
+            out.append("Not done yet", style("challenge--unsolved"))
+        else:
+            solved, said = result
+            out.append(f"Your last run: {said}",
+                       style("challenge--solved" if solved else "challenge--unsolved"))
+        self.was_solved = bool(result and result[0])
+        self.text = out.plain
+        self.update(out)
+
 
 __all__ = ["ChallengePanel"]

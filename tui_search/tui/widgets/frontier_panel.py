@@ -102,11 +102,12 @@ class FrontierPanel(LinePanel):
 
     class EntryPicked(Message):  # not a dataclass: see GridView.CellClicked
         """The quiz: the student picked the entry of ``cell`` (``answer``: and answers with
-        it, a double click)."""
+        it, a double click; ``clicked``: with the mouse, not the keys)."""
 
-        def __init__(self, panel: FrontierPanel, cell: State, answer: bool = False) -> None:
+        def __init__(self, panel: FrontierPanel, cell: State, answer: bool = False,
+                     clicked: bool = False) -> None:
             super().__init__()
-            self.panel, self.cell, self.answer = panel, cell, answer
+            self.panel, self.cell, self.answer, self.clicked = panel, cell, answer, clicked
 
         @property
         def control(self) -> FrontierPanel:
@@ -173,15 +174,18 @@ class FrontierPanel(LinePanel):
     #: The quiz lists at most this many entries (sorted by cell, each step).
     QUIZ_ENTRIES = 2000
 
-    def show(self, run: Run, hide_order: bool = False) -> None:
+    def show(self, run: Run, hide_order: bool = False, as_added: bool = False) -> None:
         """Show ``run`` at its position: O(1), whatever the frontier's size.  ``hide_order``
         (the quiz) lists the entries by cell instead, without the next-out marks, so that the
-        panel does not give the answer away.
+        panel does not give the answer away; ``as_added`` (by hand) lists them in the order
+        they were added, oldest first, without the marks: which to take is the student's
+        lesson.
 
         Keeps the count and the entry expanded next (the first two lines) in view when the run
         or the position changed; a repeated call at the same position leaves the scroll where
         the user put it.
         """
+        hide_order = hide_order or as_added
         key = (id(run), run.k, hide_order)
         moved = key[:2] != (self._shown or (None, None))[:2]
         self._run, self._shown = run, key
@@ -194,10 +198,13 @@ class FrontierPanel(LinePanel):
         self._hint_col = entry_width(run, widths) + HINT_GAP
         self._discarded = discarded_line(run, self._cost_w)
         self._by_cell = None
-        if hide_order:
+        if as_added:  # events are numbered in the order they were generated
+            self._by_cell = sorted(run.now.frontier())[:self.QUIZ_ENTRIES]
+        elif hide_order:
             events = run.now.frontier(0, self.QUIZ_ENTRIES)
             self._by_cell = sorted(events, key=lambda g: run.nodes.cell(g)[::-1])
-        self.show_titles(titles(run.algo, hide_order), legends(kind, hide_order) if n else ())
+        self.show_titles(titles(run.algo, hide_order, as_added),
+                         legends(kind, hide_order, as_added) if n else ())
         if n:
             self._empty_text = ""
             self._count_text = kind.count_text(group_digits(n))
@@ -338,7 +345,8 @@ class FrontierPanel(LinePanel):
             return
         cell = self.entry_cell(offset.y + round(self.scroll_y))
         if cell is not None:
-            self.post_message(self.EntryPicked(self, cell, answer=event.chain >= 2))
+            self.post_message(self.EntryPicked(self, cell, answer=event.chain >= 2,
+                                               clicked=True))
 
     def _top(self) -> int:
         """Lines above the entries: the count, and the entry a discarded step threw away."""

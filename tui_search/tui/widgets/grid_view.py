@@ -101,7 +101,9 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         self.grid = grid
         self.run: Run | None = None
         self.cursor: Cell = grid.start or (0, 0)
-        self.mark: Cell | None = None  # a cell drawn marked (a replay's first difference)
+        #: Cells drawn marked (a replay's first difference; by hand, the entry taken off, the
+        #: successors added and a hint's cell).
+        self.marks: frozenset[Cell] = frozenset()
         self.hover: Cell | None = None  # the cell under the mouse, no button down
         #: Where each cell is on screen; until the user zooms, the largest size that fits.
         self.geometry = Geometry(grid.width, grid.height)
@@ -132,11 +134,12 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
             self.refresh_cells(changed)
         self.call_after_refresh(self.place_terminal_cursor)
 
-    def set_mark(self, cell: Cell | None) -> None:
-        """Draw ``cell`` marked (None: no cell)."""
-        if cell != self.mark:
-            old, self.mark = self.mark, cell
-            self.refresh_cells([c for c in (old, cell) if c is not None])
+    def set_marks(self, cells: tuple[Cell, ...] | frozenset[Cell]) -> None:
+        """Draw ``cells`` marked (and no other)."""
+        marks = frozenset(cells)
+        if marks != self.marks:
+            old, self.marks = self.marks, marks
+            self.refresh_cells(old ^ marks)
 
     def set_cursor(self, cell: Cell) -> None:
         old, self.cursor = self.cursor, cell

@@ -59,7 +59,7 @@ if TYPE_CHECKING:
         @property
         def cursor(self) -> Cell: ...
         @property
-        def mark(self) -> Cell | None: ...
+        def marks(self) -> frozenset[Cell]: ...
         @property
         def geometry(self) -> Geometry: ...
         @property
@@ -97,9 +97,9 @@ def map_line(view: MapView, y: int) -> Strip:
     cx, cy = view.cursor
     if cy == row and x0 <= cx < x1:
         codes[cx - x0] += CURSOR
-    mark = view.mark
-    if mark is not None and mark[1] == row and x0 <= mark[0] < x1:
-        codes[mark[0] - x0] += MARKED
+    for mx, my in view.marks:
+        if my == row and x0 <= mx < x1:
+            codes[mx - x0] += MARKED
     looks = view.cell_looks()
     costs = row_costs(grid, row, x0, x1)
     segments = [Segment(" " * view.pad_x, background)]  # the padding that centres the map

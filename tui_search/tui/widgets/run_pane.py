@@ -134,18 +134,21 @@ class RunPane(Vertical):
         self._split_column()
 
     def show(self, run: Run | None, changed: list[State] | None, *, follow: bool = True,
-             hide_order: bool = False, title: str = "", mark: State | None = None) -> None:
+             hide_order: bool = False, as_added: bool = False, title: str = "",
+             mark: State | None = None, marks: tuple[State, ...] = ()) -> None:
         """Push ``run`` at its position to the map and the panels (``changed``: the cells
         whose look changed, None for all); ``title`` is the map's border title, ``mark`` a
-        cell the map marks."""
+        cell the map marks (``marks``: more of them); ``hide_order`` and ``as_added``: how
+        the frontier panel lists its entries (:meth:`FrontierPanel.show`)."""
         view = self.view
         self._run = run
-        view.set_mark(None if mark is None else as_cell(mark))  # (the map's: a grid's cells)
+        shown = (mark, *marks) if mark is not None else marks
+        view.set_marks(tuple(as_cell(c) for c in shown))  # (the map's: a grid's cells)
         view.show_run(run, None if changed is None else [as_cell(c) for c in changed])
         self.set_class(run is None, "-no-run")
         self._show_part(self.side_note, run is None)
         if run is not None:
-            self.frontier.show(run, hide_order=hide_order)
+            self.frontier.show(run, hide_order=hide_order, as_added=as_added)
             self._split_column()
             self.tree_panel.show(run)
             if self.code_shown:
