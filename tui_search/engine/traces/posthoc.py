@@ -25,17 +25,27 @@ from typing import Any
 
 from tui_search.engine.maps.graph import Graph
 from tui_search.engine.maps.grid import Cell, Grid
-from tui_search.engine.maps.read import MapError
+from tui_search.engine.maps.read import MapError, bad_file, read_text
 from tui_search.engine.run.each_step import search_each_step
 from tui_search.engine.run.recording import Step
 from tui_search.engine.search.choices import Semantics
 from tui_search.engine.search.outcome import Outcome
 from tui_search.engine.search.state import State
 from tui_search.engine.traces.read import Trace, load_trace, read_trace
+from tui_search.engine.util.untrusted import MAX_DEPTH, BadInput, check_nesting, check_values
 
 #: The version Posthoc's visualiser needs declared.
 VERSION = "1.4.0"
 #: The file names read as Posthoc's, by their ending.
+#: Bigger Posthoc files are refused before reading.  A document is parsed whole (json,
+#: PyYAML), at up to 20 (JSON) and 100 (YAML) times its size: smaller caps than the app's
+#: own traces', which are read a line at a time.
+MAX_POSTHOC_JSON_BYTES = 32 * 1024 * 1024
+MAX_POSTHOC_YAML_BYTES = 8 * 1024 * 1024
+#: What a document's values may take: bytes a byte of its text, and a megabyte beside
+#: (:func:`~tui_search.engine.util.untrusted.check_values`: each bracket and separator stands
+#: for an object's bytes).  A trace's events are small objects, a separator every few bytes.
+VALUES_BUDGET, VALUES_FIXED = 32, 1 << 20
 SUFFIXES = (".trace.json", ".trace.yaml", ".trace.yml")
 
 _EXPAND, _GENERATE = ("expanding", "expand"), ("generating", "generate")
@@ -46,11 +56,14 @@ def is_posthoc(name: str) -> bool:
     return name.lower().endswith(SUFFIXES)
 
 
-def _document(text: str, name: str) -> dict[str, Any]:
+def _document(text: str, name: str, as_json: bool) -> dict[str, Any]:
     """The document: JSON, or YAML without anchors or aliases."""
-    if name.lower().endswith(".json"):
+    if as_json:
+        _check_shape(text, name, "[{,:")  # before json recurses or builds objects
         try:
             value = json.loads(text)
+        except RecursionError:  # (a guard: the check refuses anything this deep)
+            raise MapError(name, "nested too deep") from None
         except ValueError as exc:
             raise MapError(name, f"not JSON: {getattr(exc, 'msg', exc)}",
                            getattr(exc, "lineno", None), getattr(exc, "colno", None)) from None
@@ -64,10 +77,34 @@ def _document(text: str, name: str) -> dict[str, Any]:
     return value
 
 
+def _check_shape(text: str, name: str, separators: str) -> None:
+    """Refuse a document nested too deep or with more values than :data:`VALUES_BUDGET`
+    allows, before a parser recurses or builds its objects."""
+    try:
+        check_nesting(text)
+        check_values(text, VALUES_BUDGET * len(text) + VALUES_FIXED, separators)
+    except BadInput as err:
+        raise bad_file(name, err) from None
+
+
+def _check_blocks(text: str, name: str) -> None:
+    """Refuse YAML whose block nesting may go deeper than :data:`MAX_DEPTH` (libyaml's parser
+    recurses in C: a line of 40,000 ``- `` ends the process).  A line can open at most a level
+    a column of indentation, a ``- `` and a ``: ``: a cautious bound (a trace nests a few
+    levels), linear in the text."""
+    for number, line in enumerate(text.split("\n"), 1):
+        body = line.lstrip(" ")
+        indent = len(line) - len(body)
+        if indent + body.count("- ") + body.count(": ") > MAX_DEPTH:
+            raise MapError(name, f"nested more than {MAX_DEPTH} deep", number, indent + 1)
+
+
 def _yaml(text: str, name: str) -> Any:
     import yaml  # only for a .trace.yaml
 
     loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+    _check_shape(text, name, "[{,:-")  # flow brackets ([[[[...), too many values
+    _check_blocks(text, name)  # "- - - ..." and deep indentation: libyaml would crash
     try:
         for token in yaml.scan(text, Loader=loader):
             if isinstance(token, (yaml.AnchorToken, yaml.AliasToken)):
@@ -76,6 +113,8 @@ def _yaml(text: str, name: str) -> Any:
                                "can stand for billions of events)", mark.line + 1,
                                mark.column + 1)
         return yaml.load(text, Loader=loader)
+    except RecursionError:  # block nesting (indentation, "- - - ...") the checks do not see
+        raise MapError(name, "YAML nested too deep") from None
     except yaml.YAMLError as exc:
         mark = getattr(exc, "problem_mark", None)
         problem = getattr(exc, "problem", None) or "not YAML"
@@ -112,21 +151,27 @@ def load_any_trace(path: str, grid: Grid | Graph) -> Trace:
     if not isinstance(grid, Grid):
         raise MapError(path, "a Posthoc trace is read for a grid; a graph's trace is the "
                        "app's own (JSON lines naming the nodes)")
-    try:
-        with open(path, encoding="utf-8") as fh:
-            text = fh.read()
-    except OSError as exc:
-        raise MapError(path, f"cannot read the trace: {exc.strerror}") from None
-    except UnicodeDecodeError:
-        raise MapError(path, "the trace is not UTF-8 text") from None
-    return read_posthoc(text, grid, path)
+    return load_posthoc(path, grid)
 
 
-def read_posthoc(text: str, grid: Grid, name: str) -> Trace:
+def load_posthoc(path: str, grid: Grid, as_json: bool | None = None) -> Trace:
+    """The Posthoc trace in the file ``path``, read as the app's own traces are: a size cap
+    before reading, UTF-8 and no NUL, every fault at its line and column; then its document
+    checked for depth and size before it is parsed (``as_json``: by the suffix when None)."""
+    if as_json is None:
+        as_json = path.lower().endswith(".json")
+    limit = MAX_POSTHOC_JSON_BYTES if as_json else MAX_POSTHOC_YAML_BYTES
+    return read_posthoc(read_text(path, "a Posthoc trace", limit), grid, path, as_json)
+
+
+def read_posthoc(text: str, grid: Grid, name: str, as_json: bool | None = None) -> Trace:
     """The Posthoc trace in ``text`` (file ``name``) as a trace of ``grid``: its steps read
     through :func:`~tui_search.engine.traces.read.read_trace` (the same checks), each step's
-    line the number of its ``expanding`` event (from 1)."""
-    events = _document(text, name)["events"]
+    line the number of its ``expanding`` event (from 1).  ``as_json``: JSON or YAML (by the
+    name's suffix when None)."""
+    if as_json is None:
+        as_json = name.lower().endswith(".json")
+    events = _document(text, name, as_json)["events"]
     steps: list[dict[str, Any]] = []
     numbers: list[int] = []  # each step's event number
     cells: dict[object, Cell] = {}
