@@ -6,11 +6,20 @@ machine generating an example can take seconds, which says nothing about the cod
 The suite leaves the clone as it found it: a file or folder that a test made or changed in the
 repository (a served app's save folder in ``maps/``, a screenshot in the current folder) fails
 the run, named (:func:`pytest_sessionfinish`; not with ``--snapshot-update``, which is meant
-to change files)."""
+to change files).
+
+Tiers (:func:`pytest_collection_modifyitems`, docs/10-testing.md): a test that drives the
+app is marked ``app`` by what it uses, not by hand; the tests that build, serve or start whole
+programs are marked ``slow``.  ``pytest -m "not app and not slow"`` is the fast tier."""
 
 from __future__ import annotations
 
+import ast
+import functools
+import inspect
+import os
 import subprocess
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
@@ -68,3 +77,158 @@ def pytest_sessionfinish(session: pytest.Session, exitstatus: int) -> None:
 
 
 _BEFORE = pytest.StashKey[set[str] | None]()
+
+
+# -- Tiers ------------------------------------------------------------------------------------
+
+#: Fixtures that drive the app: a test using one is marked ``app``.
+APP_FIXTURES = frozenset({"snap_compare"})
+
+#: Modules marked ``slow`` whole (their paths from tests/), each for what makes it slow.
+SLOW_MODULES = {
+    # pip builds the sdist and the wheel, compiles the C core and installs in fresh venvs
+    "test_build.py",
+    # each test starts the server (``tui-search --serve``) and its apps as processes
+    "test_serve.py",
+    "test_serve_trust.py",
+    # every search run to its end on the largest generated maps (seconds a test)
+    "tui/test_big_figures.py",
+}
+#: Modules marked ``app`` whole: an export films the app under Pilot
+#: (``tui_search/export/frames.py``), in the test's process or in the command it runs.
+APP_MODULES = {
+    "export/test_exports.py",
+    "export/test_export_cli.py",
+}
+TESTS = ROOT / "tests"
+
+
+def drives_the_app(item: pytest.Item) -> bool:
+    """Does this test run the app under Pilot?  It uses a fixture of :data:`APP_FIXTURES` (or
+    a fixture of the tests' own that does what follows), or it calls ``run_test``, itself or
+    through a function of the tests or the benchmarks that it names (``tutorial_in_big_cells``,
+    ``least_difference``, ``jump._jump_once``, ... followed from module to module)."""
+    if _in_modules(item, APP_MODULES):
+        return True
+    names = getattr(item, "fixturenames", ())
+    if APP_FIXTURES & set(names):
+        return True
+    fixtures = getattr(getattr(item, "_fixtureinfo", None), "name2fixturedefs", {})
+    if any(_runs_the_app(d.func) for name in names for d in fixtures.get(name, ())):
+        return True
+    function = getattr(item, "function", None)
+    return function is not None and _runs_the_app(function)
+
+
+def _runs_the_app(function: Callable[..., object]) -> bool:
+    """Does ``function`` (its nested functions with it) call ``run_test``, or name a function
+    of :data:`FOLLOWED` that does?  A function being asked about counts as not (a cycle)."""
+    function = _inner(function)
+    code = getattr(function, "__code__", None)
+    if code is None:
+        return False
+    if code not in _RUNS_THE_APP:
+        _RUNS_THE_APP[code] = False
+        calls, names = _functions_in(code.co_filename).get(code.co_firstlineno, (False, ()))
+        scope = getattr(function, "__globals__", {})
+        named = (_named(scope, name) for name in names)
+        _RUNS_THE_APP[code] = calls or any(
+            _is_followed(thing) and _runs_the_app(thing) for thing in named)
+    return _RUNS_THE_APP[code]
+
+
+def _named(scope: dict[str, object], name: str) -> object:
+    """What ``name`` (``f``, or ``module.f``) is in ``scope``."""
+    first, _, attribute = name.partition(".")
+    thing = scope.get(first)
+    return getattr(thing, attribute, None) if attribute else thing
+
+
+_RUNS_THE_APP: dict[object, bool] = {}
+
+
+def _inner(function: Callable[..., object]) -> Callable[..., object]:
+    """The function as written: under its decorators (``functools.wraps``), and under
+    Hypothesis's ``@given`` (whose wrapper is compiled in a module of its own)."""
+    function = inspect.unwrap(function)
+    inner = getattr(getattr(function, "hypothesis", None), "inner_test", None)
+    return function if inner is None else inspect.unwrap(inner)
+
+
+#: The packages whose functions are followed: those written to drive the app, the tests' and
+#: the benchmarks' (``benchmarks.jump``'s ``end`` under Pilot); not the app's, nor a library's.
+FOLLOWED = ("tests", "benchmarks")
+
+
+def _is_followed(thing: object) -> bool:
+    """Is ``thing`` a function of :data:`FOLLOWED`?"""
+    module = (getattr(thing, "__module__", None) or "").partition(".")[0]
+    return callable(thing) and module in FOLLOWED and inspect.isfunction(_inner(thing))
+
+
+#: The call that runs the app under Pilot (``App.run_test``).
+DRIVER = "run_test"
+
+
+@functools.cache
+def _functions_in(filename: str) -> dict[int, tuple[bool, frozenset[str]]]:
+    """Every function in a file (by the line its code starts on: its first decorator's):
+    whether its body calls :data:`DRIVER` (or holds a script that does, to run in a process:
+    a string, not a docstring, that calls it), and the names it uses, ``f`` and ``module.f``
+    (not its decorators': a parametrized test names its cases there)."""
+    try:
+        tree = ast.parse(Path(filename).read_text(encoding="utf-8"))
+    except (OSError, SyntaxError):
+        return {}
+    docstrings = {id(node.body[0].value) for node in ast.walk(tree)
+                  if isinstance(node, (ast.Module, ast.ClassDef, ast.FunctionDef,
+                                       ast.AsyncFunctionDef))
+                  and node.body and isinstance(node.body[0], ast.Expr)
+                  and isinstance(node.body[0].value, ast.Constant)}
+    found = {}
+    for node in ast.walk(tree):
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            first = min([node.lineno, *(d.lineno for d in node.decorator_list)])
+            inside = [n for statement in node.body for n in ast.walk(statement)]
+            calls = any(isinstance(n, ast.Call) and _callee(n.func) == DRIVER for n in inside) \
+                or any(isinstance(n, ast.Constant) and isinstance(n.value, str)
+                       and DRIVER + "(" in n.value and id(n) not in docstrings for n in inside)
+            names = {n.id for n in inside if isinstance(n, ast.Name)} | {
+                f"{n.value.id}.{n.attr}" for n in inside
+                if isinstance(n, ast.Attribute) and isinstance(n.value, ast.Name)}
+            found[first] = (calls, frozenset(names))
+    return found
+
+
+def _callee(func: ast.expr) -> str | None:
+    """The name a call calls: ``f(...)``, ``x.f(...)``."""
+    return func.attr if isinstance(func, ast.Attribute) else (
+        func.id if isinstance(func, ast.Name) else None)
+
+
+def is_slow(item: pytest.Item) -> bool:
+    """Is this test in one of :data:`SLOW_MODULES`?"""
+    return _in_modules(item, SLOW_MODULES)
+
+
+def _in_modules(item: pytest.Item, modules: set[str]) -> bool:
+    """Is this test in one of ``modules`` (paths from tests/)?"""
+    path = Path(item.path).resolve()
+    return path.is_relative_to(TESTS) and path.relative_to(TESTS).as_posix() in modules
+
+
+def pytest_xdist_auto_num_workers(config: pytest.Config) -> int:
+    """``-n auto`` (``addopts``): four workers when the app's tests run (a Pilot test mostly
+    waits for the app to settle, so two cores keep four busy), one a core up to four for the
+    fast tier (all CPU: a worker more only collects the tests once more)."""
+    cores = os.cpu_count() or 1
+    return min(cores, 4) if "not app" in (config.getoption("markexpr") or "") else 4
+
+
+@pytest.hookimpl(tryfirst=True)  # before ``-m`` deselects by the marks
+def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
+    for item in items:
+        if drives_the_app(item):
+            item.add_marker(pytest.mark.app)
+        if is_slow(item):
+            item.add_marker(pytest.mark.slow)

@@ -236,16 +236,6 @@ async def test_play_runs_all_in_lockstep_to_the_end() -> None:
         assert steps(app) == [22, 7]
 
 
-@sync
-async def test_quiz_in_compare_mode_asks_of_the_left_pane_and_steps_all() -> None:
-    app = compare_app("dfs,bfs")
-    async with app.run_test(size=SIZE) as pilot:
-        await pilot.press("i", "enter")  # the cursor is on the start: it comes off first
-        await wait_until(pilot, lambda: app.session.quiz.asked == 1)
-        assert app.session.quiz.asked == 1 and app.session.quiz.right == 1 and steps(app) == [1, 1]
-        assert "stack's top" in app.session.note
-
-
 def test_the_command_line_opens_compare_mode_and_refuses_bad_searches(capsys,
                                                                        monkeypatch) -> None:
     seen = {}

@@ -48,19 +48,6 @@ async def test_the_quiz_hides_the_order_asks_and_keeps_a_score() -> None:
 
 
 @sync
-async def test_under_dfs_the_answer_is_the_stacks_top() -> None:
-    app = tutorial_app("dfs")
-    async with app.run_test(size=SIZE) as pilot:
-        await pilot.press("i")
-        assert "(it is the stack's top)" in stats(app)[1]
-        for _ in range(3):
-            top = app.session.run.nodes.cell(app.session.run.now.frontier(0, 1)[0])
-            app.session.cursor = top
-            await pilot.press("enter")
-        assert "3 of 3" in stats(app)[1]
-
-
-@sync
 async def test_enter_does_nothing_outside_the_quiz() -> None:
     app = tutorial_app()
     async with app.run_test(size=SIZE) as pilot:

@@ -9,6 +9,7 @@ from tui_search.engine.course.grading import grade
 from tui_search.engine.maps.grid import Grid
 from tui_search.engine.maps.load import load_map
 from tui_search.engine.search.choices import DEFAULT_SEMANTICS
+from tui_search.tui.model import playback
 from tui_search.tui.model.seek import Seek
 from tui_search.tui.model.session import DEFAULT_COMPARE, NEEDS_ENDPOINTS, Session
 
@@ -178,3 +179,105 @@ def test_x_cycles_through_an_exercise_file_given_at_start() -> None:
         session.cycle_exercise()
         seen.append(session.exercise)
     assert seen == [built_in_exercise(1), built_in_exercise(2), None, mine]
+
+
+# -- checks that drove the app with Pilot, though they need no screen ------------------------
+def to_the_end(session: Session) -> None:
+    """What ``end`` does: every run to its end, the seek's slices one after another."""
+    session.start_seek(to_end=True)
+    while (seek := session.seek) is not None and seek.work() is not None:
+        pass
+    session.seek_done()
+
+
+def test_an_obstacle_on_the_path_restarts_the_run_and_the_new_run_goes_round_it() -> None:
+    session = tutorial()
+    to_the_end(session)
+    assert (1, 2) in session.run.path()
+    session.cursor = (1, 2)
+    assert session.edits.toggle_wall(session.cursor) is None  # o
+    assert session.grid.is_blocked((1, 2)) and session.dirty
+    assert session.run.k == 0 and session.run.grid.is_blocked((1, 2))
+    to_the_end(session)
+    assert (1, 2) not in (session.run.path() or [])
+    assert session.edits.toggle_wall(session.cursor) is None
+    assert not session.grid.is_blocked((1, 2))
+
+
+def test_start_and_goal_moved_restart_the_search_between_them() -> None:
+    session = tutorial()
+    session.step(forward=True)
+    session.step(forward=True)
+    assert session.edits.place("start", (0, 2)) is None  # s
+    assert session.grid.start == (0, 2) and session.dirty
+    assert session.run.k == 0 and session.run.grid.start == (0, 2)
+    assert session.edits.place("goal", (1, 2)) is None  # g
+    assert session.grid.goal == (1, 2)
+    to_the_end(session)
+    assert session.run.path() == [(0, 2), (1, 2)]
+
+
+def test_start_and_goal_put_on_costed_cells_keep_their_costs() -> None:
+    """The issue's rule: a move costs the cell it enters, the start's own cost is never paid,
+    and a start or goal placed on a digit keeps that cell's cost while the app runs."""
+    from tui_search.engine.maps.load import parse_map_text
+
+    session = Session(parse_map_text("S9.4G\n"), algorithm="ucs")
+    assert session.edits.place("start", (1, 0)) is None  # the start on the 9
+    assert session.edits.place("goal", (3, 0)) is None  # the goal on the 4
+    assert (session.grid.start, session.grid.goal) == ((1, 0), (3, 0))
+    assert (session.grid.cost((1, 0)), session.grid.cost((3, 0))) == (9.0, 4.0)
+    to_the_end(session)
+    out = session.run.outcome()
+    assert out.found and out.path == [(1, 0), (2, 0), (3, 0)]
+    assert out.cost == 5.0  # 1 into (2,0), 4 into the goal; the start's 9 not paid
+    assert session.edits.place("start", (0, 0)) is None  # the start back: the 9 is still there
+    to_the_end(session)
+    assert session.run.outcome().cost == 14.0  # 9 + 1 + 4
+    assert session.grid.cost((1, 0)) == 9.0
+
+
+def test_the_benchmark_optimum_holds_until_the_map_is_edited() -> None:
+    from tests.helpers import MOVINGAI
+    from tui_search.engine.maps.scenarios import load_scenario
+    from tui_search.engine.search.choices import Semantics
+
+    arena = MOVINGAI / "arena.map"
+    scen = load_scenario(arena.with_suffix(".map.scen"), 5)
+    grid = load_map(arena, start=scen.start, goal=scen.goal)
+    session = Session(grid, arena, algorithm="ucs", semantics=Semantics(corners="never"),
+                      optimal_cost=scen.optimal_length)
+    assert session.run.known_lowest == scen.optimal_length
+    to_the_end(session)
+    assert session.run.outcome().cost == scen.optimal_length
+    assert session.edits.toggle_wall((0, 0)) is None  # an edit: the figure no longer applies
+    assert session.run.known_lowest is None
+
+
+def test_play_at_a_high_speed_runs_every_pane_in_lockstep_to_the_end() -> None:
+    session = tutorial(compare="bfs,dfs")
+    for _ in range(7):  # + seven times: many steps a tick
+        session.set_speed(session.speed_index + 1)
+    assert playback.steps_per_tick(session.speed) > 1
+    assert session.play() is False
+    while session.playing:  # what the playback timer calls
+        session.tick()
+    assert steps(session) == [22, 7]
+
+
+def test_under_dfs_the_quiz_s_answer_is_the_stack_s_top() -> None:
+    session = tutorial(algorithm="dfs")
+    session.toggle_quiz()
+    assert "(it is the stack's top)" in session.note
+    for _ in range(3):
+        session.cursor = session.run.nodes.cell(session.run.now.frontier(0, 1)[0])
+        session.answer()
+    assert "3 of 3" in session.note
+
+
+def test_the_quiz_in_compare_mode_asks_of_the_left_pane_and_steps_all() -> None:
+    session = tutorial(compare="dfs,bfs")
+    session.toggle_quiz()
+    assert session.answer() is not None  # the cursor is on the start: it comes off first
+    assert session.quiz.asked == 1 and session.quiz.right == 1 and steps(session) == [1, 1]
+    assert "stack's top" in session.note

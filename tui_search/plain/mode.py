@@ -12,6 +12,7 @@ from collections.abc import Callable, Iterable
 from tui_search.engine.maps.grid import Cell
 from tui_search.engine.maps.load import parse_cell
 from tui_search.engine.search.registry import ALGORITHMS, get_algorithm
+from tui_search.engine.search.state import as_cell
 from tui_search.plain import describe, telling
 from tui_search.plain.commands import APP_ONLY, find, help_lines
 from tui_search.plain.editing import EditCommands
@@ -330,7 +331,8 @@ class PlainMode:
 
     def do_to_node(self, rest: str, word: str) -> None:
         run = self.session.run
-        self._to(run.now.current_node() if run else None, "No node is being expanded (step 0).")
+        node = run.now.current_node() if run else None
+        self._to(None if node is None else as_cell(node), "No node is being expanded (step 0).")
 
     # -- help and quit -------------------------------------------------------------------------
     def do_help(self, rest: str, word: str) -> None:

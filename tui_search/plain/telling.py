@@ -137,7 +137,7 @@ def result_sentence(run: Run) -> str:
         return f"No path. {counts}"
     moves = run.moves() or []
     path = run.path() or []
-    cost = run.grid.path_cost(path)
+    cost = run.path_cost()
     said = ", ".join(moves) if moves else "none: the start is the goal"
     return (f"Path: {len(moves)} moves, cost {cost:.2f}, from {cell_text(path[0])} to "
             f"{cell_text(path[-1])}: {said}. {counts}")

@@ -20,11 +20,12 @@ from bisect import bisect_left, bisect_right
 from collections.abc import Iterator, Sequence
 from enum import IntEnum
 
-from tui_search.engine.maps.grid import Cell
 from tui_search.engine.run.frontier import FrontierModel, frontier_model
 from tui_search.engine.run.queries import EventTree
 from tui_search.engine.run.rebuild import kernels
 from tui_search.engine.run.recording import Recording
+from tui_search.engine.search.problem import Problem
+from tui_search.engine.search.state import State
 
 
 class CellState(IntEnum):
@@ -65,7 +66,7 @@ class Position:
 
     def _hold(self) -> None:
         """Allocate the counters, at step 0: only the start is generated."""
-        size = len(self._problem.walls)
+        size = self._problem.size
         # (``array * n`` fills in C: a third of the time of copying ``bytes(4 * n)`` in)
         self._n_gen = array("i", [0]) * size
         self._n_exp = array("i", [0]) * size
@@ -178,7 +179,7 @@ class Position:
         end = rec.step_end[k] if k >= first else root + 1
         last = max(k, first - 1)  # steps first .. last expanded events of this iteration
         frontier = self._new_frontier()
-        size = len(self._problem.walls)
+        size = self._problem.size
         # Progress in events' worth of work: zeroing a counter costs about 1/32 of an event.
         n_exp_events = last - first + 1
         total = (3 * size / 32 + 2 * (end - root) + n_exp_events
@@ -247,7 +248,7 @@ class Position:
     def at_end(self) -> bool:
         return self._rec.done and self.k == self._rec.steps
 
-    def cell_state(self, cell: Cell) -> CellState:
+    def cell_state(self, cell: State) -> CellState:
         if not self._held:
             self._hold()
         p = self._problem.pad(cell)
@@ -265,8 +266,10 @@ class Position:
         """States of cells ``x0 .. x1-1`` of row ``y`` (the fast path for drawing a line)."""
         if not self._held:
             self._hold()
-        x1 = self._recording.grid.width if x1 is None else x1
-        base = (y + 1) * self._problem.stride + 1
+        grid = self._problem
+        assert isinstance(grid, Problem), "a graph has no rows"
+        x1 = grid.width if x1 is None else x1
+        base = (y + 1) * grid.stride + 1
         n_gen, n_exp = self._n_gen, self._n_exp
         out = [
             2 if n_exp[p] else (1 if n_gen[p] else 0) for p in range(base + x0, base + x1)
@@ -282,18 +285,18 @@ class Position:
                     out[i] = CellState.PATH
         return out
 
-    def current_node(self) -> Cell | None:
+    def current_node(self) -> State | None:
         """The node expanded by the step just taken (None at step 0)."""
         return self._problem.unpad(self._rec.gen_node[self._rec.exp(self.k)]) if self.k else None
 
-    def changed_cells(self, k: int) -> list[Cell]:
+    def changed_cells(self, k: int) -> list[State]:
         """Cells whose state step ``k`` changes (its node and its successors)."""
         rec = self._rec
         cells = [rec.gen_node[rec.exp(k)]]
         cells.extend(rec.gen_node[h] for h in self._succ_range(k))
         return [self._problem.unpad(p) for p in cells]
 
-    def times_reached(self, cell: Cell) -> tuple[int, int]:
+    def times_reached(self, cell: State) -> tuple[int, int]:
         """How often ``cell`` was generated and expanded (discarded steps not counted), up to
         the position, in the iteration shown."""
         if not self._held:
@@ -301,7 +304,7 @@ class Position:
         p = self._problem.pad(cell)
         return self._n_gen[p], self._n_exp[p]
 
-    def last_event(self, cell: Cell) -> int | None:
+    def last_event(self, cell: State) -> int | None:
         """The latest generation event of ``cell`` at the position, in the iteration shown
         (None: not reached): the event that decides its came-from arrow and its depth."""
         if not self._held:

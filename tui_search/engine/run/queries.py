@@ -7,18 +7,20 @@ from __future__ import annotations
 
 from array import array
 from bisect import bisect_left, bisect_right
-from collections.abc import Iterator, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from itertools import pairwise
 from typing import Any
 
-from tui_search.engine.maps.grid import DIRECTIONS, Cell
+from tui_search.engine.maps.grid import DIRECTIONS
 from tui_search.engine.run.recording import Recording, Step
 from tui_search.engine.search.heuristics import admissible, heuristic_for, priority_of
 from tui_search.engine.search.loops.best_first import move_costs
 from tui_search.engine.search.loops.compiled import selected
-from tui_search.engine.search.outcome import Outcome, cost_of
+from tui_search.engine.search.outcome import Outcome
+from tui_search.engine.search.problem import Problem
 from tui_search.engine.search.record import ROOT_DIR
 from tui_search.engine.search.registry import Frontier
+from tui_search.engine.search.state import State
 
 #: Direction names indexed by stored direction code; a root is shown as START.
 DIR_NAMES: tuple[str, ...] = DIRECTIONS + ("START",)
@@ -44,13 +46,30 @@ class EventTree:
         core = selected()[0]
         self._walk = None if core is None else core.ancestors  # ancestors' loop in C
         self._last_of_cell: dict[int, int] = {}
-        goal = recording.grid.goal
-        assert goal is not None  # the problem checked it
-        self._goal: Cell = goal
-        self._heuristic = heuristic_for(recording.semantics.heuristic, self._problem.lowest)
-        self._priority = priority_of(algo.priority or "g", self._heuristic, goal)
-        self._move_cost = move_costs(self._problem)
-        self._terrain = self._problem.terrain  # None: every cell costs 1
+        problem = self._problem
+        if not isinstance(problem, Problem):  # a graph's answers, by node number
+            self._grid: Problem | None = None
+            self._estimate: Callable[[int], float] = problem.estimate
+            self._priority_at = problem.priority(algo.priority or "g")
+            self._move_cost: dict[int, float] = {}
+            self._terrain: array[float] | None = None
+        else:  # a grid's, worked out from the padded cells as the loops do
+            self._grid = problem
+            goal = problem.unpad(problem.goal)
+            heuristic = heuristic_for(recording.semantics.heuristic, problem.lowest)
+            priority = priority_of(algo.priority or "g", heuristic, goal)
+            unpad, (gx, gy) = problem.unpad, goal
+
+            def estimate(p: int) -> float:
+                x, y = unpad(p)
+                return heuristic(abs(x - gx), abs(y - gy))
+
+            def priority_at(g: float, p: int) -> float:
+                return priority(g, *unpad(p))
+
+            self._estimate, self._priority_at = estimate, priority_at
+            self._move_cost = move_costs(problem)
+            self._terrain = problem.terrain  # None: every cell costs 1
         # gen_gs: the last step looked up (its events lo .. hi - 1, its number, the event it
         # took off)
         self._gs_step = (0, 1, 0, -1)  # step 0: the root
@@ -68,6 +87,8 @@ class EventTree:
         if k == 0:
             return 0.0
         node = rec.gen_node
+        if self._grid is None:
+            return step_g[k] + self._problem.step_cost(node[rec.exp(k)], node[g])
         length = self._move_cost[node[g] - node[rec.exp(k)]]
         terrain = self._terrain
         return step_g[k] + (length if terrain is None else length * terrain[node[g]])
@@ -106,7 +127,10 @@ class EventTree:
             j = n if events[n - 1] < hi else bisect_left(events, hi, i)  # all of step k's
             if k:
                 base, parent, terrain = step_g[k], node[taken], self._terrain
-                if terrain is None:
+                if self._grid is None:  # a graph: each road's cost
+                    step_cost = self._problem.step_cost
+                    out += [base + step_cost(parent, node[e]) for e in events[i:j]]
+                elif terrain is None:
                     out += [base + cost[node[e] - parent] for e in events[i:j]]
                 else:
                     out += [base + cost[node[e] - parent] * terrain[node[e]]
@@ -122,17 +146,15 @@ class EventTree:
         if self._rec.step_g is None:
             return None
         cost = self.gen_g(g)
-        x, y = self.gen_cell(g)
-        goal = self._goal
-        h = self._heuristic(abs(x - goal[0]), abs(y - goal[1])) if self._algo.informed else 0.0
-        return cost, h, self._priority(cost, x, y)
+        p = self._rec.gen_node[g]
+        h = self._estimate(p) if self._algo.informed else 0.0
+        return cost, h, self._priority_at(cost, p)
 
     def priority_key(self, g: int) -> float:
         """The priority event ``g`` was pushed with (the frontier model's order)."""
         if self._algo.priority == "g":  # uniform-cost: the cost itself, no cell needed
             return self.gen_g(g)
-        x, y = self.gen_cell(g)
-        return self._priority(self.gen_g(g), x, y)
+        return self._priority_at(self.gen_g(g), self._rec.gen_node[g])
 
     def priority_keys(self, events: Sequence[int]) -> list[Any]:
         """:meth:`priority_key` of each of ``events``, which ascend (see :meth:`gen_gs`);
@@ -143,8 +165,8 @@ class EventTree:
         if self._algo.priority == "g":
             keys = costs
         else:
-            priority, cell = self._priority, self.gen_cell
-            keys = [priority(g, *cell(e)) for g, e in zip(costs, events, strict=True)]
+            priority, node = self._priority_at, self._rec.gen_node
+            keys = [priority(g, node[e]) for g, e in zip(costs, events, strict=True)]
         if ties == "fifo":
             return keys
         return list(zip(keys, self._tie_keys(ties, events, costs), strict=True))
@@ -155,11 +177,10 @@ class EventTree:
             return [-e for e in events]
         if ties in ("low-g", "high-g"):
             return costs if ties == "low-g" else [-g for g in costs]
-        cells = [self.gen_cell(e) for e in events]
         if ties == "node":
-            return cells
-        gx, gy = self._goal
-        h = [self._heuristic(abs(x - gx), abs(y - gy)) for x, y in cells]
+            return [self.gen_cell(e) for e in events]
+        node, estimate = self._rec.gen_node, self._estimate
+        h = [estimate(node[e]) for e in events]
         return h if ties == "low-h" else [-v for v in h]
 
     def pushed_again(self, g: int) -> int:
@@ -201,8 +222,8 @@ class EventTree:
         semantics = self._recording.semantics
         return not self._algo.informed or admissible(semantics.heuristic, semantics.order)
 
-    def gen_cell(self, g: int) -> Cell:
-        """Event ``g``'s cell."""
+    def gen_cell(self, g: int) -> State:
+        """Event ``g``'s cell (a graph's: its node's name)."""
         return self._problem.unpad(self._rec.gen_node[g])
 
     def gen_parent(self, g: int) -> int:
@@ -220,7 +241,7 @@ class EventTree:
         if parent < 0:
             return DIR_NAMES[ROOT_DIR]
         node = self._rec.gen_node
-        return DIR_NAMES[self._problem.dir_of_offset[node[g] - node[parent]]]
+        return self._problem.move_name(node[parent], node[g])
 
     def gen_depth(self, g: int) -> int:
         """Event ``g``'s depth (moves from the root).  Where it is not recorded, the chain up
@@ -298,7 +319,7 @@ class EventTree:
             self._path_gens = self.ancestors(self._rec.goal_gen)
         return list(self._path_gens)
 
-    def path(self) -> list[Cell] | None:
+    def path(self) -> list[State] | None:
         if not self._rec.found:
             return None
         return [self.gen_cell(g) for g in self.path_gens()]
@@ -315,9 +336,8 @@ class EventTree:
         if not self._rec.found:
             return None
         # gen_dir of each event but the start, its parent the event before it on the path
-        node, dir_of = self._rec.gen_node, self._problem.dir_of_offset
-        gens = self.path_gens()
-        return [DIR_NAMES[dir_of[node[b] - node[a]]] for a, b in pairwise(gens)]
+        node, name = self._rec.gen_node, self._problem.move_name
+        return [name(node[a], node[b]) for a, b in pairwise(self.path_gens())]
 
     def outcome(self) -> Outcome:
         """The result of the whole search (records it all first)."""
@@ -334,7 +354,7 @@ class EventTree:
             generated=len(rec.gen_node),
             max_frontier=self._recording.peak_frontier(rec.steps),
             gave_up=rec.gave_up,
-            cost=cost_of(self._recording.grid, path),
+            cost=self._problem.path_cost(path),
         )
 
     def outcome_so_far(self, k: int) -> Outcome:
@@ -354,7 +374,7 @@ class EventTree:
             generated=rec.step_end[k],
             max_frontier=self._recording.peak_frontier(k),
             gave_up=last and rec.gave_up,
-            cost=cost_of(self._recording.grid, path),
+            cost=self._problem.path_cost(path),
         )
 
     def step(self, k: int) -> Step:

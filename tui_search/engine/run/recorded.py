@@ -15,8 +15,9 @@ and the benchmarks reach it through :func:`recording_of`, the app never does
 from __future__ import annotations
 
 from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
-from tui_search.engine.maps.grid import Cell, Grid
+from tui_search.engine.maps.grid import Grid
 from tui_search.engine.run.facets import Nodes, Now, Steps
 from tui_search.engine.run.position import Position
 from tui_search.engine.run.queries import EventTree
@@ -25,7 +26,10 @@ from tui_search.engine.search.choices import DEFAULT_SEMANTICS, Semantics
 from tui_search.engine.search.outcome import Outcome
 from tui_search.engine.search.record import CHUNK
 from tui_search.engine.search.registry import DEFAULT_ALGORITHM
+from tui_search.engine.search.state import State
 
+if TYPE_CHECKING:
+    from tui_search.engine.maps.graph import Graph
 
 class Run:
     """A search on a snapshot of a grid, recorded lazily, with a movable position.
@@ -78,7 +82,7 @@ class Run:
         self.nodes = Nodes(recording, tree)  #: the generation events, by number
         self.steps = Steps(recording, tree, position)  #: the recorded steps, by number
         self.now = Now(position)  #: the state of the search at the position
-        self.grid = recording.grid  #: the run's own copy of the grid
+        self.board = recording.board  #: the run's own copy of the grid or the graph
         self.algorithm = recording.algo.key  #: the algorithm's key
         self.algo = recording.algo  #: the algorithm's description
         self.semantics = recording.semantics  #: the rules in force for this algorithm
@@ -86,6 +90,22 @@ class Run:
         #: The cheapest path's cost when known from elsewhere (a benchmark's optimum for this
         #: map, start, goal and rules), for the app to show beside the path's.
         self.known_lowest: float | None = None
+
+    @property
+    def grid(self) -> Grid:
+        """The run's own copy of the grid (a run on a graph has none: :attr:`board`)."""
+        return self._recording.grid
+
+    @property
+    def graph(self) -> Graph | None:
+        """The run's own copy of the graph, when it searches one."""
+        board = self.board
+        return None if isinstance(board, Grid) else board
+
+    def path_cost(self) -> float:
+        """The path's cost (0.0 until the goal is found)."""
+        path = self.path()
+        return (self._recording.problem.path_cost(path) or 0.0) if path else 0.0
 
     # -- the recording: how much is known -----------------------------------------------
     def advance(self, until_step: int | None = None) -> bool:
@@ -147,7 +167,7 @@ class Run:
         """Can the run's heuristic be trusted to find the cheapest path (True when none)?"""
         return self._tree.admissible
 
-    def path(self) -> list[Cell] | None:
+    def path(self) -> list[State] | None:
         """Cells from the start to the goal (None until found)."""
         return self._tree.path()
 

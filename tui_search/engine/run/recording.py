@@ -11,17 +11,21 @@ It knows the steps, never where the run is.
 from array import array
 from bisect import bisect_right
 from collections.abc import Generator, Iterator
-from typing import NamedTuple, cast
+from typing import TYPE_CHECKING, NamedTuple, cast
 
-from tui_search.engine.maps.grid import Cell, Grid
+from tui_search.engine.maps.grid import Grid
 from tui_search.engine.run.peak import PeakTable
 from tui_search.engine.search.choices import Semantics
 from tui_search.engine.search.loops.dispatch import Loop, loop_for
 from tui_search.engine.search.problem import Problem
 from tui_search.engine.search.record import CHUNK, Record
 from tui_search.engine.search.registry import Algorithm, get_algorithm
+from tui_search.engine.search.state import State
 from tui_search.engine.util.frozen import Frozen
 
+if TYPE_CHECKING:
+    from tui_search.engine.maps.graph import Graph
+    from tui_search.engine.search.graph_problem import GraphProblem
 
 class Step(Frozen):
     """One step: the node taken off the frontier and the successors it added, in order (none
@@ -33,13 +37,13 @@ class Step(Frozen):
     _FIELDS = ("index", "node", "successors", "depth_limit", "found_goal", "discarded")
 
     index: int
-    node: Cell
-    successors: tuple[tuple[str, Cell], ...]
+    node: State  # a cell on a grid, a node's name on a graph
+    successors: tuple[tuple[str, State], ...]
     depth_limit: int | None
     found_goal: bool
     discarded: bool
 
-    def __init__(self, index: int, node: Cell, successors: tuple[tuple[str, Cell], ...],
+    def __init__(self, index: int, node: State, successors: tuple[tuple[str, State], ...],
                  depth_limit: int | None = None, found_goal: bool = False,
                  discarded: bool = False) -> None:
         self._assign(index=index, node=node, successors=successors, depth_limit=depth_limit,
@@ -71,7 +75,7 @@ class Recording:
     The grid is copied: editing the original afterwards never changes this run.
     """
 
-    def __init__(self, grid: Grid, algorithm: str, semantics: Semantics, max_steps: int,
+    def __init__(self, grid: "Grid | Graph", algorithm: str, semantics: Semantics, max_steps: int,
                  source: Source | None = None, first_chunk: int = CHUNK) -> None:
         """Record ``grid`` (copied) searched with ``algorithm`` (its key) under ``semantics``,
         up to ``max_steps`` expansions (a :class:`~tui_search.engine.run.recorded.Run` gives the
@@ -84,14 +88,21 @@ class Recording:
         semantics.check(algo)
         if max_steps < 1:
             raise ValueError("max_steps must be at least 1")
-        self.grid = grid.copy()
+        #: What is searched: a copy of the grid or the graph given.
+        self.board: "Grid | Graph" = grid.copy()
         self.algorithm = algorithm
         self.semantics = semantics.for_algorithm(algo)
         if semantics.recursive == "calls":  # its steps are held until their calls return
             from tui_search.engine.search.recursion import MAX_HELD
 
             max_steps = min(max_steps, MAX_HELD)
-        self.problem = Problem(self.grid, semantics, semantics.goal_test_for(algo))
+        self.problem: "Problem | GraphProblem"
+        if isinstance(self.board, Grid):
+            self.problem = Problem(self.board, semantics, semantics.goal_test_for(algo))
+        else:  # a graph (its modules imported only for one)
+            
+            self.problem = GraphProblem(self.board, semantics, semantics.goal_test_for(algo),
+                                        algo.weighted)
         self.problem.max_steps = max_steps
         #: The raw record: read by the run's parts (tree, position) and by checks, never the app.
         self.rec = Record()
@@ -99,11 +110,19 @@ class Recording:
         self._chunk = min(first_chunk, CHUNK)  # the next chunk's steps, doubling to CHUNK
         # The loops are generator functions: close() ends one that gives up.  The compiled
         # core's takes the steps a chunk may run (sent: None for its own); the others ignore it.
-        loop = loop_for(algo, semantics) if source is None else source.loop
+        loop = source.loop if source is not None else loop_for(
+            algo, semantics, graph=not isinstance(self.board, Grid))
         self._loop = cast(Generator[int, int | None, None],
                           loop(self.problem, self.rec, min(self._chunk, max_steps)))
         self._peak = PeakTable(self.rec, self.iteration_of)
         self._advance_once()  # records the start (and the answer, when start == goal)
+
+    @property
+    def grid(self) -> Grid:
+        """The grid searched (a run on a graph has none: :attr:`board`)."""
+        board = self.board
+        assert isinstance(board, Grid), "a run on a graph has no grid"
+        return board
 
     def _advance_once(self, steps: int | None = None) -> None:
         """Record a chunk: up to ``steps`` more when the loop takes that, never past

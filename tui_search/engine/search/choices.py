@@ -17,6 +17,11 @@
 * ``heuristic``: greedy best-first's and A*'s estimate of the cost to the goal
   (:mod:`tui_search.engine.search.heuristics`); the other searches use none.
 
+On a graph (:mod:`tui_search.engine.search.space`), ``order`` is one word of
+:data:`GRAPH_ORDERS` (``file``: the roads as the file lists them; ``name``: by the names they
+reach), ``heuristic`` ``table`` (the file's ``h`` lines), ``euclidean`` (by the nodes' places)
+or ``zero``, and ``corners`` does not apply.
+
 What published code and students' code differ on besides (docs/08-semantics.md):
 
 * ``visit`` ``expand-again``: a cell is marked visited when taken off, but the node taken off
@@ -50,6 +55,11 @@ from tui_search.engine.search.registry import Algorithm, Frontier
 from tui_search.engine.util.frozen import Frozen
 
 CORNER_RULES: tuple[str, ...] = ("always", "one", "never")
+#: A graph's orders of successors (one word, alone): its roads as the file lists them, or by
+#: the names they reach.
+GRAPH_ORDERS: tuple[str, ...] = ("file", "name")
+#: The estimate a graph gives in its file (its ``h`` lines); the others are worked out.
+TABLE = "table"
 VISIT_RULES: tuple[str, ...] = ("generate", "expand", "expand-again")
 GOAL_TESTS: tuple[str, ...] = ("generate", "expand")
 TIE_RULES: tuple[str, ...] = ("fifo", "lifo", "node", "low-h", "high-h", "low-g", "high-g")
@@ -106,13 +116,15 @@ class Semantics(Frozen):
                  tree_search: bool = False, heuristic: str = DEFAULT_HEURISTIC,
                  ties: str = "fifo", cost_tolerance: float = CHEAPER_BY, reopen: bool = True,
                  recursive: str = "", path_check: bool = True, mark_start: bool = True) -> None:
-        if not order or any(d not in DELTAS for d in order) or len(set(order)) != len(order):
+        graph_order = len(order) == 1 and order[0] in GRAPH_ORDERS
+        if not graph_order and (not order or any(d not in DELTAS for d in order)
+                                or len(set(order)) != len(order)):
             raise ValueError(f"bad move order {order!r}")
         for name, value, allowed in (
             ("corners", corners, CORNER_RULES),
             ("visit", visit, VISIT_RULES),
             ("goal test", goal_test or GOAL_TESTS[0], GOAL_TESTS),
-            ("heuristic", heuristic, tuple(HEURISTICS)),
+            ("heuristic", heuristic, (*HEURISTICS, TABLE)),
             ("ties", ties, TIE_RULES),
             ("recursive", recursive or RECURSIVE_FORMS[0], RECURSIVE_FORMS),
         ):

@@ -6,7 +6,7 @@ JSON.
 """
 
 # No future import: CONTRIBUTING.md, "Start-up".
-from typing import NamedTuple
+from typing import Any, NamedTuple
 
 from tui_search.engine.maps.grid import Cell, Grid
 from tui_search.engine.search.choices import Semantics
@@ -15,7 +15,9 @@ from tui_search.engine.search.choices import Semantics
 class Outcome(NamedTuple):
     algorithm: str
     semantics: Semantics
-    path: list[Cell] | None  # start to goal; None when no path was found
+    #: Start to goal (None when no path was found): cells (x, y) on a grid, nodes' names on a
+    #: graph.
+    path: list[Any] | None
     moves: list[str] | None
     expanded: int  # steps that expanded a node
     discarded: int  # steps that took off a cell already expanded (visit on expand)

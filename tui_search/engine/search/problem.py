@@ -12,10 +12,11 @@ from __future__ import annotations
 from array import array
 from collections.abc import MutableSequence, Sequence
 from functools import cached_property
-from typing import Any
+from typing import Any, cast
 
-from tui_search.engine.maps.grid import DELTAS, DIR_CODE, Grid
+from tui_search.engine.maps.grid import DELTAS, DIR_CODE, DIRECTIONS, SQRT2, Cell, Grid
 from tui_search.engine.search.choices import DEFAULT_SEMANTICS, Semantics
+from tui_search.engine.search.state import State
 
 
 class Problem:
@@ -41,6 +42,7 @@ class Problem:
                 raise ValueError(f"the {name} {cell} is on an obstacle")
         w, h = grid.width, grid.height
         self.grid = grid  # the map itself, for the loop that records the reference's steps
+        self.board: Grid = grid  # (a graph's problem has its graph there)
         #: Where the run stops (None: not said): a recursion's calls form lists the calls
         #: made by then (:mod:`~tui_search.engine.search.recursion`).
         self.max_steps: int | None = None
@@ -104,12 +106,36 @@ class Problem:
             table.append(tuple(off for i, off in enumerate(offsets) if i not in banned))
         return mask.to_bytes(size, "little"), table
 
-    def pad(self, cell: tuple[int, int]) -> int:
-        return (cell[1] + 1) * self.stride + cell[0] + 1
+    def pad(self, cell: State) -> int:
+        x, y = cast(Cell, cell)  # a grid's state is its cell
+        return (y + 1) * self.stride + x + 1
 
     def unpad(self, p: int) -> tuple[int, int]:
         y, x = divmod(p, self.stride)
         return (x - 1, y - 1)
+
+    # -- what a run's queries ask of a move (a graph's problem answers the same) -------------
+    @property
+    def size(self) -> int:
+        """How many numbers a state may have: the padded cells."""
+        return len(self.walls)
+
+    def move_name(self, parent: int, child: int) -> str:
+        """The direction of the move from padded cell ``parent`` to ``child``."""
+        return DIRECTIONS[self.dir_of_offset[child - parent]]
+
+    def step_cost(self, parent: int, child: int) -> float:
+        """The move's length times the cost of the cell it enters: the float the loops add."""
+        length = SQRT2 if len(self.move_name(parent, child)) == 2 else 1.0
+        return length if self.terrain is None else length * self.terrain[child]
+
+    def is_goal(self, p: int) -> bool:
+        return p == self.goal
+
+    def path_cost(self, path: list[State] | None) -> float | None:
+        from tui_search.engine.search.outcome import cost_of
+
+        return cost_of(self.grid, cast("list[Cell] | None", path))
 
 
 def padded(grid: Grid) -> tuple[bytes, array[float] | None]:

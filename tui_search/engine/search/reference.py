@@ -56,13 +56,12 @@ its limit.
 from __future__ import annotations
 
 import itertools
-from array import array
 from collections.abc import Callable, Generator, Iterator
 
-from tui_search.engine.maps.grid import DELTAS, Cell, Grid, move_cost
+from tui_search.engine.maps.graph import Graph
+from tui_search.engine.maps.grid import Grid
 from tui_search.engine.search.choices import Semantics
-from tui_search.engine.search.heuristics import heuristic_for, priority_of
-from tui_search.engine.search.outcome import Outcome, cost_of
+from tui_search.engine.search.outcome import Outcome
 from tui_search.engine.search.registry import Algorithm
 from tui_search.engine.search.registry import Frontier as FrontierKind
 from tui_search.engine.search.rules import (
@@ -80,6 +79,8 @@ from tui_search.engine.search.rules import (
     Visited,
     tie_key,
 )
+from tui_search.engine.search.space import space_of
+from tui_search.engine.search.state import State
 
 
 class ReferenceSearch:
@@ -91,16 +92,16 @@ class ReferenceSearch:
     tested on generation.
     """
 
-    def __init__(self, grid: Grid, algorithm: Algorithm, semantics: Semantics,
+    def __init__(self, board: Grid | Graph, algorithm: Algorithm, semantics: Semantics,
                  max_steps: int | None = None) -> None:
-        """``max_steps``: where a run of it stops, for a recursion's calls form, whose lines
-        list the calls made by then (:func:`~tui_search.engine.search.recursion.calls_form`;
-        at most its ``MAX_HELD``, which it holds in memory)."""
-        if grid.start is None or grid.goal is None:
-            raise ValueError("the map needs a start and a goal")
+        """Search ``board``, a grid or a graph (:func:`~tui_search.engine.search.space.
+        space_of`).  ``max_steps``: where a run of it stops, for a recursion's calls form,
+        whose lines list the calls made by then (:func:`~tui_search.engine.search.recursion.
+        calls_form`; at most its ``MAX_HELD``, which it holds in memory)."""
         semantics.check(algorithm)
-        self.grid, self.algorithm, self.semantics = grid, algorithm, semantics
-        self._start: Cell = grid.start
+        self.space = space_of(board, semantics, algorithm.weighted)
+        self.grid, self.algorithm, self.semantics = board, algorithm, semantics
+        self._start: State = self.space.start
         self.goal_test = semantics.goal_test_for(algorithm)
         # The calls form of a recursion: its neighbours form, the goal tested when entered
         # (:mod:`~tui_search.engine.search.recursion`).
@@ -111,14 +112,6 @@ class ReferenceSearch:
         self.goal: Node | None = None
         self.generated = self.expanded = self.discarded = self.max_frontier = 0
         self.iterations = 0
-        # Per cell, a bit per move of the order that is legal from it (-1: not worked out
-        # yet): the moves never change during a search, and two bytes a cell keep it small.
-        self._legal_bits = array("h", [-1]) * (grid.width * grid.height)
-        # A move costs its length (1 straight, sqrt(2) diagonally) times the cost of the cell
-        # it enters, to the searches ordered by cost; BFS, DFS and iterative deepening count
-        # moves, not costs: their g stays 0.
-        self._order = [(move, DELTAS[move], move_cost(move) if algorithm.weighted else 0.0)
-                       for move in semantics.order]
 
     def __iter__(self) -> Iterator[Expansion]:
         steps: Iterator[Expansion]
@@ -137,16 +130,8 @@ class ReferenceSearch:
     def _frontier(self) -> Frontier:
         sem = self.semantics
         if self.algorithm.priority is not None:
-            goal = self.grid.goal
-            assert goal is not None  # checked in __init__
-            heuristic = heuristic_for(sem.heuristic, self.grid.lowest_cost())
-            gx, gy = goal
-
-            def h(cell: Cell) -> float:
-                return heuristic(abs(cell[0] - gx), abs(cell[1] - gy))
-
-            return PriorityQueue(priority_of(self.algorithm.priority, heuristic, goal),
-                                 tie_key(sem.ties, h))
+            return PriorityQueue(self.space.priority(self.algorithm.priority),
+                                 tie_key(sem.ties, self.space.estimate()))
         if sem.recursive:
             return CallStack()
         return Queue() if self.algorithm.frontier is FrontierKind.FIFO else Stack()
@@ -161,23 +146,7 @@ class ReferenceSearch:
             return Cheapest(sem.cost_tolerance, sem.reopen, sem.mark_start)
         return Visited("expand" if sem.recursive else sem.visit, sem.mark_start)
 
-    # -- moves -------------------------------------------------------------------------------
-    def _legal(self, cell: Cell) -> list[tuple[str, Cell, float]]:
-        """The legal moves from ``cell`` (``Grid.neighbours``), in order, with their cells and
-        costs (the move's length times the cost of the cell it enters)."""
-        x, y = cell
-        i = y * self.grid.width + x
-        bits = self._legal_bits[i]
-        if bits < 0:
-            legal = {move for move, _ in self.grid.neighbours(
-                cell, self.semantics.order, self.semantics.corners)}
-            bits = sum(1 << j for j, (move, _, _) in enumerate(self._order) if move in legal)
-            self._legal_bits[i] = bits
-        enter = self.grid.cost
-        return [(move, (x + dx, y + dy), length * enter((x + dx, y + dy)))
-                for j, (move, (dx, dy), length) in enumerate(self._order) if bits >> j & 1]
-
-    def _push(self, frontier: Frontier, reached: Reached, cell: Cell, parent: Node | None,
+    def _push(self, frontier: Frontier, reached: Reached, cell: State, parent: Node | None,
               move: str | None, g: float) -> Node:
         node = Node(self.generated, cell, parent, move, parent.depth + 1 if parent else 0, g)
         self.generated += 1
@@ -187,7 +156,7 @@ class ReferenceSearch:
         return node
 
     def _is_goal_pushed(self, node: Node) -> bool:
-        if self.goal_test == "generate" and node.cell == self.grid.goal:
+        if self.goal_test == "generate" and self.space.is_goal(node.cell):
             self.goal = node
             return True
         return False
@@ -213,7 +182,7 @@ class ReferenceSearch:
                 continue
             self.expanded += 1
             node = reached.taken(node)
-            if self.goal_test == "expand" and node.cell == self.grid.goal:
+            if self.goal_test == "expand" and self.space.is_goal(node.cell):
                 self.goal = node
                 yield Expansion(k, node, (), False, True, len(frontier), limit, new_root)
                 return False
@@ -222,7 +191,7 @@ class ReferenceSearch:
             if limit is not None and node.depth >= limit:
                 cut_off = True  # at the depth limit: expanded with no successors
             else:
-                for move, cell, cost in self._legal(node.cell):
+                for move, cell, cost in self.space.successors(node.cell):
                     g = node.g + cost
                     if not reached.admits(node, cell, g):
                         continue
@@ -246,7 +215,7 @@ class ReferenceSearch:
 
 
 def stream(
-    grid: Grid,
+    grid: Grid | Graph,
     algorithm: Algorithm,
     semantics: Semantics,
     max_steps: int,
@@ -288,7 +257,7 @@ def stream(
         generated=generated,
         max_frontier=peak,
         gave_up=gave_up,
-        cost=cost_of(grid, path),
+        cost=search.space.path_cost(path),
     )
 
 

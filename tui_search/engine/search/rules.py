@@ -22,23 +22,23 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Protocol
 
-from tui_search.engine.maps.grid import Cell
+from tui_search.engine.search.state import State
 
 INF = float("inf")
 
-
 @dataclass(eq=False, slots=True)
 class Node:
-    """A frontier entry: a cell, the entry it was generated from, and the move between."""
+    """A frontier entry: a state (a cell, a node), the entry it was generated from, and the
+    move between."""
 
     event: int  # generation events are numbered from 0 (the start) in the order pushed
-    cell: Cell
+    cell: State
     parent: Node | None
     move: str | None  # the direction it was reached by (None for a root)
     depth: int
     g: float = 0.0  # the path's cost from the root: each move's length times its cell's cost
 
-    def path(self) -> list[Cell]:
+    def path(self) -> list[State]:
         """Cells from the root down to this node."""
         chain = []
         node: Node | None = self
@@ -57,7 +57,7 @@ class Node:
         out.reverse()
         return out
 
-    def on_path(self, cell: Cell) -> bool:
+    def on_path(self, cell: State) -> bool:
         """Is ``cell`` on the path from the root to this node (this node included)?"""
         node: Node | None = self
         while node is not None:
@@ -133,7 +133,7 @@ class CallStack:
         return node
 
 
-def tie_key(ties: str, h: Callable[[Cell], float]) -> Callable[[Node], object]:
+def tie_key(ties: str, h: Callable[[State], float]) -> Callable[[Node], object]:
     """What orders a priority queue's entries of equal priority, before their age (the
     oldest first): nothing (``fifo``), the newest first, the smallest cell (x, then y), the
     lower or higher h, the lower or higher g."""
@@ -154,7 +154,7 @@ class PriorityQueue:
     rule (:func:`tie_key`), then in the order pushed (a heap of ``(priority, tie, event,
     node)``: the event number breaks what is left)."""
 
-    def __init__(self, priority: Callable[[float, int, int], float],
+    def __init__(self, priority: Callable[[float, State], float],
                  tie: Callable[[Node], object] = lambda node: 0) -> None:
         self.priority, self.tie = priority, tie
         self.heap: list[tuple[float, object, int, Node]] = []
@@ -163,7 +163,7 @@ class PriorityQueue:
         return len(self.heap)
 
     def add(self, node: Node) -> None:
-        heapq.heappush(self.heap, (self.priority(node.g, *node.cell), self.tie(node),
+        heapq.heappush(self.heap, (self.priority(node.g, node.cell), self.tie(node),
                                    node.event, node))
 
     def take(self) -> Node:
@@ -172,7 +172,7 @@ class PriorityQueue:
 
 # -- what was reached: which successors are pushed, which entries taken off are discarded -------
 class Reached(Protocol):
-    def admits(self, parent: Node, cell: Cell, g: float) -> bool:
+    def admits(self, parent: Node, cell: State, g: float) -> bool:
         """May ``cell``, reached from ``parent`` with cost ``g``, be pushed?"""
         ...
 
@@ -196,7 +196,7 @@ class OnPath:
     def __init__(self, check: bool = True) -> None:
         self.check = check
 
-    def admits(self, parent: Node, cell: Cell, g: float) -> bool:
+    def admits(self, parent: Node, cell: State, g: float) -> bool:
         return not (self.check and parent.on_path(cell))
 
     def pushed(self, node: Node) -> None:
@@ -221,9 +221,9 @@ class Visited:
         self.on_push = visit == "generate"
         self.checked = visit == "expand"
         self.mark_start = mark_start
-        self.cells: set[Cell] = set()
+        self.cells: set[State] = set()
 
-    def admits(self, parent: Node, cell: Cell, g: float) -> bool:
+    def admits(self, parent: Node, cell: State, g: float) -> bool:
         return cell not in self.cells
 
     def pushed(self, node: Node) -> None:
@@ -253,10 +253,10 @@ class Cheapest:
 
     def __init__(self, tolerance: float, reopen: bool = True, mark_start: bool = True) -> None:
         self.tolerance, self.reopen, self.mark_start = tolerance, reopen, mark_start
-        self.best: dict[Cell, float] = {}
-        self.closed: set[Cell] = set()
+        self.best: dict[State, float] = {}
+        self.closed: set[State] = set()
 
-    def admits(self, parent: Node, cell: Cell, g: float) -> bool:
+    def admits(self, parent: Node, cell: State, g: float) -> bool:
         if not self.reopen and cell in self.closed:
             return False
         return g + self.tolerance < self.best.get(cell, INF)
@@ -287,9 +287,9 @@ class Shallowest:
 
     def __init__(self, mark_start: bool = True) -> None:
         self.mark_start = mark_start
-        self.best: dict[Cell, int] = {}
+        self.best: dict[State, int] = {}
 
-    def admits(self, parent: Node, cell: Cell, g: float) -> bool:
+    def admits(self, parent: Node, cell: State, g: float) -> bool:
         return parent.depth + 1 < self.best.get(cell, INF)
 
     def pushed(self, node: Node) -> None:

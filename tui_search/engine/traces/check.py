@@ -21,10 +21,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from tui_search.engine.maps.grid import Cell, Grid
+from tui_search.engine.maps.grid import Grid
 from tui_search.engine.run.recorded import Run, Step
 from tui_search.engine.search.choices import RECURSIVE_WORDS, VISIT_WORDS, Semantics
 from tui_search.engine.search.registry import Algorithm, get_algorithm
+from tui_search.engine.search.state import State
 from tui_search.engine.traces.differences import Causes, Difference
 from tui_search.engine.traces.read import Trace, TraceStep, show
 
@@ -81,7 +82,7 @@ class Verdict:
     label: str = ""
     #: The search's discarded pops the trace left out, before the difference: each the index
     #: of the trace's step it came before (the trace's length: after its last) and its cell.
-    left_out: tuple[tuple[int, Cell], ...] = ()
+    left_out: tuple[tuple[int, State], ...] = ()
     #: What the trace left out or added and still matched, or could not be checked.
     notes: tuple[str, ...] = ()
 
@@ -122,7 +123,7 @@ class _Checker:
         self.name = f"this {run.algo.short}" if run.semantics.recursive else run.algo.short
         self.causes = Causes(trace, run, self.name)
         self.counts_discarded: bool | None = None  # does the trace list the discarded pops?
-        self.left_out: list[tuple[int, Cell]] = []  # the discarded pops it did not list
+        self.left_out: list[tuple[int, State]] = []  # the discarded pops it did not list
         self.notes: list[str] = []
         if trace.steps and all(not t.listed for t in trace.steps):
             self.notes.append(EXPANSIONS_ONLY)
@@ -133,7 +134,7 @@ class _Checker:
             run.advance(k)
         return run.steps.at(k) if k <= run.recorded else None
 
-    def later_step(self, n: int, k: int, cell: Cell) -> int | None:
+    def later_step(self, n: int, k: int, cell: State) -> int | None:
         """The trace's step number at which the search would expand ``cell``, looking from
         its step ``k`` (the trace's step ``n``); None when it never does (soon)."""
         at = n

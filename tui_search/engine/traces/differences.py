@@ -14,10 +14,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from tui_search.engine.maps.grid import DELTAS, Cell, move_cost
+from tui_search.engine.maps.grid import DELTAS, move_cost
 from tui_search.engine.run.recorded import Run, Step
 from tui_search.engine.search.choices import TIE_RULES, corner_allowed
 from tui_search.engine.search.registry import Frontier
+from tui_search.engine.search.state import State, as_cell
 from tui_search.engine.traces.read import Trace, TraceStep, show
 
 #: Two priorities closer than this tie (the floats of one cost summed in another order).
@@ -38,8 +39,8 @@ class Difference:
     line: int | None
     kind: str
     message: str
-    expected: Cell | None = None
-    got: Cell | None = None
+    expected: State | None = None
+    got: State | None = None
     #: The search parts from the trace at a tie of its priority: "h" where the trace took
     #: the lower or higher h of an f tie, "entry" where it took another entry; "" no tie.
     tie: str = ""
@@ -49,12 +50,18 @@ class Difference:
     def as_json(self) -> dict[str, object]:
         return {"step": self.step, "line": self.line, "kind": self.kind,
                 "message": self.message,
-                "expected": None if self.expected is None else list(self.expected),
-                "got": None if self.got is None else list(self.got), "tie": self.tie or None}
+                "expected": state_json(self.expected), "got": state_json(self.got),
+                "tie": self.tie or None}
 
 
-def swapped(cell: Cell) -> Cell:
-    return (cell[1], cell[0])
+def state_json(state: State | None) -> object:
+    """A cell as JSON writes it (``[x, y]``), a node as its name, None as null."""
+    return list(state) if isinstance(state, tuple) else state
+
+
+def swapped(cell: State) -> State:
+    """The cell with x and y swapped (a node is itself)."""
+    return cell if isinstance(cell, str) else (cell[1], cell[0])
 
 
 class Causes:
@@ -66,7 +73,7 @@ class Causes:
         self.algo, self.sem = run.algo, run.semantics
 
     # -- the trace's own earlier steps ----------------------------------------------------------
-    def first_added(self, cell: Cell, before: int) -> int | None:
+    def first_added(self, cell: State, before: int) -> int | None:
         """The trace's step (from 1) that first added ``cell``, among its first ``before``
         steps; 0 for the start; None: none did."""
         if cell == self.run.grid.start:
@@ -76,7 +83,7 @@ class Causes:
                 return i
         return None
 
-    def expanded_at(self, cell: Cell, before: int) -> int | None:
+    def expanded_at(self, cell: State, before: int) -> int | None:
         """The trace's step that first expanded ``cell`` among its first ``before``."""
         for i, t in enumerate(self.trace.steps[:before], 1):
             if t.node == cell and not t.discarded:
@@ -107,7 +114,7 @@ class Causes:
                           f"({self._next_words()}); your trace expands {show(cell)}, {where}",
                           e.node, cell)
 
-    def _discipline(self, n: int, cell: Cell, theirs: Cell
+    def _discipline(self, n: int, cell: State, theirs: State
                     ) -> tuple[str, tuple[Suggestion, ...]] | None:
         """When both cells were added by the trace's previous step: a stack takes the last
         of them, a recursion the first, a queue the oldest.  The trace that takes the first
@@ -139,7 +146,7 @@ class Causes:
                     f"takes {show(cell)}, the newest, as a stack does (a DFS: -a dfs)", ())
         return None
 
-    def _twice(self, cell: Cell, before: int) -> str:
+    def _twice(self, cell: State, before: int) -> str:
         what = f"{show(cell)} was expanded already at step {before}: your search expanded it twice"
         if self.algo.weighted:
             return (f"{what}; {self.name} expands a cell again only when it is reached cheaper "
@@ -171,14 +178,14 @@ class Causes:
             return "the next call of the recursion"
         return f"the {algo.frontier.noun}'s {algo.frontier.next_end}"
 
-    def _tie(self, k: int, mine: Cell, theirs: Cell) -> tuple[str, str, list[str]] | None:
+    def _tie(self, k: int, mine: State, theirs: State) -> tuple[str, str, list[str]] | None:
         """When the trace's cell ties with the search's on the priority: the sentence, the
         tie's kind ("h" where the trace took the lower or higher h of an f tie, else "entry")
         and the tie rules that would take the trace's cell."""
         run = self.run
         run.goto(k - 1)
         now, cell_of, costs = run.now, run.nodes.cell, run.nodes.costs
-        entries: list[tuple[int, Cell, tuple[float, float, float]]] = []
+        entries: list[tuple[int, State, tuple[float, float, float]]] = []
         for g in now.frontier():
             c = costs(g)
             if c is not None and not now.is_stale(g):
@@ -213,10 +220,11 @@ class Causes:
     def successors(self, n: int, t: TraceStep, e: Step) -> Difference | None:
         """The first difference between the successors the trace's step ``n`` added and the
         search's step's (None: the same, in the same order)."""
-        got, want = list(t.successors), [c for _, c in e.successors]
+        got: list[State] = list(t.successors)
+        want: list[State] = [c for _, c in e.successors]
         if got == want:
             return None
-        seen: set[Cell] = set()
+        seen: set[State] = set()
         for c in got:
             if c in seen:
                 return self._diff(n, t, f"your trace added {show(c)} twice", None, c)
@@ -237,12 +245,12 @@ class Causes:
         return self._diff(n, t, words, want[first], got[first])
 
     @staticmethod
-    def _diff(n: int, t: TraceStep, words: str, expected: Cell | None, got: Cell | None,
+    def _diff(n: int, t: TraceStep, words: str, expected: State | None, got: State | None,
               suggest: tuple[Suggestion, ...] = ()) -> Difference:
         return Difference(n, t.line, "successors", f"step {n}: {words}", expected, got,
                           suggest=suggest)
 
-    def _added(self, n: int, t: TraceStep, e: Step, c: Cell, want: list[Cell]
+    def _added(self, n: int, t: TraceStep, e: Step, c: State, want: list[State]
                ) -> tuple[str, tuple[Suggestion, ...]]:
         """The trace adds ``c``, which the search does not: why, in one cause."""
         name, node, sem = self.name, t.node, self.sem
@@ -252,6 +260,8 @@ class Causes:
                     "it adds the goal (the goal tested on generate), yours goes on",
                     ((("goal_test", "expand"),),))
         head = f"your trace added {show(c)}, which {name} does not add from {show(node)}"
+        if isinstance(c, str) or isinstance(node, str):  # a graph's: no move names the cause
+            return f"{head}: no road of it leads there", ()
         hint = "; x is the column, y the row: swapped?" if swapped(c) in want else ""
         delta = (c[0] - node[0], c[1] - node[1])
         move = next((d for d, v in DELTAS.items() if v == delta), None)
@@ -271,7 +281,7 @@ class Causes:
                     f"{sem.corners} refuses it", others)
         return self._reached(n, t, e, c, head)
 
-    def _reached(self, n: int, t: TraceStep, e: Step, c: Cell, head: str
+    def _reached(self, n: int, t: TraceStep, e: Step, c: State, head: str
                  ) -> tuple[str, tuple[Suggestion, ...]]:
         """The trace adds ``c``, a legal move the search refuses as reached: which rule."""
         name, sem, algo = self.name, self.sem, self.algo
@@ -303,7 +313,7 @@ class Causes:
         return (f"{head}: it was expanded already, at step {expanded}, and {name} adds a cell "
                 "it has visited no more", ())
 
-    def _cheaper(self, n: int, t: TraceStep, e: Step, c: Cell, head: str,
+    def _cheaper(self, n: int, t: TraceStep, e: Step, c: State, head: str,
                  expanded: int | None) -> tuple[str, tuple[Suggestion, ...]]:
         """A cost-ordered search refuses ``c``: closed, reached as cheaply, or cheaper by less
         than its cost tolerance."""
@@ -314,8 +324,7 @@ class Causes:
             return (f"{head}: it is closed (expanded at step {expanded}), and {name} never "
                     "re-opens a cell; yours does (--reopen yes)", ((("reopen", True),),))
         node_event = run.steps.expanded_event(k)
-        move = next(d for d, v in DELTAS.items() if v == (c[0] - t.node[0], c[1] - t.node[1]))
-        g = run.nodes.cost(node_event) + move_cost(move) * run.grid.cost(c)
+        g = run.nodes.cost(node_event) + _step_cost(run, t.node, c)
         last = run.now.last_event(c)
         best = run.nodes.cost(last) if last is not None else float("inf")
         if g < best:
@@ -326,8 +335,8 @@ class Causes:
         return (f"{head}: it was reached already at g {best:.2f}, and this path costs "
                 f"{g:.2f}, no cheaper ({name} pushes a cell again only when reached cheaper)", ())
 
-    def _left_out(self, n: int, t: TraceStep, e: Step, c: Cell, got: list[Cell],
-                  want: list[Cell]) -> tuple[str, tuple[Suggestion, ...]]:
+    def _left_out(self, n: int, t: TraceStep, e: Step, c: State, got: list[State],
+                  want: list[State]) -> tuple[str, tuple[Suggestion, ...]]:
         """The search adds ``c``, which the trace does not: why, in one cause."""
         name, sem, algo = self.name, self.sem, self.algo
         head = f"{name} adds {show(c)} from {show(t.node)}; your trace does not"
@@ -351,7 +360,18 @@ class Causes:
         return head, ()
 
 
-def _subsequence(short: list[Cell], long: list[Cell]) -> bool:
+def _step_cost(run: Run, a: State, b: State) -> float:
+    """What the move from ``a`` to ``b`` adds to g: a road's cost on a graph; on a grid the
+    move's length times the cost of the cell it enters."""
+    graph = run.graph
+    if graph is not None:
+        return graph.cost(str(a), str(b))
+    (ax, ay), (bx, by) = as_cell(a), as_cell(b)
+    move = next(d for d, v in DELTAS.items() if v == (bx - ax, by - ay))
+    return move_cost(move) * run.grid.cost((bx, by))
+
+
+def _subsequence(short: list[State], long: list[State]) -> bool:
     it = iter(long)
     return all(c in it for c in short)
 
@@ -366,10 +386,10 @@ _PREFERRED = ("node", "low-h", "high-h", "lifo", "low-g", "high-g", "fifo")
 assert set(_PREFERRED) == set(TIE_RULES)
 
 
-def _picks(rule: str, tied: list[tuple[int, Cell, tuple[float, float, float]]]) -> Cell:
+def _picks(rule: str, tied: list[tuple[int, State, tuple[float, float, float]]]) -> State:
     """The cell the tie ``rule`` takes of ``tied`` entries (event, cell, (g, h, f)); then the
     oldest, as :func:`~tui_search.engine.search.rules.tie_key` orders them."""
-    def key(entry: tuple[int, Cell, tuple[float, float, float]]) -> tuple[object, int]:
+    def key(entry: tuple[int, State, tuple[float, float, float]]) -> tuple[object, int]:
         g, cell, (cost, h, _) = entry
         by: dict[str, object] = {"fifo": 0, "lifo": -g, "node": cell, "low-h": h,
                                  "high-h": -h, "low-g": cost, "high-g": -cost}

@@ -9,8 +9,12 @@ from __future__ import annotations
 from collections.abc import Iterator
 from itertools import permutations
 
-from tui_search.engine.maps.grid import DEFAULT_ORDER, DELTAS, Cell, Grid
+from tui_search.engine.maps.grid import DEFAULT_ORDER, DELTAS, Grid
+from tui_search.engine.search.state import State, as_cell
 from tui_search.engine.traces.read import Trace
+
+#: A graph's orders, both tried: a trace's successors in the file's order or by name.
+GRAPH_ORDERS: list[tuple[str, ...]] = [("file",), ("name",)]
 
 #: The most move orders tried when the trace leaves their order open.
 MAX_ORDERS = 24
@@ -32,22 +36,30 @@ def expansion_orders(trace: Trace) -> list[tuple[str, ...]]:
     unless every cell it expands but the first is a straight move from one it expanded before
     (then a search with diagonal moves would have expanded one a diagonal away, all but
     surely: the four-move orders alone)."""
+    if on_graph(trace):
+        return list(GRAPH_ORDERS)
     fours = [tuple(p) for p in permutations(("N", "S", "E", "W"))]
-    seen: set[Cell] = set()
+    seen: set[State] = set()
     for step in trace.steps:
-        x, y = step.node
+        x, y = as_cell(step.node)
         if seen and not seen & {(x + 1, y), (x - 1, y), (x, y + 1), (x, y - 1), (x, y)}:
             return fours + list(EIGHT_MOVE_ORDERS)
         seen.add(step.node)
     return fours
 
 
-def _move(node: Cell, cell: Cell) -> str | None:
+def on_graph(trace: Trace) -> bool:
+    """Is it a graph's trace (its nodes named, not cells)?"""
+    return bool(trace.steps) and isinstance(trace.steps[0].node, str)
+
+
+def _move(node: State, cell: State) -> str | None:
+    node, cell = as_cell(node), as_cell(cell)
     delta = (cell[0] - node[0], cell[1] - node[1])
     return next((d for d, v in DELTAS.items() if v == delta), None)
 
 
-def inferred_orders(trace: Trace, goal: Cell | None = None, grid: Grid | None = None
+def inferred_orders(trace: Trace, goal: State | None = None, grid: Grid | None = None
                     ) -> list[tuple[str, ...]]:
     """The move orders consistent with the order in which each step added its successors:
     the moves the trace used, ordered every way the trace allows (at most
@@ -57,7 +69,10 @@ def inferred_orders(trace: Trace, goal: Cell | None = None, grid: Grid | None = 
     A step that stops at the ``goal`` (its last successor) says nothing of the moves after
     the goal's, so the goal's move is put before every move that step did not add, wherever
     no other step says otherwise: the search then stops there too.  A trace that adds nothing
-    at all: the moves that lead nowhere from any cell it expands (on ``grid``)."""
+    at all: the moves that lead nowhere from any cell it expands (on ``grid``).  A graph's
+    trace may follow the file's order or the names': both."""
+    if on_graph(trace):
+        return list(GRAPH_ORDERS)
     used: list[str] = []
     after: dict[str, set[str]] = {}
     goal_steps: list[list[str]] = []
@@ -86,7 +101,7 @@ def _never_moves(trace: Trace, grid: Grid | None) -> tuple[str, ...]:
     search that added nothing could have tried (N,W,S,E when none is, or no map is given)."""
     if grid is None:
         return ("N", "W", "S", "E")
-    nodes = {step.node for step in trace.steps}
+    nodes = {as_cell(step.node) for step in trace.steps}
     moves = tuple(d for d, (dx, dy) in DELTAS.items()
                   if not any(grid.is_free((x + dx, y + dy)) for x, y in nodes))
     return moves or ("N", "W", "S", "E")
@@ -125,6 +140,8 @@ def _linear(used: list[str], after: dict[str, set[str]],
 def order_notes(orders: list[tuple[str, ...]]) -> list[str]:
     """What the inferred order leaves open: moves the trace never made, and other orders the
     trace allows as well."""
+    if orders[0] in GRAPH_ORDERS:
+        return []
     used = set(orders[0])
     straight = ("N", "E", "S", "W")
     moves = straight if used <= set(straight) else tuple(DELTAS)

@@ -21,9 +21,11 @@ from collections.abc import Iterable
 from dataclasses import replace
 from typing import Any
 
+from tui_search.engine.maps.graph import Graph
 from tui_search.engine.maps.grid import Cell, Grid
 from tui_search.engine.maps.read import MapError
 from tui_search.engine.run.recording import Step
+from tui_search.engine.search.state import State
 from tui_search.engine.traces.read import Trace, load_trace, read_trace
 
 #: The version Posthoc's visualiser needs declared.
@@ -160,21 +162,45 @@ def read_posthoc(text: str, grid: Grid, name: str) -> Trace:
 class PosthocWriter:
     """A search's steps as a Posthoc trace: ``add`` each step, ``text`` the document."""
 
-    def __init__(self, grid: Grid) -> None:
+    def __init__(self, grid: Grid | Graph) -> None:
         self.grid = grid
         self.events: list[dict[str, object]] = []
-        start, goal = grid.start, grid.goal
-        assert start is not None and goal is not None  # a search ran on it
-        self.parent: dict[Cell, int | None] = {start: None}
+        start: State | None
+        goals: tuple[State, ...]
+        if isinstance(grid, Graph):
+            start, goals = grid.start, grid.goals
+        else:
+            start, goals = grid.start, (() if grid.goal is None else (grid.goal,))
+        assert start is not None and goals  # a search ran on it
+        self.parent: dict[State, int | None] = {start: None}
         self.events.append(self._event("source", start))
-        self.events.append(self._event("destination", goal))
+        for goal in goals:
+            self.events.append(self._event("destination", goal))
 
-    def _id(self, cell: Cell) -> int:
-        return cell[1] * self.grid.width + cell[0]
+    def _id(self, state: State) -> int:
+        """A cell's number on the grid (row by row), a node's in the graph."""
+        if isinstance(state, str):
+            assert isinstance(self.grid, Graph)
+            return self.grid.index[state]
+        assert isinstance(self.grid, Grid)
+        return state[1] * self.grid.width + state[0]
 
-    def _event(self, kind: str, cell: Cell, parent: Cell | None = None) -> dict[str, object]:
+    def _place(self, state: State) -> tuple[float, float]:
+        """Where it is drawn: a cell's column and row, a node's place (y down, as on a page;
+        its number and 0 when the graph has no places)."""
+        if not isinstance(state, str):
+            return state
+        assert isinstance(self.grid, Graph)
+        i = self.grid.index[state]
+        if not self.grid.has_places:
+            return float(i), 0.0
+        x, y = self.grid.place(i)
+        return x, -y
+
+    def _event(self, kind: str, cell: State, parent: State | None = None) -> dict[str, object]:
+        x, y = self._place(cell)
         return {"type": kind, "id": self._id(cell),
-                "pId": None if parent is None else self._id(parent), "x": cell[0], "y": cell[1]}
+                "pId": None if parent is None else self._id(parent), "x": x, "y": y}
 
     def add(self, step: Step) -> None:
         node = step.node
@@ -187,7 +213,7 @@ class PosthocWriter:
             self.events.append(self._event("generating", cell, node))
         self.events.append({**expanding, "type": "closing"})
 
-    def text(self, path: Iterable[Cell] | None = None) -> str:
+    def text(self, path: Iterable[State] | None = None) -> str:
         """The document (its last event ``end`` at the goal when a path was found)."""
         events = list(self.events)
         cells = list(path or ())

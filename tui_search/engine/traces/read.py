@@ -22,8 +22,10 @@ from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 from typing import NamedTuple, overload
 
-from tui_search.engine.maps.grid import Cell, Grid
+from tui_search.engine.maps.graph import Graph
+from tui_search.engine.maps.grid import Grid
 from tui_search.engine.maps.read import MapError, each_line, read_text
+from tui_search.engine.search.state import State, as_cell, state_text
 from tui_search.engine.util.untrusted import BadInput, load_json
 
 #: Bigger traces are refused before reading (each line an expansion: a search of a 512x512
@@ -42,8 +44,8 @@ class TraceStep(NamedTuple):
     tuple: made each time a step is read from :class:`TraceSteps`, it must be quick.)"""
 
     line: int
-    node: Cell
-    successors: tuple[Cell, ...]
+    node: State  # a cell (x, y) on a grid, a node's name on a graph
+    successors: tuple[State, ...]
     discarded: bool = False
     listed: bool = True
 
@@ -53,21 +55,33 @@ class TraceSteps(Sequence[TraceStep]):
     successors end, each cell as ``y * width + x``.  A :class:`TraceStep` is made when asked
     for, so a trace of millions of lines costs a few bytes a step, not objects."""
 
-    __slots__ = ("_discarded", "_lines", "_listed", "_nodes", "_succ", "_succ_end", "_width")
+    __slots__ = ("_board", "_discarded", "_lines", "_listed", "_nodes", "_succ", "_succ_end")
 
-    def __init__(self, width: int) -> None:
-        self._width = width
+    def __init__(self, board: Grid | Graph) -> None:
+        self._board = board
         self._lines, self._nodes = array("I"), array("i")
         self._succ_end, self._succ = array("I"), array("i")
         self._discarded = bytearray()
         self._listed = bytearray()
 
-    def add(self, line: int, node: Cell, successors: Sequence[Cell], discarded: bool,
+    def _number(self, state: State) -> int:
+        board = self._board
+        if isinstance(board, Graph):
+            return board.index[str(state)]
+        x, y = as_cell(state)
+        return y * board.width + x
+
+    def _state(self, n: int) -> State:
+        board = self._board
+        if isinstance(board, Graph):
+            return board.names[n]
+        return n % board.width, n // board.width
+
+    def add(self, line: int, node: State, successors: Sequence[State], discarded: bool,
             listed: bool = True) -> None:
-        w = self._width
         self._lines.append(line)
-        self._nodes.append(node[1] * w + node[0])
-        self._succ.extend(y * w + x for x, y in successors)
+        self._nodes.append(self._number(node))
+        self._succ.extend(self._number(s) for s in successors)
         self._succ_end.append(len(self._succ))
         self._discarded.append(discarded)
         self._listed.append(listed)
@@ -86,21 +100,30 @@ class TraceSteps(Sequence[TraceStep]):
             index += len(self)
         if not 0 <= index < len(self):
             raise IndexError("trace step out of range")
-        w = self._width
+        state = self._state
         begin = self._succ_end[index - 1] if index else 0
-        successors = tuple((c % w, c // w) for c in self._succ[begin:self._succ_end[index]])
-        node = self._nodes[index]
-        return TraceStep(self._lines[index], (node % w, node // w), successors,
+        successors = tuple(state(c) for c in self._succ[begin:self._succ_end[index]])
+        return TraceStep(self._lines[index], state(self._nodes[index]), successors,
                          bool(self._discarded[index]), bool(self._listed[index]))
 
     def __iter__(self) -> Iterator[TraceStep]:
-        w, lines, nodes, succ, discarded, listed = (
-            self._width, self._lines, self._nodes, self._succ, self._discarded, self._listed)
+        lines, nodes, succ, discarded, listed = (
+            self._lines, self._nodes, self._succ, self._discarded, self._listed)
+        board = self._board
+        if isinstance(board, Graph):
+            names = board.names
+
+            def state(n: int) -> State:
+                return names[n]
+        else:
+            w = board.width
+
+            def state(n: int) -> State:
+                return n % w, n // w
         begin = 0
         for i, end in enumerate(self._succ_end):
-            node = nodes[i]
-            yield TraceStep(lines[i], (node % w, node // w),
-                            tuple([(c % w, c // w) for c in succ[begin:end]]),
+            yield TraceStep(lines[i], state(nodes[i]),
+                            tuple([state(c) for c in succ[begin:end]]),
                             bool(discarded[i]), bool(listed[i]))
             begin = end
 
@@ -121,34 +144,37 @@ class Trace:
 
     name: str
     steps: Sequence[TraceStep]  # TraceSteps as read; a tuple where a check remade them
-    start: Cell | None = None
-    goal: Cell | None = None
-    path: tuple[Cell, ...] | None = None
+    start: State | None = None
+    goal: State | None = None
+    path: tuple[State, ...] | None = None
 
 
-def show(cell: Cell) -> str:
-    """A cell as the messages write it: ``(2,3)``."""
-    return f"({cell[0]},{cell[1]})"
+def show(state: State) -> str:
+    """A cell or a node as the messages write it: ``(2,3)``, ``Sibiu``."""
+    return state_text(state)
 
 
 class _Reader:
-    """Reads a trace line by line against a grid; :meth:`fail` raises the one-line error."""
+    """Reads a trace line by line against a grid or a graph; :meth:`fail` raises the
+    one-line error."""
 
-    def __init__(self, grid: Grid, name: str) -> None:
-        self.grid, self.name = grid, name
+    def __init__(self, board: Grid | Graph, name: str) -> None:
+        self.board, self.name = board, name
         self.line = 0
 
     def fail(self, message: str) -> MapError:
         return MapError(self.name, message, self.line)
 
-    def cell(self, value: object, what: str) -> Cell:
-        """``[x, y]`` as a free cell of the map."""
+    def cell(self, value: object, what: str) -> State:
+        """``[x, y]`` as a free cell of the map; on a graph, a node's name."""
+        if isinstance(self.board, Graph):
+            return self.node(value, what)
         if (not isinstance(value, list) or len(value) != 2
                 or not all(isinstance(v, int) and not isinstance(v, bool) for v in value)):
             raise self.fail(f"{what} should be [x, y], two whole numbers, not "
                             f"{json.dumps(value)[:40]}")
         x, y = value
-        grid = self.grid
+        grid = self.board
         hint = "; x is the column, y the row: swapped?" if grid.is_free((y, x)) else ""
         if not (0 <= x < grid.width and 0 <= y < grid.height):
             raise self.fail(f"{what} ({x},{y}) is off the map "
@@ -158,28 +184,42 @@ class _Reader:
             raise self.fail(f"{what} ({x},{y}) is an obstacle{hint}")
         return (x, y)
 
-    def successor(self, value: object) -> Cell:
+    def node(self, value: object, what: str) -> str:
+        """A graph's node, by its name."""
+        graph = self.board
+        assert isinstance(graph, Graph)
+        if not isinstance(value, str):
+            raise self.fail(f"{what} should be a node's name (a string), not "
+                            f"{json.dumps(value)[:40]}")
+        if value not in graph.index:
+            raise self.fail(f"{what} {value[:40]!r} is not a node of {graph.name}")
+        if value in graph.closed:
+            raise self.fail(f"{what} {value!r} is closed")
+        return value
+
+    def successor(self, value: object) -> State:
         if isinstance(value, dict):
             if "node" not in value:
                 raise self.fail('a successor object needs "node": [x, y]')
             return self.cell(value["node"], "successor")
         return self.cell(value, "successor")
 
-    def endpoints(self, obj: dict[str, object]) -> tuple[Cell | None, Cell | None]:
+    def endpoints(self, obj: dict[str, object]) -> tuple[State | None, State | None]:
         """The first line's ``start`` and ``goal`` (None where it gives none): the map's."""
-        grid = self.grid
-        assert grid.start is not None  # as read_trace holds
+        board = self.board
+        ends = _ends(board)
+        assert ends[0] is not None  # as read_trace holds
         start = goal = None
         if "start" in obj:
             start = self.cell(obj["start"], "start")
-            if start != grid.start:
+            if start != ends[0]:
                 raise self.fail(f"the trace starts at {show(start)}, the map at "
-                                f"{show(grid.start)}")
+                                f"{show(ends[0])}")
         if "goal" in obj:
             goal = self.cell(obj["goal"], "goal")
-            if grid.goal is not None and goal != grid.goal:
+            if ends[1] and goal not in ends[1]:
                 raise self.fail(f"the trace's goal is {show(goal)}, the map's "
-                                f"{show(grid.goal)}")
+                                f"{' or '.join(map(show, ends[1]))}")
         return start, goal
 
     def obj(self, text: str, budget: int) -> dict[str, object]:
@@ -192,15 +232,25 @@ class _Reader:
         return value
 
 
-def read_trace(text: str, grid: Grid, name: str) -> Trace:
-    """The trace in ``text`` (the contents of file ``name``), checked against ``grid``."""
+def _ends(board: Grid | Graph) -> tuple[State | None, tuple[State, ...]]:
+    """The board's start and goals."""
+    if isinstance(board, Graph):
+        return board.start, board.goals
+    return board.start, () if board.goal is None else (board.goal,)
+
+
+def read_trace(text: str, grid: Grid | Graph, name: str) -> Trace:
+    """The trace in ``text`` (the contents of file ``name``), checked against ``grid`` (or
+    a graph, whose trace names its nodes)."""
     reader = _Reader(grid, name)
-    steps = TraceSteps(grid.width)
+    steps = TraceSteps(grid)
     start = goal = None
-    path: tuple[Cell, ...] | None = None
-    assert grid.start is not None
-    added = bytearray(grid.width * grid.height)  # 1: a cell some line added (or the start)
-    added[grid.start[1] * grid.width + grid.start[0]] = 1
+    path: tuple[State, ...] | None = None
+    begin = _ends(grid)[0]
+    assert begin is not None
+    added: set[State] | bytearray = set() if isinstance(grid, Graph) else bytearray(
+        grid.width * grid.height)  # a cell some line added (or the start)
+    _add(added, grid, begin)
     budget = LINE_BUDGET * len(text) + LINE_ALLOWANCE
     path_line = 0
     unadded: MapError | None = None  # the first node no earlier line added
@@ -229,10 +279,8 @@ def read_trace(text: str, grid: Grid, name: str) -> Trace:
             raise reader.fail('an expansion needs "node": [x, y] (or the first line "start", '
                               'the last "path")')
         node = reader.cell(obj["node"], "node")
-        width = grid.width
-        if not added[node[1] * width + node[0]] and unadded is None:  # unless none lists any
-            sx, sy = node[1], node[0]  # the cell with x and y swapped
-            swapped = (0 <= sx < width and 0 <= sy < grid.height and added[sy * width + sx])
+        if not _was_added(added, grid, node) and unadded is None:  # unless none lists any
+            swapped = isinstance(node, tuple) and _was_added(added, grid, (node[1], node[0]))
             hint = "; x is the column, y the row: swapped?" if swapped else ""
             unadded = MapError(name, f"expands {show(node)}, which no earlier line added "
                                f"(nor is it the start){hint}", number)
@@ -240,8 +288,8 @@ def read_trace(text: str, grid: Grid, name: str) -> Trace:
         if not isinstance(successors, list):
             raise reader.fail('"successors" should be a list')
         cells = [reader.successor(s) for s in successors]
-        for x, y in cells:
-            added[y * width + x] = 1
+        for cell in cells:
+            _add(added, grid, cell)
         listed |= "successors" in obj
         steps.add(number, node, cells, obj.get("discarded") is True, "successors" in obj)
     if not steps:
@@ -251,7 +299,28 @@ def read_trace(text: str, grid: Grid, name: str) -> Trace:
     return Trace(name, steps, start, goal, path)
 
 
-def load_trace(path: str, grid: Grid) -> Trace:
+def _add(added: set[State] | bytearray, board: Grid | Graph, state: State) -> None:
+    if isinstance(added, set):
+        added.add(state)
+    else:
+        x, y = as_cell(state)
+        added[y * as_grid(board).width + x] = 1
+
+
+def _was_added(added: set[State] | bytearray, board: Grid | Graph, state: State) -> bool:
+    if isinstance(added, set):
+        return state in added
+    x, y = as_cell(state)
+    grid = as_grid(board)
+    return 0 <= x < grid.width and 0 <= y < grid.height and bool(added[y * grid.width + x])
+
+
+def as_grid(board: Grid | Graph) -> Grid:
+    assert isinstance(board, Grid)
+    return board
+
+
+def load_trace(path: str, grid: Grid | Graph) -> Trace:
     """:func:`read_trace` of a file; a file that cannot be read is a one-line error."""
     return read_trace(read_text(path, "a trace", MAX_TRACE_BYTES), grid, path)
 

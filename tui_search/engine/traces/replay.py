@@ -17,6 +17,7 @@ from tui_search.engine.maps.grid import Cell, Grid
 from tui_search.engine.run.recorded import MAX_STEPS, Run
 from tui_search.engine.search.choices import Semantics
 from tui_search.engine.search.registry import get_algorithm
+from tui_search.engine.search.state import State
 from tui_search.engine.traces.as_run import TRACE_ALGORITHM, trace_run
 from tui_search.engine.traces.check import Verdict, check_trace
 from tui_search.engine.traces.read import Trace, TraceStep, show
@@ -39,7 +40,7 @@ class Replay:
     algorithm: str
     semantics: Semantics
     verdict: Verdict
-    where: tuple[bytes, Cell | None, Cell | None]
+    where: tuple[bytes, State | None, State | None]
     #: Was the search found by the diagnosis (its order inferred from the trace), not given?
     inferred: bool = False
     own: Verdict | None = None
@@ -81,7 +82,7 @@ class Replay:
         difference = self.verdict.difference
         return None if difference is None else difference.step
 
-    def marks(self) -> list[Cell | None]:
+    def marks(self) -> list[State | None]:
         """The cell each pane's run expands (or adds) where they first part: the trace's,
         the search's (None where one has none, or they never part)."""
         difference = self.verdict.difference
@@ -134,7 +135,7 @@ def replay_of(trace: Trace, grid: Grid, algorithm: str | None, semantics: Semant
     return Replay(aligned, algorithm, semantics, verdict, _where(grid), inferred, own)
 
 
-def with_discards(trace: Trace, left_out: tuple[tuple[int, Cell], ...]) -> Trace:
+def with_discards(trace: Trace, left_out: tuple[tuple[int, State], ...]) -> Trace:
     """``trace`` with the discarded pops it left out (a verdict's ``left_out``) put in where
     the search discards them, each ``"discarded": true`` on the line of the step it comes
     before (after the last step: its line)."""

@@ -9,10 +9,11 @@ title's "modified": :mod:`~tui_search.tui.model.history`) and starts new runs at
 from __future__ import annotations
 
 from tui_search.engine.maps.grid import Cell, Grid
+from tui_search.engine.search.state import State, state_text
 
 
-def cell_text(cell: Cell) -> str:
-    return f"({cell[0]},{cell[1]})"
+def cell_text(cell: State) -> str:
+    return state_text(cell)
 
 
 def place(grid: Grid, what: str, cell: Cell) -> str | None:

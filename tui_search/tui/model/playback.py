@@ -10,8 +10,8 @@ from __future__ import annotations
 from collections.abc import Iterator
 from time import perf_counter
 
-from tui_search.engine.maps.grid import Cell
 from tui_search.engine.run.recorded import Run
+from tui_search.engine.search.state import State
 
 #: Playback speeds in expansions per second (``+``/``-`` walk this list).
 SPEEDS: tuple[int, ...] = (1, 2, 5, 10, 20, 50, 100, 300, 1_000, 10_000, 100_000, 1_000_000)
@@ -102,7 +102,7 @@ def record_for(run: Run, seconds: float | None = None) -> bool:
     return True
 
 
-def step_changes(run: Run, old_k: int, was_at_end: bool) -> list[Cell] | None:
+def step_changes(run: Run, old_k: int, was_at_end: bool) -> list[State] | None:
     """The cells whose look differs between position ``old_k`` and the run's position, when
     they moved by one step within one iteration; ``None`` (redraw everything) otherwise."""
     k = run.k

@@ -11,8 +11,8 @@ lesson in one habit.
 # No future import: CONTRIBUTING.md, "Start-up".
 from typing import NamedTuple
 
-from tui_search.engine.maps.grid import Cell
 from tui_search.engine.run.recorded import Run
+from tui_search.engine.search.state import State
 from tui_search.tui.model.cell_edits import cell_text
 
 
@@ -57,7 +57,7 @@ def toggled(quiz: Quiz, run: Run | None) -> tuple[Quiz, str]:
     return on, on.question(run) if run is not None else NO_RUN
 
 
-def verdict(quiz: Quiz, run: Run, node: Cell, guess: Cell) -> tuple[Quiz, str]:
+def verdict(quiz: Quiz, run: Run, node: State, guess: State) -> tuple[Quiz, str]:
     """The new score and what to say, when the step took ``node`` off and the student
     guessed ``guess``."""
     right = node == guess

@@ -13,8 +13,8 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import TYPE_CHECKING
 
-from tui_search.engine.maps.grid import Cell
 from tui_search.engine.run.recorded import Run
+from tui_search.engine.search.state import State
 
 if TYPE_CHECKING:
     from tui_search.engine.traces.replay import Replay
@@ -48,7 +48,7 @@ class ReplayJumps:
         or it never parts)."""
         return None if self.replay is None or not self._runs() else self.replay.step
 
-    def marks(self) -> list[Cell | None]:
+    def marks(self) -> list[State | None]:
         """The cell to mark on each pane's map: where the replay parts (else none)."""
         if self.replay is None:
             return [None] * len(self._runs())

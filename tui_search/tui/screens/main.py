@@ -7,6 +7,7 @@ from typing import TYPE_CHECKING, ClassVar, cast
 
 from textual.binding import BindingType
 
+from tui_search.engine.search.state import as_cell
 from tui_search.tui.model import playback
 from tui_search.tui.model.map_edits import brush_name
 from tui_search.tui.screens.keys import KEYS
@@ -180,7 +181,7 @@ class MainScreen(PanesScreen):
         """A pick in the quiz's panel moves the cursor there; a double click also answers."""
         if not self.session.quiz.on or message.panel is not self.quiz_panel:
             return
-        self.move_cursor(message.cell)
+        self.move_cursor(as_cell(message.cell))
         if message.answer:
             self.action_answer()
 
@@ -318,7 +319,7 @@ class MainScreen(PanesScreen):
             self.warn({"start": "No start on the map", "goal": "No goal on the map",
                        "current": "No node is being expanded (step 0)"}[where])
             return
-        self.move_cursor(cell)
+        self.move_cursor(as_cell(cell))
 
     # -- files and screens -----------------------------------------------------------------
     def action_save(self) -> None:

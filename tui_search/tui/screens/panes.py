@@ -22,7 +22,7 @@ from textual.screen import Screen
 from textual.widget import AwaitMount, Widget
 from textual.widgets import Static
 
-from tui_search.engine.maps.grid import Cell
+from tui_search.engine.search.state import State
 from tui_search.engine.util.filenames import describe_name
 from tui_search.tui.model import playback
 from tui_search.tui.model.file_rules import FileAccess
@@ -305,8 +305,8 @@ class PanesScreen(Screen[None]):
         self.new_runs_shown()
         self.fit_panes()
 
-    def present(self, changed: list[Cell] | None = None, follow: bool = True,
-                per_run: list[list[Cell] | None] | None = None) -> None:
+    def present(self, changed: list[State] | None = None, follow: bool = True,
+                per_run: list[list[State] | None] | None = None) -> None:
         """Push the runs at their positions to every widget; ``changed`` limits the map
         repaint (``per_run``: a list of changed cells for each run)."""
         session = self.session

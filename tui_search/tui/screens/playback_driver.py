@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+from tui_search.engine.search.state import State
 from tui_search.tui.model import playback
 
 if TYPE_CHECKING:  # (the protocol too: nothing of it is needed to run, so no class is made)
@@ -19,7 +20,6 @@ if TYPE_CHECKING:  # (the protocol too: nothing of it is needed to run, so no cl
 
     from textual.timer import Timer
 
-    from tui_search.engine.maps.grid import Cell
     from tui_search.tui.model.session import Before, Session
 
     class Host(Protocol):
@@ -39,7 +39,7 @@ if TYPE_CHECKING:  # (the protocol too: nothing of it is needed to run, so no cl
         def moved(self, before: Before | None) -> None:
             """Show the runs after a move from ``before``."""
 
-        def present(self, changed: list[Cell] | None = None) -> None:
+        def present(self, changed: list[State] | None = None) -> None:
             """Show the runs where they are (``changed``: only those cells of the maps)."""
 
         def show_status(self) -> None:

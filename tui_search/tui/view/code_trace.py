@@ -11,9 +11,10 @@ Stepping back lights that earlier step's lines: everything here is computed from
 # No future import: CONTRIBUTING.md, "Start-up".
 from typing import TYPE_CHECKING, NamedTuple
 
-from tui_search.engine.maps.grid import DELTAS, Cell
+from tui_search.engine.maps.grid import DELTAS
 from tui_search.engine.run.recorded import Run
 from tui_search.engine.search.choices import corner_allowed
+from tui_search.engine.search.state import State, as_cell
 
 if TYPE_CHECKING:  # imported by code_of: the first frame shows no code
     from tui_search.engine.search.pseudocode import Pseudocode
@@ -24,7 +25,7 @@ class Skip(NamedTuple):
 
     kind: str  # "blocked", "corner", "reached" or "on_path"
     move: str
-    cell: Cell
+    cell: State  # a graph's: the node's name
 
 
 def code_of(run: Run) -> "Pseudocode":
@@ -32,7 +33,8 @@ def code_of(run: Run) -> "Pseudocode":
     map with terrain, g adds the cost of the cell a move enters."""
     from tui_search.engine.search.pseudocode import MOVE_COST, TERRAIN_MOVE_COST, pseudocode
 
-    move_cost = TERRAIN_MOVE_COST if run.grid.costs is not None else MOVE_COST
+    costed = run.graph is None and run.grid.costs is not None
+    move_cost = TERRAIN_MOVE_COST if costed else MOVE_COST
     return pseudocode(run.algo, run.semantics, move_cost=move_cost)
 
 
@@ -53,10 +55,28 @@ def skipped(run: Run, k: int | None = None) -> list[Skip]:
     added = run.steps.succ_range(k)
     pushed = {nodes.move(h) for h in added}
     last = nodes.move(nodes.goal) if nodes.goal in added else None  # the loop stopped there
-    grid, corners = run.grid, run.semantics.corners
     reached_kind = "on_path" if run.semantics.tree_search else "reached"
     closed_set = run.algo.weighted and not run.semantics.reopen and not run.semantics.tree_search
-    x, y = nodes.cell(event)
+    graph = run.graph
+    if graph is not None:  # a node's roads in order: a move is named by the node it reaches
+        out: list[Skip] = []
+        node = str(nodes.cell(event))
+        by_name = run.semantics.order == ("name",)
+        roads = sorted(graph.roads_out(graph.index[node]), key=lambda road: graph.names[
+            road[0]]) if by_name else list(graph.roads_out(graph.index[node]))
+        for b, _, _ in roads:
+            name = graph.names[b]
+            if name == last:
+                break
+            if name in pushed:
+                continue
+            closed = name in graph.closed
+            expanded = closed_set and run.now.times_reached(name)[1]
+            out.append(Skip("blocked" if closed else "closed" if expanded else reached_kind,
+                            name, name))
+        return out
+    grid, corners = run.grid, run.semantics.corners
+    x, y = as_cell(nodes.cell(event))
     out = []
     for move in run.semantics.order:
         if move == last:

@@ -13,6 +13,7 @@ entry on a line is found by a division, whatever the frontier's size."""
 from typing import TYPE_CHECKING, NamedTuple
 
 from tui_search.engine.search.heuristics import octile
+from tui_search.engine.search.state import state_text
 from tui_search.engine.util.numbers import group_digits
 from tui_search.tui.view.frontier_text import DIR_W, costs_column, figures
 from tui_search.tui.view.pieces import Parts
@@ -37,17 +38,34 @@ class EntryRows(NamedTuple):
     width: int  # the widest row
 
 
+def state_width(run: "Run") -> int:
+    """The widest a state is written (:func:`~tui_search.engine.search.rules.state_text`):
+    the map's farthest cell's, or the graph's longest name."""
+    graph = run.graph
+    if graph is not None:
+        return max(map(len, graph.names))
+    return len(f"({run.grid.width - 1},{run.grid.height - 1})")
+
+
+def cost_bound(run: "Run") -> float:
+    """A cost no path costs more than, for a cost column's width: the straight-line cost
+    across the map, or every road of the graph."""
+    graph = run.graph
+    if graph is not None:
+        return sum(graph.data.road_cost)
+    return octile(run.grid.width - 1, run.grid.height - 1)
+
+
 def column_widths(run: "Run") -> tuple[int, int, int, int]:
     """The widths of the entries' columns at the run's position (every entry's the same): the
     cell's, for the map's largest cell; iterative deepening's ``d=N`` (0: none); the move's
     (START, longer, is only ever on its own: just the root is on the frontier then); one
     cost's (0: not a priority queue), the longest straight-line cost across the map's --
     most figures fit, a longer one pushes the rest of its line along."""
-    grid = run.grid
-    coord_w = len(f"({grid.width - 1},{grid.height - 1})")
+    coord_w = state_width(run)
     limit = run.steps.depth_limit() if run.algo.iterative else None
     depth_w = len(f"d={group_digits(limit)}") if limit is not None else 0
-    cost_w = len(f"{octile(grid.width - 1, grid.height - 1):.2f}") if run.algo.weighted else 0
+    cost_w = len(f"{cost_bound(run):.2f}") if run.algo.weighted else 0
     move_w = max(DIR_W, len(run.nodes.move(run.now.frontier(0, 1)[0]))
                  if run.now.frontier_len() == 1 else 0)
     return coord_w, depth_w, move_w, cost_w
@@ -120,8 +138,7 @@ def entry_row(run: "Run", g: int, plan: EntryRows, row: int, marks: tuple[bool, 
             parts += [("▶" if first else " ", main),
                       ("+" if added else " ", "frontier-panel--added" if added else main),
                       (" " * (MARKER_W - 2), main)]
-        x, y = run.nodes.cell(g)
-        parts.append((f"({x},{y})".ljust(coord_w), main))
+        parts.append((state_text(run.nodes.cell(g)).ljust(coord_w), main))
     shown = figures(run, g, cost_w) if cost_w else []
     stale = "frontier-panel--stale" if shown and run.now.is_stale(g) else main
     for slot in slots:
@@ -149,11 +166,10 @@ def entry_line(run: "Run", g: int, marks: tuple[bool, bool], widths: tuple[int, 
     first, added = marks
     coord_w, depth_w, cost_w = widths
     main = "frontier-panel--next" if first else "frontier-panel--entry"
-    x, y = run.nodes.cell(g)
     parts = [
         ("▶" if first else " ", main),
         ("+" if added else " ", "frontier-panel--added" if added else main),
-        (" " + f"({x},{y})".ljust(coord_w) + " ", main),
+        (" " + state_text(run.nodes.cell(g)).ljust(coord_w) + " ", main),
     ]
     used = MARKER_W + coord_w + 1
     if iddfs:

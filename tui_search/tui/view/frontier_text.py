@@ -8,6 +8,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from tui_search.engine.search.registry import PRIORITIES, Algorithm, Frontier
+from tui_search.engine.search.state import state_text
 from tui_search.tui.view.narration import gave_up_text
 from tui_search.tui.view.pieces import Line, Piece
 
@@ -99,12 +100,12 @@ def discarded_line(run: Run, cost_w: int) -> Line | None:
     if not (run.k and run.steps.is_discarded(run.k)):
         return None
     g = run.steps.expanded_event(run.k)
-    x, y = run.nodes.cell(g)
+    where = state_text(run.nodes.cell(g))
     why = "stale, discarded" if run.algo.weighted else "discarded"
     # kept whole: a figure never parted from its name when the line wraps
     shown = [Piece([(figure, DISCARDED)], 0, (" " if i else "  ", DISCARDED))
              for i, figure in enumerate(figures(run, g, cost_w))]
-    return Line([Piece([(f"✗  ({x},{y}) {run.nodes.move(g).ljust(DIR_W)}", DISCARDED)]),
+    return Line([Piece([(f"✗  {where} {run.nodes.move(g).ljust(DIR_W)}", DISCARDED)]),
                  *shown, Piece([(why, DISCARDED)], 0, ("  ", DISCARDED))])
 
 

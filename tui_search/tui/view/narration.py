@@ -10,9 +10,9 @@ from __future__ import annotations
 
 from weakref import WeakKeyDictionary
 
-from tui_search.engine.maps.grid import Cell
 from tui_search.engine.run.recorded import Run
 from tui_search.engine.search.registry import get_algorithm
+from tui_search.engine.search.state import State, as_cell, state_text
 from tui_search.engine.util.numbers import group_digits, power_text
 from tui_search.tui.view.code_trace import line_notes
 
@@ -22,8 +22,8 @@ def gave_up_text(run: Run) -> str:
     return f"gave up at --max-steps {group_digits(run.max_steps)}"
 
 
-def cell_text(cell: Cell | None) -> str:
-    return "-" if cell is None else f"({cell[0]},{cell[1]})"
+def cell_text(cell: State | None) -> str:
+    return state_text(cell)
 
 
 def frontier_word(run: Run) -> str:
@@ -77,7 +77,7 @@ def _terrain(run: Run, expanded: int, added: range) -> list[str]:
         return []
     out = []
     for h in added:
-        cell = run.nodes.cell(h)
+        cell = as_cell(run.nodes.cell(h))
         reached = run.nodes.costs(h)
         if grid.cost(cell) != 1.0 and reached is not None:
             out.append(f"{cell_text(cell)} costs {grid.cost(cell):g}: "
@@ -235,7 +235,7 @@ def result_text(run: Run) -> str:
     if not run.found:
         return "no path"
     moves = run.moves() or []
-    cost = run.grid.path_cost(run.path() or [])
+    cost = run.path_cost()
     text = f"path: {group_digits(len(moves))} moves, cost {cost:.2f}"
     lowest = lowest_cost(run)
     if lowest is not None:

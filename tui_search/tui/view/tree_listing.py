@@ -38,7 +38,9 @@ from __future__ import annotations
 from array import array
 from typing import TYPE_CHECKING
 
+from tui_search.engine.search.state import state_text
 from tui_search.engine.util.numbers import group_digits
+from tui_search.tui.view.frontier_rows import state_width
 from tui_search.tui.view.tree_shape import (
     MAX_LEVELS,
     WALK_MAX,
@@ -174,8 +176,7 @@ class TreeModel:
         self._ended = run.at_end
         self._tree_size = size
         self._limit = run.steps.depth_limit() if run.algo.iterative else None
-        grid = run.grid
-        self._coord_w = len(f"({grid.width - 1},{grid.height - 1})")
+        self._coord_w = state_width(run)
         self._update_path(run)
 
         return moved
@@ -301,8 +302,7 @@ class TreeModel:
         depth limit), then ``detail`` (sibling counts)."""
         run = self._run
         assert run is not None
-        x, y = run.nodes.cell(g)
-        label = f"{run.nodes.move(g)} ({x},{y})"
+        label = f"{run.nodes.move(g)} {state_text(run.nodes.cell(g))}"
         goal = g == self._goal and bool(self._path)
         if g in self._path:  # the answer, at the end, outranks everything (as on the grid)
             cls = "path"

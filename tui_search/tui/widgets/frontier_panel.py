@@ -39,6 +39,7 @@ from textual.message import Message
 
 from tui_search.engine.maps.grid import Cell
 from tui_search.engine.search.registry import Frontier
+from tui_search.engine.search.state import State
 from tui_search.engine.util.numbers import group_digits
 from tui_search.tui.view.frontier_rows import (
     HINT_GAP,
@@ -103,7 +104,7 @@ class FrontierPanel(LinePanel):
         """The quiz: the student picked the entry of ``cell`` (``answer``: and answers with
         it, a double click)."""
 
-        def __init__(self, panel: FrontierPanel, cell: Cell, answer: bool = False) -> None:
+        def __init__(self, panel: FrontierPanel, cell: State, answer: bool = False) -> None:
             super().__init__()
             self.panel, self.cell, self.answer = panel, cell, answer
 
@@ -309,7 +310,7 @@ class FrontierPanel(LinePanel):
             return None
         return next((i for i, g in enumerate(cells) if run.nodes.cell(g) == self._pick), None)
 
-    def entry_cell(self, y: int) -> Cell | None:
+    def entry_cell(self, y: int) -> State | None:
         """The quiz: the cell of the entry on line ``y`` of the list, None for other lines."""
         run, cells = self._run, self._by_cell
         i = (y - self._top()) // self._rows_per() if y >= self._top() else -1

@@ -15,8 +15,9 @@ from textual.containers import Vertical
 from textual.widget import Widget
 from textual.widgets import Static
 
-from tui_search.engine.maps.grid import Cell, Grid
+from tui_search.engine.maps.grid import Grid
 from tui_search.engine.run.recorded import Run
+from tui_search.engine.search.state import State, as_cell
 from tui_search.tui.view.layout import Arrangement, frontier_lines
 from tui_search.tui.view.status_lines import search_status
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
@@ -132,15 +133,15 @@ class RunPane(Vertical):
     def on_resize(self) -> None:
         self._split_column()
 
-    def show(self, run: Run | None, changed: list[Cell] | None, *, follow: bool = True,
-             hide_order: bool = False, title: str = "", mark: Cell | None = None) -> None:
+    def show(self, run: Run | None, changed: list[State] | None, *, follow: bool = True,
+             hide_order: bool = False, title: str = "", mark: State | None = None) -> None:
         """Push ``run`` at its position to the map and the panels (``changed``: the cells
         whose look changed, None for all); ``title`` is the map's border title, ``mark`` a
         cell the map marks."""
         view = self.view
         self._run = run
-        view.set_mark(mark)
-        view.show_run(run, changed)
+        view.set_mark(None if mark is None else as_cell(mark))  # (the map's: a grid's cells)
+        view.show_run(run, None if changed is None else [as_cell(c) for c in changed])
         self.set_class(run is None, "-no-run")
         self._show_part(self.side_note, run is None)
         if run is not None:
@@ -151,7 +152,7 @@ class RunPane(Vertical):
                 self.code_panel.show(run)
             node = run.now.current_node()
             if follow and node is not None:
-                view.follow(node)
+                view.follow(as_cell(node))
             if self.stats.display:  # its own status lines, where the layout gives it some
                 status = search_status(run, self.label, in_pane=True, done=run.at_end,
                                        code=self.code_shown)

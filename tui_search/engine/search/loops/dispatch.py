@@ -12,14 +12,15 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterator
 from functools import cache, partial
+from typing import Any
 
 from tui_search.engine.search.choices import Semantics
 from tui_search.engine.search.loops.compiled import compiled_loop
-from tui_search.engine.search.problem import Problem, corner_free
+from tui_search.engine.search.problem import corner_free
 from tui_search.engine.search.record import Record
 from tui_search.engine.search.registry import Algorithm
 
-Loop = Callable[[Problem, Record, int], Iterator[int]]
+Loop = Callable[[Any, Record, int], Iterator[int]]  # a grid's Problem, or a GraphProblem
 
 @cache
 def python_loops() -> dict[tuple[str, str], Callable[..., Iterator[int]]]:
@@ -64,14 +65,14 @@ def rules(algorithm: Algorithm, semantics: Semantics) -> str:
     return "tutorial" if tutorial_rules and corner_free(semantics) else "graph"
 
 
-def loop_for(algorithm: Algorithm, semantics: Semantics) -> Loop:
+def loop_for(algorithm: Algorithm, semantics: Semantics, graph: bool = False) -> Loop:
     """The fastest loop that implements ``algorithm`` under ``semantics``: for the choices of
     published code the fast loops do not make (ties, a cost tolerance, a closed set,
     recursion, ...: :attr:`~tui_search.engine.search.choices.Semantics.plain` False) the loop
     that records the reference (:mod:`~tui_search.engine.search.loops.published`); else the
     compiled core's when it runs (:mod:`~tui_search.engine.search.loops.compiled`), else the
-    table's (:func:`python_loops`)."""
-    if not semantics.plain:  # a choice only the reference's loop records
+    table's (:func:`python_loops`).  A ``graph`` is always searched by the reference's loop."""
+    if graph or not semantics.plain:  # a choice only the reference's loop records
         from tui_search.engine.search.loops.published import published
 
         return partial(published, algorithm=algorithm)

@@ -6,8 +6,10 @@ set, recursion, tree search with no path check, an unmarked start, a node expand
 It records the reference loop itself (:class:`~tui_search.engine.search.reference.ReferenceSearch`,
 the definition) into a :class:`~tui_search.engine.search.record.Record`, a chunk at a time: these
 choices are the diagnosis's and a student's, on small maps mostly, so one loop serving them all
-is worth more than a fast one each.  A hypothesis test in ``tests/engine`` holds the record equal
-to the reference's steps, array for array, as it holds the fast loops.
+is worth more than a fast one each.  It records every search on a graph too: the graphs a
+course draws are small, and this loop is the definition itself.  A hypothesis test in
+``tests/engine`` holds the record equal to the reference's steps, array for array, as it holds
+the fast loops.
 """
 
 from __future__ import annotations
@@ -15,17 +17,19 @@ from __future__ import annotations
 from array import array
 from collections.abc import Iterator
 
+from tui_search.engine.search.graph_problem import GraphProblem
 from tui_search.engine.search.problem import Problem
 from tui_search.engine.search.record import CHUNK, Record
 from tui_search.engine.search.registry import Algorithm
 
 
-def published(problem: Problem, rec: Record, chunk: int = CHUNK, *, algorithm: Algorithm
-              ) -> Iterator[int]:
-    """Record ``algorithm`` under ``problem``'s choices, as the reference loop runs it."""
+def published(problem: Problem | GraphProblem, rec: Record, chunk: int = CHUNK, *,
+              algorithm: Algorithm) -> Iterator[int]:
+    """Record ``algorithm`` under ``problem``'s choices, as the reference loop runs it (on a
+    grid or a graph: ``problem.board``)."""
     from tui_search.engine.search.reference import ReferenceSearch  # only for these choices
 
-    search = ReferenceSearch(problem.grid, algorithm, problem.semantics, problem.max_steps)
+    search = ReferenceSearch(problem.board, algorithm, problem.semantics, problem.max_steps)
     pad = problem.pad
     gen_node, step_end = rec.gen_node, rec.step_end
     rec.step_exp = step_exp = array("i", [-1])
@@ -35,7 +39,7 @@ def published(problem: Problem, rec: Record, chunk: int = CHUNK, *, algorithm: A
     if algorithm.iterative:
         rec.gen_depth = gen_depth = array("i", [0])
         rec.iter_limit[0] = 0
-    gen_node.append(pad(problem.grid.start or (0, 0)))
+    gen_node.append(pad(search.space.start))
     pause = False  # a chunk ended: pause before the next step (none when the search ended)
     for step in search:
         if pause:
