@@ -61,7 +61,7 @@ class Run:
 
     def __init__(
         self,
-        grid: Grid,
+        grid: Grid | Graph,
         algorithm: str = DEFAULT_ALGORITHM,
         semantics: Semantics = DEFAULT_SEMANTICS,
         max_steps: int = MAX_STEPS,

@@ -100,7 +100,8 @@ class Recording:
         if isinstance(self.board, Grid):
             self.problem = Problem(self.board, semantics, semantics.goal_test_for(algo))
         else:  # a graph (its modules imported only for one)
-            
+            from tui_search.engine.search.graph_problem import GraphProblem
+
             self.problem = GraphProblem(self.board, semantics, semantics.goal_test_for(algo),
                                         algo.weighted)
         self.problem.max_steps = max_steps

@@ -25,6 +25,8 @@ from textual.strip import Strip
 
 from tui_search.engine.maps.graph import Graph
 from tui_search.engine.run.position import CellState
+from tui_search.engine.run.recorded import Run
+from tui_search.engine.search.state import State
 from tui_search.tui.view.cell_codes import COMPONENTS, GOAL, START, WALL
 from tui_search.tui.view.graph_layout.canvas import Canvas
 from tui_search.tui.view.graph_layout.labels import shown, unique_lengths
@@ -69,8 +71,6 @@ class GraphView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True,
         Binding("down", "toward('down')", "Down", show=False),
         Binding("tab", "next_node(1)", "Next node", show=False),
         Binding("shift+tab", "next_node(-1)", "Previous node", show=False),
-        Binding("right_square_bracket", "zoom(1)", "Zoom in", show=False),
-        Binding("left_square_bracket", "zoom(-1)", "Zoom out", show=False),
     ]
 
     COMPONENT_CLASSES = {f"graph-view--{name}" for name in COMPONENTS + PARTS}
@@ -82,7 +82,8 @@ class GraphView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True,
         overflow: hidden hidden;
         /* The map's theme variables (tui_search/tui/view/themes.py), as the grid has them:
            a node is filled as a cell of its state is. */
-        & > .graph-view--free { color: $foreground; }
+        /* an unseen node a shade dimmer than the blank around it: not yet reached */
+        & > .graph-view--free { color: $foreground 85%; }
         & > .graph-view--wall { color: $map-wall; text-style: bold; }
         & > .graph-view--start { background: $map-start; color: $map-start-text;
                                  text-style: bold; }
@@ -138,6 +139,61 @@ class GraphView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True,
         self._start_from(graph)
         self.set_reactive(GraphView.cursor, max(0, self.start))
         self._refit()
+
+    # -- the pane's calls, named as the grid's (tui/widgets/run_pane.py, tui/screens/) ----
+    #: The node under the mouse: a graph's readout follows the cursor only.
+    hover: None = None
+
+    def show_run(self, run: Run | None, changed: Iterable[State] | None = None) -> None:
+        """Draw ``run`` at its position (None: no search); ``changed`` names the nodes that
+        differ from what is shown (None: any may, and the start, goals and closed nodes)."""
+        if run is None:
+            state_of: StateOf = unseen
+        else:
+            cell_state, names = run.now.cell_state, self.graph.names
+            state_of = lambda v: cell_state(names[v])  # noqa: E731
+        if changed is None:
+            self._marked_from(self.graph)
+            self.show_states(state_of)
+        else:
+            index = self.graph.index
+            self.show_states(state_of, [index[str(n)] for n in changed if str(n) in index])
+
+    def set_cursor(self, node: State) -> None:
+        """The cursor on ``node`` (a name)."""
+        v = self.graph.index.get(str(node))
+        if v is not None and v != self.cursor:
+            self.cursor = v
+
+    def follow_node(self, node: State) -> None:
+        v = self.graph.index.get(str(node))
+        if v is not None:
+            self.follow(v)
+
+    @property
+    def whole(self) -> bool:
+        """The whole graph shows (zoomed in, a part of it)."""
+        return self.level == 0
+
+    @property
+    def overview(self) -> bool:
+        """The whole graph shows, zoomed out as far as it goes."""
+        return self.level == 0
+
+    def set_overview(self, on: bool) -> None:
+        self.action_zoom(-self.level if on else 1)
+
+    def zoom(self, steps: int) -> None:
+        self.action_zoom(steps)
+
+    def view_state(self) -> int:
+        """The zoom, to carry over to another view of the graph (compare mode's panes)."""
+        return self.level
+
+    def set_view_state(self, state: object) -> None:
+        if isinstance(state, int) and state != self.level:
+            self.level = state
+            self._refit()
 
     def refresh_graph(self) -> None:
         """The graph's start, goals or closed nodes changed: draw them anew."""
