@@ -265,3 +265,19 @@ async def test_the_code_panel_help_and_every_theme_show_a_graph() -> None:
             fills = {name: looks.chip[code].bgcolor
                      for code, name in enumerate(COMPONENTS) if name not in ("free", "wall")}
             assert len(set(fills.values())) == len(fills), (theme, fills)
+
+
+@sync
+async def test_brackets_zoom_the_graph_and_z_shows_all_of_it() -> None:
+    app = graph_app()
+    async with app.run_test(size=SIZE) as pilot:
+        await wait_until(pilot, lambda: view_of(app).tiles is not None)
+        view = view_of(app)
+        whole = view.virtual_size
+        await pilot.press("right_square_bracket")
+        await wait_until(pilot, lambda: view.level == 1)
+        assert view.virtual_size.width > whole.width and not view.whole
+        assert "part of the graph" in view.border_subtitle
+        await pilot.press("z")
+        await wait_until(pilot, lambda: view.level == 0)
+        assert view.whole and view.virtual_size == whole

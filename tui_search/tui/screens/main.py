@@ -370,6 +370,9 @@ class MainScreen(PanesScreen):
 
     def action_export(self) -> None:
         """The palette's Export: the run as a file (tui/screens/export_command.py)."""
+        if self.session.graph is not None:
+            self.warn("Exports (.svg, .cast, .gif, .md) are of a grid's search, not yet a graph's")
+            return
         from tui_search.tui.screens.export_command import ask_export  # only when asked
 
         ask_export(self, self.session, self.file_access, getattr(self.app, "exporter", None))
