@@ -211,6 +211,20 @@ def test_the_sample_maps_are_the_maps_they_name() -> None:
         assert parse_map_text(body) == load_map(ROOT / named[-1]), (name, named[-1])
 
 
+def test_the_sample_graphs_read() -> None:
+    """A graph shown (a ``graph`` fenced block) reads as the app reads a .graph file, its table
+    admissible and consistent."""
+    from tui_search.engine.maps.graph_file import parse_graph
+    from tui_search.engine.search.estimate_check import estimate_faults
+
+    samples = blocks("graph")
+    assert samples
+    for name, body, _ in samples:
+        graph = parse_graph(body, name)
+        assert graph.start is not None and graph.goals, name
+        assert estimate_faults(graph, "table") == [], name
+
+
 def test_the_sample_exercise_is_the_file_it_names() -> None:
     """The exercise shown reads as the file it names (its comments aside)."""
     toml = toml_parser()

@@ -299,7 +299,8 @@ def public_names(obj: object) -> set[str]:
 
 #: Run's own names: what it is, how much is recorded, where it stands, the answer, the facets.
 RUN_NAMES = {
-    "grid", "board", "graph", "algorithm", "algo", "semantics", "max_steps", "known_lowest",
+    "grid", "board", "graph", "start", "goal", "algorithm", "algo", "semantics", "max_steps",
+    "known_lowest",
     "advance", "advance_some", "done", "found", "gave_up", "recorded", "total", "goal_test",
     "differences", "replayed", "k", "goto", "forward", "backward", "reset", "at_end",
     "rebuild_pieces",

@@ -49,7 +49,7 @@ def test_an_existing_file_is_replaced_only_with_force(capsys, tmp_path: Path) ->
     (["--export", "run.svg"], "--export writes a file from a run without the app: add "
      "--headless (in the app: the palette's Export command, ctrl+p)"),
     (["--headless", "--export", "run.txt"], "--export run.txt: the kind is the file's ending, "
-     "one of .svg, .cast, .gif, .md"),
+     "one of .svg, .cast, .gif, .md, .trace.json, .trace.yaml"),
     (["--headless", "--fps", "3"], "--fps goes with --export FILE"),
     (["--headless", "--export-view", "map"], "--export-view goes with --export FILE"),
     (["--headless", "--force"], "--force goes with --export FILE"),

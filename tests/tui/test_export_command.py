@@ -42,7 +42,7 @@ async def test_the_palette_exports_the_run_as_the_command_line_does(tmp_path: Pa
         assert app.screen.query_one("#filename", Input).value == "tutorial-dfs.svg"
         await typed(pilot, str(tmp_path / "run.txt"))
         assert app.screen.error == (f"{tmp_path / 'run.txt'}: the kind is the file's ending, "
-                                    "one of .svg, .cast, .gif, .md")
+                                    "one of .svg, .cast, .gif, .md, .trace.json, .trace.yaml")
         await typed(pilot, str(target))
         assert not isinstance(app.screen, ExportScreen)
         await wait_until(pilot, lambda: f"Exported {target}" in said(app), seconds=240)
@@ -106,3 +106,22 @@ async def test_the_export_prompt_and_its_question_fit_the_terminal(size, tmp_pat
         await pilot.press("escape")
         await wait_until(pilot, lambda: not isinstance(app.screen, ExportScreen))
         assert there.read_text() == "keep me\n"
+
+
+@sync
+async def test_the_palette_exports_a_posthoc_trace_and_its_map(tmp_path: Path) -> None:
+    from tui_search.engine.traces.posthoc import load_any_trace
+
+    app = tutorial_app("dfs")
+    app.exporter = LazyExporter()
+    target = tmp_path / "run.trace.yaml"
+    async with app.run_test(size=(100, 32)) as pilot:
+        await palette_run(pilot, "Export the run")
+        await typed(pilot, str(target))
+        assert not isinstance(app.screen, ExportScreen)
+        await wait_until(pilot, lambda: f"Exported {target}" in "\n".join(said(app)),
+                         seconds=60)
+        run = app.session.runs[0]
+        trace = load_any_trace(str(target), run.grid)
+        assert [s.node for s in trace.steps] == [s.node for s in run.steps.all()]
+        assert (tmp_path / "run.map").read_text().startswith("type octile\n")

@@ -7,6 +7,7 @@ or a command that runs without the app.
 * :mod:`~tui_search.cli.parser`: the flags and their help (argparse, seen nowhere else);
 * :mod:`~tui_search.cli.serve_flags`: the flags of ``--serve``, and a visitor's command line;
 * :mod:`~tui_search.cli.flags`: what the options ask for: the map, the choices, the searches;
+* :mod:`~tui_search.cli.graphs`: a graph as the map: built in or a file, its start and goal;
 * :mod:`~tui_search.cli.headless`: one search, a comparison or the pseudocode, as text or JSON;
 * :mod:`~tui_search.cli.report`: maps graded on an exercise, and the class report;
 * :mod:`~tui_search.cli.traces`: ``--check-trace`` and reading a ``--replay``;

@@ -16,7 +16,7 @@ from tui_search.engine.maps.grid import DEFAULT_ORDER, Cell, Grid, parse_order
 from tui_search.engine.maps.load import load_map, parse_cell, parse_map_text
 from tui_search.engine.maps.read import MapError
 from tui_search.engine.maps.terrain import load_terrain
-from tui_search.engine.search.choices import Semantics
+from tui_search.engine.search.choices import GRAPH_HEURISTICS, GRAPH_ORDERS, TABLE, Semantics
 from tui_search.engine.search.compare import Contender, parse_compare
 from tui_search.engine.search.heuristics import DEFAULT_HEURISTIC
 from tui_search.engine.search.registry import ALGORITHMS, get_algorithm
@@ -25,6 +25,7 @@ from tui_search.engine.util.filenames import describe_name
 if TYPE_CHECKING:
     from tui_search.cli.options import Options
     from tui_search.engine.course.exercise_file import Exercise
+    from tui_search.engine.maps.graph import Graph
     from tui_search.engine.maps.scenarios import Scenario
 
 TUTORIAL_NAME = "tutorial.txt"
@@ -160,10 +161,16 @@ def changed_choice_flags(options: Options) -> list[str]:
 def _choices_of(options: Options) -> dict[str, object]:
     """The :class:`~tui_search.engine.search.choices.Semantics` fields the flags give (the
     defaults where they give none); a flag that goes with another missing is a UsageError."""
-    try:
-        order = parse_order(options.order)
-    except ValueError as exc:
-        raise UsageError(f"--order {options.order!r}: {exc}") from None
+    graph = options.graph
+    if graph is not None:  # a graph's orders and heuristics
+        order = graph_order(options.order, options.order != ",".join(DEFAULT_ORDER))
+        heuristic = graph_heuristic(options.heuristic, graph)
+    else:
+        try:
+            order = parse_order(options.order)
+        except ValueError as exc:
+            raise UsageError(f"--order {options.order!r}: {exc}") from None
+        heuristic = options.heuristic or DEFAULT_HEURISTIC
     corners = options.corners or ("never" if options.no_corner_cutting else "always")
     if options.no_corner_cutting and corners != "never":
         raise UsageError(f"--no-corner-cutting means --corners never, not {corners}")
@@ -179,7 +186,7 @@ def _choices_of(options: Options) -> dict[str, object]:
     choices: dict[str, object] = dict(
         order=order, corners=corners, visit=options.visit or "generate",
         goal_test=options.goal_test, tree_search=options.tree_search,
-        heuristic=options.heuristic or DEFAULT_HEURISTIC, recursive=recursive,
+        heuristic=heuristic, recursive=recursive,
         path_check=not options.no_path_check)
     for name, value in (("ties", options.ties), ("cost_tolerance", options.cost_tolerance)):
         if value is not None:
@@ -188,6 +195,37 @@ def _choices_of(options: Options) -> dict[str, object]:
         if value is not None:
             choices[name] = value == "yes"
     return choices
+
+
+#: How ``--order`` is given for a graph, spelt out in the errors.
+ORDERS_TEXT = " or ".join(GRAPH_ORDERS)
+
+
+def graph_order(text: str, given: bool) -> tuple[str, ...]:
+    """``--order`` on a graph: ``file`` (the default) or ``name``."""
+    if not given:
+        return (GRAPH_ORDERS[0],)
+    if text not in GRAPH_ORDERS:
+        raise UsageError(f"--order {text!r}: a graph's order is {ORDERS_TEXT} "
+                         "(a grid's is directions)")
+    return (text,)
+
+
+def graph_heuristic(given: str | None, graph: Graph) -> str:
+    """``--heuristic`` on a graph, checked against what the graph has."""
+    if given is None:  # the file's table, else the straight line between places, else 0
+        from tui_search.engine.search.space import graph_heuristics
+
+        return graph_heuristics(graph)[0]
+    if given not in GRAPH_HEURISTICS:
+        raise UsageError(f"--heuristic {given}: a graph's heuristics are "
+                         f"{', '.join(GRAPH_HEURISTICS)}")
+    if given == TABLE and not graph.has_table:
+        raise UsageError(f"--heuristic table: {graph.name} has no h lines")
+    if given == "euclidean" and not graph.has_places:
+        raise UsageError(f"--heuristic euclidean: {graph.name}'s nodes have no places "
+                         "(x y on their node lines)")
+    return given
 
 
 def _refused_flag(options: Options) -> str:

@@ -20,9 +20,11 @@ from tui_search.cli.flags import (
     map_name,
     semantics_from,
 )
+from tui_search.engine.maps.graph import Graph
 from tui_search.engine.maps.grid import Grid
 from tui_search.engine.maps.read import MapError
-from tui_search.engine.run.recorded import Run, Step
+from tui_search.engine.run.each_step import search_each_step
+from tui_search.engine.run.recorded import Step
 from tui_search.engine.search.choices import Semantics
 from tui_search.engine.search.compare import (
     MARKS_KEY,
@@ -39,7 +41,7 @@ from tui_search.engine.util.filenames import describe_name
 if TYPE_CHECKING:
     from tui_search.cli.options import Options
     from tui_search.engine.maps.scenarios import Scenario
-    from tui_search.engine.search.reference import Expansion
+    from tui_search.engine.search.state import State
 
 
 
@@ -68,11 +70,12 @@ def print_pseudocode(options: Options) -> int:
 def trace_line(step: Step) -> str:
     """One JSON object per step: the node taken off and exactly the successors it added, in
     order; iterative deepening adds the depth limit, a discarded step says so."""
-    obj: dict[str, object] = {
-        "step": step.index,
-        "node": list(step.node),
-        "successors": [{"dir": d, "node": list(c)} for d, c in step.successors],
-    }
+    node = step.node
+    obj: dict[str, object] = {"step": step.index, "node": state_json(node)}
+    if isinstance(node, str):  # a graph's: the nodes reached, by name
+        obj["successors"] = [s for _, s in step.successors]
+    else:
+        obj["successors"] = [{"dir": d, "node": state_json(c)} for d, c in step.successors]
     if step.depth_limit is not None:
         obj["depth_limit"] = step.depth_limit
     if step.discarded:
@@ -80,32 +83,19 @@ def trace_line(step: Step) -> str:
     return to_json(obj, separators=(", ", ": ")) + "\n"
 
 
-def _as_step(step: Expansion) -> Step:
-    return Step(step.index, step.node.cell, tuple((s.move or "", s.cell) for s in step.successors),
-                step.depth_limit, step.found, step.discarded)
+def state_json(state: State) -> object:
+    """A cell as ``[x, y]``, a node as its name."""
+    return state if isinstance(state, str) else list(state)
 
 
-def search_headless(grid: Grid, key: str, semantics: Semantics, max_steps: int,
+def search_headless(grid: Grid | Graph, key: str, semantics: Semantics, max_steps: int,
                     out: IO[str] | None, on_step: Callable[[Step], object] | None = None
                     ) -> Outcome:
-    """The whole search, its steps written to ``out`` as they happen.  Graph BFS and DFS take
-    at most a few steps per cell, so they run on the fast recorded loops (the record is
-    bounded by the map); iterative deepening and tree search can take billions of steps on a
-    small map, so they stream the reference loop, which keeps only the frontier and the
-    parents it points to.  The two are held equal by a property test.  ``on_step``: what
-    to do with each step instead of writing its line (a Posthoc trace collects them)."""
-    algorithm = get_algorithm(key)
+    """The whole search (:func:`~tui_search.engine.run.each_step.search_each_step`), its
+    steps written to ``out`` as they happen.  ``on_step``: what to do with each step instead
+    of writing its line (a Posthoc trace collects them)."""
     emit = on_step or (None if out is None else (lambda step: out.write(trace_line(step))))
-    if algorithm.iterative or semantics.tree_search:
-        from tui_search.engine.search.reference import stream  # not imported at start-up
-
-        write = None if emit is None else (lambda step: emit(_as_step(step)))
-        return stream(grid, algorithm, semantics, max_steps, write)
-    run = Run(grid, key, semantics, max_steps)
-    if emit is not None:
-        for step in run.steps.all():
-            emit(step)
-    return run.outcome()
+    return search_each_step(grid, key, semantics, max_steps, emit)
 
 
 def benchmark_rules(outcome: Outcome) -> bool:
@@ -151,7 +141,7 @@ def json_summary(outcome: Outcome, scenario: Scenario | None = None) -> dict[str
     return {
         "algorithm": outcome.algorithm,
         "found": outcome.found,
-        "path": [list(c) for c in path] if path is not None else None,
+        "path": [state_json(c) for c in path] if path is not None else None,
         "moves": moves,
         "length": outcome.length,
         "cost": round(outcome.cost, 6) if outcome.cost is not None else None,
@@ -182,8 +172,9 @@ def moves_text(moves: list[str]) -> str:
 
 def human_summary(
     outcome: Outcome, where: str, max_steps: int, blocked_by: str | None = None,
-    scenario: Scenario | None = None,
+    scenario: Scenario | None = None, warnings: list[str] | None = None,
 ) -> str:
+    """The text a headless run prints; ``warnings``: :func:`warnings_of`'s."""
     algorithm = get_algorithm(outcome.algorithm)
     name = algorithm.name
     result = "path found" if outcome.found else "no path"
@@ -195,10 +186,14 @@ def human_summary(
     differences = outcome.semantics.differences(algorithm)
     if differences:
         lines.append(f"  semantics:    {' · '.join(differences)}")
-    if algorithm.informed and not admissible(outcome.semantics.heuristic,
-                                             outcome.semantics.order):
-        lines.append(f"  warning:      {INADMISSIBLE}")
-    if outcome.moves is not None:
+    for warning in warnings or ():
+        lines.append(f"  warning:      {warning}")
+    if outcome.path is not None and outcome.path and isinstance(outcome.path[0], str):
+        roads = len(outcome.path) - 1
+        lines.append(f"  path:         {roads:,} road{'s' * (roads != 1)} "
+                     f"({moves_text(outcome.path)})")
+        lines.append(f"  cost:         {outcome.cost:g}")
+    elif outcome.moves is not None:
         lines.append(f"  moves:        {outcome.length:,} ({moves_text(outcome.moves)})")
         lines.append(f"  cost:         {outcome.cost:.3f}")
     if scenario is not None:
@@ -211,9 +206,25 @@ def human_summary(
     return "\n".join(lines)
 
 
-def _grid_of(options: Options) -> tuple[Grid, str]:
-    """The map the command line read, and its name as the output says it (escape sequences
-    shown, not run); a map with no start or goal is an error."""
+def warnings_of(board: Grid | Graph, outcome: Outcome) -> list[str]:
+    """What the output warns of: an informed search's estimate that may mislead it (on a
+    graph, checked against the graph's roads)."""
+    algorithm, sem = get_algorithm(outcome.algorithm), outcome.semantics
+    if not algorithm.informed:
+        return []
+    if isinstance(board, Graph):
+        from tui_search.engine.search.estimate_check import estimate_faults
+
+        return estimate_faults(board, sem.heuristic)
+    return [] if admissible(sem.heuristic, sem.order) else [INADMISSIBLE]
+
+
+def board_of(options: Options) -> tuple[Grid | Graph, str]:
+    """The map or graph the command line read, and its name as the output says it (escape
+    sequences shown, not run); a map with no start or goal is an error."""
+    if options.graph is not None:
+        name = map_name(options, options.path) if options.path else "romania (built-in)"
+        return options.graph, describe_name(name) if options.path else name
     grid = options.grid
     assert grid is not None, "a headless search runs on the map the command line read"
     where = describe_name(map_name(options, options.path))
@@ -224,18 +235,20 @@ def _grid_of(options: Options) -> tuple[Grid, str]:
 def run_headless(options: Options) -> int:
     if options.trace == "-" and options.json:
         raise UsageError("--trace - and --json both want stdout; give --trace a file")
-    grid, where = _grid_of(options)
+    grid, where = board_of(options)
     semantics = semantics_from(options)
+    if isinstance(grid, Graph) and options.trace_format == "posthoc":
+        raise UsageError("--trace-format posthoc writes a grid's search: on a graph, leave it "
+                         "out (the trace names the nodes)")
 
     def search(out: IO[str] | None) -> Outcome:
         if out is None or options.trace_format != "posthoc":
             return search_headless(grid, options.algorithm, semantics, options.max_steps, out)
-        from tui_search.engine.traces.posthoc import PosthocWriter  # only for its format
+        from tui_search.engine.traces.posthoc import posthoc_trace  # only for its format
 
-        writer = PosthocWriter(grid)
-        found = search_headless(grid, options.algorithm, semantics, options.max_steps, None,
-                                writer.add)
-        out.write(writer.text(found.path))
+        assert isinstance(grid, Grid), "refused above"
+        text, found = posthoc_trace(grid, options.algorithm, semantics, options.max_steps)
+        out.write(text)
         return found
 
     if options.trace == "-":
@@ -253,11 +266,13 @@ def run_headless(options: Options) -> int:
         print(to_json(json_summary(outcome, scenario)))
     elif options.trace != "-":
         blocked_by = None
-        if not outcome.found and not outcome.gave_up and not semantics.is_default:
+        if (not outcome.found and not outcome.gave_up and not semantics.is_default
+                and isinstance(grid, Grid)):
             from tui_search.engine.run.blocked import blocking_rule
 
             blocked_by = blocking_rule(grid, semantics)
-        print(human_summary(outcome, where, options.max_steps, blocked_by, scenario))
+        print(human_summary(outcome, where, options.max_steps, blocked_by, scenario,
+                            warnings_of(grid, outcome)))
     if outcome.gave_up:
         return EXIT_GAVE_UP
     return EXIT_FOUND if outcome.found else EXIT_NO_PATH
@@ -272,7 +287,7 @@ def compare_table(labels: list[str], outcomes: list[Outcome], terrain: bool = Fa
 
 
 def run_compare(options: Options) -> int:
-    grid, where = _grid_of(options)
+    grid, where = board_of(options)
     contenders = contenders_from(options)
     outcomes = [search_headless(grid, c.algorithm, c.semantics, options.max_steps, None)
                 for c in contenders]
@@ -281,7 +296,8 @@ def run_compare(options: Options) -> int:
                                    for o in outcomes]}))
     else:
         print(f"Comparison on {where}:")
-        print(compare_table([c.label for c in contenders], outcomes, grid.costs is not None))
+        costed = isinstance(grid, Graph) or grid.costs is not None
+        print(compare_table([c.label for c in contenders], outcomes, costed))
     if any(o.gave_up for o in outcomes):
         return EXIT_GAVE_UP
     return EXIT_FOUND if all(o.found for o in outcomes) else EXIT_NO_PATH

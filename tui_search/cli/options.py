@@ -19,6 +19,7 @@ if TYPE_CHECKING:
     from tui_search.engine.course.exercise_file import Exercise
     from tui_search.engine.course.lesson import Lesson
     from tui_search.engine.maps.generate import Recipe
+    from tui_search.engine.maps.graph import Graph
     from tui_search.engine.maps.grid import Grid
     from tui_search.engine.maps.scenarios import Scenario
     from tui_search.engine.traces.replay import Replay
@@ -34,8 +35,8 @@ FLAGS = (
     "served", "visitor", "export", "fps", "export_view", "force", "handout_steps", "plain",
 )
 #: What the command line worked out or read from the flags.
-READ = ("maps", "algorithm_given", "exercise_read", "lesson_read", "recipe", "grid", "path",
-        "scenario", "replay_read")
+READ = ("maps", "algorithm_given", "exercise_read", "lesson_read", "recipe", "grid", "graph",
+        "path", "scenario", "replay_read")
 
 
 class Options(Frozen):
@@ -105,7 +106,8 @@ class Options(Frozen):
     exercise_read: Exercise | None
     lesson_read: Lesson | None
     recipe: Recipe | None
-    grid: Grid | None  # the map to search (None: several maps, or none read by this run)
+    grid: Grid | None  # the map to search (None: a graph, several maps, or none read)
+    graph: Graph | None  # the graph to search (``romania``, ``FILE.graph``), else None
     path: Path | None  # its file (None: built in, generated, an exercise's own)
     scenario: Scenario | None  # --scen's row, while it holds for the map as read
     replay_read: Replay | None

@@ -17,6 +17,7 @@ from tui_search.cli.flags import (
     load_problem,
     semantics_from,
 )
+from tui_search.cli.graphs import names_a_graph
 from tui_search.cli.options import Options
 from tui_search.cli.parser import build_parser
 from tui_search.cli.serve_flags import check_serve_flags
@@ -52,8 +53,11 @@ def parse_options(argv: Sequence[str] | None = None) -> Options:
             return options
     if options.headless and options.exercise:  # the class report reads its maps one by one
         return options
-    grid, path, scenario = load_problem(options)
-    options = options.replace(grid=grid, path=path, scenario=scenario)
+    if names_a_graph(options.map):
+        options = _with_graph(options)
+    else:
+        grid, path, scenario = load_problem(options)
+        options = options.replace(grid=grid, path=path, scenario=scenario)
     if options.headless or options.check_trace is not None:
         return options  # their searches' choices are checked as they run
     semantics_from(options)  # report bad choices before the screen changes
@@ -64,6 +68,27 @@ def parse_options(argv: Sequence[str] | None = None) -> Options:
 
         options = options.replace(replay_read=read_replay(options))
     return options
+
+
+def _with_graph(options: Options) -> Options:
+    """The options with the graph MAP names read (``romania``, ``FILE.graph``), and what a
+    graph does not do yet refused by name."""
+    from pathlib import Path
+
+    from tui_search.cli.graphs import load_graph_problem  # only for a graph
+    from tui_search.engine.maps.graph_file import BUILT_IN
+
+    for flag, given in (("--export", options.export), ("--plain", options.plain),
+                        ("--exercise", options.exercise)):
+        if given:
+            raise UsageError(f"{flag} runs on a grid; on a graph use the app, --headless or "
+                             "--check-trace")
+    if not (options.headless or options.check_trace is not None):
+        raise UsageError("a graph runs headless for now (--headless, --check-trace): the "
+                         "app's graph view is on its way")
+    graph = load_graph_problem(options)
+    path = None if options.map in BUILT_IN else Path(str(options.map))
+    return options.replace(graph=graph, path=path)
 
 
 def _refuse_with_traces(options: Options) -> None:

@@ -21,6 +21,7 @@ from tui_search.engine.search.choices import (
     CORNER_RULES,
     GOAL_TESTS,
     RECURSIVE_FORMS,
+    TABLE,
     TIE_RULES,
     VISIT_RULES,
 )
@@ -59,19 +60,22 @@ def build_parser() -> argparse.ArgumentParser:
         formatter_class=lambda prog: argparse.HelpFormatter(prog, width=width),
         description="Watch a robot plan a path on a grid with breadth-first, depth-first, "
         "iterative-deepening, uniform-cost, greedy best-first and A* search. With no MAP, opens "
-        "the tutorial's 6x6 map.",
+        "the tutorial's 6x6 map; 'romania' opens AIMA's road map of Romania, a graph.",
         epilog="Exit codes (headless): 0 path found, 1 no path, 2 bad input, 3 gave up "
         "(--max-steps).",
     )
     p.add_argument("map", nargs="*", default=None, metavar="MAP",
-                   help="a text map (.txt) or a MovingAI map (.map); several only with "
-                   "--exercise E --headless (the class report)")
+                   help="a text map (.txt), a MovingAI map (.map), a graph (.graph) or "
+                   "romania (the built-in graph); several only with --exercise E --headless "
+                   "(the class report)")
     p.add_argument("--version", action="version",
                    version=f"tui-search {__version__} ({core_name()})")
     p.add_argument("-a", "--algorithm", choices=list(ALGORITHMS), default=None,
                    help="; ".join(f"{a.key}: {a.name}" for a in ALGORITHMS.values()))
-    p.add_argument("--start", metavar="X,Y", help="start cell (overrides the map's S)")
-    p.add_argument("--goal", metavar="X,Y", help="goal cell (overrides the map's G)")
+    p.add_argument("--start", metavar="X,Y", help="start cell (overrides the map's S); on a "
+                   "graph, a node's name")
+    p.add_argument("--goal", metavar="X,Y", help="goal cell (overrides the map's G); on a "
+                   "graph, a node's name")
     p.add_argument("--terrain", metavar="FILE",
                    help="a terrain table: lines 'CHAR COST' (a positive number) or 'CHAR "
                    "blocked' naming the map's letters (f 5 in a text map; S, W, T in a .map); "
@@ -82,7 +86,8 @@ def build_parser() -> argparse.ArgumentParser:
                    help="problem N of --scen, counted from 0 after the version line")
     p.add_argument("--order", metavar="DIRS", default=",".join(DEFAULT_ORDER),
                    help="the moves tried, in order: any of the 8 directions, e.g. N,W,S,E for "
-                   "a 4-connected grid (default %(default)s)")
+                   "a 4-connected grid (default %(default)s); on a graph file (its roads as "
+                   "listed, the default) or name")
     p.add_argument("--corners", choices=CORNER_RULES, default=None,
                    help="may a diagonal pass blocked corners: always (default); one: not when "
                    "both side cells are blocked; never: not when either is (MovingAI's rule)")
@@ -96,9 +101,10 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--goal-test", choices=GOAL_TESTS, default=None,
                    help="stop when the goal is pushed (generate: the default of bfs, dfs and "
                    "iddfs) or taken off (expand: the default of ucs, greedy and astar)")
-    p.add_argument("--heuristic", choices=list(HEURISTICS), default=None,
+    p.add_argument("--heuristic", choices=[*HEURISTICS, TABLE], default=None,
                    help="greedy's and A*'s estimate of the cost to the goal (default "
-                   f"{DEFAULT_HEURISTIC}; manhattan is not admissible with diagonal moves)")
+                   f"{DEFAULT_HEURISTIC}; manhattan is not admissible with diagonal moves); "
+                   "on a graph table (its h lines, the default), euclidean or zero")
     p.add_argument("--tree-search", action="store_true",
                    help="no visited set: skip only cells on the node's own path")
     p.add_argument("--no-path-check", action="store_true",
@@ -190,8 +196,9 @@ def build_parser() -> argparse.ArgumentParser:
                    help="with --headless: write the run to FILE, the kind by its ending: .svg "
                    "an animated SVG (no script), .cast an asciicast v2 recording, .gif an "
                    "animated GIF (pip install -e '.[gif]'), .md a handout (its picture FILE's "
-                   "name with -final.svg, beside it); drawn like the app at 100x30, in "
-                   "--theme's colours (docs/12-exports-and-plain.md)")
+                   "name with -final.svg, beside it), .trace.json or .trace.yaml a Posthoc "
+                   "search trace (its map beside it as a MovingAI .map); drawn like the app "
+                   "at 100x30, in --theme's colours (docs/12-exports-and-plain.md)")
     p.add_argument("--fps", metavar="N", type=_fps, default=None,
                    help=f"with --export: frames (steps) a second (default {DEFAULT_FPS:g})")
     p.add_argument("--export-view", choices=EXPORT_VIEWS, default=None,

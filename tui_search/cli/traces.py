@@ -15,14 +15,19 @@ from tui_search.engine.util.filenames import describe_name
 
 if TYPE_CHECKING:
     from tui_search.cli.options import Options
+    from tui_search.engine.maps.graph import Graph
     from tui_search.engine.traces.replay import Replay
 
 EXIT_MATCH, EXIT_DIFFERENCE = 0, 1
 
 
-def _needs_ends(options: Options) -> tuple[Grid, str]:
-    """The map, and its name as the messages say it; a map with no start or goal is an
-    error."""
+def _needs_ends(options: Options) -> tuple[Grid | Graph, str]:
+    """The map or graph, and its name as the messages say it; a map with no start or goal is
+    an error (a graph's were checked as it was read)."""
+    if options.graph is not None:
+        from tui_search.cli.headless import board_of
+
+        return board_of(options)
     grid = options.grid
     assert grid is not None, "a trace is read for the map the command line read"
     where = describe_name(map_name(options, options.path))
@@ -81,7 +86,7 @@ def run_check_trace(options: Options) -> int:
     return EXIT_MATCH if verdict.matches else EXIT_DIFFERENCE
 
 
-def _diagnose(options: Options, grid: Grid, trace: str, where: str) -> int:
+def _diagnose(options: Options, grid: Grid | Graph, trace: str, where: str) -> int:
     """Without ``-a``: the searches and choices that match the trace longest."""
     from tui_search.cli.headless import to_json
     from tui_search.engine.traces.diagnose import diagnose

@@ -10,5 +10,6 @@ reports (``--export FILE`` with ``--headless``, and the app's palette).
 * :mod:`~tui_search.export.cast`: an asciicast v2 recording;
 * :mod:`~tui_search.export.gif`: an animated GIF (the ``gif`` extra: Pillow);
 * :mod:`~tui_search.export.glyphs`: a character drawn in a cell of the GIF;
-* :mod:`~tui_search.export.handout`: a Markdown handout of the run.
+* :mod:`~tui_search.export.handout`: a Markdown handout of the run;
+* :mod:`~tui_search.export.posthoc`: a Posthoc search trace of the run, its map beside it.
 """

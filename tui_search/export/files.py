@@ -29,10 +29,14 @@ NEEDS_PILLOW = ("--export FILE.gif needs Pillow: in the tui-search folder, "
 
 
 def make_export(job: Job) -> list[str]:
-    """Film ``job``'s run and write it; the files written.  A ValueError (one line) when a
-    file exists without ``force``, the run is too big (naming its size), a kind's extra is
-    missing, or a file cannot be written."""
+    """Film ``job``'s run and write it (a Posthoc trace: the run searched, not filmed); the
+    files written.  A ValueError (one line) when a file exists without ``force``, the run is
+    too big (naming its size), a kind's extra is missing, or a file cannot be written."""
     kind = job.kind
+    if kind == "trace":  # no film: the search itself (export/posthoc.py)
+        from tui_search.export.posthoc import trace_files
+
+        return _write_all(trace_files(job), job.force)
     refuse_existing(job.target, kind, job.force)
     if kind == "gif" and find_spec("PIL") is None:
         raise ValueError(NEEDS_PILLOW)
@@ -58,8 +62,13 @@ def make_export(job: Job) -> list[str]:
         picture = picture_of(job.target)
         text, still = handout_of(job, shot, os.path.basename(picture))
         files = {job.target: text.encode(), picture: still.encode()}
+    return _write_all(files, job.force)
+
+
+def _write_all(files: dict[str, bytes], force: bool) -> list[str]:
+    """Each file written (:func:`_write`); their names."""
     for target, data in files.items():
-        _write(target, data, job.force)
+        _write(target, data, force)
     return list(files)
 
 

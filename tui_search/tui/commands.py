@@ -85,7 +85,8 @@ class SearchCommands(Provider):
         if getattr(app, "exporter", None) is not None:
             found.append(("Export the run as a file…", partial(main.run_action, "export"),
                           "an animated SVG (.svg), a terminal recording (.cast), a GIF (.gif) "
-                          "or a handout (.md), drawn as the app draws the run"))
+                          "or a handout (.md), drawn as the app draws the run, or a Posthoc "
+                          "search trace (.trace.json, .trace.yaml)"))
         bindings = {b.action: b for b in Binding.make_bindings(KEYS)}
         for action, name in ACTIONS.items():
             binding = bindings[action]

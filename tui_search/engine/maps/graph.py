@@ -18,22 +18,32 @@ from __future__ import annotations
 from array import array
 from collections.abc import Iterator, Mapping, Sequence
 from math import hypot
-from typing import NamedTuple, overload
+from typing import overload
+
+from tui_search.engine.util.frozen import Frozen
 
 #: A place on the page: x to the right, y *up* (as a map is drawn), in any unit.
 Point = tuple[float, float]
 NAN = float("nan")
 
 
-class Edge(NamedTuple):
+class Edge(Frozen):
     """A road as the file gives it: from ``a`` to ``b`` (numbers), its cost, whether it goes
-    one way only (an ``arc``), and the file's line (0: made in code)."""
+    one way only (an ``arc``), and the file's line (0: made in code).  A :class:`Frozen`
+    value, not a NamedTuple: the first frame imports this module (CONTRIBUTING.md,
+    "Start-up")."""
+
+    __slots__ = _FIELDS = ("a", "b", "cost", "directed", "line")
 
     a: int
     b: int
     cost: float
-    directed: bool = False
-    line: int = 0
+    directed: bool
+    line: int
+
+    def __init__(self, a: int, b: int, cost: float, directed: bool = False,
+                 line: int = 0) -> None:
+        self._assign(a=a, b=b, cost=cost, directed=directed, line=line)
 
 
 class Names(Sequence[str]):

@@ -30,6 +30,7 @@ from tui_search.engine.search.state import State
 
 if TYPE_CHECKING:
     from tui_search.engine.maps.graph import Graph
+    from tui_search.engine.search.state import State
 
 class Run:
     """A search on a snapshot of a grid, recorded lazily, with a movable position.
@@ -101,6 +102,19 @@ class Run:
         """The run's own copy of the graph, when it searches one."""
         board = self.board
         return None if isinstance(board, Grid) else board
+
+    @property
+    def start(self) -> State | None:
+        """Where the search starts: a cell, or a node's name."""
+        return self.board.start
+
+    @property
+    def goal(self) -> State | None:
+        """The goal (a graph's first, where it has several)."""
+        board = self.board
+        if isinstance(board, Grid):
+            return board.goal
+        return board.goals[0] if board.goals else None
 
     def path_cost(self) -> float:
         """The path's cost (0.0 until the goal is found)."""

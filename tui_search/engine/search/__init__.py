@@ -7,6 +7,7 @@
 * :mod:`~tui_search.engine.search.space`: what it searches: a grid's cells or a graph's nodes;
 * :mod:`~tui_search.engine.search.state`: a state (a cell, a node) and how it is written;
 * :mod:`~tui_search.engine.search.graph_problem`: a graph prepared for a recorded run;
+* :mod:`~tui_search.engine.search.estimate_check`: is a graph's estimate admissible, consistent;
 * :mod:`~tui_search.engine.search.rules`: its frontiers and its rules for what was reached;
 * :mod:`~tui_search.engine.search.recursion`: a recursion's calls form, from its neighbours form;
 * :mod:`~tui_search.engine.search.problem`: a grid prepared for the fast loops;

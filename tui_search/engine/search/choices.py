@@ -60,6 +60,8 @@ CORNER_RULES: tuple[str, ...] = ("always", "one", "never")
 GRAPH_ORDERS: tuple[str, ...] = ("file", "name")
 #: The estimate a graph gives in its file (its ``h`` lines); the others are worked out.
 TABLE = "table"
+#: The heuristics a graph may use: its table, the straight line between places, or none.
+GRAPH_HEURISTICS: tuple[str, ...] = (TABLE, "euclidean", "zero")
 VISIT_RULES: tuple[str, ...] = ("generate", "expand", "expand-again")
 GOAL_TESTS: tuple[str, ...] = ("generate", "expand")
 TIE_RULES: tuple[str, ...] = ("fifo", "lifo", "node", "low-h", "high-h", "low-g", "high-g")
@@ -220,7 +222,10 @@ class Semantics(Frozen):
         """What differs from the defaults (``algorithm``'s, when given), in a few words each
         ("visit on expand")."""
         out = []
-        if self.order != DEFAULT_ORDER:
+        graph = self.order[0] in GRAPH_ORDERS  # a graph's: file order and its table by default
+        if graph and self.order != GRAPH_ORDERS[:1]:
+            out.append(f"successors by {self.order[0]}")
+        elif not graph and self.order != DEFAULT_ORDER:
             out.append(f"moves {','.join(self.order)}")
         if self.corners != "always":
             out.append(f"corners: {self.corners}")
@@ -234,7 +239,8 @@ class Semantics(Frozen):
             algorithm is None or self.goal_test != algorithm.goal_test
         ):
             out.append(f"goal test on {self.goal_test}")
-        if self.heuristic != DEFAULT_HEURISTIC and (algorithm is None or algorithm.informed):
+        if (self.heuristic != (TABLE if graph else DEFAULT_HEURISTIC)
+                and (algorithm is None or algorithm.informed)):
             out.append(f"heuristic {self.heuristic}")
         out += self.published_words()
         return out
@@ -275,7 +281,7 @@ class Semantics(Frozen):
         queue = algorithm is None or algorithm.weighted
         return {
             "order": list(self.order),
-            "corners": self.corners,
+            "corners": None if self.order[0] in GRAPH_ORDERS else self.corners,  # a grid's
             "visit": None if no_visit else self.visit,
             "goal_test": goal_test,
             "tree_search": self.tree_search,

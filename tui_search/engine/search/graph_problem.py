@@ -35,7 +35,6 @@ class GraphProblem:
         self.goal = min(self.goals)
         self.size = len(graph)
         self.lowest = graph.lowest_cost()
-        self._h = self.space.estimate()
         # The road between two nodes, by their numbers: one a pair and direction (the graph
         # file refuses a second), so a move's parent and child say which road it took.
         self._roads = {(a, b): cost for a in range(len(graph))
@@ -59,7 +58,7 @@ class GraphProblem:
         return self._roads[parent, child]
 
     def estimate(self, i: int) -> float:
-        return float(self._h(self.graph.names[i]))
+        return float(self.space.estimate()(self.graph.names[i]))
 
     def priority(self, kind: str) -> Callable[[float, int], float]:
         """The priority ``kind`` of an entry with cost ``g`` at node ``i``: the space's (the

@@ -131,7 +131,7 @@ class ReferenceSearch:
         sem = self.semantics
         if self.algorithm.priority is not None:
             return PriorityQueue(self.space.priority(self.algorithm.priority),
-                                 tie_key(sem.ties, self.space.estimate()))
+                                 tie_key(sem.ties, lambda state: self.space.estimate()(state)))
         if sem.recursive:
             return CallStack()
         return Queue() if self.algorithm.frontier is FrontierKind.FIFO else Stack()

@@ -19,7 +19,7 @@ from typing import Protocol, cast
 
 from tui_search.engine.maps.graph import Graph
 from tui_search.engine.maps.grid import DELTAS, Cell, Grid, move_cost
-from tui_search.engine.search.choices import GRAPH_ORDERS, TABLE, Semantics
+from tui_search.engine.search.choices import GRAPH_HEURISTICS, GRAPH_ORDERS, TABLE, Semantics
 from tui_search.engine.search.heuristics import HEURISTICS, heuristic_for, priority_of
 from tui_search.engine.search.state import State
 
@@ -126,18 +126,28 @@ class GraphSpace:
         if order not in GRAPH_ORDERS:
             raise ValueError("a graph's order is file (the roads as listed) or name, not "
                              f"{','.join(semantics.order)}")
-        if semantics.heuristic not in GRAPH_HEURISTICS:
-            raise ValueError(f"the heuristic {semantics.heuristic!r} is a grid's: a graph's "
-                             f"are {', '.join(GRAPH_HEURISTICS)}")
-        if semantics.heuristic == TABLE and not graph.has_table:
-            raise ValueError("the graph has no h table: use euclidean (with places) or zero")
-        if semantics.heuristic == "euclidean" and not graph.has_places:
-            raise ValueError("the graph's nodes have no places: euclidean needs them")
         self.graph, self.semantics = graph, semantics
         self._start: str = graph.start
         self._by_name = order == "name"
         self._weighted = weighted
-        self._h = graph_estimate(graph, semantics.heuristic)
+        self._estimate: Callable[[State], float] | None = None
+
+    @property
+    def _h(self) -> Callable[[State], float]:
+        """The heuristic, checked when a search first asks for it (a search that uses none
+        runs under any)."""
+        if self._estimate is None:
+            graph, name = self.graph, self.semantics.heuristic
+            if name not in GRAPH_HEURISTICS:
+                raise ValueError(f"the heuristic {name!r} is a grid's: a graph's are "
+                                 f"{', '.join(GRAPH_HEURISTICS)}")
+            if name == TABLE and not graph.has_table:
+                raise ValueError("the graph has no h table: use euclidean (with places) or "
+                                 "zero")
+            if name == "euclidean" and not graph.has_places:
+                raise ValueError("the graph's nodes have no places: euclidean needs them")
+            self._estimate = graph_estimate(graph, name)
+        return self._estimate
 
     @property
     def start(self) -> State:
@@ -155,9 +165,9 @@ class GraphSpace:
         return self._h
 
     def priority(self, kind: str) -> Priority:
-        h = self._h
         if kind == "g":
             return lambda g, node: g
+        h = self._h
         if kind == "h":
             return lambda g, node: h(node)
         return lambda g, node: g + h(node)
@@ -166,8 +176,12 @@ class GraphSpace:
         return None if path is None else self.graph.path_cost([str(n) for n in path])
 
 
-#: The heuristics a graph may use.
-GRAPH_HEURISTICS: tuple[str, ...] = (TABLE, "euclidean", "zero")
+def graph_heuristics(graph: Graph) -> list[str]:
+    """The heuristics ``graph`` can give, its default first: its table when it has one, the
+    straight line when its nodes have places, and zero."""
+    usable = [name for name, there in ((TABLE, graph.has_table),
+                                       ("euclidean", graph.has_places)) if there]
+    return [*usable, "zero"]
 
 
 def graph_estimate(graph: Graph, name: str) -> Callable[[State], float]:

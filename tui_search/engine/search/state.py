@@ -4,7 +4,13 @@ too: nothing here is slow to import)."""
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from tui_search.engine.maps.grid import Cell
+
+if TYPE_CHECKING:
+    from tui_search.engine.maps.graph import Graph
+    from tui_search.engine.maps.grid import Grid
 
 #: A state of what is searched: a grid's cell ``(x, y)``, a graph's node's name.
 State = Cell | str
@@ -25,4 +31,12 @@ def as_cell(state: State) -> Cell:
     return state
 
 
-__all__ = ["State", "as_cell", "state_text"]
+def state_width(board: Grid | Graph) -> int:
+    """The widest a state of ``board`` is written (:func:`state_text`): the map's farthest
+    cell's, or the graph's longest name."""
+    if hasattr(board, "names"):  # a graph (its module not imported for a grid)
+        return max(map(len, board.names))
+    return len(f"({board.width - 1},{board.height - 1})")
+
+
+__all__ = ["State", "as_cell", "state_text", "state_width"]

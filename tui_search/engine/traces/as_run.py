@@ -15,9 +15,11 @@ from __future__ import annotations
 from array import array
 from collections.abc import Callable, Iterator
 
+from tui_search.engine.maps.graph import Graph
 from tui_search.engine.maps.grid import DELTAS, SQRT2, Grid
 from tui_search.engine.run.recorded import MAX_STEPS, Run, Source
 from tui_search.engine.search.choices import Semantics
+from tui_search.engine.search.graph_problem import GraphProblem
 from tui_search.engine.search.loops.dispatch import Loop
 from tui_search.engine.search.problem import Problem
 from tui_search.engine.search.record import CHUNK, Record
@@ -47,7 +49,7 @@ def trace_loop(trace: Trace, pick: str = "oldest", infer_discards: bool = True) 
     again.  The goal is found where the trace expanded it, else (goal test on generate) where it
     first added it."""
 
-    def loop(problem: Problem, rec: Record, chunk: int = CHUNK) -> Iterator[int]:
+    def loop(problem: Problem | GraphProblem, rec: Record, chunk: int = CHUNK) -> Iterator[int]:
         pad = problem.pad
         rec.step_exp = step_exp = array("i", [-1])
         gen_node, step_end = rec.gen_node, rec.step_end
@@ -91,10 +93,10 @@ def trace_loop(trace: Trace, pick: str = "oldest", infer_discards: bool = True) 
                 latest[m] = g
                 if costs is not None:
                     gs.append(gs[e] + costs(n, m))
-                if m == problem.goal and goal_added < 0:
+                if goal_added < 0 and problem.is_goal(m):
                     goal_added = g
             step_end.append(len(gen_node))
-            if n == problem.goal and not discard:
+            if not discard and problem.is_goal(n):
                 rec.goal_gen = e
             if k % chunk == 0:
                 yield k
@@ -105,9 +107,20 @@ def trace_loop(trace: Trace, pick: str = "oldest", infer_discards: bool = True) 
     return loop
 
 
-def _costs(problem: Problem) -> Callable[[int, int], float]:
+def _costs(problem: Problem | GraphProblem) -> Callable[[int, int], float]:
     """The cost of a move between two padded cells: the loops' floats (1 straight, sqrt(2)
-    diagonally, times the cell's terrain cost), for any move a trace makes."""
+    diagonally, times the cell's terrain cost), for any move a trace makes; on a graph the
+    road's cost (1 where a trace takes a road the graph does not have)."""
+    if isinstance(problem, GraphProblem):
+        graph_problem = problem
+
+        def road(n: int, m: int) -> float:
+            try:
+                return graph_problem.step_cost(n, m)
+            except KeyError:
+                return 1.0
+
+        return road
     lengths = {dy * problem.stride + dx: SQRT2 if dx and dy else 1.0
                for dx, dy in DELTAS.values()}
     terrain = problem.terrain
@@ -119,7 +132,7 @@ def _costs(problem: Problem) -> Callable[[int, int], float]:
     return cost
 
 
-def trace_run(trace: Trace, grid: Grid, algorithm: str, semantics: Semantics,
+def trace_run(trace: Trace, grid: Grid | Graph, algorithm: str, semantics: Semantics,
               max_steps: int = MAX_STEPS, notes: tuple[str, ...] = ()) -> Run:
     """``trace`` on ``grid`` as a run, beside the search it is matched with (``algorithm``
     under ``semantics``): that search's discipline picks the entries (:func:`trace_loop`),

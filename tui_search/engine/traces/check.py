@@ -21,6 +21,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from tui_search.engine.maps.graph import Graph
 from tui_search.engine.maps.grid import Grid
 from tui_search.engine.run.recorded import Run, Step
 from tui_search.engine.search.choices import RECURSIVE_WORDS, VISIT_WORDS, Semantics
@@ -222,7 +223,7 @@ class _Checker:
     def goal_pop(self, t: TraceStep) -> bool:
         """Is ``t``, after the search stopped, the goal's pop (the goal, nothing added) of a
         search that found the goal?"""
-        return self.run.found and t.node == self.run.grid.goal and not t.successors
+        return self.run.found and t.node == self.run.goal and not t.successors
 
     def _goes_on_suggests(self) -> tuple[tuple[tuple[str, object], ...], ...]:
         if self.run.found and self.run.goal_test == "generate":
@@ -245,7 +246,7 @@ class _Checker:
                        difference, left_out=tuple(self.left_out), notes=tuple(self.notes))
 
 
-def check_trace(trace: Trace, grid: Grid, algorithm: str, semantics: Semantics,
+def check_trace(trace: Trace, grid: Grid | Graph, algorithm: str, semantics: Semantics,
                 max_steps: int | None = None, look_ahead: int = LOOK_AHEAD) -> Verdict:
     """Compare ``trace`` with ``algorithm`` under ``semantics`` on ``grid``, step by step
     (``look_ahead``: how many of the search's steps to look through for the step at which it

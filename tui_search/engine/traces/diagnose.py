@@ -20,6 +20,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass, replace
 from typing import Any
 
+from tui_search.engine.maps.graph import Graph
 from tui_search.engine.maps.grid import Grid
 from tui_search.engine.search.choices import CORNER_RULES, Semantics
 from tui_search.engine.search.heuristics import DEFAULT_HEURISTIC, HEURISTICS
@@ -40,16 +41,17 @@ VARIANT_BUDGET = 400
 BEST_FIRST = ("greedy", "astar")
 
 
-def candidates(orders: list[tuple[str, ...]], calls_orders: list[tuple[str, ...]] | None = None
-               ) -> Iterator[tuple[str, Semantics]]:
+def candidates(orders: list[tuple[str, ...]], calls_orders: list[tuple[str, ...]] | None = None,
+               heuristics_of: list[str] | None = None) -> Iterator[tuple[str, Semantics]]:
     """Every (algorithm, choices) worth telling apart, the plainest first (a corner rule only
     for orders with a diagonal: without one every rule is the same search).  A recursion's
     calls form is tried with each of ``calls_orders`` (default ``orders``): its lines leave out
     the neighbours visited deeper down, and which those are depends on the order of every
-    move, not only of those a line lists."""
+    move, not only of those a line lists.  ``heuristics_of``: a graph's, its default first
+    (default: a grid's)."""
+    usable = heuristics_of or sorted(HEURISTICS, key=lambda h: h != DEFAULT_HEURISTIC)
     for key, algo in ALGORITHMS.items():
-        heuristics = list(HEURISTICS) if algo.informed else [DEFAULT_HEURISTIC]
-        heuristics.sort(key=lambda h: h != DEFAULT_HEURISTIC)
+        heuristics = usable if algo.informed else usable[:1]
         for kind, order in _shapes(key, orders, calls_orders or orders):
             diagonal = any(len(move) == 2 for move in order)
             for goal_test in (algo.goal_test, "generate" if algo.goal_test == "expand"
@@ -176,13 +178,13 @@ class Diagnosis:
 class _Search:
     """The candidates of one diagnosis, checked in turn, with their variants."""
 
-    def __init__(self, trace: Trace, grid: Grid, limit: int) -> None:
+    def __init__(self, trace: Trace, grid: Grid | Graph, limit: int) -> None:
         self.trace, self.grid, self.limit = trace, grid, limit
         self.seen: set[tuple[str, Semantics]] = set()
         self.scored: list[_Scored] = []
         self.queued = 0  # variants queued (what breaks a tie of their order)
         self.nodes: Trace | None = None  # the trace's expansions alone, once asked for
-        goal = trace.goal or grid.goal
+        goal = trace.goal or (grid.goal if isinstance(grid, Grid) else grid.goals[0])
         # Every order that keeps each step's successors in the order the trace added them
         # makes the same search of this trace up to its first difference (the same
         # successors, pushed in the same order, so the same ties): one of them stands for
@@ -272,7 +274,7 @@ class _Search:
         return verdict, sem
 
 
-def diagnose(trace: Trace, grid: Grid, max_steps: int | None = None) -> Diagnosis:
+def diagnose(trace: Trace, grid: Grid | Graph, max_steps: int | None = None) -> Diagnosis:
     """The searches that match ``trace`` on ``grid``: every one that matches it all, else the
     :data:`BEST` that match longest (a DFS or BFS never above an A* that matched longer)."""
     limit = 4 * len(trace.steps) + 64  # a search that gives up (max_steps) stops there too
@@ -280,9 +282,14 @@ def diagnose(trace: Trace, grid: Grid, max_steps: int | None = None) -> Diagnosi
         limit = min(limit, max_steps)
     expansions_only = all(not step.listed for step in trace.steps)
     orders = (expansion_orders(trace) if expansions_only
-              else inferred_orders(trace, grid=grid))
+              else inferred_orders(trace, grid=grid if isinstance(grid, Grid) else None))
     search = _Search(trace, grid, limit)
-    search.run(candidates(orders if expansions_only else orders[:1], orders))
+    heuristics = None
+    if isinstance(grid, Graph):
+        from tui_search.engine.search.space import graph_heuristics
+
+        heuristics = graph_heuristics(grid)
+    search.run(candidates(orders if expansions_only else orders[:1], orders, heuristics))
     scored = sorted(search.scored, key=lambda s: s.rank)
     listed = _listed(scored)
     best = [check_trace(trace, grid, s.key, s.semantics, max_steps=limit) for s in listed]

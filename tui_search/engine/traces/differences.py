@@ -76,7 +76,7 @@ class Causes:
     def first_added(self, cell: State, before: int) -> int | None:
         """The trace's step (from 1) that first added ``cell``, among its first ``before``
         steps; 0 for the start; None: none did."""
-        if cell == self.run.grid.start:
+        if cell == self.run.start:
             return 0
         for i, t in enumerate(self.trace.steps[:before], 1):
             if cell in t.successors:
@@ -254,7 +254,7 @@ class Causes:
                ) -> tuple[str, tuple[Suggestion, ...]]:
         """The trace adds ``c``, which the search does not: why, in one cause."""
         name, node, sem = self.name, t.node, self.sem
-        goal = self.run.grid.goal
+        goal = self.run.goal
         if want and want[-1] == goal and e.found_goal:
             return (f"your trace added {show(c)} after the goal {show(goal)}; {name} stops when "
                     "it adds the goal (the goal tested on generate), yours goes on",
@@ -289,7 +289,7 @@ class Causes:
             return (f"{head}: it is on the path to {show(t.node)}, which tree search with a "
                     "path check skips; yours skips nothing (--no-path-check)",
                     ((("path_check", False),),))
-        if c == self.run.grid.start and sem.mark_start:
+        if c == self.run.start and sem.mark_start:
             return (f"your trace pushes the start {show(c)} again: {name} marks the start "
                     "reached when it begins; a search that does not (as some library code) "
                     "pushes it again (--mark-start no)", ((("mark_start", False),),))
@@ -349,7 +349,7 @@ class Causes:
             return (f"{head}: {show(c)} is cheaper from here by rounding only, which your "
                     "search calls no cheaper (--cost-tolerance 1e-09)",
                     ((("cost_tolerance", 1e-9),),))
-        goal = self.run.grid.goal
+        goal = self.run.goal
         if got and got[-1] == goal and want[:len(got)] == got:
             return (f"{head}: your trace stops when it adds the goal {show(goal)}, as a search "
                     "that tests the goal on generate does", ((("goal_test", "generate"),),))

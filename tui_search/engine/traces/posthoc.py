@@ -10,8 +10,10 @@ cell); ``closing``, ``end`` and any other type are read and ignored.  An event w
 and no ``x``, ``y`` takes the cell an earlier event gave that ``id``.  A trace with no
 ``generating`` event after an expansion is of expansions only.  YAML is read by PyYAML's safe
 loader, and a document with anchors or aliases is refused (a few lines of them can stand for
-billions of events).  Written: the JSON form (YAML is a superset of JSON), a rectangle a cell
-as its view, every node's id its cell's index ``y * width + x``.
+billions of events).  Written as JSON or as YAML (with no YAML library: block style, each
+event a line in flow style), a rectangle a cell as its view, every node's id its cell's index
+``y * width + x``; what the app says of the run (its search, the map's file) under a key of
+its own, which Posthoc leaves alone.
 """
 
 from __future__ import annotations
@@ -24,7 +26,10 @@ from typing import Any
 from tui_search.engine.maps.graph import Graph
 from tui_search.engine.maps.grid import Cell, Grid
 from tui_search.engine.maps.read import MapError
+from tui_search.engine.run.each_step import search_each_step
 from tui_search.engine.run.recording import Step
+from tui_search.engine.search.choices import Semantics
+from tui_search.engine.search.outcome import Outcome
 from tui_search.engine.search.state import State
 from tui_search.engine.traces.read import Trace, load_trace, read_trace
 
@@ -99,11 +104,14 @@ def _key(value: object) -> object:
     return json.dumps(value, sort_keys=True) if isinstance(value, (list, dict)) else value
 
 
-def load_any_trace(path: str, grid: Grid) -> Trace:
-    """A trace file of either format, by its name: Posthoc's (:data:`SUFFIXES`), else the
-    app's own (:func:`~tui_search.engine.traces.read.load_trace`)."""
+def load_any_trace(path: str, grid: Grid | Graph) -> Trace:
+    """A trace file of either format, by its name: Posthoc's (:data:`SUFFIXES`, a grid's),
+    else the app's own (:func:`~tui_search.engine.traces.read.load_trace`)."""
     if not is_posthoc(path):
         return load_trace(path, grid)
+    if not isinstance(grid, Grid):
+        raise MapError(path, "a Posthoc trace is read for a grid; a graph's trace is the "
+                       "app's own (JSON lines naming the nodes)")
     try:
         with open(path, encoding="utf-8") as fh:
             text = fh.read()
@@ -213,19 +221,83 @@ class PosthocWriter:
             self.events.append(self._event("generating", cell, node))
         self.events.append({**expanding, "type": "closing"})
 
-    def text(self, path: Iterable[State] | None = None) -> str:
-        """The document (its last event ``end`` at the goal when a path was found)."""
+    def text(self, path: Iterable[State] | None = None, *, as_yaml: bool = False,
+             about: dict[str, object] | None = None) -> str:
+        """The document (its last event ``end`` at the goal when a path was found): JSON, or
+        with ``as_yaml`` YAML (block style, an event a line in flow style, its scalars as
+        JSON's, which YAML reads alike); ``about``: what the app says of the run, under its
+        own key (:data:`ABOUT_KEY`), which Posthoc does not read."""
         events = list(self.events)
         cells = list(path or ())
         if cells:
             parent = cells[-2] if len(cells) > 1 else None
             events.append(self._event("end", cells[-1], parent))
-        view = [{"$": "rect", "width": 1, "height": 1, "x": "${{ $.x }}", "y": "${{ $.y }}",
-                 "fill": "${{ theme.foreground }}"}]
-        head = json.dumps({"version": VERSION, "views": {"main": view}})[:-1]
+        head: dict[str, object] = {"version": VERSION, "views": {"main": [VIEW]}}
+        if about is not None:
+            head[ABOUT_KEY] = about
+        if as_yaml:
+            return _yaml_text(head, events)
         lines = ",\n".join(f"  {json.dumps(event)}" for event in events)
-        return f'{head}, "events": [\n{lines}\n]}}\n'  # an event a line
+        return f'{json.dumps(head)[:-1]}, "events": [\n{lines}\n]}}\n'  # an event a line
 
 
-__all__ = ["SUFFIXES", "VERSION", "PosthocWriter", "is_posthoc", "load_any_trace",
-           "read_posthoc"]
+#: How Posthoc draws each event: a cell's square at its ``x``, ``y``.
+VIEW = {"$": "rect", "width": 1, "height": 1, "x": "${{ $.x }}", "y": "${{ $.y }}",
+        "fill": "${{ theme.foreground }}"}
+#: The key of what the app says of the run (the search, its map's file) in a trace it writes.
+ABOUT_KEY = "tui-search"
+
+
+def _flow(value: object) -> str:
+    """``value`` in YAML's flow style: mappings and lists as JSON's, but a key that is a
+    plain word unquoted (``type: "expanding"``)."""
+    if isinstance(value, dict):
+        pairs = (f"{_key_text(k)}: {_flow(v)}" for k, v in value.items())
+        return "{" + ", ".join(pairs) + "}"
+    if isinstance(value, list):
+        return "[" + ", ".join(_flow(v) for v in value) + "]"
+    text = json.dumps(value)
+    if isinstance(value, float) and "e" in text and "." not in text:
+        text = text.replace("e", ".0e")  # 1.0e-09: a float to YAML 1.1 readers too
+    return text
+
+
+def _key_text(key: object) -> str:
+    text = str(key)
+    plain = text.replace("-", "_").isidentifier() and text[0] != "-"
+    return text if plain and text not in _YAML_WORDS else json.dumps(text)
+
+
+#: Words YAML would read as another value than the string.
+_YAML_WORDS = frozenset({"null", "true", "false", "yes", "no", "on", "off", "y", "n"})
+
+
+def _yaml_text(head: dict[str, object], events: list[dict[str, object]]) -> str:
+    """The document as YAML: the head's keys a line each (a view a list item), then
+    ``events:`` an event a line."""
+    lines = []
+    for key, value in head.items():
+        if key == "views" and isinstance(value, dict):
+            lines.append("views:")
+            for name, view in value.items():
+                lines.append(f"  {_key_text(name)}:")
+                lines += [f"    - {_flow(part)}" for part in view]
+        else:
+            lines.append(f"{_key_text(key)}: {_flow(value)}")
+    lines.append("events:")
+    lines += [f"  - {_flow(event)}" for event in events]
+    return "\n".join(lines) + "\n"
+
+
+def posthoc_trace(grid: Grid, key: str, semantics: Semantics, max_steps: int, *,
+                  as_yaml: bool = False, about: dict[str, object] | None = None
+                  ) -> tuple[str, Outcome]:
+    """The search ``key`` on ``grid`` (under ``semantics``, at most ``max_steps`` steps) as a
+    Posthoc trace (:meth:`PosthocWriter.text`), and its outcome."""
+    writer = PosthocWriter(grid)
+    found = search_each_step(grid, key, semantics, max_steps, writer.add)
+    return writer.text(found.path, as_yaml=as_yaml, about=about), found
+
+
+__all__ = ["ABOUT_KEY", "SUFFIXES", "VERSION", "PosthocWriter", "is_posthoc", "load_any_trace",
+           "posthoc_trace", "read_posthoc"]

@@ -13,7 +13,8 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 from pathlib import PurePath
 
-from tui_search.engine.maps.grid import Cell, Grid
+from tui_search.engine.maps.graph import Graph
+from tui_search.engine.maps.grid import Grid
 from tui_search.engine.run.recorded import MAX_STEPS, Run
 from tui_search.engine.search.choices import Semantics
 from tui_search.engine.search.registry import get_algorithm
@@ -56,11 +57,11 @@ class Replay:
         """The moves in the order the trace adds them."""
         return self.semantics.order
 
-    def fits(self, grid: Grid) -> bool:
+    def fits(self, grid: Grid | Graph) -> bool:
         """Does the trace still apply to ``grid`` (the same obstacles, start and goal)?"""
         return self.where == _where(grid)
 
-    def runs(self, grid: Grid, max_steps: int = MAX_STEPS) -> list[Run]:
+    def runs(self, grid: Grid | Graph, max_steps: int = MAX_STEPS) -> list[Run]:
         """The trace as a run, and the search's run, each at step 0."""
         return [trace_run(self.trace, grid, self.algorithm, self.semantics, max_steps,
                           self.notes()),
@@ -112,11 +113,15 @@ class Replay:
         return text
 
 
-def _where(grid: Grid) -> tuple[bytes, Cell | None, Cell | None]:
-    return bytes(grid.blocked), grid.start, grid.goal
+def _where(board: Grid | Graph) -> tuple[bytes, State | None, State | None]:
+    """What an edit changes: the obstacles (a graph's closed nodes), the start and the goal."""
+    if isinstance(board, Graph):
+        closed = "\n".join(sorted(board.closed)).encode()
+        return closed, board.start, board.goals[0] if board.goals else None
+    return bytes(board.blocked), board.start, board.goal
 
 
-def replay_of(trace: Trace, grid: Grid, algorithm: str | None, semantics: Semantics,
+def replay_of(trace: Trace, grid: Grid | Graph, algorithm: str | None, semantics: Semantics,
               max_steps: int = MAX_STEPS) -> Replay:
     """``trace`` beside ``algorithm`` under ``semantics`` (as ``--check-trace -a`` checks
     it), or with no ``algorithm`` beside the diagnosis's best candidate.  The search's

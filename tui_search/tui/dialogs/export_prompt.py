@@ -21,7 +21,8 @@ class ExportScreen(PathPrompt[Chosen | None]):
     TITLE_TEXT = "Export the run"
     LABEL_TEXT = ("File name, its kind by its ending: .svg an animated picture for a web page "
                   "or a slide, .cast a terminal recording (asciinema), .gif an animated GIF, "
-                  ".md a handout (its picture beside it):")
+                  ".md a handout (its picture beside it), .trace.json or .trace.yaml a "
+                  "Posthoc search trace (its map beside it):")
     HINT_TEXT = "enter to export · escape to cancel"
 
     def __init__(self, problem: Callable[[str], str | None],

@@ -105,8 +105,9 @@ tutorial's words, the frontier in order, the tree's new edges. In this app the t
 cursor stays on the map's cursor cell, for a braille display to follow.
 
 For a slide, a web page or a bug report: ctrl+p, Export the run, writes it as an animated SVG \
-(.svg), a terminal recording (.cast), a GIF (.gif) or a handout (.md); without the app, \
-tui-search MAP --headless --export FILE (docs/12-exports-and-plain.md)."""
+(.svg), a terminal recording (.cast), a GIF (.gif), a handout (.md) or a Posthoc search \
+trace (.trace.json, .trace.yaml); without the app, tui-search MAP --headless --export FILE \
+(docs/12-exports-and-plain.md)."""
 
 
 def keys_table() -> Table:

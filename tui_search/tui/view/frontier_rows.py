@@ -13,7 +13,7 @@ entry on a line is found by a division, whatever the frontier's size."""
 from typing import TYPE_CHECKING, NamedTuple
 
 from tui_search.engine.search.heuristics import octile
-from tui_search.engine.search.state import state_text
+from tui_search.engine.search.state import state_text, state_width
 from tui_search.engine.util.numbers import group_digits
 from tui_search.tui.view.frontier_text import DIR_W, costs_column, figures
 from tui_search.tui.view.pieces import Parts
@@ -36,15 +36,6 @@ class EntryRows(NamedTuple):
     marker: bool
     rows: tuple[tuple[int, tuple[str, ...]], ...]
     width: int  # the widest row
-
-
-def state_width(run: "Run") -> int:
-    """The widest a state is written (:func:`~tui_search.engine.search.rules.state_text`):
-    the map's farthest cell's, or the graph's longest name."""
-    graph = run.graph
-    if graph is not None:
-        return max(map(len, graph.names))
-    return len(f"({run.grid.width - 1},{run.grid.height - 1})")
 
 
 def move_text(run: "Run", g: int) -> str:
@@ -70,7 +61,7 @@ def column_widths(run: "Run") -> tuple[int, int, int, int]:
     (START, longer, is only ever on its own: just the root is on the frontier then); one
     cost's (0: not a priority queue), the longest straight-line cost across the map's --
     most figures fit, a longer one pushes the rest of its line along."""
-    coord_w = state_width(run)
+    coord_w = state_width(run.board)
     limit = run.steps.depth_limit() if run.algo.iterative else None
     depth_w = len(f"d={group_digits(limit)}") if limit is not None else 0
     cost_w = len(f"{cost_bound(run):.2f}") if run.algo.weighted else 0

@@ -134,7 +134,7 @@ def _narrate(run: Run) -> str:
 
 def _before_the_first_step(run: Run, word: str, limit: int | None) -> str:
     """Step 0: the start on the frontier, and what the first step does."""
-    first = f"START {cell_text(run.board.start)} is on the {word}"
+    first = f"START {cell_text(run.start)} is on the {word}"
     if limit is not None:
         first += f" (depth limit {group_digits(limit)})"
     if run.at_end and run.found:

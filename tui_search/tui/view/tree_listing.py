@@ -38,9 +38,8 @@ from __future__ import annotations
 from array import array
 from typing import TYPE_CHECKING
 
-from tui_search.engine.search.state import state_text
+from tui_search.engine.search.state import state_text, state_width
 from tui_search.engine.util.numbers import group_digits
-from tui_search.tui.view.frontier_rows import state_width
 from tui_search.tui.view.tree_shape import (
     MAX_LEVELS,
     WALK_MAX,
@@ -176,7 +175,7 @@ class TreeModel:
         self._ended = run.at_end
         self._tree_size = size
         self._limit = run.steps.depth_limit() if run.algo.iterative else None
-        self._coord_w = state_width(run)
+        self._coord_w = state_width(run.board)
         self._update_path(run)
 
         return moved
