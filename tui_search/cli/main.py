@@ -45,7 +45,8 @@ def build_app(options: Options) -> SearchApp:
     from tui_search.tui.config import Config
     from tui_search.tui.model.file_rules import FileAccess, NameRefused
 
-    assert options.grid is not None, "the app opens on the map the command line read"
+    board = options.graph or options.grid
+    assert board is not None, "the app opens on the map the command line read"
     try:
         access = FileAccess.for_app(options.served, options.save_dir, options.visitor)
     except NameRefused as exc:
@@ -53,7 +54,7 @@ def build_app(options: Options) -> SearchApp:
     scenario = options.scenario
     replay = options.replay_read  # its search and choices are the panes'
 
-    return SearchApp(options.grid, path=options.path,
+    return SearchApp(board, path=options.path,
                      algorithm=replay.algorithm if replay else options.algorithm,
                      semantics=replay.semantics if replay else semantics_from(options),
                      max_steps=options.max_steps, replay=replay,
@@ -112,6 +113,8 @@ class LazyExporter:
 def app_title(options: Options) -> str:
     """The app's title for a map with no file: a generated map's recipe, a teacher's
     exercise's own map, or the tutorial."""
+    if options.graph is not None:  # a built-in graph (a file's title is its name)
+        return f"{options.map} (built-in)"
     name = map_name(options, None)
     return BUILT_IN_TITLE if name == TUTORIAL_NAME else name
 

@@ -87,9 +87,6 @@ def _with_graph(options: Options) -> Options:
         if given:
             raise UsageError(f"{flag} runs on a grid; on a graph use the app, --headless or "
                              "--check-trace")
-    if not (options.headless or options.check_trace is not None):
-        raise UsageError("a graph runs headless for now (--headless, --check-trace): the "
-                         "app's graph view is on its way")
     graph = load_graph_problem(options)
     path = None if options.map in BUILT_IN else Path(str(options.map))
     return options.replace(graph=graph, path=path)

@@ -8,6 +8,7 @@ from __future__ import annotations
 from tui_search.engine.maps.grid import DELTAS, Cell
 from tui_search.engine.run.position import CellState
 from tui_search.engine.run.recorded import Run
+from tui_search.engine.search.state import as_cell
 from tui_search.tui.model.session import Session
 from tui_search.tui.view.narration import cell_text
 from tui_search.tui.view.readout import describe_each
@@ -98,7 +99,7 @@ def describe_cell(session: Session, cell: Cell) -> str:
 
 def describe_around(session: Session) -> str:
     """The cursor's cell and its eight neighbours, clockwise from north."""
-    x, y = session.cursor
+    x, y = cursor = as_cell(session.cursor)  # plain mode shows grids
     grid = session.grid
     parts = []
     for move in AROUND:
@@ -106,5 +107,5 @@ def describe_around(session: Session) -> str:
         cell = (x + dx, y + dy)
         word = cell_word(session, cell) if grid.in_bounds(cell) else "off the map"
         parts.append(f"{move} {cell_text(cell)} {word}")
-    return (f"Around {cell_text(session.cursor)}, {cell_word(session, session.cursor)}: "
+    return (f"Around {cell_text(cursor)}, {cell_word(session, cursor)}: "
             f"{', '.join(parts)}.")

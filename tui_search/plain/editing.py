@@ -10,6 +10,7 @@ from pathlib import Path
 from typing import Protocol
 
 from tui_search.engine.maps.read import MapError
+from tui_search.engine.search.state import as_cell
 from tui_search.plain.files import save_lines
 from tui_search.tui.model.file_rules import one_line
 from tui_search.tui.model.map_edits import BRUSHES, brush_name
@@ -71,7 +72,7 @@ class EditCommands:
 
     def do_obstacle(self, rest: str, word: str) -> None:
         s = self.mode.session
-        wall = not s.grid.is_blocked(s.cursor)
+        wall = not s.grid.is_blocked(as_cell(s.cursor))
         self._edited(s.edits.toggle_wall(s.cursor),
                      f"{'An obstacle' if wall else 'No obstacle'} at {cell_text(s.cursor)}.")
 

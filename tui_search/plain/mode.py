@@ -264,12 +264,12 @@ class PlainMode:
         return None
 
     def do_row(self, rest: str, word: str) -> None:
-        y = self._number(rest, "row") if rest else self.session.cursor[1]
+        y = self._number(rest, "row") if rest else as_cell(self.session.cursor)[1]
         if y is not None:
             self.say(describe.describe_row(self.session, y))
 
     def do_column(self, rest: str, word: str) -> None:
-        x = self._number(rest, "column") if rest else self.session.cursor[0]
+        x = self._number(rest, "column") if rest else as_cell(self.session.cursor)[0]
         if x is not None:
             self.say(describe.describe_column(self.session, x))
 
@@ -281,7 +281,7 @@ class PlainMode:
             return None
 
     def do_cell(self, rest: str, word: str) -> None:
-        cell = self._cell(rest) if rest else self.session.cursor
+        cell = self._cell(rest) if rest else as_cell(self.session.cursor)
         if cell is not None:
             self.say(describe.describe_cell(self.session, cell))
 
@@ -299,7 +299,7 @@ class PlainMode:
         self.say(describe.describe_cell(self.session, cell))
 
     def _by(self, dx: int, dy: int) -> None:
-        x, y = self.session.cursor
+        x, y = as_cell(self.session.cursor)
         self._move_to((x + dx, y + dy))
 
     def do_left(self, rest: str, word: str) -> None:

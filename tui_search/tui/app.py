@@ -29,6 +29,7 @@ from tui_search.tui.view.themes import DEFAULT_THEME, THEMES, map_defaults
 if TYPE_CHECKING:
     from tui_search.engine.course.exercise_file import Exercise
     from tui_search.engine.course.lesson import Lesson
+    from tui_search.engine.maps.graph import Graph
     from tui_search.engine.traces.replay import Replay
     from tui_search.tui.model.class_records import RecordsPlan
     from tui_search.tui.screens.export_command import Exporter
@@ -49,7 +50,8 @@ def _search_commands() -> type[Provider]:
 
 
 class SearchApp(App[int]):
-    """Watch BFS, DFS, iterative deepening, UCS, greedy and A* plan a path on ``grid``."""
+    """Watch BFS, DFS, iterative deepening, UCS, greedy and A* plan a path on ``board``: a
+    grid (its cells) or a graph (its nodes, :class:`~tui_search.engine.maps.graph.Graph`)."""
 
     CSS_PATH = "app.tcss"
     TITLE = "tui-search"
@@ -57,7 +59,7 @@ class SearchApp(App[int]):
 
     def __init__(
         self,
-        grid: Grid,
+        board: Grid | Graph,
         path: Path | None = None,
         algorithm: str = DEFAULT_ALGORITHM,
         semantics: Semantics = DEFAULT_SEMANTICS,
@@ -86,7 +88,7 @@ class SearchApp(App[int]):
         ``records``, where what the student does is recorded (``--records``: the student
         named, or asked at start); ``by_hand``, the run by hand at once (``--by-hand``)."""
         super().__init__()
-        self.session = Session(grid, path, algorithm, semantics, max_steps, unsaved_name,
+        self.session = Session(board, path, algorithm, semantics, max_steps, unsaved_name,
                                optimal_cost, exercise, compare, replay)
         if lesson is not None:
             from tui_search.tui.model.lesson_play import LessonPlay  # only for a lesson

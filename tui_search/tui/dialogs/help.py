@@ -3,7 +3,7 @@ tutorial's words."""
 
 from __future__ import annotations
 
-from typing import ClassVar
+from typing import TYPE_CHECKING, ClassVar
 
 from rich.table import Table
 from rich.text import Text
@@ -16,6 +16,9 @@ from textual.widgets import Static
 from tui_search.engine.search.registry import ALGORITHMS
 from tui_search.tui.view.themes import THEMES
 from tui_search.tui.widgets.grid_view import GridView
+
+if TYPE_CHECKING:
+    from tui_search.tui.widgets.graph_view import GraphView
 from tui_search.tui.widgets.legend import Legend
 
 #: The keys, grouped as a learner uses them (a test checks every binding is listed here).
@@ -153,7 +156,7 @@ class HelpScreen(ModalScreen[None]):
     }
     """
 
-    def __init__(self, view: GridView) -> None:
+    def __init__(self, view: GridView | GraphView) -> None:
         super().__init__()
         self._view = view
 

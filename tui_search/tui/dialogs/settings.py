@@ -10,7 +10,7 @@ that a choice does not apply, or a problem, stays).
 
 from __future__ import annotations
 
-from typing import ClassVar
+from typing import TYPE_CHECKING, ClassVar
 
 from textual.app import ComposeResult
 from textual.binding import Binding, BindingType
@@ -23,6 +23,7 @@ from tui_search.engine.search.choices import (
     CORNER_RULES,
     EXPLAIN,
     GOAL_TESTS,
+    GRAPH_ORDERS,
     RECURSIVE_FORMS,
     TIE_RULES,
     VISIT_RULES,
@@ -34,6 +35,9 @@ from tui_search.tui.dialogs.settings_choice import SettingsChoice
 from tui_search.tui.widgets.pick_button import PickButton
 from tui_search.tui.widgets.tick_box import TickBox
 
+if TYPE_CHECKING:
+    from tui_search.engine.maps.graph import Graph
+
 #: A word on each value, shown beside its radio button.
 VALUE_WORDS: dict[str, str] = {
     "always": "always",
@@ -43,6 +47,7 @@ VALUE_WORDS: dict[str, str] = {
     "expand": "when taken off",
     "expand-again": "taken off, not checked",
     **{name: name for name in HEURISTICS},
+    "file": "as the file lists its roads", "name": "by name", "table": "the file's h table",
     "stack": "a stack",
     "neighbours": "a line lists neighbours",
     "calls": "a line lists calls",
@@ -97,11 +102,21 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
     """
 
     def __init__(self, semantics: Semantics, algorithm: Algorithm,
-                 compare: str = "bfs,dfs", algorithms: list[Algorithm] | None = None) -> None:
+                 compare: str = "bfs,dfs", algorithms: list[Algorithm] | None = None,
+                 graph: Graph | None = None) -> None:
         """``compare``: the searches compare mode compares, as ``--compare`` spells them;
         ``algorithms``: the searches the choices are for (compare mode's, else
-        ``algorithm``): a choice is greyed out only when it applies to none of them."""
+        ``algorithm``): a choice is greyed out only when it applies to none of them.
+        ``graph``: the choices are a graph's (no moves nor corners: the order of its roads,
+        its estimates)."""
         super().__init__()
+        self.graph = graph
+        if graph is not None:
+            from tui_search.tui.model.boards import graph_heuristics
+
+            self.heuristics: tuple[str, ...] = tuple(graph_heuristics(graph))
+        else:
+            self.heuristics = tuple(HEURISTICS)
         self.semantics = semantics
         self.algorithm = algorithm
         self.algorithms = algorithms or [algorithm]
@@ -113,14 +128,20 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
         with VerticalScroll() as box:
             box.border_title = "Search settings · " + " · ".join(
                 a.short for a in self.algorithms)
-            yield Label("Moves, in the order tried", classes="choice")
-            yield Label(f"{EXPLAIN['order']} (all eight: {','.join(DEFAULT_ORDER)}; "
-                        "4-connected: N,W,S,E)", classes="explain")
-            yield Input(",".join(sem.order), id="order", compact=True)
-            yield Label("", id="order-error", classes="problem")
-            yield Label("Diagonal past corners", classes="choice")
-            yield Label(EXPLAIN["corners"], classes="explain")
-            yield self._radios("corners", CORNER_RULES, sem.corners)
+            if self.graph is not None:  # a graph: its roads' order; no moves, no corners
+                yield Label("Successors, in the order added", classes="choice")
+                yield Label("a node's roads as the file lists them, or by the names they "
+                            "reach", classes="explain")
+                yield self._radios("order", GRAPH_ORDERS, sem.order[0])
+            else:
+                yield Label("Moves, in the order tried", classes="choice")
+                yield Label(f"{EXPLAIN['order']} (all eight: {','.join(DEFAULT_ORDER)}; "
+                            "4-connected: N,W,S,E)", classes="explain")
+                yield Input(",".join(sem.order), id="order", compact=True)
+                yield Label("", id="order-error", classes="problem")
+                yield Label("Diagonal past corners", classes="choice")
+                yield Label(EXPLAIN["corners"], classes="explain")
+                yield self._radios("corners", CORNER_RULES, sem.corners)
             yield Label("A cell counts as visited", classes="choice")
             yield Label("", id="visit-explain", classes="explain")
             yield self._radios("visit", VISIT_RULES, sem.visit)
@@ -140,7 +161,7 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
             yield Label("Heuristic; a priority queue's ties, re-opening and costs",
                         classes="choice")
             yield Label("", id="heuristic-explain", classes="explain")
-            yield self._radios("heuristic", tuple(HEURISTICS), sem.heuristic)
+            yield self._radios("heuristic", self.heuristics, sem.heuristic)
             yield self._radios("ties", TIE_RULES, sem.ties)
             with Horizontal(classes="ticks"):
                 yield TickBox("re-open a cell reached cheaper", sem.reopen, id="reopen",
@@ -172,6 +193,8 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
         )
 
     def on_mount(self) -> None:
+        if self.graph is not None:  # no corners to focus first: the order of the roads
+            self.query_one("#order", RadioSet).focus()
         self._sync_visit()
         self._sync_heuristic()
         self._sync_published()
@@ -207,13 +230,18 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
     def chosen(self) -> Semantics | None:
         """The settings as the controls show them (None, with the reason shown, when the move
         order does not parse)."""
-        error = self.query_one("#order-error", Label)
-        try:
-            order = parse_order(self.query_one("#order", Input).value)
-        except ValueError as exc:
-            error.update(f"Moves: {exc}")
-            return None
-        error.update("")
+        if self.graph is not None:
+            order: tuple[str, ...] = (self._choice("order"),)
+            corners = self.semantics.corners  # not a graph's: kept as it was
+        else:
+            error = self.query_one("#order-error", Label)
+            try:
+                order = parse_order(self.query_one("#order", Input).value)
+            except ValueError as exc:
+                error.update(f"Moves: {exc}")
+                return None
+            error.update("")
+            corners = self._choice("corners")
         tree = self.query_one("#tree_search", Checkbox).value
         algo = self.algorithm
         recursive = self._choice("recursive")
@@ -224,7 +252,7 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
         mark = self.query_one("#mark_start", Checkbox).value or bool(
             tree or recursive or visit != "generate")
         exact = self.query_one("#exact_costs", Checkbox).value
-        return Semantics(order=order, corners=self._choice("corners"), visit=visit,
+        return Semantics(order=order, corners=corners, visit=visit,
                          goal_test=None if goal_test == algo.goal_test else goal_test,
                          tree_search=tree, heuristic=self._choice("heuristic"),
                          ties=self._choice("ties"), cost_tolerance=0.0 if exact else CHEAPER_BY,
@@ -287,6 +315,8 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
             text = f"does not apply to {names}: no estimate, no priority queue"
         elif radios.disabled:
             text = f"the heuristic does not apply to {names}: it uses no estimate"
+        elif self.graph is not None:  # a graph's table or straight line: said when checked
+            text = EXPLAIN["heuristic"]
         else:
             name = self._choice("heuristic")
             order = self.query_one("#order", Input).value
@@ -321,7 +351,12 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
         if event.button.id == "apply":
             self._apply()
         elif event.button.id == "defaults":
-            self._show(Semantics())
+            if self.graph is not None:
+                from tui_search.tui.model.boards import semantics_for
+
+                self._show(semantics_for(self.graph, Semantics()))
+            else:
+                self._show(Semantics())
         else:
             self.dismiss(None)
 
@@ -331,8 +366,12 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
             self.dismiss(SettingsChoice(semantics, compare))
 
     def _show(self, sem: Semantics) -> None:
-        self.query_one("#order", Input).value = ",".join(sem.order)
-        for name, value in (("corners", sem.corners), ("visit", sem.visit),
+        if self.graph is not None:
+            self.query_one(f"#order-{sem.order[0]}", RadioButton).value = True
+        else:
+            self.query_one("#order", Input).value = ",".join(sem.order)
+            self.query_one(f"#corners-{sem.corners}", RadioButton).value = True
+        for name, value in (("visit", sem.visit),
                             ("goal_test", sem.goal_test_for(self.algorithm)),
                             ("heuristic", sem.heuristic), ("ties", sem.ties),
                             ("recursive", sem.recursive or "stack")):

@@ -7,7 +7,9 @@
 * :mod:`~tui_search.tui.model.quiz`: predict the next node;
 * :mod:`~tui_search.tui.model.by_hand`: the search made by hand, step by step, and its end;
 * :mod:`~tui_search.tui.model.class_records`: what the app records of a student (``--records``);
+* :mod:`~tui_search.tui.model.boards`: a grid or a graph: its rules, start and goal;
 * :mod:`~tui_search.tui.model.map_edits`: the session's edits of the map, and undo;
+* :mod:`~tui_search.tui.model.graph_edits`: a graph's edits (start, goal, closed), and undo;
 * :mod:`~tui_search.tui.model.cell_edits`: one edit of a cell, or why it is refused;
 * :mod:`~tui_search.tui.model.history`: undo, redo, and whether the map differs from its file;
 * :mod:`~tui_search.tui.model.replay_jumps`: a replay's first difference and its key;

@@ -15,13 +15,32 @@ mouse stroke into one edit (:meth:`History.begin_stroke`, :meth:`History.end_str
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING, Protocol
+
 from tui_search.engine.maps.grid import Cell, Grid
+from tui_search.engine.search.state import State
+
+if TYPE_CHECKING:
+    from tui_search.engine.maps.graph import Graph
 
 #: The edits kept: older ones can no longer be undone.
 MAX_EDITS = 1000
 
 #: The start and the goal (None: not on the map).
 Ends = tuple[Cell | None, Cell | None]
+
+
+class Change(Protocol):
+    """What the history keeps of one edit: a grid's (:class:`Edit`) or a graph's
+    (:class:`~tui_search.tui.model.graph_edits.GraphEdit`, which paints no cells)."""
+
+    walls: list[tuple[Cell, bool, bool]]
+    costs: list[tuple[Cell, float, float]]
+
+    def apply(self, board: Grid | Graph, undo: bool) -> State:
+        """Put the board as it was before the edit (``undo``) or after it; the state the
+        edit is about, for the cursor."""
+        ...
 
 
 class Edit:
@@ -37,10 +56,12 @@ class Edit:
         self.ends = ends
         self.costs = costs if costs is not None else []
 
-    def apply(self, grid: Grid, undo: bool) -> Cell:
-        """Put ``grid`` as it was before this edit (``undo``) or after it; the cell the edit
-        is about, for the cursor: its first obstacle (or painted) cell, else where the end that
-        moved is now (or was, when it left the map)."""
+    def apply(self, board: Grid | Graph, undo: bool) -> State:
+        """Put ``board`` (a grid) as it was before this edit (``undo``) or after it; the cell
+        the edit is about, for the cursor: its first obstacle (or painted) cell, else where the
+        end that moved is now (or was, when it left the map)."""
+        grid = board
+        assert isinstance(grid, Grid), "a grid's edit"
         for cell, before, after in reversed(self.walls) if undo else self.walls:
             grid.set_blocked(cell, before if undo else after)
         for cell, cost_before, cost_after in reversed(self.costs) if undo else self.costs:
@@ -63,11 +84,11 @@ class History:
 
     def __init__(self, limit: int = MAX_EDITS) -> None:
         self.limit = limit
-        self._edits: list[Edit] = []
+        self._edits: list[Change] = []
         self._done = 0  # the first _done edits are on the map; the rest were undone
         self._saved: int | None = 0  # _done when read or last saved; None: no longer reachable
         self._stroke = False  # a mouse stroke is under way: its cells are one edit
-        self._stroke_edit: Edit | None = None  # that edit, once its first cell changed
+        self._stroke_edit: Change | None = None  # that edit, once its first cell changed
 
     @property
     def modified(self) -> bool:
@@ -80,7 +101,7 @@ class History:
     def can_redo(self) -> bool:
         return self._done < len(self._edits)
 
-    def add(self, edit: Edit) -> None:
+    def add(self, edit: Change) -> None:
         """Record ``edit``, just made: a new edit, or the next cell of the mouse stroke."""
         if self._stroke_edit is not None:
             self._stroke_edit.walls.extend(edit.walls)
@@ -105,15 +126,16 @@ class History:
     def end_stroke(self) -> None:
         self._stroke, self._stroke_edit = False, None
 
-    def undo(self, grid: Grid) -> Cell | None:
-        """Undo the last edit on ``grid``: the cell it was about; None when there is none."""
+    def undo(self, grid: Grid | Graph) -> State | None:
+        """Undo the last edit on ``grid`` (or a graph): the cell (the node) it was about; None
+        when there is none."""
         if not self.can_undo():
             return None
         self._stroke_edit = None  # a stroke going on after this is a new edit
         self._done -= 1
         return self._edits[self._done].apply(grid, undo=True)
 
-    def redo(self, grid: Grid) -> Cell | None:
+    def redo(self, grid: Grid | Graph) -> State | None:
         """Make the last edit undone again on ``grid``: the cell it is about; None when
         there is none."""
         if not self.can_redo():
@@ -128,4 +150,4 @@ class History:
         self._stroke_edit = None  # cells painted after the save are a new edit
 
 
-__all__ = ["MAX_EDITS", "Edit", "Ends", "History"]
+__all__ = ["MAX_EDITS", "Change", "Edit", "Ends", "History"]

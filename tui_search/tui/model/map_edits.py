@@ -11,6 +11,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from tui_search.engine.maps.grid import Cell, Grid
+from tui_search.engine.search.state import State, as_cell
 from tui_search.tui.model.cell_edits import paint_terrain, place, set_wall
 from tui_search.tui.model.history import Edit, History
 
@@ -29,9 +30,10 @@ class MapEdits:
     why not.  ``on_edit`` is called after every edit and undo, with the cell an undo or a redo
     puts the cursor on (None for an edit, made where the cursor or the stroke is)."""
 
-    def __init__(self, grid: Grid, on_edit: Callable[[Cell | None], None],
+    def __init__(self, grid: Grid, on_edit: Callable[[State | None], None],
                  brush: float | None = None) -> None:
         self.grid = grid
+        self.board = grid  # what the session edits (a graph's edits: graph_edits.py)
         self.history = History()  # the map's edits: undo, redo, and "modified"
         #: The terrain brush's cost (None: off): what ``m`` and a mouse stroke paint.
         self.brush = brush
@@ -43,14 +45,15 @@ class MapEdits:
             self._on_edit(None)
         return refusal
 
-    def place(self, what: str, cell: Cell) -> str | None:
+    def place(self, what: str, at: State) -> str | None:
         """The start or the goal at ``cell``: None, or why not."""
-        grid = self.grid
+        grid, cell = self.grid, as_cell(at)
         before = (grid.start, grid.goal)
         refusal = place(grid, what, cell)
         return self._edited(refusal, Edit(ends=(before, (grid.start, grid.goal))))
 
-    def toggle_wall(self, cell: Cell) -> str | None:
+    def toggle_wall(self, at: State) -> str | None:
+        cell = as_cell(at)
         return self._set_wall(cell, not self.grid.is_blocked(cell))
 
     def _set_wall(self, cell: Cell, wall: bool) -> str | None:
@@ -59,9 +62,10 @@ class MapEdits:
         return self._edited(set_wall(self.grid, cell, wall), Edit([(cell, not wall, wall)],
                                                                   costs=costs))
 
-    def paint(self, cell: Cell, wall: bool) -> bool:
+    def paint(self, at: State, wall: bool) -> bool:
         """A mouse stroke over ``cell``: an obstacle or free (start and goal stay).  True
         when it changed the map."""
+        cell = as_cell(at)
         if cell in (self.grid.start, self.grid.goal) or self.grid.is_blocked(cell) == wall:
             return False
         return self._set_wall(cell, wall) is None
@@ -73,8 +77,9 @@ class MapEdits:
         self.brush = (BRUSHES + (None,))[at + 1]
         return self.brush
 
-    def paint_cost(self, cell: Cell) -> str | None:
+    def paint_cost(self, at: State) -> str | None:
         """The brush's cost on ``cell``: None, or why not."""
+        cell = as_cell(at)
         cost = self.brush
         if cost is None:
             return NO_BRUSH
@@ -82,9 +87,10 @@ class MapEdits:
         return self._edited(paint_terrain(self.grid, cell, cost),
                             Edit(costs=[(cell, before, cost)]))
 
-    def stroke_cost(self, cell: Cell) -> bool:
+    def stroke_cost(self, at: State) -> bool:
         """A mouse stroke of the brush over ``cell`` (an obstacle, or a cell that costs that
         already, stays): True when it changed the map."""
+        cell = as_cell(at)
         grid = self.grid
         if self.brush is None or grid.is_blocked(cell) or grid.cost(cell) == self.brush:
             return False

@@ -12,12 +12,14 @@ from __future__ import annotations
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from tui_search.engine.maps.grid import Cell, Grid
+from tui_search.engine.maps.grid import Grid
 from tui_search.engine.run.recorded import MAX_STEPS, Run
 from tui_search.engine.search.choices import DEFAULT_SEMANTICS, Semantics
 from tui_search.engine.search.compare import Contender
 from tui_search.engine.search.registry import DEFAULT_ALGORITHM
+from tui_search.engine.search.state import State
 from tui_search.tui.model import playback
+from tui_search.tui.model.boards import has_endpoints, holds, semantics_for, start_of
 from tui_search.tui.model.map_edits import BRUSHES, NO_BRUSH, MapEdits
 from tui_search.tui.model.playback import Before
 from tui_search.tui.model.quiz import Quiz, toggled, verdict
@@ -29,10 +31,12 @@ if TYPE_CHECKING:
     # frame does without their modules (benchmarks/README.md, "startup").
     from tui_search.engine.course.exercise_file import Exercise
     from tui_search.engine.course.grading import Verdict
+    from tui_search.engine.maps.graph import Graph
     from tui_search.engine.maps.scenarios import Optimum
     from tui_search.engine.traces.replay import Replay
     from tui_search.tui.model.by_hand import ByHand
     from tui_search.tui.model.class_records import Recorder
+    from tui_search.tui.model.graph_edits import GraphEdits
     from tui_search.tui.model.lesson_play import LessonPlay
     from tui_search.tui.model.seek import Seek
 
@@ -57,7 +61,7 @@ class Session:
 
     def __init__(
         self,
-        grid: Grid,
+        board: Grid | Graph,
         path: Path | None = None,
         algorithm: str = DEFAULT_ALGORITHM,
         semantics: Semantics = DEFAULT_SEMANTICS,
@@ -68,11 +72,13 @@ class Session:
         compare: str | None = None,
         replay: Replay | None = None,
     ) -> None:
-        self.edits = MapEdits(grid, self._map_edited)
+        self.edits: MapEdits | GraphEdits = self._edits_of(board)
         self.map_path = Path(path) if path is not None else None
         self.unsaved_name = unsaved_name  # the title of a map with no file
+        if not isinstance(board, Grid) and unsaved_name == "untitled":
+            self.unsaved_name = board.name  # a graph built in (Romania) or made in code
         self.max_steps = max_steps
-        self.semantics = semantics
+        self.semantics = semantics_for(board, semantics)  # a graph's orders and estimates
         self.algorithm = algorithm  # what c shows alone
         self.comparison = DEFAULT_COMPARE  # what c compares
         self.spec = algorithm  # the searches shown, a pane each
@@ -80,7 +86,8 @@ class Session:
             self._remember(normal_spec(compare))
         self.contenders: list[Contender] = []
         self.runs: list[Run] = []
-        self.cursor: Cell = grid.start or (0, 0)
+        #: The cursor: a cell of a grid, a node (its name) of a graph.
+        self.cursor: State = start_of(board)
         self.speed_index = playback.DEFAULT_SPEED
         self.playing = False
         self.seek: Seek | None = None
@@ -98,10 +105,10 @@ class Session:
         self.records: Recorder | None = None  # --records: where what the student did goes
         self._fitted = ""  # the note on a setting fitted to a search, once said
         self._optimum: Optimum | None = None  # while it holds: engine/scenarios.py
-        if optimal_cost is not None:  # a --scen row: its module is imported already
+        if optimal_cost is not None and isinstance(board, Grid):  # a --scen row: imported
             from tui_search.engine.maps.scenarios import Optimum
 
-            self._optimum = Optimum(grid, optimal_cost)
+            self._optimum = Optimum(board, optimal_cost)
         self.new_runs()
 
     # -- what is shown -------------------------------------------------------------------
@@ -111,9 +118,30 @@ class Session:
         return self.runs[0] if self.runs else None
 
     @property
+    def board(self) -> Grid | Graph:
+        """What is searched: the grid or the graph shown (its edits: ``edits``)."""
+        return self.edits.board
+
+    @property
     def grid(self) -> Grid:
-        """The map shown (its edits: ``edits``)."""
-        return self.edits.grid
+        """The grid shown (a grid's features only: a graph has none, :attr:`board`)."""
+        board = self.edits.board
+        assert isinstance(board, Grid), "a graph is shown: session.board"
+        return board
+
+    @property
+    def graph(self) -> Graph | None:
+        """The graph shown (None: a grid)."""
+        board = self.edits.board
+        return None if isinstance(board, Grid) else board
+
+    def _edits_of(self, board: Grid | Graph, brush: float | None = None
+                  ) -> MapEdits | GraphEdits:
+        if isinstance(board, Grid):
+            return MapEdits(board, self._map_edited, brush=brush)
+        from tui_search.tui.model.graph_edits import GraphEdits  # a graph's only
+
+        return GraphEdits(board, self._map_edited)
 
     @property
     def labels(self) -> list[str]:
@@ -165,11 +193,15 @@ class Session:
         self.contenders, why = searches_of(self.spec, self.semantics)
         self.note = note or (why if why != self._fitted else "")  # said once, not at each edit
         self._fitted = why
-        grid = self.grid
-        if grid.start is None or grid.goal is None:
+        board = self.board
+        if not has_endpoints(board):
             self.runs = []
             self.note = note or NEEDS_ENDPOINTS
+        elif not isinstance(board, Grid):  # a graph: no benchmark's optimum, no replay
+            self.runs = [Run(board, c.algorithm, c.semantics, self.max_steps)
+                         for c in self.contenders]
         else:
+            grid = board
             optimum = self._optimum
             known = optimum.on(grid, self.semantics.corners,
                                 len(self.semantics.order)) if optimum is not None else None
@@ -229,33 +261,35 @@ class Session:
         if (semantics, spec) == (self.semantics, self.spec):
             return
         self.jumps.end()  # other rules: the replay is over
-        self.semantics = semantics
+        self.semantics = semantics_for(self.board, semantics)
         if spec != self.spec:
             self.show_searches(spec)
         else:
             self.new_runs()
 
     # -- the map (its edits: ``edits``) ---------------------------------------------------
-    def _map_edited(self, cursor: Cell | None) -> None:
+    def _map_edited(self, cursor: State | None) -> None:
         """The map was edited (or an edit undone: the cursor on ``cursor``): from step 0."""
         if cursor is not None:
             self.cursor = cursor
         self.new_runs()
 
-    def move_cursor(self, cell: Cell) -> bool:
-        if not self.grid.in_bounds(cell):
+    def move_cursor(self, cell: State) -> bool:
+        if not holds(self.board, cell):
             return False
         self.cursor = cell
         return True
 
-    def use_map(self, grid: Grid, path: Path | None, untitled: str | None = None) -> None:
-        """Show ``grid`` (read from ``path``) instead, from step 0; ``untitled``: the title of
-        a map with no file (a generated map's recipe)."""
+    def use_map(self, grid: Grid | Graph, path: Path | None,
+                untitled: str | None = None) -> None:
+        """Show ``grid`` (or a graph, read from ``path``) instead, from step 0; ``untitled``:
+        the title of a map with no file (a generated map's recipe)."""
         if untitled is not None:
             self.unsaved_name = untitled
-        self.edits = MapEdits(grid, self._map_edited, brush=self.edits.brush)
+        self.edits = self._edits_of(grid, brush=self.edits.brush)
+        self.semantics = semantics_for(grid, self.semantics)
         self.map_path = Path(path) if path is not None else None
-        self.cursor = grid.start or (0, 0)
+        self.cursor = start_of(grid)
         self.jumps.end()
         self.new_runs()
 

@@ -69,6 +69,9 @@ def open_by_hand(screen: PanesScreen, exercise: Exercise | None = None) -> bool:
     why, when there can be none.  The run is recorded when it ends or is left
     (``--records``); its replay, when asked for, is shown on ``screen``."""
     main = screen.session
+    if main.graph is not None:
+        screen.warn("By hand runs on a grid's map for now, not on a graph", timeout=5)
+        return False
     if exercise is None and main.exercise is not None and main.exercise.by_hand:
         exercise = main.exercise
     session = hand_session(main, exercise)
@@ -147,17 +150,17 @@ class ByHandScreen(PanesScreen):
         if self.by_hand.hand.picked is not None:
             self._told(self.by_hand.add_move(ARROW_MOVES[(dx, dy)]))
             return
-        x, y = self.session.cursor
+        x, y = as_cell(self.session.cursor)  # (by hand runs on a grid)
         self.move_cursor((x + dx, y + dy))
 
     def action_add(self, move: str) -> None:
         self._told(self.by_hand.add_move(move))
 
     def action_take(self) -> None:
-        self._told(self.by_hand.enter(self.session.cursor))
+        self._told(self.by_hand.enter(as_cell(self.session.cursor)))
 
     def action_end_step(self) -> None:
-        self._told(self.by_hand.enter(self.session.cursor))
+        self._told(self.by_hand.enter(as_cell(self.session.cursor)))
 
     def action_take_back(self) -> None:
         self._told(self.by_hand.take_back())

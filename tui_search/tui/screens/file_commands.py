@@ -81,6 +81,11 @@ class Host(Protocol):
         """Show the status lines anew (the session's note changed)."""
 
 
+#: What saving says while a graph is shown (its file is not written from the app).
+GRAPH_NOT_SAVED = ("A graph's start, goal and closed nodes are not saved to its file: they "
+                   "last until you quit (ctrl+z undoes them)")
+
+
 class FileCommands:
     """ctrl+s saves, w saves as, ctrl+o opens a map, ctrl+n generates one; q and a new map ask
     first when there are unsaved edits (:meth:`confirm_discard`, :meth:`replace_map`)."""
@@ -110,7 +115,16 @@ class FileCommands:
         return off is not None
 
     # -- saving ---------------------------------------------------------------------------
+    def _graph_unsaved(self) -> bool:
+        """A graph is shown: its edits are not saved to a file (yet); say so, return True."""
+        if self.host.session.graph is None:
+            return False
+        self.notify(GRAPH_NOT_SAVED, title="Not saved", severity="warning", timeout=8)
+        return True
+
     def save_own(self) -> None:
+        if self._graph_unsaved():
+            return
         own = self.host.session.map_path
         if own is None or not self.file_access.may_save_over(own):
             self.ask_save_as()
@@ -193,7 +207,7 @@ class FileCommands:
     def ask_save_as(self, then: Callable[[], None] | None = None, error: str = "") -> None:
         """The save-as prompt; ``then`` runs once the map is saved (not on cancel);
         ``error``, the reason the map could not be saved where it was, shown in it."""
-        if self._files_off():
+        if self._files_off() or self._graph_unsaved():
             return
         from tui_search.tui.dialogs.save_as import SaveAsScreen
 
@@ -290,7 +304,8 @@ class FileCommands:
         from tui_search.tui.dialogs.confirm_quit import generating
         from tui_search.tui.dialogs.generate_map import GenerateScreen
 
-        now = recipe_of(self.host.session.grid)  # a generated map's, saved or not
+        shown = self.host.session.board
+        now = recipe_of(shown) if isinstance(shown, Grid) else None  # a generated map's
         nxt = make_recipe("maze") if now is None else next_recipe(now)
 
         def chosen(recipe: Recipe | None) -> None:

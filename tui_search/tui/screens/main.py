@@ -7,8 +7,9 @@ from typing import TYPE_CHECKING, ClassVar, cast
 
 from textual.binding import BindingType
 
-from tui_search.engine.search.state import as_cell
+from tui_search.engine.search.state import State, as_cell
 from tui_search.tui.model import playback
+from tui_search.tui.model.boards import goal_of
 from tui_search.tui.model.map_edits import brush_name
 from tui_search.tui.screens.keys import KEYS
 from tui_search.tui.screens.panes import NO_ROOM_FOR_CODE, PanesScreen
@@ -18,6 +19,7 @@ from tui_search.tui.widgets.key_bar import KeyBar
 
 if TYPE_CHECKING:  # the settings' module is imported when the dialog first opens
     from tui_search.tui.dialogs.settings_choice import SettingsChoice
+    from tui_search.tui.widgets.graph_view import GraphView
     from tui_search.tui.widgets.lesson_panel import LessonPanel
 
 
@@ -135,7 +137,7 @@ class MainScreen(PanesScreen):
         session = self.session
         shown = [get_algorithm(c.algorithm) for c in session.contenders]
         self.app.push_screen(SettingsScreen(session.semantics, shown[0], session.comparison,
-                                            shown), self._settings_chosen)
+                                            shown, graph=session.graph), self._settings_chosen)
 
     def _settings_chosen(self, chosen: SettingsChoice | None) -> None:
         if chosen is not None:
@@ -156,6 +158,10 @@ class MainScreen(PanesScreen):
     def _exercise_shown(self, rules: str) -> None:
         """The challenge checked; the panes' searches anew under the exercise's rules when
         they changed (``rules``: the note saying so)."""
+        if self.session.graph is not None and self.session.exercise is not None:
+            self.session.show_exercise(None)  # the built-in exercises are on grids
+            self.warn("The built-in exercises are on grids: open a grid for them")
+            return
         if rules:
             self.playback.pause()
             self.session.new_runs(rules)
@@ -189,12 +195,12 @@ class MainScreen(PanesScreen):
         """A pick in the quiz's panel moves the cursor there; a double click also answers."""
         if not self.session.quiz.on or message.panel is not self.quiz_panel:
             return
-        self.move_cursor(as_cell(message.cell))
+        self.move_cursor(message.cell)
         if message.answer:
             self.action_answer()
 
     # -- the map ---------------------------------------------------------------------------
-    def move_cursor(self, cell: tuple[int, int]) -> None:
+    def move_cursor(self, cell: State) -> None:
         if self.session.move_cursor(cell):
             for view in self.views:  # one cursor, on every pane's map
                 view.set_cursor(cell)
@@ -202,8 +208,22 @@ class MainScreen(PanesScreen):
             self.show_readout()
 
     def action_move(self, dx: int, dy: int) -> None:
-        x, y = self.session.cursor
-        self.move_cursor((x + dx, y + dy))
+        """The cursor a cell that way; on a graph, to the nearest node that way."""
+        view = self.views[0]
+        if isinstance(view, GridView):
+            x, y = as_cell(self.session.cursor)
+            self.move_cursor((x + dx, y + dy))
+        else:
+            view.action_toward({(0, -1): "up", (0, 1): "down", (-1, 0): "left",
+                                (1, 0): "right"}[(dx, dy)])
+
+    def on_graph_view_cursor_moved(self, message: GraphView.CursorMoved) -> None:
+        """A graph's cursor moved (arrows, Tab, the mouse): the session's and every pane's."""
+        graph = self.session.graph
+        if graph is not None and 0 <= message.node < len(graph):
+            node = graph.names[message.node]
+            if node != self.session.cursor:
+                self.move_cursor(node)
 
     def _edited(self, refusal: str | None) -> None:
         if refusal is not None:
@@ -224,6 +244,11 @@ class MainScreen(PanesScreen):
     def action_brush(self, cost: float | None = None) -> None:
         """The brush's next cost (``b``), or ``cost`` (the palette's; 0: off)."""
         edits = self.session.edits
+        if self.session.graph is not None:
+            from tui_search.tui.model.graph_edits import NO_TERRAIN
+
+            self.warn(NO_TERRAIN)
+            return
         if cost is None:
             edits.cycle_brush()
         else:
@@ -263,7 +288,7 @@ class MainScreen(PanesScreen):
         self.move_cursor(message.cell)
         self._stroke = None
         edits, cell = self.session.edits, message.cell
-        grid = edits.grid
+        grid = self.session.grid
         if message.button != 1 or self.views[0].overview:
             return
         if edits.brush is not None:  # the terrain brush: the stroke paints its cost
@@ -305,15 +330,21 @@ class MainScreen(PanesScreen):
             view.zoom(steps)
 
     def action_labels(self) -> None:
-        for view in self.views:
+        views = self.grid_views
+        if not views:
+            self.warn("A graph's nodes are labelled with their names: no cell labels")
+            return
+        for view in views:
             mode = view.cycle_labels()
         self.note(f"Cell labels: {mode}", "labels", timeout=2)
 
     def action_page(self, pages: int) -> None:
         """The cursor a screenful of cells up or down (at least one cell)."""
         view = self.views[0]
+        if not isinstance(view, GridView):
+            return  # a graph's nodes have no pages: the arrows and Tab go node to node
         rows = view.geometry.rows_in(view.scrollable_content_region.height)
-        x, y = self.session.cursor
+        x, y = as_cell(self.session.cursor)
         y = max(0, min(self.session.grid.height - 1, y + pages * max(1, rows - 1)))
         self.move_cursor((x, y))
 
@@ -321,13 +352,13 @@ class MainScreen(PanesScreen):
         """The cursor to the start, the goal or the node being expanded (when there is one)."""
         session = self.session
         run = session.run
-        cell = {"start": session.grid.start, "goal": session.grid.goal,
+        cell = {"start": session.board.start, "goal": goal_of(session.board),
                 "current": run.now.current_node() if run is not None else None}[where]
         if cell is None:
             self.warn({"start": "No start on the map", "goal": "No goal on the map",
                        "current": "No node is being expanded (step 0)"}[where])
             return
-        self.move_cursor(as_cell(cell))
+        self.move_cursor(cell)
 
     # -- files and screens -----------------------------------------------------------------
     def action_save(self) -> None:
@@ -347,6 +378,9 @@ class MainScreen(PanesScreen):
 
     def action_export(self) -> None:
         """The palette's Export: the run as a file (tui/screens/export_command.py)."""
+        if self.session.graph is not None:
+            self.warn("Exports (.svg, .cast, .gif, .md) are of a grid's search, not yet a graph's")
+            return
         from tui_search.tui.screens.export_command import ask_export  # only when asked
 
         ask_export(self, self.session, self.file_access, getattr(self.app, "exporter", None))

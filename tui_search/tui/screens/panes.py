@@ -22,14 +22,22 @@ from textual.screen import Screen
 from textual.widget import AwaitMount, Widget
 from textual.widgets import Static
 
+from tui_search.engine.maps.grid import Grid
 from tui_search.engine.search.state import State
 from tui_search.engine.util.filenames import describe_name
 from tui_search.tui.model import playback
+from tui_search.tui.model.boards import holds
 from tui_search.tui.model.file_rules import FileAccess
 from tui_search.tui.model.session import NEEDS_ENDPOINTS, Before, Session
 from tui_search.tui.screens.keys import KEY_IMPORTANCE
 from tui_search.tui.screens.playback_driver import PlaybackDriver
-from tui_search.tui.view.layout import GUTTER, PANE_STATS_HEIGHT, arrange, lesson_width
+from tui_search.tui.view.layout import (
+    GUTTER,
+    PANE_STATS_HEIGHT,
+    arrange,
+    board_size,
+    lesson_width,
+)
 from tui_search.tui.view.readout import describe_each
 from tui_search.tui.view.status_lines import screen_rows, screen_status
 from tui_search.tui.widgets.cell_readout import CellReadout
@@ -48,6 +56,7 @@ if TYPE_CHECKING:
     from tui_search.tui.screens.file_commands import FileCommands
     from tui_search.tui.widgets.challenge import ChallengePanel
     from tui_search.tui.widgets.compare_table import CompareTable
+    from tui_search.tui.widgets.graph_view import GraphView
     from tui_search.tui.widgets.lesson_panel import LessonPanel
 
 MIN_WIDTH, MIN_HEIGHT = 60, 20
@@ -62,7 +71,7 @@ CHALLENGE_LINES = 8
 class PanesScreen(Screen[None]):
     """The session's panes and everything around them."""
 
-    AUTO_FOCUS = "GridView"
+    AUTO_FOCUS = "GridView, GraphView"
     #: How much each key's hint matters in the key bar (the by-hand screen has its own).
     IMPORTANCE = KEY_IMPORTANCE
 
@@ -75,7 +84,7 @@ class PanesScreen(Screen[None]):
         # what a mouse drag paints: True wall, False free, "brush" the terrain brush's cost
         self._stroke: bool | str | None = None
         self._bindings_key: tuple[object, ...] = ()
-        self._terrain = session.grid.costs is not None  # what the legend was drawn for
+        self._terrain = self._has_terrain()  # what the legend was drawn for
         self._fitted_lines = (-1, -1, -1)  # the status lines' heights last fitted to
         self._code_shown = False  # some pane showed the Code panel when last fitted
         self._last_note: tuple[str, float] | None = None  # the last note's kind, its end
@@ -133,12 +142,21 @@ class PanesScreen(Screen[None]):
     def _new_panes(self, labels: list[str] | None = None) -> list[RunPane]:
         """A pane for each of ``labels`` (default: every search shown)."""
         session = self.session
-        return [RunPane(session.grid, label, NEEDS_ENDPOINTS)
+        return [RunPane(session.board, label, NEEDS_ENDPOINTS)
                 for label in (session.labels if labels is None else labels)]
 
     @property
-    def views(self) -> list[GridView]:
+    def views(self) -> list[GridView | GraphView]:
         return [pane.view for pane in self.panes]
+
+    @property
+    def grid_views(self) -> list[GridView]:
+        """The views of a grid's cells (none when a graph is shown)."""
+        return [view for view in self.views if isinstance(view, GridView)]
+
+    def _has_terrain(self) -> bool:
+        board = self.session.board
+        return isinstance(board, Grid) and board.costs is not None
 
     def on_mount(self) -> None:
         self.playback.start()
@@ -209,10 +227,9 @@ class PanesScreen(Screen[None]):
             challenge = CHALLENGE_LINES if (self.session.exercise is not None
                                             or self.session.by_hand is not None) else 0
             height = self.size.height - 4 - legend - challenge
-        grid = self.session.grid
         self._fitted_lines = self._lines_measured()
         stats = self._fitted_lines[0] or PANE_STATS_HEIGHT
-        arrangement = arrange(len(self.panes), width, height, (grid.width, grid.height),
+        arrangement = arrange(len(self.panes), width, height, board_size(self.session.board),
                               table_height=table_height,
                               fold_trees=self.session.fold_trees and not self.session.show_code,
                               stats_height=stats,
@@ -280,7 +297,7 @@ class PanesScreen(Screen[None]):
                 pane.view.set_view_state(state)  # zoom, labels, overview: as the others
             self.call_later(self._panes_changed, removing, mounting)
         self._check_exercise()
-        terrain = session.grid.costs is not None
+        terrain = self._has_terrain()
         if terrain != self._terrain:  # the legend shows the ramp, or no longer
             self._terrain = terrain
             self.legend.refresh(layout=True)
@@ -299,6 +316,14 @@ class PanesScreen(Screen[None]):
         self.fit_panes()
         self.present()
 
+    def _replace_panes(self) -> None:
+        """New panes of the board's kind (a grid's views, or a graph's)."""
+        gone, self.panes = self.panes, self._new_panes()
+        removing = [pane.remove() for pane in gone]
+        mounting = self.pane_box.mount_all(self.panes)
+        self.legend.view = self.panes[0].view
+        self.call_later(self._panes_changed, removing, mounting)
+
     def show_lesson(self) -> None:
         """The lesson's section shown (``--lesson``), and its keys."""
         play = self.session.lesson
@@ -309,9 +334,15 @@ class PanesScreen(Screen[None]):
 
     def show_map(self) -> None:
         """The map was replaced or saved: every view on it, then show."""
+        board = self.session.board
+        if any(isinstance(view, GridView) != isinstance(board, Grid) for view in self.views):
+            self._replace_panes()  # a grid after a graph, or a graph after a grid
         for view in self.views:
-            if view.grid is not self.session.grid:
-                view.set_grid(self.session.grid)
+            if isinstance(view, GridView):
+                if isinstance(board, Grid) and view.grid is not board:
+                    view.set_grid(board)
+            elif not isinstance(board, Grid) and view.graph is not board:
+                view.set_graph(board)
             view.set_cursor(self.session.cursor)
         self.new_runs_shown()
         self.fit_panes()
@@ -358,10 +389,11 @@ class PanesScreen(Screen[None]):
         """What the runs know of the cell under the mouse, else of the cursor's."""
         session = self.session
         hover = next((v.hover for v in self.views if v.hover is not None), None)
+        cell: State
         cell, label = (hover, "Mouse") if hover is not None else (session.cursor, "Cursor")
-        if not session.grid.in_bounds(cell):
+        if not holds(session.board, cell):
             cell, label = session.cursor, "Cursor"
-        self.readout.show(label, describe_each(session.runs, session.names, session.grid, cell))
+        self.readout.show(label, describe_each(session.runs, session.names, session.board, cell))
 
     @property
     def quiz_panel(self) -> FrontierPanel:
@@ -402,7 +434,8 @@ class PanesScreen(Screen[None]):
     def _check_exercise(self) -> None:
         """The challenge panel shown while an exercise is, with its verdict on the map as it is
         now (:func:`~tui_search.tui.screens.exercise_check.check_exercise`)."""
-        shown = self.session.exercise is not None
+        # (a grid's exercise: a graph's are not checked live yet)
+        shown = self.session.exercise is not None and self.session.graph is None
         if self.has_class("-challenge") != shown:
             self.set_class(shown, "-challenge")
             self._show_part(self.challenge, shown)

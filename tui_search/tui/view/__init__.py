@@ -15,5 +15,6 @@
 * :mod:`~tui_search.tui.view.tree_listing`: which nodes the tree panel lists;
 * :mod:`~tui_search.tui.view.tree_shape`: the search tree's shape, kept in step;
 * :mod:`~tui_search.tui.view.tree_window`: a tree's line as a sideways scroll shows it;
-* :mod:`~tui_search.tui.view.themes`: the colour themes, as data.
+* :mod:`~tui_search.tui.view.themes`: the colour themes, as data;
+* :mod:`~tui_search.tui.view.graph_layout`: a graph drawn in cells: places, labels, tiles.
 """

@@ -38,6 +38,14 @@ class EntryRows(NamedTuple):
     width: int  # the widest row
 
 
+def move_text(run: "Run", g: int) -> str:
+    """The entry's move: a grid's direction, START; nothing on a graph, whose move is the
+    node it reaches (the entry's own name)."""
+    if run.graph is not None and run.nodes.parent(g) >= 0:
+        return ""
+    return run.nodes.move(g)
+
+
 def cost_bound(run: "Run") -> float:
     """A cost no path costs more than, for a cost column's width: the straight-line cost
     across the map, or every road of the graph."""
@@ -138,7 +146,7 @@ def entry_row(run: "Run", g: int, plan: EntryRows, row: int, marks: tuple[bool, 
             piece = (f"d={group_digits(run.nodes.depth(g))}".ljust(depth_w),
                      "frontier-panel--detail")
         elif slot == "move":
-            piece = (run.nodes.move(g).ljust(DIR_W), main)
+            piece = (move_text(run, g).ljust(DIR_W), main)
         else:  # a figure, pressed close: "f6.41"
             piece = (shown[int(slot)].replace(" ", "", 1), stale)
         if parts and (row == 0 or parts[-1][0].strip()):
@@ -168,7 +176,7 @@ def entry_line(run: "Run", g: int, marks: tuple[bool, bool], widths: tuple[int, 
         parts.append((depth, "frontier-panel--detail"))
         parts.append((" ", main))
         used += len(depth) + 1
-    move = run.nodes.move(g).ljust(DIR_W)
+    move = move_text(run, g).ljust(DIR_W)
     parts.append((move, main))
     used += len(move)
     if cost_w:

@@ -14,10 +14,15 @@ the room they left at their least) while the rows under it that they take were b
 """
 
 # No future import: CONTRIBUTING.md, "Start-up".
+import math
 from collections.abc import Callable
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
+from tui_search.engine.maps.grid import Grid
 from tui_search.tui.view.geometry import Geometry
+
+if TYPE_CHECKING:
+    from tui_search.engine.maps.graph import Graph
 
 #: Panes stand side by side while each is at least this wide (else in a grid of fewer
 #: columns), and are fitted to at least this many lines when a grid is chosen.
@@ -273,6 +278,16 @@ def frontier_lines(column: int, need: int) -> int | None:
     if need <= column // 3 or need > column - UNDER_FRONTIER_MIN:
         return None
     return need
+
+
+def board_size(board: "Grid | Graph") -> tuple[int, int]:
+    """The map's size the layout plans for, in cells of 2 characters by 1 line: a grid's;
+    for a graph (drawn to fill the room it is given) a size that grows with its nodes, from
+    room for a few marks and names to a box that leaves the lists their share."""
+    if isinstance(board, Grid):
+        return board.width, board.height
+    side = math.isqrt(max(0, len(board) - 1)) + 1
+    return min(40, max(16, 6 * side)), min(20, max(12, 4 * side))
 
 
 def lesson_width(screen_width: int) -> int:

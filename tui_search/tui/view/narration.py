@@ -8,6 +8,7 @@ the same thing about the step the run is at.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
 from weakref import WeakKeyDictionary
 
 from tui_search.engine.run.recorded import Run
@@ -15,6 +16,9 @@ from tui_search.engine.search.registry import get_algorithm
 from tui_search.engine.search.state import State, as_cell, state_text
 from tui_search.engine.util.numbers import group_digits, power_text
 from tui_search.tui.view.code_trace import line_notes
+
+if TYPE_CHECKING:
+    from tui_search.engine.maps.graph import Graph
 
 
 def gave_up_text(run: Run) -> str:
@@ -72,6 +76,8 @@ def _terrain(run: Run, expanded: int, added: range) -> list[str]:
     """What the terrain added to the step's successors' g: "(3,4) costs 5: g 7.41 → 12.41"
     (the expanded node's g, then the successor's), for those that do not cost 1."""
     costs = run.nodes.costs(expanded)
+    if run.graph is not None:  # a graph's roads cost what they cost: no terrain
+        return []
     grid = run.grid
     if costs is None or grid.costs is None:
         return []
@@ -194,6 +200,8 @@ def blocked_by(run: Run) -> str | None:
     """The rule that left the map without a path, if one did (searched once per run, on
     maps of at most :data:`BLOCKED_BY_CELLS` cells: the app must not freeze to say it).  Never
     for a replayed trace: its rules are the matched search's, not ones the trace declared."""
+    if run.graph is not None:  # a graph's rules block no road
+        return None
     too_big = run.grid.width * run.grid.height > BLOCKED_BY_CELLS
     if run.replayed or run.semantics.is_default or too_big:
         return None
@@ -236,7 +244,13 @@ def result_text(run: Run) -> str:
         return "no path"
     moves = run.moves() or []
     cost = run.path_cost()
-    text = f"path: {group_digits(len(moves))} moves, cost {cost:.2f}"
+    path = run.path() or []
+    if run.graph is not None and len(path) <= ROUTE_NAMED:  # "Arad → Sibiu → …, cost 418"
+        text = f"path {' → '.join(map(str, path))}, cost {cost:g}"
+    elif run.graph is not None:
+        text = f"path: {group_digits(len(moves))} roads, cost {cost:g}"
+    else:
+        text = f"path: {group_digits(len(moves))} moves, cost {cost:.2f}"
     lowest = lowest_cost(run)
     if lowest is not None:
         text += " (the lowest)" if cost <= lowest * (1 + 1e-9) else f" (lowest {lowest:.2f})"
@@ -245,6 +259,9 @@ def result_text(run: Run) -> str:
 
 _LOWEST: WeakKeyDictionary[Run, float | None] = WeakKeyDictionary()
 
+
+#: A graph's path is named node by node up to this many nodes (beyond: its roads counted).
+ROUTE_NAMED = 8
 
 #: Maps bigger than this are not searched again for the lowest cost (a whole uniform-cost
 #: search: benchmarks/README.md, "limits").
@@ -257,12 +274,20 @@ def lowest_cost(run: Run) -> float | None:
     run, on maps of at most :data:`LOWEST_COST_CELLS` cells (None above)."""
     if run.known_lowest is not None:
         return run.known_lowest
-    if run.grid.width * run.grid.height > LOWEST_COST_CELLS:
+    graph = run.graph
+    size = len(graph) if graph is not None else run.grid.width * run.grid.height
+    if size > LOWEST_COST_CELLS:
         return None
     if run not in _LOWEST:
         sem = run.semantics.replace(goal_test=None, tree_search=False, visit="generate")
-        _LOWEST[run] = Run(run.grid, "ucs", sem).outcome().cost
+        _LOWEST[run] = Run(run.board, "ucs", sem).outcome().cost
     return _LOWEST[run]
+
+
+def most_roads(graph: Graph) -> int:
+    """The most roads out of one node: a graph's branching factor ``b``."""
+    starts = graph.data.outgoing()[0]
+    return max((b - a for a, b in zip(starts, starts[1:], strict=False)), default=1)
 
 
 def bound_text(run: Run) -> str:
@@ -271,7 +296,8 @@ def bound_text(run: Run) -> str:
     something a student can test.  Past 13 digits it says how big, not every digit (a path of
     10,295 moves has a bound of 8,701 digits)."""
     depth = len(run.moves() or [])
-    base = max(1, run.semantics.branching - 1)
+    graph = run.graph
+    base = max(1, (most_roads(graph) if graph is not None else run.semantics.branching) - 1)
     return f"generated {run.now.generated:,} of at most {power_text(base, depth + 1)}"
 
 

@@ -4,36 +4,51 @@ widget shows the string)."""
 
 from __future__ import annotations
 
-from tui_search.engine.maps.grid import Cell, Grid
+from typing import TYPE_CHECKING
+
+from tui_search.engine.maps.grid import Grid
 from tui_search.engine.run.position import CellState
 from tui_search.engine.run.recorded import Run
+from tui_search.engine.search.state import State
 from tui_search.engine.util.numbers import group_digits
 from tui_search.tui.model.cell_edits import cell_text
+
+if TYPE_CHECKING:
+    from tui_search.engine.maps.graph import Graph
 
 
 def _number(value: float) -> str:
     return f"{value:.2f}".rstrip("0").rstrip(".")
 
 
-def cell_head(grid: Grid, cell: Cell) -> str:
-    """``(3,4)``, or ``(3,4) costs 5`` on terrain (a free cell that does not cost 1)."""
+def cell_head(grid: Grid | Graph, cell: State) -> str:
+    """``(3,4)``, or ``(3,4) costs 5`` on terrain (a free cell that does not cost 1); a
+    graph's node by its name."""
+    if not isinstance(grid, Grid) or isinstance(cell, str):
+        return cell_text(cell)
     cost = grid.cost(cell)
     if cost == 1.0 or grid.is_blocked(cell):
         return cell_text(cell)
     return f"{cell_text(cell)} costs {_number(cost)}"
 
 
-def describe(run: Run | None, grid: Grid, cell: Cell) -> str:
+def _blocked(board: Grid | Graph, state: State) -> bool:
+    if isinstance(board, Grid):
+        return isinstance(state, tuple) and board.is_blocked(state)
+    return str(state) in board.closed
+
+
+def describe(run: Run | None, grid: Grid | Graph, cell: State) -> str:
     """``cell``'s coordinates and what it is: an obstacle, never reached, on the frontier
     since a step, expanded at a step, with its depth, costs and the move that reached it
     (of its latest event at the run's position)."""
     head = cell_head(grid, cell)
-    if grid.is_blocked(cell):
-        return f"{head}: obstacle"
+    if _blocked(grid, cell):
+        return f"{head}: {'obstacle' if isinstance(grid, Grid) else 'closed'}"
     parts = []
     if cell == grid.start:
         parts.append("the start")
-    elif cell == grid.goal:
+    elif cell == grid.goal if isinstance(grid, Grid) else cell in grid.goals:
         parts.append("the goal")
     g = run.now.last_event(cell) if run is not None else None
     if run is None or g is None:
@@ -73,10 +88,10 @@ def describe(run: Run | None, grid: Grid, cell: Cell) -> str:
     return f"{head}: {', '.join(parts)}"
 
 
-def describe_each(runs: list[Run], names: list[str], grid: Grid, cell: Cell) -> str:
+def describe_each(runs: list[Run], names: list[str], grid: Grid | Graph, cell: State) -> str:
     """What each run knows of ``cell``, in a line -- "(3,4): BFS expanded at step 5, depth 3 …
     │ DFS never reached"; ``names`` name the runs ("": not named).  An obstacle is said once."""
-    if not runs or grid.is_blocked(cell):
+    if not runs or _blocked(grid, cell):
         return describe(runs[0] if runs else None, grid, cell)
     bodies = [describe(run, grid, cell).partition(": ")[2] for run in runs]
     return f"{cell_head(grid, cell)}: " + " │ ".join(

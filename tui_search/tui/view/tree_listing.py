@@ -301,7 +301,7 @@ class TreeModel:
         depth limit), then ``detail`` (sibling counts)."""
         run = self._run
         assert run is not None
-        label = f"{run.nodes.move(g)} {state_text(run.nodes.cell(g))}"
+        label = node_label(run, g)
         goal = g == self._goal and bool(self._path)
         if g in self._path:  # the answer, at the end, outranks everything (as on the grid)
             cls = "path"
@@ -390,5 +390,15 @@ class TreeModel:
             return "  only child"
         return f"  child {g - sibs.start + 1} of {len(sibs)}"
 
+
+
+def node_label(run: Run, g: int) -> str:
+    """A node as the tree lists it: its move and its cell (``NE (3,4)``); on a graph, whose
+    moves are the nodes they reach, its name and its road's cost (``Sibiu 140``)."""
+    graph, nodes = run.graph, run.nodes
+    if graph is None or nodes.parent(g) < 0:
+        return f"{nodes.move(g)} {state_text(nodes.cell(g))}"
+    name, parent = str(nodes.cell(g)), str(nodes.cell(nodes.parent(g)))
+    return f"{name} {graph.cost(parent, name):g}"
 
 __all__ = ["TreeModel"]

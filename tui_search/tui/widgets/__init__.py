@@ -4,6 +4,8 @@
 * :mod:`~tui_search.tui.widgets.pane_box`: the panes' grid, which says when its room changes;
 * :mod:`~tui_search.tui.widgets.grid_view`: the map, drawn with the line API;
 * :mod:`~tui_search.tui.widgets.map_lines`: what each row of the map draws;
+* :mod:`~tui_search.tui.widgets.graph_view`: a graph, drawn with the line API;
+* :mod:`~tui_search.tui.widgets.graph_lines`: what each row of the graph draws;
 * :mod:`~tui_search.tui.widgets.cell_style`: how each map cell looks;
 * :mod:`~tui_search.tui.widgets.frontier_panel`: the queue, stack or priority queue;
 * :mod:`~tui_search.tui.widgets.search_tree`: the search tree panel;

@@ -79,7 +79,8 @@ class CompareTable(PartsLines):
                     parts.append((" *", "compare-table--mark"))
             lines.append(plain(parts))
         if all(s is None for s in steps):
-            sentence = summary_sentence(rows, runs[0].grid.costs is not None)
+            terrain = runs[0].graph is None and runs[0].grid.costs is not None
+            sentence = summary_sentence(rows, terrain)
             lines += [plain([(MARKS_KEY, "compare-table--key")], prose=True),
                       plain([(sentence, "compare-table--sentence")], prose=True)]
             text += [MARKS_KEY, sentence]

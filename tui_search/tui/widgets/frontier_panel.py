@@ -37,7 +37,6 @@ from textual.binding import Binding, BindingType
 from textual.geometry import Size
 from textual.message import Message
 
-from tui_search.engine.maps.grid import Cell
 from tui_search.engine.search.registry import Frontier
 from tui_search.engine.search.state import State
 from tui_search.engine.util.numbers import group_digits
@@ -163,7 +162,7 @@ class FrontierPanel(LinePanel):
         self._top_key: object = None
         self._top_cache: list[Parts] = []
         self._by_cell: list[int] | None = None  # the quiz: the entries sorted by cell
-        self._pick: Cell | None = None  # the quiz: the entry marked as picked (the cursor)
+        self._pick: State | None = None  # the quiz: the entry marked as picked (the cursor)
         self.border_title = "Frontier"
 
     # -- the contract with the app ----------------------------------------------------------
@@ -293,7 +292,7 @@ class FrontierPanel(LinePanel):
             self._top_key, self._top_cache = key, rows
         return self._top_cache
 
-    def set_pick(self, cell: Cell | None) -> None:
+    def set_pick(self, cell: State | None) -> None:
         """Mark the entry of ``cell`` as the quiz's pick (None: none), in view when listed."""
         if cell == self._pick:
             return

@@ -12,6 +12,7 @@ what the mouse did (``CellClicked``, ...); the screen decides what an edit means
 from __future__ import annotations
 
 from collections.abc import Iterable
+from typing import cast
 
 from rich.style import Style
 from textual import events
@@ -22,6 +23,7 @@ from textual.strip import Strip
 
 from tui_search.engine.maps.grid import Cell, Grid
 from tui_search.engine.run.recorded import Run
+from tui_search.engine.search.state import State, as_cell
 from tui_search.tui.view.cell_codes import COMPONENTS
 from tui_search.tui.view.cell_labels import LABEL_MODES
 from tui_search.tui.view.geometry import Geometry, snapped
@@ -141,7 +143,8 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
             old, self.marks = self.marks, marks
             self.refresh_cells(old ^ marks)
 
-    def set_cursor(self, cell: Cell) -> None:
+    def set_cursor(self, at: State) -> None:
+        cell = as_cell(at)
         old, self.cursor = self.cursor, cell
         self.refresh_cells((old, cell))
         self.follow(cell)
@@ -191,10 +194,12 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         another view of the same map (compare mode's new panes)."""
         return self.fitted, self._level, self._overview, self.labels
 
-    def set_view_state(self, state: tuple[bool, int, bool, str]) -> None:
-        if state == self.view_state():
+    def set_view_state(self, state: object) -> None:
+        """``state``: another view's :meth:`view_state` (a graph's view's is not a grid's)."""
+        if not isinstance(state, tuple) or state == self.view_state():
             return
-        self.fitted, self._level, self._overview, self.labels = state
+        self.fitted, self._level, self._overview, self.labels = cast(
+            "tuple[bool, int, bool, str]", state)
         self._refit()
 
     def cycle_labels(self) -> str:

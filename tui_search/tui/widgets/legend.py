@@ -4,6 +4,8 @@ the ramp that shades a free cell by its cost too."""
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from rich.style import Style
 from rich.text import Text
 from textual.geometry import Size
@@ -12,6 +14,7 @@ from textual.widget import Widget
 from tui_search.tui.view.cell_codes import (
     COMPONENTS,
     CURRENT,
+    CURSOR_MARK,
     EXPANDED,
     FREE,
     FRONTIER,
@@ -23,6 +26,9 @@ from tui_search.tui.view.cell_codes import (
 )
 from tui_search.tui.widgets.cell_style import RAMP_NAMES
 from tui_search.tui.widgets.grid_view import GridView
+
+if TYPE_CHECKING:
+    from tui_search.tui.widgets.graph_view import GraphView
 
 ENTRIES = (
     (START, "start"),
@@ -46,26 +52,42 @@ class Legend(Widget):
     }
     """
 
-    def __init__(self, view: GridView, *, id: str | None = None) -> None:
+    def __init__(self, view: GridView | GraphView, *, id: str | None = None) -> None:
         super().__init__(id=id)
         self.view = view
 
     def entries(self, styled: bool = True) -> list[Text]:
         """The entries, in the looks the map draws with (read once a restyle, by the map);
         not ``styled``: the same text without styles (all the packing needs)."""
-        looks = self.view.cell_looks() if styled else None
+        view = self.view
+        if not isinstance(view, GridView):  # a graph's marks, in the graph's looks
+            return self._graph_entries(view, styled)
+        looks = view.cell_looks() if styled else None
 
         def look(code: int) -> tuple[str, Style | str]:
             return looks.codes[code] if looks else (GLYPHS[code % len(COMPONENTS)], "")
 
         out = [Text.assemble(look(code), f" {name}") for code, name in ENTRIES]
         out.append(Text.assemble(look(FREE + len(COMPONENTS)), " cursor"))
-        if self.view.grid.costs is not None:  # terrain: the ramp that shades a free cell's cost
+        if view.grid.costs is not None:  # terrain: the ramp that shades a free cell's cost
             ramp: list[Style | str] = list(looks.ramp[1:]) if looks else [""] * len(RAMP_NAMES)
             # the ramp's steps for each look (plain, under the cursor, marked): the plain ones named
             out.append(Text.assemble(*(
                 (f" {name} ", style) for name, style in zip(RAMP_NAMES, ramp, strict=False)),
                 " cost"))
+        return out
+
+    @staticmethod
+    def _graph_entries(view: GraphView, styled: bool) -> list[Text]:
+        """A graph's entries: each mark as the graph view draws it, closed for obstacle."""
+        from tui_search.tui.widgets.graph_lines import MARKS
+
+        looks = view.looks() if styled else None
+        out = []
+        for code, name in ENTRIES:
+            glyph, style = looks.mark[code] if looks else (MARKS[code], "")
+            out.append(Text.assemble((glyph, style), f" {'closed' if code == WALL else name}"))
+        out.append(Text.assemble((CURSOR_MARK, looks.cursor if looks else ""), " cursor"))
         return out
 
     def _lines(self, width: int, styled: bool = True) -> Text:

@@ -27,7 +27,9 @@ from tui_search.tui.widgets.search_tree import SearchTreePanel
 from tui_search.tui.widgets.stats import Stats
 
 if TYPE_CHECKING:
+    from tui_search.engine.maps.graph import Graph
     from tui_search.tui.widgets.code_panel import CodePanel
+    from tui_search.tui.widgets.graph_view import GraphView
 
 #: The map's box is at least this wide where the pane is, so its title (the file's name) shows.
 MAP_TITLE_WIDTH = 30
@@ -37,11 +39,17 @@ class RunPane(Vertical):
     """A run's pane: ``label`` names its search.  ``note`` is what the lists' place says
     while there is no run (no start or goal)."""
 
-    def __init__(self, grid: Grid, label: str, note: str = "") -> None:
+    def __init__(self, grid: Grid | Graph, label: str, note: str = "") -> None:
         super().__init__(classes="run-pane")
         self.label = label
         self.stats = Stats(classes="pane-stats")
-        self.view = GridView(grid, classes="pane-map")
+        self.view: GridView | GraphView
+        if isinstance(grid, Grid):
+            self.view = GridView(grid, classes="pane-map")
+        else:  # a graph's view: its modules imported for a graph only
+            from tui_search.tui.widgets.graph_view import GraphView
+
+            self.view = GraphView(grid, classes="pane-map -graph")
         self.frontier = FrontierPanel(classes="pane-frontier")
         self.tree_panel = SearchTreePanel(classes="pane-tree")
         self._code: Later[CodePanel] = Later(code_panel)  # made when first shown
@@ -142,9 +150,12 @@ class RunPane(Vertical):
         the frontier panel lists its entries (:meth:`FrontierPanel.show`)."""
         view = self.view
         self._run = run
-        shown = (mark, *marks) if mark is not None else marks
-        view.set_marks(tuple(as_cell(c) for c in shown))  # (the map's: a grid's cells)
-        view.show_run(run, None if changed is None else [as_cell(c) for c in changed])
+        if isinstance(view, GridView):
+            shown = (mark, *marks) if mark is not None else marks
+            view.set_marks(tuple(as_cell(c) for c in shown))  # a grid's cells
+            view.show_run(run, None if changed is None else [as_cell(c) for c in changed])
+        else:
+            view.show_run(run, changed)
         self.set_class(run is None, "-no-run")
         self._show_part(self.side_note, run is None)
         if run is not None:
@@ -155,7 +166,10 @@ class RunPane(Vertical):
                 self.code_panel.show(run)
             node = run.now.current_node()
             if follow and node is not None:
-                view.follow(as_cell(node))
+                if isinstance(view, GridView):
+                    view.follow(as_cell(node))
+                else:
+                    view.follow_node(node)
             if self.stats.display:  # its own status lines, where the layout gives it some
                 status = search_status(run, self.label, in_pane=True, done=run.at_end,
                                        code=self.code_shown)
