@@ -113,7 +113,7 @@ class LazyExporter:
 def app_title(options: Options) -> str:
     """The app's title for a map with no file: a generated map's recipe, a teacher's
     exercise's own map, or the tutorial."""
-    if options.graph is not None:  # a built-in graph (a file's title is its name)
+    if options.graph is not None and options.map is not None:  # a built-in graph
         return f"{options.map} (built-in)"
     name = map_name(options, None)
     return BUILT_IN_TITLE if name == TUTORIAL_NAME else name

@@ -57,7 +57,9 @@ def parse_options(argv: Sequence[str] | None = None) -> Options:
             return options
     if options.headless and options.exercise:  # the class report reads its maps one by one
         return options
-    if names_a_graph(options.map):
+    exercise = options.exercise_read
+    on_graph = exercise is not None and exercise.graph is not None
+    if names_a_graph(options.map) or (on_graph and options.map is None):
         options = _with_graph(options)
     else:
         grid, path, scenario = load_problem(options)
@@ -82,11 +84,16 @@ def _with_graph(options: Options) -> Options:
     from tui_search.cli.graphs import load_graph_problem  # only for a graph
     from tui_search.engine.maps.graph_file import BUILT_IN
 
+    exercise = options.exercise_read
+    on_graph = exercise is not None and exercise.graph is not None
     for flag, given in (("--export", options.export), ("--plain", options.plain),
-                        ("--exercise", options.exercise)):
+                        ("--exercise", options.exercise and not on_graph)):
         if given:
             raise UsageError(f"{flag} runs on a grid; on a graph use the app, --headless or "
                              "--check-trace")
+    if options.map is None:  # an exercise on a graph starts on its own graph
+        assert exercise is not None and exercise.graph is not None
+        return options.replace(graph=exercise.graph.copy(), path=None)
     graph = load_graph_problem(options)
     path = None if options.map in BUILT_IN else Path(str(options.map))
     return options.replace(graph=graph, path=path)

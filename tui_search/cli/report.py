@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import csv
 import sys
+from pathlib import Path
 from typing import TYPE_CHECKING, NamedTuple
 
 from tui_search.cli.flags import (
@@ -20,6 +21,7 @@ from tui_search.cli.flags import (
     load_problem,
     map_name,
 )
+from tui_search.cli.graphs import names_a_graph
 from tui_search.cli.headless import need_endpoints, to_json
 from tui_search.engine.course.exercise_file import Exercise
 from tui_search.engine.course.grading import Verdict, grade
@@ -29,6 +31,7 @@ from tui_search.engine.util.numbers import group_digits
 
 if TYPE_CHECKING:
     from tui_search.cli.options import Options
+    from tui_search.engine.maps.graph import Graph
 
 
 class Graded(NamedTuple):
@@ -77,12 +80,30 @@ def grade_one(options: Options, exercise: Exercise) -> Graded:
     """``options.map`` (with the command line's --start, --goal and --terrain) graded."""
     where = describe_name(options.map) if options.map else map_name(options, None)
     try:
+        if exercise.graph is not None or names_a_graph(options.map):
+            return Graded(where, grade(exercise, _graph_of(options, exercise),
+                                       options.max_steps))
         grid, path, _ = load_problem(options)
         where = describe_name(map_name(options, path))  # escape sequences shown, not run
         need_endpoints(grid, where)
     except MapError as exc:
         return Graded(where, None, _error_text(exc))
+    except UsageError as exc:
+        return Graded(where, None, str(exc))
     return Graded(where, grade(exercise, grid, options.max_steps))
+
+
+def _graph_of(options: Options, exercise: Exercise) -> Graph:
+    """A student's graph file (an exercise on a graph grades graphs), or the exercise's own
+    when no file is named."""
+    from tui_search.cli.graphs import load_graph_problem
+
+    if options.map is None:
+        assert exercise.graph is not None
+        return exercise.graph.copy()
+    if not names_a_graph(options.map):
+        raise UsageError("the exercise is on a graph: a student's file is a .graph")
+    return load_graph_problem(options)
 
 
 def summary(rows: list[Graded]) -> str:
@@ -126,7 +147,12 @@ def run_exercise(options: Options) -> int:
     # A report (a line, a CSV row or a JSON object a map, a bad map one of them) for several
     # maps, and for one under --csv or --json, so that a spreadsheet gets its table and a
     # gradebook script its list whatever the folder holds.
-    if len(options.maps) <= 1 and not ((options.csv or options.json) and options.maps):
+    if (len(options.maps) <= 1 and not ((options.csv or options.json) and options.maps)
+            and (exercise.graph is not None or names_a_graph(options.map))):
+        where = describe_name(options.map) if options.map else Path(exercise.path).name
+        rows = [Graded(where, grade(exercise, _graph_of(options, exercise),
+                                    options.max_steps))]  # a bad graph: exit 2
+    elif len(options.maps) <= 1 and not ((options.csv or options.json) and options.maps):
         grid, path, _ = load_problem(options)  # a bad map is bad input: exit 2
         where = describe_name(map_name(options, path))
         need_endpoints(grid, where)

@@ -1,6 +1,8 @@
 """The course: exercises, their ``solved`` conditions, lessons, and the class's records.
 
 * :mod:`~tui_search.engine.course.exercise_file`: a teacher's exercise file;
+* :mod:`~tui_search.engine.course.toml_places`: a key's line and column in its TOML text;
+* :mod:`~tui_search.engine.course.graph_exercise`: an exercise on a graph: its rules and edits;
 * :mod:`~tui_search.engine.course.condition`: the ``solved`` condition's small language;
 * :mod:`~tui_search.engine.course.grading`: an exercise graded on a map;
 * :mod:`~tui_search.engine.course.lesson`: a lesson's sections;

@@ -23,7 +23,6 @@ line and the column.  Plain Python, no UI.
 from __future__ import annotations
 
 import importlib
-import re
 from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
@@ -31,6 +30,8 @@ from types import ModuleType
 from typing import TYPE_CHECKING, Any
 
 from tui_search.engine.course.condition import ConditionError, Node, names, parse_condition
+from tui_search.engine.course.toml_places import condition_position, key_position, toml_error
+from tui_search.engine.maps.graph import Graph
 from tui_search.engine.maps.grid import Grid, parse_order
 from tui_search.engine.maps.read import MapError, bad_file, read_text
 from tui_search.engine.search.choices import (
@@ -72,7 +73,7 @@ BUILT_IN = Path(__file__).resolve().parents[2] / "exercises"  # tui_search/exerc
 BUILT_IN_FILES = {1: "1-bfs-expands-less.toml", 2: "2-dfs-not-optimal.toml"}
 #: The rules' keys (the search choices, :mod:`tui_search.engine.search.choices`).
 RULE_KEYS = ("order", "corners", "visit", "goal_test", "heuristic", "tree_search")
-_KEYS = ("title", "text", "map", "generate", "seed", "searches", "edits", "solved", "hint",
+_KEYS = ("title", "text", "map", "generate", "graph", "seed", "searches", "edits", "solved", "hint",
          "other_edits", "figures", "by_hand", "mistakes", *RULE_KEYS)
 #: ``seed = "student"``: each student's own map, from their name.
 STUDENT_SEED = "student"
@@ -89,7 +90,7 @@ class Exercise:
     number: int | None  # the tutorial's 1 or 2; None for a teacher's file
     title: str
     text: str
-    grid: Grid  # the exercise's map, as the student starts
+    board: Grid | Graph  # the exercise's map or graph, as the student starts
     searches: tuple[tuple[str, Contender], ...]  # (the condition's name, the search)
     edits: frozenset[str]
     condition: Node
@@ -110,6 +111,17 @@ class Exercise:
     student: str = ""  # the student whose map ``grid`` is ("" none)
 
     @property
+    def grid(self) -> Grid:
+        """The exercise's map (an exercise on a graph has none: :attr:`board`)."""
+        assert isinstance(self.board, Grid), "an exercise on a graph has no grid"
+        return self.board
+
+    @property
+    def graph(self) -> Graph | None:
+        """The exercise's graph (``graph = "FILE"``), else None."""
+        return None if isinstance(self.board, Grid) else self.board
+
+    @property
     def rules(self) -> str:
         """Its rules where they are not the tutorial's, in a few words ("moves N,E,S,W ·
         corners: never"); "" for the tutorial's."""
@@ -126,7 +138,7 @@ class Exercise:
         if not self.student_seed or self.recipe is None or not seed:
             return self
         recipe = self.recipe._replace(seed=seed)
-        return replace(self, grid=generate(recipe, recipe.title), recipe=recipe, student=seed)
+        return replace(self, board=generate(recipe, recipe.title), recipe=recipe, student=seed)
 
     @property
     def name(self) -> str:
@@ -139,57 +151,13 @@ def search_name(spec: str) -> str:
     return spec.strip().replace(":", "_")
 
 
-def key_position(text: str, key: str) -> tuple[int | None, int | None]:
-    """The line and column (from 1) of ``key``'s value in the TOML ``text`` (None: not
-    written at the start of a line)."""
-    m = re.search(rf"^[ \t]*{re.escape(key)}[ \t]*=[ \t]*", text, re.MULTILINE)
-    if m is None:
-        return None, None
-    line = text.count("\n", 0, m.end()) + 1
-    return line, m.end() - (text.rfind("\n", 0, m.end()) + 1) + 1
-
-
-def _condition_position(text: str, offset: int) -> tuple[int | None, int | None]:
-    """Where character ``offset`` of the ``solved`` string is in the file: through a basic
-    string's escapes (``\\"`` is one character of the value, two of the file), past a
-    multi-line string's first newline and a line-ending backslash's whitespace; a literal
-    string (``'...'``) has no escapes."""
-    line, col = key_position(text, "solved")
-    if line is None or col is None:
-        return None, None
-    i = sum(len(row) + 1 for row in text.split("\n")[:line - 1]) + col - 1  # the quote
-    quote = text[i:i + 3] if text[i:i + 3] in ('"""', "'''") else text[i:i + 1]
-    i += len(quote)
-    multi = len(quote) == 3
-    if multi and text[i:i + 1] == "\n":  # the string starts on the next line
-        i += 1
-    while i < len(text):
-        escape = quote[0] == '"' and text[i] == "\\"
-        if escape and multi and text[i + 1:i + 2] in (" ", "\t", "\n"):
-            i += 1  # a line-ending backslash: it and the whitespace after it are no character
-            while i < len(text) and text[i] in " \t\n":
-                i += 1
-            continue
-        if offset == 0:
-            break
-        i += {"u": 6, "U": 10}.get(text[i + 1:i + 2], 2) if escape else 1
-        offset -= 1
-    return text.count("\n", 0, i) + 1, i - (text.rfind("\n", 0, i) + 1) + 1
-
-
-def _toml_error(path: str, exc: Exception) -> MapError:
-    message = str(exc)
-    m = re.search(r"\s*\(at line (\d+), column (\d+)\)$", message)
-    if m is None:
-        return MapError(path, f"not TOML: {message}")
-    return MapError(path, f"not TOML: {message[:m.start()]}", int(m.group(1)), int(m.group(2)))
-
-
-class _Reader:
+class KeyReader:
     """The file's keys, each checked, a MapError at its line for a bad one."""
 
-    def __init__(self, path: str, text: str, data: dict[str, Any]) -> None:
+    def __init__(self, path: str, text: str, data: dict[str, Any],
+                 number: int | None = None) -> None:
         self.path, self.text, self.data = path, text, data
+        self.number = number  # the tutorial's exercise's, None for a teacher's file
 
     def error(self, key: str, message: str) -> MapError:
         line, col = key_position(self.text, key)
@@ -212,7 +180,7 @@ class _Reader:
         return value
 
 
-def _semantics(reader: _Reader) -> Semantics:
+def _semantics(reader: KeyReader) -> Semantics:
     """The rules the file's keys set (the tutorial's for those it leaves out)."""
     data = reader.data
     choices: dict[str, Any] = {}
@@ -241,7 +209,7 @@ def _semantics(reader: _Reader) -> Semantics:
         raise reader.error(next(k for k in RULE_KEYS if k in data), str(exc)) from None
 
 
-def _contenders(reader: _Reader, specs: list[str], semantics: Semantics) -> list[Contender]:
+def _contenders(reader: KeyReader, specs: list[str], semantics: Semantics) -> list[Contender]:
     """``searches`` under the rules: a bad search named at ``searches``, a rule that does not
     apply to one of them at the rule's key."""
     try:
@@ -258,7 +226,7 @@ def _contenders(reader: _Reader, specs: list[str], semantics: Semantics) -> list
         raise reader.error("visit", str(exc)) from None
 
 
-def _grid(reader: _Reader) -> tuple[Grid, Recipe | None, bool]:
+def _grid(reader: KeyReader) -> tuple[Grid, Recipe | None, bool]:
     """The exercise's map, its recipe when generated, and whether it is each student's own
     (``seed = "student"``)."""
     from tui_search.engine.maps.generate import generate, make_recipe, parse_recipe
@@ -293,7 +261,7 @@ def _grid(reader: _Reader) -> tuple[Grid, Recipe | None, bool]:
     return generate(recipe, recipe.title), recipe, seed == STUDENT_SEED
 
 
-def _by_hand(reader: _Reader, specs: list[str]) -> tuple[bool, int]:
+def _by_hand(reader: KeyReader, specs: list[str]) -> tuple[bool, int]:
     """``by_hand`` and its ``mistakes`` allowance, checked against the other keys."""
     data = reader.data
     by_hand = data.get("by_hand", False)
@@ -318,6 +286,35 @@ def _by_hand(reader: _Reader, specs: list[str]) -> tuple[bool, int]:
     return True, mistakes
 
 
+def _rules(reader: KeyReader) -> tuple[Graph | None, Semantics]:
+    """The exercise's graph (``graph = "FILE"``; None: its map is a grid) and the rules its
+    searches run under (a graph's are a graph's)."""
+    if "graph" not in reader.data:
+        return None, _semantics(reader)
+    from tui_search.engine.course.graph_exercise import graph_semantics, read_graph
+
+    if "map" in reader.data or "generate" in reader.data:
+        raise reader.error("graph", "give the exercise a map, a generate or a graph (one)")
+    graph = read_graph(reader)
+    return graph, graph_semantics(reader, graph)
+
+
+def _edits(reader: KeyReader, graph: Graph | None, by_hand: bool) -> list[str]:
+    """``edits``, each one a grid's (or a graph's) edit."""
+    edits = reader.strings("edits", [])
+    if graph is not None:
+        from tui_search.engine.course.graph_exercise import check_graph_edits
+
+        check_graph_edits(reader, edits)
+        if by_hand:
+            raise reader.error("by_hand", "runs on a grid's map, not on a graph")
+        return edits
+    for edit in edits:
+        if edit not in EDITS:
+            raise reader.error("edits", f"unknown edit {edit!r} (use {', '.join(EDITS)})")
+    return edits
+
+
 def parse_exercise(text: str, path: str, number: int | None = None) -> Exercise:
     """The exercise ``text`` (the file ``path``'s contents) says; MapError when it is bad."""
     try:
@@ -327,24 +324,21 @@ def parse_exercise(text: str, path: str, number: int | None = None) -> Exercise:
     except BadInput as err:
         raise bad_file(path, err) from None
     except _toml.TOMLDecodeError as exc:
-        raise _toml_error(path, exc) from None
+        raise toml_error(path, exc) from None
     except RecursionError:  # (a guard: check_nesting refuses anything this deep)
         raise MapError(path, "nested too deep") from None
-    reader = _Reader(path, text, data)
+    reader = KeyReader(path, text, data, number)
     unknown = [k for k in data if k not in _KEYS]
     if unknown:
         raise reader.error(unknown[0], f"unknown key (use {', '.join(_KEYS)})")
     specs = reader.strings("searches")
-    semantics = _semantics(reader)
+    graph, semantics = _rules(reader)
     contenders = _contenders(reader, specs, semantics)
     labels = [search_name(s) for s in specs]
     if len(set(labels)) != len(labels):
         raise reader.error("searches", "a search is named twice")
     by_hand, mistakes = _by_hand(reader, specs)
-    edits = reader.strings("edits", [])
-    for edit in edits:
-        if edit not in EDITS:
-            raise reader.error("edits", f"unknown edit {edit!r} (use {', '.join(EDITS)})")
+    edits = _edits(reader, graph, by_hand)
     other = reader.string("other_edits", "fail")
     if other not in OTHER_EDITS:
         raise reader.error("other_edits", f"{other!r}: use \"fail\" or \"hint\"")
@@ -352,7 +346,7 @@ def parse_exercise(text: str, path: str, number: int | None = None) -> Exercise:
     try:
         condition = parse_condition(solved, labels)
     except ConditionError as exc:
-        line, col = _condition_position(text, exc.offset)
+        line, col = condition_position(text, exc.offset)
         raise MapError(path, f"solved: {exc.message}", line, col) from None
     fields = tuple(names(condition))
     figures = reader.strings("figures", [])
@@ -361,15 +355,28 @@ def parse_exercise(text: str, path: str, number: int | None = None) -> Exercise:
             raise reader.error("figures", f"unknown field {figure!r} (use "
                                f"{', '.join(FIGURES)})")
     shown = tuple(figures) or tuple(dict.fromkeys(f.split(".")[1] for f in fields))
+    board: Grid | Graph
+    if graph is not None:
+        board, recipe, student_seed = graph, None, False
+        return _made(reader, board, labels, contenders, edits, condition, solved, fields, shown,
+                     other, semantics, by_hand, mistakes, recipe, student_seed)
     grid, recipe, student_seed = _grid(reader)
     if grid.start is None or grid.goal is None:
         raise reader.error("generate" if "generate" in data else "map",
                            "the exercise's map needs a start (S) and a goal (G)")
+    return _made(reader, grid, labels, contenders, edits, condition, solved, fields, shown,
+                 other, semantics, by_hand, mistakes, recipe, student_seed)
+
+
+def _made(reader: KeyReader, board: Grid | Graph, labels: list[str],
+          contenders: list[Contender], edits: list[str], *rest: Any) -> Exercise:
+    """The exercise, its searches named (the rest: :class:`Exercise`'s fields from
+    ``condition`` on)."""
     searches = tuple(zip(labels, contenders, strict=False))  # as before: not checked equal
-    return Exercise(path, number, reader.string("title"), reader.string("text"), grid,
-                    searches, frozenset(edits), condition, solved, fields, shown,
-                    reader.string("hint", ""), other, semantics, by_hand, mistakes, recipe,
-                    student_seed)
+    condition, solved, fields, shown, other, semantics, by_hand, mistakes, recipe, seed = rest
+    return Exercise(reader.path, reader.number, reader.string("title"), reader.string("text"),
+                    board, searches, frozenset(edits), condition, solved, fields, shown,
+                    reader.string("hint", ""), other, semantics, by_hand, mistakes, recipe, seed)
 
 
 def load_exercise(path: str | Path, number: int | None = None) -> Exercise:

@@ -21,6 +21,7 @@ from typing import NamedTuple
 
 from tui_search.engine.course.condition import Value, evaluate
 from tui_search.engine.course.exercise_file import Exercise
+from tui_search.engine.maps.graph import Graph
 from tui_search.engine.maps.grid import Grid
 from tui_search.engine.run.recorded import MAX_STEPS, Run
 from tui_search.engine.search.outcome import Outcome
@@ -132,19 +133,31 @@ def changes(grid: Grid, base: Grid) -> list[str]:
 
 
 def _words(items: list[str]) -> str:
-    words = ["the map's size" if i == "size" else f"the {i}" for i in items]
+    special = {"size": "the map's size", "roads": "the graph's nodes and roads",
+               "closed": "the closed nodes"}
+    words = [special.get(i, f"the {i}") for i in items]
     return words[0] if len(words) == 1 else ", ".join(words[:-1]) + " and " + words[-1]
 
 
-def _not_allowed(exercise: Exercise, grid: Grid) -> list[str]:
-    changed = changes(grid, exercise.grid)
+def _not_allowed(exercise: Exercise, grid: Grid | Graph) -> list[str]:
+    base = exercise.board
+    if isinstance(grid, Grid) != isinstance(base, Grid):
+        return ["roads"] if isinstance(base, Graph) else ["size"]
+    if isinstance(grid, Graph):
+        from tui_search.engine.course.graph_exercise import graph_changes
+
+        assert isinstance(base, Graph)
+        return [c for c in graph_changes(grid, base) if c not in exercise.edits]
+    assert isinstance(base, Grid)
+    changed = changes(grid, base)
     if changed == ["size"]:
         return [] if exercise.edits == {"start", "goal", "obstacles", "terrain"} else changed
     return [c for c in changed if c not in exercise.edits]
 
 
-def grade(exercise: Exercise, grid: Grid, max_steps: int = MAX_STEPS) -> Verdict:
-    """``exercise`` on ``grid`` (which has a start and a goal): its searches run whole."""
+def grade(exercise: Exercise, grid: Grid | Graph, max_steps: int = MAX_STEPS) -> Verdict:
+    """``exercise`` on ``grid`` (which has a start and a goal; or on a graph, for an exercise
+    on a graph): its searches run whole."""
     runs = [(name, c.label, Run(grid, c.algorithm, c.semantics, max_steps).outcome())
             for name, c in exercise.searches]
     labelled = [(label, out) for _, label, out in runs]
