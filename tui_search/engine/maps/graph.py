@@ -49,9 +49,9 @@ class Edge(Frozen):
 
 class Names(Sequence[str]):
     """Node names by number, kept as one UTF-8 buffer and where each name ends, and a way to
-    find a name's number: a dictionary (:meth:`indexed`: fast, about 120 bytes a name), or a
-    hash table of numbers over the buffer (open addressing: a few bytes a node beyond its
-    name), for a file so dense in names that a dictionary would take many times its size
+    find a name's number: a dictionary (:meth:`indexed`: fast, a hundred bytes and more a
+    name), or a hash table of numbers over the buffer (open addressing: a few bytes a node
+    beyond its name), for a file so dense in names that a dictionary would take many times its size
     (:meth:`compact`)."""
 
     __slots__ = ("_buf", "_ends", "_index", "_table")

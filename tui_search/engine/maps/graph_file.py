@@ -34,9 +34,9 @@ MAX_GRAPH_BYTES = 64 * 1024 * 1024
 KEYWORDS = ("node", "edge", "arc", "start", "goal", "h")
 #: The longest name a node may have.
 MAX_NAME = 100
-#: Names are numbered through a dictionary (fast, about 120 bytes a name) while there is at
-#: most one a this many bytes of the file (the test of untrusted files holds a reader within
-#: ten times its file); past that, through the compact table of :class:`Names`.
+#: Names are numbered through a dictionary (fast, a hundred bytes and more a name) while
+#: there is at most one a this many bytes of the file (the test of untrusted files holds a
+#: reader within ten times its file); past that, through the compact table of :class:`Names`.
 NAMES_IN_DICT = 40
 #: ... and at least this many names are (a small file is read through a dictionary).
 MIN_IN_DICT = 1024
