@@ -15,7 +15,8 @@ gives a "not installed" row.  See benchmarks/README.md for what each row means.
 
 This file is the entry point only: each section lives in its own module of this package
 (core.py, fallback.py, engine.py, choices.py, informed.py, jump.py, step.py, startup.py,
-instructions.py, class_load.py, terrain.py, big_map.py, diagnose.py), on the shared table.py,
+instructions.py, class_load.py, terrain.py, big_map.py, diagnose.py, graphs.py), on the shared
+table.py,
 harness.py and
 maps.py.
 """
@@ -44,6 +45,7 @@ from benchmarks.core import bench_core
 from benchmarks.diagnose import bench_diagnose
 from benchmarks.engine import bench_engine
 from benchmarks.fallback import bench_fallback
+from benchmarks.graphs import bench_graph
 from benchmarks.harness import NOISE, med
 from benchmarks.informed import bench_informed
 from benchmarks.instructions import bench_instructions
@@ -58,7 +60,8 @@ SECTIONS = {"core": bench_core, "fallback": bench_fallback, "engine": bench_engi
             "choices": bench_choices, "informed": bench_informed, "jump": bench_jump,
             "step": bench_step, "compare": bench_compare, "startup": bench_startup,
             "instructions": bench_instructions, "class_load": bench_class_load,
-            "terrain": bench_terrain, "big_map": bench_big_map, "diagnose": bench_diagnose}
+            "terrain": bench_terrain, "big_map": bench_big_map, "diagnose": bench_diagnose,
+            "graph": bench_graph}
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -18,7 +18,7 @@ from array import array
 import pytest
 
 import benchmarks
-from benchmarks import bench, choices, core, fallback, harness, jump, step, terrain
+from benchmarks import bench, choices, core, fallback, graphs, harness, jump, step, terrain
 from benchmarks.baselines import (
     bare_bfs,
     bare_dfs,
@@ -48,13 +48,24 @@ def test_every_benchmark_module_imports() -> None:
         importlib.import_module(f"benchmarks.{name}")
 
 
-def test_the_entry_point_has_the_fourteen_sections_and_refuses_another(capsys) -> None:
+def test_the_entry_point_has_the_fifteen_sections_and_refuses_another(capsys) -> None:
     assert list(bench.SECTIONS) == ["core", "fallback", "engine", "choices", "informed", "jump",
                                     "step", "compare", "startup", "instructions", "class_load",
-                                    "terrain", "big_map", "diagnose"]
+                                    "terrain", "big_map", "diagnose", "graph"]
     with pytest.raises(SystemExit) as info:
         bench.main(["--only", "engine,nope"])
     assert info.value.code == 2 and "unknown section 'nope'" in capsys.readouterr().err
+
+
+def test_the_graph_section_s_floors_and_the_app_find_the_same_cost(tmp_path) -> None:
+    """Section graph on a 12x12 grid graph: the floor's Dijkstra, the app's parse and UCS run
+    and its command find one cost (untimed)."""
+    path = tmp_path / "g.graph"
+    graphs.write_grid_graph(path, side=12)
+    _, _, _, _, floor_cost = graphs.floors(path)
+    _, _, app_cost = graphs.app_in_process(path)
+    _, _, output = graphs.app_command(path)
+    assert floor_cost == app_cost == json.loads(output)["cost"] > 0
 
 
 def test_the_fallback_sections_probe_compiles() -> None:

@@ -8,6 +8,7 @@ from pathlib import Path
 import pytest
 
 from tests.helpers import ROOT
+from tui_search.engine.maps import graph_file
 from tui_search.engine.maps.graph_file import BUILT_IN, built_in_graph, load_graph, parse_graph
 from tui_search.engine.maps.read import MapError
 
@@ -55,7 +56,8 @@ def test_comments_blank_lines_and_a_bom_are_ignored() -> None:
     assert g.places == [(0.0, 0.0), (1.0, 0.0)] and g.cost("A", "B") == 3
 
 
-@pytest.mark.parametrize(("text", "line", "col", "says"), [
+#: Each error: the file, its line and column, what the message says.
+ERRORS = [
     ("node A\nnode A\n", 2, 6, "node 'A' is declared twice (first on line 1)"),
     ("node A\nnode B\nedge A C\n", 3, 8, "unknown node 'C' (no node line declares it)"),
     ("edge A B 0\n", 1, 10, "the cost '0' is not above 0"),
@@ -77,7 +79,10 @@ def test_comments_blank_lines_and_a_bom_are_ignored() -> None:
     ("edge A B\nedge B A 2\n", 2, 6, "a second road from 'A' to 'B' (the first on line 1)"),
     ("edge A " + "x" * 101 + "\n", 1, 8, "a name of 101 characters: at most 100"),
     ("; nothing\n", None, None, "no nodes"),
-])
+]
+
+
+@pytest.mark.parametrize(("text", "line", "col", "says"), ERRORS)
 def test_each_error_names_the_line_and_column(text: str, line: int | None, col: int | None,
                                               says: str) -> None:
     with pytest.raises(MapError) as caught:
@@ -90,3 +95,32 @@ def test_each_error_names_the_line_and_column(text: str, line: int | None, col: 
 def test_a_missing_file_is_one_line(tmp_path: Path) -> None:
     with pytest.raises(MapError, match="no such file"):
         load_graph(tmp_path / "none.graph")
+
+
+#: Files read the same whether names are found through a dictionary or the compact table:
+#: each error's, Romania, a teaching graph, places and a table with a BOM and comments.
+BOTH_WAYS = [text for text, _, _, _ in ERRORS] + [
+    (ROOT / "tui_search" / "maps" / "romania.graph").read_text("utf-8"),
+    "\ufeffnode A 0 0 ; here\nnode B 1 0\nnode C 2 2\nedge A B 3\narc B C\nedge C A 1.5\n"
+    "h A 2\nh B 1\nh C 0\nstart A\ngoal C\n",
+    "edge A B\nedge B C\nnode A\nnode B\nnode C\nnode D\nedge C D 2\nstart A\ngoal D\n",
+]
+
+
+@pytest.mark.parametrize("text", BOTH_WAYS)
+def test_a_file_dense_in_names_is_read_alike_through_the_compact_table(
+        text: str, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A file of many short new names for its size numbers them through the compact table
+    of ``Names`` (past ``MIN_IN_DICT`` and one name a ``NAMES_IN_DICT`` bytes) instead of a
+    dictionary: forced from the first name, the same graph or the same error."""
+    def read() -> object:
+        try:
+            graph = parse_graph(text, "g.graph")
+        except MapError as error:
+            return str(error)
+        return graph, graph.edges, graph.places, graph.h, [graph.index[n] for n in graph.names]
+
+    dictionary = read()
+    monkeypatch.setattr(graph_file, "MIN_IN_DICT", 1)
+    monkeypatch.setattr(graph_file, "NAMES_IN_DICT", 10**9)
+    assert read() == dictionary

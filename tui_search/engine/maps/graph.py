@@ -17,6 +17,7 @@ from __future__ import annotations
 
 from array import array
 from collections.abc import Iterator, Mapping, Sequence
+from itertools import accumulate
 from math import hypot
 from typing import overload
 
@@ -47,18 +48,46 @@ class Edge(Frozen):
 
 
 class Names(Sequence[str]):
-    """Node names by number, kept as one UTF-8 buffer and where each name ends, with a hash
-    table of numbers (open addressing) to find a name's number: a few bytes a node beyond its
-    name, where a list and a dictionary would take a hundred."""
+    """Node names by number, kept as one UTF-8 buffer and where each name ends, and a way to
+    find a name's number: a dictionary (:meth:`indexed`: fast, a hundred bytes and more a
+    name), or a hash table of numbers over the buffer (open addressing: a few bytes a node
+    beyond its name), for a file so dense in names that a dictionary would take many times its size
+    (:meth:`compact`)."""
 
-    __slots__ = ("_buf", "_ends", "_table")
+    __slots__ = ("_buf", "_ends", "_index", "_table")
 
     def __init__(self, names: Sequence[str] = ()) -> None:
         self._buf = bytearray()
         self._ends = array("I", [0])
+        self._index: dict[str, int] | None = None
         self._table = array("i", [0]) * 8  # a node's number + 1 (0: empty)
         for name in names:
             self.add(name)
+
+    @classmethod
+    def indexed(cls, index: dict[str, int]) -> Names:
+        """The names of ``index`` (each name's number, numbered 0, 1, ... in its order),
+        found through it from now on (it is kept, not copied)."""
+        names = cls()
+        names._table = array("i")
+        names._index = index
+        text = "".join(index)
+        names._buf = bytearray(text.encode())
+        lengths = map(len, index) if len(names._buf) == len(text) else (
+            len(name.encode()) for name in index)  # not all ASCII: the bytes of each
+        names._ends.extend(accumulate(lengths))
+        return names
+
+    def compact(self) -> None:
+        """Find names through the hash table over the buffer from now on, not a dictionary."""
+        index, self._index = self._index, None
+        if index is not None:
+            size = 8
+            while size < 2 * len(index):
+                size *= 2
+            self._table = array("i", [0]) * size
+            for i, name in enumerate(index):
+                self._place(name, i)
 
     def __len__(self) -> int:
         return len(self._ends) - 1
@@ -88,6 +117,8 @@ class Names(Sequence[str]):
 
     def number(self, name: str) -> int:
         """The number of the node called ``name``, or -1."""
+        if self._index is not None:
+            return self._index.get(name, -1)
         table, mask = self._table, len(self._table) - 1
         data, ends = name.encode(), self._ends
         slot = hash(name) & mask
@@ -108,7 +139,9 @@ class Names(Sequence[str]):
         i = len(self)
         self._buf += name.encode()
         self._ends.append(len(self._buf))
-        if 2 * (i + 1) > len(self._table):  # at most half full: short probes
+        if self._index is not None:
+            self._index[name] = i
+        elif 2 * (i + 1) > len(self._table):  # at most half full: short probes
             self._rehash(2 * len(self._table))
         else:
             self._place(name, i)
@@ -167,33 +200,55 @@ class GraphData:
         self.road_directed = bytearray()
         self.road_line = array("I")
         self.h = array("d")  # estimates by node number (empty: no table)
-        self._out: tuple[array[int], array[int]] | None = None
+        self._rows: tuple[array[int], array[int], array[int]] | None = None
+        self._row_costs: array[float] | None = None
 
     def outgoing(self) -> tuple[array[int], array[int]]:
         """Each node's roads out in the file's order, as compressed rows: node ``i``'s are
         ``roads[starts[i]:starts[i + 1]]``, each a road's number times 2, plus 1 when it is
         taken backwards (an undirected road from its ``b`` end)."""
-        if self._out is None:
+        starts, roads, _ = self.rows()
+        return starts, roads
+
+    def rows(self) -> tuple[array[int], array[int], array[int]]:
+        """:meth:`outgoing`'s ``starts`` and ``roads``, and beside each road the node it
+        reaches (``nodes[j]`` for ``roads[j]``)."""
+        if self._rows is None:
             n = len(self.names)
+            road_a, road_b, directed = self.road_a, self.road_b, self.road_directed
             counts = array("I", [0]) * (n + 1)
-            for e, a in enumerate(self.road_a):
+            for a in road_a:
                 counts[a + 1] += 1
-                if not self.road_directed[e]:
-                    counts[self.road_b[e] + 1] += 1
-            for i in range(n):
-                counts[i + 1] += counts[i]
-            fill = array("I", counts)
-            roads = array("i", [0]) * counts[n]
-            for e in range(len(self.road_a)):
-                a = self.road_a[e]
-                roads[fill[a]] = 2 * e
-                fill[a] += 1
-                if not self.road_directed[e]:
-                    b = self.road_b[e]
-                    roads[fill[b]] = 2 * e + 1
-                    fill[b] += 1
-            self._out = (counts, roads)
-        return self._out
+            if 1 in directed:  # some roads go one way: only the others count at their b
+                for b, one_way in zip(road_b, directed, strict=True):
+                    if not one_way:
+                        counts[b + 1] += 1
+            else:
+                for b in road_b:
+                    counts[b + 1] += 1
+            starts = array("I", accumulate(counts))
+            fill = array("I", starts)
+            roads = array("i", [0]) * starts[n]
+            nodes = array("i", [0]) * starts[n]
+            for e, a, b, one_way in zip(range(len(road_a)), road_a, road_b, directed,
+                                        strict=True):
+                j = fill[a]
+                fill[a] = j + 1
+                roads[j], nodes[j] = 2 * e, b
+                if not one_way:
+                    j = fill[b]
+                    fill[b] = j + 1
+                    roads[j], nodes[j] = 2 * e + 1, a
+            self._rows = (starts, roads, nodes)
+        return self._rows
+
+    def row_costs(self) -> array[float]:
+        """The cost of each road of :meth:`rows`, beside it (worked out once: a graph's data
+        never changes)."""
+        if self._row_costs is None:
+            cost = self.road_cost
+            self._row_costs = array("d", [cost[r >> 1] for r in self.rows()[1]])
+        return self._row_costs
 
 
 class Graph:
@@ -302,11 +357,11 @@ class Graph:
     def roads_out(self, i: int) -> Iterator[tuple[int, float, int]]:
         """Node ``i``'s roads out in the file's order: the node each reaches, its cost and
         the road's number (closed nodes included)."""
-        starts, roads = self.data.outgoing()
-        d = self.data
-        for r in roads[starts[i]:starts[i + 1]]:
-            e = r >> 1
-            yield (d.road_a[e] if r & 1 else d.road_b[e]), d.road_cost[e], e
+        starts, roads, nodes = self.data.rows()
+        cost = self.data.road_cost
+        for j in range(starts[i], starts[i + 1]):
+            e = roads[j] >> 1
+            yield nodes[j], cost[e], e
 
     def successors(self, name: str, by_name: bool = False) -> Iterator[tuple[str, float, int]]:
         """The open nodes a road from ``name`` reaches, in the file's order (or by name),

@@ -3,9 +3,10 @@ and what a run's queries ask of a move -- its name (the node it reaches), its co
 road's) and a node's estimate -- the graph's answers where a grid's
 :class:`~tui_search.engine.search.problem.Problem` does arithmetic on padded cells.
 
-A graph is searched by the loop that records the reference
-(:mod:`~tui_search.engine.search.loops.published`): no compiled core is needed for the graphs a
-course draws, and it is the definition itself.
+A graph is searched by a plain Python loop, no compiled core needed: the priority queue's
+under the plain choices by :mod:`~tui_search.engine.search.loops.graph_best_first` (node
+numbers and flat arrays), every other by the loop that records the reference
+(:mod:`~tui_search.engine.search.loops.published`).
 """
 
 from __future__ import annotations
@@ -36,9 +37,10 @@ class GraphProblem:
         self.size = len(graph)
         self.lowest = graph.lowest_cost()
         # The road between two nodes, by their numbers: one a pair and direction (the graph
-        # file refuses a second), so a move's parent and child say which road it took.
-        self._roads = {(a, b): cost for a in range(len(graph))
-                       for b, cost, _ in graph.roads_out(a)}
+        # file refuses a second), so a move's parent and child say which road it took.  Made
+        # when a move's cost is first asked (a pass over every road): a headless run never
+        # asks.
+        self._roads: dict[tuple[int, int], float] | None = None
 
     def pad(self, state: State) -> int:
         return self.graph.index[str(state)]
@@ -55,6 +57,11 @@ class GraphProblem:
 
     def step_cost(self, parent: int, child: int) -> float:
         """The road's cost from ``parent`` to ``child``."""
+        if self._roads is None:
+            starts, _, nodes = self.graph.data.rows()
+            costs = self.graph.data.row_costs()
+            self._roads = {(a, nodes[j]): costs[j] for a in range(self.size)
+                           for j in range(starts[a], starts[a + 1])}
         return self._roads[parent, child]
 
     def estimate(self, i: int) -> float:

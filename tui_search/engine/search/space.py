@@ -149,9 +149,19 @@ class GraphSpace:
             self._estimate = graph_estimate(graph, name)
         return self._estimate
 
+    def estimate_by_number(self) -> Callable[[int], float]:
+        """The heuristic (checked as :meth:`estimate`'s) of a node given by its number."""
+        self._h  # noqa: B018 -- checks the heuristic applies
+        return estimate_by_number(self.graph, self.semantics.heuristic)
+
     @property
     def start(self) -> State:
         return self._start
+
+    @property
+    def by_name(self) -> bool:
+        """Are a node's successors ordered by their names (else as the file lists them)?"""
+        return self._by_name
 
     def is_goal(self, state: State) -> bool:
         return state in self.graph.goals
@@ -189,16 +199,21 @@ def graph_estimate(graph: Graph, name: str) -> Callable[[State], float]:
     the nearest goal's place, scaled by the least cost a unit of road's length (so that no
     road costs less than its estimate says: the estimate stays admissible); or 0."""
     index = graph.index
-    if name == TABLE:
-        table = graph.data.h
-        return lambda node: table[index[str(node)]]
-    if name == "zero":
-        return lambda node: 0.0
-    scale = euclidean_scale(graph)
-    goals = [graph.place(index[g]) for g in graph.goals]
+    of = estimate_by_number(graph, name)
+    return lambda node: of(index[str(node)])
 
-    def straight(node: State) -> float:
-        x, y = graph.place(index[str(node)])
+
+def estimate_by_number(graph: Graph, name: str) -> Callable[[int], float]:
+    """:func:`graph_estimate` of a node given by its number (the very same floats)."""
+    if name == TABLE:
+        return graph.data.h.__getitem__
+    if name == "zero":
+        return lambda i: 0.0
+    scale = euclidean_scale(graph)
+    goals = [graph.place(graph.index[g]) for g in graph.goals]
+
+    def straight(i: int) -> float:
+        x, y = graph.place(i)
         return scale * min(hypot(x - gx, y - gy) for gx, gy in goals)
 
     return straight
@@ -222,4 +237,4 @@ def space_of(board: Grid | Graph, semantics: Semantics, weighted: bool) -> Space
 
 
 __all__ = ["GRAPH_HEURISTICS", "GraphSpace", "GridSpace", "Priority", "Space", "State",
-           "euclidean_scale", "graph_estimate", "space_of"]
+           "estimate_by_number", "euclidean_scale", "graph_estimate", "space_of"]

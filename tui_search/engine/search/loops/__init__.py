@@ -11,6 +11,8 @@ expansions in about the time a bare BFS takes.
 * :mod:`~tui_search.engine.search.loops.tree`: BFS and DFS as tree search;
 * :mod:`~tui_search.engine.search.loops.iddfs`: iterative deepening, under every choice;
 * :mod:`~tui_search.engine.search.loops.best_first`: the priority queue's (UCS, greedy, A*);
+* :mod:`~tui_search.engine.search.loops.graph_best_first`: the priority queue's on a graph, by
+  node numbers (the plain choices);
 * :mod:`~tui_search.engine.search.loops.published`: the reference loop recorded, for the choices of
   published code the others do not make (ties, a closed set, recursion, ...);
 * :mod:`~tui_search.engine.search.loops.dispatch`: which loop runs an algorithm under given choices;

@@ -71,7 +71,14 @@ def loop_for(algorithm: Algorithm, semantics: Semantics, graph: bool = False) ->
     recursion, ...: :attr:`~tui_search.engine.search.choices.Semantics.plain` False) the loop
     that records the reference (:mod:`~tui_search.engine.search.loops.published`); else the
     compiled core's when it runs (:mod:`~tui_search.engine.search.loops.compiled`), else the
-    table's (:func:`python_loops`).  A ``graph`` is always searched by the reference's loop."""
+    table's (:func:`python_loops`).  A ``graph`` is searched by the loop of node numbers
+    (:mod:`~tui_search.engine.search.loops.graph_best_first`) under the plain choices of a
+    priority queue's graph search, else by the reference's loop."""
+    if graph and semantics.plain and algorithm.priority is not None and (
+            not semantics.tree_search):
+        from tui_search.engine.search.loops.graph_best_first import graph_best_first
+
+        return partial(graph_best_first, priority=algorithm.priority)
     if graph or not semantics.plain:  # a choice only the reference's loop records
         from tui_search.engine.search.loops.published import published
 

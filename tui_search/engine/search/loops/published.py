@@ -6,8 +6,10 @@ set, recursion, tree search with no path check, an unmarked start, a node expand
 It records the reference loop itself (:class:`~tui_search.engine.search.reference.ReferenceSearch`,
 the definition) into a :class:`~tui_search.engine.search.record.Record`, a chunk at a time: these
 choices are the diagnosis's and a student's, on small maps mostly, so one loop serving them all
-is worth more than a fast one each.  It records every search on a graph too: the graphs a
-course draws are small, and this loop is the definition itself.  A hypothesis test in
+is worth more than a fast one each.  It records the searches on a graph too, but for the
+priority queue's under the plain choices
+(:mod:`~tui_search.engine.search.loops.graph_best_first`): the graphs a course draws are
+small, and this loop is the definition itself.  A hypothesis test in
 ``tests/engine`` holds the record equal to the reference's steps, array for array, as it holds
 the fast loops.
 """
