@@ -281,3 +281,25 @@ async def test_brackets_zoom_the_graph_and_z_shows_all_of_it() -> None:
         await pilot.press("z")
         await wait_until(pilot, lambda: view.level == 0)
         assert view.whole and view.virtual_size == whole
+
+
+@sync
+async def test_an_exercise_on_a_graph_is_solved_by_closing_a_city() -> None:
+    """``--exercise`` with a graph file: the app opens on its graph; closing Fagaras (o)
+    makes greedy's road A*'s, and the challenge panel says solved."""
+    from tui_search.cli.main import build_app
+    from tui_search.cli.parse import parse_options
+    from tui_search.tui.widgets.challenge import ChallengePanel
+
+    exercise = Path(__file__).parents[1] / "data" / "exercises" / "romania-greedy.toml"
+    app = build_app(parse_options(["--exercise", str(exercise)]))
+    async with app.run_test(size=SIZE) as pilot:
+        await wait_until(pilot, lambda: view_of(app).tiles is not None)
+        panel = app.query_one(ChallengePanel)
+        await wait_until(pilot, lambda: panel.verdict is not None)
+        assert panel.verdict is not None and not panel.verdict.solved
+        assert "Greedy on Romania" in str(panel.border_title)
+        app.session.cursor = "Fagaras"
+        await pilot.press("o")
+        await wait_until(pilot, lambda: panel.verdict is not None and panel.verdict.solved)
+        assert "both paths cost 418.00" in panel.text

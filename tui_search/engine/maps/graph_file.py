@@ -31,7 +31,7 @@ from tui_search.engine.maps.read import MapError, each_line, read_text
 #: Bigger graph files are refused before reading (a graph of 100,000 nodes with their places
 #: and a few roads each is a few MB).
 MAX_GRAPH_BYTES = 64 * 1024 * 1024
-KEYWORDS = ("node", "edge", "arc", "start", "goal", "h")
+KEYWORDS = ("node", "edge", "arc", "start", "goal", "closed", "h")
 #: The longest name a node may have.
 MAX_NAME = 100
 #: Names are numbered through a dictionary (fast, a hundred bytes and more a name) while
@@ -106,6 +106,7 @@ class _Reader:
         self.unplaced: tuple[int, int] | None = None  # the first node line without one
         self.start: tuple[str, int, int] | None = None
         self.goals: list[tuple[str, int, int]] = []
+        self.closed: list[tuple[str, int, int]] = []  # ``closed`` lines: nodes no search enters
         self.h_given = 0
         self.h_last = 0  # the last h line
         self.text = ""  # the file's text, for the column of an error found after its line
@@ -176,10 +177,11 @@ class _Reader:
         if key not in KEYWORDS:
             raise self.fail(f"unknown statement {key!r} (use {', '.join(KEYWORDS)})", col)
         wants = {"node": (1, 3), "edge": (2, 3), "arc": (2, 3), "start": (1, 1),
-                 "goal": (1, 1), "h": (2, 2)}[key]
+                 "goal": (1, 1), "closed": (1, 1), "h": (2, 2)}[key]
         if not wants[0] <= len(args) <= wants[1] or (key == "node" and len(args) == 2):
             shape = {"node": "node NAME [X Y]", "edge": "edge A B [COST]",
                      "arc": "arc A B [COST]", "start": "start NAME", "goal": "goal NAME",
+                     "closed": "closed NAME",
                      "h": "h NAME VALUE"}[key]
             at = args[wants[1]][0] if len(args) > wants[1] else col
             raise self.fail(f"{key}: write it {shape}", at)
@@ -229,6 +231,10 @@ class _Reader:
         self.node(args[0], ONLY_NAMED, 1)
         self.goals.append((args[0][1], self.line, args[0][0]))
 
+    def _closed(self, args: list[tuple[int, str]]) -> None:
+        self.node(args[0], ONLY_NAMED, 1)
+        self.closed.append((args[0][1], self.line, args[0][0]))
+
     def _h(self, args: list[tuple[int, str]]) -> None:
         (col, name), value = args[0], args[1]
         i = self.node(args[0], ONLY_NAMED, 1)
@@ -277,12 +283,14 @@ class _Reader:
         else:
             data.h = array("d")
         goals = tuple(dict.fromkeys(name for name, _, _ in self.goals))
+        closed = frozenset(name for name, _, _ in self.closed)
         return Graph(data, start=self.start[0] if self.start else None, goals=goals,
-                     source=text, name=Path(self.path).name)
+                     closed=closed, source=text, name=Path(self.path).name)
 
     def _only_h(self, i: int) -> bool:
         """Was node ``i`` named by an h line (not only by the start or a goal)?"""
-        named = {name for name, _, _ in [*([self.start] if self.start else []), *self.goals]}
+        named = {name for name, _, _ in [*([self.start] if self.start else []), *self.goals,
+                                         *self.closed]}
         return self.data.names[i] not in named
 
     def _check_roads(self) -> None:

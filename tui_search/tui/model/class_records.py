@@ -17,6 +17,7 @@ from tui_search.engine.search.state import State, state_json
 if TYPE_CHECKING:
     from tui_search.engine.course.exercise_file import Exercise
     from tui_search.engine.course.grading import Verdict
+    from tui_search.engine.maps.graph import Graph
     from tui_search.engine.maps.grid import Grid
     from tui_search.engine.run.recorded import Run
     from tui_search.tui.model.quiz import Quiz
@@ -70,19 +71,25 @@ class Recorder:
                           guess=state_json(guess), right=node == guess,
                           score=[quiz.right, quiz.asked])
 
-    def verdict(self, verdict: Verdict, grid: Grid) -> str | None:
+    def verdict(self, verdict: Verdict, grid: Grid | Graph) -> str | None:
         """An exercise's verdict, when it is the first of that exercise or differs from the
-        last written (an edit solved it, or unsolved it), with the map."""
+        last written (an edit solved it, or unsolved it), with the map (a graph's: its start,
+        goals and closed nodes, its roads being the exercise's)."""
+        from tui_search.engine.maps.graph import Graph
         from tui_search.engine.maps.text import text_rows
 
         exercise = verdict.exercise
         if self._verdicts.get(exercise.title) == verdict.solved:
             return None
         self._verdicts[exercise.title] = verdict.solved
+        said = {"exercise": exercise.title, "solved": verdict.solved,
+                "verdict": verdict.status, "reason": verdict.said}
+        if isinstance(grid, Graph):
+            ends = [f"start {grid.start}", *(f"goal {g}" for g in grid.goals),
+                    *(f"closed {c}" for c in sorted(grid.closed))]
+            return self.write("exercise", **said, graph="".join(f"{e}\n" for e in ends))
         text = "".join(f"{row}\n" for row in text_rows(grid))
-        return self.write("exercise", exercise=exercise.title, solved=verdict.solved,
-                          verdict=verdict.status, reason=verdict.said,
-                          **map_field(text, grid.width, grid.height))
+        return self.write("exercise", **said, **map_field(text, grid.width, grid.height))
 
 
 def recorder(plan: RecordsPlan, name: str) -> Recorder:

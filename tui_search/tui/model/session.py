@@ -438,7 +438,7 @@ class Session:
         from tui_search.engine.course.grading import grade
 
         assert self.exercise is not None
-        return grade(self.exercise, self.grid, self.max_steps)
+        return grade(self.exercise, self.board, self.max_steps)
 
 
 __all__ = ["BRUSHES", "DEFAULT_COMPARE", "LOCKSTEP", "LOCKSTEP_SHORT", "NEEDS_ENDPOINTS",

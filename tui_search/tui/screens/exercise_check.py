@@ -35,6 +35,11 @@ def check_exercise(screen: Screen[None], session: Session, panel: ChallengePanel
     """Show the verdict on the session's exercise (one is shown) in ``panel``."""
     exercise = session.exercise
     assert exercise is not None
+    if session.graph is not None:  # a graph's exercise: a few nodes, checked at each edit
+        verdict = session.verdict()
+        panel.show(exercise, verdict)
+        _record(screen, session, verdict)
+        return
     grid = session.grid
     if exercise.by_hand:  # no map to grade: the run by hand is the answer
         result = getattr(screen, "hand_result", None)
@@ -50,10 +55,15 @@ def check_exercise(screen: Screen[None], session: Session, panel: ChallengePanel
     else:
         verdict = session.verdict()
         panel.show(exercise, verdict)
-        if session.records is not None:
-            problem = session.records.verdict(verdict, grid)
-            if problem:
-                screen.notify(problem, severity="warning", timeout=8)
+        _record(screen, session, verdict)
+
+
+def _record(screen: Screen[None], session: Session, verdict: Verdict) -> None:
+    """The verdict in the student's records (``--records``), when they are kept."""
+    if session.records is not None:
+        problem = session.records.verdict(verdict, session.board)
+        if problem:
+            screen.notify(problem, severity="warning", timeout=8)
 
 
 def _check_big(screen: Screen[None], session: Session, panel: ChallengePanel,

@@ -158,9 +158,11 @@ class MainScreen(PanesScreen):
     def _exercise_shown(self, rules: str) -> None:
         """The challenge checked; the panes' searches anew under the exercise's rules when
         they changed (``rules``: the note saying so)."""
-        if self.session.graph is not None and self.session.exercise is not None:
-            self.session.show_exercise(None)  # the built-in exercises are on grids
-            self.warn("The built-in exercises are on grids: open a grid for them")
+        exercise = self.session.exercise
+        if exercise is not None and (self.session.graph is None) != (exercise.graph is None):
+            self.session.show_exercise(None)  # a grid's exercise on a graph, or the reverse
+            kind = "grids" if exercise.graph is None else "graphs"
+            self.warn(f"This exercise is on {kind}: open one for it")
             return
         if rules:
             self.playback.pause()

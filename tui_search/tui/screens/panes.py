@@ -434,8 +434,8 @@ class PanesScreen(Screen[None]):
     def _check_exercise(self) -> None:
         """The challenge panel shown while an exercise is, with its verdict on the map as it is
         now (:func:`~tui_search.tui.screens.exercise_check.check_exercise`)."""
-        # (a grid's exercise: a graph's are not checked live yet)
-        shown = self.session.exercise is not None and self.session.graph is None
+        exercise = self.session.exercise  # (a grid's on a grid, a graph's on a graph)
+        shown = exercise is not None and (exercise.graph is None) == (self.session.graph is None)
         if self.has_class("-challenge") != shown:
             self.set_class(shown, "-challenge")
             self._show_part(self.challenge, shown)
