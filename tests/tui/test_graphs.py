@@ -303,3 +303,20 @@ async def test_an_exercise_on_a_graph_is_solved_by_closing_a_city() -> None:
         await pilot.press("o")
         await wait_until(pilot, lambda: panel.verdict is not None and panel.verdict.solved)
         assert "both paths cost 418.00" in panel.text
+
+
+@sync
+async def test_a_table_that_says_too_much_is_said_under_a_star() -> None:
+    """The app checks a graph's table against its roads: one that overestimates somewhere is
+    said in the status line, naming the node and the figures."""
+    from tui_search.engine.maps.graph_file import parse_graph
+    from tui_search.engine.search.choices import Semantics
+
+    graph = parse_graph("node A 0 0\nnode B 1 0\nnode C 2 0\nedge A B 2\nedge B C 3\n"
+                        "start A\ngoal C\nh A 5\nh B 9\nh C 0\n", "over.graph")
+    app = graph_app(graph, algorithm="astar",
+                    semantics=Semantics(order=("file",), heuristic="table"))
+    async with app.run_test(size=SIZE) as pilot:
+        await wait_until(pilot, lambda: "not admissible: h(B) = 9" in status_text(app))
+        await pilot.press("1")  # BFS: no estimate, nothing to say
+        await wait_until(pilot, lambda: "not admissible" not in status_text(app))

@@ -11,6 +11,7 @@ from collections.abc import Callable, Iterator, Sequence
 from itertools import pairwise
 from typing import Any
 
+from tui_search.engine.maps.graph import Graph
 from tui_search.engine.maps.grid import DIRECTIONS
 from tui_search.engine.run.recording import Recording, Step
 from tui_search.engine.search.heuristics import admissible, heuristic_for, priority_of
@@ -34,6 +35,7 @@ class EventTree:
         self._rec = recording.rec  # the same record as long as the recording lives
         self._algo = algo = recording.algo
         self._problem = recording.problem
+        self._warning: str | None = None  # estimate_warning's, once asked
         self._in_order = algo.frontier is Frontier.FIFO  # event g expanded at step g+1
         self._gen_step = array("i")  # event -> step that expanded it (LIFO; lazy)
         self._gen_step_filled = 0
@@ -218,9 +220,34 @@ class EventTree:
     @property
     def admissible(self) -> bool:
         """Can the run's heuristic be trusted to find the cheapest path (True when none is
-        used)?"""
+        used)?  On a graph, its estimate is checked against its roads."""
+        return not self.estimate_warning()
+
+    def estimate_warning(self) -> str:
+        """:meth:`_estimate_warning`, worked out once (on a graph it searches the graph)."""
+        if self._warning is None:
+            self._warning = self._estimate_warning()
+        return self._warning
+
+    def _estimate_warning(self) -> str:
+        """Why the run's heuristic may miss the cheapest path ("" when it cannot, or none is
+        used): manhattan with diagonal moves on a grid; on a graph, an estimate that says more
+        than the cheapest way to a goal somewhere
+        (:func:`~tui_search.engine.search.estimate_check.estimate_faults`)."""
         semantics = self._recording.semantics
-        return not self._algo.informed or admissible(semantics.heuristic, semantics.order)
+        if not self._algo.informed:
+            return ""
+        board = self._recording.board
+        if isinstance(board, Graph):  # (the check's module imported only for a graph)
+            from tui_search.engine.search.estimate_check import estimate_faults
+
+            faults = estimate_faults(board, semantics.heuristic)
+            return next((f for f in faults if "not admissible" in f), "")
+        if admissible(semantics.heuristic, semantics.order):
+            return ""
+        from tui_search.engine.search.heuristics import INADMISSIBLE
+
+        return INADMISSIBLE
 
     def gen_cell(self, g: int) -> State:
         """Event ``g``'s cell (a graph's: its node's name)."""

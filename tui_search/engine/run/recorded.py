@@ -181,6 +181,10 @@ class Run:
         """Can the run's heuristic be trusted to find the cheapest path (True when none)?"""
         return self._tree.admissible
 
+    def estimate_warning(self) -> str:
+        """Why the heuristic may miss the cheapest path, in a sentence ("" when it cannot)."""
+        return self._tree.estimate_warning()
+
     def path(self) -> list[State] | None:
         """Cells from the start to the goal (None until found)."""
         return self._tree.path()

@@ -14,7 +14,6 @@ over the number of panes, :func:`~tui_search.tui.view.layout.own_lines`.
 from typing import NamedTuple
 
 from tui_search.engine.run.recorded import Run
-from tui_search.engine.search.heuristics import INADMISSIBLE
 from tui_search.engine.search.registry import get_algorithm
 from tui_search.tui.model import playback
 from tui_search.tui.model.session import Session
@@ -68,7 +67,7 @@ def search_status(run: Run | None, name: str, *, in_pane: bool, playing: str = "
         status.append(Piece([(f"done at step {run.k:,}", "stats--result")], DONE_RANK, SEP))
     differences = run.differences() if run is not None else []
     if run is not None and not run.admissible:
-        differences.append(INADMISSIBLE)
+        differences.append(run.estimate_warning())
     if differences:  # always say what differs
         status.append(Piece([("· " + " · ".join(differences), "stats--note")], 0,
                             (" ", "stats--note")))
