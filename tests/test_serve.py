@@ -88,6 +88,21 @@ def test_the_served_apps_command_line_carries_the_apps_flags_and_none_of_the_ser
     assert app_args.app_memory is None and app_args.visitor is None
 
 
+def test_the_served_apps_open_the_built_in_graph_by_its_name(tmp_path, monkeypatch) -> None:
+    """``--serve romania``: each visitor's app opens the built-in Romania (not a file called
+    romania), a graph file by its absolute path."""
+    monkeypatch.chdir(tmp_path)
+    words = visitors_args(parse("romania", "-a", "astar", "--serve"))
+    assert words[-2:] == ["--", "romania"]
+    app_args = parse_options(words)
+    assert app_args.graph is not None and app_args.graph.start == "Arad"
+    graph = tmp_path / "g.graph"
+    graph.write_text("edge A B\nstart A\ngoal B\n")
+    words = visitors_args(parse("g.graph", "--serve"))
+    assert words[-2:] == ["--", str(graph)]
+    assert parse_options(words).graph is not None
+
+
 @pytest.mark.parametrize("exercise", ["1", "class.toml"])
 def test_the_served_apps_get_the_terrain_and_exercise_files_as_absolute_paths(
         tmp_path, monkeypatch, exercise: str) -> None:

@@ -14,6 +14,7 @@ import re
 from typing import TYPE_CHECKING
 
 from tui_search.cli.flags import UsageError
+from tui_search.engine.maps.graph_file import BUILT_IN
 from tui_search.serve.web import APP_MEMORY_MB, DEFAULT_HOST, DEFAULT_PORT
 
 if TYPE_CHECKING:
@@ -157,7 +158,9 @@ def served_args(parser: argparse.ArgumentParser, options: Options,
             continue
         if value is None or value is False or value == action.default:
             continue
-        if dest in FILE_FLAGS or (dest == "exercise" and str(value) not in ("1", "2")):
+        built_in = dest == "map" and str(value) in BUILT_IN  # ``romania``: no file
+        if (dest in FILE_FLAGS and not built_in) or (
+                dest == "exercise" and str(value) not in ("1", "2")):
             value = os.path.abspath(value)
         if not action.option_strings:
             positional.append(str(value))
