@@ -320,3 +320,22 @@ async def test_a_table_that_says_too_much_is_said_under_a_star() -> None:
         await wait_until(pilot, lambda: "not admissible: h(B) = 9" in status_text(app))
         await pilot.press("1")  # BFS: no estimate, nothing to say
         await wait_until(pilot, lambda: "not admissible" not in status_text(app))
+
+
+@sync
+async def test_a_graph_s_trace_is_replayed_beside_its_search(tmp_path: Path) -> None:
+    """``tui-search romania --replay FILE``: the trace (node names) in a pane of its own beside
+    the search the diagnosis finds, stepped in lockstep."""
+    from tui_search.cli.main import build_app, main
+    from tui_search.cli.parse import parse_options
+
+    trace = tmp_path / "dfs.jsonl"
+    assert main(["romania", "-a", "dfs", "--headless", "--trace", str(trace)]) == 0
+    app = build_app(parse_options(["romania", "--replay", str(trace)]))
+    async with app.run_test(size=SIZE) as pilot:
+        await wait_until(pilot, lambda: len(app.session.runs) == 2)
+        assert app.session.labels == ["your trace", "DFS"]
+        for _ in range(4):
+            await pilot.press("n")
+        await wait_until(pilot, lambda: all(run.k == 4 for run in app.session.runs))
+        assert "matches DFS (order file" in status_text(app)

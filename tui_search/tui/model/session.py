@@ -197,23 +197,19 @@ class Session:
         if not has_endpoints(board):
             self.runs = []
             self.note = note or NEEDS_ENDPOINTS
-        elif not isinstance(board, Grid):  # a graph: no benchmark's optimum, no replay
-            self.runs = [Run(board, c.algorithm, c.semantics, self.max_steps)
-                         for c in self.contenders]
         else:
-            grid = board
-            optimum = self._optimum
-            known = optimum.on(grid, self.semantics.corners,
-                                len(self.semantics.order)) if optimum is not None else None
             replay = self.jumps.replay
-            if replay is not None and not replay.fits(grid):
+            if replay is not None and not replay.fits(board):
                 self.jumps.end()
                 replay, self.note = None, note or REPLAY_ENDED
-            self.runs = (replay.runs(grid, self.max_steps) if replay is not None
-                         else [Run(grid, c.algorithm, c.semantics, self.max_steps)
+            self.runs = (replay.runs(board, self.max_steps) if replay is not None
+                         else [Run(board, c.algorithm, c.semantics, self.max_steps)
                                for c in self.contenders])
-            for run in self.runs:
-                run.known_lowest = known
+            optimum = self._optimum  # a benchmark's, for a grid's map
+            if optimum is not None and isinstance(board, Grid):
+                known = optimum.on(board, self.semantics.corners, len(self.semantics.order))
+                for run in self.runs:
+                    run.known_lowest = known
         if self.runs and self.quiz.on and not self.note:
             self.note = self.quiz.question(self.runs[0])
 
