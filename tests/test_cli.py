@@ -242,3 +242,17 @@ def test_a_file_name_with_escape_sequences_is_shown_escaped_never_run(capsys, tm
     assert "ok\\x1b[2J\\u202e.txt: path found" in out
     code, out, err = run_cli(capsys, str(bad), "--headless", "--exercise", "1")
     assert code == 2 and "\x1b" not in err and "bad\\x1b[31m.txt:2:2: unknown cell" in err
+
+
+def test_a_map_too_big_for_the_app_is_refused_in_one_line(capsys, monkeypatch) -> None:
+    """The app keeps counters a cell: a map of more than APP_MAX_CELLS cells is refused by
+    size (issue 42: a 64 MB map of one-cell rows took 24 times its file), and searched
+    headless as before."""
+    import tui_search.tui.model.boards as boards
+
+    monkeypatch.setattr(boards, "APP_MAX_CELLS", 30)  # the tutorial's 36 cells: too many
+    code, out, err = run_cli(capsys, TUTORIAL)
+    assert (code, out) == (2, "")
+    assert err == (f"tui-search: {TUTORIAL}: 6x6 is 36 cells: the app opens maps of at most 30 "
+                   "(it keeps counters a cell); search it with --headless\n")
+    assert run_cli(capsys, TUTORIAL, "--headless")[0] == 0

@@ -214,7 +214,7 @@ def graph_order(text: str, given: bool) -> tuple[str, ...]:
 def graph_heuristic(given: str | None, graph: Graph) -> str:
     """``--heuristic`` on a graph, checked against what the graph has."""
     if given is None:  # the file's table, else the straight line between places, else 0
-        from tui_search.engine.search.space import graph_heuristics
+        from tui_search.engine.search.choices import graph_heuristics
 
         return graph_heuristics(graph)[0]
     if given not in GRAPH_HEURISTICS:

@@ -40,13 +40,19 @@ FORK_COMMAND = [sys.executable, "-m", "tui_search.cli.fork_entry"]
 
 
 def build_app(options: Options) -> SearchApp:
-    """The app the command line asks for (Textual imported here: only when it is wanted)."""
+    """The app the command line asks for (Textual imported here: only when it is wanted); a
+    map too big for it is refused first, in one line."""
+    from tui_search.tui.model.boards import too_big_for_the_app
+
+    board = options.graph or options.grid
+    assert board is not None, "the app opens on the map the command line read"
+    if options.grid is not None and (why := too_big_for_the_app(options.grid)):
+        raise MapError(str(options.path) if options.path else app_title(options), why)
+
     from tui_search.tui.app import SearchApp
     from tui_search.tui.config import Config
     from tui_search.tui.model.file_rules import FileAccess, NameRefused
 
-    board = options.graph or options.grid
-    assert board is not None, "the app opens on the map the command line read"
     try:
         access = FileAccess.for_app(options.served, options.save_dir, options.visitor)
     except NameRefused as exc:

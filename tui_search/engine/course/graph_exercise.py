@@ -41,7 +41,7 @@ def read_graph(reader: KeyReader) -> Graph:
 
 def graph_semantics(reader: KeyReader, graph: Graph) -> Semantics:
     """The rules the file's keys set for a graph's searches."""
-    from tui_search.engine.search.space import graph_heuristics
+    from tui_search.engine.search.choices import graph_heuristics
 
     data = reader.data
     for key in GRID_RULES:

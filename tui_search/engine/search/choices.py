@@ -49,10 +49,15 @@ The defaults are the tutorial's semantics.  A combination that makes no sense is
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from tui_search.engine.maps.grid import DEFAULT_ORDER, DELTAS
 from tui_search.engine.search.heuristics import CHEAPER_BY, DEFAULT_HEURISTIC, HEURISTICS
 from tui_search.engine.search.registry import Algorithm, Frontier
 from tui_search.engine.util.frozen import Frozen
+
+if TYPE_CHECKING:
+    from tui_search.engine.maps.graph import Graph
 
 CORNER_RULES: tuple[str, ...] = ("always", "one", "never")
 #: A graph's orders of successors (one word, alone): its roads as the file lists them, or by
@@ -62,6 +67,13 @@ GRAPH_ORDERS: tuple[str, ...] = ("file", "name")
 TABLE = "table"
 #: The heuristics a graph may use: its table, the straight line between places, or none.
 GRAPH_HEURISTICS: tuple[str, ...] = (TABLE, "euclidean", "zero")
+
+
+def graph_heuristics(graph: Graph) -> list[str]:
+    """The heuristics ``graph`` can give, its default first: its table when it has one, the
+    straight line when its nodes have places, and zero."""
+    return [h for h in GRAPH_HEURISTICS
+            if (h != TABLE or graph.has_table) and (h != "euclidean" or graph.has_places)]
 VISIT_RULES: tuple[str, ...] = ("generate", "expand", "expand-again")
 GOAL_TESTS: tuple[str, ...] = ("generate", "expand")
 TIE_RULES: tuple[str, ...] = ("fifo", "lifo", "node", "low-h", "high-h", "low-g", "high-g")

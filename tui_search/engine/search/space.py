@@ -186,14 +186,6 @@ class GraphSpace:
         return None if path is None else self.graph.path_cost([str(n) for n in path])
 
 
-def graph_heuristics(graph: Graph) -> list[str]:
-    """The heuristics ``graph`` can give, its default first: its table when it has one, the
-    straight line when its nodes have places, and zero."""
-    usable = [name for name, there in ((TABLE, graph.has_table),
-                                       ("euclidean", graph.has_places)) if there]
-    return [*usable, "zero"]
-
-
 def graph_estimate(graph: Graph, name: str) -> Callable[[State], float]:
     """A node's estimated cost to the nearest goal: the file's table; the straight line to
     the nearest goal's place, scaled by the least cost a unit of road's length (so that no

@@ -286,7 +286,7 @@ def diagnose(trace: Trace, grid: Grid | Graph, max_steps: int | None = None) -> 
     search = _Search(trace, grid, limit)
     heuristics = None
     if isinstance(grid, Graph):
-        from tui_search.engine.search.space import graph_heuristics
+        from tui_search.engine.search.choices import graph_heuristics
 
         heuristics = graph_heuristics(grid)
     search.run(candidates(orders if expansions_only else orders[:1], orders, heuristics))

@@ -12,6 +12,7 @@ from tui_search.engine.maps.grid import Grid
 from tui_search.engine.maps.load import load_map
 from tui_search.engine.maps.read import MapError
 from tui_search.tui.dialogs.path_prompt import PathPrompt
+from tui_search.tui.model.boards import too_big_for_the_app
 from tui_search.tui.model.file_rules import one_line
 
 
@@ -27,5 +28,9 @@ class OpenMapScreen(PathPrompt[tuple[Grid, Path] | None]):
             grid = load_map(path)
         except MapError as exc:
             self.show_error(one_line(exc))
+            return
+        too_big = too_big_for_the_app(grid)
+        if too_big:
+            self.show_error(one_line(MapError(str(path), too_big)))
             return
         self.dismiss((grid, path))

@@ -112,7 +112,7 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
         super().__init__()
         self.graph = graph
         if graph is not None:
-            from tui_search.tui.model.boards import graph_heuristics
+            from tui_search.engine.search.choices import graph_heuristics
 
             self.heuristics: tuple[str, ...] = tuple(graph_heuristics(graph))
         else:

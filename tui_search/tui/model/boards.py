@@ -7,24 +7,37 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, TypeGuard
 
 from tui_search.engine.maps.grid import Grid
-from tui_search.engine.search.choices import GRAPH_ORDERS, TABLE, Semantics
+from tui_search.engine.search.choices import (
+    GRAPH_HEURISTICS,
+    GRAPH_ORDERS,
+    Semantics,
+    graph_heuristics,
+)
 from tui_search.engine.search.state import State
 
 if TYPE_CHECKING:  # a grid's app never imports the graph's modules (the first frame)
     from tui_search.engine.maps.graph import Graph
 
+
+#: The most cells the app opens a map of: a run keeps counters a cell (benchmarks/README.md,
+#: "big_map"), so a bigger map would take over ten times its file; it is searched headless
+#: instead.  Every MovingAI map fits.
+APP_MAX_CELLS = 1 << 24
+
+
+def too_big_for_the_app(grid: Grid) -> str:
+    """Why the app does not open ``grid`` ("" when it does): more cells than
+    :data:`APP_MAX_CELLS`."""
+    cells = grid.width * grid.height
+    if cells <= APP_MAX_CELLS:
+        return ""
+    return (f"{grid.width:,}x{grid.height:,} is {cells:,} cells: the app opens maps of at most "
+            f"{APP_MAX_CELLS:,} (it keeps counters a cell); search it with --headless")
+
+
 def is_graph(board: Grid | Graph) -> TypeGuard[Graph]:
     """Is the board a graph (told apart without importing the graph's module)?"""
     return not isinstance(board, Grid)
-#: A graph's estimates (:data:`~tui_search.engine.search.space.GRAPH_HEURISTICS`, here
-#: without importing the searches' module on the first frame).
-GRAPH_HEURISTICS: tuple[str, ...] = (TABLE, "euclidean", "zero")
-
-
-def graph_heuristics(graph: Graph) -> list[str]:
-    """The estimates ``graph`` offers: its table, the straight line (with places), zero."""
-    return [h for h in GRAPH_HEURISTICS
-            if (h != TABLE or graph.has_table) and (h != "euclidean" or graph.has_places)]
 
 
 def semantics_for(board: Grid | Graph, semantics: Semantics) -> Semantics:
@@ -78,5 +91,5 @@ def holds(board: Grid | Graph, state: State) -> bool:
     return isinstance(state, str) and state in board
 
 
-__all__ = ["GRAPH_HEURISTICS", "is_graph", "goal_of", "graph_heuristics", "has_endpoints",
-           "holds", "semantics_for", "start_of"]
+__all__ = ["APP_MAX_CELLS", "GRAPH_HEURISTICS", "goal_of", "graph_heuristics", "has_endpoints",
+           "holds", "is_graph", "semantics_for", "start_of", "too_big_for_the_app"]

@@ -233,6 +233,13 @@ class FileCommands:
             self.notify(one_line(exc), title="Not reloaded", severity="error", timeout=8,
                         markup=False)
             return
+        from tui_search.tui.model.boards import too_big_for_the_app
+
+        too_big = too_big_for_the_app(grid)
+        if too_big:
+            self.notify(too_big, title="Not reloaded", severity="error", timeout=8,
+                        markup=False)
+            return
         self._use_map(grid, path)
         self.notify(f"Reloaded {describe_name(str(path))}", timeout=3, markup=False)
 
