@@ -7,6 +7,7 @@ from __future__ import annotations
 import subprocess
 import sys
 from collections.abc import Callable
+from pathlib import Path
 
 from textual.geometry import Region
 
@@ -335,3 +336,27 @@ async def test_at_80x24_section_6_s_narrow_panes_say_each_path_s_moves() -> None
                 and f"path: {moves} moves, cost" in " ".join(pane.stats.shown_lines())
                 for pane in app.main.panes) or f"{label} step" in said()
                 and f"path {moves} moves" in said().split(f"{label} step")[1].split("│")[0])
+
+
+def test_a_lesson_on_romania_moves_from_a_grid_to_a_graph_and_back(tmp_path: Path) -> None:
+    """``map: romania`` (or a .graph file) in a lesson's block: the section shows the graph
+    under a graph's rules (``order: name``, ``heuristic: table``); a later ``map:`` of a grid
+    brings the grid's rules back."""
+    from tui_search.engine.course.lesson import parse_lesson
+
+    text = ("# Romania\n\n## A* on the road map\n\n```lesson\nmap: romania\nalgorithm: astar\n"
+            "heuristic: table\nstep: end\n```\n\n## By name\n\n```lesson\norder: name\n"
+            "algorithm: dfs\nstep: end\n```\n\n## Back to the grid\n\n```lesson\n"
+            f"map: {TUTORIAL}\nalgorithm: bfs\nstep: 4\n```\n")
+    session = Session(load_map(TUTORIAL), TUTORIAL)
+    play = LessonPlay(parse_lesson(text, tmp_path / "romania.md"))
+    play.open(session)
+    run = session.runs[0]
+    assert session.graph is not None and session.semantics.heuristic == "table"
+    assert run.path() == ["Arad", "Sibiu", "Rimnicu", "Pitesti", "Bucharest"]
+    play.move(session, 1)
+    assert session.semantics.order == ("name",) and session.labels == ["DFS"]
+    assert session.runs[0].found
+    play.move(session, 1)
+    assert session.graph is None and session.semantics.order[0] == "N"
+    assert session.runs[0].k == 4

@@ -19,11 +19,19 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from tui_search.engine.maps.graph_file import BUILT_IN
 from tui_search.engine.maps.grid import DEFAULT_ORDER, parse_order
-from tui_search.engine.maps.load import load_map
+from tui_search.engine.maps.load import load_board
 from tui_search.engine.maps.read import MapError, read_text
 from tui_search.engine.maps.source import Lines
-from tui_search.engine.search.choices import CORNER_RULES, GOAL_TESTS, VISIT_RULES, Semantics
+from tui_search.engine.search.choices import (
+    CORNER_RULES,
+    GOAL_TESTS,
+    GRAPH_ORDERS,
+    TABLE,
+    VISIT_RULES,
+    Semantics,
+)
 from tui_search.engine.search.compare import parse_compare
 from tui_search.engine.search.heuristics import DEFAULT_HEURISTIC, HEURISTICS
 from tui_search.engine.search.registry import ALGORITHMS, DEFAULT_ALGORITHM, get_algorithm
@@ -43,16 +51,16 @@ LESSON_DIR = Path(__file__).resolve().parents[2] / "lessons"  # tui_search/lesso
 ON_OFF = {"on": True, "off": False}
 #: A block's keys, and what each takes (for the docs and the errors).
 KEYS: dict[str, str] = {
-    "map": "a map file, relative to the lesson file",
+    "map": "a map or graph file, relative to the lesson file, or romania",
     "algorithm": ", ".join(ALGORITHMS),
     "step": "a step number, or end",
     "compare": "two to four searches (bfs,dfs), or off",
-    "order": "the moves in order (N,W,S,E)",
+    "order": "the moves in order (N,W,S,E); on a graph, file or name",
     "corners": ", ".join(CORNER_RULES),
     "visit": ", ".join(VISIT_RULES),
     "goal-test": ", ".join((*GOAL_TESTS, "default")),
     "tree-search": "on, off",
-    "heuristic": ", ".join(HEURISTICS),
+    "heuristic": ", ".join((*HEURISTICS, TABLE)),
     "exercise": "1, 2, an exercise file (FILE.toml, relative to the lesson file), off",
     "code": "on, off",
 }
@@ -124,7 +132,8 @@ def find_lesson(name: str) -> Path:
 
 def _value(key: str, text: str, base: Path) -> object:
     """The block's ``key: text`` as the state's value; ``ValueError`` (one line) if bad."""
-    choices = {"corners": CORNER_RULES, "visit": VISIT_RULES, "heuristic": tuple(HEURISTICS),
+    choices = {"corners": CORNER_RULES, "visit": VISIT_RULES,
+               "heuristic": (*HEURISTICS, TABLE),
                "algorithm": tuple(ALGORITHMS)}
     if key in choices:
         if text not in choices[key]:
@@ -152,7 +161,7 @@ def _value(key: str, text: str, base: Path) -> object:
         except MapError as exc:
             raise ValueError(str(exc)) from None
     if key == "order":
-        return parse_order(text)
+        return (text,) if text in GRAPH_ORDERS else parse_order(text)
     if key == "compare":
         if text == "off":
             return None
@@ -171,10 +180,11 @@ def _step(text: str) -> int | None:
 
 
 def _map_path(text: str, base: Path) -> Path:
-    """``map: FILE``, relative to the lesson's folder: a map that loads."""
-    path = (base / text).resolve()
+    """``map: FILE``, relative to the lesson's folder: a map (or a graph) that loads;
+    ``map: romania``, the built-in graph."""
+    path = Path(text) if text in BUILT_IN else (base / text).resolve()
     try:
-        load_map(path)
+        load_board(path)
     except MapError as exc:
         raise ValueError(str(exc)) from None
     return path

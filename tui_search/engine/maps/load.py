@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import os
 import re
+from typing import TYPE_CHECKING
 
 from tui_search.engine.maps.grid import Cell, Grid
 from tui_search.engine.maps.read import MAX_DIGITS, check_cell, quoted, read_map_file
@@ -18,6 +19,9 @@ from tui_search.engine.maps.terrain import Terrain
 from tui_search.engine.maps.text import parse_text_map
 
 __all__ = ["load_map", "parse_cell", "parse_map_text"]
+
+if TYPE_CHECKING:
+    from tui_search.engine.maps.graph import Graph
 
 
 _TYPE_LINE = re.compile(r"\ufeff?\s*type(?:\s|$)", re.IGNORECASE)
@@ -56,6 +60,17 @@ def parse_map_text(
         else:
             grid.goal = (cell[0], cell[1])
     return grid
+
+
+def load_board(path: str | os.PathLike[str]) -> Grid | Graph:
+    """A map file, or a graph: a ``.graph`` file or a built-in one by name (``romania``)."""
+    from tui_search.engine.maps.graph_file import BUILT_IN, built_in_graph, is_graph_file
+    from tui_search.engine.maps.graph_file import load_graph as read_graph
+
+    name = os.fspath(path)
+    if name in BUILT_IN:
+        return built_in_graph(name)
+    return read_graph(name) if is_graph_file(name) else load_map(name)
 
 
 def load_map(

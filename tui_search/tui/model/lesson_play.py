@@ -13,10 +13,12 @@ from typing import Protocol
 
 from tui_search.engine.course.exercise_file import Exercise
 from tui_search.engine.course.lesson import Lesson, Section, State
+from tui_search.engine.maps.graph import Graph
 from tui_search.engine.maps.grid import Grid
-from tui_search.engine.maps.load import load_map
+from tui_search.engine.maps.load import load_board
 from tui_search.engine.maps.read import MapError
 from tui_search.engine.search.choices import Semantics
+from tui_search.tui.model.boards import semantics_for
 
 
 class Session(Protocol):
@@ -28,8 +30,11 @@ class Session(Protocol):
     show_code: bool
     note: str
 
+    @property
+    def board(self) -> Grid | Graph: ...
     def stop(self) -> None: ...
-    def use_map(self, grid: Grid, path: Path | None, untitled: str | None = None) -> None: ...
+    def use_map(self, grid: Grid | Graph, path: Path | None,
+                untitled: str | None = None) -> None: ...
     def show_searches(self, spec: str) -> str | None: ...
     def goto(self, k: int | None) -> None: ...
     def show_exercise(self, exercise: Exercise | int | None) -> str: ...
@@ -79,14 +84,14 @@ def apply_state(session: Session, state: State) -> None:
     problem = ""
     if state.map is not None:
         try:
-            session.use_map(load_map(state.map), state.map)  # read anew: edits undone
+            session.use_map(load_board(state.map), state.map)  # read anew: edits undone
         except MapError as exc:  # checked when the lesson was read, changed since
             problem = str(exc)
     elif state.exercise is not None and not isinstance(state.exercise, int):
         own = state.exercise  # a file's exercise, no map named: its own map, anew
         session.use_map(own.grid.copy(), None, f"{Path(own.path).name}'s map")
     session.algorithm = state.algorithm
-    session.semantics = state.semantics
+    session.semantics = semantics_for(session.board, state.semantics)  # a graph's or a grid's
     session.show_exercise(state.exercise)  # its rules are the state's (lesson.py)
     session.show_code = state.code
     refusal = session.show_searches(state.spec)
