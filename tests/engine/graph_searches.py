@@ -67,10 +67,14 @@ def queue_search(roads: Roads, start: str, goals: set[str], lifo: bool, visit: s
 
 
 def priority_search(roads: Roads, start: str, goals: set[str], priority: str,
-                    h: Callable[[str], float], goal_test: str, tree: bool, limit: int
-                    ) -> tuple[Steps, list[str] | None]:
+                    h: Callable[[str], float], goal_test: str, tree: bool, limit: int,
+                    ties: str = "fifo", reopen: bool = True) -> tuple[Steps, list[str] | None]:
     """Uniform-cost (``g``), greedy (``h``) or A* (``g+h``): the lowest first, ties in the
-    order pushed; a node pushed again when reached cheaper; a stale entry discarded."""
+    order pushed (``ties="lifo"``: the newest first); a node pushed again when reached
+    cheaper; a stale entry discarded.  ``reopen=False``: a closed set: a node expanded is
+    never pushed again, an entry of it taken off later discarded, and a node's first entry
+    taken off expanded at its best g so far."""
+    order = 1 if ties == "fifo" else -1
     def key(g: float, node: str) -> float:
         return {"g": g, "h": h(node), "g+h": g + h(node)}[priority]
 
@@ -78,12 +82,19 @@ def priority_search(roads: Roads, start: str, goals: set[str], priority: str,
     if goal_test == "generate" and start in goals:
         return [], [start]
     best = {start: 0.0}
-    heap = [(key(0.0, start), 0)]
+    heap = [(key(0.0, start), 0, 0)]
+    closed: set[str] = set()
     steps: Steps = []
     while heap and len(steps) < limit:
-        _, e = heapq.heappop(heap)
+        _, _, e = heapq.heappop(heap)
         node, g = names[e], gs[e]
-        if not tree and g > best[node] + CHEAPER_BY:
+        if not tree and not reopen:
+            if node in closed:
+                steps.append((node, (), True))
+                continue
+            closed.add(node)
+            g = best[node]
+        elif not tree and g > best[node] + CHEAPER_BY:
             steps.append((node, (), True))
             continue
         if goal_test == "expand" and node in goals:
@@ -96,13 +107,13 @@ def priority_search(roads: Roads, start: str, goals: set[str], priority: str,
             if tree:
                 if succ in on_path:
                     continue
-            elif succ in best and not g2 < best[succ] - CHEAPER_BY:
+            elif succ in closed or (succ in best and not g2 < best[succ] - CHEAPER_BY):
                 continue
             best[succ] = g2
             names.append(succ)
             gs.append(g2)
             parents[len(names) - 1] = e
-            heapq.heappush(heap, (key(g2, succ), len(names) - 1))
+            heapq.heappush(heap, (key(g2, succ), order * (len(names) - 1), len(names) - 1))
             added.append(succ)
             if goal_test == "generate" and succ in goals:
                 steps.append((node, tuple(added), False))

@@ -102,7 +102,8 @@ def both(g: dict[str, Any], key: str, order: str, **choices: Any) -> None:
         priority = {"ucs": "g", "greedy": "h", "astar": "g+h"}[key]
         h = (lambda node: g["h"][node]) if choices.get("heuristic") == "table" else (
             lambda node: 0.0)
-        want = priority_search(roads, start, goals, priority, h, goal_test, tree, LIMIT)
+        want = priority_search(roads, start, goals, priority, h, goal_test, tree, LIMIT,
+                               choices.get("ties", "fifo"), choices.get("reopen", True))
     got = app_steps(app_graph(g), key, sem)
     assert got[0] == want[0]
     if len(want[0]) < LIMIT:  # the search ended within the steps compared
@@ -124,13 +125,19 @@ def test_bfs_and_dfs_equal_the_plain_searches(g: dict[str, Any], key: str, order
     both(g, key, order, **choices)
 
 
-@settings(max_examples=150)
+@settings(max_examples=200)
 @given(graphs(), st.sampled_from(["ucs", "greedy", "astar"]), ORDERS, GOAL_TESTS,
-       st.booleans(), st.sampled_from(["table", "zero"]))
+       st.booleans(), st.sampled_from(["table", "zero"]), st.sampled_from(["fifo", "lifo"]),
+       st.booleans())
 def test_the_priority_searches_equal_the_plain_ones(g: dict[str, Any], key: str, order: str,
-                                                    goal_test: str, tree: bool,
-                                                    heuristic: str) -> None:
-    both(g, key, order, goal_test=goal_test, tree_search=tree, heuristic=heuristic)
+                                                    goal_test: str, tree: bool, heuristic: str,
+                                                    ties: str, reopen: bool) -> None:
+    """Tree or graph search, each tie rule of order pushed, re-opening or a closed set."""
+    choices: dict[str, Any] = {"goal_test": goal_test, "tree_search": tree,
+                               "heuristic": heuristic, "ties": ties}
+    if not tree:
+        choices["reopen"] = reopen
+    both(g, key, order, **choices)
 
 
 @settings(max_examples=100)

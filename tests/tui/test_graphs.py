@@ -193,7 +193,7 @@ async def test_the_settings_of_a_graph_offer_its_orders_and_estimates_not_moves(
 @sync
 async def test_a_hundred_thousand_nodes_draw_as_points_and_answer_keys_while_end_runs() -> None:
     graph = grid_graph(316)
-    app = graph_app(graph, algorithm="ucs")
+    app = graph_app(graph, algorithm="bfs")  # (recorded by the reference loop: not instant)
     async with app.run_test(size=SIZE) as pilot:
         await wait_until(pilot, lambda: view_of(app).tiles is not None)
         view = view_of(app)
@@ -208,9 +208,11 @@ async def test_a_hundred_thousand_nodes_draw_as_points_and_answer_keys_while_end
             faster()
 
         app.main.action_faster = noted_faster  # type: ignore[method-assign]
-        await pilot.press("end")
-        await wait_until(pilot, lambda: app.session.seeking)
         speed = app.session.speed_index
+        # ``end``'s action called, not pressed: a press returns once the app looks idle, and
+        # the app is busy until the end is reached (in slices, keys answered in between)
+        app.main.action_last()
+        assert app.session.seeking
         await pilot.press("plus")  # a key while the end is computed: handled then
         await wait_until(pilot, lambda: app.session.speed_index == speed + 1)
         assert handled == [True]
@@ -339,3 +341,20 @@ async def test_a_graph_s_trace_is_replayed_beside_its_search(tmp_path: Path) -> 
             await pilot.press("n")
         await wait_until(pilot, lambda: all(run.k == 4 for run in app.session.runs))
         assert "matches DFS (order file" in status_text(app)
+
+
+@sync
+async def test_a_table_that_drops_too_fast_along_a_road_is_said_too() -> None:
+    """An admissible table that is not consistent: A* still finds the cheapest path, and the
+    status line says the table may make it expand a node again, naming the road."""
+    from tui_search.engine.maps.graph_file import parse_graph
+    from tui_search.engine.search.choices import Semantics
+
+    graph = parse_graph("node A 0 0\nnode B 1 0\nnode C 2 0\nedge A B 1\nedge B C 10\n"
+                        "start A\ngoal C\nh A 11\nh B 2\nh C 0\n", "drop.graph")
+    app = graph_app(graph, algorithm="astar",
+                    semantics=Semantics(order=("file",), heuristic="table"))
+    async with app.run_test(size=SIZE) as pilot:
+        await wait_until(pilot, lambda: "not consistent: h(A) = 11" in status_text(app))
+        run = app.session.run
+        assert run is not None and run.admissible

@@ -7,14 +7,23 @@ what a student's graph changed of the exercise's.  Plain Python, no UI."""
 from __future__ import annotations
 
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any, Protocol
 
 from tui_search.engine.maps.graph import Graph
 from tui_search.engine.maps.read import MapError
 from tui_search.engine.search.choices import GOAL_TESTS, GRAPH_ORDERS, Semantics
 
-if TYPE_CHECKING:
-    from tui_search.engine.course.exercise_file import KeyReader
+
+class KeyReader(Protocol):
+    """What is asked of the exercise file's reader
+    (:class:`~tui_search.engine.course.exercise_file.KeyReader`: named here, not imported,
+    so the two modules make no circle)."""
+
+    path: str
+    data: dict[str, Any]
+
+    def error(self, key: str, message: str) -> MapError: ...
+    def string(self, key: str, default: str | None = None) -> str: ...
 
 #: What a student may change of a graph.
 GRAPH_EDITS = ("start", "goal", "closed")

@@ -221,7 +221,9 @@ class EventTree:
     def admissible(self) -> bool:
         """Can the run's heuristic be trusted to find the cheapest path (True when none is
         used)?  On a graph, its estimate is checked against its roads."""
-        return not self.estimate_warning()
+        warning = self.estimate_warning()  # (a graph's may say it is only inconsistent)
+        return not warning or (isinstance(self._recording.board, Graph)
+                               and "not admissible" not in warning)
 
     def estimate_warning(self) -> str:
         """:meth:`_estimate_warning`, worked out once (on a graph it searches the graph)."""
@@ -233,7 +235,8 @@ class EventTree:
         """Why the run's heuristic may miss the cheapest path ("" when it cannot, or none is
         used): manhattan with diagonal moves on a grid; on a graph, an estimate that says more
         than the cheapest way to a goal somewhere
-        (:func:`~tui_search.engine.search.estimate_check.estimate_faults`)."""
+        (:func:`~tui_search.engine.search.estimate_check.estimate_faults`), else one whose drop
+        along a road is more than the road's cost (A* may expand a node again)."""
         semantics = self._recording.semantics
         if not self._algo.informed:
             return ""
@@ -241,8 +244,7 @@ class EventTree:
         if isinstance(board, Graph):  # (the check's module imported only for a graph)
             from tui_search.engine.search.estimate_check import estimate_faults
 
-            faults = estimate_faults(board, semantics.heuristic)
-            return next((f for f in faults if "not admissible" in f), "")
+            return next(iter(estimate_faults(board, semantics.heuristic)), "")
         if admissible(semantics.heuristic, semantics.order):
             return ""
         from tui_search.engine.search.heuristics import INADMISSIBLE

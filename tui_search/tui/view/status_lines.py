@@ -66,8 +66,9 @@ def search_status(run: Run | None, name: str, *, in_pane: bool, playing: str = "
     if done and run is not None:
         status.append(Piece([(f"done at step {run.k:,}", "stats--result")], DONE_RANK, SEP))
     differences = run.differences() if run is not None else []
-    if run is not None and not run.admissible:
-        differences.append(run.estimate_warning())
+    warning = run.estimate_warning() if run is not None else ""
+    if warning:  # a heuristic that may mislead the search
+        differences.append(warning)
     if differences:  # always say what differs
         status.append(Piece([("· " + " · ".join(differences), "stats--note")], 0,
                             (" ", "stats--note")))
