@@ -14,8 +14,8 @@ def romania(algorithm: str = "astar") -> SearchApp:
 def test_romania_under_a_star_midway_at_120_by_40(snap_compare) -> None:
     """A* after 3 steps: Arad and Sibiu expanded, Rimnicu being expanded (its chip lit),
     Fagaras, Pitesti, Craiova and the rest of the frontier as rings; every city named in
-    full with every road's cost; the priority queue lists f, g and h, Fagaras next (f 415 below Pitesti's 417); the tree
-    names each node with its road's cost."""
+    full with every road's cost; the priority queue lists f, g and h, Fagaras next (f 415
+    below Pitesti's 417); the tree names each node with its road's cost."""
     assert snap_compare(romania(), press=["n", "n", "n"], terminal_size=(120, 40))
 
 
