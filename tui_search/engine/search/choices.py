@@ -90,21 +90,17 @@ EXPLAIN: dict[str, str] = {
     "recursive": "DFS as recursion: a line lists the unvisited neighbours, or the calls made",
     "path_check": "tree search skips the cells on the node's own path (off: skips nothing)",
     "mark_start": "is the start marked reached when pushed (off: it can be pushed again)?",
-    "weight": "weighted A*: f = g + W·h, a path at most W × the optimum (1: A* itself)",
+    "weight": "weighted A*: f = g + W·h, a path at most W × the optimum (1: A*)",
 }
-
-#: The weights the settings screen offers (the command line takes any number 1 or more).
-WEIGHTS: tuple[float, ...] = (1.0, 1.5, 2.0, 3.0, 5.0)
-
 
 def weight_text(weight: float) -> str:
     """A weight as a student writes it: "2", "1.5"."""
     return f"{weight:g}"
 
 
-def check_weight(weight: float) -> float:
-    """``weight`` as a float, or a one-line ``ValueError``: a number 1 or more (not inf, not
-    NaN)."""
+def check_weight(weight: float | str) -> float:
+    """``weight`` (a number, or typed) as a float, or a one-line ``ValueError``: a number 1
+    or more (not inf, not NaN)."""
     try:
         value = float(weight)
     except (TypeError, ValueError):
