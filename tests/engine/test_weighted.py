@@ -127,3 +127,32 @@ def test_compare_names_a_weight() -> None:
     # the choices' weight is A*'s alone: the others take 1
     fitted = parse_compare("ucs,astar", Semantics(weight=3.0))
     assert [c.semantics.weight for c in fitted] == [1.0, 3.0]
+
+
+WEIGHTED_EXERCISE = """\
+title = "How far from the cheapest?"
+text = "Move obstacles so that weighted A* (w=2) pays more than uniform-cost search."
+map = "tutorial.txt"
+searches = ["ucs", "astar:w=2", "astar:w=1.5"]
+edits = ["obstacles"]
+solved = "astar_w_2.cost > ucs.cost and astar_w_2.cost <= 2 * ucs.cost and astar_w_1_5.found"
+"""
+
+
+def test_an_exercise_names_weighted_astar_astar_w_2() -> None:
+    from tui_search.engine.course.exercise_file import parse_exercise
+    from tui_search.engine.course.grading import grade
+    from tui_search.engine.maps.load import parse_map_text
+
+    from tests.helpers import MAPS
+
+    exercise = parse_exercise(WEIGHTED_EXERCISE, str(MAPS / "weighted.toml"))
+    assert [name for name, _ in exercise.searches] == ["ucs", "astar_w_2", "astar_w_1_5"]
+    assert [c.semantics.weight for _, c in exercise.searches] == [1.0, 2.0, 1.5]
+    tutorial = grid_from_rows(TUTORIAL_ROWS)
+    detour = parse_map_text("\n".join(
+        ["S....#......", "#.##...#...#", "..####....##", "#....#.#....", "#...#...#...",
+         "#...#.###...", ".......#.##G"]) + "\n", "detour.txt")
+    assert not grade(exercise, tutorial).solved  # the same path as UCS's there
+    verdict = grade(exercise, detour)
+    assert verdict.figures["astar_w_2.cost"] == pytest.approx(17.142136, abs=1e-6)
