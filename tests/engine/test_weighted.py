@@ -46,12 +46,13 @@ def test_every_loop_records_weighted_astar_as_the_reference(core_name: str, grid
 @st.composite
 def admissible_choices(draw) -> Semantics:
     """Graph search with the goal tested on expansion (A*'s own) and an admissible
-    heuristic: the choices under which A* is optimal."""
+    heuristic (each here is consistent too): the choices under which A* is optimal, with
+    re-opening or a closed set (weighted A* keeps its bound either way)."""
     order = tuple(draw(st.lists(st.sampled_from(DIRECTIONS), min_size=1, max_size=8,
                                 unique=True)))
     heuristic = draw(st.sampled_from([h for h in sorted(HEURISTICS) if admissible(h, order)]))
     return Semantics(order=order, corners=draw(st.sampled_from(CORNER_RULES)),
-                     heuristic=heuristic)
+                     heuristic=heuristic, reopen=draw(st.booleans()))
 
 
 @weighted
@@ -140,11 +141,10 @@ solved = "astar_w_2.cost > ucs.cost and astar_w_2.cost <= 2 * ucs.cost and astar
 
 
 def test_an_exercise_names_weighted_astar_astar_w_2() -> None:
+    from tests.helpers import MAPS
     from tui_search.engine.course.exercise_file import parse_exercise
     from tui_search.engine.course.grading import grade
     from tui_search.engine.maps.load import parse_map_text
-
-    from tests.helpers import MAPS
 
     exercise = parse_exercise(WEIGHTED_EXERCISE, str(MAPS / "weighted.toml"))
     assert [name for name, _ in exercise.searches] == ["ucs", "astar_w_2", "astar_w_1_5"]
