@@ -8,6 +8,7 @@ from tests.tui.test_app import click_shown, screen_shown, stats, sync, wait_unti
 from tui_search.engine.search.choices import Semantics
 from tui_search.tui.app import SearchApp
 from tui_search.tui.dialogs.settings import SettingsScreen
+from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.run_pane import RunPane
 
 SIZE = (100, 32)
@@ -47,6 +48,8 @@ async def test_the_settings_pick_a_weight_and_the_status_line_states_the_bound()
         await wait_until(pilot, lambda: app.session.run.semantics.weight == 2.0)
         await wait_until(pilot, lambda: "weight 2: at most 2 × the optimum" in stats(app)[0])
         assert app.session.semantics == Semantics(weight=2.0)
+        panel = app.query_one(FrontierPanel)
+        await wait_until(pilot, lambda: "f = g + 2·h" in str(panel.border_title))
         await pilot.press("end")
         await wait_until(pilot, lambda: app.session.run.at_end)
         # the real ratio, against the cheapest path a uniform-cost search finds
