@@ -15,7 +15,8 @@ gives a "not installed" row.  See benchmarks/README.md for what each row means.
 
 This file is the entry point only: each section lives in its own module of this package
 (core.py, fallback.py, engine.py, choices.py, informed.py, jump.py, step.py, startup.py,
-instructions.py, class_load.py, terrain.py, big_map.py, diagnose.py, graphs.py), on the shared
+instructions.py, class_load.py, terrain.py, big_map.py, diagnose.py, graphs.py,
+weighted.py), on the shared
 table.py,
 harness.py and
 maps.py.
@@ -54,6 +55,7 @@ from benchmarks.startup import bench_startup
 from benchmarks.step import bench_step
 from benchmarks.table import ROWS, Row, add, print_table
 from benchmarks.terrain import bench_terrain
+from benchmarks.weighted import bench_weighted
 
 #: The sections, in the order they run and print.
 SECTIONS = {"core": bench_core, "fallback": bench_fallback, "engine": bench_engine,
@@ -61,7 +63,7 @@ SECTIONS = {"core": bench_core, "fallback": bench_fallback, "engine": bench_engi
             "step": bench_step, "compare": bench_compare, "startup": bench_startup,
             "instructions": bench_instructions, "class_load": bench_class_load,
             "terrain": bench_terrain, "big_map": bench_big_map, "diagnose": bench_diagnose,
-            "graph": bench_graph}
+            "graph": bench_graph, "weighted": bench_weighted}
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -51,7 +51,8 @@ def test_every_benchmark_module_imports() -> None:
 def test_the_entry_point_has_the_fifteen_sections_and_refuses_another(capsys) -> None:
     assert list(bench.SECTIONS) == ["core", "fallback", "engine", "choices", "informed", "jump",
                                     "step", "compare", "startup", "instructions", "class_load",
-                                    "terrain", "big_map", "diagnose", "graph"]
+                                    "terrain", "big_map", "diagnose", "graph",
+                                    "weighted"]
     with pytest.raises(SystemExit) as info:
         bench.main(["--only", "engine,nope"])
     assert info.value.code == 2 and "unknown section 'nope'" in capsys.readouterr().err

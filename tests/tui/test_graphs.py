@@ -172,7 +172,8 @@ async def test_the_settings_of_a_graph_offer_its_orders_and_estimates_not_moves(
         await pilot.press("comma")
         await wait_until(pilot, lambda: len(app.screen.query("#heuristic")) == 1)
         screen = app.screen
-        assert not screen.query(Input) and not screen.query("#corners")
+        # no moves to type (the one input is A*'s weight) and no corners
+        assert [i.id for i in screen.query(Input)] == ["weight"] and not screen.query("#corners")
         order = screen.query_one("#order", RadioSet)
         assert [b.id for b in order.query("PickButton")] == ["order-file", "order-name"]
         heuristic = screen.query_one("#heuristic", RadioSet)

@@ -144,7 +144,7 @@ def write_generated(options: Options) -> int:
 
 #: The choice flags whose default is None (not given).
 _CHOICE_FLAGS = ("corners", "visit", "goal_test", "heuristic", "recursive_lines", "ties",
-                 "cost_tolerance", "reopen", "mark_start")
+                 "cost_tolerance", "weight", "reopen", "mark_start")
 
 
 def changed_choice_flags(options: Options) -> list[str]:
@@ -188,7 +188,8 @@ def _choices_of(options: Options) -> dict[str, object]:
         goal_test=options.goal_test, tree_search=options.tree_search,
         heuristic=heuristic, recursive=recursive,
         path_check=not options.no_path_check)
-    for name, value in (("ties", options.ties), ("cost_tolerance", options.cost_tolerance)):
+    for name, value in (("ties", options.ties), ("cost_tolerance", options.cost_tolerance),
+                        ("weight", options.weight)):
         if value is not None:
             choices[name] = value
     for name, value in (("reopen", options.reopen), ("mark_start", options.mark_start)):
@@ -244,6 +245,8 @@ def _refused_flag(options: Options) -> str:
     for flag in ("ties", "cost_tolerance", "reopen"):
         if getattr(options, flag) is not None and not algorithm.weighted:
             return f"--{flag.replace('_', '-')} applies to -a {weighted} only, not {key}"
+    if options.weight is not None and algorithm.priority != "g+h":
+        return f"--weight applies to -a astar only (f = g + W·h), not {key}"
     if (options.recursive or options.recursive_lines) and algorithm.key not in ("dfs", "iddfs"):
         return f"--recursive applies to -a dfs, iddfs only, not {key}"
     return ""

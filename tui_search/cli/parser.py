@@ -127,6 +127,10 @@ def build_parser() -> argparse.ArgumentParser:
                    help="how much lower a new g must be to count as cheaper (default "
                    f"{CHEAPER_BY:g}: rounding is no cheaper path; 0 compares exactly, as "
                    "code comparing floats with < does)")
+    p.add_argument("--weight", metavar="W", type=_weight, default=None,
+                   help="weighted A* (-a astar): f = g + W·h, W 1 or more (default 1: A* "
+                   "itself); with an admissible heuristic the path costs at most W times "
+                   "the optimum")
     p.add_argument("--reopen", choices=("yes", "no"), default=None,
                    help="may -a ucs, greedy or astar push a cell it has expanded again, "
                    "reached with a lower g (yes, default); no: a closed set")
@@ -136,7 +140,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--compare", metavar="A,B",
                    help="two to four searches side by side in the app (compare mode); with "
                    "--headless, run them on the map and print a table (e.g. bfs,dfs or "
-                   "astar:manhattan,ucs: an informed search may name its heuristic)")
+                   "astar:manhattan,ucs: an informed search may name its heuristic; "
+                   "astar:w=2 a weight, astar:manhattan:w=2 both)")
     p.add_argument("--exercise", metavar="N|FILE",
                    help="the tutorial's exercise N or an exercise FILE (TOML: "
                    "docs/04-exercises.md) as a live challenge in the app; with --headless, "
@@ -246,6 +251,16 @@ def _tolerance(text: str) -> float:
         x = -1.0
     if not 0 <= x < float("inf"):  # NaN fails too
         raise argparse.ArgumentTypeError(f"{text!r} is not a number 0 or more")
+    return x
+
+
+def _weight(text: str) -> float:
+    try:
+        x = float(text)
+    except ValueError:
+        x = 0.0
+    if not 1 <= x < float("inf"):  # NaN fails too
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number 1 or more")
     return x
 
 

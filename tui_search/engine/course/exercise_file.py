@@ -147,8 +147,9 @@ class Exercise:
 
 
 def search_name(spec: str) -> str:
-    """The condition's name for one of ``searches``: ``astar:manhattan`` -> astar_manhattan."""
-    return spec.strip().replace(":", "_")
+    """The condition's name for one of ``searches``: ``astar:manhattan`` -> astar_manhattan,
+    weighted A*'s ``astar:w=2`` -> astar_w_2 (``astar:w=1.5`` -> astar_w_1_5)."""
+    return spec.strip().replace(":", "_").replace("=", "_").replace(".", "_")
 
 
 class KeyReader:

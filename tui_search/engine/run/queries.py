@@ -59,7 +59,8 @@ class EventTree:
             self._grid = problem
             goal = problem.unpad(problem.goal)
             heuristic = heuristic_for(recording.semantics.heuristic, problem.lowest)
-            priority = priority_of(algo.priority or "g", heuristic, goal)
+            priority = priority_of(algo.priority or "g", heuristic, goal,
+                                   recording.semantics.weight)
             unpad, (gx, gy) = problem.unpad, goal
 
             def estimate(p: int) -> float:

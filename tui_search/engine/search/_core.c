@@ -93,13 +93,14 @@ static PyObject *Search_new(PyTypeObject *type, PyObject *args, PyObject *kw) {
     Search *s = (Search *)type->tp_alloc(type, 0);
     if (!s) return NULL;
     PyObject *moves, *walls, *terrain;
-    if (!PyArg_ParseTuple(args, "iiiiiiiiiiiidOO(OOOOOOOOO)iiiOdd", &s->loop, &s->lifo, &s->tree,
+    if (!PyArg_ParseTuple(args, "iiiiiiiiiiiidOO(OOOOOOOOO)iiiOddd", &s->loop, &s->lifo, &s->tree,
                           &s->visit_expand, &s->use_g, &s->use_h,
                           &s->heuristic, &s->close, &s->refused, &s->stride, &s->start,
                           &s->goal, &s->extra, &walls, &moves, &s->r_node, &s->r_end,
                           &s->r_exp, &s->r_g, &s->r_disc, &s->r_depth, &s->it_first,
                           &s->it_root, &s->it_limit, &s->goal_on_push, &s->goal_on_pop,
-                          &s->nmoves, &terrain, &s->scale, &s->cheaper)) {
+                          &s->nmoves, &terrain, &s->scale, &s->cheaper,
+                          &s->weight)) {
         s->r_node = s->r_end = s->r_exp = s->r_g = s->r_disc = s->r_depth = NULL;
         s->it_first = s->it_root = s->it_limit = NULL;
         Py_DECREF(s); return NULL;

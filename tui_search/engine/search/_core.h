@@ -50,10 +50,11 @@ typedef struct {
     Py_ssize_t room;                          /* steps the scratch buffers hold, reserved */
     int started, limit, cut_off, iteration;
     /* terrain: each padded cell's cost (NULL: all 1), the heuristic's factor (the lowest
-     * cost) and how much cheaper a new g must be (CHEAPER_BY) */
+     * cost) and how much cheaper a new g must be (CHEAPER_BY); weighted A*'s W (f = g + W*h;
+     * 1: A*) */
     Py_buffer terrain_view;
     const double *terrain;
-    double scale, cheaper;
+    double scale, cheaper, weight;
 } Search;
 
 /* _core_loops.c: a search's set-up before its first step, and its three loops; each loop

@@ -47,7 +47,9 @@ static double priority(Search *s, double g, int m) {
     default: h = 0.0;
     }
     if (s->scale != 1.0) h = s->scale * h;  /* terrain: times the lowest cell cost */
-    return s->use_g ? g + h : h;
+    if (!s->use_g) return h;
+    if (s->weight != 1.0) h = s->weight * h;  /* weighted A*: g + W*h, rounded as Python's */
+    return g + h;
 }
 
 /* -- the priority queue: a binary heap ordered by (priority, event), as heapq's tuples -- */

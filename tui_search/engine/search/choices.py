@@ -16,6 +16,9 @@
   from the root to the node being expanded.  ``visit`` does not apply.
 * ``heuristic``: greedy best-first's and A*'s estimate of the cost to the goal
   (:mod:`tui_search.engine.search.heuristics`); the other searches use none.
+* ``weight``: weighted A*'s W, 1 or more: the priority is f = g + W·h, and with an
+  admissible h the path costs at most W times the optimum.  1 (the default) is A* itself, the
+  very same floats; A* only.
 
 On a graph (:mod:`tui_search.engine.search.space`), ``order`` is one word of
 :data:`GRAPH_ORDERS` (``file``: the roads as the file lists them; ``name``: by the names they
@@ -53,7 +56,7 @@ from typing import TYPE_CHECKING
 
 from tui_search.engine.maps.grid import DEFAULT_ORDER, DELTAS
 from tui_search.engine.search.heuristics import CHEAPER_BY, DEFAULT_HEURISTIC, HEURISTICS
-from tui_search.engine.search.registry import Algorithm, Frontier
+from tui_search.engine.search.registry import PRIORITIES, Algorithm, Frontier
 from tui_search.engine.util.frozen import Frozen
 
 if TYPE_CHECKING:
@@ -99,7 +102,24 @@ EXPLAIN: dict[str, str] = {
     "recursive": "DFS as recursion: a line lists the unvisited neighbours, or the calls made",
     "path_check": "tree search skips the cells on the node's own path (off: skips nothing)",
     "mark_start": "is the start marked reached when pushed (off: it can be pushed again)?",
+    "weight": "weighted A*: f = g + W·h, a path at most W × the optimum (1: A*)",
 }
+
+def weight_text(weight: float) -> str:
+    """A weight as a student writes it: "2", "1.5"."""
+    return f"{weight:g}"
+
+
+def check_weight(weight: float | str) -> float:
+    """``weight`` (a number, or typed) as a float, or a one-line ``ValueError``: a number 1
+    or more (not inf, not NaN)."""
+    try:
+        value = float(weight)
+    except (TypeError, ValueError):
+        raise ValueError(f"weight {weight!r}: a number 1 or more") from None
+    if not (1.0 <= value < float("inf")):  # NaN fails too
+        raise ValueError(f"weight {weight!r}: a number 1 or more (f = g + W·h)")
+    return value
 
 
 class Semantics(Frozen):
@@ -110,7 +130,7 @@ class Semantics(Frozen):
 
     __slots__ = _FIELDS = ("order", "corners", "visit", "goal_test", "tree_search", "heuristic",
                            "ties", "cost_tolerance", "reopen", "recursive", "path_check",
-                           "mark_start")
+                           "mark_start", "weight")
 
     order: tuple[str, ...]
     corners: str
@@ -124,12 +144,14 @@ class Semantics(Frozen):
     recursive: str  # "": a stack
     path_check: bool
     mark_start: bool
+    weight: float  # weighted A*'s W (1: A*)
 
     def __init__(self, order: tuple[str, ...] = DEFAULT_ORDER, corners: str = "always",
                  visit: str = "generate", goal_test: str | None = None,
                  tree_search: bool = False, heuristic: str = DEFAULT_HEURISTIC,
                  ties: str = "fifo", cost_tolerance: float = CHEAPER_BY, reopen: bool = True,
-                 recursive: str = "", path_check: bool = True, mark_start: bool = True) -> None:
+                 recursive: str = "", path_check: bool = True, mark_start: bool = True,
+                 weight: float = 1.0) -> None:
         graph_order = len(order) == 1 and order[0] in GRAPH_ORDERS
         if not graph_order and (not order or any(d not in DELTAS for d in order)
                                 or len(set(order)) != len(order)):
@@ -146,6 +168,7 @@ class Semantics(Frozen):
                 raise ValueError(f"{name} {value!r}: use {', '.join(allowed)}")
         if not (cost_tolerance >= 0 and cost_tolerance != float("inf")):  # NaN fails too
             raise ValueError(f"cost tolerance {cost_tolerance!r}: a number 0 or more")
+        weight = check_weight(weight)
         if tree_search and visit != "generate":
             raise ValueError("tree search has no visited set: the visit rule does not apply")
         if recursive and visit != "generate":
@@ -159,7 +182,7 @@ class Semantics(Frozen):
         self._assign(order=order, corners=corners, visit=visit, goal_test=goal_test,
                      tree_search=tree_search, heuristic=heuristic, ties=ties,
                      cost_tolerance=float(cost_tolerance), reopen=reopen, recursive=recursive,
-                     path_check=path_check, mark_start=mark_start)
+                     path_check=path_check, mark_start=mark_start, weight=weight)
 
     def check(self, algorithm: Algorithm) -> None:
         """Refuse the combinations that make no sense for ``algorithm`` (``ValueError``)."""
@@ -188,6 +211,8 @@ class Semantics(Frozen):
             return f"ties on g do not apply to {name}: its priority is g itself"
         if self.recursive and algorithm.frontier is not Frontier.LIFO:
             return f"recursion is a depth-first search's (DFS, IDDFS), not {name}'s"
+        if self.weight != 1.0 and algorithm.priority != "g+h":
+            return f"a weight applies to A* (f = g + W·h), not {name}"
         return ""
 
     def fitted(self, algorithm: Algorithm) -> Semantics:
@@ -204,6 +229,8 @@ class Semantics(Frozen):
             out = out.replace(ties="fifo")
         if algorithm.frontier is not Frontier.LIFO and out.recursive:
             out = out.replace(recursive="")
+        if algorithm.priority != "g+h" and out.weight != 1.0:
+            out = out.replace(weight=1.0)
         return out
 
     def goal_test_for(self, algorithm: Algorithm) -> str:
@@ -254,6 +281,8 @@ class Semantics(Frozen):
         if (self.heuristic != (TABLE if graph else DEFAULT_HEURISTIC)
                 and (algorithm is None or algorithm.informed)):
             out.append(f"heuristic {self.heuristic}")
+        if self.weight != 1.0 and (algorithm is None or algorithm.priority == "g+h"):
+            out.append(f"weight {weight_text(self.weight)}")
         out += self.published_words()
         return out
 
@@ -272,6 +301,14 @@ class Semantics(Frozen):
             out.append("start not marked")
         return out
 
+    def priority_words(self, algorithm: Algorithm) -> str:
+        """What ``algorithm``'s priority queue orders by, in the textbook's words: "f = g +
+        h", weighted A*'s "f = g + 2·h", "g", "h" ("" for none)."""
+        words = PRIORITIES.get(algorithm.priority or "", "")
+        if algorithm.priority == "g+h" and self.weight != 1.0:
+            return f"f = g + {weight_text(self.weight)}·h"
+        return words
+
     @property
     def branching(self) -> int:
         """The most successors a node can have: the number of moves."""
@@ -286,7 +323,8 @@ class Semantics(Frozen):
     def as_json(self, algorithm: Algorithm | None = None) -> dict[str, object]:
         """Every choice by name; the visit rule is null where it does not apply (tree search,
         recursion, iterative deepening, the cost-ordered searches), the heuristic where none
-        is used, and the priority queue's choices where there is none."""
+        is used, the priority queue's choices where there is none, and the weight but for
+        A*."""
         no_visit = self.tree_search or bool(self.recursive) or (
             algorithm is not None and (algorithm.iterative or algorithm.weighted))
         goal_test = self.goal_test_for(algorithm) if algorithm else self.goal_test or "generate"
@@ -304,6 +342,7 @@ class Semantics(Frozen):
             "recursive": self.recursive or None,
             "path_check": self.path_check if self.tree_search else None,
             "mark_start": self.mark_start,
+            "weight": self.weight if algorithm is None or algorithm.priority == "g+h" else None,
         }
 
 

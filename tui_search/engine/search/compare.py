@@ -23,18 +23,23 @@ class Contender(NamedTuple):
 
     @property
     def label(self) -> str:
+        """"A*", "A* (manhattan)", "A* (w=2)", "A* (manhattan, w=2)"."""
         algo = get_algorithm(self.algorithm)
+        said = []
         if algo.informed and self.semantics.heuristic != DEFAULT_SEMANTICS.heuristic:
-            return f"{algo.short} ({self.semantics.heuristic})"
-        return algo.short
+            said.append(self.semantics.heuristic)
+        if self.semantics.weight != 1.0:
+            said.append(f"w={self.semantics.weight:g}")
+        return f"{algo.short} ({', '.join(said)})" if said else algo.short
 
 
 def parse_compare(text: str, semantics: Semantics = DEFAULT_SEMANTICS,
                   fit: bool = False, fewest: int = 2) -> list[Contender]:
     """``bfs,dfs`` or ``astar:manhattan,ucs``: ``fewest`` (two; the app's panes: one) to four
-    registry keys, each informed one with an optional heuristic.  ``ValueError`` (one line)
-    for anything else -- or, with ``fit``, for a choice that does not apply to one of them,
-    that one takes the default instead (:meth:`~tui_search.engine.search.choices.Semantics.
+    registry keys, each informed one with an optional heuristic, A* with an optional weight
+    (``astar:w=2``, ``astar:manhattan:w=2``; else the given choices' weight).  ``ValueError``
+    (one line) for anything else -- or, with ``fit``, for a choice that does not apply to one
+    of them, that one takes the default instead (:meth:`~tui_search.engine.search.choices.Semantics.
     fitted`: the app's settings apply to every pane where they can)."""
     from tui_search.engine.search.heuristics import HEURISTICS
 
@@ -44,9 +49,24 @@ def parse_compare(text: str, semantics: Semantics = DEFAULT_SEMANTICS,
         raise ValueError(f"compare {words} to four searches, not {len(parts)} ({text!r})")
     out = []
     for part in parts:
-        key, _, heuristic = part.partition(":")
+        key, *extras = part.split(":")
         algo = get_algorithm(key)
         sem = semantics
+        heuristic = ""
+        for extra in extras:
+            if extra.startswith("w="):
+                if algo.priority != "g+h":
+                    raise ValueError(f"{part!r}: a weight applies to astar only, not {key}")
+                try:
+                    sem = sem.replace(weight=float(extra[2:]))
+                except ValueError:
+                    raise ValueError(f"{part!r}: the weight is a number 1 or more") from None
+            elif heuristic:
+                raise ValueError(f"{part!r}: one heuristic, then w=W")
+            else:
+                heuristic = extra
+        if sem.weight != 1.0 and algo.priority != "g+h" and not extras:
+            sem = sem.replace(weight=1.0)  # the choices' weight is A*'s alone
         if heuristic:
             if not algo.informed:
                 raise ValueError(f"{part!r}: {key} uses no heuristic")

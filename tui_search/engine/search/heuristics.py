@@ -99,22 +99,43 @@ def scaled(heuristic: Heuristic, lowest: float) -> Heuristic:
     return lambda dx, dy: lowest * heuristic(dx, dy)
 
 
+def weighted(heuristic: Heuristic, weight: float) -> Heuristic:
+    """``heuristic`` times weighted A*'s ``weight`` (itself when that is 1: A* pays nothing,
+    and its floats stay A*'s)."""
+    if weight == 1.0:
+        return heuristic
+    return lambda dx, dy: weight * heuristic(dx, dy)
+
+
 def heuristic_for(name: str, lowest: float = 1.0) -> Heuristic:
     """The heuristic called ``name`` on a map whose lowest cell cost is ``lowest``."""
     return scaled(HEURISTICS[name], lowest)
 
 
-def priority_of(priority: str, heuristic: Heuristic, goal: tuple[int, int]
-                ) -> Callable[[float, int, int], float]:
+def priority_of(priority: str, heuristic: Heuristic, goal: tuple[int, int],
+                weight: float = 1.0) -> Callable[[float, int, int], float]:
     """The priority of an entry with cost ``g`` at ``(x, y)``: ``g``, ``h`` or ``g + h`` (the
-    algorithm's ``priority``).  The loops inline nothing of it, so every loop orders alike."""
+    algorithm's ``priority``); weighted A*'s ``g + weight * h`` when ``weight`` is not 1 (the
+    product rounded, then the sum: the compiled core's floats, built with no fused
+    multiply-add).  The loops inline nothing of it, so every loop orders alike."""
     gx, gy = goal
     if priority == "g":
         return lambda g, x, y: g
     if priority == "h":
         return lambda g, x, y: heuristic(abs(x - gx), abs(y - gy))
+    if weight != 1.0:
+        return lambda g, x, y: g + weight * heuristic(abs(x - gx), abs(y - gy))
     return lambda g, x, y: g + heuristic(abs(x - gx), abs(y - gy))
 
 
+def consistent_order(name: str, order: tuple[str, ...], weight: float = 1.0) -> bool:
+    """Does an A* ordered by ``g + weight * h`` never reach a cell it expanded more cheaply
+    (so that the loops may close an expanded cell)?  With weight 1 and an admissible heuristic
+    here (each is consistent too); never for a weight above 1: W·h overestimates, and a cell
+    expanded may be reached more cheaply later (it is re-opened, as the reference loop
+    does)."""
+    return weight == 1.0 and admissible(name, order)
+
+
 __all__ = ["CHEAPER_BY", "DEFAULT_HEURISTIC", "EXPLAIN_HEURISTIC", "HEURISTICS", "INADMISSIBLE",
-           "admissible", "heuristic_for", "priority_of", "scaled"]
+           "admissible", "consistent_order", "heuristic_for", "priority_of", "scaled", "weighted"]

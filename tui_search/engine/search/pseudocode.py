@@ -3,12 +3,12 @@ plain words, one numbered line per line.
 
 Nothing here is a fixed text per algorithm: the frontier's name and its operations come from
 the registry (:mod:`tui_search.engine.search.registry`: a queue's "push back" and "pop front", a
-stack's "push" and "pop", a priority queue's order by f = g + h, g or h), and each search
-choice (:mod:`tui_search.engine.search.choices`) puts, moves or removes its own lines: the visit
-rule moves the visited check below the take-off, the goal test moves the goal check, tree
-search trades the visited set for the check "on the path", a corner rule adds its line, and
-iterative deepening wraps it all in its loop over depth limits.  So a student who flips a
-choice sees which line moved.
+stack's "push" and "pop", a priority queue's order by f = g + h, g or h; weighted A*'s by
+f = g + W·h), and each search choice (:mod:`tui_search.engine.search.choices`) puts, moves or
+removes its own lines: the visit rule moves the visited check below the take-off, the goal
+test moves the goal check, tree search trades the visited set for the check "on the path", a
+corner rule adds its line, and iterative deepening wraps it all in its loop over depth
+limits.  So a student who flips a choice sees which line moved.
 
 The code says what :mod:`tui_search.engine.search.reference` does, in its order.  Each line has a
 ``kind``, a name for what it does ("take", "reached", "push" ...), which stays the same
@@ -22,7 +22,7 @@ from functools import lru_cache
 
 from tui_search.engine.search.choices import TIE_WORDS, Semantics
 from tui_search.engine.search.heuristics import CHEAPER_BY
-from tui_search.engine.search.registry import PRIORITIES, Algorithm
+from tui_search.engine.search.registry import Algorithm
 
 #: What a move costs, as the line that adds it to g says it.  Terrain costs land here: the
 #: engine's cost of a move, in words (a keyword of :func:`pseudocode`).
@@ -136,7 +136,7 @@ def _successor_lines(algorithm: Algorithm, semantics: Semantics, move_cost: str,
     reached = _reached_line(algorithm, semantics)
     if reached is not None:
         out.append((reached[0], 2, reached[1]))
-    by = PRIORITIES.get(algorithm.priority or "", "")
+    by = semantics.priority_words(algorithm)
     out.append(("push", 2, algorithm.frontier.push_words(by)))
     if marks:
         out.append(("mark_succ", 2, marks[1]))
@@ -161,7 +161,7 @@ def _generate(algorithm: Algorithm, semantics: Semantics, move_cost: str) -> Pse
     goal_test = semantics.goal_test_for(algorithm)
     frontier = algorithm.frontier
     order_name = algorithm.priority_name
-    by = PRIORITIES.get(algorithm.priority or "", "")
+    by = semantics.priority_words(algorithm)  # weighted A*'s: f = g + W·h
     order_by = f"{by}, h = {semantics.heuristic} distance" if algorithm.informed else by
     base = 0
 

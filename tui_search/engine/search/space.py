@@ -23,7 +23,7 @@ from tui_search.engine.search.choices import GRAPH_HEURISTICS, GRAPH_ORDERS, TAB
 from tui_search.engine.search.heuristics import HEURISTICS, heuristic_for, priority_of
 from tui_search.engine.search.state import State
 
-#: The priority of an entry with cost ``g`` at a state (g, h or g + h).
+#: The priority of an entry with cost ``g`` at a state (g, h, g + h or weighted A*'s g + W·h).
 Priority = Callable[[float, State], float]
 
 
@@ -106,7 +106,7 @@ class GridSpace:
 
     def priority(self, kind: str) -> Priority:
         # The grid loops' own function, so that every loop computes the same floats.
-        of = priority_of(kind, self._heuristic, self.goal)
+        of = priority_of(kind, self._heuristic, self.goal, self.semantics.weight)
         return lambda g, cell: of(g, *cast(Cell, cell))
 
     def path_cost(self, path: list[State] | None) -> float | None:
@@ -180,6 +180,9 @@ class GraphSpace:
         h = self._h
         if kind == "h":
             return lambda g, node: h(node)
+        weight = self.semantics.weight
+        if weight != 1.0:  # weighted A*
+            return lambda g, node: g + weight * h(node)
         return lambda g, node: g + h(node)
 
     def path_cost(self, path: list[State] | None) -> float | None:

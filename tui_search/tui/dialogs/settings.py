@@ -28,6 +28,8 @@ from tui_search.engine.search.choices import (
     TIE_RULES,
     VISIT_RULES,
     Semantics,
+    check_weight,
+    weight_text,
 )
 from tui_search.engine.search.heuristics import CHEAPER_BY, HEURISTICS, INADMISSIBLE, admissible
 from tui_search.engine.search.registry import ALGORITHMS, Algorithm
@@ -92,6 +94,8 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
         & RadioSet > RadioButton { width: auto; margin-right: 3; }
         & #heuristic > RadioButton { margin-right: 1; }  /* five in a row */
         & #ties > RadioButton { margin-right: 0; }  /* seven */
+        & #weight { width: 7; }  /* beside the ticks */
+        & #weight-label { width: auto; margin-right: 1; }
         & #compare-picks, .ticks { height: 1; width: 100%; margin-top: 0; }
         & #compare-picks > Checkbox, .ticks > Checkbox { width: auto; margin-right: 2; }
         & Input { width: 100%; background: $boost; }
@@ -158,7 +162,7 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
             yield self._radios("recursive", RECURSION, sem.recursive or "stack")
             yield Label(f"{EXPLAIN['tree_search']}; {EXPLAIN['recursive']}",
                         id="recursive-explain", classes="explain extra")
-            yield Label("Heuristic; a priority queue's ties, re-opening and costs",
+            yield Label("Heuristic; a priority queue's ties, re-opening, costs; A*'s weight",
                         classes="choice")
             yield Label("", id="heuristic-explain", classes="explain")
             yield self._radios("heuristic", self.heuristics, sem.heuristic)
@@ -168,6 +172,9 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
                                compact=True)
                 yield TickBox("exact costs", sem.cost_tolerance == 0, id="exact_costs",
                                compact=True)
+                yield Label("weight W", id="weight-label")  # weighted A*'s
+                yield Input(weight_text(sem.weight), id="weight", compact=True)
+            yield Label(EXPLAIN["weight"], id="weight-explain", classes="explain extra")
             yield Label("Compare (c)", classes="choice")
             picked = {part.strip().partition(":")[0] for part in self.comparison.split(",")}
             with Horizontal(id="compare-picks"):
@@ -252,6 +259,9 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
         mark = self.query_one("#mark_start", Checkbox).value or bool(
             tree or recursive or visit != "generate")
         exact = self.query_one("#exact_costs", Checkbox).value
+        weight = self._weight() if any(a.priority == "g+h" for a in self.algorithms) else 1.0
+        if weight is None:
+            return None
         return Semantics(order=order, corners=corners, visit=visit,
                          goal_test=None if goal_test == algo.goal_test else goal_test,
                          tree_search=tree, heuristic=self._choice("heuristic"),
@@ -260,7 +270,7 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
                          recursive=recursive,
                          path_check=not (tree and self.query_one("#no_path_check",
                                                                  Checkbox).value),
-                         mark_start=mark)
+                         mark_start=mark, weight=weight)
 
     def _sync_visit(self) -> None:
         """The visit rule does not apply to tree search nor to iterative deepening: say so
@@ -301,6 +311,25 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
         self.query_one("#recursive", RadioSet).disabled = not self._recursion_applies()
         for name in ("#ties", "#reopen", "#exact_costs"):
             self.query_one(name).disabled = not queue
+        astar = any(a.priority == "g+h" for a in self.algorithms)
+        self.query_one("#weight", Input).disabled = not astar
+        if not astar:
+            self.query_one("#weight-explain", Label).update(
+                "W, weighted A*'s weight (f = g + W·h), applies to A* only")
+
+    def _weight(self) -> float | None:
+        """The weight typed (None, with the reason shown, when it is no number 1 or
+        more)."""
+        explain = self.query_one("#weight-explain", Label)
+        try:
+            weight = check_weight(self.query_one("#weight", Input).value.strip())
+        except ValueError as exc:
+            explain.update(f"Weight: {exc}")
+            explain.set_class(True, "problem")
+            return None
+        explain.update(EXPLAIN["weight"])
+        explain.set_class(False, "problem")
+        return weight
 
     def _visit_applies(self) -> bool:
         """The visit rule applies to BFS and DFS (in compare mode: to one of the searches)."""
@@ -376,6 +405,7 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
                             ("heuristic", sem.heuristic), ("ties", sem.ties),
                             ("recursive", sem.recursive or "stack")):
             self.query_one(f"#{name}-{value}", RadioButton).value = True
+        self.query_one("#weight", Input).value = weight_text(sem.weight)
         for name, on in (("tree_search", sem.tree_search), ("no_path_check", not sem.path_check),
                          ("mark_start", sem.mark_start), ("reopen", sem.reopen),
                          ("exact_costs", sem.cost_tolerance == 0)):

@@ -38,13 +38,15 @@ DISCARDED = "frontier-panel--discarded"
 DIR_W = 2
 
 
-def titles(algo: Algorithm, hide_order: bool = False, as_added: bool = False
-           ) -> tuple[str, ...]:
+def titles(algo: Algorithm, hide_order: bool = False, as_added: bool = False,
+           order_words: str = "") -> tuple[str, ...]:
     """The panel's title in its wordings, longest first: "Queue (FIFO)", "Queue", "Q";
     a priority queue's says what it orders by as long as it can ("Priority queue (A*: f = g
     + h)" ... "PQ (f)", "PQ"); in the quiz, that the order is hidden ("Queue (FIFO) · order
     hidden", "Queue (FIFO) · hidden", "Queue · hidden", then the plain wordings); by hand
-    (``as_added``), that its entries are listed as added ("Queue (FIFO) · as added")."""
+    (``as_added``), that its entries are listed as added ("Queue (FIFO) · as added").
+    ``order_words``: what the queue orders by, when not the algorithm's own (weighted A*'s
+    "f = g + 2·h")."""
     name, letters = SHORT_NAMES[algo.frontier]
     note = TITLE_NOTES.get(algo.frontier)
     if algo.priority is None:
@@ -52,9 +54,11 @@ def titles(algo: Algorithm, hide_order: bool = False, as_added: bool = False
         if note:
             plain.insert(0, f"{algo.frontier_title}: {note}")
     else:
-        by, what = algo.priority_name, PRIORITIES[algo.priority]
-        plain = [algo.frontier_title, f"{name} ({what})", f"{name} ({by})", name,
-                 f"{letters} ({by})", letters]
+        by, what = algo.priority_name, order_words or PRIORITIES[algo.priority]
+        title = (f"{algo.frontier.title} ({algo.short}: {what})" if order_words
+                 else algo.frontier_title)
+        plain = [title, f"{name} ({what})", f"{name} ({by})", name, f"{letters} ({by})",
+                 letters]
     wordings = plain
     if as_added:
         wordings = [f"{text} · as added" for text in plain[:-1]] + plain

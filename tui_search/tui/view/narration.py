@@ -38,7 +38,8 @@ def frontier_word(run: Run) -> str:
 
 def costs_text(run: Run, g: int) -> str:
     """Event ``g``'s priority said with what it adds up: "f = 7.24 (g 4.41 + h 2.83)",
-    "g = 4.41", "h = 2.83 (g 4.41)"; empty for a queue or a stack."""
+    weighted A*'s "f = 10.07 (g 4.41 + 2 × h 2.83)", "g = 4.41", "h = 2.83 (g 4.41)"; empty
+    for a queue or a stack."""
     costs = run.nodes.costs(g)
     if costs is None:
         return ""
@@ -48,6 +49,9 @@ def costs_text(run: Run, g: int) -> str:
         return f"g = {cost:.2f}"
     if order == "h":
         return f"h = {h:.2f} (g {cost:.2f})"
+    weight = run.semantics.weight
+    if weight != 1.0:  # weighted A*: f = g + W·h
+        return f"f = {f:.2f} (g {cost:.2f} + {weight:g} × h {h:.2f})"
     return f"f = {f:.2f} (g {cost:.2f} + h {h:.2f})"
 
 
@@ -252,9 +256,26 @@ def result_text(run: Run) -> str:
     else:
         text = f"path: {group_digits(len(moves))} moves, cost {cost:.2f}"
     lowest = lowest_cost(run)
-    if lowest is not None:
+    weight = run.semantics.weight if run.algo.priority == "g+h" else 1.0
+    if lowest is not None and weight != 1.0:  # weighted A*: the ratio its bound is about
+        text += f" ({weight_ratio(cost, lowest)} the lowest, {lowest:.2f})"
+    elif lowest is not None:
         text += " (the lowest)" if cost <= lowest * (1 + 1e-9) else f" (lowest {lowest:.2f})"
     return f"{text} · {bound_text(run)}"
+
+
+def weight_ratio(cost: float, lowest: float) -> str:
+    """A path's cost over the lowest, as weighted A*'s bound says it: "1.08 ×"."""
+    return f"{cost / lowest if lowest > 0 else 1.0:.2f} ×"
+
+
+def weight_bound(run: Run) -> str:
+    """Weighted A*'s promise: "at most 2 × the optimum" ("" for any other search, A* with
+    weight 1, or an inadmissible heuristic, which promises nothing)."""
+    weight = run.semantics.weight
+    if run.algo.priority != "g+h" or weight == 1.0 or not run.admissible:
+        return ""
+    return f"at most {weight:g} × the optimum"
 
 
 _LOWEST: WeakKeyDictionary[Run, float | None] = WeakKeyDictionary()
@@ -279,7 +300,8 @@ def lowest_cost(run: Run) -> float | None:
     if size > LOWEST_COST_CELLS:
         return None
     if run not in _LOWEST:
-        sem = run.semantics.replace(goal_test=None, tree_search=False, visit="generate")
+        sem = run.semantics.replace(goal_test=None, tree_search=False, visit="generate",
+                                    weight=1.0)
         _LOWEST[run] = Run(run.board, "ucs", sem).outcome().cost
     return _LOWEST[run]
 

@@ -19,7 +19,13 @@ from tui_search.tui.model import playback
 from tui_search.tui.model.session import Session
 from tui_search.tui.view.code_trace import line_notes
 from tui_search.tui.view.layout import own_lines
-from tui_search.tui.view.narration import frontier_word, narrate, result_text, status_parts
+from tui_search.tui.view.narration import (
+    frontier_word,
+    narrate,
+    result_text,
+    status_parts,
+    weight_bound,
+)
 from tui_search.tui.view.pieces import Line, Piece, lay_out
 
 #: Between two counts on a row.
@@ -69,6 +75,9 @@ def search_status(run: Run | None, name: str, *, in_pane: bool, playing: str = "
     warning = run.estimate_warning() if run is not None else ""
     if warning:  # a heuristic that may mislead the search
         differences.append(warning)
+    bound = weight_bound(run) if run is not None else ""
+    if bound:  # weighted A*: "weight 2: at most 2 × the optimum"
+        differences = [f"{d}: {bound}" if d.startswith("weight ") else d for d in differences]
     if differences:  # always say what differs
         status.append(Piece([("· " + " · ".join(differences), "stats--note")], 0,
                             (" ", "stats--note")))

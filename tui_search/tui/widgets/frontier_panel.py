@@ -202,7 +202,9 @@ class FrontierPanel(LinePanel):
         elif hide_order:
             events = run.now.frontier(0, self.QUIZ_ENTRIES)
             self._by_cell = sorted(events, key=lambda g: run.nodes.cell(g)[::-1])
-        self.show_titles(titles(run.algo, hide_order, as_added),
+        weighted = run.algo.priority == "g+h" and run.semantics.weight != 1.0
+        self.show_titles(titles(run.algo, hide_order, as_added,
+                                run.semantics.priority_words(run.algo) if weighted else ""),
                          legends(kind, hide_order, as_added) if n else ())
         if n:
             self._empty_text = ""

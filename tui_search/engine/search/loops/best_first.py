@@ -2,7 +2,8 @@
 and A*, a priority queue's.
 
 One loop serves the three: they differ only in the priority an entry is pushed with (``g``,
-``h`` or ``g + h``; :func:`~tui_search.engine.search.heuristics.priority_of`).  The definition is
+``h`` or ``g + h``, weighted A*'s ``g + W·h``;
+:func:`~tui_search.engine.search.heuristics.priority_of`).  The definition is
 the reference loop (:class:`tui_search.engine.search.reference.ReferenceSearch`), and a hypothesis
 test in ``tests/engine`` holds these equal to it, array for array.
 
@@ -114,19 +115,22 @@ def best_first(problem: Problem, rec: Record, chunk: int = CHUNK, priority: str 
     goal = problem.goal
     goal_on_push = goal if problem.goal_test == "generate" else -1
     goal_on_pop = -1 if problem.goal_test == "generate" else goal
-    heuristic = heuristic_for(problem.semantics.heuristic, problem.lowest)
+    use_h, use_g = "h" in priority, "g" in priority
+    weight = problem.semantics.weight if use_g and use_h else 1.0  # weighted A*: g + W·h
+    heuristic = heuristics.weighted(
+        heuristic_for(problem.semantics.heuristic, problem.lowest), weight)
     terrain = problem.terrain  # None: every cell costs 1, a move its length
     octile, extra = heuristic is heuristics.octile, heuristics.DIAGONAL_EXTRA
     gy, gx = divmod(goal, stride)
-    use_h, use_g = "h" in priority, "g" in priority
     astar_octile = use_g and use_h and octile  # the default, with its heuristic inlined
     best = array("d", [INF]) * len(walls)  # the lowest g each cell was pushed with
     # Under a consistent heuristic (the priority g, or g + h with any heuristic but manhattan
-    # beside diagonals) no cell is reached cheaper once expanded, so an expanded cell is
-    # closed and tested like a wall, before the float test it would fail anyway.
+    # beside diagonals, not weighted) no cell is reached cheaper once expanded, so an
+    # expanded cell is closed and tested like a wall, before the float test it would fail
+    # anyway.
     closed = bytearray(walls)
-    close = 1 if use_g and (not use_h or heuristics.admissible(
-        problem.semantics.heuristic, problem.semantics.order)) else 0
+    close = 1 if use_g and (not use_h or heuristics.consistent_order(
+        problem.semantics.heuristic, problem.semantics.order, weight)) else 0
     rec.step_exp = step_exp = array("i", [-1])
     rec.step_g = step_g = array("d", [0.0])  # index 0: before any step
     heap = _start_heap(problem, rec, best, goal_on_push, heuristic, priority)  # []: found
@@ -207,10 +211,12 @@ def best_first_tree(problem: Problem, rec: Record, chunk: int = CHUNK, priority:
     refused = _blocked_sides_refused(problem)
     goal, start = problem.goal, problem.start
     test_on_push = problem.goal_test == "generate"
-    heuristic = heuristic_for(problem.semantics.heuristic, problem.lowest)
+    use_h, use_g = "h" in priority, "g" in priority
+    weight = problem.semantics.weight if use_g and use_h else 1.0  # weighted A*: g + W·h
+    heuristic = heuristics.weighted(
+        heuristic_for(problem.semantics.heuristic, problem.lowest), weight)
     terrain = problem.terrain
     gy, gx = divmod(goal, stride)
-    use_h, use_g = "h" in priority, "g" in priority
 
     def key(g: float, p: int) -> float:
         if not use_h:

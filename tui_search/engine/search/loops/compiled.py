@@ -24,7 +24,12 @@ from importlib import import_module
 from pathlib import Path
 from types import ModuleType
 
-from tui_search.engine.search.heuristics import CHEAPER_BY, DIAGONAL_EXTRA, HEURISTICS, admissible
+from tui_search.engine.search.heuristics import (
+    CHEAPER_BY,
+    DIAGONAL_EXTRA,
+    HEURISTICS,
+    consistent_order,
+)
 from tui_search.engine.search.loops.best_first import _blocked_sides_refused, _costed_moves
 from tui_search.engine.search.problem import Problem
 from tui_search.engine.search.record import Record
@@ -113,7 +118,8 @@ def _run(core: ModuleType, algorithm: Algorithm, problem: Problem, rec: Record, 
         rec.gen_depth = array("i")
     priority = algorithm.priority or ""
     use_g, use_h = "g" in priority, "h" in priority
-    close = use_g and (not use_h or admissible(sem.heuristic, sem.order))
+    weight = sem.weight if use_g and use_h else 1.0  # weighted A*: g + W·h
+    close = use_g and (not use_h or consistent_order(sem.heuristic, sem.order, weight))
     moves = tuple((off, cost, cost + CHEAPER_BY, a, b)
                   for off, cost, a, b in _costed_moves(problem))
     on_push = problem.goal_test == "generate"
@@ -125,7 +131,7 @@ def _run(core: ModuleType, algorithm: Algorithm, problem: Problem, rec: Record, 
          rec.step_g, rec.discarded, rec.gen_depth, rec.iter_first_step, rec.iter_root,
          rec.iter_limit),
         problem.goal if on_push else -1, -1 if on_push else problem.goal, len(moves),
-        problem.terrain, problem.lowest, CHEAPER_BY)
+        problem.terrain, problem.lowest, CHEAPER_BY, weight)
     steps = chunk
     while True:
         result = search.advance(steps)
