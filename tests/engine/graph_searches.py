@@ -68,21 +68,26 @@ def queue_search(roads: Roads, start: str, goals: set[str], lifo: bool, visit: s
 
 def priority_search(roads: Roads, start: str, goals: set[str], priority: str,
                     h: Callable[[str], float], goal_test: str, tree: bool, limit: int,
-                    ties: str = "fifo", reopen: bool = True) -> tuple[Steps, list[str] | None]:
-    """Uniform-cost (``g``), greedy (``h``) or A* (``g+h``): the lowest first, ties in the
-    order pushed (``ties="lifo"``: the newest first); a node pushed again when reached
-    cheaper; a stale entry discarded.  ``reopen=False``: a closed set: a node expanded is
-    never pushed again, an entry of it taken off later discarded, and a node's first entry
-    taken off expanded at its best g so far."""
-    order = 1 if ties == "fifo" else -1
+                    ties: str = "fifo", reopen: bool = True, mark_start: bool = True
+                    ) -> tuple[Steps, list[str] | None]:
+    """Uniform-cost (``g``), greedy (``h``) or A* (``g+h``): the lowest first; of equal
+    priorities (``ties``) the oldest, the newest, the smallest name, the lower or higher h,
+    the lower or higher g, then the oldest; a node pushed again when reached cheaper; a stale
+    entry discarded.  ``reopen=False``: a closed set: a node expanded is never pushed again,
+    an entry of it taken off later discarded, and a node's first entry taken off expanded at
+    its best g so far.  ``mark_start=False``: the start's g is not kept, so a road back to it
+    pushes it again (as library code that marks nothing before its loop)."""
+    def tie(n: int, node: str, g: float) -> object:
+        return {"fifo": 0, "lifo": -n, "node": node, "low-h": h(node), "high-h": -h(node),
+                "low-g": g, "high-g": -g}[ties]
     def key(g: float, node: str) -> float:
         return {"g": g, "h": h(node), "g+h": g + h(node)}[priority]
 
     names, parents, gs = [start], {0: None}, [0.0]
     if goal_test == "generate" and start in goals:
         return [], [start]
-    best = {start: 0.0}
-    heap = [(key(0.0, start), 0, 0)]
+    best = {start: 0.0} if mark_start else {}
+    heap: list[tuple[float, object, int]] = [(key(0.0, start), tie(0, start, 0.0), 0)]
     closed: set[str] = set()
     steps: Steps = []
     while heap and len(steps) < limit:
@@ -93,8 +98,8 @@ def priority_search(roads: Roads, start: str, goals: set[str], priority: str,
                 steps.append((node, (), True))
                 continue
             closed.add(node)
-            g = best[node]
-        elif not tree and g > best[node] + CHEAPER_BY:
+            g = best.get(node, g)  # (the start has no best g when it was not marked)
+        elif not tree and g > best.get(node, g) + CHEAPER_BY:
             steps.append((node, (), True))
             continue
         if goal_test == "expand" and node in goals:
@@ -113,7 +118,8 @@ def priority_search(roads: Roads, start: str, goals: set[str], priority: str,
             names.append(succ)
             gs.append(g2)
             parents[len(names) - 1] = e
-            heapq.heappush(heap, (key(g2, succ), order * (len(names) - 1), len(names) - 1))
+            n = len(names) - 1
+            heapq.heappush(heap, (key(g2, succ), tie(n, succ, g2), n))
             added.append(succ)
             if goal_test == "generate" and succ in goals:
                 steps.append((node, tuple(added), False))

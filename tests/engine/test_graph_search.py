@@ -1,10 +1,13 @@
 """The app's searches on graphs (the reference loop over a graph's space, recorded as a run)
 equal, step by step, the searches written again with no tui_search in
 tests/engine/graph_searches.py, on random graphs, for every algorithm and the choices that
-apply to it; and the book's figures on Romania."""
+apply to it (order, visit, goal test, tree search, the table, zero or the straight line, every
+tie rule, re-opening or a closed set, the start marked or not); and the book's figures on
+Romania."""
 
 from __future__ import annotations
 
+from math import hypot
 from typing import Any
 
 import pytest
@@ -20,7 +23,7 @@ from tests.engine.graph_searches import (
 from tui_search.engine.maps.graph import Edge, Graph
 from tui_search.engine.maps.graph_file import built_in_graph
 from tui_search.engine.run.recorded import Run
-from tui_search.engine.search.choices import Semantics
+from tui_search.engine.search.choices import TIE_RULES, Semantics
 
 NAMES = ["Mo", "Al", "Zed", "Cy", "Bo", "Xi", "Di", "Ed"]
 LIMIT = 120  # steps compared (tree search may take many more on a graph with cycles)
@@ -53,13 +56,31 @@ def graphs(draw: st.DrawFn) -> dict[str, Any]:
     start, goal = draw(st.lists(st.sampled_from(names), min_size=2, max_size=2, unique=True))
     closed = draw(st.sets(st.sampled_from([m for m in names if m != start]), max_size=2))
     h = {m: float(draw(st.integers(0, 20))) for m in names}
+    places = [(float(draw(st.integers(0, 9))), float(draw(st.integers(0, 9)))) for _ in names]
     return {"names": names, "edges": edges, "start": start, "goal": goal,
-            "closed": frozenset(closed), "h": h}
+            "closed": frozenset(closed), "h": h, "places": places}
 
 
 def app_graph(g: dict[str, Any]) -> Graph:
-    return Graph.of(g["names"], g["edges"], h=g["h"], start=g["start"], goals=(g["goal"],),
-                    closed=g["closed"])
+    return Graph.of(g["names"], g["edges"], h=g["h"], places=g.get("places"),
+                    start=g["start"], goals=(g["goal"],), closed=g["closed"])
+
+
+def straight_line(g: dict[str, Any]) -> Any:
+    """The euclidean estimate written again: the straight line to the goal times the least
+    cost a unit of road length (so that it never says more than a road costs)."""
+    names, places = g["names"], g["places"]
+    ratios = [e.cost / length for e in g["edges"]
+              if (length := hypot(places[e.a][0] - places[e.b][0],
+                                  places[e.a][1] - places[e.b][1])) > 0]
+    scale = min(ratios, default=1.0)
+    gx, gy = places[names.index(g["goal"])]
+
+    def h(node: str) -> float:
+        x, y = places[names.index(node)]
+        return scale * min([hypot(x - gx, y - gy)])
+
+    return h
 
 
 def roads_of(g: dict[str, Any], by_name: bool) -> Roads:
@@ -100,10 +121,12 @@ def both(g: dict[str, Any], key: str, order: str, **choices: Any) -> None:
         want = iterative_deepening(roads, start, goals, LIMIT)
     else:
         priority = {"ucs": "g", "greedy": "h", "astar": "g+h"}[key]
-        h = (lambda node: g["h"][node]) if choices.get("heuristic") == "table" else (
-            lambda node: 0.0)
+        h = {"table": lambda node: g["h"][node], "zero": lambda node: 0.0,
+             "euclidean": straight_line(g) if "places" in g else None}[
+            choices.get("heuristic", "table")]
         want = priority_search(roads, start, goals, priority, h, goal_test, tree, LIMIT,
-                               choices.get("ties", "fifo"), choices.get("reopen", True))
+                               choices.get("ties", "fifo"), choices.get("reopen", True),
+                               choices.get("mark_start", True))
     got = app_steps(app_graph(g), key, sem)
     assert got[0] == want[0]
     if len(want[0]) < LIMIT:  # the search ended within the steps compared
@@ -127,16 +150,22 @@ def test_bfs_and_dfs_equal_the_plain_searches(g: dict[str, Any], key: str, order
 
 @settings(max_examples=200)
 @given(graphs(), st.sampled_from(["ucs", "greedy", "astar"]), ORDERS, GOAL_TESTS,
-       st.booleans(), st.sampled_from(["table", "zero"]), st.sampled_from(["fifo", "lifo"]),
-       st.booleans())
+       st.booleans(), st.sampled_from(["table", "zero", "euclidean"]),
+       st.sampled_from(TIE_RULES),
+       st.booleans(), st.booleans())
 def test_the_priority_searches_equal_the_plain_ones(g: dict[str, Any], key: str, order: str,
                                                     goal_test: str, tree: bool, heuristic: str,
-                                                    ties: str, reopen: bool) -> None:
-    """Tree or graph search, each tie rule of order pushed, re-opening or a closed set."""
+                                                    ties: str, reopen: bool,
+                                                    mark_start: bool) -> None:
+    """Tree or graph search, every tie rule, re-opening or a closed set, the start marked
+    reached or not."""
+    if key == "ucs" and ties not in ("fifo", "lifo", "node"):
+        ties = "fifo"  # (refused: uniform-cost's priority is g, and it uses no h)
     choices: dict[str, Any] = {"goal_test": goal_test, "tree_search": tree,
                                "heuristic": heuristic, "ties": ties}
     if not tree:
         choices["reopen"] = reopen
+        choices["mark_start"] = mark_start
     both(g, key, order, **choices)
 
 
