@@ -91,6 +91,7 @@ SLOW_MODULES = {
     # each test starts the server (``tui-search --serve``) and its apps as processes
     "test_serve.py",
     "test_serve_trust.py",
+    "test_serve_teacher.py",
     # every search run to its end on the largest generated maps (seconds a test)
     "tui/test_big_figures.py",
 }

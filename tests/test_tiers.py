@@ -127,7 +127,7 @@ def test_the_build_serve_and_biggest_map_modules_are_slow_and_no_other() -> None
     for name in SLOW_MODULES:
         assert (ROOT / "tests" / name).is_file(), name  # a module renamed is not left out
     for name in ("test_build.py", "test_serve.py", "test_serve_trust.py",
-                 "tui/test_big_figures.py"):
+                 "test_serve_teacher.py", "tui/test_big_figures.py"):
         item = FakeItem(_example_naming_only_the_app, path=ROOT / "tests" / name)
         assert is_slow(item)  # type: ignore[arg-type]
         pytest_collection_modifyitems([item])  # type: ignore[list-item]

@@ -85,8 +85,9 @@ def _kinds(key: str) -> list[dict[str, Any]]:
     kinds.append({"tree_search": True})
     if key in ("dfs", "iddfs"):
         kinds += [{"recursive": "neighbours"}, {"recursive": "calls"}]
-        if algo.iterative:
-            kinds.append({"recursive": "neighbours", "tree_search": True})
+        kinds.append({"recursive": "neighbours", "tree_search": True})
+        if not algo.iterative:  # a recursion with no visited set (its path check a variant)
+            kinds.append({"recursive": "calls", "tree_search": True})
     return kinds
 
 
