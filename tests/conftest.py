@@ -95,6 +95,11 @@ SLOW_MODULES = {
     # every search run to its end on the largest generated maps (seconds a test)
     "tui/test_big_figures.py",
 }
+#: Tests marked ``slow`` by name (module path from tests/, ``::``, function): each reads a
+#: file of a megabyte in a child process per format, to measure its memory (seconds a test).
+SLOW_TESTS = {
+    "engine/test_untrusted_files.py::test_the_heaviest_files_take_at_most_ten_times_their_size",
+}
 #: Modules marked ``app`` whole: an export films the app under Pilot
 #: (``tui_search/export/frames.py``), in the test's process or in the command it runs.
 APP_MODULES = {
@@ -208,8 +213,12 @@ def _callee(func: ast.expr) -> str | None:
 
 
 def is_slow(item: pytest.Item) -> bool:
-    """Is this test in one of :data:`SLOW_MODULES`?"""
-    return _in_modules(item, SLOW_MODULES)
+    """Is this test in one of :data:`SLOW_MODULES`, or one of :data:`SLOW_TESTS`?"""
+    function = getattr(item, "function", None)
+    name = getattr(_inner(function), "__name__", "") if function is not None else ""
+    return _in_modules(item, SLOW_MODULES) or any(
+        _in_modules(item, {module}) and name == test
+        for module, _, test in (slow.partition("::") for slow in SLOW_TESTS))
 
 
 def _in_modules(item: pytest.Item, modules: set[str]) -> bool:
@@ -231,5 +240,73 @@ def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
     for item in items:
         if drives_the_app(item):
             item.add_marker(pytest.mark.app)
+        elif only_app_tests(Path(item.path)):
+            raise pytest.UsageError(
+                f"{item.nodeid} does not drive the app, yet its module is left uncollected "
+                "by the fast tier (tests/conftest.py's only_app_tests): mend the one or the other")
         if is_slow(item):
             item.add_marker(pytest.mark.slow)
+
+
+def pytest_ignore_collect(collection_path: Path, config: pytest.Config) -> bool | None:
+    """Under a tier without the app (``-m "not app ..."``), a module all of whose tests
+    surely drive the app is not even imported: importing the app's tests costs each worker
+    seconds for no test.  Only a sure answer leaves one out; a full run checks the answer
+    (:func:`pytest_collection_modifyitems`)."""
+    if "not app" in (config.getoption("markexpr") or "") and only_app_tests(collection_path):
+        return True
+    return None
+
+
+@functools.cache
+def only_app_tests(path: Path) -> bool:
+    """Does the test module at ``path`` hold tests, each of which surely drives the app (it
+    is one of :data:`APP_MODULES`, or each ``test_`` function takes the snapshot fixture or
+    calls :data:`DRIVER`, itself or through a function of its module)?  Tests made any other
+    way (a ``test_`` name assigned, a class) make the answer no."""
+    path = path.resolve()
+    if path.suffix != ".py" or not path.name.startswith("test_") \
+            or not path.is_relative_to(TESTS):
+        return False
+    if path.relative_to(TESTS).as_posix() in APP_MODULES:
+        return True
+    try:
+        text = path.read_text(encoding="utf-8")
+        if DRIVER not in text and not any(fixture in text for fixture in APP_FIXTURES):
+            return False  # (most modules: no parse)
+        tree = ast.parse(text)
+    except (OSError, SyntaxError):
+        return False
+    functions = {node.name: node for node in tree.body
+                 if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef))}
+    tests = [node for name, node in functions.items() if name.startswith("test_")]
+    others = [node for node in tree.body if not isinstance(
+        node, (ast.FunctionDef, ast.AsyncFunctionDef)) and _names_a_test(node)]
+    if not tests or others:
+        return False
+    calls = _functions_in(str(path))
+    runs: dict[str, bool] = {}
+
+    def runs_app(name: str, seen: frozenset[str] = frozenset()) -> bool:
+        if name not in runs:
+            node = functions[name]
+            first = min([node.lineno, *(d.lineno for d in node.decorator_list)])
+            direct, names = calls.get(first, (False, frozenset()))
+            runs[name] = direct or any(
+                other in functions and other not in seen and runs_app(other, seen | {name})
+                for other in names)
+        return runs[name]
+
+    return all(any(arg.arg in APP_FIXTURES for arg in test.args.args) or runs_app(test.name)
+               for test in tests)
+
+
+def _names_a_test(node: ast.stmt) -> bool:
+    """Does this top-level statement make a test other than by ``def`` (a class, or a
+    ``test_`` name assigned or imported)?"""
+    if isinstance(node, ast.ClassDef):
+        return node.name.startswith("Test")
+    names = [n.id for n in ast.walk(node) if isinstance(n, ast.Name)] + [
+        (a.asname or a.name) for n in ast.walk(node) if isinstance(n, (ast.Import, ast.ImportFrom))
+        for a in n.names]
+    return any(name.startswith("test_") for name in names)

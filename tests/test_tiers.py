@@ -17,9 +17,12 @@ from tests.conftest import (
     APP_MODULES,
     ROOT,
     SLOW_MODULES,
+    SLOW_TESTS,
     drives_the_app,
     is_slow,
+    only_app_tests,
     pytest_collection_modifyitems,
+    pytest_ignore_collect,
 )
 from tests.helpers import TUTORIAL
 from tests.tui import (
@@ -45,6 +48,7 @@ class FakeItem:
         self._fixtureinfo = SimpleNamespace(name2fixturedefs={
             name: [SimpleNamespace(func=func)] for name, func in (fixtures or {}).items()})
         self.path = path
+        self.nodeid = f"{path.name}::{getattr(function, '__name__', '?')}"
         self.marks: list[str] = []
 
     def add_marker(self, mark: pytest.MarkDecorator) -> None:
@@ -165,3 +169,48 @@ def test_naming_the_hook_or_parametrizing_over_app_tests_is_not_driving_the_app(
                  test_a_test_that_does_not_drive_the_app_is_not_marked,
                  test_the_build_serve_and_biggest_map_modules_are_slow_and_no_other):
         assert not drives_the_app(FakeItem(test))  # type: ignore[arg-type]
+
+
+def test_the_heaviest_files_memory_test_is_slow_by_name() -> None:
+    from tests.engine import test_untrusted_files as untrusted
+
+    module = ROOT / "tests" / "engine" / "test_untrusted_files.py"
+    heaviest = FakeItem(untrusted.test_the_heaviest_files_take_at_most_ten_times_their_size,
+                        path=module)
+    assert is_slow(heaviest)  # type: ignore[arg-type]
+    other = FakeItem(untrusted.test_a_line_of_100_mb_is_refused_before_reading, path=module)
+    assert not is_slow(other)  # type: ignore[arg-type]
+    for name in SLOW_TESTS:
+        path, _, test = name.partition("::")
+        assert test in (ROOT / "tests" / path).read_text(), name  # a test renamed is not lost
+
+
+def test_the_fast_tier_leaves_out_only_modules_whose_every_test_drives_the_app() -> None:
+    tui = ROOT / "tests" / "tui"
+    # snapshots only; Pilot tests only (through helpers of the module); the export modules
+    for name in ("test_quiz_snapshots.py", "test_quiz.py", "test_cells.py"):
+        assert only_app_tests(tui / name), name
+    assert all(only_app_tests(ROOT / "tests" / name) for name in APP_MODULES)
+    # a module with one test that needs no app (test_session: Session tests), the engine's,
+    # this one, a module that is not a test module
+    for path in (tui / "test_session.py", tui / "test_themes.py",
+                 ROOT / "tests" / "engine" / "test_core.py", Path(__file__),
+                 tui / "conftest.py", ROOT / "tests" / "helpers.py"):
+        assert not only_app_tests(path), path
+
+
+def test_a_module_left_out_by_the_fast_tier_that_holds_a_fast_test_stops_the_full_run() -> None:
+    item = FakeItem(_example_naming_only_the_app, path=ROOT / "tests" / "tui" / "test_quiz.py")
+    with pytest.raises(pytest.UsageError, match="does not drive the app"):
+        pytest_collection_modifyitems([item])  # type: ignore[list-item]
+
+
+def test_a_module_is_left_out_only_under_a_tier_without_the_app() -> None:
+    path = ROOT / "tests" / "tui" / "test_quiz_snapshots.py"
+    for expression, left_out in (("not app and not slow", True), ("not app", True),
+                                 ("", None), ("app", None), ("not slow", None)):
+        config = SimpleNamespace(getoption=lambda name, e=expression: e)
+        assert pytest_ignore_collect(path, config) is left_out  # type: ignore[arg-type]
+    config = SimpleNamespace(getoption=lambda name: "not app")
+    assert pytest_ignore_collect(ROOT / "tests" / "tui" / "test_session.py",
+                                 config) is None  # type: ignore[arg-type]
