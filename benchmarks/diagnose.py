@@ -87,11 +87,13 @@ def bench_diagnose(quick: bool) -> None:
         return
     problem = load_scenario(str(scen), BIG_ROW)
     big = load_map(COPIED / BIG_MAP, start=problem.start, goal=problem.goal)
-    for what, key, sem in (
-            ("BFS", "bfs", Semantics()),
+    for what, key, sem, nodes_only in (
+            ("BFS", "bfs", Semantics(), False),
             ("A*, heapq's ties, exact costs", "astar",
-             Semantics(ties="node", cost_tolerance=0.0))):
-        trace = app_trace(big, key, sem, False)
+             Semantics(ties="node", cost_tolerance=0.0), False),
+            ("DFS, expansions only (an autograder's)", "dfs",
+             Semantics(order=("N", "S", "E", "W"), visit="expand", goal_test="expand"), True)):
+        trace = app_trace(big, key, sem, nodes_only)
         _row(f"{BIG_MAP} row {BIG_ROW}, {what}", trace, big, key, sem, 10.0,
              max(1, repeats // 2))
 

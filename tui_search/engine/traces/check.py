@@ -128,7 +128,7 @@ class _Checker:
         self.counts_discarded: bool | None = None  # does the trace list the discarded pops?
         self.left_out: list[tuple[int, State]] = []  # the discarded pops it did not list
         self.notes: list[str] = []
-        if trace.steps and all(not t.listed for t in trace.steps):
+        if trace.steps and trace.expansions_only:
             self.notes.append(EXPANSIONS_ONLY)
 
     def engine_step(self, k: int) -> Step | None:

@@ -281,7 +281,7 @@ def diagnose(trace: Trace, grid: Grid | Graph, max_steps: int | None = None) -> 
     limit = 4 * len(trace.steps) + 64  # a search that gives up (max_steps) stops there too
     if max_steps is not None:
         limit = min(limit, max_steps)
-    expansions_only = all(not step.listed for step in trace.steps)
+    expansions_only = trace.expansions_only
     orders = (expansion_orders(trace) if expansions_only
               else inferred_orders(trace, grid=grid if isinstance(grid, Grid) else None))
     search = _Search(trace, grid, limit)

@@ -22,6 +22,7 @@ import json
 from array import array
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
+from functools import cached_property
 from typing import NamedTuple, overload
 
 from tui_search.engine.maps.graph import Graph
@@ -150,6 +151,12 @@ class Trace:
     start: State | None = None
     goal: State | None = None
     path: tuple[State, ...] | None = None
+
+    @cached_property
+    def expansions_only(self) -> bool:
+        """Does no step list its successors (an autograder's trace: the order of its
+        expansions alone)?  Asked by every check of a diagnosis: worked out once a trace."""
+        return all(not step.listed for step in self.steps)
 
 
 def show(state: State) -> str:
