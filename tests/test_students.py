@@ -28,6 +28,10 @@ ROUNDING = ["S#..#.#.", "........", ".#......", "....#...", "........", ".......
             "..#.....", "#......G"]
 GREEDY = ["S.#....", "#.###..", "..#####", ".#.....", "...#..#", "....#..", "...##.G"]
 SMALL = ["S..", ".#.", "..G"]
+#: Greedy meets a tie of h whose newer entry was reached more cheaply (found among random
+#: 7x7 maps: the first where a greedy search taking the lower g of a tie parts from one
+#: taking the oldest).
+LOW_G = ["....#..", "...#...", "#...#.#", ".....#G", ".....#.", "S.....#", "......."]
 #: The order of the students' four moves.
 NESW = ["--order", "N,E,S,W"]
 
@@ -115,6 +119,25 @@ STUDENT_SEARCHES = [
             ["-a", "astar", "--heuristic", "manhattan", "--order", "E,S,W"],
             "your trace pushes the start (0,0) again: A* marks the start reached when it "
             "begins"),
+    Student("astar_ties_low_h", ROWS,
+            ["-a", "astar", "--heuristic", "manhattan", "--ties", "low-h", *NESW],
+            "A* (manhattan; ties: lower h first; order E,S,W; goal test on expand)",
+            ["-a", "astar", "--heuristic", "manhattan", "--order", "E,S,W"],
+            "and your search takes the lower h of the tie (7.00, not 8.00); this search takes "
+            "the oldest entry (--ties low-h)"),
+    Student("astar_sorted_list", ROWS,
+            ["-a", "astar", "--heuristic", "manhattan", "--ties", "lifo", *NESW],
+            "A* (manhattan; ties: newest first; order E,N,S; goal test on expand)",
+            ["-a", "astar", "--heuristic", "manhattan", "--order", "E,N,S"],
+            # (0,1) is the newest entry and the smallest cell: the trace goes on as the newest
+            "and your search takes the newest entry of the tie; this search takes the oldest "
+            "entry (--ties lifo)"),
+    Student("greedy_ties_low_g", LOW_G,
+            ["-a", "greedy", "--heuristic", "manhattan", "--ties", "low-g", *NESW],
+            "Greedy (manhattan; ties: lower g first; order N,E,S,W; goal test on expand)",
+            ["-a", "greedy", "--heuristic", "manhattan", *NESW],
+            "h ties at 6.00, and your search takes the lower g of the tie (4.00, not 6.00); "
+            "this search takes the oldest entry (--ties low-g)"),
     Student("dfs_autograder", ROWS,
             ["-a", "dfs", "--visit", "expand", "--goal-test", "expand", "--order", "N,S,E,W"],
             "DFS (order N,S,E,W; visit on expand; goal test on generate)",

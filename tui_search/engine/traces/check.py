@@ -30,6 +30,7 @@ from tui_search.engine.search.state import State
 from tui_search.engine.traces.causes import TRACE_VOICE, Voice
 from tui_search.engine.traces.differences import Causes, Difference
 from tui_search.engine.traces.read import Trace, TraceStep, show
+from tui_search.engine.traces.ties import TIE_ORDER
 
 #: How far ahead the check looks for the step at which the reference expands a cell.
 LOOK_AHEAD = 100_000
@@ -257,11 +258,29 @@ def check_trace(trace: Trace, grid: Grid | Graph, algorithm: str, semantics: Sem
     would expand the cell the trace took instead; 0 leaves that out; ``voice``: whom the
     sentences speak of, the trace's author by default)."""
     limit = max_steps if max_steps is not None else 4 * len(trace.steps) + LOOK_AHEAD
-    # The loop of the published choices pauses every first chunk's steps all along: a few
-    # at first, as most candidates part within them.
-    first = FIRST_CHUNK if semantics.plain else FIRST_PUBLISHED
-    return _Checker(trace, Run(grid, algorithm, semantics, limit, first_chunk=first),
-                    look_ahead, voice).check()
+
+    def checked(sem: Semantics, ahead: int, tie_order: tuple[str, ...] = TIE_ORDER) -> Verdict:
+        # The loop of the published choices pauses every first chunk's steps all along: a
+        # few at first, as most candidates part within them.
+        first = FIRST_CHUNK if sem.plain else FIRST_PUBLISHED
+        checker = _Checker(trace, Run(grid, algorithm, sem, limit, first_chunk=first), ahead,
+                           voice)
+        checker.causes.tie_order = tie_order
+        return checker.check()
+
+    verdict = checked(semantics, look_ahead)
+    difference = verdict.difference
+    if difference is None or difference.cause != "tie" or len(difference.suggest) < 2 \
+            or not look_ahead:
+        return verdict
+    # Several tie rules take the trace's cell here: the sentence names the one under which
+    # the trace matches longest (a sorted list's newest entry may be the smallest cell too).
+    rules = [str(dict(s)["ties"]) for s in difference.suggest]
+    longest = {r: checked(semantics.replace(ties=r), 0).matched for r in rules}
+    best = sorted(rules, key=lambda r: -longest[r])
+    if best[0] == rules[0]:
+        return verdict
+    return checked(semantics, look_ahead, (*best, *(r for r in TIE_ORDER if r not in best)))
 
 
 __all__ = ["Difference", "Verdict", "check_trace", "choices_text"]

@@ -24,7 +24,7 @@ from tui_search.engine.search.registry import Frontier
 from tui_search.engine.search.state import State, as_cell, state_json
 from tui_search.engine.traces.causes import TRACE_VOICE, Voice
 from tui_search.engine.traces.read import Trace, TraceStep, show
-from tui_search.engine.traces.ties import tie
+from tui_search.engine.traces.ties import TIE_ORDER, tie
 
 #: The choices a difference suggests, as ``(field, value)`` pairs of
 #: :class:`~tui_search.engine.search.choices.Semantics`.
@@ -76,6 +76,10 @@ class Causes:
         self.algo, self.sem = run.algo, run.semantics
         self.says, self.flag = voice.says, voice.flag
         self.by_trace = voice is TRACE_VOICE
+        #: The order in which a tie's difference names the rules that explain it (where
+        #: several do, :func:`~tui_search.engine.traces.check.check_trace` puts first the one
+        #: the trace follows longest).
+        self.tie_order: tuple[str, ...] = TIE_ORDER
 
     # -- the trace's own earlier steps ----------------------------------------------------------
     def first_added(self, cell: State, before: int) -> int | None:
@@ -226,7 +230,7 @@ class Causes:
     def _tie(self, k: int, mine: State, theirs: State) -> tuple[str, str, list[str]] | None:
         """When the trace's cell ties with the search's on the priority
         (:func:`~tui_search.engine.traces.ties.tie`)."""
-        return tie(self.run, k, mine, theirs, self.name, self.voice)
+        return tie(self.run, k, mine, theirs, self.name, self.voice, self.tie_order)
 
     # -- a successor list ---------------------------------------------------------------------
     def successors(self, n: int, t: TraceStep, e: Step, whole: bool = True

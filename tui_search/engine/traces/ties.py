@@ -6,6 +6,8 @@ parts from the trace).
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 from tui_search.engine.run.recorded import Run
 from tui_search.engine.search.choices import TIE_RULES
 from tui_search.engine.search.state import State
@@ -21,18 +23,19 @@ RULE_WORDS = {"fifo": "the oldest entry", "lifo": "the newest entry",
               "low-g": "the lower g", "high-g": "the higher g"}
 _RULE_WHY = {"node": ", as a heap of (f, (x, y)) tuples does"}
 #: The tie rules in the order a difference names them (a student's tuple first).
-_PREFERRED = ("node", "low-h", "high-h", "lifo", "low-g", "high-g", "fifo")
-assert set(_PREFERRED) == set(TIE_RULES)
+TIE_ORDER = ("node", "low-h", "high-h", "lifo", "low-g", "high-g", "fifo")
+assert set(TIE_ORDER) == set(TIE_RULES)
 
 Entry = tuple[int, State, tuple[float, float, float]]  # event, cell, (g, h, priority)
 
 
-def tie(run: Run, k: int, mine: State, theirs: State, name: str, voice: Voice
-        ) -> tuple[str, str, list[str]] | None:
+def tie(run: Run, k: int, mine: State, theirs: State, name: str, voice: Voice,
+        prefer: Sequence[str] = TIE_ORDER) -> tuple[str, str, list[str]] | None:
     """When ``theirs`` (the trace's cell) ties with ``mine`` (the search's, ``name``) on the
     priority before the search's step ``k``: the sentence, the tie's kind ("h" where the
     trace took the lower or higher h of an f tie, else "entry") and the tie rules that would
-    take the trace's cell; None when they do not tie."""
+    take the trace's cell, the sentence naming the first of them in ``prefer``'s order; None
+    when they do not tie."""
     algo, sem = run.algo, run.semantics
     run.goto(k - 1)
     now, cell_of, costs = run.now, run.nodes.cell, run.nodes.costs
@@ -46,7 +49,7 @@ def tie(run: Run, k: int, mine: State, theirs: State, name: str, voice: Voice
     if top is None or got is None or abs(top[2] - got[2]) > TIE:
         return None
     tied = [(g, cell, c) for g, cell, c in entries if abs(c[2] - top[2]) <= TIE]
-    rules = [r for r in _PREFERRED if r != sem.ties and _picks(r, tied) == theirs
+    rules = [r for r in prefer if r != sem.ties and _picks(r, tied) == theirs
              and not sem.replace(ties=r).refusal(algo)]
     p = algo.priority_name
     mine_words = RULE_WORDS[sem.ties]
@@ -81,4 +84,4 @@ def _picks(rule: str, tied: list[Entry]) -> State:
     return min(tied, key=key)[1]
 
 
-__all__ = ["RULE_WORDS", "TIE", "tie"]
+__all__ = ["RULE_WORDS", "TIE", "TIE_ORDER", "tie"]
