@@ -5,8 +5,15 @@ Starts ``tui-search --serve`` on a free local port, opens its page in headless C
 has drawn the app's first bytes (textual-serve's page then sets ``-first-byte`` on its body),
 takes a screenshot, and checks it shows the app, not a blank page or textual-serve's
 "starting" card: the light theme's white covers most of the page, and the map's wall and goal
-colours are there.  Exit 0 and the screenshot's path when it does; 1 with why not; 0 with a
-note when there is no Chromium (.ci/run installs it where it can).
+colours are there.
+
+Then a class (``--serve --records DIR --exercise FILE``): a visitor types their name in the
+page, solves the exercise with two keys (the cursor onto the wall between start and goal, ``o``
+takes it away), its record is written, and the teacher's page, opened in the same browser with
+its own key, shows the visitor with the exercise solved.
+
+Exit 0 when both hold; 1 with why not; 0 with a note when there is no Chromium (.ci/run
+installs it where it can).
 """
 
 from __future__ import annotations
@@ -25,7 +32,9 @@ import tempfile
 import time
 import zlib
 from collections import Counter
+from collections.abc import Awaitable, Callable
 from pathlib import Path
+from typing import Any, TypeVar
 
 from tests.served import served
 
@@ -38,6 +47,7 @@ THEME = "light"
 BACKGROUND = (0xFF, 0xFF, 0xFF)  # the light theme's background
 WALL = (0x3A, 0x3A, 0x3A)  # its map-wall
 GOAL = (0xF0, 0xD0, 0x00)  # its map-goal
+T = TypeVar("T")
 DEVTOOLS = re.compile(r"DevTools listening on (ws://\S+)")
 
 
@@ -106,6 +116,12 @@ def judge(png: bytes) -> str | None:
 
 def screenshot(browser: str, url: str, timeout: float = 40.0) -> bytes:
     """Open ``url`` in headless Chromium and take a screenshot once the app has drawn."""
+    return in_chromium(browser, lambda ws, deadline: capture(ws, url, deadline), timeout)
+
+
+def in_chromium(browser: str, work: Callable[[str, float], Awaitable[T]],
+                timeout: float = 40.0) -> T:
+    """Start headless Chromium and run ``work`` (given its DevTools address and a deadline)."""
     # Chromium's helper processes may still be writing the profile as the browser exits: its
     # removal waits for them (_remove_profile), and a folder left behind is not an error.
     with tempfile.TemporaryDirectory(prefix="tui-search-chromium-",
@@ -125,7 +141,7 @@ def screenshot(browser: str, url: str, timeout: float = 40.0) -> bytes:
                     break
                 if time.monotonic() > deadline:
                     raise AssertionError("chromium did not start its DevTools")
-            return asyncio.run(capture(match.group(1), url, deadline))
+            return asyncio.run(work(match.group(1), deadline))
         finally:
             process.terminate()
             try:
@@ -145,9 +161,60 @@ def _remove_profile(profile: str, timeout: float = 10.0) -> None:
             time.sleep(0.1)  # polling: the helpers exit on their own
 
 
-async def capture(browser_ws: str, url: str, deadline: float) -> bytes:
-    """Over the DevTools protocol: load ``url`` in the browser's page, wait for the app's
-    first bytes, and return a PNG screenshot."""
+class DevTools:
+    """The browser's first page over the DevTools protocol: ``call`` a method, ``value`` of
+    an expression, ``key`` presses."""
+
+    def __init__(self, ws: Any, deadline: float) -> None:
+        self.ws, self.deadline, self.ids = ws, deadline, iter(range(1, 1_000_000))
+
+    async def call(self, method: str, **params: object) -> dict[str, Any]:
+        n = next(self.ids)
+        await self.ws.send_str(json.dumps({"id": n, "method": method, "params": params}))
+        while True:
+            left = max(self.deadline - time.monotonic(), 0.1)
+            message = json.loads((await self.ws.receive(timeout=left)).data)
+            if message.get("id") == n:
+                if "error" in message:
+                    raise AssertionError(f"{method}: {message['error']}")
+                result: dict[str, Any] = message["result"]
+                return result
+
+    async def value(self, expression: str) -> Any:
+        result = await self.call("Runtime.evaluate", expression=expression, returnByValue=True)
+        return result["result"].get("value")
+
+    async def until(self, what: str, check: Callable[[], Awaitable[object]]) -> object:
+        """Poll ``check`` until it answers something true (the page and the server work on
+        their own clocks: there is no event to wait for)."""
+        while not (answer := await check()):
+            if time.monotonic() > self.deadline:
+                raise AssertionError(f"timed out waiting for {what}")
+            await asyncio.sleep(0.2)
+        return answer
+
+    async def open_app(self, url: str) -> None:
+        await self.call("Page.navigate", url=url)
+        drawn = "document.body !== null && document.body.classList.contains('-first-byte')"
+        await self.until("the page to draw the app (-first-byte)", lambda: self.value(drawn))
+
+    async def key(self, key: str, code: int = 0, text: str = "") -> None:
+        """A key pressed and released in the page's terminal (which has the focus)."""
+        down: dict[str, object] = {"type": "keyDown", "key": key, "code": key,
+                                   "windowsVirtualKeyCode": code or ord(key.upper()[0])}
+        if text:
+            down["text"] = text
+        await self.call("Input.dispatchKeyEvent", **down)
+        await self.call("Input.dispatchKeyEvent", type="keyUp", key=key, code=key,
+                        windowsVirtualKeyCode=down["windowsVirtualKeyCode"])
+
+    async def type(self, text: str) -> None:
+        for char in text:
+            await self.key(char, ord(char.upper()), char)
+
+
+async def with_page(browser_ws: str, deadline: float,
+                    work: Callable[[DevTools], Awaitable[T]]) -> T:
     import aiohttp
 
     devtools = browser_ws.split("/devtools/")[0].replace("ws://", "http://")
@@ -155,29 +222,104 @@ async def capture(browser_ws: str, url: str, deadline: float) -> bytes:
         async with session.get(f"{devtools}/json/list") as response:
             pages = [t for t in await response.json() if t["type"] == "page"]
         async with session.ws_connect(pages[0]["webSocketDebuggerUrl"], max_msg_size=0) as ws:
-            ids = iter(range(1, 1_000_000))
+            return await work(DevTools(ws, deadline))
 
-            async def call(method: str, **params: object) -> dict:
-                n = next(ids)
-                await ws.send_str(json.dumps({"id": n, "method": method, "params": params}))
-                while True:
-                    left = max(deadline - time.monotonic(), 0.1)
-                    message = json.loads((await ws.receive(timeout=left)).data)
-                    if message.get("id") == n:
-                        if "error" in message:
-                            raise AssertionError(f"{method}: {message['error']}")
-                        return message["result"]
 
-            await call("Page.navigate", url=url)
-            drawn = "document.body !== null && document.body.classList.contains('-first-byte')"
-            while not (await call("Runtime.evaluate", expression=drawn,
-                                  returnByValue=True))["result"].get("value"):
-                if time.monotonic() > deadline:
-                    raise AssertionError("the page never drew the app (no -first-byte)")
-                await asyncio.sleep(0.2)
-            await asyncio.sleep(2.0)  # the card fades out (0.3 s); the frame completes
-            shot = await call("Page.captureScreenshot", format="png")
-            return base64.b64decode(shot["data"])
+async def capture(browser_ws: str, url: str, deadline: float) -> bytes:
+    """Over the DevTools protocol: load ``url`` in the browser's page, wait for the app's
+    first bytes, and return a PNG screenshot."""
+    async def work(page: DevTools) -> bytes:
+        await page.open_app(url)
+        await asyncio.sleep(2.0)  # the card fades out (0.3 s); the frame completes
+        shot = await page.call("Page.captureScreenshot", format="png")
+        return base64.b64decode(shot["data"])
+
+    return await with_page(browser_ws, deadline, work)
+
+
+#: The class's exercise: a wall between start and goal; BFS finds the goal once it is gone.
+EXERCISE = """title = "Open the way"
+text = "Take the wall away so that BFS finds the goal."
+map = "wall.txt"
+searches = ["bfs"]
+edits = ["obstacles"]
+solved = "bfs.found"
+"""
+VISITOR = "Ada Browser"
+TEACHER = re.compile(r"^(http://\S+/teacher\?key=\S+)$", re.MULTILINE)
+
+
+def events(records: Path) -> list[dict[str, Any]]:
+    """Every event the records folder holds so far (a line being written is left for later)."""
+    found = []
+    for path in sorted(records.glob("*.jsonl")):
+        for line in path.read_text(encoding="utf-8").splitlines():
+            try:
+                found.append(json.loads(line))
+            except ValueError:
+                continue
+    return found
+
+
+async def a_visitor_solves(browser_ws: str, deadline: float, url: str, teacher: str,
+                           records: Path) -> str:
+    """The visitor's name typed, the exercise solved, then the teacher's page's text."""
+    async def work(page: DevTools) -> str:
+        await page.open_app(url)
+        focus = ("(() => { const t = document.querySelector('.xterm-helper-textarea');"
+                 " if (t) { t.focus(); } return t !== null; })()")
+        await page.until("the page's terminal", lambda: page.value(focus))
+
+        async def started() -> bool:
+            return any(e.get("event") == "start" for e in events(records))
+
+        async def solved() -> bool:
+            return any(e.get("event") == "exercise" and e.get("solved")
+                       for e in events(records))
+
+        # The name: typed until the app has it (keys sent before the dialog has the focus
+        # are not lost to a test that waits only for its own end).
+        await page.type(VISITOR)
+        await page.key("Enter", 13, "\r")
+        await page.until("the visitor's first record (their name taken)", started)
+        await page.key("ArrowRight", 39)
+        await page.key("o", ord("O"), "o")
+        await page.until("the exercise's solved record", solved)
+        await page.call("Page.navigate", url=teacher)
+        text = "document.body ? document.body.innerText : ''"
+        return str(await page.until(f"{VISITOR} on the teacher's page",
+                                    lambda: _has(page, text, VISITOR)))
+
+    return await with_page(browser_ws, deadline, work)
+
+
+async def _has(page: DevTools, expression: str, wanted: str) -> str:
+    got = str(await page.value(expression) or "")
+    return got if wanted in got else ""
+
+
+def class_check(browser: str) -> str | None:
+    """The class's run (the module's docstring): None when it holds, else why not."""
+    with tempfile.TemporaryDirectory(prefix="tui-search-class-") as folder:
+        root = Path(folder)
+        (root / "wall.txt").write_text("S#G\n")
+        (root / "open.toml").write_text(EXERCISE)
+        records = root / "records"
+        with served("--theme", THEME, "--records", str(records),
+                    "--exercise", str(root / "open.toml")) as server:
+            teacher = TEACHER.search(server.banner)
+            if teacher is None:
+                return f"no teacher's link in the banner: {server.banner!r}"
+            try:
+                page = in_chromium(browser, lambda ws, deadline: a_visitor_solves(
+                    ws, deadline, server.url, teacher.group(1), records), timeout=90.0)
+            except AssertionError as err:
+                return f"{err} (records: {events(records)})"
+        row = next((line.split("\t") for line in page.splitlines()
+                    if line.startswith(VISITOR + "\t")), [])
+        if row[1:2] != ["Open the way"]:  # the column of the exercises solved
+            return f"the teacher's page does not show the exercise solved: {page!r}"
+    return None
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -199,6 +341,13 @@ def main(argv: list[str] | None = None) -> int:
         print(f"browser check: FAILED: {problem} (screenshot {args.out})")
         return 1
     print(f"browser check: the app drew in Chromium in {took:.1f} s (screenshot {args.out})")
+    started = time.monotonic()
+    problem = class_check(browser)
+    if problem:
+        print(f"browser check: FAILED: a served class: {problem}")
+        return 1
+    print(f"browser check: a visitor named themself, solved an exercise and showed on the "
+          f"teacher's page in {time.monotonic() - started:.1f} s")
     return 0
 
 
