@@ -26,7 +26,7 @@ def test_the_json_names_every_choice_in_force(capsys) -> None:
         "order": ["N", "E", "S", "W", "NE", "SE", "SW", "NW"], "corners": "one",
         "visit": "generate", "goal_test": "expand", "tree_search": False, "heuristic": None,
         "ties": None, "cost_tolerance": None, "reopen": None, "recursive": None,
-        "path_check": None, "mark_start": True, "weight": None,
+        "path_check": None, "mark_start": True, "weight": None, "flip_even": False,
     }
     _, default = headless_json(capsys)
     assert default["semantics"]["corners"] == "always" and default["discarded"] == 0

@@ -138,6 +138,15 @@ STUDENT_SEARCHES = [
             ["-a", "greedy", "--heuristic", "manhattan", *NESW],
             "h ties at 6.00, and your search takes the lower g of the tie (4.00, not 6.00); "
             "this search takes the oldest entry (--ties low-g)"),
+    Student("astar_red_blob", ROWS,
+            ["-a", "astar", "--heuristic", "manhattan", "--ties", "node", "--order",
+             "E,W,N,S", "--flip-even"],
+            "A* (manhattan; ties: smallest cell first; order E,N,S, reversed where x + y is "
+            "even; goal test on expand)",
+            ["-a", "astar", "--heuristic", "manhattan", "--ties", "node", "--order",
+             "E,W,N,S"],
+            "the reverse of its order, as a grid reversing its moves on every other cell "
+            "does (--flip-even)"),
     Student("dfs_autograder", ROWS,
             ["-a", "dfs", "--visit", "expand", "--goal-test", "expand", "--order", "N,S,E,W"],
             "DFS (order N,S,E,W; visit on expand; goal test on generate)",

@@ -33,6 +33,7 @@ from tui_search.engine.search.loops.dispatch import loop_for
 from tui_search.engine.search.loops.published import published
 from tui_search.engine.search.reference import ReferenceSearch, stream
 from tui_search.engine.search.registry import ALGORITHMS, get_algorithm
+from tui_search.engine.search.space import GridSpace
 
 
 @st.composite
@@ -62,7 +63,8 @@ def published_semantics(draw, algorithm: str | None = None) -> tuple[str, Semant
                     visit=visit, goal_test=draw(st.sampled_from((None, *GOAL_TESTS))),
                     tree_search=tree, heuristic=draw(st.sampled_from(sorted(HEURISTICS))),
                     ties=ties, cost_tolerance=tolerance, reopen=reopen, recursive=recursive,
-                    path_check=path_check, mark_start=mark_start)
+                    path_check=path_check, mark_start=mark_start,
+                    flip_even=draw(st.booleans()))
     if sem.plain:  # none drawn: set one that applies
         sem = sem.replace(**draw(st.sampled_from(_one_published(key, sem))))
     return key, sem
@@ -72,7 +74,8 @@ def _one_published(key: str, sem: Semantics) -> list[dict]:
     algo = get_algorithm(key)
     if sem.tree_search:
         return [{"path_check": False}]
-    out: list[dict] = [{"mark_start": False}] if sem.visit == "generate" else []
+    out: list[dict] = [{"flip_even": True}]
+    out += [{"mark_start": False}] if sem.visit == "generate" else []
     if algo.weighted:
         out += [{"ties": "node"}, {"ties": "lifo"}, {"cost_tolerance": 0.0}, {"reopen": False}]
     elif not algo.iterative:
@@ -171,6 +174,22 @@ def test_an_unmarked_start_is_pushed_again() -> None:
     for key in ("bfs", "dfs", "ucs", "astar"):
         steps = list(ReferenceSearch(grid, get_algorithm(key), Semantics(mark_start=False)))
         assert any(s.cell == grid.start for step in steps for s in step.successors), key
+
+
+def test_the_order_reversed_on_every_other_cell() -> None:
+    """Under flip_even a cell whose x + y is even takes its moves in the reverse order, every
+    other cell in the order itself; the moves and their costs are the same."""
+    grid = grid_from_rows(["S...", "....", "...G"])
+    order = ("E", "W", "N", "S")
+    plain = GridSpace(grid, Semantics(order=order), False)
+    flipped = GridSpace(grid, Semantics(order=order, flip_even=True), False)
+    for cell in ((1, 1), (2, 1), (0, 0), (1, 0), (3, 2)):
+        want = plain.successors(cell)
+        got = flipped.successors(cell)
+        assert got == (want[::-1] if sum(cell) % 2 == 0 else want), cell
+    assert not Semantics(flip_even=True).plain
+    with pytest.raises(ValueError, match="grid's"):
+        Semantics(order=("file",), flip_even=True)
 
 
 def test_expanded_again_expands_a_cell_twice_and_discards_nothing() -> None:

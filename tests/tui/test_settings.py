@@ -216,3 +216,20 @@ async def test_a_recursion_and_a_closed_set_are_picked_and_applied() -> None:
                          and app.session.run.semantics.ties == "node")
         sem = app.session.run.semantics
         assert not sem.reopen and sem.cost_tolerance == 0 and not sem.recursive
+
+
+@sync
+async def test_a_choice_the_screen_does_not_show_is_kept_when_settings_apply() -> None:
+    """--flip-even is the command line's only: applying the settings keeps it."""
+    flipped = Semantics(order=("E", "W", "N", "S"), flip_even=True)
+    app = SearchApp(load_map(TUTORIAL), path=TUTORIAL, algorithm="astar", semantics=flipped)
+    async with app.run_test(size=SIZE) as pilot:
+        await pilot.press("comma")
+        await screen_shown(pilot, SettingsScreen)
+        await pilot.press("right", "right", "enter")  # corners: never
+        await wait_until(pilot, lambda: app.screen.query_one("#corners-never").value)
+        await click_shown(pilot, "#apply")
+        await wait_until(pilot, lambda: not isinstance(app.screen, SettingsScreen))
+        await wait_until(pilot, lambda: app.session.semantics.corners == "never")
+        assert app.session.semantics == flipped.replace(corners="never")
+        assert "reversed where x + y is even" in stats(app)[0]

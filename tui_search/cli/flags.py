@@ -154,7 +154,8 @@ def changed_choice_flags(options: Options) -> list[str]:
                                       ("--no-corner-cutting", options.no_corner_cutting),
                                       ("--tree-search", options.tree_search),
                                       ("--no-path-check", options.no_path_check),
-                                      ("--recursive", options.recursive)) if on]
+                                      ("--recursive", options.recursive),
+                                      ("--flip-even", options.flip_even)) if on]
     return changed
 
 
@@ -188,6 +189,11 @@ def _choices_of(options: Options) -> dict[str, object]:
         goal_test=options.goal_test, tree_search=options.tree_search,
         heuristic=heuristic, recursive=recursive,
         path_check=not options.no_path_check)
+    if options.flip_even:
+        if graph is not None:
+            raise UsageError("--flip-even reverses a grid's moves on every other cell: a "
+                             "graph has no cells")
+        choices["flip_even"] = True
     for name, value in (("ties", options.ties), ("cost_tolerance", options.cost_tolerance),
                         ("weight", options.weight)):
         if value is not None:

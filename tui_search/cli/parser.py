@@ -137,6 +137,10 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--mark-start", choices=("yes", "no"), default=None,
                    help="is the start marked reached when pushed (yes, default); no: a "
                    "neighbour may push it again, as some library code does")
+    p.add_argument("--flip-even", action="store_true",
+                   help="reverse the order on every other cell, where x + y is even, as "
+                   "some tutorials' grids do (Red Blob Games' A*: --order E,W,N,S "
+                   "--flip-even); a grid's only")
     p.add_argument("--compare", metavar="A,B",
                    help="two to four searches side by side in the app (compare mode); with "
                    "--headless, run them on the map and print a table (e.g. bfs,dfs or "

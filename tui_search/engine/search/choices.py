@@ -45,6 +45,9 @@ What published code and students' code differ on besides (docs/08-semantics.md):
   not even the parent, as textbook tree-search code).
 * ``mark_start``: is the start marked reached when it is pushed?  False: it can be pushed
   again, as some library code does.
+* ``flip_even``: the order reversed on every other cell, those whose x + y is even (a grid's
+  only), as a popular tutorial's grid does so that a straight path zigzags rather than bends
+  once (Red Blob Games' "Implementation of A*": east, west, north, south, reversed there).
 
 The defaults are the tutorial's semantics.  A combination that makes no sense is refused by
 :meth:`Semantics.check` with a one-line ``ValueError``.
@@ -103,6 +106,7 @@ EXPLAIN: dict[str, str] = {
     "path_check": "tree search skips the cells on the node's own path (off: skips nothing)",
     "mark_start": "is the start marked reached when pushed (off: it can be pushed again)?",
     "weight": "weighted A*: f = g + W·h, a path at most W × the optimum (1: A*)",
+    "flip_even": "the order reversed on every other cell (x + y even), as some tutorials' grids",
 }
 
 def weight_text(weight: float) -> str:
@@ -130,7 +134,7 @@ class Semantics(Frozen):
 
     __slots__ = _FIELDS = ("order", "corners", "visit", "goal_test", "tree_search", "heuristic",
                            "ties", "cost_tolerance", "reopen", "recursive", "path_check",
-                           "mark_start", "weight")
+                           "mark_start", "weight", "flip_even")
 
     order: tuple[str, ...]
     corners: str
@@ -145,13 +149,14 @@ class Semantics(Frozen):
     path_check: bool
     mark_start: bool
     weight: float  # weighted A*'s W (1: A*)
+    flip_even: bool  # the order reversed on cells whose x + y is even
 
     def __init__(self, order: tuple[str, ...] = DEFAULT_ORDER, corners: str = "always",
                  visit: str = "generate", goal_test: str | None = None,
                  tree_search: bool = False, heuristic: str = DEFAULT_HEURISTIC,
                  ties: str = "fifo", cost_tolerance: float = CHEAPER_BY, reopen: bool = True,
                  recursive: str = "", path_check: bool = True, mark_start: bool = True,
-                 weight: float = 1.0) -> None:
+                 weight: float = 1.0, flip_even: bool = False) -> None:
         graph_order = len(order) == 1 and order[0] in GRAPH_ORDERS
         if not graph_order and (not order or any(d not in DELTAS for d in order)
                                 or len(set(order)) != len(order)):
@@ -169,6 +174,9 @@ class Semantics(Frozen):
         if not (cost_tolerance >= 0 and cost_tolerance != float("inf")):  # NaN fails too
             raise ValueError(f"cost tolerance {cost_tolerance!r}: a number 0 or more")
         weight = check_weight(weight)
+        if flip_even and graph_order:
+            raise ValueError("the order reversed on every other cell is a grid's: a graph's "
+                             "successors come in the file's order or by name")
         if tree_search and visit != "generate":
             raise ValueError("tree search has no visited set: the visit rule does not apply")
         if recursive and visit != "generate":
@@ -182,7 +190,8 @@ class Semantics(Frozen):
         self._assign(order=order, corners=corners, visit=visit, goal_test=goal_test,
                      tree_search=tree_search, heuristic=heuristic, ties=ties,
                      cost_tolerance=float(cost_tolerance), reopen=reopen, recursive=recursive,
-                     path_check=path_check, mark_start=mark_start, weight=weight)
+                     path_check=path_check, mark_start=mark_start, weight=weight,
+                     flip_even=bool(flip_even))
 
     def check(self, algorithm: Algorithm) -> None:
         """Refuse the combinations that make no sense for ``algorithm`` (``ValueError``)."""
@@ -252,10 +261,11 @@ class Semantics(Frozen):
     def plain(self) -> bool:
         """Are the choices published code differs on all at their defaults (none of ties,
         cost tolerance, re-opening, recursion, no path check, an unmarked start, visit
-        expand-again)?  The compiled core and the fast loops serve these."""
+        expand-again, an order reversed on every other cell)?  The compiled core and the fast
+        loops serve these."""
         return (self.ties == "fifo" and self.cost_tolerance == CHEAPER_BY and self.reopen
                 and not self.recursive and self.path_check and self.mark_start
-                and self.visit != "expand-again")
+                and self.visit != "expand-again" and not self.flip_even)
 
     def differences(self, algorithm: Algorithm | None = None) -> list[str]:
         """What differs from the defaults (``algorithm``'s, when given), in a few words each
@@ -266,6 +276,8 @@ class Semantics(Frozen):
             out.append(f"successors by {self.order[0]}")
         elif not graph and self.order != DEFAULT_ORDER:
             out.append(f"moves {','.join(self.order)}")
+        if self.flip_even:
+            out.append(FLIP_WORDS)
         if self.corners != "always":
             out.append(f"corners: {self.corners}")
         if self.recursive:
@@ -343,8 +355,19 @@ class Semantics(Frozen):
             "path_check": self.path_check if self.tree_search else None,
             "mark_start": self.mark_start,
             "weight": self.weight if algorithm is None or algorithm.priority == "g+h" else None,
+            "flip_even": None if self.order[0] in GRAPH_ORDERS else self.flip_even,
         }
 
+
+#: The order reversed on every other cell, in a few words.
+FLIP_WORDS = "reversed where x + y is even"
+
+
+def order_words(semantics: Semantics) -> str:
+    """The moves' order in a student's words: "N,E,S,W", "E,W,N,S, reversed where x + y is
+    even"."""
+    flipped = f", {FLIP_WORDS}" if semantics.flip_even else ""
+    return f"{','.join(semantics.order)}{flipped}"
 
 #: The visit rules, and the recursive forms, in a few words.
 VISIT_WORDS = {"generate": "visit on generate", "expand": "visit on expand",

@@ -20,7 +20,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from functools import lru_cache
 
-from tui_search.engine.search.choices import TIE_WORDS, Semantics
+from tui_search.engine.search.choices import TIE_WORDS, Semantics, order_words
 from tui_search.engine.search.heuristics import CHEAPER_BY
 from tui_search.engine.search.registry import Algorithm
 
@@ -125,7 +125,7 @@ def _successor_lines(algorithm: Algorithm, semantics: Semantics, move_cost: str,
     """The loop over a node's successors, as ``(kind, indent, text)``: the checks that skip
     one, its push, what the push records and the goal test on push."""
     weighted = algorithm.weighted
-    out = [("for", 1, f"for each successor s of node, moves in order {','.join(semantics.order)}:"),
+    out = [("for", 1, f"for each successor s of node, moves in order {order_words(semantics)}:"),
            ("blocked", 2, "if s is off the map or an obstacle: skip s")]
     if semantics.corners in _CORNER_WORDS:
         out.append(("corner", 2, _CORNER_WORDS[semantics.corners]))

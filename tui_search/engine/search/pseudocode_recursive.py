@@ -12,7 +12,7 @@ neighbour, "recurse" the call itself, "discard" the neighbour skipped as visited
 
 from __future__ import annotations
 
-from tui_search.engine.search.choices import Semantics
+from tui_search.engine.search.choices import Semantics, order_words
 from tui_search.engine.search.registry import Algorithm
 
 _CORNER_WORDS = {
@@ -50,7 +50,7 @@ def recursive_lines(algorithm: Algorithm, semantics: Semantics,
     if not calls:
         out.append(("calls", 1, "calls ← an empty list"))
     out.append(("for", 1, f"for each successor s of node, moves in order "
-                          f"{','.join(semantics.order)}:"))
+                          f"{order_words(semantics)}:"))
     out.append(("blocked", 2, "if s is off the map or an obstacle: skip s"))
     if semantics.corners in _CORNER_WORDS:
         out.append(("corner", 2, _CORNER_WORDS[semantics.corners]))

@@ -81,8 +81,9 @@ class GridSpace:
         return state == self.goal
 
     def successors(self, state: State) -> list[tuple[str, State, float]]:
-        """The legal moves from the cell (``Grid.neighbours``), in order, with their cells and
-        costs (the move's length times the cost of the cell it enters)."""
+        """The legal moves from the cell (``Grid.neighbours``), in order (reversed where x + y
+        is even, under ``flip_even``), with their cells and costs (the move's length times the
+        cost of the cell it enters)."""
         x, y = cast(Cell, state)  # a grid's state is its cell
         i = y * self.grid.width + x
         bits = self._legal_bits[i]
@@ -92,8 +93,12 @@ class GridSpace:
             bits = sum(1 << j for j, (move, _, _) in enumerate(self._order) if move in legal)
             self._legal_bits[i] = bits
         enter = self.grid.cost
-        return [(move, (x + dx, y + dy), length * enter((x + dx, y + dy)))
-                for j, (move, (dx, dy), length) in enumerate(self._order) if bits >> j & 1]
+        out: list[tuple[str, State, float]] = [
+            (move, (x + dx, y + dy), length * enter((x + dx, y + dy)))
+            for j, (move, (dx, dy), length) in enumerate(self._order) if bits >> j & 1]
+        if self.semantics.flip_even and not (x + y) % 2:  # reversed on every other cell
+            out.reverse()
+        return out
 
     def estimate(self) -> Callable[[State], float]:
         heuristic, (gx, gy) = self._heuristic, self.goal

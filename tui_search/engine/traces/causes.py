@@ -79,6 +79,7 @@ CAUSES = {
     "calls": "listed the calls, not the neighbours",
     "left-out": "left out a successor",
     "order": "added the successors in another order",
+    "flip-even": "added the successors in the reverse order on every other cell",
     # the ends of a trace
     "goes-on": "went on after the search stopped",
     "ends": "stopped before the search did",

@@ -24,7 +24,12 @@ from dataclasses import dataclass
 from tui_search.engine.maps.graph import Graph
 from tui_search.engine.maps.grid import Grid
 from tui_search.engine.run.recorded import Run, Step
-from tui_search.engine.search.choices import RECURSIVE_WORDS, VISIT_WORDS, Semantics
+from tui_search.engine.search.choices import (
+    RECURSIVE_WORDS,
+    VISIT_WORDS,
+    Semantics,
+    order_words,
+)
 from tui_search.engine.search.registry import Algorithm, get_algorithm
 from tui_search.engine.search.state import State
 from tui_search.engine.traces.causes import TRACE_VOICE, Voice
@@ -57,7 +62,7 @@ def choices_text(algo: Algorithm, semantics: Semantics) -> str:
     lists the calls; goal test on generate)"."""
     parts = [semantics.heuristic] if algo.informed else []
     parts += semantics.published_words()
-    parts.append(f"order {','.join(semantics.order)}")
+    parts.append(f"order {order_words(semantics)}")
     if semantics.recursive:
         parts.append(RECURSIVE_WORDS[semantics.recursive])
     if semantics.tree_search:

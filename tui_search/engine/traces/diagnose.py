@@ -26,7 +26,12 @@ from tui_search.engine.search.choices import CORNER_RULES, Semantics
 from tui_search.engine.search.heuristics import DEFAULT_HEURISTIC, HEURISTICS
 from tui_search.engine.search.registry import ALGORITHMS, get_algorithm
 from tui_search.engine.traces.check import ALL_NOTES, Verdict, check_trace
-from tui_search.engine.traces.orders import expansion_orders, inferred_orders, order_notes
+from tui_search.engine.traces.orders import (
+    expansion_orders,
+    flipped_order,
+    inferred_orders,
+    order_notes,
+)
 from tui_search.engine.traces.read import Trace, show
 
 #: Candidates listed when none matches the whole trace (and at least this many lines).
@@ -186,6 +191,8 @@ class _Search:
         self.queued = 0  # variants queued (what breaks a tie of their order)
         self.nodes: Trace | None = None  # the trace's expansions alone, once asked for
         goal = trace.goal or (grid.goal if isinstance(grid, Grid) else grid.goals[0])
+        self.goal = goal
+        self.flipped: tuple[str, ...] | None = ()  # the flipped steps' order, once asked
         # Every order that keeps each step's successors in the order the trace added them
         # makes the same search of this trace up to its first difference (the same
         # successors, pushed in the same order, so the same ties): one of them stands for
@@ -237,6 +244,11 @@ class _Search:
             return
         algo = ALGORITHMS[key]
         for change in difference.suggest:
+            if dict(change).get("flip_even"):  # the order as the trace's flipped steps give it
+                flipped = self.flipped_order()
+                if flipped is None:
+                    continue
+                change = (("flip_even", True), ("order", flipped))
             try:
                 variant = sem.replace(**dict(change))
                 variant.check(algo)
@@ -245,6 +257,12 @@ class _Search:
             self.queued += 1
             heapq.heappush(variants, (-verdict.matched, depth + 1, i, self.queued, key,
                                       variant))
+
+    def flipped_order(self) -> tuple[str, ...] | None:
+        """:func:`~tui_search.engine.traces.orders.flipped_order` of the trace, once."""
+        if self.flipped == ():
+            self.flipped = flipped_order(self.trace, self.goal)
+        return self.flipped
 
     def calls_may_lead(self, key: str, sem: Semantics) -> bool:
         """May a recursion's calls form match as long as the best candidate so far?  Its

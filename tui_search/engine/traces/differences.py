@@ -23,6 +23,7 @@ from tui_search.engine.search.choices import corner_allowed
 from tui_search.engine.search.registry import Frontier
 from tui_search.engine.search.state import State, as_cell, state_json
 from tui_search.engine.traces.causes import TRACE_VOICE, Voice
+from tui_search.engine.traces.orders import flipped_order
 from tui_search.engine.traces.read import Trace, TraceStep, show
 from tui_search.engine.traces.ties import TIE_ORDER, tie
 
@@ -262,10 +263,33 @@ class Causes:
             words = (f"{self.says('added')} {', '.join(map(show, got))}; {self.name} adds "
                      f"{', '.join(map(show, want))} (order {order}): {show(want[first])} "
                      f"before {show(got[first])}")
+            flip = self._flipped()
+            if flip and got == want[::-1]:
+                flipped = flip[0][1][1]
+                assert isinstance(flipped, tuple)
+                flag = ("--flip-even" if flipped == self.sem.order
+                        else f"--order {','.join(flipped)} --flip-even")
+                words += (f", the reverse of its order, as a grid reversing its moves on every "
+                          f"other cell does{self.flag(flag)}")
+                return self._diff(n, t, words, want[first], got[first], flip, "flip-even")
+            return self._diff(n, t, words, want[first], got[first], flip, "order")
         else:  # not the whole list: that would give the rest away
             words = (f"{self.says('added')} {', '.join(map(show, got))}; {self.name} adds "
                      f"{show(want[first])} before {show(got[first])} (order {order})")
         return self._diff(n, t, words, want[first], got[first], cause="order")
+
+    def _flipped(self) -> tuple[Suggestion, ...]:
+        """Where the trace reads as a grid reversing its moves on every other cell (the cells
+        whose x + y is even) would add them (:func:`~tui_search.engine.traces.orders.
+        flipped_order`): that choice, with the order the trace gives it."""
+        if self.sem.flip_even or not isinstance(self.run.board, Grid):
+            return ()
+        order = flipped_order(self.trace, self.run.goal)
+        if order is None:
+            return ()
+        if [m for m in self.sem.order if m in order] == list(order):
+            order = self.sem.order  # (the moves the trace never took where they were)
+        return ((("flip_even", True), ("order", order)),)
 
     @staticmethod
     def _diff(n: int, t: TraceStep, words: str, expected: State | None, got: State | None,

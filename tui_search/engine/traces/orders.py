@@ -7,6 +7,7 @@ eight -- and what the trace leaves open about them.
 from __future__ import annotations
 
 from collections.abc import Iterator
+from dataclasses import replace
 from itertools import permutations
 
 from tui_search.engine.maps.grid import DEFAULT_ORDER, DELTAS, Grid
@@ -96,6 +97,30 @@ def inferred_orders(trace: Trace, goal: State | None = None, grid: Grid | None =
     return orders or [tuple(used)]
 
 
+def flipped_order(trace: Trace, goal: State | None = None) -> tuple[str, ...] | None:
+    """The order a grid's trace follows once its steps on the cells whose x + y is even are
+    read reversed (a grid that reverses its moves on every other cell), where its steps read
+    so agree on one order and read as they are do not; else None."""
+    if on_graph(trace) or agrees(trace, inferred_orders(trace, goal)[0]):
+        return None
+    flipped = replace(trace, steps=tuple(
+        t._replace(successors=t.successors[::-1]) if not sum(as_cell(t.node)) % 2 else t
+        for t in trace.steps))
+    order = inferred_orders(flipped, goal)[0]
+    return order if agrees(flipped, order) else None
+
+
+def agrees(trace: Trace, order: tuple[str, ...]) -> bool:
+    """Does every step of ``trace`` add its successors in ``order`` (their moves in it, in
+    its order)?"""
+    rank = {m: i for i, m in enumerate(order)}
+    for step in trace.steps:
+        places = [rank.get(_move(step.node, c) or "", -1) for c in step.successors]
+        if any(i < 0 for i in places) or places != sorted(places):
+            return False
+    return True
+
+
 def _never_moves(trace: Trace, grid: Grid | None) -> tuple[str, ...]:
     """The moves blocked (an obstacle, off the map) from every cell ``trace`` expands: what a
     search that added nothing could have tried (N,W,S,E when none is, or no map is given)."""
@@ -159,4 +184,5 @@ def order_notes(orders: list[tuple[str, ...]]) -> list[str]:
     return notes
 
 
-__all__ = ["MAX_ORDERS", "expansion_orders", "inferred_orders", "order_notes"]
+__all__ = ["MAX_ORDERS", "agrees", "expansion_orders", "flipped_order", "inferred_orders",
+           "order_notes"]

@@ -270,7 +270,9 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
                          recursive=recursive,
                          path_check=not (tree and self.query_one("#no_path_check",
                                                                  Checkbox).value),
-                         mark_start=mark, weight=weight)
+                         mark_start=mark, weight=weight,
+                         # not on the screen: kept as the command line gave it
+                         flip_even=self.semantics.flip_even and self.graph is None)
 
     def _sync_visit(self) -> None:
         """The visit rule does not apply to tree search nor to iterative deepening: say so
