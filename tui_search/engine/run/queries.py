@@ -87,14 +87,20 @@ class EventTree:
         step_g = rec.step_g
         assert step_g is not None, "only a cost-ordered search records costs"
         k = bisect_right(rec.step_end, g)
-        if k == 0:
-            return 0.0
+        if k == 0 or (len(rec.iter_root) > 1 and self._is_root(g)):
+            return 0.0  # a root (IDA*'s iterations each have one)
         node = rec.gen_node
         if self._grid is None:
             return step_g[k] + self._problem.step_cost(node[rec.exp(k)], node[g])
         length = self._move_cost[node[g] - node[rec.exp(k)]]
         terrain = self._terrain
         return step_g[k] + (length if terrain is None else length * terrain[node[g]])
+
+    def _is_root(self, g: int) -> bool:
+        """Is event ``g`` an iteration's root?"""
+        roots = self._rec.iter_root
+        i = bisect_left(roots, g)
+        return i < len(roots) and roots[i] == g
 
     def gen_gs(self, events: Sequence[int]) -> list[float]:
         """:meth:`gen_g` of each of ``events``, which ascend (a step's successors, the open
@@ -107,6 +113,8 @@ class EventTree:
         again) has the step's own g: the entry the loop took off carried the g it was pushed
         with."""
         rec = self._rec
+        if len(rec.iter_root) > 1:  # IDA*: a root among the events, each looked up
+            return [self.gen_g(e) for e in events]
         step_g, ends, node, cost = rec.step_g, rec.step_end, rec.gen_node, self._move_cost
         assert step_g is not None, "only a cost-ordered search records costs"
         lo, hi, k, taken = self._gs_step
@@ -422,6 +430,8 @@ class EventTree:
             depth_limit=self._recording.depth_limit(k),
             found_goal=rec.found and k == rec.steps,
             discarded=self._recording.is_discarded(k),
+            f_limit=rec.iter_f_limit[self._recording.iteration_of(k)]
+            if rec.iter_f_limit is not None else None,
         )
 
     def steps(self) -> Iterator[Step]:
