@@ -147,3 +147,28 @@ def test_the_priority_queues_choices_and_recursion_do_not_apply(change: dict,
     assert words in Semantics(**change).refusal(IDASTAR)
     assert Semantics(**change).fitted(IDASTAR).refusal(IDASTAR) == ""
     assert Semantics(weight=2).refusal(IDASTAR) == ""  # weighted IDA*: f = g + 2·h
+
+
+IDA_EXERCISE = """\
+title = "The price of a small stack"
+text = "IDA* finds A*'s path: make it expand more than four times A*'s nodes."
+map = "tutorial.txt"
+searches = ["astar", "idastar"]
+edits = ["obstacles"]
+solved = "idastar.cost == astar.cost and idastar.expanded > 4 * astar.expanded"
+"""
+
+
+def test_an_exercise_names_idastar() -> None:
+    from tests.helpers import MAPS
+    from tui_search.engine.course.exercise_file import parse_exercise
+    from tui_search.engine.course.grading import grade
+
+    exercise = parse_exercise(IDA_EXERCISE, str(MAPS / "ida.toml"))
+    assert [name for name, _ in exercise.searches] == ["astar", "idastar"]
+    verdict = grade(exercise, grid_from_rows(TUTORIAL_ROWS))
+    assert verdict.solved  # 97 steps against A*'s 16, the same cost 8.66
+    assert verdict.figures["idastar.expanded"] == 97
+    assert verdict.figures["idastar.cost"] == pytest.approx(verdict.figures["astar.cost"])
+    open_map = grid_from_rows(["S...", "....", "...G"])
+    assert not grade(exercise, open_map).solved  # h is exact there: few iterations

@@ -113,6 +113,10 @@ class Algorithm(NamedTuple):
     #: tutorial's searches, "expand" for the cost-ordered ones (testing on generation would
     #: stop before a cheaper path to the goal comes off the queue).
     goal_test: str = "generate"
+    #: Is its key in the key bar's group of searches?  The tutorial's and the next lesson's
+    #: are; the chapter's further searches have their key in the help (``?``), the palette
+    #: and the docs, so that the bar keeps its other hints at 80 columns.
+    key_bar: bool = True
 
     @property
     def informed(self) -> bool:
@@ -172,7 +176,8 @@ ALGORITHMS: dict[str, Algorithm] = {
                   "A*", priority="g+h", goal_test="expand"),
         Algorithm("idastar", "Iterative deepening A*", "IDA*", Frontier.LIFO, "7",
                   "depth-first within f-limits h(start), then the least f over: A*'s path, "
-                  "a small stack", "IDA", iterative=True, priority="g+h", goal_test="expand"),
+                  "a small stack", "IDA", iterative=True, priority="g+h", goal_test="expand",
+                  key_bar=False),
     )
 }
 

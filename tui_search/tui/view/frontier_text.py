@@ -59,6 +59,9 @@ def titles(algo: Algorithm, hide_order: bool = False, as_added: bool = False,
                  else algo.frontier_title)
         plain = [title, f"{name} ({what})", f"{name} ({by})", name, f"{letters} ({by})",
                  letters]
+        if algo.contours:  # IDA*'s stack: what it cuts off by, not an order
+            plain = [f"{algo.frontier.title} ({algo.short}: {what} ≤ limit)",
+                     f"{name} ({what} ≤ limit)", f"{name} (f ≤ limit)", name, letters]
     wordings = plain
     if as_added:
         wordings = [f"{text} · as added" for text in plain[:-1]] + plain
