@@ -172,3 +172,16 @@ def test_an_exercise_names_idastar() -> None:
     assert verdict.figures["idastar.cost"] == pytest.approx(verdict.figures["astar.cost"])
     open_map = grid_from_rows(["S...", "....", "...G"])
     assert not grade(exercise, open_map).solved  # h is exact there: few iterations
+
+
+def test_by_hand_a_node_over_the_limit_adds_nothing() -> None:
+    from tui_search.engine.traces.hand import HandRun
+
+    hand = HandRun(grid_from_rows(TUTORIAL_ROWS), "idastar", Semantics())
+    assert hand.pick((0, 0)).ok and hand.mark((0, 1)).ok and hand.end_step().ok
+    assert hand.pick((0, 1)).ok  # f 6.41, over the first limit 5.83
+    assert hand.hint_why().startswith("IDA* adds nothing from (0,1): its f = 6.41 is over the "
+                                      "limit 5.83")
+    told = hand.mark((0, 2))
+    assert not told.ok and told.mistake is not None and told.mistake.cause == "cut-off"
+    assert hand.end_step().ok and hand.pick((0, 0)).ok  # the second iteration, from START
