@@ -96,6 +96,23 @@ async def test_key_7_runs_idastar_and_the_tree_and_status_say_its_limits() -> No
         assert "f-limit 8.66" in stats(app)[0]
 
 
+@sync
+async def test_key_7_adds_idastar_to_compare_mode_beside_astar() -> None:
+    from tests.helpers import MAPS
+    from tui_search.engine.maps.load import load_map
+    from tui_search.tui.app import SearchApp
+
+    app = SearchApp(load_map(MAPS / "tutorial.txt"), compare="astar,iddfs")
+    async with app.run_test(size=(120, 36)) as pilot:
+        await pilot.press("7")
+        await wait_until(pilot, lambda: [r.algorithm for r in app.session.runs]
+                         == ["astar", "iddfs", "idastar"])
+        await pilot.press("end")
+        await wait_until(pilot, lambda: all(r.at_end for r in app.session.runs))
+        astar, _, ida = (r.path_cost() for r in app.session.runs)
+        assert astar is not None and ida == astar  # A*'s cost, 97 steps against 16
+
+
 def test_idastar_at_its_second_contour(snap_compare) -> None:
     """IDA* on the tutorial's map at step 8, in its second iteration (f-limit 6.41): the
     stack panel 'Stack (f = g + h ≤ limit)' with (1,3) next; the tree titled 'Search tree ·
