@@ -86,8 +86,8 @@ class EventTree:
         rec = self._rec
         step_g = rec.step_g
         assert step_g is not None, "only a cost-ordered search records costs"
-        k = bisect_right(rec.step_end, g)
-        if k == 0 or (len(rec.iter_root) > 1 and self._is_root(g)):
+        k, roots = bisect_right(rec.step_end, g), rec.iter_root
+        if k == 0 or roots[min(bisect_left(roots, g), len(roots) - 1)] == g:
             return 0.0  # a root (IDA*'s iterations each have one)
         node = rec.gen_node
         if self._grid is None:
@@ -95,12 +95,6 @@ class EventTree:
         length = self._move_cost[node[g] - node[rec.exp(k)]]
         terrain = self._terrain
         return step_g[k] + (length if terrain is None else length * terrain[node[g]])
-
-    def _is_root(self, g: int) -> bool:
-        """Is event ``g`` an iteration's root?"""
-        roots = self._rec.iter_root
-        i = bisect_left(roots, g)
-        return i < len(roots) and roots[i] == g
 
     def gen_gs(self, events: Sequence[int]) -> list[float]:
         """:meth:`gen_g` of each of ``events``, which ascend (a step's successors, the open
