@@ -61,6 +61,14 @@ def test_a_node_over_the_limit_is_cut_off_and_sets_the_next_limit() -> None:
     assert dict(status_parts(run))["next"] == "∞" and not run.steps.is_cut_off()
 
 
+def test_an_empty_stack_between_iterations_names_the_next_f_limit() -> None:
+    from tui_search.tui.view.frontier_text import describe_empty
+
+    run = run_at(FIRSTS[1] - 1)  # the first iteration's last step: its stack empty
+    assert run.now.frontier_len() == 0
+    assert describe_empty(run) == "empty — iteration over; next: f-limit 6.41"
+
+
 def test_the_tree_shows_the_iterations_contour() -> None:
     model = TreeModel()
     run = run_at(10)

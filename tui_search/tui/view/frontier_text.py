@@ -140,6 +140,9 @@ def end_hint(kind: Frontier, i: int, n: int) -> str:
 def describe_empty(run: Run) -> str:
     """What an empty frontier means at the run's position."""
     if run.k < run.recorded or not run.done:
+        f_limits = run.steps.f_limits()
+        if f_limits is not None:  # IDA*: the smallest f cut off is the next limit
+            return f"empty — iteration over; next: f-limit {f_limits[1]:.2f}"
         if run.algo.iterative:
             limit = run.steps.depth_limit()
             nxt = 1 if limit is None else limit + 1
