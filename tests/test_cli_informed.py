@@ -85,7 +85,8 @@ def test_goal_test_on_generate_is_available_and_named(capsys) -> None:
 @pytest.mark.parametrize(
     ("argv", "expected"),
     [
-        (["-a", "bfs", "--heuristic", "octile"], "--heuristic applies to -a greedy, astar only"),
+        (["-a", "bfs", "--heuristic", "octile"],
+         "--heuristic applies to -a greedy, astar, idastar only"),
         (["-a", "ucs", "--heuristic", "manhattan"], "--heuristic applies to -a greedy, astar"),
         (["-a", "astar", "--visit", "expand"], "--visit does not apply to -a astar"),
         (["-a", "astar", "--heuristic", "taxicab"], "argument --heuristic: invalid choice"),

@@ -38,8 +38,8 @@ def test_the_text_output_names_the_weight(capsys) -> None:
 
 
 @pytest.mark.parametrize(("argv", "said"), [
-    (("-a", "ucs", "--weight", "2"), "--weight applies to -a astar only"),
-    (("-a", "bfs", "--weight", "1"), "--weight applies to -a astar only"),
+    (("-a", "ucs", "--weight", "2"), "--weight applies to -a astar, idastar only"),
+    (("-a", "bfs", "--weight", "1"), "--weight applies to -a astar, idastar only"),
     (("-a", "astar", "--weight", "0.9"), "'0.9' is not a number 1 or more"),
     (("-a", "astar", "--weight", "nan"), "'nan' is not a number 1 or more"),
     (("-a", "astar", "--weight", "two"), "'two' is not a number 1 or more"),

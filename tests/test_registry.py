@@ -37,7 +37,8 @@ def test_the_keys_the_cli_and_the_help_come_from_the_registry() -> None:
     choices = next(a for a in build_parser()._actions if a.dest == "algorithm").choices
     assert list(choices) == list(ALGORITHMS)
     keys_line = dict(KEYS)[" ".join(a.app_key for a in ALGORITHMS.values())]
-    assert keys_line == "BFS / DFS / IDDFS / UCS / Greedy / A* (a new search, same map)"
+    assert keys_line == ("BFS / DFS / IDDFS / UCS / Greedy / A* / IDA* "
+                         "(a new search, same map)")
 
 
 def test_a_priority_queue_is_titled_by_its_order() -> None:
@@ -46,7 +47,9 @@ def test_a_priority_queue_is_titled_by_its_order() -> None:
     assert titles["ucs"] == "Priority queue (UCS: g)"
     assert titles["greedy"] == "Priority queue (Greedy: h)"
     assert titles["bfs"] == "Queue (FIFO)"
-    assert [a.key for a in ALGORITHMS.values() if a.informed] == ["greedy", "astar"]
+    assert titles["idastar"] == "Stack (LIFO) (IDA*: f = g + h ≤ limit)"
+    assert [a.key for a in ALGORITHMS.values() if a.informed] == ["greedy", "astar", "idastar"]
+    assert [a.key for a in ALGORITHMS.values() if a.queued] == ["ucs", "greedy", "astar"]
     assert all(a.goal_test == "expand" for a in ALGORITHMS.values() if a.weighted)
 
 

@@ -72,6 +72,7 @@ def reference_arrays(grid: Grid, key: str, sem: Semantics, limit: int) -> dict:
             roots.append(step.new_root.event)
             first_steps.append(step.index)
             cells.append(step.new_root.cell)
+            costs.append(step.new_root.g)  # IDA*'s roots: 0
         assert step.node.event < len(cells) and cells[step.node.event] == step.node.cell
         step_exp.append(step.node.event)
         cells.extend(s.cell for s in step.successors)

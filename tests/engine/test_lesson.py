@@ -137,7 +137,7 @@ def test_the_command_line_lists_the_lessons_and_refuses_a_bad_one(capsys,
     code, out, err = run_cli(capsys, "--lesson", str(bad))
     assert (code, out) == (2, "")
     assert err == f"tui-search: {bad}:4:12: algorithm 'quick': use bfs, dfs, iddfs, ucs, " \
-        "greedy, astar\n"
+        "greedy, astar, idastar\n"
     code, _, err = run_cli(capsys, "--lesson", "no-such-lesson")
     assert code == 2 and "no such lesson (built in: choices, tutorial)" in err
     code, _, err = run_cli(capsys, "--lesson", "tutorial", "--headless")

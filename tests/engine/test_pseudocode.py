@@ -76,7 +76,12 @@ def test_every_combination_parses_as_the_same_structure(algorithm: Algorithm,
     tree = parse(code)
     every = [line.kind for line in code.lines]
     assert len(every) == len(set(every)), "a kind is on one line"
-    if algorithm.iterative:  # the loop over depth limits holds the search
+    if algorithm.contours:  # IDA*: its first limit, then the loop over limits on f
+        assert kinds(tree) == ["limit_init", "deepen"]
+        tree = find(tree, "deepen")
+        assert kinds(tree)[0] == "next_init" and kinds(tree)[-1] == "next_limit"
+        tree = tree[1:-1]
+    elif algorithm.iterative:  # the loop over depth limits holds the search
         assert kinds(tree) == ["deepen"]
         tree = find(tree, "deepen")
     top = kinds(tree)
@@ -172,7 +177,8 @@ def test_the_published_choices_put_their_own_lines(algorithm: Algorithm,
         assert "recurse" in kinds(find(body, "for") if semantics.recursive == "calls"
                                   else find(body, "take"))
         return
-    assert kinds(find(tree[0][1] if algorithm.iterative else tree, "while"))[0] == "take"
+    loop = find(tree, "deepen") if algorithm.iterative else tree
+    assert kinds(find(loop, "while"))[0] == "take"
     if not semantics.reopen:
         assert "close node" in text and "if s is closed" in text
     if semantics.ties != "fifo":

@@ -53,7 +53,7 @@ def published_semantics(draw, algorithm: str | None = None) -> tuple[str, Semant
     if not (tree or recursive) and visit == "generate":
         mark_start = draw(st.booleans())
     ties, tolerance, reopen = "fifo", CHEAPER_BY, True
-    if algo.weighted:
+    if algo.queued:
         allowed = [t for t in TIE_RULES if not ((t.endswith("-h") and not algo.informed)
                                                 or (t.endswith("-g") and algo.priority == "g"))]
         ties = draw(st.sampled_from(allowed))
@@ -76,7 +76,7 @@ def _one_published(key: str, sem: Semantics) -> list[dict]:
         return [{"path_check": False}]
     out: list[dict] = [{"flip_even": True}]
     out += [{"mark_start": False}] if sem.visit == "generate" else []
-    if algo.weighted:
+    if algo.queued:
         out += [{"ties": "node"}, {"ties": "lifo"}, {"cost_tolerance": 0.0}, {"reopen": False}]
     elif not algo.iterative:
         out += [{"visit": "expand-again", "mark_start": True}]

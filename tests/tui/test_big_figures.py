@@ -74,14 +74,15 @@ def serpentine(side: int) -> str:
 
 def test_the_longest_path_of_the_largest_generated_size_at_every_search_s_end() -> None:
     """The generators' largest size, with the longest path it can hold; every search at its
-    end (iterative deepening gives up at its step limit there, as ``end`` does in the app)."""
+    end (iterative deepening and IDA* give up at their step limit there, as ``end`` does in
+    the app)."""
     grid = parse_map_text(serpentine(MAX_SIDE))
     with int_digits(LOWEST_LIMIT):
         for key in ALGORITHMS:
             limit = 10_000 if get_algorithm(key).iterative else MAX_STEPS
             run = at_end(Run(grid, key, Semantics(), limit))
             texts = status_texts(run)
-            if key == "iddfs":
+            if get_algorithm(key).iterative:
                 assert not run.found and "Gave up" in " ".join(texts)
                 continue
             moves = len(run.moves() or [])

@@ -247,12 +247,12 @@ def _refused_flag(options: Options) -> str:
     if options.heuristic is not None and not algorithm.informed:
         informed = ", ".join(a.key for a in ALGORITHMS.values() if a.informed)
         return f"--heuristic applies to -a {informed} only, not {key}"
-    weighted = ", ".join(a.key for a in ALGORITHMS.values() if a.weighted)
+    weighted = ", ".join(a.key for a in ALGORITHMS.values() if a.queued)
     for flag in ("ties", "cost_tolerance", "reopen"):
-        if getattr(options, flag) is not None and not algorithm.weighted:
+        if getattr(options, flag) is not None and not algorithm.queued:
             return f"--{flag.replace('_', '-')} applies to -a {weighted} only, not {key}"
     if options.weight is not None and algorithm.priority != "g+h":
-        return f"--weight applies to -a astar only (f = g + W·h), not {key}"
+        return f"--weight applies to -a astar, idastar only (f = g + W·h), not {key}"
     if (options.recursive or options.recursive_lines) and algorithm.key not in ("dfs", "iddfs"):
         return f"--recursive applies to -a dfs, iddfs only, not {key}"
     return ""

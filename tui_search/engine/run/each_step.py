@@ -26,7 +26,7 @@ if TYPE_CHECKING:
 def as_step(step: Expansion) -> Step:
     """A step of the reference loop as a recorded run's step."""
     return Step(step.index, step.node.cell, tuple((s.move or "", s.cell) for s in step.successors),
-                step.depth_limit, step.found, step.discarded)
+                step.depth_limit, step.found, step.discarded, step.f_limit)
 
 
 def search_each_step(grid: Grid | Graph, key: str, semantics: Semantics, max_steps: int,

@@ -73,15 +73,20 @@ class Steps:
     - ``first_of_iteration(it)``: the first step of iteration ``it``.
     - ``depth_limit(k=None)``: iterative deepening's depth limit at step ``k`` (default: the
       run's position; None for other searches).
+    - ``is_cut_off(k=None)``: IDA*: was step ``k``'s node over the limit, cut off?
+    - ``f_limits(k=None)``: IDA*'s limit on f at step ``k`` and the smallest f over it met
+      by then in its iteration (inf: none yet); None for other searches.
     - ``peak_frontier(k=None)``: the largest frontier size over steps 0..k (default: the
       run's position).
     """
 
-    __slots__ = ("_position", "_recording", "all", "at", "expanded_event", "expansions",
-                 "first_of_iteration", "is_discarded", "iteration_of", "succ_range")
+    __slots__ = ("_costs", "_position", "_recording", "all", "at", "expanded_event",
+                 "expansions", "first_of_iteration", "is_discarded", "iteration_of",
+                 "succ_range")
 
     def __init__(self, recording: Recording, tree: EventTree, position: Position) -> None:
         self._recording, self._position = recording, position
+        self._costs = tree.gen_costs
         self.at = tree.step
         self.all = tree.steps
         self.expanded_event = recording.expanded_event
@@ -94,6 +99,21 @@ class Steps:
     def depth_limit(self, k: int | None = None) -> int | None:
         """Iterative deepening's depth limit at step ``k`` (default: the position)."""
         return self._recording.depth_limit(self._position.k if k is None else k)
+
+    def f_limits(self, k: int | None = None) -> tuple[float, float] | None:
+        """IDA*'s limit on f at step ``k`` and the next so far (default: the position)."""
+        return self._recording.f_limits(self._position.k if k is None else k)
+
+    def is_cut_off(self, k: int | None = None) -> bool:
+        """IDA*: did step ``k`` (default: the position) take off a node whose f is over the
+        limit (by more than the cost tolerance), cut off with no successors?"""
+        k = self._position.k if k is None else k
+        limits = self._recording.f_limits(k)
+        if limits is None or k == 0:
+            return False
+        costs = self._costs(self._recording.expanded_event(k))
+        tolerance = self._recording.problem.semantics.cost_tolerance
+        return costs is not None and costs[2] > limits[0] + tolerance
 
     def peak_frontier(self, k: int | None = None) -> int:
         """The largest frontier size over steps 0..k (default: the position)."""

@@ -314,7 +314,9 @@ class Position:
 
     def is_stale(self, g: int) -> bool:
         """Is event ``g`` (of a cost-ordered search) superseded at the position: its cell
-        pushed again since, with a lower g?"""
+        pushed again since, with a lower g?  Never IDA*'s: it expands such an entry still."""
+        if self._rec.iter_f_limit is not None:
+            return False
         nxt = self._tree.pushed_again(g)
         return 0 <= nxt < self.generated
 

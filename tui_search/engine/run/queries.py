@@ -86,9 +86,9 @@ class EventTree:
         rec = self._rec
         step_g = rec.step_g
         assert step_g is not None, "only a cost-ordered search records costs"
-        k = bisect_right(rec.step_end, g)
-        if k == 0:
-            return 0.0
+        k, roots = bisect_right(rec.step_end, g), rec.iter_root
+        if k == 0 or roots[min(bisect_left(roots, g), len(roots) - 1)] == g:
+            return 0.0  # a root (IDA*'s iterations each have one)
         node = rec.gen_node
         if self._grid is None:
             return step_g[k] + self._problem.step_cost(node[rec.exp(k)], node[g])
@@ -107,6 +107,8 @@ class EventTree:
         again) has the step's own g: the entry the loop took off carried the g it was pushed
         with."""
         rec = self._rec
+        if len(rec.iter_root) > 1:  # IDA*: a root among the events, each looked up
+            return [self.gen_g(e) for e in events]
         step_g, ends, node, cost = rec.step_g, rec.step_end, rec.gen_node, self._move_cost
         assert step_g is not None, "only a cost-ordered search records costs"
         lo, hi, k, taken = self._gs_step
@@ -422,6 +424,8 @@ class EventTree:
             depth_limit=self._recording.depth_limit(k),
             found_goal=rec.found and k == rec.steps,
             discarded=self._recording.is_discarded(k),
+            f_limit=rec.iter_f_limit[self._recording.iteration_of(k)]
+            if rec.iter_f_limit is not None else None,
         )
 
     def steps(self) -> Iterator[Step]:

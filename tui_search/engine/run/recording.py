@@ -33,8 +33,10 @@ class Step(Frozen):
     not a frozen slotted dataclass (which every start would pay for: benchmarks/README.md,
     "startup"), nor a NamedTuple (its field ``index`` would hide ``tuple.index``)."""
 
-    __slots__ = ("depth_limit", "discarded", "found_goal", "index", "node", "successors")
-    _FIELDS = ("index", "node", "successors", "depth_limit", "found_goal", "discarded")
+    __slots__ = ("depth_limit", "discarded", "f_limit", "found_goal", "index", "node",
+                 "successors")
+    _FIELDS = ("index", "node", "successors", "depth_limit", "found_goal", "discarded",
+               "f_limit")
 
     index: int
     node: State  # a cell on a grid, a node's name on a graph
@@ -42,12 +44,13 @@ class Step(Frozen):
     depth_limit: int | None
     found_goal: bool
     discarded: bool
+    f_limit: float | None  # IDA*'s limit on f
 
     def __init__(self, index: int, node: State, successors: tuple[tuple[str, State], ...],
                  depth_limit: int | None = None, found_goal: bool = False,
-                 discarded: bool = False) -> None:
+                 discarded: bool = False, f_limit: float | None = None) -> None:
         self._assign(index=index, node=node, successors=successors, depth_limit=depth_limit,
-                  found_goal=found_goal, discarded=discarded)
+                  found_goal=found_goal, discarded=discarded, f_limit=f_limit)
 
 
 #: The default step limit: expansions recorded before a run gives up (iterative deepening
@@ -151,6 +154,8 @@ class Recording:
                 del rec.step_exp[n + 1 :]
             if rec.step_g is not None:
                 del rec.step_g[n + 1 :]
+            if rec.step_next is not None:
+                del rec.step_next[n + 1 :]
             del rec.gen_node[events:]
             while rec.discarded and rec.discarded[-1] > n:
                 rec.discarded.pop()
@@ -160,6 +165,8 @@ class Recording:
                 rec.iter_first_step.pop()
                 rec.iter_root.pop()
                 rec.iter_limit.pop()
+                if rec.iter_f_limit is not None:
+                    rec.iter_f_limit.pop()
         rec.goal_gen = -1
         rec.done = rec.gave_up = True
         self._loop.close()
@@ -185,6 +192,16 @@ class Recording:
     def depth_limit(self, k: int) -> int | None:
         """Iterative deepening's depth limit at step ``k`` (None for other searches)."""
         return self.rec.iter_limit[self.iteration_of(k)]
+
+    def f_limits(self, k: int) -> tuple[float, float] | None:
+        """IDA*'s limit on f at step ``k`` and the smallest f over it met by then in its
+        iteration (inf: none yet); None for the other searches."""
+        rec = self.rec
+        if rec.iter_f_limit is None or rec.step_next is None:
+            return None
+        it = self.iteration_of(k)
+        nxt = rec.step_next[k] if rec.iter_first_step[it] <= k else float("inf")
+        return rec.iter_f_limit[it], nxt
 
     def iteration_span(self, it: int) -> tuple[int, int]:
         """First and last step of iteration ``it`` (as recorded)."""

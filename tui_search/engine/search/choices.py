@@ -208,7 +208,7 @@ class Semantics(Frozen):
         if algorithm.weighted and self.visit != "generate":
             return (f"the visit rule does not apply to {name} (it re-opens a cell reached with "
                     "a lower g)")
-        if not algorithm.weighted:
+        if not algorithm.queued:
             for field, words in (("ties", "ties"), ("cost_tolerance", "the cost tolerance"),
                                  ("reopen", "re-opening")):
                 if getattr(self, field) != getattr(DEFAULT_SEMANTICS, field):
@@ -218,10 +218,10 @@ class Semantics(Frozen):
             return f"ties on h apply to greedy and A*, not {name} (it uses no h)"
         if self.ties in ("low-g", "high-g") and algorithm.priority == "g":
             return f"ties on g do not apply to {name}: its priority is g itself"
-        if self.recursive and algorithm.frontier is not Frontier.LIFO:
+        if self.recursive and (algorithm.frontier is not Frontier.LIFO or algorithm.contours):
             return f"recursion is a depth-first search's (DFS, IDDFS), not {name}'s"
         if self.weight != 1.0 and algorithm.priority != "g+h":
-            return f"a weight applies to A* (f = g + W·h), not {name}"
+            return f"a weight applies to A* and IDA* (f = g + W·h), not {name}"
         return ""
 
     def fitted(self, algorithm: Algorithm) -> Semantics:
@@ -230,13 +230,13 @@ class Semantics(Frozen):
         out = self
         if algorithm.iterative or algorithm.weighted:
             out = out.replace(visit="generate")
-        if not algorithm.weighted:
+        if not algorithm.queued:
             out = out.replace(ties="fifo", cost_tolerance=CHEAPER_BY, reopen=True)
         if out.ties in ("low-h", "high-h") and not algorithm.informed:
             out = out.replace(ties="fifo")
         if out.ties in ("low-g", "high-g") and algorithm.priority == "g":
             out = out.replace(ties="fifo")
-        if algorithm.frontier is not Frontier.LIFO and out.recursive:
+        if (algorithm.frontier is not Frontier.LIFO or algorithm.contours) and out.recursive:
             out = out.replace(recursive="")
         if algorithm.priority != "g+h" and out.weight != 1.0:
             out = out.replace(weight=1.0)
@@ -340,7 +340,7 @@ class Semantics(Frozen):
         no_visit = self.tree_search or bool(self.recursive) or (
             algorithm is not None and (algorithm.iterative or algorithm.weighted))
         goal_test = self.goal_test_for(algorithm) if algorithm else self.goal_test or "generate"
-        queue = algorithm is None or algorithm.weighted
+        queue = algorithm is None or algorithm.queued
         return {
             "order": list(self.order),
             "corners": None if self.order[0] in GRAPH_ORDERS else self.corners,  # a grid's

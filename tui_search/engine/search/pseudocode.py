@@ -8,7 +8,8 @@ f = g + W·h), and each search choice (:mod:`tui_search.engine.search.choices`) 
 removes its own lines: the visit rule moves the visited check below the take-off, the goal
 test moves the goal check, tree search trades the visited set for the check "on the path", a
 corner rule adds its line, and iterative deepening wraps it all in its loop over depth
-limits.  So a student who flips a choice sees which line moved.
+limits (IDA*: over limits on f, each the smallest f cut off the time before).  So a student
+who flips a choice sees which line moved.
 
 The code says what :mod:`tui_search.engine.search.reference` does, in its order.  Each line has a
 ``kind``, a name for what it does ("take", "reached", "push" ...), which stays the same
@@ -163,15 +164,15 @@ def _generate(algorithm: Algorithm, semantics: Semantics, move_cost: str) -> Pse
     order_name = algorithm.priority_name
     by = semantics.priority_words(algorithm)  # weighted A*'s: f = g + W·h
     order_by = f"{by}, h = {semantics.heuristic} distance" if algorithm.informed else by
-    base = 0
 
     def add(kind: str, indent: int, text: str) -> None:
         lines.append(CodeLine(kind, base + indent, text))
 
-    if iterative:
-        add("deepen", 0, "for depth limit ← 0, 1, 2, …:")
-        base = 1
-    holding = f"a {frontier.noun} by {order_by}, holding START" if weighted else (
+    contours = algorithm.contours
+    deepening = _deepening(algorithm, order_by)
+    lines += [CodeLine(*line) for line in deepening]
+    base = 1 if deepening else 0
+    holding = f"a {frontier.noun} by {order_by}, holding START" if algorithm.queued else (
         f"a {frontier.noun} holding START")
     add("init", 0, f"frontier ← {holding}")
     # what a push records, if anything
@@ -191,19 +192,40 @@ def _generate(algorithm: Algorithm, semantics: Semantics, move_cost: str) -> Pse
     elif weighted and not tree and not semantics.reopen:
         add("discard", 1, "if node is closed (expanded already): discard it, go on")
         add("close_node", 1, "close node (never push it again); node.g ← best g[node]")
-    elif weighted and not tree:
+    elif weighted and not tree and not contours:
         add("discard", 1, "if node.g > best g[node]: stale, discard it, go on")
+    if contours:
+        add("cutoff", 1, "if node.f > limit: next ← min(next, node.f); cut off, go on")
     if goal_test == "expand":
         add("goal_node", 1, "goal test: if node is the goal, return its path")
-    if iterative:
+    if iterative and not contours:
         add("cutoff", 1, "if node's depth = the depth limit: cut off, go on")
     for kind, indent, text in _successor_lines(algorithm, semantics, move_cost, marks, goal_test):
         add(kind, indent, text)
-    if iterative:
-        add("fail", 0, "if nothing was cut off at the limit: return no path")
-    else:
-        add("fail", 0, "return no path")
+    for kind, indent, text in _ends(algorithm):
+        add(kind, indent, text)
     return Pseudocode(_title(algorithm, semantics), tuple(lines))
+
+
+def _deepening(algorithm: Algorithm, order_by: str) -> list[tuple[str, int, str]]:
+    """The loop an iterative search wraps around the rest (its lines from indent 0; the
+    last, and the rest, one deeper); none for the others."""
+    if algorithm.contours:
+        return [("limit_init", 0, f"limit ← f of START ({order_by})"), ("deepen", 0, "repeat:"),
+                ("next_init", 1, "next ← ∞ (the smallest f cut off)")]
+    if algorithm.iterative:
+        return [("deepen", 0, "for depth limit ← 0, 1, 2, …:")]
+    return []
+
+
+def _ends(algorithm: Algorithm) -> list[tuple[str, int, str]]:
+    """The lines after the loop over the frontier: no path, or the next iteration."""
+    if algorithm.contours:
+        return [("fail", 0, "if next = ∞ (nothing was cut off): return no path"),
+                ("next_limit", 0, "limit ← next")]
+    if algorithm.iterative:
+        return [("fail", 0, "if nothing was cut off at the limit: return no path")]
+    return [("fail", 0, "return no path")]
 
 
 def _title(algorithm: Algorithm, semantics: Semantics) -> str:

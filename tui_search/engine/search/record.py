@@ -30,7 +30,9 @@ class Record:
 
     Iterative deepening restarts from a new root event per iteration:
     ``iter_first_step[i]``, ``iter_root[i]`` and ``iter_limit[i]`` describe iteration ``i``.
-    BFS and DFS have one iteration with limit ``None``.
+    BFS and DFS have one iteration with limit ``None``.  IDA*'s iterations have limits on f
+instead, in ``iter_f_limit`` (its ``iter_limit`` is all ``None``), and ``step_next[k]`` is the
+smallest f over the limit met by the end of step ``k`` in its iteration (inf: none yet).
 
     ``discarded`` lists, in order, the steps that took off a cell already expanded (visit on
     expand): they expand nothing and generate nothing.
@@ -38,7 +40,8 @@ class Record:
 
     #: Every attribute, in order (a test compares two records by them).
     FIELDS = ("gen_node", "step_end", "step_exp", "gen_depth", "step_g", "iter_first_step",
-              "iter_root", "iter_limit", "discarded", "done", "goal_gen", "gave_up")
+              "iter_root", "iter_limit", "iter_f_limit", "step_next", "discarded", "done",
+              "goal_gen", "gave_up")
 
     def __init__(self) -> None:
         # Written out, not a dataclass (compiled at import: benchmarks/README.md, "startup").
@@ -53,6 +56,8 @@ class Record:
         self.iter_first_step: list[int] = [1]
         self.iter_root: list[int] = [0]
         self.iter_limit: list[int | None] = [None]
+        self.iter_f_limit: list[float] | None = None  # IDA* only
+        self.step_next: array[float] | None = None  # IDA* only
         self.discarded: array[int] = array("i")
         self.done = False
         self.goal_gen = -1  # the event that generated the goal, once found
@@ -77,7 +82,7 @@ class Record:
     def nbytes(self) -> int:
         """Bytes held by the arrays (for the memory benchmark)."""
         arrays = [self.gen_node, self.step_end, self.step_exp, self.gen_depth, self.discarded,
-                  self.step_g]
+                  self.step_g, self.step_next]
         return sum(a.buffer_info()[1] * a.itemsize for a in arrays if isinstance(a, array))
 
 

@@ -51,6 +51,13 @@ Iterative deepening runs the same loop on a stack (recursive: a call stack) with
 iteration a cell is pushed again only when reached at a smaller depth than before (tree search:
 when not on the node's own path).  It stops with no path when an iteration cuts nothing off at
 its limit.
+
+IDA* runs it on a stack with limits on f = g + h (weighted: g + W·h) instead, from the start's
+f up: a node taken off with f over the limit (by more than the cost tolerance) is *cut off*, a
+step with no successors and no goal test, and the smallest f cut off in an iteration is the
+next one's limit.  Within an iteration a cell is pushed again only when reached with a lower g
+than before (tree search: when not on the node's own path); the goal is tested when taken off
+within the limit.  It stops with no path when an iteration cuts nothing off.
 """
 
 from __future__ import annotations
@@ -65,7 +72,9 @@ from tui_search.engine.search.outcome import Outcome
 from tui_search.engine.search.registry import Algorithm
 from tui_search.engine.search.registry import Frontier as FrontierKind
 from tui_search.engine.search.rules import (
+    INF,
     CallStack,
+    Cheaper,
     Cheapest,
     Expansion,
     Frontier,
@@ -112,10 +121,13 @@ class ReferenceSearch:
         self.goal: Node | None = None
         self.generated = self.expanded = self.discarded = self.max_frontier = 0
         self.iterations = 0
+        self.next_limit = INF  # IDA*: the last iteration's smallest f cut off
 
     def __iter__(self) -> Iterator[Expansion]:
         steps: Iterator[Expansion]
-        if self.algorithm.iterative:
+        if self.algorithm.contours:
+            steps = self._contours()
+        elif self.algorithm.iterative:
             steps = self._deepening()
         else:
             steps = self._loop(self._frontier(), self._reached())
@@ -129,7 +141,7 @@ class ReferenceSearch:
 
     def _frontier(self) -> Frontier:
         sem = self.semantics
-        if self.algorithm.priority is not None:
+        if self.algorithm.priority is not None and self.algorithm.queued:
             return PriorityQueue(self.space.priority(self.algorithm.priority),
                                  tie_key(sem.ties, lambda state: self.space.estimate()(state)))
         if sem.recursive:
@@ -140,6 +152,8 @@ class ReferenceSearch:
         sem = self.semantics
         if sem.tree_search:
             return OnPath(sem.path_check)
+        if self.algorithm.contours:
+            return Cheaper(sem.cost_tolerance, sem.mark_start)
         if self.algorithm.iterative:
             return Shallowest(sem.mark_start)
         if self.algorithm.priority is not None:
@@ -162,29 +176,43 @@ class ReferenceSearch:
         return False
 
     # -- the loop ----------------------------------------------------------------------------
-    def _loop(self, frontier: Frontier, reached: Reached, limit: int | None = None
-              ) -> Generator[Expansion, None, bool]:
+    def _loop(self, frontier: Frontier, reached: Reached, limit: int | None = None,
+              f_limit: float | None = None) -> Generator[Expansion, None, bool]:
         """The generic loop.  With a depth ``limit`` (iterative deepening) a node taken off at
-        the limit is expanded with no successors; the loop returns whether one was (a deeper
-        search may find more), and False when it found the goal."""
+        the limit is expanded with no successors; with an ``f_limit`` (IDA*) a node taken off
+        with f over it is, before its goal test, and ``next_limit`` keeps the smallest such f.
+        The loop returns whether a node was cut off (a deeper search may find more), and False
+        when it found the goal."""
         root = self._push(frontier, reached, self._start, None, None, 0.0)
         if self._is_goal_pushed(root):
             return False
         first_step = self.expanded + self.discarded + 1  # steps are numbered across iterations
         cut_off = False
+        iterating = limit is not None or f_limit is not None
+        over = INF  # IDA*: the smallest f cut off so far
+        f = self.space.priority("g+h") if f_limit is not None else None
         while frontier:
             node = frontier.take()
             k = self.expanded + self.discarded + 1
-            new_root = root if limit and k == first_step else None  # a new iteration began
+            # a new iteration began (not the first)
+            new_root = root if iterating and k == first_step and self.iterations > 1 else None
             if reached.discards(node):
                 self.discarded += 1
                 yield Expansion(k, node, (), True, False, len(frontier), limit, new_root)
                 continue
             self.expanded += 1
             node = reached.taken(node)
+            if f is not None and f_limit is not None:
+                node_f = f(node.g, node.cell)
+                if node_f > f_limit + self.semantics.cost_tolerance:  # over: cut off
+                    over = min(over, node_f)
+                    yield Expansion(k, node, (), False, False, len(frontier), None, new_root,
+                                    f_limit, over)
+                    continue
             if self.goal_test == "expand" and self.space.is_goal(node.cell):
                 self.goal = node
-                yield Expansion(k, node, (), False, True, len(frontier), limit, new_root)
+                yield Expansion(k, node, (), False, True, len(frontier), limit, new_root,
+                                f_limit, over)
                 return False
             added = []
             found = False
@@ -200,10 +228,12 @@ class ReferenceSearch:
                     if self._is_goal_pushed(child):
                         found = True
                         break
-            yield Expansion(k, node, tuple(added), False, found, len(frontier), limit, new_root)
+            yield Expansion(k, node, tuple(added), False, found, len(frontier), limit, new_root,
+                            f_limit, over)
             if found:
                 return False
-        return cut_off
+        self.next_limit = over
+        return cut_off or over < INF
 
     # -- iterative deepening: the loop again and again -----------------------------------------
     def _deepening(self) -> Iterator[Expansion]:
@@ -212,6 +242,16 @@ class ReferenceSearch:
             cut_off = yield from self._loop(self._frontier(), self._reached(), limit)
             if not cut_off:
                 return
+
+    # -- IDA*: the loop again and again, on limits of f ------------------------------------------
+    def _contours(self) -> Iterator[Expansion]:
+        f_limit = self.space.priority("g+h")(0.0, self._start)
+        while True:
+            self.iterations += 1
+            cut_off = yield from self._loop(self._frontier(), self._reached(), None, f_limit)
+            if not cut_off:
+                return
+            f_limit = self.next_limit
 
 
 def stream(

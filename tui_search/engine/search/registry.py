@@ -1,7 +1,8 @@
 """The algorithm registry: every search the app knows, as data.
 
 An algorithm is its frontier discipline (which generated node is expanded next) and whether it
-iterates (iterative deepening restarts with a growing depth limit).  Everything that names or
+iterates (iterative deepening restarts with a growing depth limit, IDA* with a growing limit on
+f = g + h).  Everything that names or
 describes an algorithm -- the command line's choices, the app's keys, the help screen, the
 frontier panel's title, the narration -- reads it from here, so adding one is adding an entry,
 and no UI module compares algorithm names.
@@ -103,7 +104,8 @@ class Algorithm(NamedTuple):
     app_key: str  # the key that picks it in the app
     summary: str  # one line for the help screen
     tag: str  # the key bar's shortest name: "BFS", "ID"
-    iterative: bool = False  # restarts with depth limits 0, 1, 2, ...
+    #: restarts with depth limits 0, 1, 2, ... (with a priority: IDA*'s limits on f)
+    iterative: bool = False
     #: A priority queue's order: "g" (the path's cost so far), "h" (the heuristic's estimate
     #: of the cost to the goal) or "g+h"; None for a queue or a stack.
     priority: str | None = None
@@ -111,6 +113,10 @@ class Algorithm(NamedTuple):
     #: tutorial's searches, "expand" for the cost-ordered ones (testing on generation would
     #: stop before a cheaper path to the goal comes off the queue).
     goal_test: str = "generate"
+    #: Is its key in the key bar's group of searches?  The tutorial's and the next lesson's
+    #: are; the chapter's further searches have their key in the help (``?``), the palette
+    #: and the docs, so that the bar keeps its other hints at 80 columns.
+    key_bar: bool = True
 
     @property
     def informed(self) -> bool:
@@ -119,14 +125,27 @@ class Algorithm(NamedTuple):
 
     @property
     def weighted(self) -> bool:
-        """Does it order by cost (a priority queue, moves costing 1 and sqrt(2))?"""
+        """Does it order by cost (a priority queue, or IDA*'s f-limits: moves costing 1 and
+        sqrt(2))?"""
         return self.priority is not None
+
+    @property
+    def contours(self) -> bool:
+        """Does it deepen by limits on f (IDA*: a stack, each iteration an f-contour)?"""
+        return self.iterative and self.priority is not None
+
+    @property
+    def queued(self) -> bool:
+        """Does a priority queue order it (UCS, greedy, A*: ties and re-opening apply)?"""
+        return self.frontier is Frontier.PRIORITY
 
     @property
     def frontier_title(self) -> str:
         """The frontier panel's title: "Queue (FIFO)", "Priority queue (A*: f = g + h)"."""
         if self.priority is None:
             return self.frontier.title
+        if self.contours:
+            return f"{self.frontier.title} ({self.short}: f = g + h ≤ limit)"
         return f"{self.frontier.title} ({self.short}: {PRIORITIES[self.priority]})"
 
     @property
@@ -155,6 +174,10 @@ ALGORITHMS: dict[str, Algorithm] = {
         Algorithm("astar", "A* search", "A*", Frontier.PRIORITY, "6",
                   "takes the lowest f = g + h: the cheapest path, fewer nodes than UCS",
                   "A*", priority="g+h", goal_test="expand"),
+        Algorithm("idastar", "Iterative deepening A*", "IDA*", Frontier.LIFO, "7",
+                  "depth-first within f-limits h(start), then the least f over: A*'s path, "
+                  "a small stack", "IDA", iterative=True, priority="g+h", goal_test="expand",
+                  key_bar=False),
     )
 }
 

@@ -11,7 +11,8 @@ first, a tie by the tie rule, then the oldest).
 What was reached: :class:`Visited` (BFS's and DFS's visited set, under each visit rule),
 :class:`Cheapest` (the best g: re-pushed when reached cheaper, stale entries discarded, a
 closed set when re-opening is off), :class:`Shallowest` (iterative deepening: re-pushed when
-reached shallower) and :class:`OnPath` (tree search: the node's own path, or nothing at all).
+reached shallower), :class:`Cheaper` (IDA*: re-pushed when reached cheaper) and
+:class:`OnPath` (tree search: the node's own path, or nothing at all).
 """
 
 from __future__ import annotations
@@ -79,6 +80,10 @@ class Expansion:
     frontier_size: int  # entries on the frontier after the step
     depth_limit: int | None = None  # iterative deepening's limit in force
     new_root: Node | None = None  # iterative deepening: this step began a new iteration
+    f_limit: float | None = None  # IDA*'s limit on f in force
+    #: IDA*: the smallest f over the limit met so far in this iteration (the next limit if
+    #: the iteration ends with no goal; inf while there is none)
+    next_limit: float = INF
 
 
 # -- the frontier: which entry comes out next ---------------------------------------------------
@@ -303,5 +308,23 @@ class Shallowest:
         return node
 
 
-__all__ = ["CallStack", "Cheapest", "Expansion", "Frontier", "Node", "OnPath", "PriorityQueue",
-           "Queue", "Reached", "Shallowest", "Stack", "Visited", "tie_key"]
+class Cheaper(Shallowest):
+    """IDA*, within one iteration: a cell is pushed again when reached with a lower g than
+    before (lower by more than ``tolerance``).  An entry reached cheaper since is still
+    expanded.  With ``mark_start`` off the start's g is not kept."""
+
+    def __init__(self, tolerance: float, mark_start: bool = True) -> None:
+        super().__init__(mark_start)
+        self.tolerance = tolerance
+        self.cheapest: dict[State, float] = {}
+
+    def admits(self, parent: Node, cell: State, g: float) -> bool:
+        return g + self.tolerance < self.cheapest.get(cell, INF)
+
+    def pushed(self, node: Node) -> None:
+        if self.mark_start or node.parent is not None:
+            self.cheapest[node.cell] = node.g
+
+
+__all__ = ["CallStack", "Cheaper", "Cheapest", "Expansion", "Frontier", "Node", "OnPath",
+           "PriorityQueue", "Queue", "Reached", "Shallowest", "Stack", "Visited", "tie_key"]

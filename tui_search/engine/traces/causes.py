@@ -73,6 +73,7 @@ CAUSES = {
     "reopened": "re-opened a closed cell",
     "rounding": "called a path cheaper by rounding only",
     "not-cheaper": "added a cell reached no cheaper",
+    "cut-off": "expanded a node over IDA*'s limit on f",
     "not-reopened": "did not re-open a cell reached cheaper",
     "rounding-missed": "called a path cheaper by rounding no cheaper",
     "stopped-at-goal": "stopped on adding the goal",

@@ -313,6 +313,9 @@ class Causes:
                     "when it adds the goal (the goal tested on generate), yours goes on",
                     ((("goal_test", "expand"),),), "after-goal")
         head = f"{self.says('added')} {show(c)}, which {name} does not add from {show(node)}"
+        cut = self._cut_off(e)
+        if cut:
+            return f"{head}: {cut}", (), "cut-off"
         if isinstance(c, str) or isinstance(node, str):  # a graph's: no move names the cause
             return f"{head}: no road of it leads there", (), "no-road"
         hint = "; x is the column, y the row: swapped?" if swapped(c) in want else ""
@@ -335,6 +338,17 @@ class Causes:
                     f"{sem.corners} refuses it", others, "corner")
         return self._reached(n, t, e, c, head)
 
+    def _cut_off(self, e: Step) -> str:
+        """IDA*'s step ``e`` cut its node off, f over the limit: those words ("" else)."""
+        limits = self.run.steps.f_limits(e.index)
+        if limits is None or e.successors:
+            return ""
+        costs = self.run.nodes.costs(self.run.steps.expanded_event(e.index))
+        if costs is None or costs[2] <= limits[0] + self.sem.cost_tolerance:
+            return ""
+        return (f"its f = {costs[2]:.2f} is over the limit {limits[0]:.2f}, so {self.name} "
+                "cuts it off, adding nothing (the smallest such f is the next limit)")
+
     def _reached(self, n: int, t: TraceStep, e: Step, c: State, head: str) -> Said:
         """The trace adds ``c``, a legal move the search refuses as reached: which rule."""
         name, sem, algo = self.name, self.sem, self.algo
@@ -349,8 +363,12 @@ class Causes:
                     ((("mark_start", False),),), "start-again")
         added = self.first_added(c, n - 1)
         expanded = self.expanded_at(c, n - 1)
-        if algo.weighted:
+        if algo.weighted and not algo.contours:
             return self._cheaper(n, t, e, c, head, expanded)
+        if algo.contours:
+            return (f"{head}: it was reached already in this iteration, no more cheaply than "
+                    f"from {show(t.node)}, and {name} pushes a cell again only when reached "
+                    "cheaper", (), "not-cheaper")
         if algo.iterative:
             return (f"{head}: it was reached already in this iteration, no deeper than from "
                     f"{show(t.node)}, and {name} pushes a cell again only when reached "

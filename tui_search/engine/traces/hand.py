@@ -199,6 +199,9 @@ class HandRun:
                         "so it is dropped")
             age = {Frontier.FIFO: ", the oldest entry", Frontier.LIFO: ", the newest entry"}
             return f"{name} takes {where}{age.get(algo.frontier, '')}: {show(e.node)}"
+        cut = self._causes(e.node, ())._cut_off(e)
+        if cut:  # IDA*: over the limit, nothing added
+            return f"{name} adds nothing from {show(self.picked)}: {cut}; enter ends the step"
         cell = self.hint_cell()
         adds = (f"{name} adds the cells one move from {show(self.picked)}, in the order "
                 f"{','.join(self.run.semantics.order)}, {self._skips()}")

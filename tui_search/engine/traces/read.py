@@ -1,11 +1,12 @@
 """Reading a search trace that another program wrote: the format of the app's own ``--trace``.
 
 One JSON object a line, one line an expansion: ``{"node": [x, y], "successors": [...]}``, each
-successor ``[x, y]`` or ``{"node": [x, y]}`` (``step``, ``dir`` and ``depth_limit`` are
-allowed and not needed; ``"discarded": true`` marks a pop that did nothing).  An optional first
-line ``{"start": [x, y], "goal": [x, y]}`` and an optional last line ``{"path": [...]}`` (or
-``{"path": null}``: no path found).  A trace none of whose lines has ``successors`` is of
-expansions only.  Coordinates are (column, row) from the top left.  Blank lines are skipped.
+successor ``[x, y]`` or ``{"node": [x, y]}`` (``step``, ``dir``, ``depth_limit`` and
+``f_limit`` are allowed and not needed; ``"discarded": true`` marks a pop that did nothing).
+An optional first line ``{"start": [x, y], "goal": [x, y]}`` and an optional last line
+``{"path": [...]}`` (or ``{"path": null}``: no path found).  A trace none of whose lines has
+``successors`` is of expansions only.  Coordinates are (column, row) from the top left.
+Blank lines are skipped.
 
 :func:`trace_line` writes a step in it (``--trace``, and a run stepped by hand).
 
@@ -333,7 +334,7 @@ def as_grid(board: Grid | Graph) -> Grid:
 def trace_line(step: Step) -> str:
     """A step in this format, the line ``--trace`` writes: the node taken off and exactly the
     successors it added, in order (a graph's: the nodes' names); iterative deepening adds the
-    depth limit, a discarded step says so."""
+    depth limit, IDA* its limit on f (rounded to 6 places), a discarded step says so."""
     node = step.node
     obj: dict[str, object] = {"step": step.index, "node": state_json(node)}
     if isinstance(node, str):  # a graph's: the nodes reached, by name
@@ -342,6 +343,8 @@ def trace_line(step: Step) -> str:
         obj["successors"] = [{"dir": d, "node": state_json(c)} for d, c in step.successors]
     if step.depth_limit is not None:
         obj["depth_limit"] = step.depth_limit
+    if step.f_limit is not None:
+        obj["f_limit"] = round(step.f_limit, 6)
     if step.discarded:
         obj["discarded"] = True
     return json.dumps(obj, separators=(", ", ": ")) + "\n"

@@ -22,6 +22,7 @@ if TYPE_CHECKING:
 from tui_search.tui.widgets.legend import Legend
 
 #: The keys, grouped as a learner uses them (a test checks every binding is listed here).
+_FIRST, *_, _LAST = ALGORITHMS.values()  # the keys that pick a search: 1 to 7
 KEYS = (
     ("arrows  h j k l", "move the cursor"),
     ("s  g", "put the start / the goal at the cursor"),
@@ -37,7 +38,8 @@ KEYS = (
     ("esc", "stop computing the last step (on a big map)"),
     (" ".join(a.app_key for a in ALGORITHMS.values()),
      " / ".join(a.short for a in ALGORITHMS.values()) + " (a new search, same map)"),
-    ("c", "compare searches side by side, in lockstep; 1-6 add / remove"),
+    ("c", "compare searches side by side, in lockstep; "
+          f"{_FIRST.app_key}-{_LAST.app_key} add / remove"),
     ("f", "fold the search trees away / show them"),
     ("v", "Code panel: the search's pseudocode, the step's lines lit ▶"),
     ("r", "restart the search at step 0"),
@@ -92,6 +94,11 @@ takes the lowest h alone: fast, and often wrong. A cell reached again more cheap
 again; its older entry is [i]stale[/i] and is discarded when it comes off. On [b]terrain[/b] \
 (shaded cells, their cost beside the glyph) a move costs its length times the cost of the cell it \
 enters: BFS still counts moves and wades through the mud, UCS and A* walk round it.
+
+[b]IDA*[/b] (key 7) joins the two: iterative deepening on f instead of depth. Each iteration \
+is a DFS from START that cuts off any node whose f is over the limit (the status line's \
+[b]f-limit[/b]); the next limit is the smallest f cut off ([b]next[/b]). A*'s cheapest path, on \
+a small stack, paid for by repeating each iteration.
 
 Each expanded node turns blue and its successors are generated (dark). When the goal is \
 generated, the path is traced back up the tree from the goal to START (green). (These are the \

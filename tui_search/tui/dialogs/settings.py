@@ -279,7 +279,8 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
         and grey it out."""
         tree = self.query_one("#tree_search", Checkbox).value
         radios = self.query_one("#visit", RadioSet)
-        if not self._visit_applies() and self.algorithm.iterative:
+        if not self._visit_applies() and self.algorithm.iterative and (
+                not self.algorithm.contours):
             why = f"does not apply to {self.algorithm.short}: it re-opens cells reached shallower"
         elif not self._visit_applies():
             names = " or ".join(a.short for a in self.algorithms)
@@ -305,7 +306,7 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
         mark where nothing is marked on a push), and say which."""
         tree = self.query_one("#tree_search", Checkbox).value
         recursive = self._choice("recursive") != "stack" and self._recursion_applies()
-        queue = any(a.weighted for a in self.algorithms)
+        queue = any(a.queued for a in self.algorithms)
         visit = self._choice("visit") if self._visit_applies() else "generate"
         self.query_one("#no_path_check", Checkbox).disabled = not tree
         self.query_one("#mark_start", Checkbox).disabled = bool(

@@ -38,7 +38,7 @@ class Quiz(NamedTuple):
 
     def question(self, run: Run) -> str:
         where = _where(run)
-        if run.algo.weighted:
+        if run.algo.queued:
             where += f" (the lowest {run.algo.priority_name})"
         noun = run.algo.frontier.noun
         # the score first: on a narrow screen the question wraps, the score on its first row

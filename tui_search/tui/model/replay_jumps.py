@@ -15,6 +15,7 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from tui_search.engine.run.recorded import Run
+from tui_search.engine.search.registry import ALGORITHMS
 from tui_search.engine.search.state import State
 
 if TYPE_CHECKING:
@@ -23,10 +24,13 @@ if TYPE_CHECKING:
 
 #: Said when an edit ends the replay.
 REPLAY_ENDED = "The map changed: the replay of your trace is over"
+_FIRST, *_, _LAST = (a.app_key for a in ALGORITHMS.values())
+_KEYS = f"{_FIRST}-{_LAST}"  # the keys that add or take out a search: "1-7"
 LOCKSTEP = ("Lockstep: n steps every search not done yet, p steps back the latest, "
-            "end runs them all to the end · 1-6 add or take out a search · c back to one")
+            f"end runs them all to the end · {_KEYS} add or take out a search · c back to one")
 #: The same where the long one would take two lines (the panes need them more).
-LOCKSTEP_SHORT = "Lockstep: n, p and end move every search · 1-6 add or take out · c back to one"
+LOCKSTEP_SHORT = (f"Lockstep: n, p and end move every search · {_KEYS} add or take out · c back "
+                  "to one")
 
 
 class ReplayJumps:

@@ -26,7 +26,7 @@ STEP = Binding.Group("Step", compact=True)
 ZOOM = Binding.Group("Zoom", compact=True)
 UNDO = Binding.Group("Undo/Redo", compact=True)
 LESSON = Binding.Group("Lesson", compact=True)
-ALGO = Binding.Group("/".join(a.tag for a in ALGORITHMS.values()), compact=True)
+ALGO = Binding.Group("/".join(a.tag for a in ALGORITHMS.values() if a.key_bar), compact=True)
 
 KEYS: list[BindingType] = [
     Binding("up,k", "move(0,-1)", "Cursor up", show=False),
@@ -45,8 +45,8 @@ KEYS: list[BindingType] = [
     Binding("end", "last", "Last", show=False, tooltip="Last step: the answer"),
     Binding("escape", "stop_seek", "Stop", key_display="esc",
             tooltip="Stop computing the last step"),
-    *(Binding(a.app_key, f"algorithm({a.key!r})", a.short, group=ALGO, tooltip=a.name)
-      for a in ALGORITHMS.values()),
+    *(Binding(a.app_key, f"algorithm({a.key!r})", a.short, group=ALGO, tooltip=a.name,
+              show=a.key_bar) for a in ALGORITHMS.values()),
     Binding("s", "place('start')", "Start", show=False, tooltip="Start at the cursor"),
     Binding("g", "place('goal')", "Goal", show=False, tooltip="Goal at the cursor"),
     Binding("o", "toggle_wall", "Wall", show=False, tooltip="Obstacle on/off at the cursor"),

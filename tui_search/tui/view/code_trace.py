@@ -50,7 +50,7 @@ def skipped(run: Run, k: int | None = None) -> list[Skip]:
     if event == nodes.goal:
         return []
     limit = run.steps.depth_limit(k) if run.algo.iterative else None
-    if limit is not None and nodes.depth(event) >= limit:
+    if (limit is not None and nodes.depth(event) >= limit) or run.steps.is_cut_off(k):
         return []
     added = run.steps.succ_range(k)
     pushed = {nodes.move(h) for h in added}
@@ -105,7 +105,8 @@ def lit_kinds(run: Run) -> frozenset[str]:
     algo = run.algo
     kinds: set[str] = set()
     if k == 0 or (algo.iterative and run.steps.first_of_iteration(run.steps.iteration_of(k)) == k):
-        kinds |= {"deepen", "init", "mark_start"}
+        kinds |= {"deepen", "init", "mark_start", "next_init"}  # IDA*'s next too
+        kinds.add("limit_init" if k == 0 else "next_limit")  # its limit: the first, the next
         if k == 0:
             if run.at_end and run.found:
                 kinds.add("goal_start")
@@ -119,6 +120,9 @@ def lit_kinds(run: Run) -> frozenset[str]:
     nodes = run.nodes
     event = run.steps.expanded_event(k)
     kinds |= {"mark_node", "close_node", "recurse"}
+    if run.steps.is_cut_off(k):  # IDA*: over the limit, before the goal test
+        kinds.add("cutoff")
+        return frozenset(kinds)
     if event == nodes.goal:
         kinds.add("goal_node")
         return frozenset(kinds)

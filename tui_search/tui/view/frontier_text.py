@@ -59,6 +59,9 @@ def titles(algo: Algorithm, hide_order: bool = False, as_added: bool = False,
                  else algo.frontier_title)
         plain = [title, f"{name} ({what})", f"{name} ({by})", name, f"{letters} ({by})",
                  letters]
+        if algo.contours:  # IDA*'s stack: what it cuts off by, not an order
+            plain = [f"{algo.frontier.title} ({algo.short}: {what} ≤ limit)",
+                     f"{name} ({what} ≤ limit)", f"{name} (f ≤ limit)", name, letters]
     wordings = plain
     if as_added:
         wordings = [f"{text} · as added" for text in plain[:-1]] + plain
@@ -137,6 +140,9 @@ def end_hint(kind: Frontier, i: int, n: int) -> str:
 def describe_empty(run: Run) -> str:
     """What an empty frontier means at the run's position."""
     if run.k < run.recorded or not run.done:
+        f_limits = run.steps.f_limits()
+        if f_limits is not None:  # IDA*: the smallest f cut off is the next limit
+            return f"empty — iteration over; next: f-limit {f_limits[1]:.2f}"
         if run.algo.iterative:
             limit = run.steps.depth_limit()
             nxt = 1 if limit is None else limit + 1

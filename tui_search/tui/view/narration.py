@@ -125,8 +125,18 @@ def _narrate(run: Run) -> str:
     if costs:
         node = f"{node} {costs}"
     prefix = ""
-    if limit is not None and run.steps.first_of_iteration(run.steps.iteration_of(k)) == k:
+    f_limits = run.steps.f_limits()
+    new_iteration = run.steps.first_of_iteration(run.steps.iteration_of(k)) == k
+    if limit is not None and new_iteration:
         prefix = f"Depth limit {group_digits(limit)}, a new iteration from START. "
+    elif f_limits is not None and new_iteration and run.steps.iteration_of(k):
+        prefix = (f"f-limit {f_limits[0]:.2f} (the smallest f cut off before), a new "
+                  "iteration from START. ")
+    if f_limits is not None and run.steps.is_cut_off(k):
+        limit_now, next_limit = f_limits
+        return _how_it_ended(run, f"{prefix}Took {node} off the {word}: over the f-limit "
+                             f"{limit_now:.2f}, cut off (the next limit at most "
+                             f"{next_limit:.2f})", word, limit)
     if run.at_end and run.found:
         goal = cell_text(run.nodes.cell(run.nodes.goal))
         if run.nodes.goal == expanded:  # the goal tested when taken off the frontier
@@ -139,8 +149,11 @@ def _narrate(run: Run) -> str:
 def _before_the_first_step(run: Run, word: str, limit: int | None) -> str:
     """Step 0: the start on the frontier, and what the first step does."""
     first = f"START {cell_text(run.start)} is on the {word}"
+    f_limits = run.steps.f_limits()
     if limit is not None:
         first += f" (depth limit {group_digits(limit)})"
+    elif f_limits is not None:  # IDA*: its first limit, the start's own f
+        first += f" (f-limit {f_limits[0]:.2f}, the start's f)"
     if run.at_end and run.found:
         return f"{first}: the start is the goal"
     return f"{first}. Press n to expand it."
@@ -187,6 +200,9 @@ def _how_it_ended(run: Run, text: str, word: str, limit: int | None) -> str:
                 f"{word}: no path found")
     why = blocked_by(run)
     why = f" — {why}" if why else ""
+    f_limits = run.steps.f_limits()
+    if f_limits is not None:
+        return f"{text}. f-limit {f_limits[0]:.2f} cut nothing off: no path{why}"
     if limit is not None:
         return f"{text}. Depth limit {group_digits(limit)} cut nothing off: no path{why}"
     return f"{text}. Frontier empty: no path{why}"
@@ -228,14 +244,18 @@ def status_parts(run: Run) -> list[tuple[str, str]]:
     if run.k and run.algo.weighted:  # the node just expanded: "f 7.24 (g 4.41 + h 2.83)"
         name, _, value = costs_text(run, run.steps.expanded_event(run.k)).partition(" = ")
         parts.insert(1, (name, value))
-    if (run.semantics.visit == "expand" or run.algo.weighted) and not run.semantics.tree_search:
+    if (run.semantics.visit == "expand" or run.algo.queued) and not run.semantics.tree_search:
         parts.append(("discarded", digits(run.now.discarded)))
     parts += [
         ("generated", digits(run.now.generated)),
         (frontier_word(run),
          f"{digits(run.now.frontier_len())} (peak {digits(run.steps.peak_frontier())})"),
     ]
-    if run.algo.iterative:
+    f_limits = run.steps.f_limits()
+    if f_limits is not None:  # IDA*: the limit in force, and the next as it stands
+        parts.append(("f-limit", f"{f_limits[0]:.2f}"))
+        parts.append(("next", "∞" if f_limits[1] == float("inf") else f"{f_limits[1]:.2f}"))
+    elif run.algo.iterative:
         parts.append(("depth limit", str(run.steps.depth_limit())))
     return parts
 

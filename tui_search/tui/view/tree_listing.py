@@ -5,7 +5,8 @@ SearchTreePanel` draws it, giving each role its component class.
 
 ``●`` an expanded node (blue), ``○`` a node waiting on the frontier, the node being expanded
 highlighted and kept in view, the path green once the goal is found.  Iterative deepening shows
-the current iteration's tree, and the title gives its depth limit.
+the current iteration's tree, and the title gives its depth limit; IDA* the current
+iteration's contour, its f-limit in the title and each node cut off over it marked with its f.
 
 Two views, chosen by the size of the tree at the position, so that :meth:`SearchTreePanel.show`
 stays cheap however big the run grows:
@@ -74,6 +75,8 @@ SUFFIX_CURRENT = "  ◀ expanding"
 SUFFIX_DISCARDED = "  ◀ discarded"  # taken off again (visit on expand): nothing expanded
 SUFFIX_GOAL = "  ★ goal"
 SUFFIX_CUTOFF = "  ✂ depth limit"
+SUFFIX_CUT_NOW = "  ◀ cut off"  # IDA*: the node taken off, over the f-limit
+SUFFIX_F_W = len("  ✂ f 999.99")  # IDA*: a node cut off, its f (the widest usual)
 #: Widest suffix (all single-cell characters).
 SUFFIX_W = max(len(SUFFIX_CURRENT), len(SUFFIX_GOAL), len(SUFFIX_CUTOFF))
 
@@ -92,6 +95,7 @@ class TreeModel:
         self._current_discarded = False  # ...or taken off and discarded
         self._ended = False  # the run at its end: nothing is being expanded any more
         self._limit: int | None = None
+        self._f_limit: float | None = None  # IDA*'s
         self._coord_w = 5
         self._tree_size = 0
         # the listing
@@ -125,6 +129,21 @@ class TreeModel:
     def limit(self) -> int | None:
         """Iterative deepening's depth limit at the position (None for other searches)."""
         return self._limit
+
+    @property
+    def f_limit(self) -> float | None:
+        """IDA*'s limit on f at the position (None for other searches)."""
+        return self._f_limit
+
+    def _cut_f(self, g: int) -> float | None:
+        """IDA*: event ``g``'s f when it is over the f-limit (None: within, or not IDA*)."""
+        run = self._run
+        if self._f_limit is None or run is None:
+            return None
+        costs = run.nodes.costs(g)
+        if costs is None or costs[2] <= self._f_limit + run.semantics.cost_tolerance:
+            return None
+        return costs[2]
 
     @property
     def path_shown(self) -> bool:
@@ -175,6 +194,8 @@ class TreeModel:
         self._ended = run.at_end
         self._tree_size = size
         self._limit = run.steps.depth_limit() if run.algo.iterative else None
+        f_limits = run.steps.f_limits()
+        self._f_limit = None if f_limits is None else f_limits[0]
         self._coord_w = state_width(run.board)
         self._update_path(run)
 
@@ -276,6 +297,8 @@ class TreeModel:
         widest = 3 * min(deepest, MAX_LEVELS) + (2 if deepest > MAX_LEVELS else 0) + label
         if self._limit and deepest >= self._limit:
             widest = max(widest, 3 * min(self._limit, MAX_LEVELS) + label + len(SUFFIX_CUTOFF))
+        if self._f_limit is not None:  # IDA*: any node may be cut off, its f said
+            widest = 3 * min(deepest, MAX_LEVELS) + label + SUFFIX_F_W
         widest = max(widest, 1 + 1 + 5 + 1 + self._coord_w)  # the root, START
         for g in (self._current, self._goal if self._path else -1):
             if g >= 0:
@@ -311,7 +334,10 @@ class TreeModel:
             cls = "expanded" if expanded else "frontier"
         glyph = GLYPH_GOAL if goal else (GLYPH_EXPANDED if expanded else GLYPH_FRONTIER)
         parts = [(f"{glyph} {label}", cls)]
-        if g == self._current and self._current_discarded:
+        cut_f = self._cut_f(g) if expanded else None
+        if g == self._current and cut_f is not None and not self._ended:
+            parts.append((SUFFIX_CUT_NOW, cls))
+        elif g == self._current and self._current_discarded:
             parts.append((SUFFIX_DISCARDED, cls))
         elif g == self._current and not self._ended:  # the search over: none is expanding
             parts.append((SUFFIX_CURRENT, cls))
@@ -319,6 +345,8 @@ class TreeModel:
             parts.append((SUFFIX_GOAL, cls))
         elif expanded and self._limit is not None and depth >= self._limit:
             parts.append((SUFFIX_CUTOFF, "cutoff"))
+        elif cut_f is not None:  # IDA*: over the f-limit, cut off
+            parts.append((f"  ✂ f {cut_f:.2f}", "cutoff"))
         if detail:
             parts.append((detail, "detail"))
         return parts

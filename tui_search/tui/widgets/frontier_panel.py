@@ -189,7 +189,7 @@ class FrontierPanel(LinePanel):
         moved = key[:2] != (self._shown or (None, None))[:2]
         self._run, self._shown = run, key
         kind = self._kind = run.algo.frontier
-        self._iddfs = run.algo.iterative
+        self._iddfs = run.algo.iterative and not run.algo.contours  # d=N: a depth limit's
         n = self._count = run.now.frontier_len()
         self._added = run.now.added_now()
         widths = column_widths(run)

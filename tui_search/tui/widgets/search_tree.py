@@ -79,7 +79,7 @@ class SearchTreePanel(LinePanel):
     | `search-tree--frontier` | A node generated and waiting on the frontier (`○`). |
     | `search-tree--current` | The line of the node being expanded at the position. |
     | `search-tree--path` | A node on the path, once the goal is found (at the end). |
-    | `search-tree--cutoff` | Iterative deepening: a node cut off at the depth limit. |
+    | `search-tree--cutoff` | A node cut off: at the depth limit, or over IDA*'s f-limit. |
     | `search-tree--detail` | Sibling counts and depths of the focused view. |
     | `search-tree--note` | The count above the listing, the note above the focused view. |
     """
@@ -106,11 +106,14 @@ class SearchTreePanel(LinePanel):
         """Show ``run`` at its position and keep the node being expanded in view."""
         model = self.model
         moved = model.update(run)
-        limit = model.limit
+        limit, f_limit = model.limit, model.f_limit
         titles = ("Search tree", "Tree") if limit is None else (
             f"Search tree · depth limit {group_digits(limit)}",
             f"Tree · depth limit {group_digits(limit)}", f"Tree · limit {group_digits(limit)}",
             f"limit {group_digits(limit)}", "Tree")
+        if f_limit is not None:  # IDA*: this iteration's contour, f up to its limit
+            titles = (f"Search tree · f-limit {f_limit:.2f}", f"Tree · f-limit {f_limit:.2f}",
+                      f"Tree · f ≤ {f_limit:.2f}", f"f ≤ {f_limit:.2f}", "Tree")
         goal = f"  {GLYPH_GOAL} goal" if model.path_shown else ""
         self.show_titles(titles, (
             f"{GLYPH_EXPANDED} expanded  {GLYPH_FRONTIER} frontier{goal}",

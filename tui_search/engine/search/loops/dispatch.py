@@ -74,12 +74,14 @@ def loop_for(algorithm: Algorithm, semantics: Semantics, graph: bool = False) ->
     table's (:func:`python_loops`).  A ``graph`` is searched by the loop of node numbers
     (:mod:`~tui_search.engine.search.loops.graph_best_first`) under the plain choices of a
     priority queue's graph search, else by the reference's loop."""
-    if graph and semantics.plain and algorithm.priority is not None and (
-            not semantics.tree_search):
+    if (graph and semantics.plain and algorithm.priority is not None and algorithm.queued
+            and not semantics.tree_search):
         from tui_search.engine.search.loops.graph_best_first import graph_best_first
 
         return partial(graph_best_first, priority=algorithm.priority)
-    if graph or not semantics.plain:  # a choice only the reference's loop records
+    # A choice only the reference's loop records; and IDA*, which has no loop of its own (its
+    # steps are mostly re-expansions of small contours: docs/11-performance.md).
+    if graph or not semantics.plain or algorithm.contours:
         from tui_search.engine.search.loops.published import published
 
         return partial(published, algorithm=algorithm)

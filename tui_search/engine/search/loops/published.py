@@ -1,7 +1,8 @@
 """The recorded loop of the choices published code and students' code make that the tutorial's
 loops and the compiled core do not: a priority queue's tie rules, a cost tolerance, a closed
 set, recursion, tree search with no path check, an unmarked start, a node expanded again
-(:meth:`~tui_search.engine.search.choices.Semantics.plain` is False).
+(:meth:`~tui_search.engine.search.choices.Semantics.plain` is False) -- and IDA* under every
+choice.
 
 It records the reference loop itself (:class:`~tui_search.engine.search.reference.ReferenceSearch`,
 the definition) into a :class:`~tui_search.engine.search.record.Record`, a chunk at a time: these
@@ -38,7 +39,11 @@ def published(problem: Problem | GraphProblem, rec: Record, chunk: int = CHUNK, 
     step_g = gen_depth = None
     if algorithm.weighted:
         rec.step_g = step_g = array("d", [0.0])
-    if algorithm.iterative:
+    step_next = f_limits = None
+    if algorithm.contours:  # IDA*: its limits on f, and the next one as it goes
+        rec.iter_f_limit = f_limits = [search.space.priority("g+h")(0.0, search.space.start)]
+        rec.step_next = step_next = array("d", [float("inf")])
+    elif algorithm.iterative:
         rec.gen_depth = gen_depth = array("i", [0])
         rec.iter_limit[0] = 0
     gen_node.append(pad(search.space.start))
@@ -52,12 +57,16 @@ def published(problem: Problem | GraphProblem, rec: Record, chunk: int = CHUNK, 
             rec.iter_first_step.append(step.index)
             rec.iter_root.append(len(gen_node))
             rec.iter_limit.append(step.depth_limit)
+            if f_limits is not None and step.f_limit is not None:
+                f_limits.append(step.f_limit)
             gen_node.append(pad(root.cell))
             if gen_depth is not None:
                 gen_depth.append(0)
         step_exp.append(step.node.event)
         if step_g is not None:
             step_g.append(step.node.g)
+        if step_next is not None:
+            step_next.append(step.next_limit)
         for s in step.successors:
             gen_node.append(pad(s.cell))
             if gen_depth is not None:
