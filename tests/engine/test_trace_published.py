@@ -186,3 +186,19 @@ def test_the_diagnosis_finds_a_full_match_of_the_apps_own_trace(grid: Grid, choi
     assume(text and len(text.splitlines()) < 200)  # not cut short at the limit
     diagnosis = diagnose(read_trace(text, grid, "t"), grid)
     assert diagnosis.matches, (key, sem, diagnosis.text())
+
+
+def test_a_recursions_first_call_tells_which_move_comes_first() -> None:
+    """The property's rare example: a recursive DFS listing its calls, where the trace's
+    lines say only which cell each call recursed into first.  From (1,2) it called NE, with W
+    free, and from (2,1) E, with NE (the goal) free: E, then NE, then W, which no single line
+    shows.  The diagnosis moves the trace's call before the search's where a candidate parts
+    there, and so finds it."""
+    grid = grid_from_rows(["...G#", ".....", "..S#."])
+    sem = Semantics(order=("SE", "E", "NE", "W", "N", "S", "SW", "NW"), corners="never",
+                    recursive="calls")
+    text = app_trace(grid, "dfs", sem, max_steps=200)
+    diagnosis = diagnose(read_trace(text, grid, "t"), grid)
+    assert diagnosis.matches, diagnosis.text()
+    first = diagnosis.text().splitlines()[0]
+    assert first.startswith("your trace is a recursive DFS (order E,NE,W,"), first

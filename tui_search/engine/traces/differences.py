@@ -23,7 +23,7 @@ from tui_search.engine.search.choices import corner_allowed
 from tui_search.engine.search.registry import Frontier
 from tui_search.engine.search.state import State, as_cell, state_json
 from tui_search.engine.traces.causes import TRACE_VOICE, Voice
-from tui_search.engine.traces.orders import flipped_order
+from tui_search.engine.traces.orders import call_first, flipped_order
 from tui_search.engine.traces.read import Trace, TraceStep, show
 from tui_search.engine.traces.ties import TIE_ORDER, tie
 
@@ -278,18 +278,23 @@ class Causes:
                      f"{show(want[first])} before {show(got[first])} (order {order})")
         return self._diff(n, t, words, want[first], got[first], cause="order")
 
+    def _call_first(self, t: TraceStep, c: State, want: list[State]) -> tuple[Suggestion, ...]:
+        """A recursion's calls: the order with the move to ``c`` just before the search's call
+        in its place (:func:`~tui_search.engine.traces.orders.call_first`)."""
+        i = t.successors.index(c) if c in t.successors else -1
+        order = (call_first(self.sem.order, t.node, c, want[i])
+                 if self.sem.recursive == "calls" and 0 <= i < len(want) else None)
+        return () if order is None else ((("order", order),),)
+
     def _flipped(self) -> tuple[Suggestion, ...]:
-        """Where the trace reads as a grid reversing its moves on every other cell (the cells
-        whose x + y is even) would add them (:func:`~tui_search.engine.traces.orders.
-        flipped_order`): that choice, with the order the trace gives it."""
+        """That choice, where the trace reads so (:func:`~tui_search.engine.traces.orders.
+        flipped_order`), with the order the trace gives it."""
         if self.sem.flip_even or not isinstance(self.run.board, Grid):
             return ()
         order = flipped_order(self.trace, self.run.goal)
-        if order is None:
-            return ()
-        if [m for m in self.sem.order if m in order] == list(order):
+        if order is not None and [m for m in self.sem.order if m in order] == list(order):
             order = self.sem.order  # (the moves the trace never took where they were)
-        return ((("flip_even", True), ("order", order)),)
+        return () if order is None else ((("flip_even", True), ("order", order)),)
 
     @staticmethod
     def _diff(n: int, t: TraceStep, words: str, expected: State | None, got: State | None,
@@ -311,7 +316,7 @@ class Causes:
         if want and want[-1] == goal and e.found_goal:
             return (f"{self.says('added')} {show(c)} after the goal {show(goal)}; {name} stops "
                     "when it adds the goal (the goal tested on generate), yours goes on",
-                    ((("goal_test", "expand"),),), "after-goal")
+                    ((("goal_test", "expand"),), *self._call_first(t, c, want)), "after-goal")
         head = f"{self.says('added')} {show(c)}, which {name} does not add from {show(node)}"
         cut = self._cut_off(e)
         if cut:
@@ -383,7 +388,8 @@ class Causes:
                     ((("visit", "expand"),), (("visit", "expand-again"),)), "reached")
         if expanded is None:  # a recursion's calls: visited deeper down before the call
             return (f"{head}: {name} visits it deeper down, from an earlier call, before this "
-                    "call comes to it", (), "visited")
+                    "call comes to it", self._call_first(t, c, [s for _, s in e.successors]),
+                    "visited")
         return (f"{head}: it was expanded already, at step {expanded}, and {name} adds a cell "
                 "it has visited no more", (), "expanded")
 

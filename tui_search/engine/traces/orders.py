@@ -110,6 +110,19 @@ def flipped_order(trace: Trace, goal: State | None = None) -> tuple[str, ...] | 
     return order if agrees(flipped, order) else None
 
 
+def call_first(order: tuple[str, ...], node: State, first: State, instead: State
+               ) -> tuple[str, ...] | None:
+    """``order`` with the move from ``node`` to ``first`` put just before the move to
+    ``instead`` (a recursion's calls: the trace called ``first`` where the search called
+    ``instead``, so its move comes earlier); None where either is no move of the order."""
+    move, before = _move(node, first), _move(node, instead)
+    if move not in order or before not in order or move == before:
+        return None
+    rest = [m for m in order if m != move]
+    at = rest.index(str(before))
+    return (*rest[:at], str(move), *rest[at:])
+
+
 def agrees(trace: Trace, order: tuple[str, ...]) -> bool:
     """Does every step of ``trace`` add its successors in ``order`` (their moves in it, in
     its order)?"""
@@ -184,5 +197,5 @@ def order_notes(orders: list[tuple[str, ...]]) -> list[str]:
     return notes
 
 
-__all__ = ["MAX_ORDERS", "agrees", "expansion_orders", "flipped_order", "inferred_orders",
-           "order_notes"]
+__all__ = ["MAX_ORDERS", "agrees", "call_first", "expansion_orders", "flipped_order",
+           "inferred_orders", "order_notes"]
