@@ -15,6 +15,7 @@ from tui_search import __version__
 from tui_search.cli.class_flags import add_class_arguments
 from tui_search.cli.flags import UsageError
 from tui_search.cli.serve_flags import add_serve_arguments
+from tui_search.engine.course.presets import PRESET_WORDS, PRESETS
 from tui_search.engine.maps.grid import DEFAULT_ORDER
 from tui_search.engine.maps.recipes import DEFAULT_SEED, DEFAULT_SIZE, KINDS, MAX_SIDE
 from tui_search.engine.run.recorded import MAX_STEPS
@@ -85,6 +86,9 @@ def build_parser() -> argparse.ArgumentParser:
                    help="a MovingAI .scen file to take start and goal from")
     p.add_argument("--scen-row", metavar="N", type=int, default=None,
                    help="problem N of --scen, counted from 0 after the version line")
+    p.add_argument("--preset", choices=PRESETS, default=None,
+                   help="a course's choices in one word, each still changed by its own flag "
+                   f"after it: cs188 ({PRESET_WORDS['cs188']})")
     p.add_argument("--order", metavar="DIRS", default=",".join(DEFAULT_ORDER),
                    help="the moves tried, in order: any of the 8 directions, e.g. N,W,S,E for "
                    "a 4-connected grid (default %(default)s); on a graph file (its roads as "
