@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING, Any
 from tui_search.engine.util.frozen import Frozen
 
 if TYPE_CHECKING:
+    from tui_search.engine.course.autograder_files import CourseTest
     from tui_search.engine.course.exercise_file import Exercise
     from tui_search.engine.course.lesson import Lesson
     from tui_search.engine.maps.generate import Recipe
@@ -38,7 +39,7 @@ FLAGS = (
 )
 #: What the command line worked out or read from the flags.
 READ = ("maps", "algorithm_given", "exercise_read", "lesson_read", "recipe", "grid", "graph",
-        "path", "scenario", "replay_read")
+        "path", "scenario", "replay_read", "course_test")
 
 
 class Options(Frozen):
@@ -119,6 +120,7 @@ class Options(Frozen):
     graph: Graph | None  # the graph to search (``romania``, ``FILE.graph``), else None
     path: Path | None  # its file (None: built in, generated, an exercise's own)
     scenario: Scenario | None  # --scen's row, while it holds for the map as read
+    course_test: CourseTest | None  # a CS188 autograder's FILE.test given as the MAP
     replay_read: Replay | None
 
     def __init__(self, **values: Any) -> None:

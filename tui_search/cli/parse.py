@@ -59,7 +59,11 @@ def parse_options(argv: Sequence[str] | None = None) -> Options:
         return options
     exercise = options.exercise_read
     on_graph = exercise is not None and exercise.graph is not None
-    if names_a_graph(options.map) or (on_graph and options.map is None):
+    if options.map is not None and options.map.endswith(".test"):  # the course's test file
+        from tui_search.cli.course import with_course_test
+
+        options = with_course_test(options)
+    elif names_a_graph(options.map) or (on_graph and options.map is None):
         options = _with_graph(options)
     else:
         grid, path, scenario = load_problem(options)

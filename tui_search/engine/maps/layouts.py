@@ -17,7 +17,7 @@ ghost, a dot after the goal) unless it was the start or a dot before the goal, t
 from __future__ import annotations
 
 import os
-from array import array
+import re
 
 from tui_search.engine.maps.grid import Cell, Grid
 from tui_search.engine.maps.read import MapError, split_lines
@@ -27,7 +27,9 @@ __all__ = ["FREE", "course_cell", "is_layout", "layout_rows", "parse_layout"]
 
 #: The free cells' characters (besides the start and the dots).
 FREE = " oG0123456789"
-_KNOWN = frozenset(FREE + "%P.")
+_BAD = re.compile(r"[^%P. oG0-9]")
+#: A row's bytes to its cells' ``blocked``: 1 for a wall, else 0.
+_WALLS = bytes(1 if i == ord("%") else 0 for i in range(256))
 
 
 def is_layout(path: str | os.PathLike[str]) -> bool:
@@ -43,48 +45,56 @@ def course_cell(grid: Grid, cell: Cell) -> Cell:
 def parse_layout(text: str, path: str = "<layout>", *, need_start: bool = True,
                  need_goal: bool = True) -> Grid:
     """The layout's grid; a MapError (``path:line:col: message``) for any text that is not
-    one.  ``need_start``/``need_goal`` false: the start, the goal given elsewhere (flags)."""
+    one.  ``need_start``/``need_goal`` false: the start, the goal given elsewhere (flags).
+
+    Read a line at a time into one byte a cell (the file's lines kept as its one string), so
+    that a big file costs a few times its size."""
     bom, raw = split_lines(text)
-    lines = [line.removesuffix("\r") for line in raw]
-    while lines and not lines[-1].strip():
-        lines.pop()  # blank lines at the end (a final newline)
-    if not lines:
+    height = len(raw)
+    while height and not raw[height - 1].strip():
+        height -= 1  # blank lines at the end (a final newline)
+    if not height:
         raise MapError(path, "empty layout: no rows of % walls, P and .")
-    width = len(lines[0])
+    width = len(raw[0].removesuffix("\r"))
     blocked = bytearray()
     start: Cell | None = None
     start_at = (0, 0)
-    dots: list[Cell] = []
-    for y, line in enumerate(lines):
-        number = y + 1
+    goal: Cell | None = None
+    dots = 0
+    for y in range(height):
+        line, number = raw[y].removesuffix("\r"), y + 1
         if not line.strip():
             raise MapError(path, "blank line inside the layout", number)
         if len(line) != width:
             raise MapError(path, f"row has {len(line)} cells, expected {width}", number)
-        for x, char in enumerate(line):
-            if char not in _KNOWN:
-                raise MapError(path, f"unknown layout character {char!r} (use % walls, P the "
-                               "start, . food, o G digits and spaces free)", number, x + 1)
-            if char == "P":
-                if start is not None:
-                    raise MapError(path, f"a second P (the first is at line {start_at[0]}, "
-                                   f"column {start_at[1]})", number, x + 1)
-                start, start_at = (x, y), (number, x + 1)
-            elif char == ".":
-                dots.append((x, y))
-        blocked.extend(1 if char == "%" else 0 for char in line)
+        bad = _BAD.search(line)
+        if bad is not None:
+            raise MapError(path, f"unknown layout character {bad.group()!r} (use % walls, P "
+                           "the start, . food, o G digits and spaces free)", number,
+                           bad.start() + 1)
+        row = line.encode("ascii")
+        x = row.find(b"P")
+        if x >= 0:
+            again = row.find(b"P", x + 1) if start is None else x
+            if start is not None or again >= 0:
+                first = start_at if start is not None else (number, x + 1)
+                raise MapError(path, f"a second P (the first is at line {first[0]}, column "
+                               f"{first[1]})", number, (again if start is None else x) + 1)
+            start, start_at = (x, y), (number, x + 1)
+        found = row.count(b".")
+        if found and goal is None:
+            goal = (row.find(b"."), y)
+        dots += found
+        blocked += row.translate(_WALLS)
     if start is None and need_start:
         raise MapError(path, "no P: the layout has no start")
-    if not dots and need_goal:
+    if goal is None and need_goal:
         raise MapError(path, "no . (food): the layout has no goal")
-    height = len(lines)
-    goal = dots[0] if dots else None
     note = ""
-    if len(dots) > 1 and goal is not None:
-        cx, cy = goal[0], height - 1 - goal[1]
-        note = (f"{len(dots)} dots: the goal is the first, ({goal[0]},{goal[1]}) "
-                f"(the course's ({cx},{cy}))")
-    source = MapSource(LAY, raw, array("I", range(len(lines))), width, bom, note=note)
+    if dots > 1 and goal is not None:
+        note = (f"{dots:,} dots: the goal is the first, ({goal[0]},{goal[1]}) "
+                f"(the course's ({goal[0]},{height - 1 - goal[1]}))")
+    source = MapSource(LAY, raw, range(height), width, bom, note=note)
     return Grid(width, height, blocked, start, goal, source)
 
 
