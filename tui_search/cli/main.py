@@ -270,6 +270,10 @@ def run(options: Options) -> int:
         from tui_search.cli.traces import run_check_trace
 
         return run_check_trace(options)
+    if options.headless and options.check_search_py is not None:
+        from tui_search.cli.search_py import run_check_search_py
+
+        return run_check_search_py(options)
     if options.headless and options.course_test is not None:
         from tui_search.cli.course import run_course_test_headless
 

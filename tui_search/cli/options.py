@@ -32,7 +32,8 @@ FLAGS = (
     "recursive", "recursive_lines", "ties", "cost_tolerance", "weight", "reopen", "mark_start",
     "preset", "compare",
     "exercise", "generate", "size", "seed", "output", "max_steps", "theme", "pseudocode",
-    "lesson", "headless", "json", "csv", "trace", "trace_format", "check_trace", "replay",
+    "lesson", "headless", "json", "csv", "trace", "trace_format", "check_trace",
+    "check_search_py", "time_limit", "memory_limit", "replay",
     "serve", "host", "port", "save_dir", "shared_save_dir", "app_memory", "token_file",
     "served", "visitor", "export", "fps", "export_view", "force", "handout_steps", "plain",
     "by_hand", "records", "student", "class_list", "class_report",
@@ -89,6 +90,9 @@ class Options(Frozen):
     trace: str | None
     trace_format: str
     check_trace: str | None
+    check_search_py: str | None  # a student's search.py, run fenced and checked
+    time_limit: float  # its run's time limit in seconds
+    memory_limit: int  # its process's memory limit in MB
     replay: str | None
     serve: bool
     host: str | None

@@ -68,6 +68,14 @@ def parse_options(argv: Sequence[str] | None = None) -> Options:
     else:
         grid, path, scenario = load_problem(options)
         options = options.replace(grid=grid, path=path, scenario=scenario)
+    if options.check_search_py is not None:
+        from tui_search.cli.search_py import check_options, student_replay
+
+        options = check_options(options)
+        if options.headless:
+            return options
+        semantics_from(options)
+        return options.replace(replay_read=student_replay(options))
     if options.headless or options.check_trace is not None:
         return options  # their searches' choices are checked as they run
     semantics_from(options)  # report bad choices before the screen changes

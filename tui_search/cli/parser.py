@@ -198,6 +198,19 @@ def build_parser() -> argparse.ArgumentParser:
                    "format, or Posthoc's: a .trace.json or .trace.yaml) with -a's search "
                    "under the choice flags, step by step, or without -a find the searches it "
                    "matches longest: exit 0 a match, 1 a difference, 2 a malformed trace")
+    p.add_argument("--check-search-py", metavar="FILE",
+                   help="run a student's CS188-style search.py (-a bfs runs its "
+                   "breadthFirstSearch) in a fenced process on MAP, GRAPH or FILE.test, each "
+                   "getSuccessors call an expansion, and check it as an expansions-only trace "
+                   "(--preset cs188 unless choice flags are given): with --headless the "
+                   "verdict, exit 0 a match, 1 a difference, 2 no answer (its reason, one "
+                   "line); without, the app replays it beside the search")
+    p.add_argument("--time-limit", metavar="SECONDS", type=_seconds, default=10.0,
+                   help="--check-search-py: the student's run may take this long "
+                   "(default %(default)g)")
+    p.add_argument("--memory-limit", metavar="MB", type=_positive, default=512,
+                   help="--check-search-py: the student's process may use this much "
+                   "memory (default %(default)s; not enforced on macOS)")
     p.add_argument("--replay", metavar="FILE",
                    help="open the app on a trace another program wrote (the --trace format), "
                    "beside -a's search under the choice flags (without -a: the search it "
@@ -266,6 +279,16 @@ def _weight(text: str) -> float:
     if not 1 <= x < float("inf"):  # NaN fails too
         raise argparse.ArgumentTypeError(f"{text!r} is not a number 1 or more")
     return x
+
+
+def _seconds(text: str) -> float:
+    try:
+        seconds = float(text)
+    except ValueError:
+        seconds = 0.0
+    if not 0.1 <= seconds <= 3600:  # (NaN too)
+        raise argparse.ArgumentTypeError(f"{text!r}: give seconds from 0.1 to 3600")
+    return seconds
 
 
 def _positive(text: str) -> int:
