@@ -444,7 +444,7 @@ def help_text() -> str:
 TUI_SEARCH = {"tui-search", ".venv/bin/tui-search"}
 PYTHON = {"python", "python3", ".venv/bin/python"}
 #: Flags whose value is a file the command writes, not one it reads.
-WRITES = {"--output", "--out", "--save-dir", "--export", "--trace"}
+WRITES = {"--output", "--out", "--save-dir", "--export", "--trace", "--gradescope"}
 FILE_LIKE = re.compile(r"\.(txt|map|scen|toml|md|jsonl|json|py)$")
 
 

@@ -33,7 +33,7 @@ FLAGS = (
     "preset", "compare",
     "exercise", "generate", "size", "seed", "output", "max_steps", "theme", "pseudocode",
     "lesson", "headless", "json", "csv", "trace", "trace_format", "check_trace",
-    "check_search_py", "time_limit", "memory_limit", "replay",
+    "check_search_py", "time_limit", "memory_limit", "gradescope", "replay",
     "serve", "host", "port", "save_dir", "shared_save_dir", "app_memory", "token_file",
     "served", "visitor", "export", "fps", "export_view", "force", "handout_steps", "plain",
     "by_hand", "records", "student", "class_list", "class_report",
@@ -93,6 +93,7 @@ class Options(Frozen):
     check_search_py: str | None  # a student's search.py, run fenced and checked
     time_limit: float  # its run's time limit in seconds
     memory_limit: int  # its process's memory limit in MB
+    gradescope: str | None  # Gradescope's results.json written there
     replay: str | None
     serve: bool
     host: str | None

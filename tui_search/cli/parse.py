@@ -144,11 +144,33 @@ _NOT_EXPORTED = ("json", "csv", "trace", "check_trace", "exercise", "lesson", "r
                  "pseudocode", "output")
 
 
+def _check_gradescope(options: Options) -> None:
+    """``--gradescope OUT.json`` goes with the class report or ``--check-search-py``, headless;
+    an existing file is replaced only with ``--force`` (checked again when it is written)."""
+    import os
+
+    from tui_search.engine.util.filenames import describe_name
+
+    target = options.gradescope
+    if target is None:
+        return
+    if not options.headless or not (options.exercise or options.check_search_py):
+        raise UsageError("--gradescope goes with --exercise E --headless MAP... (the class "
+                         "report) or --check-search-py FILE ... --headless")
+    if options.export is not None:
+        raise UsageError("--gradescope and --export: one file at a time")
+    if os.path.lexists(target) and not options.force:
+        raise UsageError(f"{describe_name(target)} exists: --force replaces it")
+
+
 def _check_export(options: Options) -> None:
     """``--export`` writes a file from a headless run; its companions go with it, and an
     existing file is replaced only with ``--force`` (checked again when it is written)."""
+    _check_gradescope(options)
     if options.export is None:
         for flag in ("fps", "export_view", "handout_steps", "force"):
+            if flag == "force" and options.gradescope is not None:
+                continue  # --force goes with --gradescope too
             if getattr(options, flag) not in (None, False):
                 raise UsageError(f"--{flag.replace('_', '-')} goes with --export FILE")
         return

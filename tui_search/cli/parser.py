@@ -211,6 +211,10 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--memory-limit", metavar="MB", type=_positive, default=512,
                    help="--check-search-py: the student's process may use this much "
                    "memory (default %(default)s; not enforced on macOS)")
+    p.add_argument("--gradescope", metavar="OUT.json",
+                   help="with --exercise E --headless MAP... (the class report) or "
+                   "--check-search-py: also write Gradescope's results.json there (a test a "
+                   "map, or the search and its path); an existing file only with --force")
     p.add_argument("--replay", metavar="FILE",
                    help="open the app on a trace another program wrote (the --trace format), "
                    "beside -a's search under the choice flags (without -a: the search it "

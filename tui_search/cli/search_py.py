@@ -121,6 +121,24 @@ def verdict_words(verdict: Verdict, function: str) -> str:
     return first + ("\n" + rest if rest else "")
 
 
+def _gradescope(options: Options, function: str, where: str, words: str,
+                passed: bool | None, path: str) -> None:
+    """``--gradescope OUT.json``: a test for which search it is, one for its path (both
+    failed, with the reason, when it gave no answer)."""
+    if options.gradescope is None:
+        return
+    from tui_search.cli.report import write_gradescope
+    from tui_search.engine.course.gradescope import graded_test, results
+
+    answered = passed is not None
+    first = words.splitlines()[0]
+    tests = [graded_test(f"{function} on {where}: the search", answered and first.startswith(
+                 f"your {function} is "), words),
+             graded_test(f"{function} on {where}: its path", answered and path.endswith(
+                 "a path to the goal"), path)]
+    write_gradescope(options, results(first, tests))
+
+
 def run_check_search_py(options: Options) -> int:
     """Run the student's function, check it, print the verdict (exit 0 a match, 1 a
     difference, 2 no answer: the reason in one line)."""
@@ -136,6 +154,7 @@ def run_check_search_py(options: Options) -> int:
     try:
         run, trace, shown = _run(options, board)
     except StudentFailed as exc:
+        _gradescope(options, function, where, str(exc), None, str(exc))
         print(f"tui-search: {exc}", file=sys.stderr)
         return EXIT_BAD_INPUT
     semantics = semantics_from(options)
@@ -144,6 +163,9 @@ def run_check_search_py(options: Options) -> int:
                           max_steps=options.max_steps, voice=voice)
     test = options.course_test
     returned = path_words(board, run.actions or [], test.actions if test is not None else None)
+    reached = returned.endswith("a path to the goal")
+    _gradescope(options, function, where, verdict_words(verdict, function),
+                verdict.matches and reached, returned)
     if options.json:
         print(to_json({"search_py": shown, "map": where, "function": function,
                        "expansions": len(run.expanded), "returned": run.actions,
