@@ -172,5 +172,8 @@ def run_check_search_py(options: Options) -> int:
                        "path": returned, **verdict.as_json()}))
     else:
         print(verdict_words(verdict, function))
+        if isinstance(board, Grid) and not verdict.matches:
+            print(f"  note: cells are the app's (x,y), y from the top row; in your code's "
+                  f"states (x, y) y counts from the bottom: y there is {board.height - 1} - y")
         print(f"  returned: {returned}")
     return 0 if verdict.matches else 1
