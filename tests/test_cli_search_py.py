@@ -77,6 +77,10 @@ def test_each_common_bug_is_named_at_its_first_difference(capsys, student: str, 
                            "--headless")
     assert code == 1
     assert out.splitlines()[0].startswith(first)
+    update = ("  note: a tie of the priority taken another way; PriorityQueue.update keeps a "
+              "lowered entry's place among equal priorities, where a re-push (the course's "
+              "search) puts it last")
+    assert (update in out.splitlines()) == (student == "ucs_update.py")
 
 
 def test_the_re_push_matches_where_update_parts(capsys) -> None:

@@ -172,6 +172,11 @@ def run_check_search_py(options: Options) -> int:
                        "path": returned, **verdict.as_json()}))
     else:
         print(verdict_words(verdict, function))
+        difference = verdict.difference
+        if difference is not None and difference.cause == "tie":
+            print("  note: a tie of the priority taken another way; PriorityQueue.update keeps "
+                  "a lowered entry's place among equal priorities, where a re-push (the "
+                  "course's search) puts it last")
         if isinstance(board, Grid) and not verdict.matches:
             print(f"  note: cells are the app's (x,y), y from the top row; in your code's "
                   f"states (x, y) y counts from the bottom: y there is {board.height - 1} - y")
