@@ -45,6 +45,17 @@ def test_our_students_file_is_the_courses_four_searches(capsys, key: str, line: 
                                     else "  returned: 58 actions, a path to the goal")
 
 
+def test_not_served_nor_with_another_search(capsys) -> None:
+    """A class server would run the student's file for every visitor: refused, as is a
+    search the course's search.py has no function for."""
+    code, _, err = run_cli(capsys, "--check-search-py", STUDENT, TWISTY, "--serve")
+    assert code == EXIT_BAD_INPUT
+    assert err == "tui-search: error: --check-search-py checks one search: leave out --serve\n"
+    code, _, err = run_cli(capsys, "--check-search-py", STUDENT, TWISTY, "-a", "iddfs",
+                           "--headless")
+    assert code == EXIT_BAD_INPUT and err.startswith("tui-search: error: -a iddfs: a student's")
+
+
 def test_as_json_and_on_a_course_test(capsys) -> None:
     code, out, _ = run_cli(capsys, "--check-search-py", STUDENT, GRAPH_BFS, "--headless",
                            "--json")

@@ -37,7 +37,8 @@ def check_options(options: Options) -> Options:
     if options.algorithm not in FUNCTIONS:
         raise UsageError(f"-a {options.algorithm}: a student's search.py has "
                          f"{', '.join(FUNCTIONS.values())} (-a {', '.join(FUNCTIONS)})")
-    for flag in ("compare", "exercise", "check_trace", "trace", "replay", "export", "plain"):
+    for flag in ("compare", "exercise", "check_trace", "trace", "replay", "export", "plain",
+                 "serve"):
         if getattr(options, flag):
             raise UsageError(f"--check-search-py checks one search: leave out "
                              f"--{flag.replace('_', '-')}")
