@@ -142,7 +142,7 @@ def course_search(lines: list[str], frontier: str, h: bool = False) -> tuple[int
 def test_the_presets_counts_on_our_own_maze(key: str, frontier: str, course: int,
                                             moves: int) -> None:
     """The course's counts on its medium maze are BFS 269 expansions for 68 moves, A* with
-    Manhattan distance 221 for 68; on our twisty maze (36 by 17, its dot bottom left as
+    Manhattan distance 221 for 68; on our twisty maze (35 by 17, its dot bottom left as
     theirs) these, each held equal to the independent search.  The app counts the goal's step
     as an expansion; the course counts getSuccessors calls, which the goal never gets."""
     grid = load_map(TWISTY)
