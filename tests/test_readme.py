@@ -139,6 +139,8 @@ def expected_exit(shown: list[str]) -> int:
         return EXIT_BAD_INPUT
     if ": no path" in first or '"found": false' in first or first.startswith("step "):
         return EXIT_NO_PATH
+    if re.match(r"your \w+: step \d+: ", first) or "disagrees with the .solution" in shown[-1]:
+        return EXIT_NO_PATH  # a student's search.py parting from the search; a test's verdict
     return EXIT_FOUND
 
 
@@ -442,7 +444,7 @@ def help_text() -> str:
 TUI_SEARCH = {"tui-search", ".venv/bin/tui-search"}
 PYTHON = {"python", "python3", ".venv/bin/python"}
 #: Flags whose value is a file the command writes, not one it reads.
-WRITES = {"--output", "--out", "--save-dir", "--export", "--trace"}
+WRITES = {"--output", "--out", "--save-dir", "--export", "--trace", "--gradescope"}
 FILE_LIKE = re.compile(r"\.(txt|map|scen|toml|md|jsonl|json|py)$")
 
 

@@ -24,11 +24,13 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from tests.helpers import MAPS
+from tui_search.engine.course.autograder_files import MAX_TEST_BYTES, read_course_test
 from tui_search.engine.course.exercise_file import MAX_EXERCISE_BYTES, load_exercise
 from tui_search.engine.course.lesson import MAX_LESSON_BYTES, read_lesson
 from tui_search.engine.maps.graph_file import MAX_GRAPH_BYTES, load_graph
+from tui_search.engine.maps.layouts import parse_layout
 from tui_search.engine.maps.load import load_map
-from tui_search.engine.maps.read import MAX_MAP_BYTES, MapError
+from tui_search.engine.maps.read import MAX_MAP_BYTES, MapError, read_text
 from tui_search.engine.maps.scenarios import MAX_SCEN_BYTES, load_scenario
 from tui_search.engine.maps.terrain import MAX_TERRAIN_BYTES, load_terrain
 from tui_search.engine.traces.posthoc import (
@@ -54,6 +56,11 @@ def read_markdown_lesson(path: str) -> object:
     lesson = read_lesson(Path(path))
     parser = MarkdownIt("gfm-like")
     return [parser.parse(section.text) for section in lesson.sections]
+
+
+def read_layout(path: str) -> object:
+    """What a ``.lay`` file's reader makes of the file (whatever its name here)."""
+    return parse_layout(read_text(path), path)
 
 
 #: A Posthoc trace of the trace map's first steps (examples/student_bfs.jsonl's map), as JSON
@@ -149,6 +156,22 @@ READERS = [
                lambda n: "x = [" + "[]," * (n // 3 - 3) + "]\n",
                lambda n: "".join(f"k{i} = 1\n" for i in range(n // 10)),
                lambda n: "x." + ".".join(["a"] * (n // 2 - 6)) + " = 1\n",
+           )),
+    Reader("Pacman layout", read_layout, MAX_MAP_BYTES, "%%%%\n%P.%\n%%%%\n",
+           lambda n: "%P" + brackets(n) + ".\n", (
+               lambda n: "P\n" + "%\n" * (n // 2 - 2) + ".\n",  # a row a line
+               lambda n: "P" + "." * (n - 1),  # every cell a dot
+               lambda n: "%P.%\n" * (n // 5),  # a P on every line: stops at the second
+           )),
+    Reader("course test", read_course_test, MAX_TEST_BYTES,
+           'class: "GraphSearchTest"\nalgorithm: "bfs"\ngraph: """\nstart_state: A\n'
+           'goal_states: B\nA 0 B\n"""\n',
+           lambda n: 'graph: """\n' + brackets(n) + '\n"""\n', (
+               lambda n: 'algorithm: "bfs"\ngraph: """\nstart_state: A\ngoal_states: B\n'
+               + "".join(f"a{i} x b{i}\n" for i in range(n // 14)) + '"""\n',
+               lambda n: 'algorithm: "bfs"\nlayout: """\nP\n' + "%\n" * (n // 2 - 30)
+               + '.\n"""\n',
+               lambda n: "#\n" * (n // 2),
            )),
     Reader("lesson", read_markdown_lesson, MAX_LESSON_BYTES,
            "# A lesson\nIts introduction.\n## One\n\nText.\n\n## Two\n\n"

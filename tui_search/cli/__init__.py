@@ -13,5 +13,7 @@ or a command that runs without the app.
 * :mod:`~tui_search.cli.report`: maps graded on an exercise, and the class report;
 * :mod:`~tui_search.cli.records_report`: a records folder read back as the class's table;
 * :mod:`~tui_search.cli.traces`: ``--check-trace`` and reading a ``--replay``;
+* :mod:`~tui_search.cli.course`: a CS188 autograder's ``FILE.test`` opened or run headless;
+* :mod:`~tui_search.cli.search_py`: ``--check-search-py``: a student's search.py run, checked;
 * :mod:`~tui_search.cli.fork_entry`: the served apps' fork server, as a process.
 """

@@ -144,7 +144,7 @@ def write_generated(options: Options) -> int:
 
 #: The choice flags whose default is None (not given).
 _CHOICE_FLAGS = ("corners", "visit", "goal_test", "heuristic", "recursive_lines", "ties",
-                 "cost_tolerance", "weight", "reopen", "mark_start")
+                 "cost_tolerance", "weight", "reopen", "mark_start", "preset")
 
 
 def changed_choice_flags(options: Options) -> list[str]:
@@ -258,11 +258,40 @@ def _refused_flag(options: Options) -> str:
     return ""
 
 
+def _with_preset(options: Options, choices: dict[str, object], checked: bool
+                 ) -> dict[str, object]:
+    """``choices`` with ``--preset``'s where no flag gave one (a flag changes a preset's
+    choice); fitted to ``-a``'s search when ``checked``, else left for compare mode to fit."""
+    if options.preset is None:
+        return choices
+    from tui_search.engine.course.presets import preset_semantics
+
+    preset = preset_semantics(options.preset,
+                              get_algorithm(options.algorithm) if checked else None)
+    given = {
+        "order": options.order != ",".join(DEFAULT_ORDER) or options.graph is not None,
+        "corners": options.corners is not None or options.no_corner_cutting,
+        "heuristic": options.heuristic is not None or options.graph is not None,
+        "tree_search": options.tree_search, "path_check": options.no_path_check,
+        "recursive": options.recursive or options.recursive_lines is not None,
+        **{name: getattr(options, name) is not None
+           for name in ("visit", "goal_test", "ties", "cost_tolerance", "weight", "reopen",
+                        "mark_start")},
+    }
+    out = dict(choices)
+    for name, was_given in given.items():
+        if not was_given:
+            out[name] = getattr(preset, name)
+    if out["tree_search"] or out["recursive"]:  # no visited set to mark on expansion
+        out["visit"] = "generate" if options.visit is None else out["visit"]
+    return out
+
+
 def semantics_from(options: Options, checked: bool = True) -> Semantics:
-    """The search choices the flags ask for; a combination that makes no sense is a
-    UsageError.  ``checked`` False leaves out the checks against ``-a`` (a comparison checks
-    each of its searches)."""
-    choices = _choices_of(options)
+    """The search choices the flags ask for (``--preset``'s where they give none); a
+    combination that makes no sense is a UsageError.  ``checked`` False leaves out the
+    checks against ``-a`` (a comparison checks each of its searches)."""
+    choices = _with_preset(options, _choices_of(options), checked)
     if checked:
         refused = _refused_flag(options)
         if refused:
@@ -282,6 +311,6 @@ def contenders_from(options: Options) -> list[Contender]:
     base = semantics_from(options, checked=False)
     assert options.compare is not None, "the searches --compare names"
     try:
-        return parse_compare(options.compare, base)
+        return parse_compare(options.compare, base, fit=options.preset is not None)
     except ValueError as exc:
         raise UsageError(f"--compare {options.compare!r}: {exc}") from None

@@ -23,6 +23,7 @@ from tui_search.cli.flags import (
 from tui_search.engine.maps.graph import Graph
 from tui_search.engine.maps.grid import Grid
 from tui_search.engine.maps.read import MapError
+from tui_search.engine.maps.source import LAY
 from tui_search.engine.run.each_step import search_each_step
 from tui_search.engine.run.recorded import Step
 from tui_search.engine.search.choices import Semantics
@@ -155,8 +156,10 @@ def moves_text(moves: list[str]) -> str:
 def human_summary(
     outcome: Outcome, where: str, max_steps: int, blocked_by: str | None = None,
     scenario: Scenario | None = None, warnings: list[str] | None = None,
+    layout: str | None = None,
 ) -> str:
-    """The text a headless run prints; ``warnings``: :func:`warnings_of`'s."""
+    """The text a headless run prints; ``warnings``: :func:`warnings_of`'s; ``layout``: on
+    a Pacman layout, its reader's note ("" none): then the course's count is said too."""
     algorithm = get_algorithm(outcome.algorithm)
     name = algorithm.name
     result = "path found" if outcome.found else "no path"
@@ -170,6 +173,8 @@ def human_summary(
         lines.append(f"  semantics:    {' · '.join(differences)}")
     for warning in warnings or ():
         lines.append(f"  warning:      {warning}")
+    if layout:
+        lines.append(f"  note:         {layout}")
     if outcome.path is not None and outcome.path and isinstance(outcome.path[0], str):
         roads = len(outcome.path) - 1
         lines.append(f"  path:         {roads:,} road{'s' * (roads != 1)} "
@@ -181,6 +186,11 @@ def human_summary(
     if scenario is not None:
         lines.append(f"  benchmark:    {benchmark_text(outcome, scenario)}")
     lines.append(f"  expanded:     {outcome.expanded:,}")
+    if layout is not None:  # the course counts getSuccessors calls: the goal gets none
+        goal_step = outcome.found and outcome.semantics.goal_test_for(algorithm) == "expand"
+        course = outcome.expanded - goal_step
+        lines.append(f"  course count: {course:,} expanded (getSuccessors calls"
+                     + ("; the goal's step makes none)" if goal_step else ")"))
     if outcome.discarded:
         lines.append(f"  discarded:    {outcome.discarded:,}")
     lines.append(f"  generated:    {outcome.generated:,}")
@@ -253,8 +263,10 @@ def run_headless(options: Options) -> int:
             from tui_search.engine.run.blocked import blocking_rule
 
             blocked_by = blocking_rule(grid, semantics)
+        source = grid.source if isinstance(grid, Grid) else None
+        layout = source.note if source is not None and source.kind == LAY else None
         print(human_summary(outcome, where, options.max_steps, blocked_by, scenario,
-                            warnings_of(grid, outcome)))
+                            warnings_of(grid, outcome), layout))
     if outcome.gave_up:
         return EXIT_GAVE_UP
     return EXIT_FOUND if outcome.found else EXIT_NO_PATH

@@ -119,6 +119,9 @@ class LazyExporter:
 def app_title(options: Options) -> str:
     """The app's title for a map with no file: a generated map's recipe, a teacher's
     exercise's own map, or the tutorial."""
+    test = options.course_test
+    if test is not None:  # a layout of a course's test: saved only under a new name
+        return f"{describe_name(test.path)}'s layout {test.layout_name}".rstrip()
     if options.graph is not None and options.map is not None:  # a built-in graph
         return f"{options.map} (built-in)"
     name = map_name(options, None)
@@ -267,6 +270,14 @@ def run(options: Options) -> int:
         from tui_search.cli.traces import run_check_trace
 
         return run_check_trace(options)
+    if options.headless and options.check_search_py is not None:
+        from tui_search.cli.search_py import run_check_search_py
+
+        return run_check_search_py(options)
+    if options.headless and options.course_test is not None:
+        from tui_search.cli.course import run_course_test_headless
+
+        return run_course_test_headless(options)
     if options.headless and options.export is not None:
         return run_export(options)
     if options.plain:

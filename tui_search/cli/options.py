@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING, Any
 from tui_search.engine.util.frozen import Frozen
 
 if TYPE_CHECKING:
+    from tui_search.engine.course.autograder_files import CourseTest
     from tui_search.engine.course.exercise_file import Exercise
     from tui_search.engine.course.lesson import Lesson
     from tui_search.engine.maps.generate import Recipe
@@ -29,16 +30,17 @@ FLAGS = (
     "map", "algorithm", "start", "goal", "terrain", "scen", "scen_row", "order", "corners",
     "no_corner_cutting", "visit", "goal_test", "heuristic", "tree_search", "no_path_check",
     "recursive", "recursive_lines", "ties", "cost_tolerance", "weight", "reopen", "mark_start",
-    "flip_even", "compare",
+    "flip_even", "preset", "compare",
     "exercise", "generate", "size", "seed", "output", "max_steps", "theme", "pseudocode",
-    "lesson", "headless", "json", "csv", "trace", "trace_format", "check_trace", "replay",
+    "lesson", "headless", "json", "csv", "trace", "trace_format", "check_trace",
+    "check_search_py", "time_limit", "memory_limit", "gradescope", "replay",
     "serve", "host", "port", "save_dir", "shared_save_dir", "app_memory", "token_file",
     "served", "visitor", "export", "fps", "export_view", "force", "handout_steps", "plain",
     "by_hand", "records", "student", "class_list", "class_report",
 )
 #: What the command line worked out or read from the flags.
 READ = ("maps", "algorithm_given", "exercise_read", "lesson_read", "recipe", "grid", "graph",
-        "path", "scenario", "replay_read")
+        "path", "scenario", "replay_read", "course_test")
 
 
 class Options(Frozen):
@@ -72,6 +74,7 @@ class Options(Frozen):
     reopen: str | None
     mark_start: str | None
     flip_even: bool
+    preset: str | None  # --preset cs188: a course's choices, each flag changing one after
     compare: str | None
     exercise: str | None
     generate: str | None
@@ -88,6 +91,10 @@ class Options(Frozen):
     trace: str | None
     trace_format: str
     check_trace: str | None
+    check_search_py: str | None  # a student's search.py, run fenced and checked
+    time_limit: float  # its run's time limit in seconds
+    memory_limit: int  # its process's memory limit in MB
+    gradescope: str | None  # Gradescope's results.json written there
     replay: str | None
     serve: bool
     host: str | None
@@ -119,6 +126,7 @@ class Options(Frozen):
     graph: Graph | None  # the graph to search (``romania``, ``FILE.graph``), else None
     path: Path | None  # its file (None: built in, generated, an exercise's own)
     scenario: Scenario | None  # --scen's row, while it holds for the map as read
+    course_test: CourseTest | None  # a CS188 autograder's FILE.test given as the MAP
     replay_read: Replay | None
 
     def __init__(self, **values: Any) -> None:

@@ -59,11 +59,23 @@ def parse_options(argv: Sequence[str] | None = None) -> Options:
         return options
     exercise = options.exercise_read
     on_graph = exercise is not None and exercise.graph is not None
-    if names_a_graph(options.map) or (on_graph and options.map is None):
+    if options.map is not None and options.map.endswith(".test"):  # the course's test file
+        from tui_search.cli.course import with_course_test
+
+        options = with_course_test(options)
+    elif names_a_graph(options.map) or (on_graph and options.map is None):
         options = _with_graph(options)
     else:
         grid, path, scenario = load_problem(options)
         options = options.replace(grid=grid, path=path, scenario=scenario)
+    if options.check_search_py is not None:
+        from tui_search.cli.search_py import check_options, student_replay
+
+        options = check_options(options)
+        if options.headless:
+            return options
+        semantics_from(options)
+        return options.replace(replay_read=student_replay(options))
     if options.headless or options.check_trace is not None:
         return options  # their searches' choices are checked as they run
     semantics_from(options)  # report bad choices before the screen changes
@@ -132,11 +144,33 @@ _NOT_EXPORTED = ("json", "csv", "trace", "check_trace", "exercise", "lesson", "r
                  "pseudocode", "output")
 
 
+def _check_gradescope(options: Options) -> None:
+    """``--gradescope OUT.json`` goes with the class report or ``--check-search-py``, headless;
+    an existing file is replaced only with ``--force`` (checked again when it is written)."""
+    import os
+
+    from tui_search.engine.util.filenames import describe_name
+
+    target = options.gradescope
+    if target is None:
+        return
+    if not options.headless or not (options.exercise or options.check_search_py):
+        raise UsageError("--gradescope goes with --exercise E --headless MAP... (the class "
+                         "report) or --check-search-py FILE ... --headless")
+    if options.export is not None:
+        raise UsageError("--gradescope and --export: one file at a time")
+    if os.path.lexists(target) and not options.force:
+        raise UsageError(f"{describe_name(target)} exists: --force replaces it")
+
+
 def _check_export(options: Options) -> None:
     """``--export`` writes a file from a headless run; its companions go with it, and an
     existing file is replaced only with ``--force`` (checked again when it is written)."""
+    _check_gradescope(options)
     if options.export is None:
         for flag in ("fps", "export_view", "handout_steps", "force"):
+            if flag == "force" and options.gradescope is not None:
+                continue  # --force goes with --gradescope too
             if getattr(options, flag) not in (None, False):
                 raise UsageError(f"--{flag.replace('_', '-')} goes with --export FILE")
         return

@@ -15,6 +15,7 @@ from tui_search import __version__
 from tui_search.cli.class_flags import add_class_arguments
 from tui_search.cli.flags import UsageError
 from tui_search.cli.serve_flags import add_serve_arguments
+from tui_search.engine.course.presets import PRESET_WORDS, PRESETS
 from tui_search.engine.maps.grid import DEFAULT_ORDER
 from tui_search.engine.maps.recipes import DEFAULT_SEED, DEFAULT_SIZE, KINDS, MAX_SIDE
 from tui_search.engine.run.recorded import MAX_STEPS
@@ -85,6 +86,9 @@ def build_parser() -> argparse.ArgumentParser:
                    help="a MovingAI .scen file to take start and goal from")
     p.add_argument("--scen-row", metavar="N", type=int, default=None,
                    help="problem N of --scen, counted from 0 after the version line")
+    p.add_argument("--preset", choices=PRESETS, default=None,
+                   help="a course's choices in one word, each still changed by its own flag "
+                   f"after it: cs188 ({PRESET_WORDS['cs188']})")
     p.add_argument("--order", metavar="DIRS", default=",".join(DEFAULT_ORDER),
                    help="the moves tried, in order: any of the 8 directions, e.g. N,W,S,E for "
                    "a 4-connected grid (default %(default)s); on a graph file (its roads as "
@@ -198,6 +202,23 @@ def build_parser() -> argparse.ArgumentParser:
                    "format, or Posthoc's: a .trace.json or .trace.yaml) with -a's search "
                    "under the choice flags, step by step, or without -a find the searches it "
                    "matches longest: exit 0 a match, 1 a difference, 2 a malformed trace")
+    p.add_argument("--check-search-py", metavar="FILE",
+                   help="run a student's CS188-style search.py (-a bfs runs its "
+                   "breadthFirstSearch) in a fenced process on MAP, GRAPH or FILE.test, each "
+                   "getSuccessors call an expansion, and check it as an expansions-only trace "
+                   "(--preset cs188 unless choice flags are given): with --headless the "
+                   "verdict, exit 0 a match, 1 a difference, 2 no answer (its reason, one "
+                   "line); without, the app replays it beside the search")
+    p.add_argument("--time-limit", metavar="SECONDS", type=_seconds, default=10.0,
+                   help="--check-search-py: the student's run may take this long "
+                   "(default %(default)g)")
+    p.add_argument("--memory-limit", metavar="MB", type=_positive, default=512,
+                   help="--check-search-py: the student's process may use this much "
+                   "memory (default %(default)s; not enforced on macOS)")
+    p.add_argument("--gradescope", metavar="OUT.json",
+                   help="with --exercise E --headless MAP... (the class report) or "
+                   "--check-search-py: also write Gradescope's results.json there (a test a "
+                   "map, or the search and its path); an existing file only with --force")
     p.add_argument("--replay", metavar="FILE",
                    help="open the app on a trace another program wrote (the --trace format), "
                    "beside -a's search under the choice flags (without -a: the search it "
@@ -266,6 +287,16 @@ def _weight(text: str) -> float:
     if not 1 <= x < float("inf"):  # NaN fails too
         raise argparse.ArgumentTypeError(f"{text!r} is not a number 1 or more")
     return x
+
+
+def _seconds(text: str) -> float:
+    try:
+        seconds = float(text)
+    except ValueError:
+        seconds = 0.0
+    if not 0.1 <= seconds <= 3600:  # (NaN too)
+        raise argparse.ArgumentTypeError(f"{text!r}: give seconds from 0.1 to 3600")
+    return seconds
 
 
 def _positive(text: str) -> int:

@@ -161,6 +161,8 @@ def run_exercise(options: Options) -> int:
         if options.scen:
             raise UsageError("--scen is for one map, not the class report")
         rows = [grade_one(options.replace(map=name), exercise) for name in options.maps]
+    if options.gradescope is not None:
+        write_gradescope(options, report_results(rows, exercise))
     if options.csv:
         write_csv(rows, exercise)
     elif options.json:
@@ -178,6 +180,36 @@ def run_exercise(options: Options) -> int:
     if len(rows) == 1 and rows[0].verdict is not None and not rows[0].verdict.graded:
         return EXIT_GAVE_UP
     return EXIT_FOUND if all(row.status == "solved" for row in rows) else EXIT_NO_PATH
+
+
+def write_gradescope(options: Options, data: dict[str, object]) -> None:
+    """``--gradescope OUT.json``: ``data`` written there, into a new file, or atomically over
+    an old one with ``--force`` (a UsageError, one line, when it exists without it or
+    cannot be written)."""
+    from tui_search.engine.util.atomic import os_reason, write_atomically
+
+    target = options.gradescope
+    assert target is not None
+    body = (to_json(data) + "\n").encode("utf-8")
+    try:
+        if options.force:
+            write_atomically(target, body)
+        else:
+            with open(target, "xb") as out:
+                out.write(body)
+    except FileExistsError:
+        raise UsageError(f"{describe_name(target)} exists: --force replaces it") from None
+    except OSError as err:
+        raise UsageError(f"{describe_name(target)}: cannot write: {os_reason(err)}") from None
+
+
+def report_results(rows: list[Graded], exercise: Exercise) -> dict[str, object]:
+    """The class report as Gradescope's results: a test a map, a point when it is solved."""
+    from tui_search.engine.course.gradescope import graded_test, results
+
+    tests = [graded_test(row.where, row.status == "solved",
+                         f"{row.status}{_dash(row.reason)}") for row in rows]
+    return results("\n".join([*heading(exercise), summary(rows)]), tests)
 
 
 def _print_one(row: Graded) -> None:

@@ -9,6 +9,7 @@ generators.
 * :mod:`~tui_search.engine.maps.load`: loading a map file of either format;
 * :mod:`~tui_search.engine.maps.text`: the text map format;
 * :mod:`~tui_search.engine.maps.movingai`: MovingAI ``.map`` files;
+* :mod:`~tui_search.engine.maps.layouts`: Pacman layouts (``.lay``), the course's y from below;
 * :mod:`~tui_search.engine.maps.terrain`: terrain tables;
 * :mod:`~tui_search.engine.maps.scenarios`: MovingAI ``.scen`` files;
 * :mod:`~tui_search.engine.maps.write`: saving a grid, changing only the cells edited;

@@ -1,7 +1,8 @@
 """Loading a map file of either format, with the command line's start and goal overrides.
 
-A file whose first non-empty line is ``type ...`` is read as a MovingAI map
-(:mod:`tui_search.engine.maps.movingai`), anything else as our text format
+A file whose name ends in ``.lay`` is read as a Pacman layout
+(:mod:`tui_search.engine.maps.layouts`); a file whose first non-empty line is ``type ...`` as a
+MovingAI map (:mod:`tui_search.engine.maps.movingai`), anything else as our text format
 (:mod:`tui_search.engine.maps.text`).  Problems are :class:`~tui_search.engine.maps.read.MapError`;
 saving is :mod:`tui_search.engine.maps.write`, scenario files
 :mod:`tui_search.engine.maps.scenarios`.
@@ -14,7 +15,7 @@ import re
 from typing import TYPE_CHECKING
 
 from tui_search.engine.maps.grid import Cell, Grid
-from tui_search.engine.maps.read import MAX_DIGITS, check_cell, quoted, read_map_file
+from tui_search.engine.maps.read import MAX_DIGITS, MapError, check_cell, quoted, read_map_file
 from tui_search.engine.maps.terrain import Terrain
 from tui_search.engine.maps.text import parse_text_map
 
@@ -44,7 +45,15 @@ def parse_map_text(
     map's characters (``--terrain``; :mod:`tui_search.engine.maps.terrain`).  A start or goal
     placed on a costed cell keeps its cost.
     """
-    if _is_movingai(text):
+    from tui_search.engine.maps.layouts import is_layout  # (a small module)
+
+    if is_layout(path):
+        from tui_search.engine.maps.layouts import parse_layout
+
+        if terrain is not None and terrain.pairs():
+            raise MapError(path, "a Pacman layout has no terrain: every move costs 1")
+        grid = parse_layout(text, path, need_start=start is None, need_goal=goal is None)
+    elif _is_movingai(text):
         from tui_search.engine.maps.movingai import parse_movingai_map  # only for a .map
 
         grid = parse_movingai_map(text, path, terrain)

@@ -14,9 +14,9 @@ from itertools import accumulate, islice, repeat
 from operator import add
 from typing import NamedTuple, overload
 
-__all__ = ["MOVINGAI", "TEXT", "FileStamp", "Lines", "MapSource"]
+__all__ = ["LAY", "MOVINGAI", "TEXT", "FileStamp", "Lines", "MapSource"]
 
-TEXT, MOVINGAI = "text", "movingai"
+TEXT, MOVINGAI, LAY = "text", "movingai", "lay"
 
 
 class FileStamp(NamedTuple):
@@ -135,7 +135,7 @@ class MapSource(NamedTuple):
     ``stamp`` is the file as last read or saved (None for text not from a file).
     """
 
-    kind: str  # TEXT or MOVINGAI
+    kind: str  # TEXT, MOVINGAI or LAY (a Pacman layout)
     lines: Sequence[str]  # Lines, read from a file; a tuple, written by the app
     rows: Sequence[int]  # a range, or an array of ints: compact for millions of rows
     width: int
@@ -145,6 +145,9 @@ class MapSource(NamedTuple):
     #: is in its lines): each character's cost, None for blocked.  Saving reads the file's
     #: characters with it.
     terrain: tuple[tuple[str, float | None], ...] = ()
+    #: What the reader has to say of the file as read, in a sentence ("" nothing): a Pacman
+    #: layout's several dots, the first of which is the goal.
+    note: str = ""
 
     def text(self) -> str:
         body = self.lines.text if isinstance(self.lines, Lines) else "\n".join(self.lines)

@@ -20,7 +20,7 @@ from tui_search.engine.maps.grid import Grid
 from tui_search.engine.maps.load import parse_map_text
 from tui_search.engine.maps.movingai import movingai_costs, movingai_rows
 from tui_search.engine.maps.read import MAX_MAP_BYTES, MapError, current_stamp, stamp_of, too_big
-from tui_search.engine.maps.source import MOVINGAI, TEXT, FileStamp, MapSource
+from tui_search.engine.maps.source import LAY, MOVINGAI, TEXT, FileStamp, MapSource
 from tui_search.engine.maps.terrain import TEXT_OWN, Terrain, comment_table, lost_costs, text_costs
 from tui_search.engine.maps.text import text_rows
 from tui_search.engine.util.atomic import os_reason, write_atomically, write_in_place
@@ -51,8 +51,13 @@ def _updated(source: MapSource, grid: Grid) -> MapSource:
     w = source.width
     old = [source.lines[i][:w] for i in source.rows]
     chars = characters(grid, source.kind, source)
-    new = (text_rows(grid, old, chars) if source.kind == TEXT
-           else movingai_rows(grid, old, chars))
+    if source.kind == LAY:
+        from tui_search.engine.maps.layouts import layout_rows
+
+        new = layout_rows(grid, old)
+    else:
+        new = (text_rows(grid, old, chars) if source.kind == TEXT
+               else movingai_rows(grid, old, chars))
     lines = list(source.lines)
     for i, before, after in zip(source.rows, old, new, strict=True):
         if before != after:
@@ -67,6 +72,10 @@ def _fresh_source(grid: Grid, kind: str) -> MapSource:
     if kind == TEXT:
         header: list[str] = []
         rows = text_rows(grid, None, chars)
+    elif kind == LAY:
+        from tui_search.engine.maps.layouts import layout_rows
+
+        header, rows = [], layout_rows(grid, None)
     else:
         header = ["type octile", f"height {grid.height}", f"width {grid.width}", "map"]
         rows = movingai_rows(grid, None, chars)
@@ -87,6 +96,8 @@ def characters(grid: Grid, kind: str, source: MapSource | None = None
     """Every character a file of ``kind`` for ``grid`` may write, with what it means: the
     format's own, the table given with the grid's file, and (``source``: the text file being
     written back) its own comment table."""
+    if kind == LAY:  # walls and free cells costing 1: no table
+        return {"%": None, " ": 1.0}
     table = given_table(grid, kind)
     if kind != TEXT:
         return movingai_costs(table)
@@ -116,8 +127,10 @@ def save_notes(grid: Grid, kind: str) -> list[str]:
 
 
 def kind_for_path(path: str | os.PathLike[str]) -> str:
-    """The format a new file of this name gets: MovingAI for ``.map``, else the text format."""
-    return MOVINGAI if os.fsdecode(path).lower().endswith(".map") else TEXT
+    """The format a new file of this name gets: MovingAI for ``.map``, a Pacman layout for
+    ``.lay``, else the text format."""
+    name = os.fsdecode(path).lower()
+    return MOVINGAI if name.endswith(".map") else LAY if name.endswith(".lay") else TEXT
 
 
 def format_map(grid: Grid, kind: str = TEXT) -> MapSource:

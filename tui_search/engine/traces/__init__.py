@@ -10,5 +10,10 @@
 * :mod:`~tui_search.engine.traces.posthoc`: Posthoc's trace format, read and written;
 * :mod:`~tui_search.engine.traces.hand`: a search stepped by hand, each step checked;
 * :mod:`~tui_search.engine.traces.as_run`: a trace as a run like any other;
-* :mod:`~tui_search.engine.traces.replay`: a trace beside its search, for ``--replay``.
+* :mod:`~tui_search.engine.traces.replay`: a trace beside its search, for ``--replay``;
+* :mod:`~tui_search.engine.traces.student_search`: a student's search.py's problem, its calls
+  as a trace;
+* :mod:`~tui_search.engine.traces.sandbox`: a student's search.py run in a fenced process;
+* :mod:`~tui_search.engine.traces.sandbox_child`: the fenced process's side (a script);
+* :mod:`~tui_search.engine.traces.course_util`: the ``util`` module a search.py imports there.
 """

@@ -144,11 +144,45 @@ def replay_of(trace: Trace, grid: Grid | Graph, algorithm: str | None, semantics
         best = diagnose(trace, grid, max_steps).best[0]
         algorithm, semantics = best.algorithm, best.semantics
     own = check_trace(trace, grid, algorithm, semantics, max_steps)
-    aligned = with_discards(trace, own.left_out)
+    aligned = with_discards(with_tree(trace, grid, semantics), own.left_out)
     verdict = own if aligned is trace else check_trace(aligned, grid, algorithm, semantics,
                                                        max_steps)
     return Replay(aligned, algorithm, semantics, verdict, _where(grid), inferred, own, label,
                   mistakes)
+
+
+def with_tree(trace: Trace, board: Grid | Graph, semantics: Semantics) -> Trace:
+    """An expansions-only trace (no line lists successors) with a tree to draw: each step
+    adds, unlisted (the check still compares only the order of the expansions), the
+    neighbours it reaches first, in the search's order, that a later step expands.  Any
+    other trace as it is."""
+    if not trace.steps or any(step.listed for step in trace.steps):
+        return trace
+    later: dict[State, int] = {}
+    for at, step in enumerate(trace.steps):
+        later[step.node] = at  # its last expansion
+    added: set[State] = {trace.steps[0].node}
+    steps = []
+    for at, step in enumerate(trace.steps):
+        new = []
+        for cell in _neighbours(board, step.node, semantics):
+            if cell not in added and later.get(cell, -1) > at:
+                added.add(cell)
+                new.append(cell)
+        steps.append(step._replace(successors=tuple(new), listed=False))
+    return replace(trace, steps=tuple(steps))
+
+
+def _neighbours(board: Grid | Graph, state: State, semantics: Semantics) -> list[State]:
+    """The states a step from ``state`` reaches, in the search's order."""
+    if isinstance(board, Graph):
+        return [b for b, _, _ in board.successors(str(state), semantics.order == ("name",))]
+    from tui_search.engine.maps.grid import DELTAS
+
+    assert isinstance(state, tuple)
+    x, y = state
+    cells = ((x + DELTAS[d][0], y + DELTAS[d][1]) for d in semantics.order)
+    return [c for c in cells if board.in_bounds(c) and not board.is_blocked(c)]
 
 
 def with_discards(trace: Trace, left_out: tuple[tuple[int, State], ...]) -> Trace:
@@ -168,4 +202,4 @@ def with_discards(trace: Trace, left_out: tuple[tuple[int, State], ...]) -> Trac
     return replace(trace, steps=tuple(steps))
 
 
-__all__ = ["TRACE_LABEL", "Replay", "replay_of", "with_discards"]
+__all__ = ["TRACE_LABEL", "Replay", "replay_of", "with_discards", "with_tree"]

@@ -3,7 +3,8 @@ line on what it changes, and the searches compare mode compares.  Dismisses with
 :class:`SettingsChoice`, or None when cancelled; the app then starts a new run at step 0 on the
 same map.
 
-Apply, Defaults and Cancel are docked under the choices, so they never scroll away; on a
+Apply, Defaults, CS188 (the course's choices, ``--preset cs188``: each still changeable after
+it) and Cancel are docked under the choices, so they never scroll away; on a
 short terminal the blank lines between the choices go first, then the explanations (a note
 that a choice does not apply, or a problem, stays).
 """
@@ -187,6 +188,8 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
                 with Horizontal():
                     yield Button("Apply", id="apply", variant="primary", compact=True)
                     yield Button("Defaults", id="defaults", compact=True)
+                    yield Button("CS188", id="preset-cs188", compact=True,
+                                 tooltip="the course's choices: --preset cs188")
                     yield Button("Cancel", id="cancel", compact=True)
                 yield Label("tab / shift+tab move · arrows and enter pick · escape cancels",
                             classes="hint")
@@ -382,6 +385,12 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
     def on_button_pressed(self, event: Button.Pressed) -> None:
         if event.button.id == "apply":
             self._apply()
+        elif event.button.id == "preset-cs188":
+            from tui_search.engine.course.presets import preset_semantics
+            from tui_search.tui.model.boards import semantics_for
+
+            cs188 = preset_semantics("cs188", self.algorithm)  # a graph: its roads, its h
+            self._show(cs188 if self.graph is None else semantics_for(self.graph, cs188))
         elif event.button.id == "defaults":
             if self.graph is not None:
                 from tui_search.tui.model.boards import semantics_for

@@ -109,7 +109,8 @@ class Session:
             from tui_search.engine.maps.scenarios import Optimum
 
             self._optimum = Optimum(board, optimal_cost)
-        self.new_runs()
+        # what the file's reader had to say (a layout's several dots), said at the start
+        self.new_runs(board.source.note if isinstance(board, Grid) and board.source else "")
 
     # -- what is shown -------------------------------------------------------------------
     @property

@@ -7,6 +7,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from tui_search.engine.maps.grid import Grid
+from tui_search.engine.maps.source import LAY
 from tui_search.engine.run.position import CellState
 from tui_search.engine.run.recorded import Run
 from tui_search.engine.search.state import State
@@ -22,14 +23,18 @@ def _number(value: float) -> str:
 
 
 def cell_head(grid: Grid | Graph, cell: State) -> str:
-    """``(3,4)``, or ``(3,4) costs 5`` on terrain (a free cell that does not cost 1); a
-    graph's node by its name."""
+    """``(3,4)``, or ``(3,4) costs 5`` on terrain (a free cell that does not cost 1); on a
+    Pacman layout with the course's own (x, y) too, y from the bottom: ``(3,4) course (3,5)``;
+    a graph's node by its name."""
     if not isinstance(grid, Grid) or isinstance(cell, str):
         return cell_text(cell)
+    head = cell_text(cell)
+    if grid.source is not None and grid.source.kind == LAY:  # the course counts y from below
+        head += f" course ({cell[0]},{grid.height - 1 - cell[1]})"
     cost = grid.cost(cell)
     if cost == 1.0 or grid.is_blocked(cell):
-        return cell_text(cell)
-    return f"{cell_text(cell)} costs {_number(cost)}"
+        return head
+    return f"{head} costs {_number(cost)}"
 
 
 def _blocked(board: Grid | Graph, state: State) -> bool:
