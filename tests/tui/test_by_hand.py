@@ -33,9 +33,14 @@ KEY_OF = {move: key for key, move in MOVE_KEYS.items() if key.isdigit()}
 
 async def open_hand(pilot) -> ByHandScreen:
     await pilot.press("H")
-    await wait_until(pilot, lambda: isinstance(pilot.app.screen, ByHandScreen)
-                     and bool(pilot.app.screen.query(GridView)))
+    await wait_until(pilot, lambda: shown(pilot.app.screen))
     return pilot.app.screen
+
+
+def shown(screen: object) -> bool:
+    """Is ``screen`` the by-hand screen, its map and panel drawn (its title set)?"""
+    return (isinstance(screen, ByHandScreen) and bool(screen.query(GridView))
+            and bool(screen.panel.border_title))
 
 
 def panel(screen: ByHandScreen) -> str:
@@ -61,14 +66,21 @@ async def add(pilot, screen: ByHandScreen, cell: Cell) -> None:
 
 
 async def play(pilot, screen: ByHandScreen, steps: int) -> None:
-    """Make ``steps`` steps right: the entry clicked, its successors by their keys, enter."""
+    """Make ``steps`` steps right: the entry clicked, its successors by their keys, enter;
+    each waited for (the app takes a key or a click in its own time)."""
     hand = screen.by_hand.hand
     made = len(hand.mistakes)
     for _ in range(steps):
+        k = hand.k
         await click_cell(pilot, screen, hand.hint_cell())
-        while (cell := hand.hint_cell()) is not None:
+        await wait_until(pilot, lambda: hand.picked is not None or hand.k > k)
+        while hand.k == k and (cell := hand.hint_cell()) is not None:
+            marks = len(hand.marks)
             await add(pilot, screen, cell)
-        await pilot.press("enter")
+            await wait_until(pilot, lambda: len(hand.marks) > marks)
+        if hand.k == k:
+            await pilot.press("enter")
+            await wait_until(pilot, lambda: hand.k > k)
     assert len(hand.mistakes) == made
 
 
@@ -181,12 +193,12 @@ async def test_a_whole_run_ends_in_its_summary_and_its_record(tmp_path: Path) ->
                              "--student", "Ada Lovelace"])
     app = build_app(options)
     async with app.run_test(size=SIZE) as pilot:
-        await wait_until(pilot, lambda: isinstance(app.screen, ByHandScreen)
-                         and bool(app.screen.query(GridView)))
+        await wait_until(pilot, lambda: shown(app.screen))
         screen = app.screen
         await play(pilot, screen, 2)
-        await click_cell(pilot, screen, (1, 2))  # the newest: one mistake
         hand = screen.by_hand.hand
+        await click_cell(pilot, screen, (1, 2))  # the newest: one mistake
+        await wait_until(pilot, lambda: len(hand.mistakes) == 1)
         while not hand.finished:
             await play(pilot, screen, 1)
         await wait_until(pilot, lambda: isinstance(app.screen, ByHandSummaryScreen))
@@ -214,8 +226,7 @@ async def test_a_by_hand_exercise_opens_on_the_students_own_map() -> None:
     path = Path(__file__).parents[1] / "data" / "exercises" / "bfs-by-hand.toml"
     app = build_app(parse_options(["--exercise", str(path), "--student", "Ada Lovelace"]))
     async with app.run_test(size=SIZE) as pilot:
-        await wait_until(pilot, lambda: isinstance(app.screen, ByHandScreen)
-                         and bool(app.screen.query(GridView)))
+        await wait_until(pilot, lambda: shown(app.screen))
         screen = app.screen
         assert screen.panel.border_title == "By hand: BFS · BFS by hand"
         assert "0 of 3 mistakes allowed so far" in panel(screen)
