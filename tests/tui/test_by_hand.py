@@ -73,14 +73,14 @@ async def play(pilot, screen: ByHandScreen, steps: int) -> None:
     for _ in range(steps):
         k = hand.k
         await click_cell(pilot, screen, hand.hint_cell())
-        await wait_until(pilot, lambda: hand.picked is not None or hand.k > k)
+        await wait_until(pilot, lambda k=k: hand.picked is not None or hand.k > k)
         while hand.k == k and (cell := hand.hint_cell()) is not None:
             marks = len(hand.marks)
             await add(pilot, screen, cell)
-            await wait_until(pilot, lambda: len(hand.marks) > marks)
+            await wait_until(pilot, lambda marks=marks: len(hand.marks) > marks)
         if hand.k == k:
             await pilot.press("enter")
-            await wait_until(pilot, lambda: hand.k > k)
+            await wait_until(pilot, lambda k=k: hand.k > k)
     assert len(hand.mistakes) == made
 
 

@@ -3,7 +3,8 @@
 * :mod:`~tui_search.engine.traces.read`: reading a trace;
 * :mod:`~tui_search.engine.traces.check`: a trace against one search, step by step;
 * :mod:`~tui_search.engine.traces.differences`: where a trace parts from a search, and why;
-* :mod:`~tui_search.engine.traces.causes`: the causes named, their codes, and whom they speak of;
+* :mod:`~tui_search.engine.traces.causes`: the causes named, their codes, whom they speak of, and
+  the difference that carries one;
 * :mod:`~tui_search.engine.traces.ties`: a tie of the priority taken another way;
 * :mod:`~tui_search.engine.traces.diagnose`: which searches a trace matches longest;
 * :mod:`~tui_search.engine.traces.orders`: the move orders a trace allows;

@@ -1,6 +1,6 @@
 """The causes a difference names, as data: who the sentences speak of (a trace's author, or a
-student stepping a search by hand) and each cause's code with the words a summary counts it
-by ("took the newest entry").
+student stepping a search by hand), each cause's code with the words a summary counts it by
+("took the newest entry"), and the :class:`Difference` that carries one.
 
 One vocabulary for both: a student whose BFS code takes the newest entry and one who takes it
 by hand hold the same misconception, and are told it in the same words
@@ -10,7 +10,10 @@ both under one code (:mod:`~tui_search.engine.course.records`).
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import NamedTuple
+
+from tui_search.engine.search.state import State, state_json
 
 
 class Voice(NamedTuple):
@@ -93,4 +96,40 @@ def cause_words(code: str) -> str:
     return CAUSES.get(code, code)
 
 
-__all__ = ["CAUSES", "HAND_VOICE", "TRACE_VOICE", "Voice", "cause_words"]
+#: The choices a difference suggests, as ``(field, value)`` pairs of
+#: :class:`~tui_search.engine.search.choices.Semantics`.
+Suggestion = tuple[tuple[str, object], ...]
+#: A cause in words: the sentence, the choices that would explain it, its code.
+Said = tuple[str, tuple[Suggestion, ...], str]
+
+
+@dataclass(frozen=True)
+class Difference:
+    """The first place the trace parts from the search: its step (the trace's numbering), the
+    trace line, what kind (``expand``, ``successors``, ``ends``, ``goes_on``), the sentence, and
+    the cells the search expected and the trace had (None where it has none)."""
+
+    step: int
+    line: int | None
+    kind: str
+    message: str
+    expected: State | None = None
+    got: State | None = None
+    #: The search parts from the trace at a tie of its priority: "h" where the trace took
+    #: the lower or higher h of an f tie, "entry" where it took another entry; "" no tie.
+    tie: str = ""
+    #: The choices that would explain it, each a change the diagnosis tries.
+    suggest: tuple[Suggestion, ...] = ()
+    #: What it is, as a code of :data:`~tui_search.engine.traces.causes.CAUSES` ("newest").
+    cause: str = ""
+
+    def as_json(self) -> dict[str, object]:
+        return {"step": self.step, "line": self.line, "kind": self.kind,
+                "cause": self.cause or None, "message": self.message,
+                "expected": None if self.expected is None else state_json(self.expected),
+                "got": None if self.got is None else state_json(self.got),
+                "tie": self.tie or None}
+
+
+__all__ = ["CAUSES", "HAND_VOICE", "TRACE_VOICE", "Difference", "Said", "Suggestion", "Voice",
+           "cause_words"]

@@ -32,8 +32,8 @@ from tui_search.engine.search.choices import (
 )
 from tui_search.engine.search.registry import Algorithm, get_algorithm
 from tui_search.engine.search.state import State
-from tui_search.engine.traces.causes import TRACE_VOICE, Voice
-from tui_search.engine.traces.differences import Causes, Difference
+from tui_search.engine.traces.causes import TRACE_VOICE, Difference, Voice
+from tui_search.engine.traces.differences import Causes
 from tui_search.engine.traces.read import Trace, TraceStep, show
 from tui_search.engine.traces.ties import TIE_ORDER
 

@@ -8,7 +8,7 @@ at its first difference (and records its run only that far), so a candidate that
 early costs little.  The choices of published code (a tie rule, a closed set, exact costs, an
 unmarked start, a node expanded again, no path check, the calls form of a recursion) are tried
 where a candidate parts for a reason one of them explains: each difference names the choices
-that would (:class:`~tui_search.engine.traces.differences.Difference`'s ``suggest``), and the
+that would (:class:`~tui_search.engine.traces.causes.Difference`'s ``suggest``), and the
 candidate is tried again with each, up to :data:`VARIANTS` changes in a row.  Every candidate
 that matches the whole trace is listed; when none does, the closest, each with where it parts.
 """

@@ -15,51 +15,15 @@ author or of a student stepping the search by hand (a
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from tui_search.engine.maps.grid import DELTAS, Grid, move_cost
 from tui_search.engine.run.recorded import Run, Step
 from tui_search.engine.search.choices import corner_allowed
 from tui_search.engine.search.registry import Frontier
-from tui_search.engine.search.state import State, as_cell, state_json
-from tui_search.engine.traces.causes import TRACE_VOICE, Voice
+from tui_search.engine.search.state import State, as_cell
+from tui_search.engine.traces.causes import TRACE_VOICE, Difference, Said, Suggestion, Voice
 from tui_search.engine.traces.orders import call_first, flipped_order
 from tui_search.engine.traces.read import Trace, TraceStep, show
 from tui_search.engine.traces.ties import TIE_ORDER, tie
-
-#: The choices a difference suggests, as ``(field, value)`` pairs of
-#: :class:`~tui_search.engine.search.choices.Semantics`.
-Suggestion = tuple[tuple[str, object], ...]
-#: A cause in words: the sentence, the choices that would explain it, its code.
-Said = tuple[str, tuple[Suggestion, ...], str]
-
-
-@dataclass(frozen=True)
-class Difference:
-    """The first place the trace parts from the search: its step (the trace's numbering), the
-    trace line, what kind (``expand``, ``successors``, ``ends``, ``goes_on``), the sentence, and
-    the cells the search expected and the trace had (None where it has none)."""
-
-    step: int
-    line: int | None
-    kind: str
-    message: str
-    expected: State | None = None
-    got: State | None = None
-    #: The search parts from the trace at a tie of its priority: "h" where the trace took
-    #: the lower or higher h of an f tie, "entry" where it took another entry; "" no tie.
-    tie: str = ""
-    #: The choices that would explain it, each a change the diagnosis tries.
-    suggest: tuple[Suggestion, ...] = ()
-    #: What it is, as a code of :data:`~tui_search.engine.traces.causes.CAUSES` ("newest").
-    cause: str = ""
-
-    def as_json(self) -> dict[str, object]:
-        return {"step": self.step, "line": self.line, "kind": self.kind,
-                "cause": self.cause or None, "message": self.message,
-                "expected": None if self.expected is None else state_json(self.expected),
-                "got": None if self.got is None else state_json(self.got),
-                "tie": self.tie or None}
 
 
 def swapped(cell: State) -> State:

@@ -19,8 +19,8 @@ from tui_search.engine.run.recorded import Run, Step
 from tui_search.engine.search.choices import Semantics
 from tui_search.engine.search.registry import Frontier
 from tui_search.engine.search.state import State
-from tui_search.engine.traces.causes import HAND_VOICE
-from tui_search.engine.traces.differences import Causes, Difference
+from tui_search.engine.traces.causes import HAND_VOICE, Difference
+from tui_search.engine.traces.differences import Causes
 from tui_search.engine.traces.read import Trace, TraceStep, show, trace_line
 
 #: A run stepped by hand gives up after this many steps (a person makes a few hundred).
