@@ -33,8 +33,10 @@ class Step(Frozen):
     not a frozen slotted dataclass (which every start would pay for: benchmarks/README.md,
     "startup"), nor a NamedTuple (its field ``index`` would hide ``tuple.index``)."""
 
-    __slots__ = ("depth_limit", "discarded", "found_goal", "index", "node", "successors")
-    _FIELDS = ("index", "node", "successors", "depth_limit", "found_goal", "discarded")
+    __slots__ = ("depth_limit", "direction", "discarded", "found_goal", "index", "node",
+                 "successors")
+    _FIELDS = ("index", "node", "successors", "depth_limit", "found_goal", "discarded",
+               "direction")
 
     index: int
     node: State  # a cell on a grid, a node's name on a graph
@@ -42,12 +44,13 @@ class Step(Frozen):
     depth_limit: int | None
     found_goal: bool
     discarded: bool
+    direction: str  # a bidirectional search's "forward" or "backward" ("": one way)
 
     def __init__(self, index: int, node: State, successors: tuple[tuple[str, State], ...],
                  depth_limit: int | None = None, found_goal: bool = False,
-                 discarded: bool = False) -> None:
+                 discarded: bool = False, direction: str = "") -> None:
         self._assign(index=index, node=node, successors=successors, depth_limit=depth_limit,
-                  found_goal=found_goal, discarded=discarded)
+                     found_goal=found_goal, discarded=discarded, direction=direction)
 
 
 #: The default step limit: expansions recorded before a run gives up (iterative deepening

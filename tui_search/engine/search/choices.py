@@ -19,6 +19,10 @@
 * ``weight``: weighted A*'s W, 1 or more: the priority is f = g + W·h, and with an
   admissible h the path costs at most W times the optimum.  1 (the default) is A* itself, the
   very same floats; A* only.
+* ``stop``: when a bidirectional search stops
+  (:mod:`~tui_search.engine.search.bidirectional.loop`): ``proven`` once its best meeting is
+  proven the cheapest, ``first-meeting`` as soon as the two searches reach a cell in common
+  (the trap: not the cheapest path, for costs).
 
 On a graph (:mod:`tui_search.engine.search.space`), ``order`` is one word of
 :data:`GRAPH_ORDERS` (``file``: the roads as the file lists them; ``name``: by the names they
@@ -81,6 +85,8 @@ VISIT_RULES: tuple[str, ...] = ("generate", "expand", "expand-again")
 GOAL_TESTS: tuple[str, ...] = ("generate", "expand")
 TIE_RULES: tuple[str, ...] = ("fifo", "lifo", "node", "low-h", "high-h", "low-g", "high-g")
 RECURSIVE_FORMS: tuple[str, ...] = ("neighbours", "calls")
+#: A bidirectional search's stopping rules (the first is the default).
+STOP_RULES: tuple[str, ...] = ("proven", "first-meeting")
 #: The tie rules, in the words a student would say them.
 TIE_WORDS: dict[str, str] = {
     "fifo": "oldest first", "lifo": "newest first", "node": "smallest cell first",
@@ -103,6 +109,7 @@ EXPLAIN: dict[str, str] = {
     "path_check": "tree search skips the cells on the node's own path (off: skips nothing)",
     "mark_start": "is the start marked reached when pushed (off: it can be pushed again)?",
     "weight": "weighted A*: f = g + W·h, a path at most W × the optimum (1: A*)",
+    "stop": "bidirectional: stop once the best meeting is proven, or at the first meeting",
 }
 
 def weight_text(weight: float) -> str:
@@ -130,7 +137,7 @@ class Semantics(Frozen):
 
     __slots__ = _FIELDS = ("order", "corners", "visit", "goal_test", "tree_search", "heuristic",
                            "ties", "cost_tolerance", "reopen", "recursive", "path_check",
-                           "mark_start", "weight")
+                           "mark_start", "weight", "stop")
 
     order: tuple[str, ...]
     corners: str
@@ -145,13 +152,14 @@ class Semantics(Frozen):
     path_check: bool
     mark_start: bool
     weight: float  # weighted A*'s W (1: A*)
+    stop: str  # a bidirectional search's stopping rule
 
     def __init__(self, order: tuple[str, ...] = DEFAULT_ORDER, corners: str = "always",
                  visit: str = "generate", goal_test: str | None = None,
                  tree_search: bool = False, heuristic: str = DEFAULT_HEURISTIC,
                  ties: str = "fifo", cost_tolerance: float = CHEAPER_BY, reopen: bool = True,
                  recursive: str = "", path_check: bool = True, mark_start: bool = True,
-                 weight: float = 1.0) -> None:
+                 weight: float = 1.0, stop: str = STOP_RULES[0]) -> None:
         graph_order = len(order) == 1 and order[0] in GRAPH_ORDERS
         if not graph_order and (not order or any(d not in DELTAS for d in order)
                                 or len(set(order)) != len(order)):
@@ -163,6 +171,7 @@ class Semantics(Frozen):
             ("heuristic", heuristic, (*HEURISTICS, TABLE)),
             ("ties", ties, TIE_RULES),
             ("recursive", recursive or RECURSIVE_FORMS[0], RECURSIVE_FORMS),
+            ("stopping rule", stop, STOP_RULES),
         ):
             if value not in allowed:
                 raise ValueError(f"{name} {value!r}: use {', '.join(allowed)}")
@@ -182,7 +191,7 @@ class Semantics(Frozen):
         self._assign(order=order, corners=corners, visit=visit, goal_test=goal_test,
                      tree_search=tree_search, heuristic=heuristic, ties=ties,
                      cost_tolerance=float(cost_tolerance), reopen=reopen, recursive=recursive,
-                     path_check=path_check, mark_start=mark_start, weight=weight)
+                     path_check=path_check, mark_start=mark_start, weight=weight, stop=stop)
 
     def check(self, algorithm: Algorithm) -> None:
         """Refuse the combinations that make no sense for ``algorithm`` (``ValueError``)."""
@@ -193,6 +202,8 @@ class Semantics(Frozen):
     def refusal(self, algorithm: Algorithm) -> str:
         """Why these choices make no sense for ``algorithm`` ("" when they do)."""
         name = algorithm.short
+        if algorithm.bidirectional and self._both_ways_refusal(name):
+            return self._both_ways_refusal(name)
         if algorithm.iterative and self.visit != "generate":
             return (f"the visit rule does not apply to {name} (it re-opens a cell reached at "
                     "a smaller depth)")
@@ -211,8 +222,23 @@ class Semantics(Frozen):
             return f"ties on g do not apply to {name}: its priority is g itself"
         if self.recursive and algorithm.frontier is not Frontier.LIFO:
             return f"recursion is a depth-first search's (DFS, IDDFS), not {name}'s"
-        if self.weight != 1.0 and algorithm.priority != "g+h":
+        if self.weight != 1.0 and (algorithm.priority != "g+h" or algorithm.bidirectional):
             return f"a weight applies to A* (f = g + W·h), not {name}"
+        if self.stop != STOP_RULES[0] and not algorithm.bidirectional:
+            return f"a stopping rule applies to a bidirectional search, not {name}"
+        return ""
+
+    def _both_ways_refusal(self, name: str) -> str:
+        """Why a bidirectional search cannot run under these choices ("" when it can)."""
+        if self.tree_search or self.recursive:
+            return f"{name} is a graph search: no tree search, no recursion"
+        if self.goal_test is not None:
+            return f"{name} stops when its two searches meet: no goal test applies"
+        if self.visit != "generate":
+            return f"{name} marks a cell reached when pushed: the visit rule does not apply"
+        if not self.plain:
+            return (f"{name} runs under the plain choices (ties oldest first, re-opening, "
+                    "the start marked, the default cost tolerance)")
         return ""
 
     def fitted(self, algorithm: Algorithm) -> Semantics:
@@ -221,6 +247,10 @@ class Semantics(Frozen):
         out = self
         if algorithm.iterative or algorithm.weighted:
             out = out.replace(visit="generate")
+        if algorithm.bidirectional:
+            out = out.replace(visit="generate", tree_search=False, path_check=True,
+                              goal_test=None, recursive="", mark_start=True, ties="fifo",
+                              cost_tolerance=CHEAPER_BY, reopen=True)
         if not algorithm.weighted:
             out = out.replace(ties="fifo", cost_tolerance=CHEAPER_BY, reopen=True)
         if out.ties in ("low-h", "high-h") and not algorithm.informed:
@@ -229,8 +259,10 @@ class Semantics(Frozen):
             out = out.replace(ties="fifo")
         if algorithm.frontier is not Frontier.LIFO and out.recursive:
             out = out.replace(recursive="")
-        if algorithm.priority != "g+h" and out.weight != 1.0:
+        if (algorithm.priority != "g+h" or algorithm.bidirectional) and out.weight != 1.0:
             out = out.replace(weight=1.0)
+        if not algorithm.bidirectional and out.stop != STOP_RULES[0]:
+            out = out.replace(stop=STOP_RULES[0])
         return out
 
     def goal_test_for(self, algorithm: Algorithm) -> str:
@@ -283,6 +315,8 @@ class Semantics(Frozen):
             out.append(f"heuristic {self.heuristic}")
         if self.weight != 1.0 and (algorithm is None or algorithm.priority == "g+h"):
             out.append(f"weight {weight_text(self.weight)}")
+        if self.stop != STOP_RULES[0] and (algorithm is None or algorithm.bidirectional):
+            out.append("stop at the first meeting")
         out += self.published_words()
         return out
 
@@ -343,6 +377,8 @@ class Semantics(Frozen):
             "path_check": self.path_check if self.tree_search else None,
             "mark_start": self.mark_start,
             "weight": self.weight if algorithm is None or algorithm.priority == "g+h" else None,
+            **({"stop": self.stop} if algorithm is not None and algorithm.bidirectional
+               else {}),
         }
 
 

@@ -10,9 +10,9 @@ Plain Python, no UI.
 from collections.abc import Sequence
 from typing import NamedTuple
 
-from tui_search.engine.search.choices import DEFAULT_SEMANTICS, Semantics
+from tui_search.engine.search.choices import DEFAULT_SEMANTICS, STOP_RULES, Semantics
 from tui_search.engine.search.outcome import Outcome
-from tui_search.engine.search.registry import get_algorithm
+from tui_search.engine.search.registry import Algorithm, get_algorithm
 
 
 class Contender(NamedTuple):
@@ -30,6 +30,8 @@ class Contender(NamedTuple):
             said.append(self.semantics.heuristic)
         if self.semantics.weight != 1.0:
             said.append(f"w={self.semantics.weight:g}")
+        if algo.bidirectional and self.semantics.stop != STOP_RULES[0]:
+            said.append(self.semantics.stop)
         return f"{algo.short} ({', '.join(said)})" if said else algo.short
 
 
@@ -37,7 +39,8 @@ def parse_compare(text: str, semantics: Semantics = DEFAULT_SEMANTICS,
                   fit: bool = False, fewest: int = 2) -> list[Contender]:
     """``bfs,dfs`` or ``astar:manhattan,ucs``: ``fewest`` (two; the app's panes: one) to four
     registry keys, each informed one with an optional heuristic, A* with an optional weight
-    (``astar:w=2``, ``astar:manhattan:w=2``; else the given choices' weight).  ``ValueError``
+    (``astar:w=2``, ``astar:manhattan:w=2``; else the given choices' weight), a bidirectional
+    one with its stopping rule (``biastar:first-meeting``).  ``ValueError``
     (one line) for anything else -- or, with ``fit``, for a choice that does not apply to one
     of them, that one takes the default instead (:meth:`~tui_search.engine.search.choices.Semantics.
     fitted`: the app's settings apply to every pane where they can)."""
@@ -51,7 +54,7 @@ def parse_compare(text: str, semantics: Semantics = DEFAULT_SEMANTICS,
     for part in parts:
         key, *extras = part.split(":")
         algo = get_algorithm(key)
-        sem = semantics
+        sem, extras = _stop_of(part, algo, semantics, extras)
         heuristic = ""
         for extra in extras:
             if extra.startswith("w="):
@@ -81,6 +84,21 @@ def parse_compare(text: str, semantics: Semantics = DEFAULT_SEMANTICS,
             sem = sem.fitted(algo)
         out.append(Contender(key, sem))
     return out
+
+
+def _stop_of(part: str, algo: Algorithm, sem: Semantics, extras: list[str]
+             ) -> tuple[Semantics, list[str]]:
+    """The choices with ``part``'s stopping rule (a bidirectional search's: the choices'
+    own is theirs alone), and its other extras."""
+    stops = [extra for extra in extras if extra in STOP_RULES]
+    if stops and not algo.bidirectional:
+        raise ValueError(f"{part!r}: a stopping rule applies to bibfs, biucs, biastar only, "
+                         f"not {algo.key}")
+    if stops:
+        sem = sem.replace(stop=stops[-1])
+    elif not algo.bidirectional and sem.stop != STOP_RULES[0]:
+        sem = sem.replace(stop=STOP_RULES[0])
+    return sem, [extra for extra in extras if extra not in STOP_RULES]
 
 
 class TableRow(NamedTuple):

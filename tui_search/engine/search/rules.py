@@ -79,6 +79,9 @@ class Expansion:
     frontier_size: int  # entries on the frontier after the step
     depth_limit: int | None = None  # iterative deepening's limit in force
     new_root: Node | None = None  # iterative deepening: this step began a new iteration
+    #: A bidirectional search's: "forward" (from the start) or "backward" (from the goal);
+    #: "" for a search one way.
+    direction: str = ""
 
 
 # -- the frontier: which entry comes out next ---------------------------------------------------

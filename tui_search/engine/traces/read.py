@@ -326,9 +326,12 @@ def as_grid(board: Grid | Graph) -> Grid:
 def trace_line(step: Step) -> str:
     """A step in this format, the line ``--trace`` writes: the node taken off and exactly the
     successors it added, in order (a graph's: the nodes' names); iterative deepening adds the
-    depth limit, a discarded step says so."""
+    depth limit, a discarded step says so; a bidirectional search's names its direction
+    (``"dir": "forward"`` or ``"backward"``)."""
     node = step.node
     obj: dict[str, object] = {"step": step.index, "node": state_json(node)}
+    if step.direction:  # a bidirectional search's: which search took the step
+        obj["dir"] = step.direction
     if isinstance(node, str):  # a graph's: the nodes reached, by name
         obj["successors"] = [s for _, s in step.successors]
     else:
