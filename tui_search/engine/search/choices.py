@@ -361,7 +361,10 @@ class Semantics(Frozen):
         A*."""
         no_visit = self.tree_search or bool(self.recursive) or (
             algorithm is not None and (algorithm.iterative or algorithm.weighted))
-        goal_test = self.goal_test_for(algorithm) if algorithm else self.goal_test or "generate"
+        goal_test: str | None = (self.goal_test_for(algorithm) if algorithm
+                                 else self.goal_test or "generate")
+        if algorithm is not None and algorithm.bidirectional:
+            goal_test = None  # its two searches meet: no goal test
         queue = algorithm is None or algorithm.weighted
         return {
             "order": list(self.order),

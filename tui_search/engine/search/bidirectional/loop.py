@@ -51,7 +51,7 @@ from tui_search.engine.search.rules import (
     Visited,
 )
 from tui_search.engine.search.space import Space
-from tui_search.engine.search.state import State
+from tui_search.engine.search.state import State, state_text
 
 FORWARD, BACKWARD = "forward", "backward"
 
@@ -100,6 +100,7 @@ class BidirectionalSearch:
         self.meeting: tuple[Node, Node] | None = None
         self.generated = self.expanded = self.discarded = self.max_frontier = 0
         self.stopped_by = ""  # why it stopped: "meeting", "proven" or "empty"
+        self.bound = INF  # the bound that proved μ (proven)
 
     def _push(self, half: _Half, cell: State, parent: Node | None, move: str | None,
               g: float) -> bool:
@@ -136,8 +137,35 @@ class BidirectionalSearch:
             bound = fwd.smallest() + bwd.smallest()
         if bound >= self.mu:
             self.stopped_by = "proven"
+            self.bound = bound
             return True
         return False
+
+    def why(self) -> str:
+        """Why it stopped, in a sentence: "both searches reached (7,3): with first-meeting
+        this is the path, cost 14.24; nothing proves it the cheapest"."""
+        measure = "cost" if self.algorithm.weighted else "moves"
+        if self.meeting is None:
+            return "a frontier emptied before the two searches met: there is no path"
+        cell = state_text(self.meeting[0].cell)
+        mu = f"{self.mu:.2f}" if self.algorithm.weighted else f"{self.mu:g}"
+        if self.meeting[0].parent is None and self.meeting[1].parent is None:
+            return "the start is the goal"
+        if self.stopped_by == "meeting":
+            return (f"both searches reached {cell}: with first-meeting this is the path, "
+                    f"{measure} {mu}; nothing proves it the cheapest")
+        if self.stopped_by == "empty":
+            side = "forward" if not self.forward.queue else "backward"
+            return (f"the {side} frontier emptied: the best meeting, {cell}, {measure} {mu}, "
+                    "is the cheapest")
+        if self.algorithm.informed:
+            rule = f"a frontier's smallest f is {self.bound:.2f}, μ or more (front-to-end)"
+        else:
+            word, bound = (("g", f"{self.bound:.2f}") if self.algorithm.weighted
+                           else ("depths", f"{self.bound:g}"))
+            rule = f"the two frontiers' smallest {word} sum to {bound}, μ or more"
+        return (f"the best meeting, {cell}, {measure} μ = {mu}, is proven the cheapest: "
+                f"{rule}")
 
     def __iter__(self) -> Iterator[Expansion]:
         met = self._push(self.forward, self.space.start, None, None, 0.0)
@@ -227,6 +255,8 @@ def stream_bidirectional(board: Grid | Graph, algorithm: Algorithm, semantics: S
         max_frontier=peak,
         gave_up=gave_up,
         cost=search.space.path_cost(path),
+        stopped="" if gave_up else search.why(),
+        meeting=None if gave_up or search.meeting is None else search.meeting[0].cell,
     )
 
 

@@ -1,0 +1,93 @@
+"""Bidirectional search on the command line: ``-a bibfs|biucs|biastar`` headless, ``--stop
+proven|first-meeting``, the trace's ``"dir"`` on every line, the JSON's meeting and why it
+stopped, compare mode's ``biastar:first-meeting``, and PathFinding.js #28's map remade
+(``maps/pathfinding_js_28.txt``): the first meeting answers 14.24 (10 + 3·sqrt 2), the proven
+one 13.66 (8 + 4·sqrt 2)."""
+
+from __future__ import annotations
+
+import json
+from math import sqrt
+
+import pytest
+
+from tests.helpers import MAPS
+from tests.test_cli import TUTORIAL, run_cli
+
+TRAP = str(MAPS / "pathfinding_js_28.txt")
+
+
+def _json(capsys, *argv: str) -> dict:
+    code, out, err = run_cli(capsys, "--headless", "--json", *argv)
+    assert code == 0 and err == ""
+    result: dict = json.loads(out)
+    return result
+
+
+def test_the_trap_first_meeting_answers_the_longer_path(capsys) -> None:
+    first = _json(capsys, TRAP, "-a", "biastar", "--stop", "first-meeting")
+    assert round(first["cost"], 2) == 14.24
+    assert first["cost"] == pytest.approx(10 + 3 * sqrt(2), abs=1e-6)
+    assert first["meeting"] == [7, 3] and first["semantics"]["stop"] == "first-meeting"
+    assert "both searches reached (7,3): with first-meeting this is the path, cost 14.24" in (
+        first["stopped"])
+
+
+def test_the_trap_proven_answers_the_optimum(capsys) -> None:
+    proven = _json(capsys, TRAP, "-a", "biastar")
+    astar = _json(capsys, TRAP, "-a", "astar")
+    assert round(proven["cost"], 2) == 13.66
+    assert proven["cost"] == pytest.approx(8 + 4 * sqrt(2), abs=1e-6)
+    assert proven["cost"] == pytest.approx(astar["cost"], abs=1e-9)
+    assert proven["semantics"]["stop"] == "proven" and proven["meeting"] == [8, 3]
+    assert "proven the cheapest" in proven["stopped"] and "front-to-end" in proven["stopped"]
+    assert proven["semantics"]["goal_test"] is None
+
+
+def test_compare_shows_first_meeting_beside_proven(capsys) -> None:
+    code, out, _ = run_cli(capsys, TRAP, "--headless", "--compare",
+                           "biastar:first-meeting,biastar")
+    assert code == 0
+    first, proven = [line for line in out.splitlines() if line.startswith("  BiA*")][:2]
+    assert "BiA* (first-meeting)" in first and "14.243" in first
+    assert "13.657 *" in proven
+
+
+def test_every_trace_line_says_its_direction(capsys) -> None:
+    code, out, _ = run_cli(capsys, TRAP, "--headless", "-a", "bibfs", "--trace", "-")
+    lines = [json.loads(line) for line in out.splitlines()]
+    assert code == 0 and lines
+    assert [line["dir"] for line in lines] == [("forward", "backward")[i % 2]
+                                               for i in range(len(lines))]
+    assert lines[0]["node"] == [5, 4] and lines[1]["node"] == [15, 4]
+    one_way = run_cli(capsys, TRAP, "--headless", "-a", "bfs", "--trace", "-")[1]
+    assert '"dir": "forward"' not in one_way
+
+
+def test_the_text_says_why_it_stopped(capsys) -> None:
+    code, out, _ = run_cli(capsys, TUTORIAL, "--headless", "-a", "bibfs")
+    assert code == 0 and "Bidirectional BFS" in out
+    assert "stopped:      the best meeting" in out and "smallest depths sum to" in out
+
+
+def test_on_a_graph_the_backward_search_takes_the_roads_backwards(capsys) -> None:
+    first = _json(capsys, "romania", "-a", "biucs", "--stop", "first-meeting")
+    proven = _json(capsys, "romania", "-a", "biucs")
+    assert first["cost"] == 450 and proven["cost"] == 418  # the book's cheapest: 418
+    assert _json(capsys, "romania", "-a", "biastar")["semantics"]["heuristic"] == "euclidean"
+
+
+@pytest.mark.parametrize(("argv", "said"), [
+    ((TRAP, "-a", "biastar"), "runs headless for now"),
+    ((TRAP, "--compare", "bfs,bibfs"), "-a bibfs runs headless for now"),
+    ((TRAP, "--headless", "-a", "astar", "--stop", "proven"), "--stop applies to -a bibfs"),
+    ((TRAP, "--headless", "-a", "bibfs", "--visit", "expand"), "visit rule does not apply"),
+    ((TRAP, "--headless", "-a", "biastar", "--weight", "2"), "--weight applies to -a astar"),
+    (("romania", "--headless", "-a", "biastar", "--heuristic", "table"),
+     "needs one to the start"),
+    ((TRAP, "--headless", "--compare", "astar:first-meeting,ucs"),
+     "a stopping rule applies to bibfs"),
+])
+def test_what_a_bidirectional_search_refuses(capsys, argv, said: str) -> None:
+    code, out, err = run_cli(capsys, *argv)
+    assert code == 2 and out == "" and said in err and len(err.strip().splitlines()) == 1
