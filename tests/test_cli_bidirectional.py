@@ -78,8 +78,8 @@ def test_on_a_graph_the_backward_search_takes_the_roads_backwards(capsys) -> Non
 
 
 @pytest.mark.parametrize(("argv", "said"), [
-    ((TRAP, "-a", "biastar"), "runs headless for now"),
-    ((TRAP, "--compare", "bfs,bibfs"), "-a bibfs runs headless for now"),
+    ((TRAP, "-a", "biastar"), "biastar, a bidirectional search, runs headless for now"),
+    ((TRAP, "--compare", "bfs,bibfs"), "bibfs, a bidirectional search, runs headless"),
     ((TRAP, "--headless", "-a", "astar", "--stop", "proven"), "--stop applies to -a bibfs"),
     ((TRAP, "--headless", "-a", "bibfs", "--visit", "expand"), "visit rule does not apply"),
     ((TRAP, "--headless", "-a", "biastar", "--weight", "2"), "--weight applies to -a astar"),
@@ -91,3 +91,41 @@ def test_on_a_graph_the_backward_search_takes_the_roads_backwards(capsys) -> Non
 def test_what_a_bidirectional_search_refuses(capsys, argv, said: str) -> None:
     code, out, err = run_cli(capsys, *argv)
     assert code == 2 and out == "" and said in err and len(err.strip().splitlines()) == 1
+
+
+TRAP_EXERCISE = """\
+title = "The first meeting"
+text = "Find a map where stopping at the first meeting costs more than the proven meeting."
+map = "pathfinding_js_28.txt"
+searches = ["biastar:first-meeting", "biastar", "bibfs"]
+edits = ["obstacles"]
+solved = "biastar_first_meeting.cost > biastar.cost and bibfs.expanded > 0"
+"""
+
+
+def test_an_exercise_names_a_bidirectional_search_and_grades_it() -> None:
+    from tui_search.engine.course.exercise_file import parse_exercise
+    from tui_search.engine.course.grading import grade
+    from tui_search.engine.maps.load import parse_map_text
+
+    exercise = parse_exercise(TRAP_EXERCISE, str(MAPS / "trap.toml"))
+    assert [name for name, _ in exercise.searches] == ["biastar_first_meeting", "biastar",
+                                                        "bibfs"]
+    verdict = grade(exercise, exercise.board)
+    assert verdict.solved
+    assert round(verdict.figures["biastar_first_meeting.cost"], 2) == 14.24
+    assert round(verdict.figures["biastar.cost"], 2) == 13.66
+    open_map = parse_map_text("S...\n....\n...G\n", "open.txt")
+    assert not grade(exercise, open_map).solved  # no wall: the first meeting is the best
+
+
+def test_an_exercise_with_a_bidirectional_search_is_graded_headless_only(capsys,
+                                                                          tmp_path) -> None:
+    (tmp_path / "pathfinding_js_28.txt").write_text((MAPS / "pathfinding_js_28.txt")
+                                                    .read_text("utf-8"), "utf-8")
+    path = tmp_path / "trap.toml"
+    path.write_text(TRAP_EXERCISE, "utf-8")
+    code, out, _ = run_cli(capsys, "--exercise", str(path), "--headless")
+    assert code == 0 and "solved" in out
+    code, _, err = run_cli(capsys, "--exercise", str(path))
+    assert code == 2 and "biastar, a bidirectional search, runs headless for now" in err

@@ -47,9 +47,9 @@ def parse_options(argv: Sequence[str] | None = None) -> Options:
     _check_outputs(options)
     _check_export(options)
     _check_plain(options)
-    _check_bidirectional(options)
     options = options.replace(exercise_read=_own_exercise(options, _exercise_of(options)),
                               recipe=_generated_recipe(options))
+    _check_bidirectional(options)
     if options.output is not None or options.pseudocode:
         return options
     if options.lesson is not None:
@@ -122,15 +122,17 @@ def _check_bidirectional(options: Options) -> None:
     keys = [options.algorithm]
     if options.compare:
         keys += [part.split(":")[0].strip() for part in options.compare.split(",")]
+    if options.exercise_read is not None:
+        keys += [contender.algorithm for _, contender in options.exercise_read.searches]
     named = next((key for key in keys if key in BIDIRECTIONAL), None)
     if named is None or options.pseudocode:
         return
     if not options.headless or options.export is not None:
-        raise UsageError(f"-a {named} runs headless for now (--headless, with --json or "
-                         "--trace): the app's runs search one way")
-    for flag in ("exercise", "check_trace"):
-        if getattr(options, flag) is not None:
-            raise UsageError(f"-a {named} runs headless for now: leave out "
+        raise UsageError(f"{named}, a bidirectional search, runs headless for now: add "
+                         "--headless (with --json or --trace); the app's runs go one way")
+    for flag in ("check_trace", "plain"):
+        if getattr(options, flag) not in (None, False):
+            raise UsageError(f"{named}, a bidirectional search, runs headless for now: leave out "
                              f"--{flag.replace('_', '-')}")
 
 
