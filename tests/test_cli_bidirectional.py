@@ -129,3 +129,22 @@ def test_an_exercise_with_a_bidirectional_search_is_graded_headless_only(capsys,
     assert code == 0 and "solved" in out
     code, _, err = run_cli(capsys, "--exercise", str(path))
     assert code == 2 and "biastar, a bidirectional search, runs headless for now" in err
+
+
+def test_the_pseudocode_moves_its_lines_with_the_stopping_rule(capsys) -> None:
+    from tui_search.engine.search.choices import Semantics
+    from tui_search.engine.search.pseudocode import pseudocode
+    from tui_search.engine.search.registry import get_algorithm
+
+    proven = pseudocode(get_algorithm("biastar"), Semantics())
+    first = pseudocode(get_algorithm("biastar"), Semantics(stop="first-meeting"))
+    assert proven.number("proven") == proven.number("take") - 1  # checked before each take
+    assert "front-to-end" in proven.lines[proven.number("proven") - 1].text
+    assert first.number("proven") is None and first.number("first") == first.number("meet") + 1
+    bfs = pseudocode(get_algorithm("bibfs"), Semantics())
+    assert "smallest depth forward + smallest depth backward ≥ μ" in bfs.lines[
+        bfs.number("proven") - 1].text
+    assert bfs.number("cost") is None and bfs.number("discard") is None
+    code, out, _ = run_cli(capsys, "--pseudocode", "-a", "biucs", "--stop", "first-meeting")
+    assert code == 0 and out.startswith("BiUCS: Bidirectional uniform-cost search (stop at "
+                                        "the first meeting)")

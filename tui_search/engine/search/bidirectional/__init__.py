@@ -5,5 +5,6 @@ by the headless runs; the app's recorded runs go one way).
 * :mod:`~tui_search.engine.search.bidirectional.backward`: the backward search's space, the
   moves reversed;
 * :mod:`~tui_search.engine.search.bidirectional.loop`: the two searches in turn, their meeting
-  and the stopping rule (``first-meeting`` or ``proven``).
+  and the stopping rule (``first-meeting`` or ``proven``);
+* :mod:`~tui_search.engine.search.bidirectional.pseudo`: their pseudocode's lines.
 """
