@@ -12,13 +12,14 @@ so the path's moves read the same from either end.  The estimate is the heuristi
 
 from __future__ import annotations
 
+from array import array
 from collections.abc import Callable
 from math import hypot
 from typing import cast
 
 from tui_search.engine.maps.graph import Graph
-from tui_search.engine.maps.grid import DELTAS, Cell, Grid
-from tui_search.engine.search.choices import TABLE, Semantics
+from tui_search.engine.maps.grid import DELTAS, Cell, Grid, move_cost
+from tui_search.engine.search.choices import TABLE, Semantics, corner_allowed
 from tui_search.engine.search.heuristics import heuristic_for, priority_of
 from tui_search.engine.search.space import (
     GraphSpace,
@@ -35,13 +36,18 @@ class BackwardGridSpace:
     """A grid searched from its goal to its start: a cell's predecessors, in the order of the
     moves that reach it."""
 
-    def __init__(self, forward: GridSpace) -> None:
+    def __init__(self, forward: GridSpace, weighted: bool) -> None:
         self.forward = forward
         grid: Grid = forward.grid
         self.grid = grid
         self._start: Cell = forward.goal
         self.goal: Cell = cast(Cell, forward.start)
         self._heuristic = heuristic_for(forward.semantics.heuristic, grid.lowest_cost())
+        # As the forward space's: per cell, a bit per move of the order that reaches it
+        # legally (-1: not worked out yet).
+        self._legal_bits = array("h", [-1]) * (grid.width * grid.height)
+        self._order = [(move, DELTAS[move], move_cost(move) if weighted else 0.0)
+                       for move in forward.semantics.order]
 
     @property
     def start(self) -> State:
@@ -51,21 +57,25 @@ class BackwardGridSpace:
         return state == self.goal
 
     def successors(self, state: State) -> list[tuple[str, State, float]]:
-        """The cells one move of the order reaches ``state`` from (legal from there, the
-        corner rule as forward), each with the forward move's name and cost."""
+        """The cells one move of the order reaches ``state`` from (free, and the corner
+        rule's side cells -- the same two either way -- as forward), each with the forward
+        move's name and cost (its length times the cost of ``state``, the cell it enters)."""
         x, y = cast(Cell, state)
         grid = self.grid
-        out: list[tuple[str, State, float]] = []
-        for move in self.forward.semantics.order:
-            dx, dy = DELTAS[move]
-            before = (x - dx, y - dy)
-            if not grid.is_free(before):
-                continue
-            for name, cell, cost in self.forward.successors(before):
-                if name == move and cell == state:
-                    out.append((move, before, cost))
-                    break
-        return out
+        i = y * grid.width + x
+        bits = self._legal_bits[i]
+        if bits < 0:
+            corners, free = self.forward.semantics.corners, grid.is_free
+            bits = 0
+            for j, (_, (dx, dy), _) in enumerate(self._order):
+                px, py = x - dx, y - dy
+                if free((px, py)) and (not (dx and dy) or corner_allowed(
+                        corners, free((px + dx, py)), free((px, py + dy)))):
+                    bits |= 1 << j
+            self._legal_bits[i] = bits
+        enter = grid.cost(cast(Cell, state))
+        return [(move, (x - dx, y - dy), length * enter)
+                for j, (move, (dx, dy), length) in enumerate(self._order) if bits >> j & 1]
 
     def estimate(self) -> Callable[[State], float]:
         heuristic, (sx, sy) = self._heuristic, self.goal
@@ -160,7 +170,7 @@ def both_ways(board: Grid | Graph, semantics: Semantics, weighted: bool
         graph_back = BackwardGraphSpace(forward, weighted)
         return forward, graph_back, graph_back.roots
     assert isinstance(forward, GridSpace)
-    grid_back = BackwardGridSpace(forward)
+    grid_back = BackwardGridSpace(forward, weighted)
     return forward, grid_back, [grid_back.start]
 
 
