@@ -11,7 +11,7 @@ from math import sqrt
 
 import pytest
 
-from tests.helpers import MAPS
+from tests.helpers import MAPS, grid_from_rows
 from tests.test_cli import TUTORIAL, run_cli
 
 TRAP = str(MAPS / "pathfinding_js_28.txt")
@@ -148,3 +148,117 @@ def test_the_pseudocode_moves_its_lines_with_the_stopping_rule(capsys) -> None:
     code, out, _ = run_cli(capsys, "--pseudocode", "-a", "biucs", "--stop", "first-meeting")
     assert code == 0 and out.startswith("BiUCS: Bidirectional uniform-cost search (stop at "
                                         "the first meeting)")
+
+
+def student_bibfs(rows: list[str], first_meeting: bool, backward_forwards: bool = False
+                  ) -> list[dict]:
+    """A student's bidirectional BFS written again with no tui_search search code, on the
+    default eight moves: its trace lines.  ``backward_forwards``: the backward search lists
+    a cell's neighbours as the forward one does (the moves not reversed)."""
+    from collections import deque
+
+    from tui_search.engine.maps.grid import DEFAULT_ORDER, DELTAS
+
+    grid = grid_from_rows(rows)
+    start, goal = grid.start, grid.goal
+    assert start is not None and goal is not None
+
+    def neighbours(cell: tuple[int, int], back: bool) -> list[tuple[int, int]]:
+        out = []
+        for move in DEFAULT_ORDER:
+            dx, dy = DELTAS[move]
+            if back and not backward_forwards:
+                dx, dy = -dx, -dy
+            near = (cell[0] + dx, cell[1] + dy)
+            if grid.is_free(near):
+                out.append(near)
+        return out
+
+    queues = (deque([start]), deque([goal]))
+    depths: tuple[dict, dict] = ({start: 0}, {goal: 0})
+    best, lines, side = float("inf"), [], 0
+    while queues[0] and queues[1]:
+        if not first_meeting and depths[0][queues[0][0]] + depths[1][queues[1][0]] >= best:
+            break
+        node, added, met = queues[side].popleft(), [], False
+        for near in neighbours(node, side == 1):
+            if near in depths[side]:
+                continue
+            depths[side][near] = depths[side][node] + 1
+            queues[side].append(near)
+            added.append(near)
+            if near in depths[1 - side] and depths[0][near] + depths[1][near] < best:
+                best = depths[0][near] + depths[1][near]
+                met = first_meeting
+                if met:
+                    break
+        lines.append({"step": len(lines) + 1, "node": list(node),
+                      "dir": ("forward", "backward")[side],
+                      "successors": [{"node": list(a)} for a in added]})
+        if met:
+            break
+        side = 1 - side
+    return lines
+
+
+TRAP_ROWS = (MAPS / "pathfinding_js_28.txt").read_text("utf-8").splitlines()
+TRAP_ROWS = [row for row in TRAP_ROWS if not row.startswith(";")]
+
+
+def _check(capsys, tmp_path, lines: list[dict], *argv: str, board: str = TRAP
+           ) -> tuple[int, dict]:
+    path = tmp_path / "student.jsonl"
+    path.write_text("".join(json.dumps(line) + "\n" for line in lines), "utf-8")
+    code, out, err = run_cli(capsys, board, "--headless", "--json", "-a", "bibfs",
+                             "--check-trace", str(path), *argv)
+    assert err == ""
+    return code, json.loads(out)
+
+
+def test_a_students_bidirectional_bfs_matches_the_reference(capsys, tmp_path) -> None:
+    """Written again with no tui_search code, it is the reference step for step, under
+    either rule, and the app's own --trace is its lines."""
+    proven = student_bibfs(TRAP_ROWS, first_meeting=False)
+    code, verdict = _check(capsys, tmp_path, proven)
+    assert code == 0 and verdict["matches"] and verdict["steps"] == len(proven)
+    own = run_cli(capsys, TRAP, "--headless", "-a", "bibfs", "--trace", "-")[1].splitlines()
+    assert [json.loads(line)["node"] for line in own] == [line["node"] for line in proven]
+    first = student_bibfs(TRAP_ROWS, first_meeting=True)
+    code, verdict = _check(capsys, tmp_path, first, "--stop", "first-meeting")
+    assert code == 0 and verdict["matches"]
+
+
+def test_a_student_who_stops_at_the_first_meeting_is_told_so(capsys, tmp_path) -> None:
+    first = student_bibfs(TRAP_ROWS, first_meeting=True)
+    code, verdict = _check(capsys, tmp_path, first)
+    assert code == 1 and verdict["cause"] == "stopping rule"
+    assert "your search stops at the first meeting: both searches reached" in verdict["text"]
+    proven = student_bibfs(TRAP_ROWS, first_meeting=False)
+    code, verdict = _check(capsys, tmp_path, proven, "--stop", "first-meeting")
+    assert code == 1 and verdict["cause"] == "stopping rule"
+    assert "your search goes on, as proven does" in verdict["text"]
+
+
+def test_a_backward_search_that_does_not_reverse_its_moves(capsys, tmp_path) -> None:
+    """The goal in the open (on the trap's map, the goal on the edge, both orders add the
+    cells to its left alike): the backward search's second step lists them in another
+    order."""
+    rows = ["S......", ".......", ".......", "...G...", ".......", "......."]
+    board = tmp_path / "open.txt"
+    board.write_text("\n".join(rows) + "\n", "utf-8")
+    lines = student_bibfs(rows, first_meeting=False, backward_forwards=True)
+    code, verdict = _check(capsys, tmp_path, lines, board=str(board))
+    assert code == 1 and verdict["cause"] == "successors" and verdict["matched_steps"] == 1
+    assert "the backward search adds" in verdict["text"]
+    for first in (False, True):  # the moves reversed: the reference, either rule
+        lines = student_bibfs(rows, first_meeting=first)
+        stop = ("--stop", "first-meeting") if first else ()
+        assert _check(capsys, tmp_path, lines, *stop, board=str(board))[1]["matches"]
+
+
+def test_a_search_that_does_not_take_turns(capsys, tmp_path) -> None:
+    one_way = [json.loads(line) for line in run_cli(
+        capsys, TRAP, "--headless", "-a", "bfs", "--trace", "-")[1].splitlines()]
+    code, verdict = _check(capsys, tmp_path, one_way)
+    assert code == 1 and verdict["cause"] == "turn" and verdict["matched_steps"] == 1
+    assert "one step each in turn, forward first" in verdict["text"]

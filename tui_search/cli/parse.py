@@ -130,8 +130,8 @@ def _check_bidirectional(options: Options) -> None:
     if not options.headless or options.export is not None:
         raise UsageError(f"{named}, a bidirectional search, runs headless for now: add "
                          "--headless (with --json or --trace); the app's runs go one way")
-    for flag in ("check_trace", "plain"):
-        if getattr(options, flag) not in (None, False):
+    for flag in ("plain",):
+        if getattr(options, flag):
             raise UsageError(f"{named}, a bidirectional search, runs headless for now: leave out "
                              f"--{flag.replace('_', '-')}")
 
