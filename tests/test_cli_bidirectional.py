@@ -1,7 +1,7 @@
 """Bidirectional search on the command line: ``-a bibfs|biucs|biastar`` headless, ``--stop
 proven|first-meeting``, the trace's ``"dir"`` on every line, the JSON's meeting and why it
 stopped, compare mode's ``biastar:first-meeting``, and PathFinding.js #28's map remade
-(``maps/pathfinding_js_28.txt``): the first meeting answers 14.24 (10 + 3·sqrt 2), the proven
+(``maps/pathfinding-js-28.txt``): the first meeting answers 14.24 (10 + 3·sqrt 2), the proven
 one 13.66 (8 + 4·sqrt 2)."""
 
 from __future__ import annotations
@@ -14,7 +14,7 @@ import pytest
 from tests.helpers import MAPS, grid_from_rows
 from tests.test_cli import TUTORIAL, run_cli
 
-TRAP = str(MAPS / "pathfinding_js_28.txt")
+TRAP = str(MAPS / "pathfinding-js-28.txt")
 
 
 def _json(capsys, *argv: str) -> dict:
@@ -96,7 +96,7 @@ def test_what_a_bidirectional_search_refuses(capsys, argv, said: str) -> None:
 TRAP_EXERCISE = """\
 title = "The first meeting"
 text = "Find a map where stopping at the first meeting costs more than the proven meeting."
-map = "pathfinding_js_28.txt"
+map = "pathfinding-js-28.txt"
 searches = ["biastar:first-meeting", "biastar", "bibfs"]
 edits = ["obstacles"]
 solved = "biastar_first_meeting.cost > biastar.cost and bibfs.expanded > 0"
@@ -121,7 +121,7 @@ def test_an_exercise_names_a_bidirectional_search_and_grades_it() -> None:
 
 def test_an_exercise_with_a_bidirectional_search_is_graded_headless_only(capsys,
                                                                           tmp_path) -> None:
-    (tmp_path / "pathfinding_js_28.txt").write_text((MAPS / "pathfinding_js_28.txt")
+    (tmp_path / "pathfinding-js-28.txt").write_text((MAPS / "pathfinding-js-28.txt")
                                                     .read_text("utf-8"), "utf-8")
     path = tmp_path / "trap.toml"
     path.write_text(TRAP_EXERCISE, "utf-8")
@@ -201,7 +201,7 @@ def student_bibfs(rows: list[str], first_meeting: bool, backward_forwards: bool 
     return lines
 
 
-TRAP_ROWS = (MAPS / "pathfinding_js_28.txt").read_text("utf-8").splitlines()
+TRAP_ROWS = (MAPS / "pathfinding-js-28.txt").read_text("utf-8").splitlines()
 TRAP_ROWS = [row for row in TRAP_ROWS if not row.startswith(";")]
 
 

@@ -19,7 +19,7 @@ cell*).  The roots count: the forward search pushing the goal meets the backward
 
 * ``first-meeting``: stop at the first meeting, after the push that made it (that step
   *found*), and answer its path.  This is the trap: it is not the cheapest path for costs
-  (PathFinding.js's bidirectional A*, remade in ``maps/pathfinding_js_28.txt``), nor always
+  (PathFinding.js's bidirectional A*, remade in ``maps/pathfinding-js-28.txt``), nor always
   the fewest moves (bidirectional BFS).
 * ``proven``: keep the best meeting μ and stop, before taking an entry off, once no path
   cheaper than μ is left: for ``bibfs`` and ``biucs`` when the two frontiers' smallest g (BFS:
