@@ -86,7 +86,8 @@ def test_on_a_graph_the_backward_search_takes_the_roads_backwards(capsys) -> Non
     (("romania", "--headless", "-a", "biastar", "--heuristic", "table"),
      "needs one to the start"),
     ((TRAP, "--headless", "--compare", "astar:first-meeting,ucs"),
-     "a stopping rule applies to bibfs"),
+     "a stopping rule or a turn applies to bibfs"),
+    ((TRAP, "--headless", "-a", "bfs", "--turn", "smaller"), "--turn applies to -a bibfs"),
 ])
 def test_what_a_bidirectional_search_refuses(capsys, argv, said: str) -> None:
     code, out, err = run_cli(capsys, *argv)

@@ -21,12 +21,13 @@ from tui_search.engine.search.bidirectional.loop import (
     BidirectionalSearch,
     stream_bidirectional,
 )
-from tui_search.engine.search.choices import CORNER_RULES, Semantics
+from tui_search.engine.search.choices import CORNER_RULES, TURN_RULES, Semantics
 from tui_search.engine.search.heuristics import HEURISTICS, admissible
 from tui_search.engine.search.reference import stream
 from tui_search.engine.search.registry import get_algorithm
 
 BIG = 10**6
+UCS, BFS = get_algorithm("ucs"), get_algorithm("bfs")
 bidirectional = settings(max_examples=150, deadline=None,
                          suppress_health_check=[HealthCheck.too_slow])
 
@@ -39,7 +40,7 @@ def grid_choices(draw: st.DrawFn) -> Semantics:
                                 unique=True)))
     heuristic = draw(st.sampled_from([h for h in sorted(HEURISTICS) if admissible(h, order)]))
     return Semantics(order=order, corners=draw(st.sampled_from(CORNER_RULES)),
-                     heuristic=heuristic)
+                     heuristic=heuristic, turn=draw(st.sampled_from(TURN_RULES)))
 
 
 def assert_legal(board: Grid | Graph, sem: Semantics, path: list, moves: list[str]) -> None:
@@ -61,8 +62,9 @@ def assert_legal(board: Grid | Graph, sem: Semantics, path: list, moves: list[st
 @given(random_grids(max_side=10, costs=True), grid_choices())
 def test_proven_costs_equal_uniform_cost_searchs_on_random_maps(grid: Grid,
                                                                 sem: Semantics) -> None:
-    ucs = stream(grid, get_algorithm("ucs"), sem, BIG)
-    bfs = stream(grid, get_algorithm("bfs"), sem, BIG)
+    """Under either turn: a step each in turn, or the smaller frontier's."""
+    ucs = stream(grid, get_algorithm("ucs"), sem.fitted(UCS), BIG)
+    bfs = stream(grid, get_algorithm("bfs"), sem.fitted(BFS), BIG)
     for key in ("biucs", "biastar"):
         out = stream(grid, get_algorithm(key), sem, BIG)
         assert out.found == ucs.found, key
@@ -79,8 +81,8 @@ def test_proven_costs_equal_uniform_cost_searchs_on_random_maps(grid: Grid,
 @given(random_grids(max_side=10, costs=True), grid_choices())
 def test_first_meeting_finds_a_path_never_cheaper_than_the_optimum(grid: Grid,
                                                                    sem: Semantics) -> None:
-    ucs = stream(grid, get_algorithm("ucs"), sem, BIG)
-    bfs = stream(grid, get_algorithm("bfs"), sem, BIG)
+    ucs = stream(grid, get_algorithm("ucs"), sem.fitted(UCS), BIG)
+    bfs = stream(grid, get_algorithm("bfs"), sem.fitted(BFS), BIG)
     first = sem.replace(stop="first-meeting")
     for key, best in (("biucs", ucs), ("biastar", ucs), ("bibfs", bfs)):
         out = stream(grid, get_algorithm(key), first, BIG)
@@ -95,13 +97,14 @@ def test_first_meeting_finds_a_path_never_cheaper_than_the_optimum(grid: Grid,
 
 
 @bidirectional
-@given(graphs(), st.sampled_from(("zero", "euclidean")))
-def test_proven_costs_equal_uniform_cost_searchs_on_random_graphs(g, heuristic: str) -> None:
+@given(graphs(), st.sampled_from(("zero", "euclidean")), st.sampled_from(TURN_RULES))
+def test_proven_costs_equal_uniform_cost_searchs_on_random_graphs(g, heuristic: str,
+                                                                  turn: str) -> None:
     """Roads one way are taken against their way backward; closed nodes are never entered."""
     graph = app_graph(g)
-    sem = Semantics(order=("file",), heuristic=heuristic)
-    ucs = stream(graph, get_algorithm("ucs"), sem, BIG)
-    bfs = stream(graph, get_algorithm("bfs"), sem, BIG)
+    sem = Semantics(order=("file",), heuristic=heuristic, turn=turn)
+    ucs = stream(graph, get_algorithm("ucs"), sem.fitted(UCS), BIG)
+    bfs = stream(graph, get_algorithm("bfs"), sem.fitted(BFS), BIG)
     for key in ("biucs", "biastar"):
         for stop in ("proven", "first-meeting"):
             out = stream(graph, get_algorithm(key), sem.replace(stop=stop), BIG)
@@ -137,6 +140,22 @@ def test_the_steps_alternate_forward_then_backward(grid: Grid, key: str, stop: s
     assert sum(s.found for s in steps) == (search.stopped_by == "meeting" and bool(steps))
 
 
+@bidirectional
+@given(random_grids(max_side=8, costs=True), st.sampled_from(("bibfs", "biucs", "biastar")),
+       st.sampled_from(("proven", "first-meeting")))
+def test_the_smaller_frontier_takes_the_next_step(grid: Grid, key: str, stop: str) -> None:
+    """``turn smaller``: each step is the search's whose frontier was smaller before it (the
+    forward's on a tie)."""
+    sem = Semantics(stop=stop, turn="smaller")
+    search = BidirectionalSearch(grid, get_algorithm(key), sem)
+    sizes = (len(search.forward.queue), len(search.backward.queue))
+    for step in search:
+        if not (sizes[0] or sizes[1]):  # before the roots are pushed: the first step
+            sizes = (1, 1)
+        assert step.direction == ("backward" if sizes[0] > sizes[1] else "forward")
+        sizes = (len(search.forward.queue), len(search.backward.queue))
+
+
 def test_the_start_is_the_goal() -> None:
     grid = grid_from_rows(TUTORIAL_ROWS)
     grid.goal = grid.start
@@ -166,7 +185,8 @@ def test_a_run_that_gives_up_answers_nothing() -> None:
     ("biastar", {"goal_test": "expand"}, "no goal test"),
     ("biastar", {"weight": 2.0}, "a weight applies to A*"),
     ("biastar", {"ties": "lifo"}, "plain choices"),
-    ("astar", {"stop": "first-meeting"}, "stopping rule applies to a bidirectional search"),
+    ("astar", {"stop": "first-meeting"}, "a stopping rule or a turn applies to a bidirect"),
+    ("ucs", {"turn": "smaller"}, "a stopping rule or a turn applies to a bidirectional"),
 ])
 def test_choices_a_bidirectional_search_does_not_take(key: str, changes: dict,
                                                       words: str) -> None:
@@ -181,3 +201,7 @@ def test_the_json_names_the_stopping_rule_of_a_bidirectional_search_only() -> No
     assert sem.as_json(get_algorithm("biastar"))["stop"] == "first-meeting"
     assert "stop" not in Semantics().as_json(get_algorithm("astar"))
     assert sem.differences(get_algorithm("biastar")) == ["stop at the first meeting"]
+    both = sem.replace(turn="smaller")
+    assert both.as_json(get_algorithm("bibfs"))["turn"] == "smaller"
+    assert both.differences(get_algorithm("bibfs")) == ["stop at the first meeting",
+                                                        "the smaller frontier first"]

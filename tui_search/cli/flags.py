@@ -144,7 +144,7 @@ def write_generated(options: Options) -> int:
 
 #: The choice flags whose default is None (not given).
 _CHOICE_FLAGS = ("corners", "visit", "goal_test", "heuristic", "recursive_lines", "ties",
-                 "cost_tolerance", "weight", "reopen", "mark_start", "stop")
+                 "cost_tolerance", "weight", "reopen", "mark_start", "stop", "turn")
 
 
 def changed_choice_flags(options: Options) -> list[str]:
@@ -190,7 +190,8 @@ def _choices_of(options: Options) -> dict[str, object]:
         heuristic=heuristic, recursive=recursive,
         path_check=not options.no_path_check)
     for name, value in (("ties", options.ties), ("cost_tolerance", options.cost_tolerance),
-                        ("weight", options.weight), ("stop", options.stop)):
+                        ("weight", options.weight), ("stop", options.stop),
+                        ("turn", options.turn)):
         if value is not None:
             choices[name] = value
     for name, value in (("reopen", options.reopen), ("mark_start", options.mark_start)):
@@ -252,8 +253,9 @@ def _refused_flag(options: Options) -> str:
     for flag in ("ties", "cost_tolerance", "reopen"):
         if getattr(options, flag) is not None and not algorithm.weighted:
             return f"--{flag.replace('_', '-')} applies to -a {weighted} only, not {key}"
-    if options.stop is not None and not algorithm.bidirectional:
-        return f"--stop applies to -a bibfs, biucs, biastar only, not {key}"
+    for flag in ("stop", "turn"):
+        if getattr(options, flag) is not None and not algorithm.bidirectional:
+            return f"--{flag} applies to -a bibfs, biucs, biastar only, not {key}"
     if options.weight is not None and (algorithm.priority != "g+h" or algorithm.bidirectional):
         return f"--weight applies to -a astar only (f = g + W·h), not {key}"
     if (options.recursive or options.recursive_lines) and algorithm.key not in ("dfs", "iddfs"):

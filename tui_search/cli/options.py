@@ -29,7 +29,7 @@ FLAGS = (
     "map", "algorithm", "start", "goal", "terrain", "scen", "scen_row", "order", "corners",
     "no_corner_cutting", "visit", "goal_test", "heuristic", "tree_search", "no_path_check",
     "recursive", "recursive_lines", "ties", "cost_tolerance", "weight", "reopen", "mark_start",
-    "stop", "compare",
+    "stop", "turn", "compare",
     "exercise", "generate", "size", "seed", "output", "max_steps", "theme", "pseudocode",
     "lesson", "headless", "json", "csv", "trace", "trace_format", "check_trace", "replay",
     "serve", "host", "port", "save_dir", "shared_save_dir", "app_memory", "token_file",
@@ -70,6 +70,7 @@ class Options(Frozen):
     cost_tolerance: float | None
     weight: float | None
     stop: str | None
+    turn: str | None
     reopen: str | None
     mark_start: str | None
     compare: str | None

@@ -25,6 +25,7 @@ from tui_search.engine.search.choices import (
     STOP_RULES,
     TABLE,
     TIE_RULES,
+    TURN_RULES,
     VISIT_RULES,
 )
 from tui_search.engine.search.heuristics import CHEAPER_BY, DEFAULT_HEURISTIC, HEURISTICS
@@ -138,6 +139,10 @@ def build_parser() -> argparse.ArgumentParser:
                    help="when -a bibfs, biucs or biastar stops: proven (default) once its "
                    "best meeting is proven the cheapest; first-meeting as soon as the two "
                    "searches reach a cell in common (the trap: not the cheapest path)")
+    p.add_argument("--turn", choices=TURN_RULES, default=None,
+                   help="whose step -a bibfs, biucs or biastar takes next: alternate "
+                   "(default: forward, backward, ...) or smaller (the search whose frontier "
+                   "is smaller; forward on a tie)")
     p.add_argument("--reopen", choices=("yes", "no"), default=None,
                    help="may -a ucs, greedy or astar push a cell it has expanded again, "
                    "reached with a lower g (yes, default); no: a closed set")

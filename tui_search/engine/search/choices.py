@@ -23,6 +23,8 @@
   (:mod:`~tui_search.engine.search.bidirectional.loop`): ``proven`` once its best meeting is
   proven the cheapest, ``first-meeting`` as soon as the two searches reach a cell in common
   (the trap: not the cheapest path, for costs).
+* ``turn``: whose step a bidirectional search takes next: ``alternate`` (forward, backward,
+  forward, ...) or ``smaller`` (the search whose frontier is smaller; forward on a tie).
 
 On a graph (:mod:`tui_search.engine.search.space`), ``order`` is one word of
 :data:`GRAPH_ORDERS` (``file``: the roads as the file lists them; ``name``: by the names they
@@ -87,6 +89,8 @@ TIE_RULES: tuple[str, ...] = ("fifo", "lifo", "node", "low-h", "high-h", "low-g"
 RECURSIVE_FORMS: tuple[str, ...] = ("neighbours", "calls")
 #: A bidirectional search's stopping rules (the first is the default).
 STOP_RULES: tuple[str, ...] = ("proven", "first-meeting")
+#: Whose step a bidirectional search takes next (the first is the default).
+TURN_RULES: tuple[str, ...] = ("alternate", "smaller")
 #: The tie rules, in the words a student would say them.
 TIE_WORDS: dict[str, str] = {
     "fifo": "oldest first", "lifo": "newest first", "node": "smallest cell first",
@@ -110,6 +114,7 @@ EXPLAIN: dict[str, str] = {
     "mark_start": "is the start marked reached when pushed (off: it can be pushed again)?",
     "weight": "weighted A*: f = g + W·h, a path at most W × the optimum (1: A*)",
     "stop": "bidirectional: stop once the best meeting is proven, or at the first meeting",
+    "turn": "bidirectional: a step each in turn, or the smaller frontier's step next",
 }
 
 def weight_text(weight: float) -> str:
@@ -137,7 +142,7 @@ class Semantics(Frozen):
 
     __slots__ = _FIELDS = ("order", "corners", "visit", "goal_test", "tree_search", "heuristic",
                            "ties", "cost_tolerance", "reopen", "recursive", "path_check",
-                           "mark_start", "weight", "stop")
+                           "mark_start", "weight", "stop", "turn")
 
     order: tuple[str, ...]
     corners: str
@@ -153,13 +158,15 @@ class Semantics(Frozen):
     mark_start: bool
     weight: float  # weighted A*'s W (1: A*)
     stop: str  # a bidirectional search's stopping rule
+    turn: str  # whose step a bidirectional search takes next
 
     def __init__(self, order: tuple[str, ...] = DEFAULT_ORDER, corners: str = "always",
                  visit: str = "generate", goal_test: str | None = None,
                  tree_search: bool = False, heuristic: str = DEFAULT_HEURISTIC,
                  ties: str = "fifo", cost_tolerance: float = CHEAPER_BY, reopen: bool = True,
                  recursive: str = "", path_check: bool = True, mark_start: bool = True,
-                 weight: float = 1.0, stop: str = STOP_RULES[0]) -> None:
+                 weight: float = 1.0, stop: str = STOP_RULES[0],
+                 turn: str = TURN_RULES[0]) -> None:
         graph_order = len(order) == 1 and order[0] in GRAPH_ORDERS
         if not graph_order and (not order or any(d not in DELTAS for d in order)
                                 or len(set(order)) != len(order)):
@@ -172,6 +179,7 @@ class Semantics(Frozen):
             ("ties", ties, TIE_RULES),
             ("recursive", recursive or RECURSIVE_FORMS[0], RECURSIVE_FORMS),
             ("stopping rule", stop, STOP_RULES),
+            ("turn", turn, TURN_RULES),
         ):
             if value not in allowed:
                 raise ValueError(f"{name} {value!r}: use {', '.join(allowed)}")
@@ -191,7 +199,8 @@ class Semantics(Frozen):
         self._assign(order=order, corners=corners, visit=visit, goal_test=goal_test,
                      tree_search=tree_search, heuristic=heuristic, ties=ties,
                      cost_tolerance=float(cost_tolerance), reopen=reopen, recursive=recursive,
-                     path_check=path_check, mark_start=mark_start, weight=weight, stop=stop)
+                     path_check=path_check, mark_start=mark_start, weight=weight, stop=stop,
+                     turn=turn)
 
     def check(self, algorithm: Algorithm) -> None:
         """Refuse the combinations that make no sense for ``algorithm`` (``ValueError``)."""
@@ -224,8 +233,9 @@ class Semantics(Frozen):
             return f"recursion is a depth-first search's (DFS, IDDFS), not {name}'s"
         if self.weight != 1.0 and (algorithm.priority != "g+h" or algorithm.bidirectional):
             return f"a weight applies to A* (f = g + W·h), not {name}"
-        if self.stop != STOP_RULES[0] and not algorithm.bidirectional:
-            return f"a stopping rule applies to a bidirectional search, not {name}"
+        if (self.stop, self.turn) != (STOP_RULES[0], TURN_RULES[0]) and not (
+                algorithm.bidirectional):
+            return f"a stopping rule or a turn applies to a bidirectional search, not {name}"
         return ""
 
     def _both_ways_refusal(self, name: str) -> str:
@@ -261,8 +271,8 @@ class Semantics(Frozen):
             out = out.replace(recursive="")
         if (algorithm.priority != "g+h" or algorithm.bidirectional) and out.weight != 1.0:
             out = out.replace(weight=1.0)
-        if not algorithm.bidirectional and out.stop != STOP_RULES[0]:
-            out = out.replace(stop=STOP_RULES[0])
+        if not algorithm.bidirectional:
+            out = out.replace(stop=STOP_RULES[0], turn=TURN_RULES[0])
         return out
 
     def goal_test_for(self, algorithm: Algorithm) -> str:
@@ -317,6 +327,8 @@ class Semantics(Frozen):
             out.append(f"weight {weight_text(self.weight)}")
         if self.stop != STOP_RULES[0] and (algorithm is None or algorithm.bidirectional):
             out.append("stop at the first meeting")
+        if self.turn != TURN_RULES[0] and (algorithm is None or algorithm.bidirectional):
+            out.append("the smaller frontier first")
         out += self.published_words()
         return out
 
@@ -380,8 +392,8 @@ class Semantics(Frozen):
             "path_check": self.path_check if self.tree_search else None,
             "mark_start": self.mark_start,
             "weight": self.weight if algorithm is None or algorithm.priority == "g+h" else None,
-            **({"stop": self.stop} if algorithm is not None and algorithm.bidirectional
-               else {}),
+            **({"stop": self.stop, "turn": self.turn}
+               if algorithm is not None and algorithm.bidirectional else {}),
         }
 
 

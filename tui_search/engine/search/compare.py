@@ -10,7 +10,12 @@ Plain Python, no UI.
 from collections.abc import Sequence
 from typing import NamedTuple
 
-from tui_search.engine.search.choices import DEFAULT_SEMANTICS, STOP_RULES, Semantics
+from tui_search.engine.search.choices import (
+    DEFAULT_SEMANTICS,
+    STOP_RULES,
+    TURN_RULES,
+    Semantics,
+)
 from tui_search.engine.search.outcome import Outcome
 from tui_search.engine.search.registry import Algorithm, get_algorithm
 
@@ -32,6 +37,8 @@ class Contender(NamedTuple):
             said.append(f"w={self.semantics.weight:g}")
         if algo.bidirectional and self.semantics.stop != STOP_RULES[0]:
             said.append(self.semantics.stop)
+        if algo.bidirectional and self.semantics.turn != TURN_RULES[0]:
+            said.append(self.semantics.turn)
         return f"{algo.short} ({', '.join(said)})" if said else algo.short
 
 
@@ -40,7 +47,8 @@ def parse_compare(text: str, semantics: Semantics = DEFAULT_SEMANTICS,
     """``bfs,dfs`` or ``astar:manhattan,ucs``: ``fewest`` (two; the app's panes: one) to four
     registry keys, each informed one with an optional heuristic, A* with an optional weight
     (``astar:w=2``, ``astar:manhattan:w=2``; else the given choices' weight), a bidirectional
-    one with its stopping rule (``biastar:first-meeting``).  ``ValueError``
+    one with its stopping rule and turn (``biastar:first-meeting``, ``bibfs:smaller``).
+    ``ValueError``
     (one line) for anything else -- or, with ``fit``, for a choice that does not apply to one
     of them, that one takes the default instead (:meth:`~tui_search.engine.search.choices.Semantics.
     fitted`: the app's settings apply to every pane where they can)."""
@@ -88,17 +96,17 @@ def parse_compare(text: str, semantics: Semantics = DEFAULT_SEMANTICS,
 
 def _stop_of(part: str, algo: Algorithm, sem: Semantics, extras: list[str]
              ) -> tuple[Semantics, list[str]]:
-    """The choices with ``part``'s stopping rule (a bidirectional search's: the choices'
-    own is theirs alone), and its other extras."""
-    stops = [extra for extra in extras if extra in STOP_RULES]
-    if stops and not algo.bidirectional:
-        raise ValueError(f"{part!r}: a stopping rule applies to bibfs, biucs, biastar only, "
-                         f"not {algo.key}")
-    if stops:
-        sem = sem.replace(stop=stops[-1])
-    elif not algo.bidirectional and sem.stop != STOP_RULES[0]:
-        sem = sem.replace(stop=STOP_RULES[0])
-    return sem, [extra for extra in extras if extra not in STOP_RULES]
+    """The choices with ``part``'s stopping rule and turn (a bidirectional search's: the
+    choices' own are theirs alone), and its other extras."""
+    rules = [extra for extra in extras if extra in STOP_RULES + TURN_RULES]
+    if rules and not algo.bidirectional:
+        raise ValueError(f"{part!r}: a stopping rule or a turn applies to bibfs, biucs, "
+                         f"biastar only, not {algo.key}")
+    if not algo.bidirectional:
+        return sem.replace(stop=STOP_RULES[0], turn=TURN_RULES[0]), extras
+    for extra in rules:
+        sem = sem.replace(**{"stop" if extra in STOP_RULES else "turn": extra})
+    return sem, [extra for extra in extras if extra not in rules]
 
 
 class TableRow(NamedTuple):

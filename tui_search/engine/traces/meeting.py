@@ -108,8 +108,10 @@ def check_bidirectional(trace: Trace, board: Grid | Graph, key: str, semantics: 
                 f"{show(e.node.cell)}, the {e.direction} search's turn")
         later = ref[diff + 1] if diff + 1 < len(ref) else None
         if later is not None and later.node.cell == t.node:
+            rule = ("one step each in turn, forward first" if semantics.turn == "alternate"
+                    else "the step of the one whose frontier is smaller, forward on a tie")
             return verdict(False, diff, "turn", text, "your search takes the other search's "
-                           "step: the two searches take one step each in turn, forward first")
+                           f"step: the two searches take {rule}")
         return verdict(False, diff, "expansion", text)
     added = ", ".join(show(s) for s in t.successors) or "nothing"
     wanted = ", ".join(show(s.cell) for s in e.successors) or "nothing"

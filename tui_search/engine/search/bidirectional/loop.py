@@ -1,6 +1,7 @@
 """Bidirectional search, the reference: a forward search from the start and a backward one
 from the goal (:mod:`~tui_search.engine.search.bidirectional.backward`: the moves reversed),
-one step each in turn, the forward first, until they meet.  Part of the specification, as
+one step each in turn, the forward first (or, ``--turn smaller``, the step of the search whose
+frontier is smaller, the forward's on a tie), until they meet.  Part of the specification, as
 :mod:`~tui_search.engine.search.reference` is, and streamed as it is by the headless runs.
 
 Each half is the one-directional search's own loop on its own frontier and reached set: BFS's
@@ -38,7 +39,7 @@ from collections.abc import Callable, Iterator
 from tui_search.engine.maps.graph import Graph
 from tui_search.engine.maps.grid import Grid
 from tui_search.engine.search.bidirectional.backward import both_ways
-from tui_search.engine.search.choices import STOP_RULES, Semantics
+from tui_search.engine.search.choices import STOP_RULES, TURN_RULES, Semantics
 from tui_search.engine.search.outcome import Outcome
 from tui_search.engine.search.registry import Algorithm
 from tui_search.engine.search.rules import (
@@ -175,9 +176,13 @@ class BidirectionalSearch:
             self.stopped_by = "meeting"
             return
         turn = (self.forward, self.backward)
+        smaller = self.semantics.turn == TURN_RULES[1]
         k = 0
         while not self._done():
-            half = turn[k % 2]
+            if smaller:  # the smaller frontier's step; forward on a tie
+                half = turn[len(self.forward.queue) > len(self.backward.queue)]
+            else:
+                half = turn[k % 2]
             k += 1
             node = half.queue.take()
             size = len(self.forward.queue) + len(self.backward.queue)

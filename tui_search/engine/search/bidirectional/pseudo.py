@@ -4,7 +4,7 @@ lines): what :mod:`~tui_search.engine.search.bidirectional.loop` does, in its or
 
 from __future__ import annotations
 
-from tui_search.engine.search.choices import STOP_RULES, Semantics
+from tui_search.engine.search.choices import STOP_RULES, TURN_RULES, Semantics
 from tui_search.engine.search.registry import Algorithm
 
 _CORNER_WORDS = {
@@ -17,6 +17,7 @@ def bidirectional_lines(algorithm: Algorithm, semantics: Semantics, move_cost: s
                         ) -> list[tuple[str, int, str]]:
     """The lines of ``algorithm`` (bibfs, biucs, biastar) under ``semantics``."""
     weighted, proven = algorithm.weighted, semantics.stop == STOP_RULES[0]
+    alternate = semantics.turn == TURN_RULES[0]
     noun = algorithm.frontier.noun
     by = semantics.priority_words(algorithm)
     if algorithm.informed:
@@ -32,17 +33,21 @@ def bidirectional_lines(algorithm: Algorithm, semantics: Semantics, move_cost: s
            ("goal_start", 0, "if START is GOAL: return the path START"),
            ("side", 0, "side ← forward  (then backward, then forward: a step each in turn)"),
            ("while", 0, "while neither frontier is empty:")]
+    if not alternate:
+        del out[4]  # the side is chosen at each step
     if proven and algorithm.informed:
         out.append(("proven", 1, "if max(smallest f forward, smallest f backward) ≥ μ: "
                                  "return meeting's path  (front-to-end bound)"))
     elif proven:
         out.append(("proven", 1, f"if smallest {cost} forward + smallest {cost} backward "
                                  "≥ μ: return meeting's path"))
+    if not alternate:
+        out.append(("side", 1, "side ← the side whose frontier is smaller (forward on a tie)"))
     order_name = algorithm.priority_name
     out.append(("take", 1, f"node ← {algorithm.frontier.take_words(order_name)} of side"))
     if weighted:
         out.append(("discard", 1, "if node.g > side's best g[node]: stale, discard it, "
-                                  "side ← the other, go on"))
+                                  + ("side ← the other, go on" if alternate else "go on")))
     out.append(("for", 1, "for each s one move from node on side's way (backward: the cells "
                           f"whose move reaches node), moves in order {','.join(semantics.order)}:"))
     out.append(("blocked", 2, "if s is off the map or an obstacle: skip s"))
@@ -60,7 +65,8 @@ def bidirectional_lines(algorithm: Algorithm, semantics: Semantics, move_cost: s
     if not proven:
         out.append(("first", 3, "return meeting's path  (first-meeting: the first cell both "
                                 "reached, not proven the cheapest)"))
-    out.append(("turn", 1, "side ← the other side"))
+    if alternate:
+        out.append(("turn", 1, "side ← the other side"))
     out.append(("fail", 0, "return meeting's path, or no path when there is no meeting"))
     return out
 
