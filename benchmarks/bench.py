@@ -16,7 +16,7 @@ gives a "not installed" row.  See benchmarks/README.md for what each row means.
 This file is the entry point only: each section lives in its own module of this package
 (core.py, fallback.py, engine.py, choices.py, informed.py, jump.py, step.py, startup.py,
 instructions.py, class_load.py, terrain.py, big_map.py, diagnose.py, graphs.py,
-weighted.py), on the shared
+weighted.py, bidirectional.py), on the shared
 table.py,
 harness.py and
 maps.py.
@@ -38,6 +38,7 @@ ROOT = HERE.parent
 sys.path[:] = [p for p in sys.path if Path(p or ".").resolve() != HERE]
 sys.path.insert(0, str(ROOT))
 
+from benchmarks.bidirectional import bench_bidirectional
 from benchmarks.big_map import bench_big_map
 from benchmarks.choices import bench_choices
 from benchmarks.class_load import bench_class_load
@@ -63,7 +64,8 @@ SECTIONS = {"core": bench_core, "fallback": bench_fallback, "engine": bench_engi
             "step": bench_step, "compare": bench_compare, "startup": bench_startup,
             "instructions": bench_instructions, "class_load": bench_class_load,
             "terrain": bench_terrain, "big_map": bench_big_map, "diagnose": bench_diagnose,
-            "graph": bench_graph, "weighted": bench_weighted}
+            "graph": bench_graph, "weighted": bench_weighted,
+            "bidirectional": bench_bidirectional}
 
 
 def main(argv: list[str] | None = None) -> int:

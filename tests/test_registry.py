@@ -8,7 +8,7 @@ from pathlib import Path
 from textual.binding import Binding
 
 from tui_search.cli.parser import build_parser
-from tui_search.engine.search.registry import ALGORITHMS, Frontier
+from tui_search.engine.search.registry import ALGORITHMS, BIDIRECTIONAL, Frontier
 from tui_search.tui.dialogs.help import KEYS
 from tui_search.tui.screens.main import MainScreen
 
@@ -35,7 +35,7 @@ def test_the_keys_the_cli_and_the_help_come_from_the_registry() -> None:
         binding = bindings[f"algorithm({algo.key!r})"]
         assert binding.key == algo.app_key and binding.description == algo.short
     choices = next(a for a in build_parser()._actions if a.dest == "algorithm").choices
-    assert list(choices) == list(ALGORITHMS)
+    assert list(choices) == [*ALGORITHMS, *BIDIRECTIONAL]
     keys_line = dict(KEYS)[" ".join(a.app_key for a in ALGORITHMS.values())]
     assert keys_line == ("BFS / DFS / IDDFS / UCS / Greedy / A* / IDA* "
                          "(a new search, same map)")

@@ -144,7 +144,7 @@ def write_generated(options: Options) -> int:
 
 #: The choice flags whose default is None (not given).
 _CHOICE_FLAGS = ("corners", "visit", "goal_test", "heuristic", "recursive_lines", "ties",
-                 "cost_tolerance", "weight", "reopen", "mark_start", "preset")
+                 "cost_tolerance", "weight", "reopen", "mark_start", "preset", "stop", "turn")
 
 
 def changed_choice_flags(options: Options) -> list[str]:
@@ -165,7 +165,8 @@ def _choices_of(options: Options) -> dict[str, object]:
     graph = options.graph
     if graph is not None:  # a graph's orders and heuristics
         order = graph_order(options.order, options.order != ",".join(DEFAULT_ORDER))
-        heuristic = graph_heuristic(options.heuristic, graph)
+        heuristic = graph_heuristic(options.heuristic, graph,
+                                    get_algorithm(options.algorithm).bidirectional)
     else:
         try:
             order = parse_order(options.order)
@@ -195,7 +196,8 @@ def _choices_of(options: Options) -> dict[str, object]:
                              "graph has no cells")
         choices["flip_even"] = True
     for name, value in (("ties", options.ties), ("cost_tolerance", options.cost_tolerance),
-                        ("weight", options.weight)):
+                        ("weight", options.weight), ("stop", options.stop),
+                        ("turn", options.turn)):
         if value is not None:
             choices[name] = value
     for name, value in (("reopen", options.reopen), ("mark_start", options.mark_start)):
@@ -218,12 +220,18 @@ def graph_order(text: str, given: bool) -> tuple[str, ...]:
     return (text,)
 
 
-def graph_heuristic(given: str | None, graph: Graph) -> str:
-    """``--heuristic`` on a graph, checked against what the graph has."""
+def graph_heuristic(given: str | None, graph: Graph, both_ways: bool = False) -> str:
+    """``--heuristic`` on a graph, checked against what the graph has (``both_ways``: for a
+    bidirectional search, whose backward half needs an estimate to the start: not the
+    table, which estimates the cost to the goal)."""
     if given is None:  # the file's table, else the straight line between places, else 0
         from tui_search.engine.search.choices import graph_heuristics
 
-        return graph_heuristics(graph)[0]
+        return next(h for h in graph_heuristics(graph) if not (both_ways and h == TABLE))
+    if both_ways and given == TABLE:
+        raise UsageError("--heuristic table estimates the cost to the goal; a bidirectional "
+                         "search's backward half needs one to the start: use euclidean or "
+                         "zero")
     if given not in GRAPH_HEURISTICS:
         raise UsageError(f"--heuristic {given}: a graph's heuristics are "
                          f"{', '.join(GRAPH_HEURISTICS)}")
@@ -251,7 +259,10 @@ def _refused_flag(options: Options) -> str:
     for flag in ("ties", "cost_tolerance", "reopen"):
         if getattr(options, flag) is not None and not algorithm.queued:
             return f"--{flag.replace('_', '-')} applies to -a {weighted} only, not {key}"
-    if options.weight is not None and algorithm.priority != "g+h":
+    for flag in ("stop", "turn"):
+        if getattr(options, flag) is not None and not algorithm.bidirectional:
+            return f"--{flag} applies to -a bibfs, biucs, biastar only, not {key}"
+    if options.weight is not None and (algorithm.priority != "g+h" or algorithm.bidirectional):
         return f"--weight applies to -a astar, idastar only (f = g + W·h), not {key}"
     if (options.recursive or options.recursive_lines) and algorithm.key not in ("dfs", "iddfs"):
         return f"--recursive applies to -a dfs, iddfs only, not {key}"

@@ -135,6 +135,9 @@ def json_summary(outcome: Outcome, scenario: Scenario | None = None) -> dict[str
         "gave_up": outcome.gave_up,
         "semantics": outcome.semantics.as_json(get_algorithm(outcome.algorithm)),
         **extra,
+        **({"meeting": None if outcome.meeting is None else state_json(outcome.meeting),
+            "stopped": outcome.stopped} if get_algorithm(outcome.algorithm).bidirectional
+           else {}),
     }
 
 
@@ -195,6 +198,8 @@ def human_summary(
         lines.append(f"  discarded:    {outcome.discarded:,}")
     lines.append(f"  generated:    {outcome.generated:,}")
     lines.append(f"  max frontier: {outcome.max_frontier:,}")
+    if outcome.stopped:
+        lines.append(f"  stopped:      {outcome.stopped}")
     return "\n".join(lines)
 
 

@@ -30,7 +30,7 @@ FLAGS = (
     "map", "algorithm", "start", "goal", "terrain", "scen", "scen_row", "order", "corners",
     "no_corner_cutting", "visit", "goal_test", "heuristic", "tree_search", "no_path_check",
     "recursive", "recursive_lines", "ties", "cost_tolerance", "weight", "reopen", "mark_start",
-    "flip_even", "preset", "compare",
+    "flip_even", "preset", "stop", "turn", "compare",
     "exercise", "generate", "size", "seed", "output", "max_steps", "theme", "pseudocode",
     "lesson", "headless", "json", "csv", "trace", "trace_format", "check_trace",
     "check_search_py", "time_limit", "memory_limit", "gradescope", "replay",
@@ -71,6 +71,8 @@ class Options(Frozen):
     ties: str | None
     cost_tolerance: float | None
     weight: float | None
+    stop: str | None
+    turn: str | None
     reopen: str | None
     mark_start: str | None
     flip_even: bool

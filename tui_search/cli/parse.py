@@ -49,6 +49,7 @@ def parse_options(argv: Sequence[str] | None = None) -> Options:
     _check_plain(options)
     options = options.replace(exercise_read=_own_exercise(options, _exercise_of(options)),
                               recipe=_generated_recipe(options))
+    _check_bidirectional(options)
     if options.output is not None or options.pseudocode:
         return options
     if options.lesson is not None:
@@ -123,6 +124,28 @@ def _refuse_with_traces(options: Options) -> None:
         if getattr(options, flag) not in (None, False):
             raise UsageError("--replay shows one trace beside one search in the app: leave "
                              f"out --{flag.replace('_', '-')}")
+
+
+def _check_bidirectional(options: Options) -> None:
+    """The bidirectional searches run headless (and print their pseudocode): the app's
+    recorded runs go one way."""
+    from tui_search.engine.search.registry import BIDIRECTIONAL
+
+    keys = [options.algorithm]
+    if options.compare:
+        keys += [part.split(":")[0].strip() for part in options.compare.split(",")]
+    if options.exercise_read is not None:
+        keys += [contender.algorithm for _, contender in options.exercise_read.searches]
+    named = next((key for key in keys if key in BIDIRECTIONAL), None)
+    if named is None or options.pseudocode:
+        return
+    if not options.headless or options.export is not None:
+        raise UsageError(f"{named}, a bidirectional search, runs headless for now: add "
+                         "--headless (with --json or --trace); the app's runs go one way")
+    for flag in ("plain",):
+        if getattr(options, flag):
+            raise UsageError(f"{named}, a bidirectional search, runs headless for now: leave out "
+                             f"--{flag.replace('_', '-')}")
 
 
 def _check_outputs(options: Options) -> None:

@@ -23,13 +23,15 @@ from tui_search.engine.search.choices import (
     CORNER_RULES,
     GOAL_TESTS,
     RECURSIVE_FORMS,
+    STOP_RULES,
     TABLE,
     TIE_RULES,
+    TURN_RULES,
     VISIT_RULES,
 )
 from tui_search.engine.search.heuristics import CHEAPER_BY, DEFAULT_HEURISTIC, HEURISTICS
 from tui_search.engine.search.loops.compiled import core_name
-from tui_search.engine.search.registry import ALGORITHMS
+from tui_search.engine.search.registry import ALGORITHMS, BIDIRECTIONAL
 from tui_search.export.kinds import (
     DEFAULT_FPS,
     DEFAULT_HANDOUT_STEPS,
@@ -72,8 +74,10 @@ def build_parser() -> argparse.ArgumentParser:
                    "(the class report)")
     p.add_argument("--version", action="version",
                    version=f"tui-search {__version__} ({core_name()})")
-    p.add_argument("-a", "--algorithm", choices=list(ALGORITHMS), default=None,
-                   help="; ".join(f"{a.key}: {a.name}" for a in ALGORITHMS.values()))
+    p.add_argument("-a", "--algorithm", choices=[*ALGORITHMS, *BIDIRECTIONAL], default=None,
+                   help="; ".join(f"{a.key}: {a.name}" for a in (*ALGORITHMS.values(),
+                                                                 *BIDIRECTIONAL.values()))
+                   + " (the bidirectional ones headless)")
     p.add_argument("--start", metavar="X,Y", help="start cell (overrides the map's S); on a "
                    "graph, a node's name")
     p.add_argument("--goal", metavar="X,Y", help="goal cell (overrides the map's G); on a "
@@ -135,6 +139,14 @@ def build_parser() -> argparse.ArgumentParser:
                    help="weighted A* (-a astar): f = g + W·h, W 1 or more (default 1: A* "
                    "itself); with an admissible heuristic the path costs at most W times "
                    "the optimum")
+    p.add_argument("--stop", choices=STOP_RULES, default=None,
+                   help="when -a bibfs, biucs or biastar stops: proven (default) once its "
+                   "best meeting is proven the cheapest; first-meeting as soon as the two "
+                   "searches reach a cell in common (the trap: not the cheapest path)")
+    p.add_argument("--turn", choices=TURN_RULES, default=None,
+                   help="whose step -a bibfs, biucs or biastar takes next: alternate "
+                   "(default: forward, backward, ...) or smaller (the search whose frontier "
+                   "is smaller; forward on a tie)")
     p.add_argument("--reopen", choices=("yes", "no"), default=None,
                    help="may -a ucs, greedy or astar push a cell it has expanded again, "
                    "reached with a lower g (yes, default); no: a closed set")

@@ -11,11 +11,13 @@ from typing import TYPE_CHECKING
 from tui_search.cli.flags import UsageError, changed_choice_flags, map_name, semantics_from
 from tui_search.engine.maps.grid import Grid
 from tui_search.engine.maps.read import MapError
+from tui_search.engine.search.registry import get_algorithm
 from tui_search.engine.util.filenames import describe_name
 
 if TYPE_CHECKING:
     from tui_search.cli.options import Options
     from tui_search.engine.maps.graph import Graph
+    from tui_search.engine.search.choices import Semantics
     from tui_search.engine.traces.replay import Replay
 
 EXIT_MATCH, EXIT_DIFFERENCE = 0, 1
@@ -93,12 +95,37 @@ def run_check_trace(options: Options) -> int:
     if not options.algorithm_given:
         return _diagnose(options, grid, options.check_trace, where)
     semantics = semantics_from(options)
+    if get_algorithm(options.algorithm).bidirectional:
+        return _check_bidirectional(options, grid, semantics, where)
     trace = load_trace(options.check_trace, grid)
     verdict = check_trace(trace, grid, options.algorithm, semantics, max_steps=options.max_steps)
     difference = verdict.difference
     _record(options, where, algorithm=verdict.algorithm, search=verdict.choices,
             verdict="match" if verdict.matches else "difference", steps=verdict.steps,
             matched_steps=verdict.matched, cause=difference.cause if difference else None,
+            diagnosis=verdict.text())
+    if options.json:
+        print(to_json({"trace": describe_name(options.check_trace), "map": where,
+                       **verdict.as_json()}))
+    else:
+        print(verdict.text())
+    return EXIT_MATCH if verdict.matches else EXIT_DIFFERENCE
+
+
+def _check_bidirectional(options: Options, grid: Grid | Graph, semantics: Semantics,
+                         where: str) -> int:
+    """``--check-trace`` with ``-a bibfs``, ``biucs`` or ``biastar``: the trace (the app's
+    JSON lines) against the bidirectional search, its stopping rule included."""
+    from tui_search.cli.headless import to_json
+    from tui_search.engine.traces.meeting import check_bidirectional
+    from tui_search.engine.traces.read import load_trace
+
+    assert options.check_trace is not None
+    trace = load_trace(options.check_trace, grid, both_ways=True)
+    verdict = check_bidirectional(trace, grid, options.algorithm, semantics, options.max_steps)
+    _record(options, where, algorithm=verdict.algorithm, search=verdict.search,
+            verdict="match" if verdict.matches else "difference", steps=verdict.steps,
+            matched_steps=verdict.matched, cause=verdict.cause or None,
             diagnosis=verdict.text())
     if options.json:
         print(to_json({"trace": describe_name(options.check_trace), "map": where,

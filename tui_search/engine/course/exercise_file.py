@@ -148,8 +148,10 @@ class Exercise:
 
 def search_name(spec: str) -> str:
     """The condition's name for one of ``searches``: ``astar:manhattan`` -> astar_manhattan,
-    weighted A*'s ``astar:w=2`` -> astar_w_2 (``astar:w=1.5`` -> astar_w_1_5)."""
-    return spec.strip().replace(":", "_").replace("=", "_").replace(".", "_")
+    weighted A*'s ``astar:w=2`` -> astar_w_2 (``astar:w=1.5`` -> astar_w_1_5), a stopping
+    rule's ``biastar:first-meeting`` -> biastar_first_meeting."""
+    return (spec.strip().replace(":", "_").replace("=", "_").replace(".", "_")
+            .replace("-", "_"))
 
 
 class KeyReader:

@@ -24,7 +24,9 @@ from tui_search.engine.course.exercise_file import Exercise
 from tui_search.engine.maps.graph import Graph
 from tui_search.engine.maps.grid import Grid
 from tui_search.engine.run.recorded import MAX_STEPS, Run
+from tui_search.engine.search.choices import Semantics
 from tui_search.engine.search.outcome import Outcome
+from tui_search.engine.search.registry import get_algorithm
 
 #: Maps bigger than this are not checked at each edit by the app (two whole searches an edit,
 #: and a mouse stroke is an edit a cell: benchmarks/README.md, "limits") but in a thread once
@@ -155,10 +157,21 @@ def _not_allowed(exercise: Exercise, grid: Grid | Graph) -> list[str]:
     return [c for c in changed if c not in exercise.edits]
 
 
+def _outcome(grid: Grid | Graph, key: str, semantics: Semantics, max_steps: int) -> Outcome:
+    """A search run whole: recorded, or streamed for a bidirectional one (no run records
+    it)."""
+    algorithm = get_algorithm(key)
+    if algorithm.bidirectional:
+        from tui_search.engine.search.reference import stream
+
+        return stream(grid, algorithm, semantics, max_steps)
+    return Run(grid, key, semantics, max_steps).outcome()
+
+
 def grade(exercise: Exercise, grid: Grid | Graph, max_steps: int = MAX_STEPS) -> Verdict:
     """``exercise`` on ``grid`` (which has a start and a goal; or on a graph, for an exercise
     on a graph): its searches run whole."""
-    runs = [(name, c.label, Run(grid, c.algorithm, c.semantics, max_steps).outcome())
+    runs = [(name, c.label, _outcome(grid, c.algorithm, c.semantics, max_steps))
             for name, c in exercise.searches]
     labelled = [(label, out) for _, label, out in runs]
     figures: dict[str, Value | None] = {}

@@ -33,10 +33,10 @@ class Step(Frozen):
     not a frozen slotted dataclass (which every start would pay for: benchmarks/README.md,
     "startup"), nor a NamedTuple (its field ``index`` would hide ``tuple.index``)."""
 
-    __slots__ = ("depth_limit", "discarded", "f_limit", "found_goal", "index", "node",
-                 "successors")
+    __slots__ = ("depth_limit", "direction", "discarded", "f_limit", "found_goal", "index",
+                 "node", "successors")
     _FIELDS = ("index", "node", "successors", "depth_limit", "found_goal", "discarded",
-               "f_limit")
+               "f_limit", "direction")
 
     index: int
     node: State  # a cell on a grid, a node's name on a graph
@@ -45,12 +45,15 @@ class Step(Frozen):
     found_goal: bool
     discarded: bool
     f_limit: float | None  # IDA*'s limit on f
+    direction: str  # a bidirectional search's "forward" or "backward" ("": one way)
 
     def __init__(self, index: int, node: State, successors: tuple[tuple[str, State], ...],
                  depth_limit: int | None = None, found_goal: bool = False,
-                 discarded: bool = False, f_limit: float | None = None) -> None:
+                 discarded: bool = False, f_limit: float | None = None,
+                 direction: str = "") -> None:
         self._assign(index=index, node=node, successors=successors, depth_limit=depth_limit,
-                  found_goal=found_goal, discarded=discarded, f_limit=f_limit)
+                     found_goal=found_goal, discarded=discarded, f_limit=f_limit,
+                     direction=direction)
 
 
 #: The default step limit: expansions recorded before a run gives up (iterative deepening

@@ -17,5 +17,7 @@
 * :mod:`~tui_search.engine.search.pseudocode`: a search's pseudocode from its choices;
 * :mod:`~tui_search.engine.search.pseudocode_recursive`: a recursion's pseudocode;
 * :mod:`~tui_search.engine.search.loops`: the fast loops, each held equal to the reference;
+* :mod:`~tui_search.engine.search.bidirectional`: the reference's bidirectional form, from the
+  start and the goal in turn;
 * ``_core*.c``: the optional compiled core of those loops.
 """

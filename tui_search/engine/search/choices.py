@@ -19,6 +19,12 @@
 * ``weight``: weighted A*'s W, 1 or more: the priority is f = g + W·h, and with an
   admissible h the path costs at most W times the optimum.  1 (the default) is A* itself, the
   very same floats; A* only.
+* ``stop``: when a bidirectional search stops
+  (:mod:`~tui_search.engine.search.bidirectional.loop`): ``proven`` once its best meeting is
+  proven the cheapest, ``first-meeting`` as soon as the two searches reach a cell in common
+  (the trap: not the cheapest path, for costs).
+* ``turn``: whose step a bidirectional search takes next: ``alternate`` (forward, backward,
+  forward, ...) or ``smaller`` (the search whose frontier is smaller; forward on a tie).
 
 On a graph (:mod:`tui_search.engine.search.space`), ``order`` is one word of
 :data:`GRAPH_ORDERS` (``file``: the roads as the file lists them; ``name``: by the names they
@@ -84,6 +90,10 @@ VISIT_RULES: tuple[str, ...] = ("generate", "expand", "expand-again")
 GOAL_TESTS: tuple[str, ...] = ("generate", "expand")
 TIE_RULES: tuple[str, ...] = ("fifo", "lifo", "node", "low-h", "high-h", "low-g", "high-g")
 RECURSIVE_FORMS: tuple[str, ...] = ("neighbours", "calls")
+#: A bidirectional search's stopping rules (the first is the default).
+STOP_RULES: tuple[str, ...] = ("proven", "first-meeting")
+#: Whose step a bidirectional search takes next (the first is the default).
+TURN_RULES: tuple[str, ...] = ("alternate", "smaller")
 #: The tie rules, in the words a student would say them.
 TIE_WORDS: dict[str, str] = {
     "fifo": "oldest first", "lifo": "newest first", "node": "smallest cell first",
@@ -107,6 +117,8 @@ EXPLAIN: dict[str, str] = {
     "mark_start": "is the start marked reached when pushed (off: it can be pushed again)?",
     "weight": "weighted A*: f = g + W·h, a path at most W × the optimum (1: A*)",
     "flip_even": "the order reversed on every other cell (x + y even), as some tutorials' grids",
+    "stop": "bidirectional: stop once the best meeting is proven, or at the first meeting",
+    "turn": "bidirectional: a step each in turn, or the smaller frontier's step next",
 }
 
 def weight_text(weight: float) -> str:
@@ -134,7 +146,7 @@ class Semantics(Frozen):
 
     __slots__ = _FIELDS = ("order", "corners", "visit", "goal_test", "tree_search", "heuristic",
                            "ties", "cost_tolerance", "reopen", "recursive", "path_check",
-                           "mark_start", "weight", "flip_even")
+                           "mark_start", "weight", "flip_even", "stop", "turn")
 
     order: tuple[str, ...]
     corners: str
@@ -150,13 +162,16 @@ class Semantics(Frozen):
     mark_start: bool
     weight: float  # weighted A*'s W (1: A*)
     flip_even: bool  # the order reversed on cells whose x + y is even
+    stop: str  # a bidirectional search's stopping rule
+    turn: str  # whose step a bidirectional search takes next
 
     def __init__(self, order: tuple[str, ...] = DEFAULT_ORDER, corners: str = "always",
                  visit: str = "generate", goal_test: str | None = None,
                  tree_search: bool = False, heuristic: str = DEFAULT_HEURISTIC,
                  ties: str = "fifo", cost_tolerance: float = CHEAPER_BY, reopen: bool = True,
                  recursive: str = "", path_check: bool = True, mark_start: bool = True,
-                 weight: float = 1.0, flip_even: bool = False) -> None:
+                 weight: float = 1.0, flip_even: bool = False, stop: str = STOP_RULES[0],
+                 turn: str = TURN_RULES[0]) -> None:
         graph_order = len(order) == 1 and order[0] in GRAPH_ORDERS
         if not graph_order and (not order or any(d not in DELTAS for d in order)
                                 or len(set(order)) != len(order)):
@@ -168,6 +183,8 @@ class Semantics(Frozen):
             ("heuristic", heuristic, (*HEURISTICS, TABLE)),
             ("ties", ties, TIE_RULES),
             ("recursive", recursive or RECURSIVE_FORMS[0], RECURSIVE_FORMS),
+            ("stopping rule", stop, STOP_RULES),
+            ("turn", turn, TURN_RULES),
         ):
             if value not in allowed:
                 raise ValueError(f"{name} {value!r}: use {', '.join(allowed)}")
@@ -191,7 +208,7 @@ class Semantics(Frozen):
                      tree_search=tree_search, heuristic=heuristic, ties=ties,
                      cost_tolerance=float(cost_tolerance), reopen=reopen, recursive=recursive,
                      path_check=path_check, mark_start=mark_start, weight=weight,
-                     flip_even=bool(flip_even))
+                     flip_even=bool(flip_even), stop=stop, turn=turn)
 
     def check(self, algorithm: Algorithm) -> None:
         """Refuse the combinations that make no sense for ``algorithm`` (``ValueError``)."""
@@ -202,6 +219,8 @@ class Semantics(Frozen):
     def refusal(self, algorithm: Algorithm) -> str:
         """Why these choices make no sense for ``algorithm`` ("" when they do)."""
         name = algorithm.short
+        if algorithm.bidirectional and self._both_ways_refusal(name):
+            return self._both_ways_refusal(name)
         if algorithm.iterative and self.visit != "generate":
             return (f"the visit rule does not apply to {name} (it re-opens a cell reached at "
                     "a smaller depth)")
@@ -220,8 +239,24 @@ class Semantics(Frozen):
             return f"ties on g do not apply to {name}: its priority is g itself"
         if self.recursive and (algorithm.frontier is not Frontier.LIFO or algorithm.contours):
             return f"recursion is a depth-first search's (DFS, IDDFS), not {name}'s"
-        if self.weight != 1.0 and algorithm.priority != "g+h":
+        if self.weight != 1.0 and (algorithm.priority != "g+h" or algorithm.bidirectional):
             return f"a weight applies to A* and IDA* (f = g + W·h), not {name}"
+        if (self.stop, self.turn) != (STOP_RULES[0], TURN_RULES[0]) and not (
+                algorithm.bidirectional):
+            return f"a stopping rule or a turn applies to a bidirectional search, not {name}"
+        return ""
+
+    def _both_ways_refusal(self, name: str) -> str:
+        """Why a bidirectional search cannot run under these choices ("" when it can)."""
+        if self.tree_search or self.recursive:
+            return f"{name} is a graph search: no tree search, no recursion"
+        if self.goal_test is not None:
+            return f"{name} stops when its two searches meet: no goal test applies"
+        if self.visit != "generate":
+            return f"{name} marks a cell reached when pushed: the visit rule does not apply"
+        if not self.plain:
+            return (f"{name} runs under the plain choices (ties oldest first, re-opening, "
+                    "the start marked, the default cost tolerance, one order everywhere)")
         return ""
 
     def fitted(self, algorithm: Algorithm) -> Semantics:
@@ -230,6 +265,10 @@ class Semantics(Frozen):
         out = self
         if algorithm.iterative or algorithm.weighted:
             out = out.replace(visit="generate")
+        if algorithm.bidirectional:
+            out = out.replace(visit="generate", tree_search=False, path_check=True,
+                              goal_test=None, recursive="", mark_start=True, ties="fifo",
+                              cost_tolerance=CHEAPER_BY, reopen=True, flip_even=False)
         if not algorithm.queued:
             out = out.replace(ties="fifo", cost_tolerance=CHEAPER_BY, reopen=True)
         if out.ties in ("low-h", "high-h") and not algorithm.informed:
@@ -238,8 +277,10 @@ class Semantics(Frozen):
             out = out.replace(ties="fifo")
         if (algorithm.frontier is not Frontier.LIFO or algorithm.contours) and out.recursive:
             out = out.replace(recursive="")
-        if algorithm.priority != "g+h" and out.weight != 1.0:
+        if (algorithm.priority != "g+h" or algorithm.bidirectional) and out.weight != 1.0:
             out = out.replace(weight=1.0)
+        if not algorithm.bidirectional:
+            out = out.replace(stop=STOP_RULES[0], turn=TURN_RULES[0])
         return out
 
     def goal_test_for(self, algorithm: Algorithm) -> str:
@@ -295,6 +336,10 @@ class Semantics(Frozen):
             out.append(f"heuristic {self.heuristic}")
         if self.weight != 1.0 and (algorithm is None or algorithm.priority == "g+h"):
             out.append(f"weight {weight_text(self.weight)}")
+        if self.stop != STOP_RULES[0] and (algorithm is None or algorithm.bidirectional):
+            out.append("stop at the first meeting")
+        if self.turn != TURN_RULES[0] and (algorithm is None or algorithm.bidirectional):
+            out.append("the smaller frontier first")
         out += self.published_words()
         return out
 
@@ -339,7 +384,10 @@ class Semantics(Frozen):
         A*."""
         no_visit = self.tree_search or bool(self.recursive) or (
             algorithm is not None and (algorithm.iterative or algorithm.weighted))
-        goal_test = self.goal_test_for(algorithm) if algorithm else self.goal_test or "generate"
+        goal_test: str | None = (self.goal_test_for(algorithm) if algorithm
+                                 else self.goal_test or "generate")
+        if algorithm is not None and algorithm.bidirectional:
+            goal_test = None  # its two searches meet: no goal test
         queue = algorithm is None or algorithm.queued
         return {
             "order": list(self.order),
@@ -356,6 +404,8 @@ class Semantics(Frozen):
             "mark_start": self.mark_start,
             "weight": self.weight if algorithm is None or algorithm.priority == "g+h" else None,
             "flip_even": None if self.order[0] in GRAPH_ORDERS else self.flip_even,
+            **({"stop": self.stop, "turn": self.turn}
+               if algorithm is not None and algorithm.bidirectional else {}),
         }
 
 

@@ -10,9 +10,14 @@ Plain Python, no UI.
 from collections.abc import Sequence
 from typing import NamedTuple
 
-from tui_search.engine.search.choices import DEFAULT_SEMANTICS, Semantics
+from tui_search.engine.search.choices import (
+    DEFAULT_SEMANTICS,
+    STOP_RULES,
+    TURN_RULES,
+    Semantics,
+)
 from tui_search.engine.search.outcome import Outcome
-from tui_search.engine.search.registry import get_algorithm
+from tui_search.engine.search.registry import Algorithm, get_algorithm
 
 
 class Contender(NamedTuple):
@@ -30,6 +35,10 @@ class Contender(NamedTuple):
             said.append(self.semantics.heuristic)
         if self.semantics.weight != 1.0:
             said.append(f"w={self.semantics.weight:g}")
+        if algo.bidirectional and self.semantics.stop != STOP_RULES[0]:
+            said.append(self.semantics.stop)
+        if algo.bidirectional and self.semantics.turn != TURN_RULES[0]:
+            said.append(self.semantics.turn)
         return f"{algo.short} ({', '.join(said)})" if said else algo.short
 
 
@@ -37,7 +46,9 @@ def parse_compare(text: str, semantics: Semantics = DEFAULT_SEMANTICS,
                   fit: bool = False, fewest: int = 2) -> list[Contender]:
     """``bfs,dfs`` or ``astar:manhattan,ucs``: ``fewest`` (two; the app's panes: one) to four
     registry keys, each informed one with an optional heuristic, A* with an optional weight
-    (``astar:w=2``, ``astar:manhattan:w=2``; else the given choices' weight).  ``ValueError``
+    (``astar:w=2``, ``astar:manhattan:w=2``; else the given choices' weight), a bidirectional
+    one with its stopping rule and turn (``biastar:first-meeting``, ``bibfs:smaller``).
+    ``ValueError``
     (one line) for anything else -- or, with ``fit``, for a choice that does not apply to one
     of them, that one takes the default instead (:meth:`~tui_search.engine.search.choices.Semantics.
     fitted`: the app's settings apply to every pane where they can)."""
@@ -51,7 +62,7 @@ def parse_compare(text: str, semantics: Semantics = DEFAULT_SEMANTICS,
     for part in parts:
         key, *extras = part.split(":")
         algo = get_algorithm(key)
-        sem = semantics
+        sem, extras = _stop_of(part, algo, semantics, extras)
         heuristic = ""
         for extra in extras:
             if extra.startswith("w="):
@@ -81,6 +92,21 @@ def parse_compare(text: str, semantics: Semantics = DEFAULT_SEMANTICS,
             sem = sem.fitted(algo)
         out.append(Contender(key, sem))
     return out
+
+
+def _stop_of(part: str, algo: Algorithm, sem: Semantics, extras: list[str]
+             ) -> tuple[Semantics, list[str]]:
+    """The choices with ``part``'s stopping rule and turn (a bidirectional search's: the
+    choices' own are theirs alone), and its other extras."""
+    rules = [extra for extra in extras if extra in STOP_RULES + TURN_RULES]
+    if rules and not algo.bidirectional:
+        raise ValueError(f"{part!r}: a stopping rule or a turn applies to bibfs, biucs, "
+                         f"biastar only, not {algo.key}")
+    if not algo.bidirectional:
+        return sem.replace(stop=STOP_RULES[0], turn=TURN_RULES[0]), extras
+    for extra in rules:
+        sem = sem.replace(**{"stop" if extra in STOP_RULES else "turn": extra})
+    return sem, [extra for extra in extras if extra not in rules]
 
 
 class TableRow(NamedTuple):

@@ -27,6 +27,10 @@ class Outcome(NamedTuple):
     #: The path's cost: each move's length (1 straight, sqrt(2) diagonal) times the cost of
     #: the cell it enters (:meth:`Grid.path_cost <tui_search.engine.maps.grid.Grid.path_cost>`).
     cost: float | None
+    #: A bidirectional search's: why it stopped, in a sentence ("" for the others).
+    stopped: str = ""
+    #: A bidirectional search's meeting cell, its path's (None: none, or a search one way).
+    meeting: Any = None
 
     @property
     def found(self) -> bool:

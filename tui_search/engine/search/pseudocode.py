@@ -148,6 +148,11 @@ def _successor_lines(algorithm: Algorithm, semantics: Semantics, move_cost: str,
 
 @lru_cache(maxsize=64)
 def _generate(algorithm: Algorithm, semantics: Semantics, move_cost: str) -> Pseudocode:
+    if algorithm.bidirectional:
+        from tui_search.engine.search.bidirectional.pseudo import bidirectional_lines
+
+        return Pseudocode(_title(algorithm, semantics), tuple(CodeLine(*line) for line in (
+            bidirectional_lines(algorithm, semantics, move_cost))))
     if semantics.recursive:
         from tui_search.engine.search.pseudocode_recursive import recursive_lines
 

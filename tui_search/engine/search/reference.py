@@ -263,8 +263,14 @@ def stream(
 ) -> Outcome:
     """Run the reference search to its end, or to ``max_steps`` steps, keeping nothing of the
     steps but what ``on_step`` does with each (the headless trace): memory grows with the map
-    and the frontier only.  Give-up rules as a recorded run's: a search still going after
-    ``max_steps`` steps gave up, and a goal it would find later is not found."""
+    and the frontier only (a bidirectional search: its own loop,
+    :mod:`~tui_search.engine.search.bidirectional.loop`).  Give-up rules as a recorded run's: a
+    search still going after ``max_steps`` steps gave up, and a goal it would find later is
+    not found."""
+    if algorithm.bidirectional:
+        from tui_search.engine.search.bidirectional.loop import stream_bidirectional
+
+        return stream_bidirectional(grid, algorithm, semantics, max_steps, on_step)
     if semantics.recursive == "calls":
         from tui_search.engine.search.recursion import MAX_HELD
 

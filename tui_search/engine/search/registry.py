@@ -117,6 +117,9 @@ class Algorithm(NamedTuple):
     #: are; the chapter's further searches have their key in the help (``?``), the palette
     #: and the docs, so that the bar keeps its other hints at 80 columns.
     key_bar: bool = True
+    #: A forward search from the start and a backward one from the goal, one expansion each
+    #: in turn (:mod:`~tui_search.engine.search.bidirectional.loop`).
+    bidirectional: bool = False
 
     @property
     def informed(self) -> bool:
@@ -181,6 +184,23 @@ ALGORITHMS: dict[str, Algorithm] = {
     )
 }
 
+#: The bidirectional searches: each a forward search from the start and a backward one from
+#: the goal, run headless (the app's recorded runs are one-directional).
+BIDIRECTIONAL: dict[str, Algorithm] = {
+    a.key: a
+    for a in (
+        Algorithm("bibfs", "Bidirectional BFS", "BiBFS", Frontier.FIFO, "",
+                  "BFS from the start and from the goal in turn, until they meet", "BiBFS",
+                  bidirectional=True),
+        Algorithm("biucs", "Bidirectional uniform-cost search", "BiUCS", Frontier.PRIORITY,
+                  "", "UCS from the start and from the goal in turn, until they meet",
+                  "BiUCS", priority="g", goal_test="expand", bidirectional=True),
+        Algorithm("biastar", "Bidirectional A*", "BiA*", Frontier.PRIORITY, "",
+                  "A* from the start and from the goal in turn, until they meet", "BiA*",
+                  priority="g+h", goal_test="expand", bidirectional=True),
+    )
+}
+
 #: The algorithm a run uses unless told otherwise.
 DEFAULT_ALGORITHM = "bfs"
 
@@ -188,6 +208,7 @@ DEFAULT_ALGORITHM = "bfs"
 def get_algorithm(key: str) -> Algorithm:
     """The registry entry for ``key``; ``ValueError`` with the choices when there is none."""
     try:
-        return ALGORITHMS[key]
+        return ALGORITHMS[key] if key in ALGORITHMS else BIDIRECTIONAL[key]
     except KeyError:
-        raise ValueError(f"unknown algorithm {key!r} (use {', '.join(ALGORITHMS)})") from None
+        raise ValueError(f"unknown algorithm {key!r} (use "
+                         f"{', '.join([*ALGORITHMS, *BIDIRECTIONAL])})") from None

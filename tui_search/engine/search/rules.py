@@ -84,6 +84,9 @@ class Expansion:
     #: IDA*: the smallest f over the limit met so far in this iteration (the next limit if
     #: the iteration ends with no goal; inf while there is none)
     next_limit: float = INF
+    #: A bidirectional search's: "forward" (from the start) or "backward" (from the goal);
+    #: "" for a search one way.
+    direction: str = ""
 
 
 # -- the frontier: which entry comes out next ---------------------------------------------------

@@ -2,6 +2,8 @@
 
 * :mod:`~tui_search.engine.traces.read`: reading a trace;
 * :mod:`~tui_search.engine.traces.check`: a trace against one search, step by step;
+* :mod:`~tui_search.engine.traces.meeting`: a trace against a bidirectional search, its
+  stopping rule included;
 * :mod:`~tui_search.engine.traces.differences`: where a trace parts from a search, and why;
 * :mod:`~tui_search.engine.traces.causes`: the causes named, their codes, whom they speak of, and
   the difference that carries one;

@@ -250,9 +250,10 @@ def _ends(board: Grid | Graph) -> tuple[State | None, tuple[State, ...]]:
     return board.start, () if board.goal is None else (board.goal,)
 
 
-def read_trace(text: str, grid: Grid | Graph, name: str) -> Trace:
+def read_trace(text: str, grid: Grid | Graph, name: str, both_ways: bool = False) -> Trace:
     """The trace in ``text`` (the contents of file ``name``), checked against ``grid`` (or
-    a graph, whose trace names its nodes)."""
+    a graph, whose trace names its nodes); ``both_ways``: a bidirectional search's, whose
+    backward search expands the goal unadded."""
     reader = _Reader(grid, name)
     steps = TraceSteps(grid)
     start = goal = None
@@ -262,6 +263,8 @@ def read_trace(text: str, grid: Grid | Graph, name: str) -> Trace:
     added: set[State] | bytearray = set() if isinstance(grid, Graph) else bytearray(
         grid.width * grid.height)  # a cell some line added (or the start)
     _add(added, grid, begin)
+    for root in _ends(grid)[1] if both_ways else ():
+        _add(added, grid, root)
     budget = LINE_BUDGET * len(text) + LINE_ALLOWANCE
     path_line = 0
     unadded: MapError | None = None  # the first node no earlier line added
@@ -294,7 +297,8 @@ def read_trace(text: str, grid: Grid | Graph, name: str) -> Trace:
             swapped = isinstance(node, tuple) and _was_added(added, grid, (node[1], node[0]))
             hint = "; x is the column, y the row: swapped?" if swapped else ""
             unadded = MapError(name, f"expands {show(node)}, which no earlier line added "
-                               f"(nor is it the start){hint}", number)
+                               f"(nor is it the start{' or the goal' * both_ways}){hint}",
+                               number)
         successors = obj.get("successors", [])
         if not isinstance(successors, list):
             raise reader.fail('"successors" should be a list')
@@ -334,9 +338,12 @@ def as_grid(board: Grid | Graph) -> Grid:
 def trace_line(step: Step) -> str:
     """A step in this format, the line ``--trace`` writes: the node taken off and exactly the
     successors it added, in order (a graph's: the nodes' names); iterative deepening adds the
-    depth limit, IDA* its limit on f (rounded to 6 places), a discarded step says so."""
+    depth limit, IDA* its limit on f (rounded to 6 places), a discarded step says so; a
+    bidirectional search's names its direction (``"dir": "forward"`` or ``"backward"``)."""
     node = step.node
     obj: dict[str, object] = {"step": step.index, "node": state_json(node)}
+    if step.direction:  # a bidirectional search's: which search took the step
+        obj["dir"] = step.direction
     if isinstance(node, str):  # a graph's: the nodes reached, by name
         obj["successors"] = [s for _, s in step.successors]
     else:
@@ -350,9 +357,9 @@ def trace_line(step: Step) -> str:
     return json.dumps(obj, separators=(", ", ": ")) + "\n"
 
 
-def load_trace(path: str, grid: Grid | Graph) -> Trace:
+def load_trace(path: str, grid: Grid | Graph, both_ways: bool = False) -> Trace:
     """:func:`read_trace` of a file; a file that cannot be read is a one-line error."""
-    return read_trace(read_text(path, "a trace", MAX_TRACE_BYTES), grid, path)
+    return read_trace(read_text(path, "a trace", MAX_TRACE_BYTES), grid, path, both_ways)
 
 
 __all__ = ["MAX_TRACE_BYTES", "Trace", "TraceStep", "TraceSteps", "load_trace", "read_trace",

@@ -1,0 +1,10 @@
+"""Bidirectional search: a forward search from the start and a backward one from the goal, in
+turn, until they meet -- the reference loop's bidirectional form (the specification, streamed
+by the headless runs; the app's recorded runs go one way).
+
+* :mod:`~tui_search.engine.search.bidirectional.backward`: the backward search's space, the
+  moves reversed;
+* :mod:`~tui_search.engine.search.bidirectional.loop`: the two searches in turn, their meeting
+  and the stopping rule (``first-meeting`` or ``proven``);
+* :mod:`~tui_search.engine.search.bidirectional.pseudo`: their pseudocode's lines.
+"""
