@@ -32,6 +32,9 @@ SMALL = ["S..", ".#.", "..G"]
 #: 7x7 maps: the first where a greedy search taking the lower g of a tie parts from one
 #: taking the oldest).
 LOW_G = ["....#..", "...#...", "#...#.#", ".....#G", ".....#.", "S.....#", "......."]
+#: A* meets a tie of f whose entries differ in h, and the older has the lower h (found among
+#: random 6x6 maps, as LOW_G was).
+HIGH_H = ["......", ".....#", "S.#...", "...#.G", "......", "......"]
 #: The order of the students' four moves.
 NESW = ["--order", "N,E,S,W"]
 
@@ -138,6 +141,18 @@ STUDENT_SEARCHES = [
             ["-a", "greedy", "--heuristic", "manhattan", *NESW],
             "h ties at 6.00, and your search takes the lower g of the tie (4.00, not 6.00); "
             "this search takes the oldest entry (--ties low-g)"),
+    Student("astar_ties_high_h", HIGH_H,
+            ["-a", "astar", "--heuristic", "manhattan", "--ties", "high-h", *NESW],
+            "A* (manhattan; ties: higher h first; order N,E,S; goal test on expand)",
+            ["-a", "astar", "--heuristic", "manhattan", *NESW],
+            "f ties at 8.00, and your search takes the higher h of the tie (5.00, not 4.00); "
+            "this search takes the oldest entry (--ties high-h)"),
+    Student("greedy_ties_high_g", REOPENS,
+            ["-a", "greedy", "--heuristic", "manhattan", "--ties", "high-g", *NESW],
+            "Greedy (manhattan; ties: higher g first; order E,S,W; goal test on expand)",
+            ["-a", "greedy", "--heuristic", "manhattan", *NESW],
+            "h ties at 6.00, and your search takes the higher g of the tie (10.00, not 6.00); "
+            "this search takes the oldest entry (--ties high-g)"),
     Student("astar_red_blob", ROWS,
             ["-a", "astar", "--heuristic", "manhattan", "--ties", "node", "--order",
              "E,W,N,S", "--flip-even"],
