@@ -18,6 +18,7 @@ from __future__ import annotations
 import heapq
 from collections.abc import Iterator
 from dataclasses import dataclass, replace
+from itertools import chain
 from typing import Any
 
 from tui_search.engine.maps.graph import Graph
@@ -308,7 +309,12 @@ def diagnose(trace: Trace, grid: Grid | Graph, max_steps: int | None = None) -> 
         from tui_search.engine.search.choices import graph_heuristics
 
         heuristics = graph_heuristics(grid)
-    search.run(candidates(orders if expansions_only else orders[:1], orders, heuristics))
+    bases = candidates(orders if expansions_only else orders[:1], orders, heuristics)
+    flipped = None if expansions_only else search.flipped_order()
+    if flipped is not None:  # the trace reads as an order reversed on every other cell
+        bases = chain(bases, ((key, sem.replace(flip_even=True)) for key, sem in candidates(
+            [flipped], [flipped], heuristics)))
+    search.run(bases)
     scored = sorted(search.scored, key=lambda s: s.rank)
     listed = _listed(scored)
     best = [check_trace(trace, grid, s.key, s.semantics, max_steps=limit) for s in listed]
