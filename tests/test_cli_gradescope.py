@@ -100,3 +100,41 @@ def test_only_where_there_are_grades(capsys, tmp_path: Path) -> None:
                            str(tmp_path / "r.json"))
     assert code == EXIT_BAD_INPUT
     assert err.startswith("tui-search: error: --gradescope goes with --exercise E --headless")
+
+
+def test_a_students_records_as_results(capsys, tmp_path: Path) -> None:
+    """--class-report DIR --gradescope: one student's records (Gradescope grades a
+    submission): a test an exercise tried, the quiz and the runs by hand worth what was
+    asked of them; a folder of several students is refused in one line, and an existing
+    file is replaced only with --force."""
+    from tui_search.engine.course.records import Writer
+
+    folder = tmp_path / "ada"
+    folder.mkdir()
+    ada = Writer(folder, "Ada")
+    ada.write("exercise", exercise="BFS expands less", solved=True, verdict="solved",
+              reason="", map="S.G\n", map_size=[3, 1])
+    ada.write("exercise", exercise="Greedy is not optimal", solved=False,
+              verdict="not solved", reason="", map="S.G\n", map_size=[3, 1])
+    for right in (True, True, False):
+        ada.write("quiz", algorithm="bfs", right=right)
+    ada.write("by_hand", algorithm="bfs", finished=True, steps=22, mistakes=1,
+              by_cause={"newest": 1}, seconds=80.0)
+    out = tmp_path / "results.json"
+    code, _, err = run_cli(capsys, "--class-report", str(folder), "--gradescope", str(out))
+    assert (code, err) == (0, "")
+    data = valid(out)
+    scores = {t["name"]: (t["score"], t["max_score"]) for t in data["tests"]}
+    assert scores == {"exercise: BFS expands less": (1.0, 1.0),
+                      "exercise: Greedy is not optimal": (0.0, 1.0),
+                      "quiz: the next node": (2.0, 3.0), "runs by hand": (1.0, 1.0)}
+    assert data["score"] == 4.0 and "Ada" in data["output"]
+    code, _, err = run_cli(capsys, "--class-report", str(folder), "--gradescope", str(out))
+    assert code == EXIT_BAD_INPUT and "exists: --force replaces it" in err
+    assert run_cli(capsys, "--class-report", str(folder), "--gradescope", str(out),
+                   "--force")[0] == 0
+    Writer(folder, "Ben").write("quiz", algorithm="bfs", right=True)
+    code, _, err = run_cli(capsys, "--class-report", str(folder), "--gradescope",
+                           str(tmp_path / "two.json"))
+    assert code == EXIT_BAD_INPUT and "holds 2 students' records (Ada, Ben)" in err
+    assert err.count("\n") == 1 and not (tmp_path / "two.json").exists()

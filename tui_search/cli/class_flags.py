@@ -3,7 +3,8 @@
 ``--class FILE`` (the served visitors pick their name from it) and ``--class-report DIR`` (the
 records read back, a table a student a row); their checks against each other.
 
-``--gradescope OUT.json`` is not here: it waits for the writer of Gradescope's results file.
+With ``--class-report``, ``--gradescope OUT.json`` writes one student's records as Gradescope's
+results (:mod:`~tui_search.cli.records_report`); its checks are here.
 """
 
 from __future__ import annotations
@@ -99,6 +100,15 @@ def _report_alone(options: Options) -> None:
         raise UsageError("--class-report reads a records folder: leave out MAP")
     if options.csv and options.json:
         raise UsageError("--class-report: --csv or --json, not both")
+    if options.gradescope is not None:
+        import os
+
+        from tui_search.engine.util.filenames import describe_name
+
+        if os.path.lexists(options.gradescope) and not options.force:
+            raise UsageError(f"{describe_name(options.gradescope)} exists: --force replaces it")
+    elif options.force:
+        raise UsageError("--force goes with --gradescope OUT.json (a file replaced)")
 
 
 def read_class_file(path: str) -> tuple[str, ...]:

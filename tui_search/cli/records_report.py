@@ -86,6 +86,10 @@ def run_class_report(options: Options) -> int:
     for warning in warnings:
         print(f"tui-search: warning: {describe_name(warning)}", file=sys.stderr)
     table = class_table(events)
+    if options.gradescope is not None:
+        from tui_search.cli.report import write_gradescope
+
+        write_gradescope(options, student_results(table, folder))
     if options.json:
         print(to_json({"folder": folder, **table.as_json(), "warnings": warnings}))
     elif options.csv:
@@ -99,4 +103,32 @@ def run_class_report(options: Options) -> int:
     return 0
 
 
-__all__ = ["run_class_report", "table_lines", "write_csv"]
+def student_results(table: ClassTable, folder: str) -> dict[str, object]:
+    """One student's records as Gradescope's results (``--gradescope``: Gradescope grades a
+    submission, one student's): a test an exercise tried (a point when solved), and the
+    quiz, the runs by hand and the traces checked, each worth what was asked of it.  A
+    folder of no student or of several is a UsageError."""
+    from tui_search.engine.course.gradescope import graded_test, results, scored_test
+
+    if len(table.rows) != 1:
+        names = ", ".join(r.student for r in table.rows[:3]) or "no one"
+        raise UsageError(f"--gradescope writes one submission's results: "
+                         f"{describe_name(folder)} holds {len(table.rows)} students' records "
+                         f"({names}{', ...' if len(table.rows) > 3 else ''})")
+    r = table.rows[0]
+    tests = [graded_test(f"exercise: {name}", name in r.solved,
+                         "solved" if name in r.solved else "not solved") for name in r.tried]
+    if r.quiz_asked:
+        tests.append(scored_test("quiz: the next node", r.quiz_right, r.quiz_asked,
+                                 f"{r.quiz_right} of {r.quiz_asked} right"))
+    if r.runs:
+        tests.append(scored_test("runs by hand", r.runs_finished, r.runs,
+                                 f"{r.runs_finished} of {r.runs} finished; mistakes: "
+                                 f"{mistakes_text(r)}"))
+    if r.checks:
+        tests.append(scored_test("traces checked", r.checks_matched, r.checks,
+                                 f"{r.checks_matched} of {r.checks} matched"))
+    return results("\n".join(table_lines(table)), tests)
+
+
+__all__ = ["run_class_report", "student_results", "table_lines", "write_csv"]

@@ -10,7 +10,7 @@ hold it to.
 
 from __future__ import annotations
 
-__all__ = ["VISIBILITIES", "graded_test", "results"]
+__all__ = ["VISIBILITIES", "graded_test", "results", "scored_test"]
 
 VISIBILITIES = ("visible", "hidden", "after_due_date", "after_published")
 
@@ -23,6 +23,15 @@ def graded_test(name: str, passed: bool, output: str, max_score: float = 1.0,
     return {"name": name, "score": max_score if passed else 0.0, "max_score": max_score,
             "status": "passed" if passed else "failed", "output": output,
             "visibility": visibility}
+
+
+def scored_test(name: str, score: float, max_score: float, output: str,
+                visibility: str = "visible") -> dict[str, object]:
+    """One test worth ``max_score``, of which ``score`` was earned (a quiz's right answers of
+    those asked)."""
+    test = graded_test(name, score >= max_score, output, max_score, visibility)
+    test["score"] = float(score)
+    return test
 
 
 def results(output: str, tests: list[dict[str, object]]) -> dict[str, object]:
