@@ -153,6 +153,16 @@ STUDENT_SEARCHES = [
             ["-a", "greedy", "--heuristic", "manhattan", *NESW],
             "h ties at 6.00, and your search takes the higher g of the tie (10.00, not 6.00); "
             "this search takes the oldest entry (--ties high-g)"),
+    Student("astar_heapq_diagonal", REOPENS,
+            ["-a", "astar", "--heuristic", "manhattan", "--ties", "node", "--cost-tolerance",
+             "0", "--order", "N,NE,E,SE,S,SW,W,NW"],
+            "A* (manhattan; ties: smallest cell first; exact costs; order N,NE,E,SE,S,SW; goal "
+            "test on expand)",
+            ["-a", "astar", "--heuristic", "manhattan", "--cost-tolerance", "0", "--order",
+             "N,NE,E,SE,S,SW,W,NW"],
+            # an out-of-date entry taken off at a tie: a tie rule, not a cell expanded twice
+            "your trace expands (2,5): f ties at 11.66, and your search takes the smallest "
+            "cell of the tie"),
     Student("astar_red_blob", ROWS,
             ["-a", "astar", "--heuristic", "manhattan", "--ties", "node", "--order",
              "E,W,N,S", "--flip-even"],

@@ -70,10 +70,11 @@ class Causes:
         (its step ``k``); ``where``: what the search would do with the trace's cell."""
         name, cell = self.name, t.node
         before = self.expanded_at(cell, n - 1)
-        if before is not None:
+        # (a tie first: code that takes an out-of-date heap entry off takes it at a tie)
+        tie = self._tie(k, e.node, cell) if self.algo.priority is not None else None
+        if before is not None and tie is None:
             return Difference(n, t.line, "expand", f"step {n}: {self._twice(cell, before)}",
                               e.node, cell, suggest=self._twice_suggests(), cause="twice")
-        tie = self._tie(k, e.node, cell) if self.algo.priority is not None else None
         if tie is not None:
             words, kind, rules = tie
             return Difference(n, t.line, "expand", f"step {n}: {words}", e.node, cell, kind,

@@ -40,10 +40,18 @@ def tie(run: Run, k: int, mine: State, theirs: State, name: str, voice: Voice,
     run.goto(k - 1)
     now, cell_of, costs = run.now, run.nodes.cell, run.nodes.costs
     entries: list[Entry] = []
+    stale: list[Entry] = []  # the trace's cell's out-of-date entries (pushed again cheaper)
     for g in now.frontier():
         c = costs(g)
-        if c is not None and not now.is_stale(g):
-            entries.append((g, cell_of(g), c))
+        if c is not None:
+            if not now.is_stale(g):
+                entries.append((g, cell_of(g), c))
+            elif cell_of(g) == theirs:
+                stale.append((g, theirs, c))
+    if not any(cell == theirs for _, cell, _ in entries):
+        # code with no check of what it takes off (heapq A* with no closed set) takes an
+        # out-of-date entry where its tie rule puts it; this search would drop it there
+        entries += stale
     top = next((c for _, cell, c in entries if cell == mine), None)
     got = next((c for _, cell, c in entries if cell == theirs), None)
     if top is None or got is None or abs(top[2] - got[2]) > TIE:
