@@ -93,7 +93,8 @@ STUDENT_SEARCHES = [
             ["-a", "greedy", "--heuristic", "manhattan", "--reopen", "no", "--order",
              "N,E,S,W"],
             "Greedy (manhattan; no re-opening; order E,W,N,S; goal test on expand)",
-            ["-a", "greedy", "--heuristic", "manhattan", "--order", "N,E,S,W"], "step "),
+            ["-a", "greedy", "--heuristic", "manhattan", "--order", "N,E,S,W"],
+            "it never re-opens a cell (a closed set: --reopen no)"),
     Student("ucs_float_compare", ROUNDING,
             ["-a", "ucs", "--cost-tolerance", "0", "--order", "N,NE,E,SE,S,SW,W,NW"],
             "UCS (exact costs; order NE,E,SE,S; goal test on expand)",
@@ -176,7 +177,8 @@ STUDENT_SEARCHES = [
             ["-a", "dfs", "--visit", "expand", "--goal-test", "expand", "--order", "N,S,E,W"],
             "DFS (order N,S,E,W; visit on expand; goal test on generate)",
             ["-a", "dfs", "--order", "N,S,E,W"],
-            "DFS expands"),
+            "a search that marks cells visited when it takes them off goes on as yours does "
+            "(--visit expand)"),
 ]
 
 

@@ -56,6 +56,7 @@ CAUSES = {
     "recursion": "took a cell the last step added",
     "tie": "broke a tie of the priority another way",
     "out-of-turn": "took an entry out of turn",
+    "visit-on-expand": "marked cells visited when it took them off",
     "twice": "expanded a cell twice",
     "not-dropped": "left on the frontier an entry expanded already",
     "discarded": "discarded a cell the search expands",

@@ -19,7 +19,8 @@ Steps are numbered as the trace numbers them: its own expansion lines, from 1.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from collections.abc import Callable
+from dataclasses import dataclass, replace
 
 from tui_search.engine.maps.graph import Graph
 from tui_search.engine.maps.grid import Grid
@@ -275,6 +276,10 @@ def check_trace(trace: Trace, grid: Grid | Graph, algorithm: str, semantics: Sem
 
     verdict = checked(semantics, look_ahead)
     difference = verdict.difference
+    if difference is not None and difference.cause == "out-of-turn" and look_ahead \
+            and trace.expansions_only and semantics.visit == "generate" \
+            and not (semantics.tree_search or semantics.recursive):
+        return _visit_named(verdict, checked)
     if difference is None or difference.cause != "tie" or len(difference.suggest) < 2 \
             or not look_ahead:
         return verdict
@@ -286,6 +291,23 @@ def check_trace(trace: Trace, grid: Grid | Graph, algorithm: str, semantics: Sem
     if best[0] == rules[0]:
         return verdict
     return checked(semantics, look_ahead, (*best, *(r for r in TIE_ORDER if r not in best)))
+
+
+def _visit_named(verdict: Verdict, checked: Callable[[Semantics, int], Verdict]) -> Verdict:
+    """An expansions-only trace taken out of turn by a search visiting on generate: where a
+    search visiting on expand goes on with it longer, the difference says so (a course's
+    autograder records exactly such searches)."""
+    difference = verdict.difference
+    assert difference is not None
+    for visit in ("expand", "expand-again"):
+        if checked(verdict.semantics.replace(visit=visit), 0).matched > verdict.matched:
+            flag = f"--visit {visit}"
+            words = (f"; a search that marks cells visited when it takes them off goes on as "
+                     f"yours does ({flag})")
+            return replace(verdict, difference=replace(
+                difference, message=difference.message + words, cause="visit-on-expand",
+                suggest=((("visit", visit),),)))
+    return verdict
 
 
 __all__ = ["Difference", "Verdict", "check_trace", "choices_text"]
