@@ -124,9 +124,12 @@ HOSTILE = {
     "wrong_type": ("def breadthFirstSearch(problem):\n    return {'a': 1}\n",
                    ":1: breadthFirstSearch returned dict, not a list of actions"),
     "missing": ("def depthFirstSearch(problem):\n    return []\n",
-                ": breadthFirstSearch has no function breadthFirstSearch"),
+                " has no function breadthFirstSearch"),
     "syntax": ("def breadthFirstSearch(problem)\n    return []\n",
-               ": breadthFirstSearch raised SyntaxError: expected ':' (search.py, line 1)"),
+               ":1:32: SyntaxError: expected ':'"),
+    "indentation": ("def breadthFirstSearch(problem):\nreturn []\n",
+                    ":2:1: IndentationError: expected an indented block after function "
+                    "definition on line 1"),
 }
 
 

@@ -74,8 +74,13 @@ def _run(options: Options, board: Grid | Graph) -> tuple[StudentRun, Trace, str]
                               test.cost_fn if test is not None else "1")
     run = run_student(text, problem, options.time_limit, options.memory_limit)
     if run.status != "ok":
-        where = f"{shown}:{run.line}" if run.line else shown
         function = problem["function"]
+        if run.about == "missing":
+            raise StudentFailed(f"{shown} has no function {function}")
+        where = f"{shown}:{run.line}" if run.line else shown
+        where += f":{run.col}" if run.line and run.col else ""
+        if run.about == "file":
+            raise StudentFailed(f"{where}: {run.message}")
         raise StudentFailed(f"{where}: {function} {run.message}")
     try:
         trace = as_trace(board, run.expanded, shown)

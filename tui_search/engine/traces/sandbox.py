@@ -8,7 +8,7 @@ session, a small environment, and a time limit after which the whole process gro
 Where ``unshare`` can make a user namespace (Linux), the child also runs in its own network
 namespace (no network at all) and its own process namespace (every process it starts dies
 with it).  The child sets its own memory, CPU and file limits and, on Linux with Landlock,
-refuses writes outside the working folder (:data:`ISOLATION` says what this machine gives).
+refuses writes outside the working folder (:func:`isolation` says what fenced a run).
 """
 
 from __future__ import annotations
@@ -69,11 +69,14 @@ def isolation(landlock: int) -> str:
 
 class StudentRun(Frozen):
     """What the student's function did: ``status`` ``ok`` (it returned ``actions``) or
-    ``error`` (``message``, at ``line`` of the student's file, 0 unknown); the states it
-    asked the successors of, in order (as the problem gave them: JSON values); the Landlock
-    ABI the child fenced itself with (0 none)."""
+    ``error`` (``message``, at ``line`` and ``col`` of the student's file, 0 unknown;
+    ``about`` what failed: ``function`` the function, ``file`` the file (it does not
+    compile), ``missing`` the file has no such function); the states it asked the successors
+    of, in order (as the problem gave them: JSON values); the Landlock ABI the child fenced
+    itself with (0 none)."""
 
-    __slots__ = _FIELDS = ("status", "message", "line", "expanded", "actions", "landlock")
+    __slots__ = _FIELDS = ("status", "message", "line", "expanded", "actions", "landlock",
+                           "col", "about")
 
     status: str
     message: str
@@ -81,11 +84,14 @@ class StudentRun(Frozen):
     expanded: list[object]
     actions: list[str] | None
     landlock: int
+    col: int
+    about: str
 
     def __init__(self, status: str, message: str, line: int, expanded: list[object],
-                 actions: list[str] | None, landlock: int) -> None:
+                 actions: list[str] | None, landlock: int, col: int = 0,
+                 about: str = "function") -> None:
         self._assign(status=status, message=message, line=line, expanded=expanded,
-                     actions=actions, landlock=landlock)
+                     actions=actions, landlock=landlock, col=col, about=about)
 
 
 def run_student(student_text: str, problem: dict[str, object], seconds: float = DEFAULT_SECONDS,
@@ -156,13 +162,16 @@ def _result(work: str, code: int, memory_mb: int) -> StudentRun:
         return StudentRun("error", why, 0, [], None, 0)
     expanded = data.get("expanded")
     actions = data.get("actions")
-    line, landlock = data.get("line"), data.get("landlock")
+    line, landlock, col = data.get("line"), data.get("landlock"), data.get("col")
+    about = data.get("about")
     return StudentRun(
         "ok" if data["status"] == "ok" else "error", str(data.get("message", ""))[:300],
         line if isinstance(line, int) and line >= 0 else 0,
         expanded if isinstance(expanded, list) else [],
         [str(a) for a in actions] if isinstance(actions, list) else None,
-        landlock if isinstance(landlock, int) else 0)
+        landlock if isinstance(landlock, int) else 0,
+        col if isinstance(col, int) and col >= 0 else 0,
+        about if about in ("file", "missing") else "function")
 
 
 def _signal_name(number: int) -> str:

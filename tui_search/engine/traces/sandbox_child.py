@@ -200,8 +200,9 @@ def main() -> None:
     os.chdir(work)
     with open("problem.json", encoding="utf-8") as handle:
         spec = json.load(handle)
-    result: dict[str, Any] = {"status": "error", "message": "", "line": 0, "expanded": [],
-                              "actions": None, "landlock": 0}
+    result: dict[str, Any] = {"status": "error", "message": "", "line": 0, "col": 0,
+                              "about": "function", "expanded": [], "actions": None,
+                              "landlock": 0}
     try:
         resource.setrlimit(resource.RLIMIT_AS, (megabytes * 1024 * 1024,) * 2)
     except (ValueError, OSError):
@@ -233,7 +234,7 @@ def main() -> None:
 
         function = getattr(search, name, None)
         if not callable(function):
-            result["message"] = f"has no function {name}"
+            result["about"] = "missing"
         else:
             result["line"] = function.__code__.co_firstlineno if hasattr(
                 function, "__code__") else 0
@@ -269,15 +270,27 @@ def main() -> None:
         result["line"] = where_in(student, exc.__traceback__)
     except BaseException as exc:  # the student's error, whatever it is
         signal.setitimer(signal.ITIMER_REAL, 0)
-        text = str(exc).splitlines()[0][:120] if str(exc) else ""
-        result["message"] = f"raised {type(exc).__name__}" + (f": {text}" if text else "")
-        result["line"] = where_in(student, exc.__traceback__)
+        if isinstance(exc, SyntaxError) and exc.filename is not None and os.path.abspath(
+                exc.filename) == student:  # its file does not compile: its line and column
+            result["about"] = "file"
+            result["message"] = f"{type(exc).__name__}: {exc.msg}"
+            result["line"], result["col"] = exc.lineno or 0, exc.offset or 0
+        else:
+            text = str(exc).splitlines()[0][:120] if str(exc) else ""
+            result["message"] = f"raised {type(exc).__name__}" + (f": {text}" if text else "")
+            result["line"] = where_in(student, exc.__traceback__)
+    finish(result, problem, result_file, output)
+
+
+def finish(result: dict[str, Any], problem: Problem, result_file: TextIO,
+           output: TextIO) -> None:
+    """Write what happened and end at once (no atexit, no finaliser of the student's)."""
     signal.setitimer(signal.ITIMER_REAL, 0)
     result["expanded"] = problem.expanded
     json.dump(result, result_file)
     result_file.close()
     output.close()
-    os._exit(0)  # no atexit, no finaliser of the student's
+    os._exit(0)
 
 
 if __name__ == "__main__":
