@@ -14,7 +14,7 @@ import pytest
 
 from tests.test_cli import run_cli
 from tests.tui.test_app import sync
-from tui_search.cli.flags import EXIT_BAD_INPUT
+from tui_search.cli.flags import EXIT_BAD_INPUT, UsageError
 from tui_search.cli.main import build_app
 from tui_search.cli.parse import parse_options
 from tui_search.engine.traces.sandbox import isolation
@@ -142,6 +142,64 @@ def test_a_hostile_search_py_is_one_line_exit_2(capsys, tmp_path: Path, name: st
                              "--headless", "--time-limit", "1")
     assert (code, out) == (EXIT_BAD_INPUT, "")
     assert err == f"tui-search: {student}{message}\n"
+
+
+def test_a_search_that_never_calls_get_successors_is_a_difference(capsys, tmp_path: Path
+                                                                   ) -> None:
+    """Returning at once is a search of the wrong kind, in the student's words (exit 1), not
+    a trace the app cannot read (exit 2); its JSON and ``--replay`` say the same."""
+    student = tmp_path / "lazy.py"
+    student.write_text("def breadthFirstSearch(problem):\n    return ['West']\n")
+    code, out, err = run_cli(capsys, "--check-search-py", str(student), TWISTY, "-a", "bfs",
+                             "--headless")
+    assert (code, err) == (1, "")
+    assert out.splitlines() == [
+        "your breadthFirstSearch never called getSuccessors: it expanded nothing",
+        "  returned: action 1, West, walks into a wall"]
+    code, out, _ = run_cli(capsys, "--check-search-py", str(student), TWISTY, "-a", "bfs",
+                           "--headless", "--json")
+    result = json.loads(out)
+    assert code == 1 and result["verdict"] == "difference" and result["expansions"] == 0
+    assert result["first_difference"]["message"] == (
+        "your breadthFirstSearch never called getSuccessors: it expanded nothing")
+    with pytest.raises(UsageError) as raised:  # the app's replay of it
+        parse_options(["--check-search-py", str(student), TWISTY, "-a", "bfs"])
+    assert str(raised.value) == (
+        "your breadthFirstSearch never called getSuccessors: it expanded nothing")
+
+
+#: A maze whose dot is walled off: no path (BFS expands the start and its one free cell).
+WALLED = "%%%%%%\n%P %.%\n%%%%%%\n"
+
+
+@pytest.mark.parametrize("answer", ["[]", "None"])
+def test_no_path_where_none_exists_passes(capsys, tmp_path: Path, answer: str) -> None:
+    """Where the search finds no path, an empty answer (``[]``, or ``None`` as the course
+    allows) is right: the search matches and Gradescope's "its path" test passes.  Where a
+    path exists, ``None`` is still no list of actions (exit 2)."""
+    maze = tmp_path / "walled.lay"
+    maze.write_text(WALLED)
+    student = tmp_path / "search.py"
+    student.write_text(Path(STUDENT).read_text().replace(
+        "    return []\n", f"    return {answer}\n"))
+    out_json = tmp_path / "results.json"
+    code, out, err = run_cli(capsys, "--check-search-py", str(student), str(maze), "-a", "bfs",
+                             "--headless", "--gradescope", str(out_json))
+    assert (code, err) == (0, "")
+    lines = out.splitlines()
+    assert lines[0] == ("your breadthFirstSearch is BFS (order N,S,E,W; visit on expand; goal "
+                        "test on expand), for all 2 expansions")
+    assert lines[-1] == "  returned: none, and no path to the goal exists: right"
+    data = json.loads(out_json.read_text())
+    assert [t["score"] for t in data["tests"]] == [1, 1] and data["score"] == 2
+    nothing = tmp_path / "none.py"
+    nothing.write_text("def breadthFirstSearch(problem):\n    problem.getSuccessors("
+                       "problem.getStartState())\n    return None\n")
+    code, _, err = run_cli(capsys, "--check-search-py", str(nothing), TWISTY, "-a", "bfs",
+                           "--headless")
+    assert code == EXIT_BAD_INPUT
+    assert err == (f"tui-search: {nothing}:1: breadthFirstSearch returned NoneType, not a "
+                   "list of actions\n")
 
 
 def test_a_file_outside_the_working_folder_survives(capsys, tmp_path: Path) -> None:

@@ -57,8 +57,9 @@ def _board(options: Options) -> tuple[Grid | Graph, str]:
     return board, where
 
 
-def _run(options: Options, board: Grid | Graph) -> tuple[StudentRun, Trace, str]:
-    """The student's run, its trace, and the student's file as the messages name it."""
+def _run(options: Options, board: Grid | Graph) -> tuple[StudentRun, Trace | None, str]:
+    """The student's run, its trace (None: it never called getSuccessors), and the student's
+    file as the messages name it."""
     from tui_search.engine.maps.read import MapError, read_text
     from tui_search.engine.traces.sandbox import MAX_STUDENT_BYTES, run_student
     from tui_search.engine.traces.student_search import as_trace, student_problem
@@ -82,6 +83,8 @@ def _run(options: Options, board: Grid | Graph) -> tuple[StudentRun, Trace, str]
         if run.about == "file":
             raise StudentFailed(f"{where}: {run.message}")
         raise StudentFailed(f"{where}: {function} {run.message}")
+    if not run.expanded:
+        return run, None, shown
     try:
         trace = as_trace(board, run.expanded, shown)
     except MapError as exc:
@@ -100,8 +103,17 @@ def student_replay(options: Options) -> Replay:
         _, trace, _ = _run(options, board)
     except StudentFailed as exc:
         raise UsageError(str(exc)) from None
+    if trace is None:
+        from tui_search.engine.traces.student_search import FUNCTIONS
+
+        raise UsageError(expanded_nothing(FUNCTIONS[options.algorithm]))
     return replay_of(trace, board, options.algorithm, semantics_from(options),
                      options.max_steps)
+
+
+def expanded_nothing(function: str) -> str:
+    """The difference of a search that never asked for a state's successors."""
+    return f"your {function} never called getSuccessors: it expanded nothing"
 
 
 def verdict_words(verdict: Verdict, function: str) -> str:
@@ -135,13 +147,14 @@ def _gradescope(options: Options, function: str, where: str, words: str,
         return
     from tui_search.cli.report import write_gradescope
     from tui_search.engine.course.gradescope import graded_test, results
+    from tui_search.engine.traces.student_search import path_found
 
     answered = passed is not None
     first = words.splitlines()[0]
     tests = [graded_test(f"{function} on {where}: the search", answered and first.startswith(
                  f"your {function} is "), words),
-             graded_test(f"{function} on {where}: its path", answered and path.endswith(
-                 "a path to the goal"), path)]
+             graded_test(f"{function} on {where}: its path", answered and path_found(path),
+                         path)]
     write_gradescope(options, results(first, tests))
 
 
@@ -153,7 +166,7 @@ def run_check_search_py(options: Options) -> int:
     from tui_search.cli.headless import to_json
     from tui_search.engine.traces.causes import Voice
     from tui_search.engine.traces.check import check_trace
-    from tui_search.engine.traces.student_search import FUNCTIONS, path_words
+    from tui_search.engine.traces.student_search import FUNCTIONS, path_found, path_words
 
     board, where = _board(options)
     function = FUNCTIONS[options.algorithm]
@@ -163,13 +176,15 @@ def run_check_search_py(options: Options) -> int:
         _gradescope(options, function, where, str(exc), None, str(exc))
         print(f"tui-search: {exc}", file=sys.stderr)
         return EXIT_BAD_INPUT
+    test = options.course_test
+    returned = path_words(board, run.actions or [], test.actions if test is not None else None)
+    if trace is None:
+        return _expanded_nothing(options, run, function, where, shown, returned)
     semantics = semantics_from(options)
     voice = Voice(f"your {function}", f"your {function}", (), True)
     verdict = check_trace(trace, board, options.algorithm, semantics,
                           max_steps=options.max_steps, voice=voice)
-    test = options.course_test
-    returned = path_words(board, run.actions or [], test.actions if test is not None else None)
-    reached = returned.endswith("a path to the goal")
+    reached = path_found(returned)
     _gradescope(options, function, where, verdict_words(verdict, function),
                 verdict.matches and reached, returned)
     if options.json:
@@ -188,3 +203,23 @@ def run_check_search_py(options: Options) -> int:
                   f"states (x, y) y counts from the bottom: y there is {board.height - 1} - y")
         print(f"  returned: {returned}")
     return 0 if verdict.matches else 1
+
+
+def _expanded_nothing(options: Options, run: StudentRun, function: str, where: str,
+                      shown: str, returned: str) -> int:
+    """A search that never called getSuccessors: a difference (exit 1)."""
+    from tui_search.cli.headless import to_json
+
+    words = expanded_nothing(function)
+    _gradescope(options, function, where, words, False, returned)
+    if options.json:
+        print(to_json({"search_py": shown, "map": where, "function": function,
+                       "expansions": 0, "returned": run.actions, "path": returned,
+                       "verdict": "difference", "algorithm": options.algorithm,
+                       "steps": 0, "matched_steps": 0,
+                       "first_difference": {"step": 1, "kind": "no-expansion",
+                                            "message": words}}))
+    else:
+        print(words)
+        print(f"  returned: {returned}")
+    return 1
