@@ -202,6 +202,33 @@ def test_no_path_where_none_exists_passes(capsys, tmp_path: Path, answer: str) -
                    "list of actions\n")
 
 
+def test_what_fenced_the_run_is_said(capsys, monkeypatch: pytest.MonkeyPatch) -> None:
+    """``--json`` names what fenced the student's process in; where neither Landlock nor a
+    network namespace did, one line on stderr says so (the child's Landlock and the
+    namespaces made unavailable here by standing in for what the child reported)."""
+    from tui_search.engine.traces import sandbox
+
+    code, out, _ = run_cli(capsys, "--check-search-py", STUDENT, GRAPH_BFS, "--headless",
+                           "--json")
+    assert code == 0
+    assert json.loads(out)["isolation"] == isolation(landlock_abi())
+    assert json.loads(out)["isolation"].startswith("time, memory, CPU and file-size limits; ")
+    real = sandbox.run_student
+
+    def without_landlock(*args: object, **kwargs: object) -> sandbox.StudentRun:
+        run = real(*args, **kwargs)  # type: ignore[arg-type]
+        return run.replace(landlock=0)
+
+    monkeypatch.setattr(sandbox, "run_student", without_landlock)
+    monkeypatch.setattr(sandbox, "_namespaces", False)
+    code, out, err = run_cli(capsys, "--check-search-py", STUDENT, GRAPH_BFS, "--headless",
+                             "--json")
+    assert code == 0 and "writes NOT fenced (no Landlock here)" in json.loads(out)["isolation"]
+    assert err == ("tui-search: note: neither Landlock nor a network namespace was available "
+                   "here: the student's code ran with the network and could write wherever "
+                   "you can (see docs/14-cs188.md)\n")
+
+
 def test_a_file_outside_the_working_folder_survives(capsys, tmp_path: Path) -> None:
     """Where the OS offers Landlock, writes outside the fresh working folder are refused; the
     docs say so, and what is not fenced where it does not."""
@@ -212,7 +239,6 @@ def test_a_file_outside_the_working_folder_survives(capsys, tmp_path: Path) -> N
                        f"    open({str(outside)!r}, 'w').write('lost')\n    return []\n")
     code, _, err = run_cli(capsys, "--check-search-py", str(student), TWISTY, "-a", "bfs",
                            "--headless")
-    from tui_search.engine.traces.sandbox_child import landlock_writes_only_in  # noqa: F401
     if "writes only in its working folder" in isolation(landlock_abi()):
         assert code == EXIT_BAD_INPUT
         assert err == (f"tui-search: {student}:4: breadthFirstSearch raised PermissionError: "

@@ -61,19 +61,24 @@ def _run(options: Options, board: Grid | Graph) -> tuple[StudentRun, Trace | Non
     """The student's run, its trace (None: it never called getSuccessors), and the student's
     file as the messages name it."""
     from tui_search.engine.maps.read import MapError, read_text
-    from tui_search.engine.traces.sandbox import MAX_STUDENT_BYTES, run_student
+    from tui_search.engine.traces import sandbox
     from tui_search.engine.traces.student_search import as_trace, student_problem
 
     assert options.check_search_py is not None
     shown = describe_name(options.check_search_py)
-    text = read_text(options.check_search_py, "a search.py", MAX_STUDENT_BYTES)
+    text = read_text(options.check_search_py, "a search.py", sandbox.MAX_STUDENT_BYTES)
     sem = semantics_from(options)
     test = options.course_test
     heuristic = sem.heuristic if options.algorithm == "astar" else "zero"
     problem = student_problem(board, options.algorithm, heuristic,
                               test.actions if test is not None else None,
                               test.cost_fn if test is not None else "1")
-    run = run_student(text, problem, options.time_limit, options.memory_limit)
+    run = sandbox.run_student(text, problem, options.time_limit, options.memory_limit)
+    note = sandbox.unfenced(run.landlock)
+    if note is not None:
+        import sys
+
+        print(f"tui-search: note: {note}", file=sys.stderr)
     if run.status != "ok":
         function = problem["function"]
         if run.about == "missing":
@@ -166,6 +171,7 @@ def run_check_search_py(options: Options) -> int:
     from tui_search.cli.headless import to_json
     from tui_search.engine.traces.causes import Voice
     from tui_search.engine.traces.check import check_trace
+    from tui_search.engine.traces.sandbox import isolation
     from tui_search.engine.traces.student_search import FUNCTIONS, path_found, path_words
 
     board, where = _board(options)
@@ -190,7 +196,8 @@ def run_check_search_py(options: Options) -> int:
     if options.json:
         print(to_json({"search_py": shown, "map": where, "function": function,
                        "expansions": len(run.expanded), "returned": run.actions,
-                       "path": returned, **verdict.as_json()}))
+                       "path": returned, "isolation": isolation(run.landlock),
+                       **verdict.as_json()}))
     else:
         print(verdict_words(verdict, function))
         difference = verdict.difference
@@ -209,12 +216,14 @@ def _expanded_nothing(options: Options, run: StudentRun, function: str, where: s
                       shown: str, returned: str) -> int:
     """A search that never called getSuccessors: a difference (exit 1)."""
     from tui_search.cli.headless import to_json
+    from tui_search.engine.traces.sandbox import isolation
 
     words = expanded_nothing(function)
     _gradescope(options, function, where, words, False, returned)
     if options.json:
         print(to_json({"search_py": shown, "map": where, "function": function,
                        "expansions": 0, "returned": run.actions, "path": returned,
+                       "isolation": isolation(run.landlock),
                        "verdict": "difference", "algorithm": options.algorithm,
                        "steps": 0, "matched_steps": 0,
                        "first_difference": {"step": 1, "kind": "no-expansion",

@@ -25,7 +25,8 @@ from pathlib import Path
 
 from tui_search.engine.util.frozen import Frozen
 
-__all__ = ["DEFAULT_MEMORY_MB", "DEFAULT_SECONDS", "StudentRun", "isolation", "run_student"]
+__all__ = ["DEFAULT_MEMORY_MB", "DEFAULT_SECONDS", "StudentRun", "isolation", "run_student",
+           "unfenced"]
 
 DEFAULT_SECONDS = 10.0
 DEFAULT_MEMORY_MB = 512
@@ -65,6 +66,15 @@ def isolation(landlock: int) -> str:
     parts.append("writes only in its working folder (Landlock)" if landlock
                  else "writes NOT fenced (no Landlock here)")
     return "; ".join(parts)
+
+
+def unfenced(landlock: int) -> str | None:
+    """One line when neither Landlock nor a network namespace fenced the run in (None when
+    either did)."""
+    if landlock or namespaces_work():
+        return None
+    return ("neither Landlock nor a network namespace was available here: the student's code "
+            "ran with the network and could write wherever you can (see docs/14-cs188.md)")
 
 
 class StudentRun(Frozen):
