@@ -229,6 +229,20 @@ def test_what_fenced_the_run_is_said(capsys, monkeypatch: pytest.MonkeyPatch) ->
                    "you can (see docs/14-cs188.md)\n")
 
 
+def test_the_recorded_expansions_are_no_list_on_the_problem(capsys, tmp_path: Path) -> None:
+    """The calls of getSuccessors are recorded out of the problem's attributes: a search.py
+    that sets ``problem.expanded`` changes nothing of what is checked (code that digs for the
+    record can still reach it: the docs say so)."""
+    student = tmp_path / "forger.py"
+    student.write_text("def breadthFirstSearch(problem):\n"
+                       "    problem.getSuccessors(problem.getStartState())\n"
+                       "    problem.expanded = [list(problem.getStartState())] * 50\n"
+                       "    return []\n")
+    code, out, _ = run_cli(capsys, "--check-search-py", str(student), TWISTY, "-a", "bfs",
+                           "--headless", "--json")
+    assert code == 1 and json.loads(out)["expansions"] == 1
+
+
 def test_a_file_outside_the_working_folder_survives(capsys, tmp_path: Path) -> None:
     """Where the OS offers Landlock, writes outside the fresh working folder are refused; the
     docs say so, and what is not fenced where it does not."""

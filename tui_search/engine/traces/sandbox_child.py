@@ -13,7 +13,8 @@ where ``unshare`` works, and kills the whole process group at the time limit.
 
 The student's code can undo what this process does to itself; what it cannot undo is what
 the kernel enforces (the limits, Landlock, the namespaces) and the parent's kill.  The result
-is checked by the parent, which trusts only the states it can check against its own problem.
+is checked by the parent, which trusts only the states it can check against its own problem;
+code set on cheating can still forge them (it shares this Python and the working folder).
 """
 
 import ctypes
@@ -117,12 +118,15 @@ def refuse_processes() -> None:
 
 class Problem:
     """The search problem in the course's conventions: ``getStartState``, ``isGoalState``,
-    ``getSuccessors`` (each call an expansion, recorded), ``getCostOfActions``."""
+    ``getSuccessors`` (each call an expansion, passed to ``record``), ``getCostOfActions``.
 
-    def __init__(self, spec: dict[str, Any]) -> None:
+    The record is ``main``'s, not a list on the problem, so that a student's code does not
+    change it by chance; code set on it can still reach it (it runs in this same Python)."""
+
+    def __init__(self, spec: dict[str, Any], record: Callable[[Any], None]) -> None:
         self.spec = spec
-        self.expanded: list[Any] = []
-        self._expanded = 0
+        self.__record = record
+        self.__calls = 0
         self.limit = spec["max_expansions"]
         if spec["kind"] == "grid":
             rows = spec["walls"]
@@ -148,14 +152,14 @@ class Problem:
         return 0 <= x < self.width and 0 <= y < self.height and (x, y) not in self.walls
 
     def getSuccessors(self, state: Any) -> list[tuple[Any, str, float]]:
-        if len(self.expanded) >= self.limit:
+        if self.__calls >= self.limit:
             raise RuntimeError(f"more than {self.limit:,} calls of getSuccessors")
         if self.spec["kind"] == "grid":
             if not (isinstance(state, tuple) and len(state) == 2
                     and all(isinstance(v, int) for v in state) and self._free(*state)):
                 raise ValueError(f"getSuccessors({state!r}): not a free cell (x, y)")
-            self.expanded.append(list(state))
-            self._expanded += 1
+            self.__record(list(state))
+            self.__calls += 1
             out = []
             for action, dx, dy in MOVES:
                 x, y = state[0] + dx, state[1] + dy
@@ -164,8 +168,8 @@ class Problem:
             return out
         if not isinstance(state, str) or state not in self.roads:
             raise ValueError(f"getSuccessors({state!r}): no such state")
-        self.expanded.append(state)
-        self._expanded += 1
+        self.__record(state)
+        self.__calls += 1
         return [(b, action, cost) for action, b, cost in self.roads[state]]
 
     def getCostOfActions(self, actions: list[str]) -> float:
@@ -219,7 +223,8 @@ def main() -> None:
     sys.dont_write_bytecode = True
     sys.path.insert(0, work)
     student = os.path.abspath("search.py")
-    problem = Problem(spec)
+    expanded: list[Any] = []
+    problem = Problem(spec, expanded.append)
     name = spec["function"]
 
     def out_of_time(signum: int, frame: FrameType | None) -> None:
@@ -281,18 +286,12 @@ def main() -> None:
             text = str(exc).splitlines()[0][:120] if str(exc) else ""
             result["message"] = f"raised {type(exc).__name__}" + (f": {text}" if text else "")
             result["line"] = where_in(student, exc.__traceback__)
-    finish(result, problem, result_file, output)
-
-
-def finish(result: dict[str, Any], problem: Problem, result_file: TextIO,
-           output: TextIO) -> None:
-    """Write what happened and end at once (no atexit, no finaliser of the student's)."""
     signal.setitimer(signal.ITIMER_REAL, 0)
-    result["expanded"] = problem.expanded
+    result["expanded"] = expanded
     json.dump(result, result_file)
     result_file.close()
     output.close()
-    os._exit(0)
+    os._exit(0)  # no atexit, no finaliser of the student's
 
 
 if __name__ == "__main__":
