@@ -165,7 +165,21 @@ def test_a_search_that_never_calls_get_successors_is_a_difference(capsys, tmp_pa
     with pytest.raises(UsageError) as raised:  # the app's replay of it
         parse_options(["--check-search-py", str(student), TWISTY, "-a", "bfs"])
     assert str(raised.value) == (
-        "your breadthFirstSearch never called getSuccessors: it expanded nothing")
+        "your breadthFirstSearch never called getSuccessors: it expanded nothing: nothing to "
+        "replay")
+
+
+def test_expanding_nothing_is_right_where_the_start_is_a_goal(capsys, tmp_path: Path) -> None:
+    """The course's search takes the start off, finds it a goal and returns [] without one
+    call of getSuccessors (as the app's own search of the test expands nothing)."""
+    test = tmp_path / "same.test"
+    test.write_text('algorithm: "breadthFirstSearch"\ngraph: """\nstart_state: A\n'
+                    'goal_states: A\nA 0:A->B B\n"""\n')
+    code, out, err = run_cli(capsys, "--check-search-py", STUDENT, str(test), "--headless")
+    assert (code, err) == (0, "")
+    assert out.splitlines() == [
+        "your breadthFirstSearch is right to expand nothing: the start is a goal",
+        "  returned: 0 actions, a path to the goal"]
 
 
 #: A maze whose dot is walled off: no path (BFS expands the start and its one free cell).

@@ -111,13 +111,19 @@ def student_replay(options: Options) -> Replay:
     if trace is None:
         from tui_search.engine.traces.student_search import FUNCTIONS
 
-        raise UsageError(expanded_nothing(FUNCTIONS[options.algorithm]))
+        raise UsageError(f"{expanded_nothing(FUNCTIONS[options.algorithm], board)}: nothing "
+                         "to replay")
     return replay_of(trace, board, options.algorithm, semantics_from(options),
                      options.max_steps)
 
 
-def expanded_nothing(function: str) -> str:
-    """The difference of a search that never asked for a state's successors."""
+def expanded_nothing(function: str, board: Grid | Graph) -> str:
+    """What a search that never asked for a state's successors is: right where the start is
+    a goal (the course's searches take it off and return), else a difference."""
+    start_is_goal = (board.start == board.goal if isinstance(board, Grid)
+                     else board.start in board.goals)
+    if start_is_goal:
+        return f"your {function} is right to expand nothing: the start is a goal"
     return f"your {function} never called getSuccessors: it expanded nothing"
 
 
@@ -185,7 +191,7 @@ def run_check_search_py(options: Options) -> int:
     test = options.course_test
     returned = path_words(board, run.actions or [], test.actions if test is not None else None)
     if trace is None:
-        return _expanded_nothing(options, run, function, where, shown, returned)
+        return _expanded_nothing(options, run, (function, where, shown), board, returned)
     semantics = semantics_from(options)
     voice = Voice(f"your {function}", f"your {function}", (), True)
     verdict = check_trace(trace, board, options.algorithm, semantics,
@@ -212,23 +218,27 @@ def run_check_search_py(options: Options) -> int:
     return 0 if verdict.matches else 1
 
 
-def _expanded_nothing(options: Options, run: StudentRun, function: str, where: str,
-                      shown: str, returned: str) -> int:
-    """A search that never called getSuccessors: a difference (exit 1)."""
+def _expanded_nothing(options: Options, run: StudentRun, names: tuple[str, str, str],
+                      board: Grid | Graph, returned: str) -> int:
+    """A search that never called getSuccessors (``names``: its function, the map, the
+    student's file): a difference (exit 1) unless the start is a goal (exit 0)."""
     from tui_search.cli.headless import to_json
     from tui_search.engine.traces.sandbox import isolation
+    from tui_search.engine.traces.student_search import path_found
 
-    words = expanded_nothing(function)
-    _gradescope(options, function, where, words, False, returned)
+    function, where, shown = names
+    words = expanded_nothing(function, board)
+    right = words.startswith(f"your {function} is ")
+    _gradescope(options, function, where, words, right and path_found(returned), returned)
     if options.json:
         print(to_json({"search_py": shown, "map": where, "function": function,
                        "expansions": 0, "returned": run.actions, "path": returned,
                        "isolation": isolation(run.landlock),
-                       "verdict": "difference", "algorithm": options.algorithm,
-                       "steps": 0, "matched_steps": 0,
-                       "first_difference": {"step": 1, "kind": "no-expansion",
-                                            "message": words}}))
+                       "verdict": "match" if right else "difference",
+                       "algorithm": options.algorithm, "steps": 0, "matched_steps": 0,
+                       "first_difference": None if right else {
+                           "step": 1, "kind": "no-expansion", "message": words}}))
     else:
         print(words)
         print(f"  returned: {returned}")
-    return 1
+    return 0 if right else 1
