@@ -14,7 +14,7 @@ import pytest
 
 from tests.test_cli import run_cli
 from tests.tui.test_app import sync
-from tui_search.cli.flags import EXIT_BAD_INPUT
+from tui_search.cli.flags import EXIT_BAD_INPUT, UsageError
 from tui_search.cli.main import build_app
 from tui_search.cli.parse import parse_options
 from tui_search.engine.traces.sandbox import isolation
@@ -124,9 +124,12 @@ HOSTILE = {
     "wrong_type": ("def breadthFirstSearch(problem):\n    return {'a': 1}\n",
                    ":1: breadthFirstSearch returned dict, not a list of actions"),
     "missing": ("def depthFirstSearch(problem):\n    return []\n",
-                ": breadthFirstSearch has no function breadthFirstSearch"),
+                " has no function breadthFirstSearch"),
     "syntax": ("def breadthFirstSearch(problem)\n    return []\n",
-               ": breadthFirstSearch raised SyntaxError: expected ':' (search.py, line 1)"),
+               ":1:32: SyntaxError: expected ':'"),
+    "indentation": ("def breadthFirstSearch(problem):\nreturn []\n",
+                    ":2:1: IndentationError: expected an indented block after function "
+                    "definition on line 1"),
 }
 
 
@@ -141,6 +144,119 @@ def test_a_hostile_search_py_is_one_line_exit_2(capsys, tmp_path: Path, name: st
     assert err == f"tui-search: {student}{message}\n"
 
 
+def test_a_search_that_never_calls_get_successors_is_a_difference(capsys, tmp_path: Path
+                                                                   ) -> None:
+    """Returning at once is a search of the wrong kind, in the student's words (exit 1), not
+    a trace the app cannot read (exit 2); its JSON and ``--replay`` say the same."""
+    student = tmp_path / "lazy.py"
+    student.write_text("def breadthFirstSearch(problem):\n    return ['West']\n")
+    code, out, err = run_cli(capsys, "--check-search-py", str(student), TWISTY, "-a", "bfs",
+                             "--headless")
+    assert (code, err) == (1, "")
+    assert out.splitlines() == [
+        "your breadthFirstSearch never called getSuccessors: it expanded nothing",
+        "  returned: action 1, West, walks into a wall"]
+    code, out, _ = run_cli(capsys, "--check-search-py", str(student), TWISTY, "-a", "bfs",
+                           "--headless", "--json")
+    result = json.loads(out)
+    assert code == 1 and result["verdict"] == "difference" and result["expansions"] == 0
+    assert result["first_difference"]["message"] == (
+        "your breadthFirstSearch never called getSuccessors: it expanded nothing")
+    with pytest.raises(UsageError) as raised:  # the app's replay of it
+        parse_options(["--check-search-py", str(student), TWISTY, "-a", "bfs"])
+    assert str(raised.value) == (
+        "your breadthFirstSearch never called getSuccessors: it expanded nothing: nothing to "
+        "replay")
+
+
+def test_expanding_nothing_is_right_where_the_start_is_a_goal(capsys, tmp_path: Path) -> None:
+    """The course's search takes the start off, finds it a goal and returns [] without one
+    call of getSuccessors (as the app's own search of the test expands nothing)."""
+    test = tmp_path / "same.test"
+    test.write_text('algorithm: "breadthFirstSearch"\ngraph: """\nstart_state: A\n'
+                    'goal_states: A\nA 0:A->B B\n"""\n')
+    code, out, err = run_cli(capsys, "--check-search-py", STUDENT, str(test), "--headless")
+    assert (code, err) == (0, "")
+    assert out.splitlines() == [
+        "your breadthFirstSearch is right to expand nothing: the start is a goal",
+        "  returned: 0 actions, a path to the goal"]
+
+
+#: A maze whose dot is walled off: no path (BFS expands the start and its one free cell).
+WALLED = "%%%%%%\n%P %.%\n%%%%%%\n"
+
+
+@pytest.mark.parametrize("answer", ["[]", "None"])
+def test_no_path_where_none_exists_passes(capsys, tmp_path: Path, answer: str) -> None:
+    """Where the search finds no path, an empty answer (``[]``, or ``None`` as the course
+    allows) is right: the search matches and Gradescope's "its path" test passes.  Where a
+    path exists, ``None`` is still no list of actions (exit 2)."""
+    maze = tmp_path / "walled.lay"
+    maze.write_text(WALLED)
+    student = tmp_path / "search.py"
+    student.write_text(Path(STUDENT).read_text().replace(
+        "    return []\n", f"    return {answer}\n"))
+    out_json = tmp_path / "results.json"
+    code, out, err = run_cli(capsys, "--check-search-py", str(student), str(maze), "-a", "bfs",
+                             "--headless", "--gradescope", str(out_json))
+    assert (code, err) == (0, "")
+    lines = out.splitlines()
+    assert lines[0] == ("your breadthFirstSearch is BFS (order N,S,E,W; visit on expand; goal "
+                        "test on expand), for all 2 expansions")
+    assert lines[-1] == "  returned: none, and no path to the goal exists: right"
+    data = json.loads(out_json.read_text())
+    assert [t["score"] for t in data["tests"]] == [1, 1] and data["score"] == 2
+    nothing = tmp_path / "none.py"
+    nothing.write_text("def breadthFirstSearch(problem):\n    problem.getSuccessors("
+                       "problem.getStartState())\n    return None\n")
+    code, _, err = run_cli(capsys, "--check-search-py", str(nothing), TWISTY, "-a", "bfs",
+                           "--headless")
+    assert code == EXIT_BAD_INPUT
+    assert err == (f"tui-search: {nothing}:1: breadthFirstSearch returned NoneType, not a "
+                   "list of actions\n")
+
+
+def test_what_fenced_the_run_is_said(capsys, monkeypatch: pytest.MonkeyPatch) -> None:
+    """``--json`` names what fenced the student's process in; where neither Landlock nor a
+    network namespace did, one line on stderr says so (the child's Landlock and the
+    namespaces made unavailable here by standing in for what the child reported)."""
+    from tui_search.engine.traces import sandbox
+
+    code, out, _ = run_cli(capsys, "--check-search-py", STUDENT, GRAPH_BFS, "--headless",
+                           "--json")
+    assert code == 0
+    assert json.loads(out)["isolation"] == isolation(landlock_abi())
+    assert json.loads(out)["isolation"].startswith("time, memory, CPU and file-size limits; ")
+    real = sandbox.run_student
+
+    def without_landlock(*args: object, **kwargs: object) -> sandbox.StudentRun:
+        run = real(*args, **kwargs)  # type: ignore[arg-type]
+        return run.replace(landlock=0)
+
+    monkeypatch.setattr(sandbox, "run_student", without_landlock)
+    monkeypatch.setattr(sandbox, "_namespaces", False)
+    code, out, err = run_cli(capsys, "--check-search-py", STUDENT, GRAPH_BFS, "--headless",
+                             "--json")
+    assert code == 0 and "writes NOT fenced (no Landlock here)" in json.loads(out)["isolation"]
+    assert err == ("tui-search: note: neither Landlock nor a network namespace was available "
+                   "here: the student's code ran with the network and could write wherever "
+                   "you can (see docs/14-cs188.md)\n")
+
+
+def test_the_recorded_expansions_are_no_list_on_the_problem(capsys, tmp_path: Path) -> None:
+    """The calls of getSuccessors are recorded out of the problem's attributes: a search.py
+    that sets ``problem.expanded`` changes nothing of what is checked (code that digs for the
+    record can still reach it: the docs say so)."""
+    student = tmp_path / "forger.py"
+    student.write_text("def breadthFirstSearch(problem):\n"
+                       "    problem.getSuccessors(problem.getStartState())\n"
+                       "    problem.expanded = [list(problem.getStartState())] * 50\n"
+                       "    return []\n")
+    code, out, _ = run_cli(capsys, "--check-search-py", str(student), TWISTY, "-a", "bfs",
+                           "--headless", "--json")
+    assert code == 1 and json.loads(out)["expansions"] == 1
+
+
 def test_a_file_outside_the_working_folder_survives(capsys, tmp_path: Path) -> None:
     """Where the OS offers Landlock, writes outside the fresh working folder are refused; the
     docs say so, and what is not fenced where it does not."""
@@ -151,7 +267,6 @@ def test_a_file_outside_the_working_folder_survives(capsys, tmp_path: Path) -> N
                        f"    open({str(outside)!r}, 'w').write('lost')\n    return []\n")
     code, _, err = run_cli(capsys, "--check-search-py", str(student), TWISTY, "-a", "bfs",
                            "--headless")
-    from tui_search.engine.traces.sandbox_child import landlock_writes_only_in  # noqa: F401
     if "writes only in its working folder" in isolation(landlock_abi()):
         assert code == EXIT_BAD_INPUT
         assert err == (f"tui-search: {student}:4: breadthFirstSearch raised PermissionError: "

@@ -139,6 +139,9 @@ def test_any_other_cost_function_is_refused_and_never_run(tmp_path: Path) -> Non
      'heuristic: """\nZ 1\n"""\n', ":8:1: no state 'Z' in the graph"),
     ('algorithm: "bfs"\nlayout: """\n%%%%\n%P?.\n"""\n', ":4:3: unknown layout character "
      "'?' (use % walls, P the start, . food, o G digits and spaces free)"),
+    ('algorithm: "bfs"\n# the maze\nlayout: """\n%%%%\n%P.%\n%.P%\n"""\n', ":6:3: a second P "
+     "(the first is at line 5, column 2)"),
+    ('algorithm: "bfs"\nlayout: """\n%%%%\n%P.%%\n"""\n', ":4:5: row has 5 cells, expected 4"),
     ('algorithm: "bfs"\nheuristic: "octileHeuristic"\nlayout: """\n%P.%\n"""\n',
      ":2:13: heuristic 'octileHeuristic': use manhattanHeuristic, euclideanHeuristic, "
      "nullHeuristic"),

@@ -54,7 +54,8 @@ def test_the_course_counts_y_from_the_bottom_row() -> None:
 
 @pytest.mark.parametrize(("text", "error"), [
     ("", "t.lay: empty layout: no rows of % walls, P and ."),
-    ("%%%\n%P.%\n", "t.lay:2: row has 4 cells, expected 3"),
+    ("%%%\n%P.%\n", "t.lay:2:4: row has 4 cells, expected 3"),
+    ("%%%%\n%P.\n", "t.lay:2:4: row has 3 cells, expected 4"),
     ("%%%%\n%Px.\n", "t.lay:2:3: unknown layout character 'x' (use % walls, P the start, . "
      "food, o G digits and spaces free)"),
     ("%P%\n\n%.%\n", "t.lay:2: blank line inside the layout"),

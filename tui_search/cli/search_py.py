@@ -57,26 +57,39 @@ def _board(options: Options) -> tuple[Grid | Graph, str]:
     return board, where
 
 
-def _run(options: Options, board: Grid | Graph) -> tuple[StudentRun, Trace, str]:
-    """The student's run, its trace, and the student's file as the messages name it."""
+def _run(options: Options, board: Grid | Graph) -> tuple[StudentRun, Trace | None, str]:
+    """The student's run, its trace (None: it never called getSuccessors), and the student's
+    file as the messages name it."""
     from tui_search.engine.maps.read import MapError, read_text
-    from tui_search.engine.traces.sandbox import MAX_STUDENT_BYTES, run_student
+    from tui_search.engine.traces import sandbox
     from tui_search.engine.traces.student_search import as_trace, student_problem
 
     assert options.check_search_py is not None
     shown = describe_name(options.check_search_py)
-    text = read_text(options.check_search_py, "a search.py", MAX_STUDENT_BYTES)
+    text = read_text(options.check_search_py, "a search.py", sandbox.MAX_STUDENT_BYTES)
     sem = semantics_from(options)
     test = options.course_test
     heuristic = sem.heuristic if options.algorithm == "astar" else "zero"
     problem = student_problem(board, options.algorithm, heuristic,
                               test.actions if test is not None else None,
                               test.cost_fn if test is not None else "1")
-    run = run_student(text, problem, options.time_limit, options.memory_limit)
+    run = sandbox.run_student(text, problem, options.time_limit, options.memory_limit)
+    note = sandbox.unfenced(run.landlock)
+    if note is not None:
+        import sys
+
+        print(f"tui-search: note: {note}", file=sys.stderr)
     if run.status != "ok":
-        where = f"{shown}:{run.line}" if run.line else shown
         function = problem["function"]
+        if run.about == "missing":
+            raise StudentFailed(f"{shown} has no function {function}")
+        where = f"{shown}:{run.line}" if run.line else shown
+        where += f":{run.col}" if run.line and run.col else ""
+        if run.about == "file":
+            raise StudentFailed(f"{where}: {run.message}")
         raise StudentFailed(f"{where}: {function} {run.message}")
+    if not run.expanded:
+        return run, None, shown
     try:
         trace = as_trace(board, run.expanded, shown)
     except MapError as exc:
@@ -95,8 +108,23 @@ def student_replay(options: Options) -> Replay:
         _, trace, _ = _run(options, board)
     except StudentFailed as exc:
         raise UsageError(str(exc)) from None
+    if trace is None:
+        from tui_search.engine.traces.student_search import FUNCTIONS
+
+        raise UsageError(f"{expanded_nothing(FUNCTIONS[options.algorithm], board)}: nothing "
+                         "to replay")
     return replay_of(trace, board, options.algorithm, semantics_from(options),
                      options.max_steps)
+
+
+def expanded_nothing(function: str, board: Grid | Graph) -> str:
+    """What a search that never asked for a state's successors is: right where the start is
+    a goal (the course's searches take it off and return), else a difference."""
+    start_is_goal = (board.start == board.goal if isinstance(board, Grid)
+                     else board.start in board.goals)
+    if start_is_goal:
+        return f"your {function} is right to expand nothing: the start is a goal"
+    return f"your {function} never called getSuccessors: it expanded nothing"
 
 
 def verdict_words(verdict: Verdict, function: str) -> str:
@@ -130,13 +158,14 @@ def _gradescope(options: Options, function: str, where: str, words: str,
         return
     from tui_search.cli.report import write_gradescope
     from tui_search.engine.course.gradescope import graded_test, results
+    from tui_search.engine.traces.student_search import path_found
 
     answered = passed is not None
     first = words.splitlines()[0]
     tests = [graded_test(f"{function} on {where}: the search", answered and first.startswith(
                  f"your {function} is "), words),
-             graded_test(f"{function} on {where}: its path", answered and path.endswith(
-                 "a path to the goal"), path)]
+             graded_test(f"{function} on {where}: its path", answered and path_found(path),
+                         path)]
     write_gradescope(options, results(first, tests))
 
 
@@ -148,7 +177,8 @@ def run_check_search_py(options: Options) -> int:
     from tui_search.cli.headless import to_json
     from tui_search.engine.traces.causes import Voice
     from tui_search.engine.traces.check import check_trace
-    from tui_search.engine.traces.student_search import FUNCTIONS, path_words
+    from tui_search.engine.traces.sandbox import isolation
+    from tui_search.engine.traces.student_search import FUNCTIONS, path_found, path_words
 
     board, where = _board(options)
     function = FUNCTIONS[options.algorithm]
@@ -158,19 +188,22 @@ def run_check_search_py(options: Options) -> int:
         _gradescope(options, function, where, str(exc), None, str(exc))
         print(f"tui-search: {exc}", file=sys.stderr)
         return EXIT_BAD_INPUT
+    test = options.course_test
+    returned = path_words(board, run.actions or [], test.actions if test is not None else None)
+    if trace is None:
+        return _expanded_nothing(options, run, (function, where, shown), board, returned)
     semantics = semantics_from(options)
     voice = Voice(f"your {function}", f"your {function}", (), True)
     verdict = check_trace(trace, board, options.algorithm, semantics,
                           max_steps=options.max_steps, voice=voice)
-    test = options.course_test
-    returned = path_words(board, run.actions or [], test.actions if test is not None else None)
-    reached = returned.endswith("a path to the goal")
+    reached = path_found(returned)
     _gradescope(options, function, where, verdict_words(verdict, function),
                 verdict.matches and reached, returned)
     if options.json:
         print(to_json({"search_py": shown, "map": where, "function": function,
                        "expansions": len(run.expanded), "returned": run.actions,
-                       "path": returned, **verdict.as_json()}))
+                       "path": returned, "isolation": isolation(run.landlock),
+                       **verdict.as_json()}))
     else:
         print(verdict_words(verdict, function))
         difference = verdict.difference
@@ -183,3 +216,29 @@ def run_check_search_py(options: Options) -> int:
                   f"states (x, y) y counts from the bottom: y there is {board.height - 1} - y")
         print(f"  returned: {returned}")
     return 0 if verdict.matches else 1
+
+
+def _expanded_nothing(options: Options, run: StudentRun, names: tuple[str, str, str],
+                      board: Grid | Graph, returned: str) -> int:
+    """A search that never called getSuccessors (``names``: its function, the map, the
+    student's file): a difference (exit 1) unless the start is a goal (exit 0)."""
+    from tui_search.cli.headless import to_json
+    from tui_search.engine.traces.sandbox import isolation
+    from tui_search.engine.traces.student_search import path_found
+
+    function, where, shown = names
+    words = expanded_nothing(function, board)
+    right = words.startswith(f"your {function} is ")
+    _gradescope(options, function, where, words, right and path_found(returned), returned)
+    if options.json:
+        print(to_json({"search_py": shown, "map": where, "function": function,
+                       "expansions": 0, "returned": run.actions, "path": returned,
+                       "isolation": isolation(run.landlock),
+                       "verdict": "match" if right else "difference",
+                       "algorithm": options.algorithm, "steps": 0, "matched_steps": 0,
+                       "first_difference": None if right else {
+                           "step": 1, "kind": "no-expansion", "message": words}}))
+    else:
+        print(words)
+        print(f"  returned: {returned}")
+    return 0 if right else 1

@@ -214,11 +214,7 @@ def _costs(grid: Grid, cost_fn: str) -> array[float] | None:
 def _layout(field: Field, path: str) -> Grid:
     from tui_search.engine.maps.layouts import parse_layout
 
-    try:
-        return parse_layout(field.text + "\n", path + ".lay")
-    except MapError as err:  # its line in the block, as the test file's
-        line = None if err.line is None else err.line + field.line
-        raise MapError(path, err.message, line, err.col) from None
+    return parse_layout(field.text + "\n", path, first_line=field.line + 1)
 
 
 def _graph(field: Field, h_field: Field | None, path: str

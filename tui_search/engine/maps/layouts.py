@@ -43,9 +43,10 @@ def course_cell(grid: Grid, cell: Cell) -> Cell:
 
 
 def parse_layout(text: str, path: str = "<layout>", *, need_start: bool = True,
-                 need_goal: bool = True) -> Grid:
+                 need_goal: bool = True, first_line: int = 1) -> Grid:
     """The layout's grid; a MapError (``path:line:col: message``) for any text that is not
     one.  ``need_start``/``need_goal`` false: the start, the goal given elsewhere (flags).
+    ``first_line``: the file's line of the text's first (a layout inside a course test).
 
     Read a line at a time into one byte a cell (the file's lines kept as its one string), so
     that a big file costs a few times its size."""
@@ -62,11 +63,12 @@ def parse_layout(text: str, path: str = "<layout>", *, need_start: bool = True,
     goal: Cell | None = None
     dots = 0
     for y in range(height):
-        line, number = raw[y].removesuffix("\r"), y + 1
+        line, number = raw[y].removesuffix("\r"), y + first_line
         if not line.strip():
             raise MapError(path, "blank line inside the layout", number)
         if len(line) != width:
-            raise MapError(path, f"row has {len(line)} cells, expected {width}", number)
+            raise MapError(path, f"row has {len(line)} cells, expected {width}", number,
+                           min(len(line), width) + 1)  # its first extra or missing cell
         bad = _BAD.search(line)
         if bad is not None:
             raise MapError(path, f"unknown layout character {bad.group()!r} (use % walls, P "

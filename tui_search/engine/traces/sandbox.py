@@ -8,7 +8,7 @@ session, a small environment, and a time limit after which the whole process gro
 Where ``unshare`` can make a user namespace (Linux), the child also runs in its own network
 namespace (no network at all) and its own process namespace (every process it starts dies
 with it).  The child sets its own memory, CPU and file limits and, on Linux with Landlock,
-refuses writes outside the working folder (:data:`ISOLATION` says what this machine gives).
+refuses writes outside the working folder (:func:`isolation` says what fenced a run).
 """
 
 from __future__ import annotations
@@ -25,7 +25,8 @@ from pathlib import Path
 
 from tui_search.engine.util.frozen import Frozen
 
-__all__ = ["DEFAULT_MEMORY_MB", "DEFAULT_SECONDS", "StudentRun", "isolation", "run_student"]
+__all__ = ["DEFAULT_MEMORY_MB", "DEFAULT_SECONDS", "StudentRun", "isolation", "run_student",
+           "unfenced"]
 
 DEFAULT_SECONDS = 10.0
 DEFAULT_MEMORY_MB = 512
@@ -67,13 +68,25 @@ def isolation(landlock: int) -> str:
     return "; ".join(parts)
 
 
+def unfenced(landlock: int) -> str | None:
+    """One line when neither Landlock nor a network namespace fenced the run in (None when
+    either did)."""
+    if landlock or namespaces_work():
+        return None
+    return ("neither Landlock nor a network namespace was available here: the student's code "
+            "ran with the network and could write wherever you can (see docs/14-cs188.md)")
+
+
 class StudentRun(Frozen):
     """What the student's function did: ``status`` ``ok`` (it returned ``actions``) or
-    ``error`` (``message``, at ``line`` of the student's file, 0 unknown); the states it
-    asked the successors of, in order (as the problem gave them: JSON values); the Landlock
-    ABI the child fenced itself with (0 none)."""
+    ``error`` (``message``, at ``line`` and ``col`` of the student's file, 0 unknown;
+    ``about`` what failed: ``function`` the function, ``file`` the file (it does not
+    compile), ``missing`` the file has no such function); the states it asked the successors
+    of, in order (as the problem gave them: JSON values); the Landlock ABI the child fenced
+    itself with (0 none)."""
 
-    __slots__ = _FIELDS = ("status", "message", "line", "expanded", "actions", "landlock")
+    __slots__ = _FIELDS = ("status", "message", "line", "expanded", "actions", "landlock",
+                           "col", "about")
 
     status: str
     message: str
@@ -81,11 +94,14 @@ class StudentRun(Frozen):
     expanded: list[object]
     actions: list[str] | None
     landlock: int
+    col: int
+    about: str
 
     def __init__(self, status: str, message: str, line: int, expanded: list[object],
-                 actions: list[str] | None, landlock: int) -> None:
+                 actions: list[str] | None, landlock: int, col: int = 0,
+                 about: str = "function") -> None:
         self._assign(status=status, message=message, line=line, expanded=expanded,
-                     actions=actions, landlock=landlock)
+                     actions=actions, landlock=landlock, col=col, about=about)
 
 
 def run_student(student_text: str, problem: dict[str, object], seconds: float = DEFAULT_SECONDS,
@@ -156,13 +172,16 @@ def _result(work: str, code: int, memory_mb: int) -> StudentRun:
         return StudentRun("error", why, 0, [], None, 0)
     expanded = data.get("expanded")
     actions = data.get("actions")
-    line, landlock = data.get("line"), data.get("landlock")
+    line, landlock, col = data.get("line"), data.get("landlock"), data.get("col")
+    about = data.get("about")
     return StudentRun(
         "ok" if data["status"] == "ok" else "error", str(data.get("message", ""))[:300],
         line if isinstance(line, int) and line >= 0 else 0,
         expanded if isinstance(expanded, list) else [],
         [str(a) for a in actions] if isinstance(actions, list) else None,
-        landlock if isinstance(landlock, int) else 0)
+        landlock if isinstance(landlock, int) else 0,
+        col if isinstance(col, int) and col >= 0 else 0,
+        about if about in ("file", "missing") else "function")
 
 
 def _signal_name(number: int) -> str:

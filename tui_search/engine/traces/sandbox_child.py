@@ -13,7 +13,8 @@ where ``unshare`` works, and kills the whole process group at the time limit.
 
 The student's code can undo what this process does to itself; what it cannot undo is what
 the kernel enforces (the limits, Landlock, the namespaces) and the parent's kill.  The result
-is checked by the parent, which trusts only the states it can check against its own problem.
+is checked by the parent, which trusts only the states it can check against its own problem;
+code set on cheating can still forge them (it shares this Python and the working folder).
 """
 
 import ctypes
@@ -117,12 +118,15 @@ def refuse_processes() -> None:
 
 class Problem:
     """The search problem in the course's conventions: ``getStartState``, ``isGoalState``,
-    ``getSuccessors`` (each call an expansion, recorded), ``getCostOfActions``."""
+    ``getSuccessors`` (each call an expansion, passed to ``record``), ``getCostOfActions``.
 
-    def __init__(self, spec: dict[str, Any]) -> None:
+    The record is ``main``'s, not a list on the problem, so that a student's code does not
+    change it by chance; code set on it can still reach it (it runs in this same Python)."""
+
+    def __init__(self, spec: dict[str, Any], record: Callable[[Any], None]) -> None:
         self.spec = spec
-        self.expanded: list[Any] = []
-        self._expanded = 0
+        self.__record = record
+        self.__calls = 0
         self.limit = spec["max_expansions"]
         if spec["kind"] == "grid":
             rows = spec["walls"]
@@ -148,14 +152,14 @@ class Problem:
         return 0 <= x < self.width and 0 <= y < self.height and (x, y) not in self.walls
 
     def getSuccessors(self, state: Any) -> list[tuple[Any, str, float]]:
-        if len(self.expanded) >= self.limit:
+        if self.__calls >= self.limit:
             raise RuntimeError(f"more than {self.limit:,} calls of getSuccessors")
         if self.spec["kind"] == "grid":
             if not (isinstance(state, tuple) and len(state) == 2
                     and all(isinstance(v, int) for v in state) and self._free(*state)):
                 raise ValueError(f"getSuccessors({state!r}): not a free cell (x, y)")
-            self.expanded.append(list(state))
-            self._expanded += 1
+            self.__record(list(state))
+            self.__calls += 1
             out = []
             for action, dx, dy in MOVES:
                 x, y = state[0] + dx, state[1] + dy
@@ -164,8 +168,8 @@ class Problem:
             return out
         if not isinstance(state, str) or state not in self.roads:
             raise ValueError(f"getSuccessors({state!r}): no such state")
-        self.expanded.append(state)
-        self._expanded += 1
+        self.__record(state)
+        self.__calls += 1
         return [(b, action, cost) for action, b, cost in self.roads[state]]
 
     def getCostOfActions(self, actions: list[str]) -> float:
@@ -200,8 +204,9 @@ def main() -> None:
     os.chdir(work)
     with open("problem.json", encoding="utf-8") as handle:
         spec = json.load(handle)
-    result: dict[str, Any] = {"status": "error", "message": "", "line": 0, "expanded": [],
-                              "actions": None, "landlock": 0}
+    result: dict[str, Any] = {"status": "error", "message": "", "line": 0, "col": 0,
+                              "about": "function", "expanded": [], "actions": None,
+                              "landlock": 0}
     try:
         resource.setrlimit(resource.RLIMIT_AS, (megabytes * 1024 * 1024,) * 2)
     except (ValueError, OSError):
@@ -218,7 +223,8 @@ def main() -> None:
     sys.dont_write_bytecode = True
     sys.path.insert(0, work)
     student = os.path.abspath("search.py")
-    problem = Problem(spec)
+    expanded: list[Any] = []
+    problem = Problem(spec, expanded.append)
     name = spec["function"]
 
     def out_of_time(signum: int, frame: FrameType | None) -> None:
@@ -233,7 +239,7 @@ def main() -> None:
 
         function = getattr(search, name, None)
         if not callable(function):
-            result["message"] = f"has no function {name}"
+            result["about"] = "missing"
         else:
             result["line"] = function.__code__.co_firstlineno if hasattr(
                 function, "__code__") else 0
@@ -242,7 +248,9 @@ def main() -> None:
             else:
                 actions = function(problem)
             signal.setitimer(signal.ITIMER_REAL, 0)
-            if not isinstance(actions, (list, tuple)):
+            if actions is None and not spec.get("path_exists", True):
+                result["status"] = "ok"  # the course's "no path" where there is none
+            elif not isinstance(actions, (list, tuple)):
                 result["message"] = (f"returned {type(actions).__name__}, not a list "
                                      "of actions")
             elif not all(isinstance(a, str) for a in actions):
@@ -269,11 +277,17 @@ def main() -> None:
         result["line"] = where_in(student, exc.__traceback__)
     except BaseException as exc:  # the student's error, whatever it is
         signal.setitimer(signal.ITIMER_REAL, 0)
-        text = str(exc).splitlines()[0][:120] if str(exc) else ""
-        result["message"] = f"raised {type(exc).__name__}" + (f": {text}" if text else "")
-        result["line"] = where_in(student, exc.__traceback__)
+        if isinstance(exc, SyntaxError) and exc.filename is not None and os.path.abspath(
+                exc.filename) == student:  # its file does not compile: its line and column
+            result["about"] = "file"
+            result["message"] = f"{type(exc).__name__}: {exc.msg}"
+            result["line"], result["col"] = exc.lineno or 0, exc.offset or 0
+        else:
+            text = str(exc).splitlines()[0][:120] if str(exc) else ""
+            result["message"] = f"raised {type(exc).__name__}" + (f": {text}" if text else "")
+            result["line"] = where_in(student, exc.__traceback__)
     signal.setitimer(signal.ITIMER_REAL, 0)
-    result["expanded"] = problem.expanded
+    result["expanded"] = expanded
     json.dump(result, result_file)
     result_file.close()
     output.close()

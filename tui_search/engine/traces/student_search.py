@@ -12,6 +12,7 @@ a state that is not the problem's is refused by the parent, whatever the child s
 from __future__ import annotations
 
 import json
+from typing import cast
 
 from tui_search.engine.maps.graph import Graph
 from tui_search.engine.maps.grid import Grid
@@ -20,7 +21,8 @@ from tui_search.engine.traces.read import Trace, read_trace
 #: A graph's actions by (from, to): a course test's names for its edges.
 Actions = dict[tuple[str, str], str]
 
-__all__ = ["FUNCTIONS", "MAX_EXPANSIONS", "as_trace", "path_words", "student_problem"]
+__all__ = ["FUNCTIONS", "MAX_EXPANSIONS", "NO_PATH", "as_trace", "has_path", "path_found",
+           "path_words", "student_problem"]
 
 #: The course's search functions by the app's keys.
 FUNCTIONS = {"dfs": "depthFirstSearch", "bfs": "breadthFirstSearch",
@@ -28,6 +30,8 @@ FUNCTIONS = {"dfs": "depthFirstSearch", "bfs": "breadthFirstSearch",
 #: At most this many getSuccessors calls are recorded (then the student's run is stopped).
 MAX_EXPANSIONS = 1_000_000
 _MOVES = {"North": (0, -1), "South": (0, 1), "East": (1, 0), "West": (-1, 0)}
+#: What an empty answer (``[]``, or ``None`` as the course allows) comes to where no path is.
+NO_PATH = "none, and no path to the goal exists: right"
 
 
 def student_problem(board: Grid | Graph, algorithm: str, heuristic: str,
@@ -44,7 +48,8 @@ def student_problem(board: Grid | Graph, algorithm: str, heuristic: str,
                     walls=["".join("%" if board.is_blocked((x, y)) else " "
                                    for x in range(board.width)) for y in range(h)],
                     heuristic=heuristic,
-                    column_cost={"0.5 ** x": 0.5, "2 ** x": 2.0}.get(cost_fn, 1.0))
+                    column_cost={"0.5 ** x": 0.5, "2 ** x": 2.0}.get(cost_fn, 1.0),
+                    path_exists=has_path(board))
         return spec
     actions = actions or {}
     roads: dict[str, list[list[object]]] = {}
@@ -52,6 +57,7 @@ def student_problem(board: Grid | Graph, algorithm: str, heuristic: str,
         roads[name] = [[actions.get((name, b), f"{name}->{b}"), b, cost]
                        for b, cost, _ in board.successors(name)]
     table = board.h if heuristic == "table" else None
+    spec.update(path_exists=has_path(board))
     spec.update(kind="graph", start=board.start, goals=list(board.goals), roads=roads,
                 heuristic=table)
     return spec
@@ -72,9 +78,43 @@ def as_trace(board: Grid | Graph, expanded: list[object], name: str) -> Trace:
     return read_trace("\n".join(lines) + "\n", board, name)
 
 
+def has_path(board: Grid | Graph) -> bool:
+    """Whether the problem has a path from its start to a goal (the course's moves: N, S, E,
+    W on a map; a graph's roads as directed)."""
+    seen: set[object] = set()
+    if isinstance(board, Grid):
+        todo: list[object] = [board.start]
+        goals: set[object] = {board.goal}
+    else:
+        todo, goals = [board.start], set(board.goals)
+    while todo:
+        state = todo.pop()
+        if state in goals:
+            return True
+        if state in seen:
+            continue
+        seen.add(state)
+        if isinstance(board, Grid):
+            x, y = cast("tuple[int, int]", state)
+            for dx, dy in _MOVES.values():
+                cell = (x + dx, y + dy)
+                if board.in_bounds(cell) and not board.is_blocked(cell):
+                    todo.append(cell)
+        else:
+            todo.extend(b for b, _, _ in board.successors(str(state)))
+    return False
+
+
+def path_found(words: str) -> bool:
+    """Whether :func:`path_words` says the answer is right."""
+    return words.endswith("a path to the goal") or words == NO_PATH
+
+
 def path_words(board: Grid | Graph, actions: list[str], names: Actions | None = None) -> str:
     """What the returned actions come to: a path to the goal and its cost, or where they go
-    wrong."""
+    wrong (none, :data:`NO_PATH`, is right where there is no path)."""
+    if not actions and not has_path(board):
+        return NO_PATH
     if isinstance(board, Grid):
         assert board.start is not None
         x, y = board.start
