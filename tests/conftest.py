@@ -95,10 +95,16 @@ SLOW_MODULES = {
     # every search run to its end on the largest generated maps (seconds a test)
     "tui/test_big_figures.py",
 }
-#: Tests marked ``slow`` by name (module path from tests/, ``::``, function): each reads a
-#: file of a megabyte in a child process per format, to measure its memory (seconds a test).
+#: Tests marked ``slow`` by name (module path from tests/, ``::``, function), each for what
+#: makes it slow.
 SLOW_TESTS = {
+    # a file of a megabyte read in a child process per format, to measure its memory
     "engine/test_untrusted_files.py::test_the_heaviest_files_take_at_most_ten_times_their_size",
+    # a student's hostile search.py run in its fenced process until a limit stops it (a loop
+    # waits out its time limit)
+    "test_cli_search_py.py::test_a_hostile_search_py_is_one_line_exit_2",
+    # the class load's floor: a fork server started and its apps timed
+    "test_benchmarks_import.py::test_the_class_load_floor_is_measured_on_the_fork_server",
 }
 #: Modules marked ``app`` whole: an export films the app under Pilot
 #: (``tui_search/export/frames.py``), in the test's process or in the command it runs.
@@ -214,17 +220,24 @@ def _callee(func: ast.expr) -> str | None:
 
 def is_slow(item: pytest.Item) -> bool:
     """Is this test in one of :data:`SLOW_MODULES`, or one of :data:`SLOW_TESTS`?"""
+    module = _from_tests(str(item.path))
+    if module in SLOW_MODULES:
+        return True
     function = getattr(item, "function", None)
     name = getattr(_inner(function), "__name__", "") if function is not None else ""
-    return _in_modules(item, SLOW_MODULES) or any(
-        _in_modules(item, {module}) and name == test
-        for module, _, test in (slow.partition("::") for slow in SLOW_TESTS))
+    return f"{module}::{name}" in SLOW_TESTS
 
 
 def _in_modules(item: pytest.Item, modules: set[str]) -> bool:
     """Is this test in one of ``modules`` (paths from tests/)?"""
-    path = Path(item.path).resolve()
-    return path.is_relative_to(TESTS) and path.relative_to(TESTS).as_posix() in modules
+    return _from_tests(str(item.path)) in modules
+
+
+@functools.cache
+def _from_tests(path: str) -> str | None:
+    """A test module's path from tests/ (``tui/test_app.py``), None for one outside."""
+    resolved = Path(path).resolve()
+    return resolved.relative_to(TESTS).as_posix() if resolved.is_relative_to(TESTS) else None
 
 
 def pytest_xdist_auto_num_workers(config: pytest.Config) -> int:
