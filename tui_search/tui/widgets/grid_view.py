@@ -231,16 +231,6 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         self._refit()
 
     def on_resize(self) -> None:
-        room = self.scrollable_content_region.size
-        if (self.fitted and not self._overview and room.area and self._area is not None
-                and (self.geometry.size[0] > room.width
-                     or self.geometry.size[1] > room.height)):
-            # the room offered when the cells were fitted was taken back after (a line
-            # beside the map wrapped, as a loaded machine lays out in steps): fit the room
-            # the map has
-            self._area = (room.width, room.height)
-            if self._fit():
-                self.refresh(layout=True)
         self._update_virtual_size()
         self.follow(self.cursor)
         self.call_after_refresh(self.place_terminal_cursor)
