@@ -9,5 +9,6 @@
 * :mod:`~tui_search.engine.run.rebuild`: the bulk loops of a long jump;
 * :mod:`~tui_search.engine.run.peak`: the largest frontier up to any step;
 * :mod:`~tui_search.engine.run.blocked`: why a search found no path;
+* :mod:`~tui_search.engine.run.bidirectional`: a bidirectional search as two runs, one position;
 * :mod:`~tui_search.engine.run.each_step`: a whole search at once, each step handed on.
 """

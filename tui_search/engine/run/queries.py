@@ -48,6 +48,9 @@ class EventTree:
         core = selected()[0]
         self._walk = None if core is None else core.ancestors  # ancestors' loop in C
         self._last_of_cell: dict[int, int] = {}
+        # a bidirectional search's backward half: its events go from the goal, so a move's
+        # cost is that of the cell it leaves (the parent's), not the one it enters
+        self._reverse = recording.source is not None and recording.source.reverse
         problem = self._problem
         if not isinstance(problem, Problem):  # a graph's answers, by node number
             self._grid: Problem | None = None
@@ -72,6 +75,9 @@ class EventTree:
 
             self._estimate, self._priority_at = estimate, priority_at
             self._move_cost = move_costs(problem)
+            if recording.source is not None and recording.source.reverse:
+                # the backward half's events go against the moves: each offset reversed
+                self._move_cost = {-off: cost for off, cost in self._move_cost.items()}
             self._terrain = problem.terrain  # None: every cell costs 1
         # gen_gs: the last step looked up (its events lo .. hi - 1, its number, the event it
         # took off)
@@ -94,7 +100,9 @@ class EventTree:
             return step_g[k] + self._problem.step_cost(node[rec.exp(k)], node[g])
         length = self._move_cost[node[g] - node[rec.exp(k)]]
         terrain = self._terrain
-        return step_g[k] + (length if terrain is None else length * terrain[node[g]])
+        if terrain is None:
+            return step_g[k] + length
+        return step_g[k] + length * terrain[node[rec.exp(k)] if self._reverse else node[g]]
 
     def gen_gs(self, events: Sequence[int]) -> list[float]:
         """:meth:`gen_g` of each of ``events``, which ascend (a step's successors, the open
@@ -137,6 +145,9 @@ class EventTree:
                     out += [base + step_cost(parent, node[e]) for e in events[i:j]]
                 elif terrain is None:
                     out += [base + cost[node[e] - parent] for e in events[i:j]]
+                elif self._reverse:  # a move's cost is the cell it leaves: the parent's
+                    out += [base + cost[node[e] - parent] * terrain[parent]
+                            for e in events[i:j]]
                 else:
                     out += [base + cost[node[e] - parent] * terrain[node[e]]
                             for e in events[i:j]]

@@ -73,6 +73,10 @@ class Source(NamedTuple):
     #: What the status line says of its rules, in a few words each, instead of how they
     #: differ from the defaults (a trace never declares them: its file, what was inferred).
     notes: tuple[str, ...] = ()
+    #: The steps go from the goal (a bidirectional search's backward half,
+    #: :mod:`~tui_search.engine.run.bidirectional`): a move's cost on a grid is that of the
+    #: cell it leaves, the parent's, as the forward move it reverses enters it.
+    reverse: bool = False
 
 
 class Recording:
