@@ -127,25 +127,17 @@ def _refuse_with_traces(options: Options) -> None:
 
 
 def _check_bidirectional(options: Options) -> None:
-    """The bidirectional searches run headless (and print their pseudocode): the app's
-    recorded runs go one way."""
+    """The bidirectional searches run everywhere but beside a replayed trace (its check
+    is ``--check-trace -a bibfs``, headless) and by hand."""
     from tui_search.engine.search.registry import BIDIRECTIONAL
 
     keys = [options.algorithm]
     if options.compare:
         keys += [part.split(":")[0].strip() for part in options.compare.split(",")]
-    if options.exercise_read is not None:
-        keys += [contender.algorithm for _, contender in options.exercise_read.searches]
     named = next((key for key in keys if key in BIDIRECTIONAL), None)
-    if named is None or options.pseudocode:
-        return
-    if not options.headless or options.export is not None:
-        raise UsageError(f"{named}, a bidirectional search, runs headless for now: add "
-                         "--headless (with --json or --trace); the app's runs go one way")
-    for flag in ("plain",):
-        if getattr(options, flag):
-            raise UsageError(f"{named}, a bidirectional search, runs headless for now: leave out "
-                             f"--{flag.replace('_', '-')}")
+    if named is not None and options.replay is not None:
+        raise UsageError(f"--replay shows a trace beside a one-way search; {named}'s trace is "
+                         f"checked by --check-trace FILE -a {named} --headless")
 
 
 def _check_outputs(options: Options) -> None:

@@ -7,6 +7,7 @@ written beside the handout and linked from it.
 
 from __future__ import annotations
 
+from tui_search.engine.run.recorded import Run
 from tui_search.engine.search.compare import MARKS_KEY, comparison, summary_sentence, table_cells
 from tui_search.export.frames import Film
 from tui_search.export.job import Job
@@ -14,6 +15,7 @@ from tui_search.export.svg import svg_of
 from tui_search.plain.telling import result_sentence, step_report
 from tui_search.tui.model.session import Session
 from tui_search.tui.view.code_trace import code_of
+from tui_search.tui.view.two_way_text import stop_words
 
 
 def _markdown_table(cells: list[tuple[str, ...]]) -> list[str]:
@@ -30,7 +32,9 @@ def handout_of(job: Job, film: Film, picture: str) -> tuple[str, str]:
                       job.unsaved_name, compare=job.compare)
     runs, labels = session.runs, session.labels
     several = len(runs) > 1
-    rules = "; ".join(runs[0].differences()) if not several else ""
+    first = runs[0]
+    rules = "; ".join(first.differences() if isinstance(first, Run) else
+                      [stop_words(first)]) if not several else ""
     lines = [f"# {film.title}", "",
              f"A search run by tui-search, step by step: {film.title}, under "
              f"{'these rules: ' + rules if rules else 'the tutorial' + chr(39) + 's rules'}.",

@@ -5,13 +5,18 @@ or the cells around the cursor -- each cell as what it is now ("free", "obstacle
 
 from __future__ import annotations
 
-from tui_search.engine.maps.grid import DELTAS, Cell
+from typing import TYPE_CHECKING
+
+from tui_search.engine.maps.grid import DELTAS, Cell, Grid
 from tui_search.engine.run.position import CellState
 from tui_search.engine.run.recorded import Run
 from tui_search.engine.search.state import as_cell
 from tui_search.tui.model.session import Session
 from tui_search.tui.view.narration import cell_text
 from tui_search.tui.view.readout import describe_each
+
+if TYPE_CHECKING:
+    from tui_search.engine.run.bidirectional import BiRun
 
 #: The neighbours said around a cell, clockwise from north.
 AROUND = ("N", "NE", "E", "SE", "S", "SW", "W", "NW")
@@ -20,11 +25,15 @@ RUN_SAID = 3
 
 
 def cell_word(session: Session, cell: Cell, run: Run | None = None) -> str:
-    """What ``cell`` is now, in a word or three (``run``: whose state; the first pane's)."""
+    """What ``cell`` is now, in a word or three (``run``: whose state; the first pane's; a
+    bidirectional search's: both halves', :func:`two_way_word`)."""
     grid = session.grid
     if grid.is_blocked(cell):
         return "obstacle"
-    run = run or session.run
+    shown = run or session.run
+    if shown is not None and not isinstance(shown, Run):
+        return two_way_word(shown, grid, cell)
+    run = shown
     state = run.now.cell_state(cell) if run is not None else CellState.UNSEEN
     if cell == grid.start:
         word = "start"
@@ -35,6 +44,27 @@ def cell_word(session: Session, cell: Cell, run: Run | None = None) -> str:
                 CellState.FRONTIER: f"on the {run.algo.frontier.noun}" if run else "free",
                 CellState.EXPANDED: "expanded", CellState.CURRENT: "being expanded",
                 CellState.PATH: "path"}[state]
+    cost = grid.cost(cell)
+    return f"{word} cost {cost:g}" if cost != 1.0 else word
+
+
+def two_way_word(run: BiRun, grid: Grid, cell: Cell) -> str:
+    """What ``cell`` is to a bidirectional search: "start", "goal", "path", "meeting", or
+    each half's word ("forward expanded, backward on the queue")."""
+    if run.at_end and cell in (run.path() or ()):
+        word = "path"
+    elif cell == run.meeting():
+        word = "best meeting"
+    elif cell in (grid.start, grid.goal):
+        word = "start" if cell == grid.start else "goal"
+    else:
+        noun = run.algo.frontier.noun
+        words = {CellState.FRONTIER: f"on the {noun}", CellState.EXPANDED: "expanded",
+                 CellState.CURRENT: "being expanded"}
+        said = [f"{d} {words[state]}" for d, half in zip(("forward", "backward"), run.halves,
+                                                          strict=True)
+                if (state := half.now.cell_state(cell)) in words]
+        word = ", ".join(said) or "free"
     cost = grid.cost(cell)
     return f"{word} cost {cost:g}" if cost != 1.0 else word
 

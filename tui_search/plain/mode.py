@@ -11,14 +11,17 @@ from collections.abc import Callable, Iterable
 
 from tui_search.engine.maps.grid import Cell
 from tui_search.engine.maps.load import parse_cell
+from tui_search.engine.run.recorded import Run
 from tui_search.engine.search.registry import ALGORITHMS, get_algorithm
 from tui_search.engine.search.state import as_cell
-from tui_search.plain import describe, telling
+from tui_search.plain import describe, telling, two_way
 from tui_search.plain.commands import APP_ONLY, find, help_lines
 from tui_search.plain.editing import EditCommands
 from tui_search.plain.settings import apply_setting, settings_lines
+from tui_search.tui.model.searches import current_node
 from tui_search.tui.model.session import Session
 from tui_search.tui.view.narration import cell_text, status_parts
+from tui_search.tui.view.two_way_text import two_way_parts
 
 _BY_KEY = {a.app_key: a.key for a in ALGORITHMS.values()}
 
@@ -141,6 +144,10 @@ class PlainMode:
         s = self.session
         for i, run in enumerate(s.runs):
             name = f"{s.labels[i]}: " if len(s.runs) > 1 else ""
+            if not isinstance(run, Run):  # a bidirectional search: both halves' counts
+                counts = ", ".join(f"{label} {value}" for label, value in two_way_parts(run))
+                self.say(f"{name}{counts}.", two_way.two_way_step(run))
+                continue
             counts = ", ".join(f"{label} {value}" for label, value in status_parts(run))
             self.say(f"{name}{counts}.", telling.step_sentence(run))
         if not s.runs:
@@ -148,23 +155,32 @@ class PlainMode:
 
     def do_frontier(self, rest: str, word: str) -> None:
         for run in self.session.runs:
-            self.say(telling.frontier_sentence(run, self.session.quiz.on))
+            self.say(telling.frontier_sentence(run, self.session.quiz.on) if isinstance(run, Run)
+                     else two_way.two_way_frontiers(run, self.session.quiz.on))
 
     def do_tree(self, rest: str, word: str) -> None:
         for run in self.session.runs:
-            self.say(*telling.tree_lines(run))
+            self.say(*(telling.tree_lines(run) if isinstance(run, Run)
+                       else two_way.two_way_trees(run)))
 
     def do_code(self, rest: str, word: str) -> None:
         from tui_search.tui.view.code_trace import code_of, line_notes, lit_lines
 
         for run in self.session.runs:
             code = code_of(run)
-            lit = lit_lines(run) if run.k else frozenset()
+            if not isinstance(run, Run):
+                from tui_search.tui.view.two_way_code import two_way_lines
+
+                lit = two_way_lines(run)[0]
+                notes: list[str] = []
+            else:
+                lit = lit_lines(run) if run.k else frozenset()
+                notes = line_notes(run)
             self.say(f"{code.title}, the lines the step ran marked:")
             for i, line in enumerate(code.lines, start=1):
                 self.say(f"Line {i}{', ran' if i in lit else ''}: {'  ' * line.indent}"
                          f"{line.text}")
-            self.say(*(note + "." for note in line_notes(run)))
+            self.say(*(note + "." for note in notes))
 
     # -- the searches, the quiz, the exercise, the settings -----------------------------------
     def do_algorithm(self, rest: str, word: str) -> None:
@@ -205,7 +221,7 @@ class PlainMode:
             return
         guess, asked = s.cursor, s.quiz.asked
         s.answer()
-        node = run.now.current_node()
+        node = current_node(run)
         if s.quiz.asked > asked and node is not None:
             verdict = "Right" if node == guess else f"Not quite: you said {cell_text(guess)}"
             self.say(f"{verdict}: {cell_text(node)} came off next. Score {s.quiz.score}.")
@@ -331,7 +347,7 @@ class PlainMode:
 
     def do_to_node(self, rest: str, word: str) -> None:
         run = self.session.run
-        node = run.now.current_node() if run else None
+        node = current_node(run) if run else None
         self._to(None if node is None else as_cell(node), "No node is being expanded (step 0).")
 
     # -- help and quit -------------------------------------------------------------------------

@@ -83,6 +83,8 @@ class _Driver:
         #: After each step (index 0: the roots pushed), the best meeting: cost and cell.
         self.mu: list[float] = [INF]
         self.meeting: list[State | None] = [None]
+        #: The largest frontiers (the two together) by the end of each step.
+        self.peak = array("i", [1 + len(self.search.roots)])
         self.over = self.gave_up = False
 
     @property
@@ -107,6 +109,7 @@ class _Driver:
         self.backward.append(back)
         self.forward_upto.append(self.forward_upto[-1] + (not back))
         self.pending[back].append(step)
+        self.peak.append(max(self.peak[-1], step.frontier_size))
         self.mu.append(search.mu)
         self.meeting.append(None)
         self._note_meeting(self.steps)
@@ -293,6 +296,26 @@ class BiRun:
     def reset(self) -> None:
         self.goto(0)
 
+    #: A jump longer than this is a seek's (the halves rebuild in bulk as a run's do).
+    REBUILD_AFTER = Run.REBUILD_AFTER
+
+    def rebuild_pieces(self, k: int) -> Iterator[float]:
+        """Move to step ``k`` (each half rebuilds in bulk as a run does), in one piece: the
+        halves never stand at two positions."""
+        self.goto(k)
+        return iter(())
+
+    def current_node(self) -> State | None:
+        """The node expanded by the step just taken (None at step 0)."""
+        if not self._k:
+            return None
+        return self.halves[self._driver.backward[self._k - 1]].now.current_node()
+
+    def next_direction(self) -> str | None:
+        """Whose turn is the next step (None: the search is over)."""
+        self._driver.upto(self._k + 1)
+        return self.direction(self._k + 1) if self._k < self._driver.steps else None
+
     @property
     def at_end(self) -> bool:
         return self.done and self._k == self._driver.steps
@@ -324,6 +347,22 @@ class BiRun:
         """The path's cost (0.0 until found)."""
         path = self.path()
         return (self._driver.search.space.path_cost(path) or 0.0) if path else 0.0
+
+    def outcome_so_far(self, k: int) -> Outcome:
+        """The figures after recorded step ``k`` (the path only at the end), as a run's."""
+        halves = [half.outcome_so_far(steps)
+                  for half, steps in zip(self.halves, self.half_steps(k), strict=True)]
+        counts = [sum(getattr(o, name) for o in halves)
+                  for name in ("expanded", "discarded", "generated")]
+        end = self.done and k == self._driver.steps
+        path = self.path() if end else None
+        return Outcome(
+            algorithm=self.algorithm, semantics=self.semantics.for_algorithm(self.algo),
+            path=path, moves=self.moves() if end else None, expanded=counts[0],
+            discarded=counts[1], generated=counts[2], max_frontier=self._driver.peak[k],
+            gave_up=end and self.gave_up,
+            cost=self._driver.search.space.path_cost(path) if path else None,
+            stopped=self.why() if end else "", meeting=self.meeting(k) if end else None)
 
     def outcome(self) -> Outcome:
         """The whole search's figures (records it all first), as the headless run's."""

@@ -19,6 +19,7 @@ if TYPE_CHECKING:
     from tui_search.engine.course.grading import Verdict
     from tui_search.engine.maps.graph import Graph
     from tui_search.engine.maps.grid import Grid
+    from tui_search.engine.run.bidirectional import BiRun
     from tui_search.engine.run.recorded import Run
     from tui_search.tui.model.quiz import Quiz
 
@@ -66,7 +67,7 @@ class Recorder:
         return self.write("start", map_name=map_name,
                           exercise=None if exercise is None else exercise.title)
 
-    def quiz(self, run: Run, node: State, guess: State, quiz: Quiz) -> str | None:
+    def quiz(self, run: Run | BiRun, node: State, guess: State, quiz: Quiz) -> str | None:
         return self.write("quiz", algorithm=run.algorithm, step=run.k, node=state_json(node),
                           guess=state_json(guess), right=node == guess,
                           score=[quiz.right, quiz.asked])

@@ -7,11 +7,15 @@ playback timer, its ``end`` key and the tests share them.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterator, Sequence
 from time import perf_counter
+from typing import TYPE_CHECKING
 
 from tui_search.engine.run.recorded import Run
 from tui_search.engine.search.state import State
+
+if TYPE_CHECKING:
+    from tui_search.engine.run.bidirectional import BiRun
 
 #: Playback speeds in expansions per second (``+``/``-`` walk this list).
 SPEEDS: tuple[int, ...] = (1, 2, 5, 10, 20, 50, 100, 300, 1_000, 10_000, 100_000, 1_000_000)
@@ -43,11 +47,11 @@ def speed_text(speed: int) -> str:
 Before = list[tuple[int, bool]]
 
 
-def where(runs: list[Run]) -> Before:
+def where(runs: Sequence[Run | BiRun]) -> Before:
     return [(r.k, r.at_end) for r in runs]
 
 
-def advance(runs: list[Run], forward: bool) -> Before | None:
+def advance(runs: Sequence[Run | BiRun], forward: bool) -> Before | None:
     """One step of the lockstep: forwards, every run not at its end; backwards, the runs
     at the latest step (one that ended earlier stays on its last screen).  Where they
     were before, or None when none moved."""
@@ -62,7 +66,7 @@ def advance(runs: list[Run], forward: bool) -> Before | None:
     return before if any(moved) else None
 
 
-def forward_for(runs: list[Run], steps: int, seconds: float = SLICE_SECONDS) -> int:
+def forward_for(runs: Sequence[Run | BiRun], steps: int, seconds: float = SLICE_SECONDS) -> int:
     """Up to ``steps`` steps forwards of every run in lockstep (each recording as needed and
     staying at its end once there), stopping early when all are at their ends or when
     ``seconds`` have passed.  Returns the number of lockstep steps taken."""
@@ -92,7 +96,7 @@ def rebuild_for(pieces: Iterator[float], seconds: float | None = None) -> float 
     return None
 
 
-def record_for(run: Run, seconds: float | None = None) -> bool:
+def record_for(run: Run | BiRun, seconds: float | None = None) -> bool:
     """Record more of the search for about ``seconds`` (default SLICE_SECONDS; one chunk at
     least); True when the whole search is recorded."""
     deadline = perf_counter() + (SLICE_SECONDS if seconds is None else seconds)
@@ -102,12 +106,14 @@ def record_for(run: Run, seconds: float | None = None) -> bool:
     return True
 
 
-def step_changes(run: Run, old_k: int, was_at_end: bool) -> list[State] | None:
+def step_changes(run: Run | BiRun, old_k: int, was_at_end: bool) -> list[State] | None:
     """The cells whose look differs between position ``old_k`` and the run's position, when
     they moved by one step within one iteration; ``None`` (redraw everything) otherwise."""
     k = run.k
     if k == old_k:
         return []
+    if not isinstance(run, Run):  # a bidirectional search's: its two halves, the meeting
+        return None
     if abs(k - old_k) != 1 or run.steps.iteration_of(k) != run.steps.iteration_of(old_k):
         return None
     step = max(k, old_k)

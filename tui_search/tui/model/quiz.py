@@ -9,15 +9,21 @@ lesson in one habit.
 """
 
 # No future import: CONTRIBUTING.md, "Start-up".
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
 from tui_search.engine.run.recorded import Run
 from tui_search.engine.search.state import State
 from tui_search.tui.model.cell_edits import cell_text
 
+if TYPE_CHECKING:
+    from tui_search.engine.run.bidirectional import BiRun
 
-def _where(run: Run) -> str:
+
+def _where(run: "Run | BiRun") -> str:
     frontier = run.algo.frontier
+    if not isinstance(run, Run):  # whose turn it is
+        turn = run.next_direction() or "forward"
+        return f"the {turn} search's {frontier.noun}'s {frontier.next_end}"
     return f"the {frontier.noun}'s {frontier.next_end}"
 
 
@@ -36,7 +42,7 @@ class Quiz(NamedTuple):
     def score(self) -> str:
         return f"{self.right:,} of {self.asked:,}"
 
-    def question(self, run: Run) -> str:
+    def question(self, run: "Run | BiRun") -> str:
         where = _where(run)
         if run.algo.queued:
             where += f" (the lowest {run.algo.priority_name})"
@@ -49,7 +55,7 @@ class Quiz(NamedTuple):
         return f"Quiz over: the search is done · {self.score} (r restarts)"
 
 
-def toggled(quiz: Quiz, run: Run | None) -> tuple[Quiz, str]:
+def toggled(quiz: Quiz, run: "Run | BiRun | None") -> tuple[Quiz, str]:
     """The quiz turned on (its first question, or why there is none yet) or off (no word)."""
     if quiz.on:
         return Quiz(), ""
@@ -57,7 +63,7 @@ def toggled(quiz: Quiz, run: Run | None) -> tuple[Quiz, str]:
     return on, on.question(run) if run is not None else NO_RUN
 
 
-def verdict(quiz: Quiz, run: Run, node: State, guess: State) -> tuple[Quiz, str]:
+def verdict(quiz: Quiz, run: "Run | BiRun", node: State, guess: State) -> tuple[Quiz, str]:
     """The new score and what to say, when the step took ``node`` off and the student
     guessed ``guess``."""
     right = node == guess

@@ -19,6 +19,7 @@ from tui_search.engine.search.registry import ALGORITHMS
 from tui_search.engine.search.state import State
 
 if TYPE_CHECKING:
+    from tui_search.engine.run.bidirectional import BiRun
     from tui_search.engine.traces.hand import Mistake
     from tui_search.engine.traces.replay import Replay
 
@@ -37,7 +38,7 @@ class ReplayJumps:
     """The replay's first difference: its step, its marks, its sentence, the jump.  ``runs``
     gives the session's runs as they are now, ``goto`` moves them all to a step."""
 
-    def __init__(self, replay: Replay | None, runs: Callable[[], list[Run]],
+    def __init__(self, replay: Replay | None, runs: Callable[[], list[Run | BiRun]],
                  goto: Callable[[int], None]) -> None:
         #: ``--replay``: a trace beside the search it matches (None: none, or it is over).
         self.replay = replay

@@ -6,9 +6,18 @@ shown and what ``c`` goes between; these functions decide.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
+from tui_search.engine.run.recorded import Run
 from tui_search.engine.search.choices import Semantics
 from tui_search.engine.search.compare import Contender, parse_compare
 from tui_search.engine.search.registry import get_algorithm
+
+if TYPE_CHECKING:
+    from tui_search.engine.maps.graph import Graph
+    from tui_search.engine.maps.grid import Grid
+    from tui_search.engine.run.bidirectional import BiRun
+    from tui_search.engine.search.state import State
 
 #: The searches ``c`` compares until the settings pick others.
 DEFAULT_COMPARE = "bfs,dfs"
@@ -38,6 +47,23 @@ def searches_of(spec: str, semantics: Semantics) -> tuple[list[Contender], str]:
     return contenders, note
 
 
+def run_of(board: Grid | Graph, algorithm: str, semantics: Semantics, max_steps: int
+           ) -> Run | BiRun:
+    """A pane's run: a bidirectional search's two halves and one position
+    (:class:`~tui_search.engine.run.bidirectional.BiRun`), any other search's run.
+    ``ValueError`` (its one-line reason) where the app cannot show it."""
+    if get_algorithm(algorithm).bidirectional:
+        from tui_search.engine.run.bidirectional import BiRun
+
+        return BiRun(board, algorithm, semantics, max_steps)
+    return Run(board, algorithm, semantics, max_steps)
+
+
+def current_node(run: Run | BiRun) -> State | None:
+    """The node expanded by the step just taken, in either kind of run (None at step 0)."""
+    return run.now.current_node() if isinstance(run, Run) else run.current_node()
+
+
 def with_key(spec: str, key: str) -> tuple[str, str | None]:
     """A search's key pressed while ``spec`` is shown.  One pane: run ``key`` there.
     Several: add it, or take it out (two stay, four at most).  The spec to show then, and
@@ -59,5 +85,5 @@ def with_key(spec: str, key: str) -> tuple[str, str | None]:
     return ",".join(parts), None
 
 
-__all__ = ["DEFAULT_COMPARE", "MAX_PANES", "MIN_COMPARED", "normal_spec", "searches_of",
-           "with_key"]
+__all__ = ["DEFAULT_COMPARE", "MAX_PANES", "MIN_COMPARED", "current_node", "normal_spec", "run_of",
+           "searches_of", "with_key"]

@@ -11,17 +11,21 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 from time import perf_counter
+from typing import TYPE_CHECKING
 
 from tui_search.engine.run.recorded import Run
 from tui_search.engine.util.numbers import group_digits
 from tui_search.tui.model import playback
+
+if TYPE_CHECKING:
+    from tui_search.engine.run.bidirectional import BiRun
 
 
 class Seek:
     """Move each run of ``targets`` to its step (0, or None: its end).  ``labels`` name the
     runs in the progress text ("" for none); ``before`` is where every run was."""
 
-    def __init__(self, targets: list[tuple[Run, int | None]], labels: list[str],
+    def __init__(self, targets: list[tuple[Run | BiRun, int | None]], labels: list[str],
                  before: list[tuple[int, bool]], then_play: bool = False) -> None:
         self.queue = list(zip(targets, labels, strict=True))
         self.before = before
@@ -45,7 +49,7 @@ class Seek:
             self._moves = None
         return None
 
-    def _work_on(self, run: Run, target: int | None, deadline: float) -> str | None:
+    def _work_on(self, run: Run | BiRun, target: int | None, deadline: float) -> str | None:
         """A slice of one run's move: a progress text, or None once it is there."""
         if target is None and run.at_end or target == 0 and run.k == 0:
             return None

@@ -24,7 +24,14 @@ from tui_search.tui.model.map_edits import BRUSHES, NO_BRUSH, MapEdits
 from tui_search.tui.model.playback import Before
 from tui_search.tui.model.quiz import Quiz, toggled, verdict
 from tui_search.tui.model.replay_jumps import LOCKSTEP, LOCKSTEP_SHORT, REPLAY_ENDED, ReplayJumps
-from tui_search.tui.model.searches import DEFAULT_COMPARE, normal_spec, searches_of, with_key
+from tui_search.tui.model.searches import (
+    DEFAULT_COMPARE,
+    current_node,
+    normal_spec,
+    run_of,
+    searches_of,
+    with_key,
+)
 
 if TYPE_CHECKING:
     # Imported where used: exercises are read and graded only once one is shown, so the first
@@ -33,6 +40,7 @@ if TYPE_CHECKING:
     from tui_search.engine.course.grading import Verdict
     from tui_search.engine.maps.graph import Graph
     from tui_search.engine.maps.scenarios import Optimum
+    from tui_search.engine.run.bidirectional import BiRun
     from tui_search.engine.traces.replay import Replay
     from tui_search.tui.model.by_hand import ByHand
     from tui_search.tui.model.class_records import Recorder
@@ -85,7 +93,7 @@ class Session:
         if compare:
             self._remember(normal_spec(compare))
         self.contenders: list[Contender] = []
-        self.runs: list[Run] = []
+        self.runs: list[Run | BiRun] = []
         #: The cursor: a cell of a grid, a node (its name) of a graph.
         self.cursor: State = start_of(board)
         self.speed_index = playback.DEFAULT_SPEED
@@ -114,7 +122,7 @@ class Session:
 
     # -- what is shown -------------------------------------------------------------------
     @property
-    def run(self) -> Run | None:
+    def run(self) -> Run | BiRun | None:
         """The first pane's run (the quiz asks about it); None without start and goal."""
         return self.runs[0] if self.runs else None
 
@@ -203,9 +211,12 @@ class Session:
             if replay is not None and not replay.fits(board):
                 self.jumps.end()
                 replay, self.note = None, note or REPLAY_ENDED
-            self.runs = (replay.runs(board, self.max_steps) if replay is not None
-                         else [Run(board, c.algorithm, c.semantics, self.max_steps)
-                               for c in self.contenders])
+            try:
+                self.runs = ([*replay.runs(board, self.max_steps)] if replay is not None
+                             else [run_of(board, c.algorithm, c.semantics, self.max_steps)
+                                   for c in self.contenders])
+            except ValueError as refused:  # a search the app cannot show on this map
+                self.runs, self.note = [], note or str(refused)
             optimum = self._optimum  # a benchmark's, for a grid's map
             if optimum is not None and isinstance(board, Grid):
                 known = optimum.on(board, self.semantics.corners, len(self.semantics.order))
@@ -388,7 +399,7 @@ class Session:
         before = self.advance(forward=True)  # every pane steps
         if before is None:
             return None
-        node = run.now.current_node()
+        node = current_node(run)
         if node is not None and run.k != before[0][0]:
             self.quiz, self.note = verdict(self.quiz, run, node, guess)
             if self.records is not None:

@@ -11,6 +11,7 @@ from tui_search.engine.search.state import State, as_cell
 from tui_search.tui.model import playback
 from tui_search.tui.model.boards import goal_of
 from tui_search.tui.model.map_edits import brush_name
+from tui_search.tui.model.searches import current_node
 from tui_search.tui.screens.keys import KEYS
 from tui_search.tui.screens.panes import NO_ROOM_FOR_CODE, PanesScreen
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
@@ -355,7 +356,7 @@ class MainScreen(PanesScreen):
         session = self.session
         run = session.run
         cell = {"start": session.board.start, "goal": goal_of(session.board),
-                "current": run.now.current_node() if run is not None else None}[where]
+                "current": current_node(run) if run is not None else None}[where]
         if cell is None:
             self.warn({"start": "No start on the map", "goal": "No goal on the map",
                        "current": "No node is being expanded (step 0)"}[where])

@@ -23,6 +23,7 @@ from textual.widget import AwaitMount, Widget
 from textual.widgets import Static
 
 from tui_search.engine.maps.grid import Grid
+from tui_search.engine.run.recorded import Run
 from tui_search.engine.search.state import State
 from tui_search.engine.util.filenames import describe_name
 from tui_search.tui.model import playback
@@ -112,6 +113,7 @@ class PanesScreen(Screen[None]):
         self.readout = CellReadout(id="readout")
         yield self.readout
         self.legend = Legend(self.panes[0].view, id="legend")
+        self.legend.two_way = any(not isinstance(run, Run) for run in self.session.runs)
         yield self.legend
         if self.session.lesson is not None:
             from tui_search.tui.widgets.lesson_panel import LessonPanel  # only for a lesson
@@ -298,8 +300,10 @@ class PanesScreen(Screen[None]):
             self.call_later(self._panes_changed, removing, mounting)
         self._check_exercise()
         terrain = self._has_terrain()
-        if terrain != self._terrain:  # the legend shows the ramp, or no longer
-            self._terrain = terrain
+        two_way = any(not isinstance(run, Run) for run in session.runs)
+        if (terrain, two_way) != (self._terrain, self.legend.two_way):
+            # the legend shows the ramp, or no longer; a bidirectional search's kinds, or not
+            self._terrain, self.legend.two_way = terrain, two_way
             self.legend.refresh(layout=True)
             self.fit_panes()
         self.present()

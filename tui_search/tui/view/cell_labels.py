@@ -14,9 +14,14 @@ A cell ``width`` x ``height`` characters (4x2 or more) is laid out as::
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from tui_search.engine.maps.grid import DIRECTIONS, Cell
 from tui_search.engine.run.recorded import Run
 from tui_search.tui.view.cell_codes import CURSOR_BAR, CURSOR_MARK
+
+if TYPE_CHECKING:
+    from tui_search.engine.run.bidirectional import BiRun
 
 #: What a cell's label shows, in the order the label key cycles them.
 LABEL_MODES = ("arrows", "depth/cost", "none")
@@ -37,9 +42,17 @@ def number_text(value: float, room: int) -> str | None:
     return None
 
 
-def label(run: Run, cell: Cell, mode: str) -> tuple[str, list[float]]:
+def label(run: Run | BiRun, cell: Cell, mode: str) -> tuple[str, list[float]]:
     """The arrow (or ``""``) and the numbers ``cell``'s label shows in ``mode``, from the
-    latest event that reached the cell at the run's position (nothing when none did)."""
+    latest event that reached the cell at the run's position (nothing when none did; a
+    bidirectional search's: in the half that reached it, the forward first)."""
+    if not isinstance(run, Run):
+        from tui_search.tui.view.two_way import half_at
+
+        half = half_at(run, cell)
+        if half is None:
+            return "", []
+        run = half
     g = run.now.last_event(cell)
     if g is None or mode == "none":
         return "", []
@@ -57,7 +70,7 @@ def label(run: Run, cell: Cell, mode: str) -> tuple[str, list[float]]:
     return arrow, numbers
 
 
-def cell_line(run: Run | None, cell: Cell, width: int, height: int, sub: int, mode: str,
+def cell_line(run: Run | BiRun | None, cell: Cell, width: int, height: int, sub: int, mode: str,
               glyph: str, wall: bool, cost: str | None = None, cursor: bool = False) -> str:
     """Line ``sub`` (0 .. height-1) of ``cell`` drawn ``width`` characters wide; ``cost``
     (the cell's terrain cost, when it is not 1) on the last line, right-aligned when no

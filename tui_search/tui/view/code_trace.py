@@ -17,7 +17,12 @@ from tui_search.engine.search.choices import corner_allowed
 from tui_search.engine.search.state import State, as_cell
 
 if TYPE_CHECKING:  # imported by code_of: the first frame shows no code
+    from tui_search.engine.run.bidirectional import BiRun
     from tui_search.engine.search.pseudocode import Pseudocode
+
+
+#: Each move by its offset.
+MOVE_OF = {delta: move for move, delta in DELTAS.items()}
 
 
 class Skip(NamedTuple):
@@ -28,7 +33,7 @@ class Skip(NamedTuple):
     cell: State  # a graph's: the node's name
 
 
-def code_of(run: Run) -> "Pseudocode":
+def code_of(run: "Run | BiRun") -> "Pseudocode":
     """The pseudocode of ``run``'s search (generated once per algorithm and choices); on a
     map with terrain, g adds the cost of the cell a move enters."""
     from tui_search.engine.search.pseudocode import MOVE_COST, TERRAIN_MOVE_COST, pseudocode
@@ -38,10 +43,13 @@ def code_of(run: Run) -> "Pseudocode":
     return pseudocode(run.algo, run.semantics, move_cost=move_cost)
 
 
-def skipped(run: Run, k: int | None = None) -> list[Skip]:
+def skipped(run: Run, k: int | None = None, reverse: bool = False) -> list[Skip]:
     """The successors step ``k`` (default: the position's) considered and did not push, in
     the order of the moves, each with the line that skipped it (empty for a step that
-    expanded no successors: step 0, a discarded step, the goal taken off, a cut-off)."""
+    expanded no successors: step 0, a discarded step, the goal taken off, a cut-off).
+    ``reverse``: a bidirectional search's backward half on a grid, whose successors are the
+    cells each move reaches the node *from* (named by the offset from the node, as the
+    half's own moves are)."""
     k = run.k if k is None else k
     if k == 0 or run.steps.is_discarded(k):
         return []
@@ -81,9 +89,12 @@ def skipped(run: Run, k: int | None = None) -> list[Skip]:
     for move in run.semantics.order:
         if move == last:
             break
+        dx, dy = DELTAS[move]
+        if reverse:
+            dx, dy = -dx, -dy
+            move = MOVE_OF[(dx, dy)]
         if move in pushed:
             continue
-        dx, dy = DELTAS[move]
         cell = (x + dx, y + dy)
         if not grid.is_free(cell):
             kind = "blocked"

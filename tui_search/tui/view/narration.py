@@ -97,7 +97,7 @@ def _terrain(run: Run, expanded: int, added: range) -> list[str]:
     return out
 
 
-def _node_text(run: Run, g: int) -> str:
+def node_text(run: Run, g: int) -> str:
     """An event as the tutorial names it: START, or the cell (and the move that reached it)."""
     cell = cell_text(run.nodes.cell(g))
     return f"START {cell}" if run.nodes.parent(g) < 0 else cell
@@ -120,7 +120,7 @@ def _narrate(run: Run) -> str:
     if k == 0:
         return _before_the_first_step(run, word, limit)
     expanded = run.steps.expanded_event(k)
-    node = _node_text(run, expanded)
+    node = node_text(run, expanded)
     costs = costs_text(run, expanded)
     if costs:
         node = f"{node} {costs}"
@@ -142,7 +142,7 @@ def _narrate(run: Run) -> str:
         if run.nodes.goal == expanded:  # the goal tested when taken off the frontier
             return f"{prefix}Took the goal {goal} off the {word}: found"
         return f"{prefix}Goal {goal} found from {node}"
-    return _how_it_ended(run, prefix + _what_the_step_did(run, node, expanded, word, limit),
+    return _how_it_ended(run, prefix + what_the_step_did(run, node, expanded, word, limit),
                          word, limit)
 
 
@@ -159,7 +159,7 @@ def _before_the_first_step(run: Run, word: str, limit: int | None) -> str:
     return f"{first}. Press n to expand it."
 
 
-def _what_the_step_did(run: Run, node: str, expanded: int, word: str, limit: int | None
+def what_the_step_did(run: Run, node: str, expanded: int, word: str, limit: int | None
                        ) -> str:
     """The step's node (``node``, event ``expanded``) discarded, or expanded and what that
     added to the frontier."""

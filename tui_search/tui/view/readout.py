@@ -4,6 +4,7 @@ widget shows the string)."""
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 from tui_search.engine.maps.grid import Grid
@@ -16,6 +17,7 @@ from tui_search.tui.model.cell_edits import cell_text
 
 if TYPE_CHECKING:
     from tui_search.engine.maps.graph import Graph
+    from tui_search.engine.run.bidirectional import BiRun
 
 
 def _number(value: float) -> str:
@@ -93,14 +95,26 @@ def describe(run: Run | None, grid: Grid | Graph, cell: State) -> str:
     return f"{head}: {', '.join(parts)}"
 
 
-def describe_each(runs: list[Run], names: list[str], grid: Grid | Graph, cell: State) -> str:
+def describe_each(runs: Sequence[Run | BiRun], names: list[str], grid: Grid | Graph,
+                  cell: State) -> str:
     """What each run knows of ``cell``, in a line -- "(3,4): BFS expanded at step 5, depth 3 …
     │ DFS never reached"; ``names`` name the runs ("": not named).  An obstacle is said once."""
     if not runs or _blocked(grid, cell):
-        return describe(runs[0] if runs else None, grid, cell)
-    bodies = [describe(run, grid, cell).partition(": ")[2] for run in runs]
+        first = runs[0] if runs else None
+        return describe(first if first is None or isinstance(first, Run) else first.halves[0],
+                        grid, cell)
+    bodies = [describe(run, grid, cell).partition(": ")[2] if isinstance(run, Run)
+              else _two_way(run, grid, cell) for run in runs]
     return f"{cell_head(grid, cell)}: " + " │ ".join(
         f"{name} {body}".lstrip() for name, body in zip(names, bodies, strict=True))
+
+
+def _two_way(run: BiRun, grid: Grid | Graph, cell: State) -> str:
+    """What a bidirectional search's halves know of ``cell``, each counting its own steps:
+    "→ expanded at its step 5, depth 3 … ← never reached"."""
+    bodies = [describe(half, grid, cell).partition(": ")[2].replace(" at step ", " at its step ")
+              for half in run.halves]
+    return " ".join(f"{arrow} {body}" for arrow, body in zip("→←", bodies, strict=True))
 
 
 __all__ = ["cell_head", "describe", "describe_each"]

@@ -11,7 +11,7 @@ over the number of panes, :func:`~tui_search.tui.view.layout.own_lines`.
 """
 
 # No future import: CONTRIBUTING.md, "Start-up".
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
 from tui_search.engine.run.recorded import Run
 from tui_search.engine.search.registry import get_algorithm
@@ -27,6 +27,9 @@ from tui_search.tui.view.narration import (
     weight_bound,
 )
 from tui_search.tui.view.pieces import Line, Piece, lay_out
+
+if TYPE_CHECKING:
+    from tui_search.engine.run.bidirectional import BiRun
 
 #: Between two counts on a row.
 SEP = (" │ ", "stats--label")
@@ -56,7 +59,7 @@ class Status(NamedTuple):
     max_rows: int
 
 
-def search_status(run: Run | None, name: str, *, in_pane: bool, playing: str = "",
+def search_status(run: "Run | BiRun | None", name: str, *, in_pane: bool, playing: str = "",
                   note: str = "", done: bool = False, code: bool = False) -> Status:
     """One search's lines: ``name`` names it; ``done`` adds "done at step k" (a run that
     ended before the others); ``note`` replaces the narration (e.g. the quiz's question, while
@@ -68,6 +71,9 @@ def search_status(run: Run | None, name: str, *, in_pane: bool, playing: str = "
     too), never the path's moves and cost (they wrap instead, as the step and the nodes
     expanded do: the lessons are about them); else the lines under the panes, at most
     :data:`MAX_ROWS`, and they never go."""
+    if run is not None and not isinstance(run, Run):
+        return _two_way_status(run, name, in_pane=in_pane, playing=playing, note=note,
+                               done=done)
     status = [Piece([(name, "stats--value")])]
     if done and run is not None:
         status.append(Piece([(f"done at step {run.k:,}", "stats--result")], DONE_RANK, SEP))
@@ -116,8 +122,36 @@ def search_status(run: Run | None, name: str, *, in_pane: bool, playing: str = "
     return Status([Line(status), Line(line, prose=True)], PANE_ROWS if in_pane else MAX_ROWS)
 
 
+def _two_way_status(run: "BiRun", name: str, *, in_pane: bool, playing: str, note: str,
+                    done: bool) -> Status:
+    """A bidirectional search's lines: its name and rules, both halves' counts and μ, then
+    its narration (:mod:`~tui_search.tui.view.two_way_text`) and at the end its path."""
+    from tui_search.tui.view.two_way_text import (
+        stop_words,
+        two_way_narration,
+        two_way_parts,
+        two_way_result,
+    )
+
+    status = [Piece([(name, "stats--value")])]
+    if done:
+        status.append(Piece([(f"done at step {run.k:,}", "stats--result")], DONE_RANK, SEP))
+    status.append(Piece([("· " + stop_words(run), "stats--note")], 0, (" ", "stats--note")))
+    for count, value in two_way_parts(run):
+        parts = [(f"{count} ", "stats--label"), (value, "stats--value")]
+        status.append(Piece(parts, RANKS.get(count, 1), SEP))
+    if playing:
+        status.append(Piece([(playing, "stats--play")], PLAYING_RANK, SEP))
+    failed = run.at_end and not run.found and not run.gave_up
+    cls = "stats--no-path" if failed else "stats--narration"
+    line = [Piece([(note, "stats--note")] if note else [(two_way_narration(run), cls)])]
+    if not note and run.at_end and run.found:
+        line.append(Piece([(two_way_result(run), "stats--result")], 0, (" · ", "stats--label")))
+    return Status([Line(status), Line(line, prose=True)], PANE_ROWS if in_pane else MAX_ROWS)
+
+
 def lockstep_status(labels: list[str], *, playing: str = "", note: str = "",
-                    sentence: str = "", runs: list[Run] | None = None) -> Status:
+                    sentence: str = "", runs: "list[Run | BiRun] | None" = None) -> Status:
     """The lines of several searches: their names and the playback, then a note or
     ``sentence`` (how the lockstep goes).  ``runs``: the panes have no lines of their own
     (no room): each search's step and nodes expanded, which the lessons count, are said
@@ -134,16 +168,22 @@ def lockstep_status(labels: list[str], *, playing: str = "", note: str = "",
     return Status([*lines, Line(line, prose=True)], MAX_ROWS)
 
 
-def _counts(label: str, run: Run) -> list[tuple[str, str]]:
+def _counts(label: str, run: "Run | BiRun") -> list[tuple[str, str]]:
     """``BFS step 5/22 expanded 5``: a search's counts that never go."""
     parts = [(label, "stats--value")]
-    for count, value in status_parts(run):
+    if not isinstance(run, Run):
+        from tui_search.tui.view.two_way_text import two_way_parts
+
+        counted = two_way_parts(run)
+    else:
+        counted = status_parts(run)
+    for count, value in counted:
         if RANKS.get(count) == 0:
             parts += [(f" {count} ", "stats--label"), (value, "stats--value")]
     return parts
 
 
-def _path(run: Run) -> list[tuple[str, str]]:
+def _path(run: "Run | BiRun") -> list[tuple[str, str]]:
     """`` path 7 moves`` (or `` no path``) once ``run`` is at its end: what its pane's own
     lines said that a lesson is about (none before)."""
     if not run.at_end or run.gave_up:

@@ -80,6 +80,13 @@ THEMES: dict[str, ThemeSpec] = {
                    "map-expanded": "#8fb8f0", "map-expanded-text": "#0b2a5c",
                    "map-current": "#1450b8", "map-current-text": "#ffffff",
                    "map-path": "#0d5c28", "map-path-text": "#ffffff",
+                   # a bidirectional search's backward half in violets (the forward's
+                   # frontier is orange here), a cell reached both ways, the meeting
+                   "map-back-frontier": "#665588", "map-back-frontier-text": "#ffffff",
+                   "map-back-expanded": "#ccaabb", "map-back-expanded-text": "#111111",
+                   "map-back-current": "#110033", "map-back-current-text": "#ffffff",
+                   "map-both": "#ddffaa", "map-both-text": "#111111",
+                   "map-meeting": "#0000aa", "map-meeting-text": "#ffffff",
                    **ramp("#f1e4cc", "#e0c89c", "#c9a66a", "#a8823e", text="#111111"),
                    "footer-key-foreground": "#1450b8", "border-blurred": "#8a94a6"},
                   dark=False),
@@ -100,6 +107,12 @@ THEMES: dict[str, ThemeSpec] = {
                    "map-expanded": "#004a75",
                    "map-current": "#56B4E9", "map-current-text": "#000000",
                    "map-path": "#D55E00", "map-path-text": "#000000",
+                   # the backward half in browns and ambers against the forward's blues
+                   "map-back-frontier": "#553300", "map-back-frontier-text": "#ffcc66",
+                   "map-back-expanded": "#cc9966", "map-back-expanded-text": "#000000",
+                   "map-back-current": "#ffee99", "map-back-current-text": "#000000",
+                   "map-both": "#000088", "map-both-text": "#ffffff",
+                   "map-meeting": "#4477ee", "map-meeting-text": "#000000",
                    **ramp("#3d3526", "#615233", "#8a7440", "#b3984f", text="#e0e0e0")}),
     )
 }
@@ -126,5 +139,13 @@ def map_defaults(variables: dict[str, str]) -> dict[str, str]:
         # A replay's first difference: a violet no state, obstacle or terrain uses, far from
         # every kind of cell in the three themes as protanopes and deuteranopes see it too.
         "map-mark": MARK, "map-mark-text": "#ffffff",
+        # A bidirectional search's backward half in browns and oranges (the forward's are
+        # black and blues), a cell both halves reached, the best meeting: each far from every
+        # other kind of cell as protanopes and deuteranopes see it too (tests/tui/test_themes.py).
+        "map-back-frontier": "#443300", "map-back-frontier-text": "#ffcc66",
+        "map-back-expanded": "#cc8811", "map-back-expanded-text": "#000000",
+        "map-back-current": "#ffdd77", "map-back-current-text": "#000000",
+        "map-both": "#88eeff", "map-both-text": "#000000",
+        "map-meeting": "#4499bb", "map-meeting-text": "#ffffff",
         **ramp("#3a3020", "#5c4a2a", "#7f6535", "#a68242", text=v["foreground"]),
     }

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
+from typing import TYPE_CHECKING
 
 from rich.segment import Segment
 from rich.style import Style
@@ -29,6 +30,10 @@ from tui_search.tui.view.cell_codes import (
     WALL,
 )
 from tui_search.tui.view.cell_labels import cell_line, number_text
+from tui_search.tui.view.two_way import two_way_codes
+
+if TYPE_CHECKING:
+    from tui_search.engine.run.bidirectional import BiRun
 
 #: The ramp's steps: costs up to 3, 5, 7, and above (a cost of 1 or less is not shaded).
 RAMP_LEVELS = 4
@@ -60,9 +65,14 @@ def cost_text(cost: float, width: int) -> str | None:
     return number_text(cost, 1 if width < 6 else width // 3)
 
 
-def row_codes(grid: Grid, run: Run | None, y: int, x0: int, x1: int) -> list[int]:
+def row_codes(grid: Grid, run: Run | BiRun | None, y: int, x0: int, x1: int) -> list[int]:
     """Drawing codes of cells ``x0 .. x1-1`` of map row ``y``."""
-    codes = run.now.row_states(y, x0, x1) if run is not None else [FREE] * (x1 - x0)
+    if run is None:
+        codes = [FREE] * (x1 - x0)
+    elif isinstance(run, Run):
+        codes = run.now.row_states(y, x0, x1)
+    else:
+        codes = two_way_codes(run, y, x0, x1)
     blocked = grid.blocked
     base = y * grid.width
     if blocked.find(1, base + x0, base + x1) >= 0:
@@ -137,7 +147,7 @@ class CellLooks:
             return glyph, style
         return glyph[0] + cost_mark(cost), style
 
-    def big_cells(self, run: Run | None, row: int, columns: range, codes: list[int],
+    def big_cells(self, run: Run | BiRun | None, row: int, columns: range, codes: list[int],
                   costs: Sequence[float] | None, width: int, height: int, sub: int,
                   labels: str) -> list[Segment]:
         """Line ``sub`` of the cells ``columns`` of map row ``row``, each ``width`` x
@@ -172,7 +182,7 @@ def swatches(style_of: Callable[[str], Style], base: Style) -> list[Style]:
                   for name in RAMP_COMPONENTS]
 
 
-def block_codes(grid: Grid, run: Run | None, rows: range, x0: int, x1: int, across: int
+def block_codes(grid: Grid, run: Run | BiRun | None, rows: range, x0: int, x1: int, across: int
                 ) -> list[int] | None:
     """For each block of ``across`` of the overview's columns ``x0 .. x1-1`` over map rows
     ``rows``: the code of highest rank in it (None for no rows: a half below the map)."""

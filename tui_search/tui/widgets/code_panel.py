@@ -27,6 +27,7 @@ from tui_search.tui.widgets.line_panel import LinePanel
 from tui_search.tui.widgets.scrollbars import set_virtual_size
 
 if TYPE_CHECKING:
+    from tui_search.engine.run.bidirectional import BiRun
     from tui_search.engine.run.recorded import Run
     from tui_search.engine.search.pseudocode import Pseudocode
 
@@ -95,14 +96,20 @@ class CodePanel(LinePanel):
         self._rows: list[Parts] = []
         self._key: tuple[object, ...] = ()
 
-    def show(self, run: Run) -> None:
+    def show(self, run: Run | BiRun) -> None:
         """Show ``run``'s code with its position's step lit, its most specific lit line in
-        view."""
-        code, lit, focus = code_of(run), lit_lines(run), focus_line(run)
+        view (a bidirectional search's: :mod:`~tui_search.tui.view.two_way_code`)."""
+        code = code_of(run)
+        if isinstance(run, Run):
+            lit, focus, named = lit_lines(run), focus_line(run), named_lines(run)
+        else:
+            from tui_search.tui.view.two_way_code import two_way_lines
+
+            lit, focus, named = two_way_lines(run)
         if (code, lit, focus) == (self.code, self.lit, self.focus_number) and self._rows:
             return
         self.code, self.lit, self.focus_number = code, lit, focus
-        self.named = named_lines(run)
+        self.named = named
         self.show_titles((f"Code · {code.title}", f"Code · {run.algo.short}", "Code"),
                          LEGENDS)
         self._lay_rows()

@@ -9,7 +9,8 @@ the table (the summary sentence) wraps.
 
 from __future__ import annotations
 
-from typing import ClassVar
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, ClassVar
 
 from tui_search.engine.run.recorded import Run
 from tui_search.engine.search.compare import (
@@ -23,8 +24,12 @@ from tui_search.engine.search.compare import (
 from tui_search.tui.view.pieces import Parts, plain
 from tui_search.tui.widgets.wrapped_lines import PartsLines
 
+if TYPE_CHECKING:
+    from tui_search.engine.run.bidirectional import BiRun
 
-def table_rows(labels: list[str], runs: list[Run]) -> tuple[list[TableRow], list[int | None]]:
+
+def table_rows(labels: list[str], runs: Sequence[Run | BiRun]
+               ) -> tuple[list[TableRow], list[int | None]]:
     """The rows at each run's position, and for each the step it is at while it is going
     (None once done)."""
     done = all(r.at_end for r in runs)
@@ -61,7 +66,7 @@ class CompareTable(PartsLines):
         self.border_title = "Comparison"
         self.text_lines: list[str] = []  # what the table says (tests)
 
-    def show(self, labels: list[str], runs: list[Run]) -> None:
+    def show(self, labels: list[str], runs: Sequence[Run | BiRun]) -> None:
         if not runs:
             self.text_lines = ["Place a start (s) and a goal (g) to compare"]
             self.set_lines([plain([(self.text_lines[0], "compare-table--key")], prose=True)])

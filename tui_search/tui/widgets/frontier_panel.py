@@ -59,6 +59,7 @@ from tui_search.tui.view.frontier_text import (
     titles,
 )
 from tui_search.tui.view.pieces import Line, Parts, length, plain, wrap
+from tui_search.tui.view.two_way_text import directed
 from tui_search.tui.widgets.line_panel import LinePanel
 from tui_search.tui.widgets.scrollbars import set_virtual_size
 
@@ -173,12 +174,14 @@ class FrontierPanel(LinePanel):
     #: The quiz lists at most this many entries (sorted by cell, each step).
     QUIZ_ENTRIES = 2000
 
-    def show(self, run: Run, hide_order: bool = False, as_added: bool = False) -> None:
+    def show(self, run: Run, hide_order: bool = False, as_added: bool = False,
+             direction: str = "") -> None:
         """Show ``run`` at its position: O(1), whatever the frontier's size.  ``hide_order``
         (the quiz) lists the entries by cell instead, without the next-out marks, so that the
         panel does not give the answer away; ``as_added`` (by hand) lists them in the order
         they were added, oldest first, without the marks: which to take is the student's
-        lesson.
+        lesson.  ``direction``: the half of a bidirectional search it is ("forward" or
+        "backward", its title says so; "" for a one-way search).
 
         Keeps the count and the entry expanded next (the first two lines) in view when the run
         or the position changed; a repeated call at the same position leaves the scroll where
@@ -203,8 +206,9 @@ class FrontierPanel(LinePanel):
             events = run.now.frontier(0, self.QUIZ_ENTRIES)
             self._by_cell = sorted(events, key=lambda g: run.nodes.cell(g)[::-1])
         weighted = run.algo.priority == "g+h" and run.semantics.weight != 1.0
-        self.show_titles(titles(run.algo, hide_order, as_added,
-                                run.semantics.priority_words(run.algo) if weighted else ""),
+        self.show_titles(directed(titles(run.algo, hide_order, as_added,
+                                         run.semantics.priority_words(run.algo) if weighted
+                                         else ""), direction),
                          legends(kind, hide_order, as_added) if n else ())
         if n:
             self._empty_text = ""

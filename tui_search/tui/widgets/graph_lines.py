@@ -5,7 +5,9 @@ search's state, asked of each node shown as the row is drawn (so a step redraws,
 out, nothing else).
 
 A node is a chip: its mark (:data:`MARKS`: ``•`` unseen, ``○`` frontier, ``●`` expanded,
-``◉`` being expanded, ``◆`` on the path, ``▶`` start, ``★`` goal, ``█`` closed) and its name,
+``◉`` being expanded, ``◆`` on the path, ``▶`` start, ``★`` goal, ``█`` closed; a
+bidirectional search's backward half ``□ ■ ▣``, a node both reached ``◐``, the best meeting
+``✦``) and its name,
 in its state's colours, as the grid fills a cell.  Under the cursor the chip keeps its
 colours, turns bold and has the cursor's mark (``◀``) after it.  A road is drawn in the
 path's colour when both its ends are on the path.  In the overview each cell of dots takes
@@ -36,7 +38,7 @@ PATH = int(CellState.PATH)
 #: A node's mark by its drawing code: the grid's glyphs for the search's states (a bullet for
 #: an unseen node, which the grid's dot would hide), an obstacle's block for a closed node, and
 #: for the start and the goal marks that are no letters (teaching graphs name nodes S and G).
-MARKS = "•○●◉◆█▶★"
+MARKS = "•○●◉◆█▶★□■▣◐✦"
 #: The component classes of the drawing beside the states' (``graph-view--free`` ...).
 PARTS = ("road", "road-path", "cost", "arrow", "cursor")
 

@@ -14,6 +14,7 @@ screen decides what it means.  ``]`` and ``[`` zoom: level 0 is the whole graph 
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable
+from typing import TYPE_CHECKING
 
 from textual import events
 from textual.binding import Binding
@@ -36,6 +37,9 @@ from tui_search.tui.view.graph_layout.raster import Tiles
 from tui_search.tui.widgets.graph_lines import PARTS, GraphLooks, Shown, graph_line, line_strip
 from tui_search.tui.widgets.line_panel import CachedStyles
 from tui_search.tui.widgets.scrollbars import QuietScrollbars
+
+if TYPE_CHECKING:
+    from tui_search.engine.run.bidirectional import BiRun
 
 StateOf = Callable[[int], "CellState | int"]
 PATH = int(CellState.PATH)
@@ -93,6 +97,18 @@ class GraphView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True,
         & > .graph-view--current { background: $map-current; color: $map-current-text;
                                    text-style: bold; }
         & > .graph-view--path { background: $map-path; color: $map-path-text; text-style: bold; }
+        /* A bidirectional search's backward half, a cell both halves reached, the best
+           meeting (tui_search/tui/view/two_way.py). */
+        & > .graph-view--back-frontier { background: $map-back-frontier;
+                                        color: $map-back-frontier-text; }
+        & > .graph-view--back-expanded { background: $map-back-expanded;
+                                        color: $map-back-expanded-text; }
+        & > .graph-view--back-current { background: $map-back-current;
+                                       color: $map-back-current-text;
+                                       text-style: bold; }
+        & > .graph-view--both { background: $map-both; color: $map-both-text; }
+        & > .graph-view--meeting { background: $map-meeting; color: $map-meeting-text;
+                                   text-style: bold; }
         & > .graph-view--road { color: $foreground 55%; }
         & > .graph-view--road-path { color: $map-path; text-style: bold; }
         & > .graph-view--arrow { color: $foreground 80%; }
@@ -144,11 +160,17 @@ class GraphView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True,
     #: The node under the mouse: a graph's readout follows the cursor only.
     hover: None = None
 
-    def show_run(self, run: Run | None, changed: Iterable[State] | None = None) -> None:
+    def show_run(self, run: Run | BiRun | None, changed: Iterable[State] | None = None
+                 ) -> None:
         """Draw ``run`` at its position (None: no search); ``changed`` names the nodes that
         differ from what is shown (None: any may, and the start, goals and closed nodes)."""
         if run is None:
             state_of: StateOf = unseen
+        elif not isinstance(run, Run):  # a bidirectional search's two halves, its meeting
+            from tui_search.tui.view.two_way import node_code
+
+            two_way, names = run, self.graph.names
+            state_of = lambda v: node_code(two_way, names[v])  # noqa: E731
         else:
             cell_state, names = run.now.cell_state, self.graph.names
             state_of = lambda v: cell_state(names[v])  # noqa: E731

@@ -12,7 +12,7 @@ what the mouse did (``CellClicked``, ...); the screen decides what an edit means
 from __future__ import annotations
 
 from collections.abc import Iterable
-from typing import cast
+from typing import TYPE_CHECKING, cast
 
 from rich.style import Style
 from textual import events
@@ -31,6 +31,9 @@ from tui_search.tui.widgets.cell_style import RAMP_COMPONENTS, CellLooks, swatch
 from tui_search.tui.widgets.line_panel import CachedStyles
 from tui_search.tui.widgets.map_lines import map_line
 from tui_search.tui.widgets.scrollbars import QuietScrollbars
+
+if TYPE_CHECKING:
+    from tui_search.engine.run.bidirectional import BiRun
 
 
 class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inherit_bindings=False):
@@ -83,6 +86,18 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         & > .grid-view--current { background: $map-current; color: $map-current-text;
                                   text-style: bold; }
         & > .grid-view--path { background: $map-path; color: $map-path-text; text-style: bold; }
+        /* A bidirectional search's backward half, a cell both halves reached, the best
+           meeting (tui_search/tui/view/two_way.py). */
+        & > .grid-view--back-frontier { background: $map-back-frontier;
+                                       color: $map-back-frontier-text; }
+        & > .grid-view--back-expanded { background: $map-back-expanded;
+                                       color: $map-back-expanded-text; }
+        & > .grid-view--back-current { background: $map-back-current;
+                                      color: $map-back-current-text;
+                                      text-style: bold; }
+        & > .grid-view--both { background: $map-both; color: $map-both-text; }
+        & > .grid-view--meeting { background: $map-meeting; color: $map-meeting-text;
+                                  text-style: bold; }
         /* The cursor keeps the cell's colours: its mark beside the glyph, bold; this is a
            free cell's mark's colour (tui_search/tui/widgets/cell_style.py). */
         & > .grid-view--cursor { color: $foreground; text-style: bold; }
@@ -101,7 +116,7 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
     def __init__(self, grid: Grid, *, id: str | None = None, classes: str | None = None) -> None:
         super().__init__(id=id, classes=classes)
         self.grid = grid
-        self.run: Run | None = None
+        self.run: Run | BiRun | None = None
         self.cursor: Cell = grid.start or (0, 0)
         #: Cells drawn marked (a replay's first difference; by hand, the entry taken off, the
         #: successors added and a hint's cell).
@@ -126,7 +141,8 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
         self.fitted = True
         self._refit()
 
-    def show_run(self, run: Run | None, changed: Iterable[Cell] | None = None) -> None:
+    def show_run(self, run: Run | BiRun | None, changed: Iterable[Cell] | None = None
+                 ) -> None:
         """Draw ``run`` at its position.  ``changed`` names the cells that differ from what is
         on screen (a step's node and successors); ``None`` redraws every visible line."""
         self.run = run

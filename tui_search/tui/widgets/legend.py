@@ -12,6 +12,9 @@ from textual.geometry import Size
 from textual.widget import Widget
 
 from tui_search.tui.view.cell_codes import (
+    BACK_EXPANDED,
+    BACK_FRONTIER,
+    BOTH,
     COMPONENTS,
     CURRENT,
     CURSOR_MARK,
@@ -20,6 +23,7 @@ from tui_search.tui.view.cell_codes import (
     FRONTIER,
     GLYPHS,
     GOAL,
+    MEETING,
     PATH,
     START,
     WALL,
@@ -39,6 +43,21 @@ ENTRIES = (
     (CURRENT, "expanding"),
     (PATH, "path"),
 )
+#: A bidirectional search's: each half's states named by its arrow, a cell both halves
+#: reached, the best meeting.
+TWO_WAY_ENTRIES = (
+    (START, "start"),
+    (GOAL, "goal"),
+    (WALL, "obstacle"),
+    (FRONTIER, "frontier →"),
+    (EXPANDED, "expanded →"),
+    (BACK_FRONTIER, "frontier ←"),
+    (BACK_EXPANDED, "expanded ←"),
+    (CURRENT, "expanding"),
+    (BOTH, "both"),
+    (MEETING, "meeting"),
+    (PATH, "path"),
+)
 
 
 class Legend(Widget):
@@ -55,6 +74,8 @@ class Legend(Widget):
     def __init__(self, view: GridView | GraphView, *, id: str | None = None) -> None:
         super().__init__(id=id)
         self.view = view
+        #: A bidirectional search is shown: its kinds of cell too.
+        self.two_way = False
 
     def entries(self, styled: bool = True) -> list[Text]:
         """The entries, in the looks the map draws with (read once a restyle, by the map);
@@ -67,7 +88,8 @@ class Legend(Widget):
         def look(code: int) -> tuple[str, Style | str]:
             return looks.codes[code] if looks else (GLYPHS[code % len(COMPONENTS)], "")
 
-        out = [Text.assemble(look(code), f" {name}") for code, name in ENTRIES]
+        entries = TWO_WAY_ENTRIES if self.two_way else ENTRIES
+        out = [Text.assemble(look(code), f" {name}") for code, name in entries]
         out.append(Text.assemble(look(FREE + len(COMPONENTS)), " cursor"))
         if view.grid.costs is not None:  # terrain: the ramp that shades a free cell's cost
             ramp: list[Style | str] = list(looks.ramp[1:]) if looks else [""] * len(RAMP_NAMES)
@@ -77,14 +99,13 @@ class Legend(Widget):
                 " cost"))
         return out
 
-    @staticmethod
-    def _graph_entries(view: GraphView, styled: bool) -> list[Text]:
+    def _graph_entries(self, view: GraphView, styled: bool) -> list[Text]:
         """A graph's entries: each mark as the graph view draws it, closed for obstacle."""
         from tui_search.tui.widgets.graph_lines import MARKS
 
         looks = view.looks() if styled else None
         out = []
-        for code, name in ENTRIES:
+        for code, name in (TWO_WAY_ENTRIES if self.two_way else ENTRIES):
             glyph, style = looks.mark[code] if looks else (MARKS[code], "")
             out.append(Text.assemble((glyph, style), f" {'closed' if code == WALL else name}"))
         out.append(Text.assemble((CURSOR_MARK, looks.cursor if looks else ""), " cursor"))

@@ -44,6 +44,7 @@ if TYPE_CHECKING:
     from textual.geometry import Offset, Region
 
     from tui_search.engine.maps.grid import Cell, Grid
+    from tui_search.engine.run.bidirectional import BiRun
     from tui_search.engine.run.recorded import Run
     from tui_search.tui.view.geometry import Geometry
     from tui_search.tui.widgets.cell_style import CellLooks
@@ -55,7 +56,7 @@ if TYPE_CHECKING:
         @property
         def grid(self) -> Grid: ...
         @property
-        def run(self) -> Run | None: ...
+        def run(self) -> Run | BiRun | None: ...
         @property
         def cursor(self) -> Cell: ...
         @property
@@ -116,7 +117,7 @@ def map_line(view: MapView, y: int) -> Strip:
     return window_strip(segments, sx - x0 * geo.cell_width, width, background)
 
 
-def block_swatches(grid: Grid, run: Run | None, rows: range, x0: int, x1: int,
+def block_swatches(grid: Grid, run: Run | BiRun | None, rows: range, x0: int, x1: int,
                    across: int) -> list[int] | None:
     """The swatch of each block of the overview's columns ``x0 .. x1-1`` over map rows
     ``rows``: the code of highest rank in it (:func:`block_codes`), a free block shaded by its

@@ -1,5 +1,7 @@
 """A search's pane: its counts and narration, its map view, its frontier panel (titled by its
-discipline) and its search tree.  Every search shown is a pane, one or four of them.
+discipline) and its search tree.  Every search shown is a pane, one or four of them.  A
+bidirectional search's pane has a frontier panel and a tree for each of its halves (the
+backward's made the first time one is shown), and its map draws both.
 
 The screen pushes a run to it (:meth:`RunPane.show`) and tells it how to lay itself out
 (:meth:`RunPane.lay_out`, from :func:`~tui_search.tui.view.layout.arrange`); layout beyond that is
@@ -18,6 +20,7 @@ from textual.widgets import Static
 from tui_search.engine.maps.grid import Grid
 from tui_search.engine.run.recorded import Run
 from tui_search.engine.search.state import State, as_cell
+from tui_search.tui.model.searches import current_node
 from tui_search.tui.view.layout import Arrangement, frontier_lines
 from tui_search.tui.view.status_lines import search_status
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
@@ -28,6 +31,7 @@ from tui_search.tui.widgets.stats import Stats
 
 if TYPE_CHECKING:
     from tui_search.engine.maps.graph import Graph
+    from tui_search.engine.run.bidirectional import BiRun
     from tui_search.tui.widgets.code_panel import CodePanel
     from tui_search.tui.widgets.graph_view import GraphView
 
@@ -52,11 +56,17 @@ class RunPane(Vertical):
             self.view = GraphView(grid, classes="pane-map -graph")
         self.frontier = FrontierPanel(classes="pane-frontier")
         self.tree_panel = SearchTreePanel(classes="pane-tree")
+        # a bidirectional search's backward half's panels, made when first shown
+        self._back_frontier: Later[FrontierPanel] = Later(
+            lambda: FrontierPanel(classes="pane-frontier -backward"))
+        self._back_tree: Later[SearchTreePanel] = Later(
+            lambda: SearchTreePanel(classes="pane-tree -backward"))
         self._code: Later[CodePanel] = Later(code_panel)  # made when first shown
         self.side_note = Static(note, classes="pane-note")
         self.map_box = Vertical(classes="pane-map-box")  # the room the map's cells fit
         self.lists = Vertical(classes="pane-lists")
-        self._run: Run | None = None  # the run last shown: the Code panel shows it on unfolding
+        # the run last shown: the Code panel shows it on unfolding
+        self._run: Run | BiRun | None = None
         self._frontier_lines: int | None = None  # set beside the map (None: app.tcss's)
 
     def compose(self) -> ComposeResult:
@@ -75,7 +85,8 @@ class RunPane(Vertical):
             show_part(self, part, shown, [self.lists, self.stats, self.map_box])
         else:
             show_part(self.lists, part, shown,
-                      [self.frontier, self.tree_panel, self._code.made, self.side_note])
+                      [self.frontier, self._back_frontier.made, self.tree_panel,
+                       self._back_tree.made, self._code.made, self.side_note])
 
     @property
     def code_panel(self) -> CodePanel:
@@ -112,6 +123,9 @@ class RunPane(Vertical):
             self.map_box.styles.height = arrangement.map_height or "1fr"
         self.view.styles.max_height = arrangement.map_max_height or "100%"
         self.tree_panel.set_class(not arrangement.trees or code, "-folded", update=restyle)
+        if self._back_tree.made is not None:
+            self._back_tree.made.set_class(not arrangement.trees or code, "-folded",
+                                           update=restyle)
         code_there = arrangement.code and code
         if code_there or self._code.made is not None:
             self.code_panel.set_class(not code_there, "-folded", update=restyle)
@@ -132,7 +146,8 @@ class RunPane(Vertical):
         frontier = self.frontier
         under = not self.tree_panel.has_class("-folded") or self.code_shown
         lines = None
-        if self.has_class("-beside") and under and self.size.height:
+        if self.has_class("-beside") and under and self.size.height and not self.has_class(
+                "-two-way"):  # a bidirectional search's four panels share the column
             need = frontier.rows_in_sight() + frontier.styles.gutter.height
             lines = frontier_lines(self.size.height, need)
         if lines != self._frontier_lines:  # a layout only when they change
@@ -141,7 +156,8 @@ class RunPane(Vertical):
     def on_resize(self) -> None:
         self._split_column()
 
-    def show(self, run: Run | None, changed: list[State] | None, *, follow: bool = True,
+    def show(self, run: Run | BiRun | None, changed: list[State] | None, *,
+             follow: bool = True,
              hide_order: bool = False, as_added: bool = False, title: str = "",
              mark: State | None = None, marks: tuple[State, ...] = ()) -> None:
         """Push ``run`` at its position to the map and the panels (``changed``: the cells
@@ -158,13 +174,16 @@ class RunPane(Vertical):
             view.show_run(run, changed)
         self.set_class(run is None, "-no-run")
         self._show_part(self.side_note, run is None)
+        self._show_halves(run if run is not None and not isinstance(run, Run) else None,
+                          hide_order)
         if run is not None:
-            self.frontier.show(run, hide_order=hide_order, as_added=as_added)
+            if isinstance(run, Run):
+                self.frontier.show(run, hide_order=hide_order, as_added=as_added)
+                self.tree_panel.show(run)
             self._split_column()
-            self.tree_panel.show(run)
             if self.code_shown:
                 self.code_panel.show(run)
-            node = run.now.current_node()
+            node = current_node(run)
             if follow and node is not None:
                 if isinstance(view, GridView):
                     view.follow(as_cell(node))
@@ -176,6 +195,28 @@ class RunPane(Vertical):
                 self.stats.show(status.lines, status.max_rows)
         if view.border_title != title:  # setting it repaints the whole view
             view.border_title = title
+
+    def _show_halves(self, run: BiRun | None, hide_order: bool) -> None:
+        """A bidirectional search's halves in the frontier panels and trees, forward then
+        backward (None: the backward half's panels hidden, where they were made)."""
+        back = (self._back_frontier, self._back_tree)
+        for later in back:
+            if later.made is not None or run is not None:
+                later.get().display = run is not None
+        if self.has_class("-two-way") != (run is not None):
+            self.set_class(run is not None, "-two-way")
+            self._frontier_lines = self.frontier.styles.height = None  # app.tcss's
+        if run is None:
+            return
+        ahead, behind = run.halves
+        frontier, tree = self._back_frontier.get(), self._back_tree.get()
+        self._show_part(frontier, True)
+        self._show_part(tree, True)
+        tree.set_class(self.tree_panel.has_class("-folded"), "-folded")
+        self.frontier.show(ahead, hide_order=hide_order, direction="forward")
+        frontier.show(behind, hide_order=hide_order, direction="backward")
+        self.tree_panel.show(ahead, direction="forward")
+        tree.show(behind, direction="backward")
 
 
 

@@ -27,6 +27,7 @@ from tui_search.tui.view.pieces import Parts
 from tui_search.tui.view.tree_listing import GLYPH_EXPANDED, GLYPH_FRONTIER, GLYPH_GOAL, TreeModel
 from tui_search.tui.view.tree_listing import Parts as TreeParts
 from tui_search.tui.view.tree_window import label_span, tree_window
+from tui_search.tui.view.two_way_text import directed
 from tui_search.tui.widgets.line_panel import LinePanel
 from tui_search.tui.widgets.scrollbars import set_virtual_size
 
@@ -102,8 +103,9 @@ class SearchTreePanel(LinePanel):
         """``"list"`` (the whole tree) or ``"focus"`` (the path to the node being expanded)."""
         return self.model.mode
 
-    def show(self, run: Run) -> None:
-        """Show ``run`` at its position and keep the node being expanded in view."""
+    def show(self, run: Run, direction: str = "") -> None:
+        """Show ``run`` at its position and keep the node being expanded in view
+        (``direction``: the half of a bidirectional search it is, which its title says)."""
         model = self.model
         moved = model.update(run)
         limit, f_limit = model.limit, model.f_limit
@@ -115,7 +117,7 @@ class SearchTreePanel(LinePanel):
             titles = (f"Search tree · f-limit {f_limit:.2f}", f"Tree · f-limit {f_limit:.2f}",
                       f"Tree · f ≤ {f_limit:.2f}", f"f ≤ {f_limit:.2f}", "Tree")
         goal = f"  {GLYPH_GOAL} goal" if model.path_shown else ""
-        self.show_titles(titles, (
+        self.show_titles(directed(titles, direction), (
             f"{GLYPH_EXPANDED} expanded  {GLYPH_FRONTIER} frontier{goal}",
             f"{GLYPH_EXPANDED} expanded {GLYPH_FRONTIER} frontier{goal.replace('  ', ' ')}",
             f"{GLYPH_EXPANDED} expanded {GLYPH_FRONTIER} frontier"))
