@@ -65,10 +65,10 @@ def two_way_codes(run: BiRun, y: int, x0: int, x1: int) -> list[int]:
 
 def node_code(run: BiRun, node: State) -> int:
     """The drawing code of ``node`` (a graph's, or a cell) for ``run`` at its position."""
-    if run.at_end and node in (run.path() or ()):
-        return PATH
     if node == run.meeting():
         return MEETING
+    if run.at_end and node in (run.path() or ()):
+        return PATH
     ahead, behind = (int(half.now.cell_state(node)) for half in run.halves)
     if run.k and run.direction(run.k) == "forward":
         behind = EXPANDED if behind == CURRENT else behind

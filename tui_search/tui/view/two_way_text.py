@@ -92,6 +92,8 @@ def two_way_narration(run: BiRun) -> str:
     half = run.halves[direction != "forward"]
     expanded = half.steps.expanded_event(half.k)
     node = node_text(half, expanded)
+    if direction != "forward" and node.startswith("START"):  # the backward half's root
+        node = "GOAL" + node[len("START"):]
     costs = costs_text(half, expanded)
     if costs:
         node = f"{node} {costs}"

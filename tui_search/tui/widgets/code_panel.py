@@ -21,6 +21,7 @@ from typing import TYPE_CHECKING, Any, ClassVar
 
 from textual.geometry import Region, Size
 
+from tui_search.engine.run.recorded import Run
 from tui_search.tui.view.code_trace import code_of, focus_line, lit_lines, named_lines
 from tui_search.tui.view.pieces import Parts
 from tui_search.tui.widgets.line_panel import LinePanel
@@ -28,7 +29,6 @@ from tui_search.tui.widgets.scrollbars import set_virtual_size
 
 if TYPE_CHECKING:
     from tui_search.engine.run.bidirectional import BiRun
-    from tui_search.engine.run.recorded import Run
     from tui_search.engine.search.pseudocode import Pseudocode
 
 #: The mark of a lit line, and the room a line's number takes after it.

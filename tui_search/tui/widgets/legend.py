@@ -12,6 +12,7 @@ from textual.geometry import Size
 from textual.widget import Widget
 
 from tui_search.tui.view.cell_codes import (
+    BACK_CURRENT,
     BACK_EXPANDED,
     BACK_FRONTIER,
     BOTH,
@@ -53,7 +54,8 @@ TWO_WAY_ENTRIES = (
     (EXPANDED, "expanded →"),
     (BACK_FRONTIER, "frontier ←"),
     (BACK_EXPANDED, "expanded ←"),
-    (CURRENT, "expanding"),
+    (CURRENT, "expanding →"),
+    (BACK_CURRENT, "expanding ←"),
     (BOTH, "both"),
     (MEETING, "meeting"),
     (PATH, "path"),

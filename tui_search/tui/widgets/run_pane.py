@@ -37,6 +37,10 @@ if TYPE_CHECKING:
 
 #: The map's box is at least this wide where the pane is, so its title (the file's name) shows.
 MAP_TITLE_WIDTH = 30
+#: A bidirectional search's column beside its map shows its two trees under its two
+#: frontiers from this height on; lower, the frontiers take the column (a tree needs a few
+#: lines to say anything, a frontier its next entry).
+TWO_WAY_TREES_FROM = 26
 
 
 class RunPane(Vertical):
@@ -142,7 +146,11 @@ class RunPane(Vertical):
     def _split_column(self) -> None:
         """In the lists' column beside the map, the frontier's lines: what its entries need
         before the tree or the Code panel under it gets lines
-        (:func:`~tui_search.tui.view.layout.frontier_lines`)."""
+        (:func:`~tui_search.tui.view.layout.frontier_lines`); a bidirectional search's
+        trees only where the column has :data:`TWO_WAY_TREES_FROM` lines."""
+        cramped = (self.has_class("-two-way") and self.has_class("-beside")
+                   and 0 < self.size.height < TWO_WAY_TREES_FROM)
+        self.set_class(cramped, "-cramped")
         frontier = self.frontier
         under = not self.tree_panel.has_class("-folded") or self.code_shown
         lines = None
@@ -202,7 +210,7 @@ class RunPane(Vertical):
         back = (self._back_frontier, self._back_tree)
         for later in back:
             if later.made is not None or run is not None:
-                later.get().display = run is not None
+                later.get().set_class(run is None, "-unused")
         if self.has_class("-two-way") != (run is not None):
             self.set_class(run is not None, "-two-way")
             self._frontier_lines = self.frontier.styles.height = None  # app.tcss's
