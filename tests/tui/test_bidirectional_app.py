@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from tests.helpers import MAPS, TUTORIAL_ROWS, grid_from_rows
 from tests.plain.test_plain import plain
+from tests.textual_internals import notifications
 from tests.tui.test_app import stats, sync, wait_until
 from tui_search.engine.maps.graph import Graph
 from tui_search.engine.maps.load import load_board, load_map
@@ -247,3 +248,13 @@ async def test_the_backward_half_stands_apart_in_every_theme() -> None:
     for theme in THEMES:
         difference, pair = await two_way_least_difference(theme)
         assert difference >= TWO_WAY_DIFFERENCE, (theme, pair, difference)
+
+
+@sync
+async def test_by_hand_says_it_steps_a_one_way_search() -> None:
+    app = trap_app()
+    async with app.run_test(size=BIG) as pilot:
+        await pilot.press("H")
+        await wait_until(pilot, lambda: any("By hand steps a one-way search" in n.message
+                                            for n in notifications(app)))
+        assert len(app.screen_stack) == 1  # the main screen alone: no by-hand screen

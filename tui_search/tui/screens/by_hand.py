@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING, Any, ClassVar
 from textual.binding import BindingType
 from textual.widget import Widget
 
+from tui_search.engine.search.registry import get_algorithm
 from tui_search.engine.search.state import as_cell
 from tui_search.tui.model.by_hand import ByHand
 from tui_search.tui.model.session import Session
@@ -34,6 +35,8 @@ if TYPE_CHECKING:
 NO_ENDS = "By hand needs a start (s) and a goal (g) on the map"
 NO_RECURSION = ("By hand steps a search with a frontier: turn recursion off in the settings "
                 "(,) first")
+NO_TWO_WAY = ("By hand steps a one-way search: pick BFS, DFS, UCS, greedy or A* (a "
+              "bidirectional search's two frontiers are the app's to step)")
 
 
 def hand_session(main: Session, exercise: Exercise | None = None) -> Session | str:
@@ -53,6 +56,8 @@ def hand_session(main: Session, exercise: Exercise | None = None) -> Session | s
         return NO_ENDS
     if contender.semantics.recursive:
         return NO_RECURSION
+    if get_algorithm(contender.algorithm).bidirectional:
+        return NO_TWO_WAY
     grid = grid.copy()
     session = Session(grid, None, contender.algorithm, contender.semantics,
                       main.max_steps, unsaved_name=name)
