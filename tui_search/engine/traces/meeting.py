@@ -24,7 +24,7 @@ exactly as before: the rule costs nothing."""
 from __future__ import annotations
 
 from collections.abc import Iterator, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from tui_search.engine.maps.graph import Graph
 from tui_search.engine.maps.grid import Grid
@@ -178,11 +178,10 @@ def diagnose_trace(trace: Trace, board: Grid | Graph, max_steps: int | None = No
                    ) -> Diagnosis | MeetingDiagnosis:
     """``--check-trace`` without ``-a``: :func:`~tui_search.engine.traces.diagnose.diagnose`,
     and for a trace that looks bidirectional the bidirectional searches too (module doc)."""
-    one_way = diagnose(trace, board, max_steps)
     if not trace.bidirectional:
-        return one_way
-    most = len(trace.steps) + 1 if max_steps is None else min(len(trace.steps) + 1,
-                                                               max_steps)
+        return diagnose(trace, board, max_steps)
+    one_way = _one_way(trace, board, max_steps)
+    most = len(trace.steps) + 1 if max_steps is None else min(len(trace.steps) + 1, max_steps)
     orders = bidirectional_orders(trace, board)
     scored = [_score(trace, board, i, key, sem, most)
               for i, (key, sem) in enumerate(bidirectional_candidates(orders[:ORDERS], board))]
@@ -195,6 +194,26 @@ def diagnose_trace(trace: Trace, board: Grid | Graph, max_steps: int | None = No
     found = [(s, check_bidirectional(trace, board, s.key, s.semantics, most)) for s in listed]
     notes = tuple(order_notes(orders))
     return MeetingDiagnosis(one_way, found, one_way.tried + len(scored), notes)
+
+
+def _one_way(trace: Trace, board: Grid | Graph, max_steps: int | None) -> Diagnosis:
+    """The one-directional diagnosis of a trace that looks bidirectional.  No one-directional
+    search matches it up to a step ``k`` that takes off a goal no earlier step added (each
+    listing what it added): its first ``k`` steps are diagnosed alone (a recursion's calls
+    form then runs as far as theirs, not seconds), unless one matches them all."""
+    goals = set(board.goals) if isinstance(board, Graph) else {board.goal}
+    added = {board.start}
+    for k, t in enumerate(trace.steps, 1):
+        if not t.listed:
+            break
+        if t.node not in added and t.node in goals:
+            one_way = diagnose(replace(trace, steps=trace.steps[:k]), board, max_steps)
+            if one_way.matches or any(v.matched >= k for v in one_way.best):
+                break
+            n = len(trace.steps)
+            return replace(one_way, best=[replace(v, steps=n) for v in one_way.best])
+        added.update(t.successors)
+    return diagnose(trace, board, max_steps)
 
 
 def bidirectional_candidates(orders: list[tuple[str, ...]], board: Grid | Graph
@@ -237,8 +256,8 @@ def bidirectional_name(key: str, sem: Semantics) -> str:
 
 @dataclass(frozen=True)
 class _Scored:
-    """A bidirectional candidate run against the trace: the steps it matched, whether it is
-    the whole trace, and why the search stopped there (a whole match's)."""
+    """A candidate run beside the trace: the steps it matched, is it the whole trace, why the
+    search stopped there (a whole match's)."""
 
     matched: int
     whole: bool
@@ -320,8 +339,8 @@ class MeetingDiagnosis:
         return "\n".join(lines)
 
     def _one_way_listed(self) -> list[Verdict]:
-        """The one-directional candidates listed when none matches: all of them, but only the
-        first under a bidirectional search that leads."""
+        """The one-directional candidates listed: the first alone under a bidirectional one
+        that leads and does not match."""
         best = self.one_way.best
         return best[:1] if self.leads and not self.matches else best
 
@@ -360,8 +379,7 @@ class MeetingDiagnosis:
 
 
 def summary(diagnosis: Diagnosis | MeetingDiagnosis) -> dict[str, object]:
-    """The first candidate as a student's records keep it: its ``algorithm``, ``search``,
-    ``steps``, ``matched_steps`` and ``cause`` (None where there is none)."""
+    """The first candidate as a student's records keep it (None where there is none)."""
     if isinstance(diagnosis, MeetingDiagnosis) and diagnosis.leads:
         top, verdict = diagnosis.found[0]
         return {"algorithm": top.key, "search": bidirectional_name(top.key, top.semantics),
