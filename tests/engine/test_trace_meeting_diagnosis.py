@@ -185,3 +185,18 @@ def test_the_apps_own_bidirectional_trace_is_named(grid: Grid, key: str, stop: s
     assert isinstance(diagnosis, MeetingDiagnosis) and diagnosis.matches, diagnosis.text()
     assert any(s.key == key and s.semantics.stop == stop and s.semantics.turn == turn
                and v.matches for s, v in diagnosis.found), diagnosis.text()
+
+
+def test_the_one_directional_searches_are_listed_for_the_whole_trace() -> None:
+    """They are checked against the steps up to the goal taken off unadded (none goes
+    further), and listed as parting there, for the trace's every step."""
+    text = reference(TRAP, "bibfs", Semantics(stop="first-meeting"))
+    diagnosis = diagnosis_of(text)
+    assert isinstance(diagnosis, MeetingDiagnosis)
+    n = len(text.splitlines())
+    assert all(v.steps == n and v.matched <= 1 for v in diagnosis.one_way.best)
+    lines = diagnosis.text().splitlines()
+    assert lines[-2].startswith("  next: BFS (") and lines[-2].endswith(" up to step 1")
+    one_way = [c for c in diagnosis.as_json()["candidates"]  # type: ignore[attr-defined]
+               if c["algorithm"] not in BIDIRECTIONAL]
+    assert one_way and all(c["steps"] == n for c in one_way)
