@@ -25,7 +25,7 @@ from tui_search.engine.maps.load import load_map, parse_map_text
 from tui_search.engine.maps.scenarios import load_scenario
 from tui_search.engine.search.choices import Semantics
 from tui_search.engine.traces.check import check_trace
-from tui_search.engine.traces.diagnose import diagnose
+from tui_search.engine.traces.meeting import check_bidirectional, diagnose_trace
 from tui_search.engine.traces.read import Trace, read_trace
 
 #: The diagnosis tests' 6x6 map (tests/engine/test_trace_diagnose.py).
@@ -56,17 +56,21 @@ def app_trace(grid: Grid, key: str, sem: Semantics, nodes_only: bool) -> Trace:
     if nodes_only:
         text = "".join(json.dumps({"node": json.loads(line)["node"]}) + "\n"
                        for line in text.splitlines())
-    return read_trace(text, grid, "trace")
+    return read_trace(text, grid, "trace", both_ways=None)  # as --check-trace reads it
 
 
 def _row(what: str, trace: Trace, grid: Grid, key: str, sem: Semantics, budget: float,
          repeats: int) -> None:
     times, floors, tried = [], [], 0
     for _ in range(repeats):
-        t, diagnosis = timed(lambda: diagnose(trace, grid), CPU)
+        t, diagnosis = timed(lambda: diagnose_trace(trace, grid), CPU)
         times.append(t)
         tried = diagnosis.tried  # type: ignore[attr-defined]
-        f, _ = timed(lambda: check_trace(trace, grid, key, sem, look_ahead=0), CPU)
+        assert diagnosis.matches  # type: ignore[attr-defined]
+        if trace.bidirectional:
+            f, _ = timed(lambda: check_bidirectional(trace, grid, key, sem, 10**9), CPU)
+        else:
+            f, _ = timed(lambda: check_trace(trace, grid, key, sem, look_ahead=0), CPU)
         floors.append(f)
     t = med(series(f"diagnose {what}", times))
     add(Row("diagnose", f"{what}: {len(trace.steps):,} steps, {tried:,} searches and choices "
@@ -81,6 +85,11 @@ def bench_diagnose(quick: bool) -> None:
     for what, key, sem, nodes_only in SMALL:
         _row(f"6x6, {what}", app_trace(grid, key, sem, nodes_only), grid, key, sem, 2.0,
              repeats)
+    trap = load_map(Path(__file__).resolve().parents[1] / "maps" / "pathfinding-js-28.txt")
+    for key, stop in (("bibfs", "first-meeting"), ("biastar", "proven")):
+        sem = Semantics(stop=stop)
+        _row(f"pathfinding-js-28, {key} {stop} (bidirectional)",
+             app_trace(trap, key, sem, False), trap, key, sem, 2.0, repeats)
     scen = COPIED / BIG_SCEN
     if not scen.exists():
         add(Row("diagnose", BIG_MAP, "skipped", f"not found in {COPIED}"))
@@ -92,7 +101,8 @@ def bench_diagnose(quick: bool) -> None:
             ("A*, heapq's ties, exact costs", "astar",
              Semantics(ties="node", cost_tolerance=0.0), False),
             ("DFS, expansions only (an autograder's)", "dfs",
-             Semantics(order=("N", "S", "E", "W"), visit="expand", goal_test="expand"), True)):
+             Semantics(order=("N", "S", "E", "W"), visit="expand", goal_test="expand"), True),
+            ("bibfs (bidirectional)", "bibfs", Semantics(), False)):
         trace = app_trace(big, key, sem, nodes_only)
         _row(f"{BIG_MAP} row {BIG_ROW}, {what}", trace, big, key, sem, 10.0,
              max(1, repeats // 2))

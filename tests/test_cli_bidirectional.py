@@ -261,3 +261,63 @@ def test_a_search_that_does_not_take_turns(capsys, tmp_path) -> None:
     code, verdict = _check(capsys, tmp_path, one_way)
     assert code == 1 and verdict["cause"] == "turn" and verdict["matched_steps"] == 1
     assert "one step each in turn, forward first" in verdict["text"]
+
+
+def _diagnose(capsys, tmp_path, lines: list[dict], *argv: str, board: str = TRAP
+              ) -> tuple[int, str]:
+    """``--check-trace`` without ``-a``: the exit code and what it printed."""
+    path = tmp_path / "student.jsonl"
+    path.write_text("".join(json.dumps(line) + "\n" for line in lines), "utf-8")
+    code, out, err = run_cli(capsys, board, "--headless", "--check-trace", str(path), *argv)
+    assert err == ""
+    return code, out
+
+
+def test_without_a_a_bidirectional_trace_is_diagnosed(capsys, tmp_path) -> None:
+    """The diagnosis tries the bidirectional searches too: a student's first-meeting BiBFS
+    is named with its rule (exit 0), in text and in JSON."""
+    first = student_bibfs(TRAP_ROWS, first_meeting=True)
+    code, out = _diagnose(capsys, tmp_path, first)
+    assert code == 0
+    assert out.splitlines()[0] == ("your trace is BiBFS (stop: first-meeting; order "
+                                   f"N,NW,W,SW,S,SE,E,NE), for all {len(first)} steps")
+    code, out = _diagnose(capsys, tmp_path, first, "--json")
+    obj = json.loads(out)
+    assert code == 0 and obj["verdict"] == "match" and obj["bidirectional"] is True
+    top = obj["candidates"][0]
+    assert (top["algorithm"], top["choices"]["stop"], top["verdict"]) == (
+        "bibfs", "first-meeting", "match")
+
+
+def test_without_a_a_broken_bidirectional_trace_is_told_its_nearest(capsys, tmp_path) -> None:
+    """Its backward search lists a cell's neighbours as the forward one does: with the
+    start in the open, the forward step says the order, and the backward one parts from it
+    (with the start in a corner, the moves not reversed are the moves reversed in another
+    order: a BiBFS, and named so)."""
+    rows = [".......", ".S.....", ".......", ".......", ".......", ".....G.", "......."]
+    board = tmp_path / "open.txt"
+    board.write_text("\n".join(rows) + "\n", "utf-8")
+    lines = student_bibfs(rows, first_meeting=False, backward_forwards=True)
+    code, out = _diagnose(capsys, tmp_path, lines, board=str(board))
+    assert code == 1
+    text = out.splitlines()
+    assert text[0] == "closest:"
+    assert text[1].startswith("  BiBFS (stop: proven; order N,NW,W,SW,S,SE,E,NE) up to step "
+                              "1; then step 2 (line 2): from (5,5) your search added (5,4), "
+                              "(4,4), ")
+    assert text[1].endswith("(backward, a cell's successors are the cells a move reaches "
+                            "it from)")
+    code, out = _diagnose(capsys, tmp_path, lines, "--json", board=str(board))
+    obj = json.loads(out)
+    assert code == 1 and obj["verdict"] == "closest"
+    assert obj["candidates"][0]["cause"] == "successors"
+
+
+def test_without_a_a_one_way_trace_is_diagnosed_as_before(capsys, tmp_path) -> None:
+    one_way = [json.loads(line) for line in run_cli(
+        capsys, TRAP, "--headless", "-a", "bfs", "--trace", "-")[1].splitlines()]
+    code, out = _diagnose(capsys, tmp_path, one_way)
+    assert code == 0 and out.startswith("your trace is BFS (order N,NW,W,SW,S,SE,E,NE; ")
+    assert "Bi" not in out
+    code, out = _diagnose(capsys, tmp_path, one_way, "--json")
+    assert code == 0 and json.loads(out)["bidirectional"] is False

@@ -136,20 +136,17 @@ def _check_bidirectional(options: Options, grid: Grid | Graph, semantics: Semant
 
 
 def _diagnose(options: Options, grid: Grid | Graph, trace: str, where: str) -> int:
-    """Without ``-a``: the searches and choices that match the trace longest."""
+    """Without ``-a``: the searches and choices that match the trace longest (the
+    bidirectional ones too for a trace that looks bidirectional)."""
     from tui_search.cli.headless import to_json
-    from tui_search.engine.traces.diagnose import diagnose
+    from tui_search.engine.traces.meeting import diagnose_trace, summary
     from tui_search.engine.traces.posthoc import load_any_trace as load_trace
 
     _no_choices_without_a("--check-trace", "tries every search and choice", "check", options)
-    diagnosis = diagnose(load_trace(trace, grid), grid, options.max_steps)
-    best = diagnosis.best[0] if diagnosis.best else None
-    difference = best.difference if best is not None else None
-    _record(options, where, algorithm=best.algorithm if best else None,
-            search=best.choices if best else None,
-            verdict="match" if diagnosis.matches else "closest",
-            steps=best.steps if best else None, matched_steps=best.matched if best else None,
-            cause=difference.cause if difference else None, diagnosis=diagnosis.text())
+    diagnosis = diagnose_trace(load_trace(trace, grid, both_ways=None), grid,
+                               options.max_steps)
+    _record(options, where, **summary(diagnosis),
+            verdict="match" if diagnosis.matches else "closest", diagnosis=diagnosis.text())
     if options.json:
         print(to_json({"trace": describe_name(trace), "map": where,
                        **diagnosis.as_json()}))

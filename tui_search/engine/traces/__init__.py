@@ -3,13 +3,15 @@
 * :mod:`~tui_search.engine.traces.read`: reading a trace;
 * :mod:`~tui_search.engine.traces.check`: a trace against one search, step by step;
 * :mod:`~tui_search.engine.traces.meeting`: a trace against a bidirectional search, its
-  stopping rule included;
+  stopping rule included; without ``-a``, a trace that looks bidirectional diagnosed with
+  the bidirectional searches too;
 * :mod:`~tui_search.engine.traces.differences`: where a trace parts from a search, and why;
 * :mod:`~tui_search.engine.traces.causes`: the causes named, their codes, whom they speak of, and
   the difference that carries one;
 * :mod:`~tui_search.engine.traces.ties`: a tie of the priority taken another way;
 * :mod:`~tui_search.engine.traces.diagnose`: which searches a trace matches longest;
-* :mod:`~tui_search.engine.traces.orders`: the move orders a trace allows;
+* :mod:`~tui_search.engine.traces.orders`: the move orders a trace allows (a bidirectional
+  one's too);
 * :mod:`~tui_search.engine.traces.posthoc`: Posthoc's trace format, read and written;
 * :mod:`~tui_search.engine.traces.hand`: a search stepped by hand, each step checked;
 * :mod:`~tui_search.engine.traces.as_run`: a trace as a run like any other;

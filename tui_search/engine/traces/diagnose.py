@@ -140,7 +140,7 @@ class Diagnosis:
                     lines.append(f"  next: {v.choices}, all {v.steps} steps, but it does not "
                                  "stop there")
                 elif self._no_stack_order(v):
-                    lines.append(f"  next: {v.choices}{self._parted(v)}")
+                    lines.append(f"  next: {v.choices}{self.parted(v)}")
                 else:
                     assert v.difference is not None
                     tie = (f", where {get_algorithm(v.algorithm).priority_name} ties"
@@ -151,7 +151,7 @@ class Diagnosis:
             lines += [f"  note: {note}" for note in top.notes if note in ALL_NOTES]
         else:
             lines.append("closest:")
-            lines += [f"  {v.choices}{self._parted(v)}" for v in self.best]
+            lines += [f"  {v.choices}{self.parted(v)}" for v in self.best]
         lines += [f"  note: {note}" for note in self.notes]
         lines.append(f"  ({self.tried} searches and choices tried)")
         return "\n".join(lines)
@@ -163,7 +163,7 @@ class Diagnosis:
                 and v.difference is not None and v.difference.kind == "expand"
                 and v.difference.got is not None)
 
-    def _parted(self, v: Verdict) -> str:
+    def parted(self, v: Verdict) -> str:
         """Where ``v`` parts from the trace: " up to step 12; then step 13: ...", " from step
         1: ..." when it parts at once; for a stack DFS under a recursive one, the issue's
         words: "...; then your trace expands (4,1), which no stack order explains (a
@@ -179,7 +179,8 @@ class Diagnosis:
 
     def as_json(self) -> dict[str, object]:
         return {"verdict": "match" if self.matches else "closest", "tried": self.tried,
-                "candidates": [v.as_json() for v in self.best], "notes": list(self.notes)}
+                "candidates": [v.as_json() for v in self.best], "notes": list(self.notes),
+                "bidirectional": False}
 
 
 class _Search:

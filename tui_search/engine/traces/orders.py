@@ -10,9 +10,10 @@ from collections.abc import Iterator
 from dataclasses import replace
 from itertools import permutations
 
+from tui_search.engine.maps.graph import Graph
 from tui_search.engine.maps.grid import DEFAULT_ORDER, DELTAS, Grid
 from tui_search.engine.search.state import State, as_cell
-from tui_search.engine.traces.read import Trace
+from tui_search.engine.traces.read import Trace, TraceStep
 
 #: A graph's orders, both tried: a trace's successors in the file's order or by name.
 GRAPH_ORDERS: list[tuple[str, ...]] = [("file",), ("name",)]
@@ -197,5 +198,38 @@ def order_notes(orders: list[tuple[str, ...]]) -> list[str]:
     return notes
 
 
-__all__ = ["MAX_ORDERS", "agrees", "call_first", "expansion_orders", "flipped_order",
-           "inferred_orders", "order_notes"]
+def bidirectional_orders(trace: Trace, board: Grid | Graph) -> list[tuple[str, ...]]:
+    """The move orders the trace's steps allow (a graph's: the file's and the names'), read
+    from the steps whose search the two trees tell apart (a cell only the forward tree
+    holds, or only the backward one), a backward step's successors mirrored through its
+    node; a step that stops at the cell it last added says nothing of the moves after it.
+    The app's order (of the moves the trace made) first where the steps allow it."""
+    if on_graph(trace) or not isinstance(board, Grid):
+        return inferred_orders(trace)
+    forward: set[State] = {board.start} if board.start is not None else set()
+    backward: set[State] = {board.goal} if board.goal is not None else set()
+    steps: list[TraceStep] = []
+    for t in trace.steps:
+        ahead, behind = t.node in forward, t.node in backward
+        if ahead and not behind:
+            steps.append(t)
+        elif behind and not ahead:
+            x, y = as_cell(t.node)
+            steps.append(t._replace(successors=tuple(
+                (2 * x - px, 2 * y - py) for px, py in map(as_cell, t.successors))))
+        if ahead or not behind:
+            forward.update(t.successors)
+        if behind or not ahead:
+            backward.update(t.successors)
+    view = replace(trace, steps=tuple(steps))
+    last = steps[-1] if steps and steps[-1].line == trace.steps[-1].line else None
+    met = last.successors[-1] if last is not None and last.successors else None
+    orders = inferred_orders(view, met, board)
+    default = tuple(m for m in DEFAULT_ORDER if m in orders[0])
+    if agrees(view, default):
+        orders = [default, *(o for o in orders if o != default)]
+    return orders
+
+
+__all__ = ["MAX_ORDERS", "agrees", "bidirectional_orders", "call_first", "expansion_orders",
+           "flipped_order", "inferred_orders", "order_notes"]

@@ -143,11 +143,12 @@ def _key(value: object) -> object:
     return json.dumps(value, sort_keys=True) if isinstance(value, (list, dict)) else value
 
 
-def load_any_trace(path: str, grid: Grid | Graph) -> Trace:
-    """A trace file of either format, by its name: Posthoc's (:data:`SUFFIXES`, a grid's),
-    else the app's own (:func:`~tui_search.engine.traces.read.load_trace`)."""
+def load_any_trace(path: str, grid: Grid | Graph, both_ways: bool | None = False) -> Trace:
+    """A trace file of either format, by its name: Posthoc's (:data:`SUFFIXES`, a grid's:
+    one-directional), else the app's own (:func:`~tui_search.engine.traces.read.load_trace`,
+    ``both_ways`` as it takes it)."""
     if not is_posthoc(path):
-        return load_trace(path, grid)
+        return load_trace(path, grid, both_ways)
     if not isinstance(grid, Grid):
         raise MapError(path, "a Posthoc trace is read for a grid; a graph's trace is the "
                        "app's own (JSON lines naming the nodes)")

@@ -152,6 +152,9 @@ class Trace:
     start: State | None = None
     goal: State | None = None
     path: tuple[State, ...] | None = None
+    #: Read as a bidirectional search's (:func:`read_trace`'s ``both_ways`` None): a line
+    #: says ``"dir": "backward"``, or one expands a goal no earlier line added.
+    bidirectional: bool = False
 
     @cached_property
     def expansions_only(self) -> bool:
@@ -215,6 +218,12 @@ class _Reader:
             return self.cell(value["node"], "successor")
         return self.cell(value, "successor")
 
+    def path(self, cells: object) -> tuple[State, ...]:
+        """The path line's cells (none: no path found)."""
+        if cells is not None and not isinstance(cells, list):
+            raise self.fail('"path" should be a list of [x, y], or null (no path)')
+        return () if cells is None else tuple(self.cell(c, "path cell") for c in cells)
+
     def endpoints(self, obj: dict[str, object]) -> tuple[State | None, State | None]:
         """The first line's ``start`` and ``goal`` (None where it gives none): the map's."""
         board = self.board
@@ -250,10 +259,13 @@ def _ends(board: Grid | Graph) -> tuple[State | None, tuple[State, ...]]:
     return board.start, () if board.goal is None else (board.goal,)
 
 
-def read_trace(text: str, grid: Grid | Graph, name: str, both_ways: bool = False) -> Trace:
+def read_trace(text: str, grid: Grid | Graph, name: str, both_ways: bool | None = False
+               ) -> Trace:
     """The trace in ``text`` (the contents of file ``name``), checked against ``grid`` (or
     a graph, whose trace names its nodes); ``both_ways``: a bidirectional search's, whose
-    backward search expands the goal unadded."""
+    backward search expands the goal unadded; None: either, as the trace reads (a goal
+    expanded unadded is the backward root: the trace is then :attr:`Trace.bidirectional`,
+    as one whose line says ``"dir": "backward"`` is)."""
     reader = _Reader(grid, name)
     steps = TraceSteps(grid)
     start = goal = None
@@ -263,8 +275,10 @@ def read_trace(text: str, grid: Grid | Graph, name: str, both_ways: bool = False
     added: set[State] | bytearray = set() if isinstance(grid, Graph) else bytearray(
         grid.width * grid.height)  # a cell some line added (or the start)
     _add(added, grid, begin)
-    for root in _ends(grid)[1] if both_ways else ():
+    roots = _ends(grid)[1]
+    for root in roots if both_ways else ():
         _add(added, grid, root)
+    from_goal = backward = False  # a goal expanded unadded (both_ways None); "dir" backward
     budget = LINE_BUDGET * len(text) + LINE_ALLOWANCE
     path_line = 0
     unadded: MapError | None = None  # the first node no earlier line added
@@ -283,22 +297,18 @@ def read_trace(text: str, grid: Grid | Graph, name: str, both_ways: bool = False
             start, goal = reader.endpoints(obj)
             continue
         if "path" in obj and "node" not in obj:
-            cells = obj["path"]
-            if cells is not None and not isinstance(cells, list):
-                raise reader.fail('"path" should be a list of [x, y], or null (no path)')
-            path = () if cells is None else tuple(reader.cell(c, "path cell") for c in cells)
-            path_line = number
+            path, path_line = reader.path(obj["path"]), number
             continue
         if "node" not in obj:
             raise reader.fail('an expansion needs "node": [x, y] (or the first line "start", '
                               'the last "path")')
         node = reader.cell(obj["node"], "node")
-        if not _was_added(added, grid, node) and unadded is None:  # unless none lists any
-            swapped = isinstance(node, tuple) and _was_added(added, grid, (node[1], node[0]))
-            hint = "; x is the column, y the row: swapped?" if swapped else ""
-            unadded = MapError(name, f"expands {show(node)}, which no earlier line added "
-                               f"(nor is it the start{' or the goal' * both_ways}){hint}",
-                               number)
+        backward |= obj.get("dir") == "backward"
+        if both_ways is None and node in roots and not _was_added(added, grid, node):
+            from_goal = True  # the backward search's root
+            _add(added, grid, node)
+        elif not _was_added(added, grid, node) and unadded is None:  # unless none lists any
+            unadded = _unadded(name, number, added, grid, node, bool(both_ways or from_goal))
         successors = obj.get("successors", [])
         if not isinstance(successors, list):
             raise reader.fail('"successors" should be a list')
@@ -311,7 +321,17 @@ def read_trace(text: str, grid: Grid | Graph, name: str, both_ways: bool = False
         raise MapError(name, "the trace has no expansions (lines with \"node\")")
     if unadded is not None and listed:
         raise unadded
-    return Trace(name, steps, start, goal, path)
+    return Trace(name, steps, start, goal, path, backward or (from_goal and listed))
+
+
+def _unadded(name: str, number: int, added: set[State] | bytearray, board: Grid | Graph,
+             node: State, goal: bool) -> MapError:
+    """The error of a node expanded that no earlier line added (``goal``: nor is it the
+    goal, a bidirectional search's backward root)."""
+    swapped = isinstance(node, tuple) and _was_added(added, board, (node[1], node[0]))
+    hint = "; x is the column, y the row: swapped?" if swapped else ""
+    return MapError(name, f"expands {show(node)}, which no earlier line added (nor is it the "
+                    f"start{' or the goal' * goal}){hint}", number)
 
 
 def _add(added: set[State] | bytearray, board: Grid | Graph, state: State) -> None:
@@ -357,7 +377,7 @@ def trace_line(step: Step) -> str:
     return json.dumps(obj, separators=(", ", ": ")) + "\n"
 
 
-def load_trace(path: str, grid: Grid | Graph, both_ways: bool = False) -> Trace:
+def load_trace(path: str, grid: Grid | Graph, both_ways: bool | None = False) -> Trace:
     """:func:`read_trace` of a file; a file that cannot be read is a one-line error."""
     return read_trace(read_text(path, "a trace", MAX_TRACE_BYTES), grid, path, both_ways)
 
