@@ -27,9 +27,9 @@ from tui_search.tui.view.cell_codes import (
     MEETING,
     PATH,
 )
-from tui_search.tui.view.two_way import combine, node_code, two_way_codes
-from tui_search.tui.view.two_way_code import two_way_kinds
-from tui_search.tui.view.two_way_text import two_way_narration, two_way_parts
+from tui_search.tui.view.two_way.cells import combine, node_code, two_way_codes
+from tui_search.tui.view.two_way.code_lines import two_way_kinds
+from tui_search.tui.view.two_way.words import two_way_narration, two_way_parts
 from tui_search.tui.widgets.frontier_panel import FrontierPanel
 from tui_search.tui.widgets.search_tree import SearchTreePanel
 

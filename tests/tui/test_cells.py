@@ -15,6 +15,7 @@ from rich.style import Style
 from tests.tui.test_app import SIZE, open_grid, sync, tutorial_app, wait_until, watch_repaints
 from tests.tui.test_snapshots import patterned_grid
 from tui_search.engine.maps.grid import Cell, Grid
+from tui_search.engine.run.recorded import Run
 from tui_search.tui.app import SearchApp
 from tui_search.tui.view.cell_codes import (
     CURRENT,
@@ -282,13 +283,13 @@ KIND = {"path": PATH, "being expanded": CURRENT, "frontier": FRONTIER, "expanded
         "obstacle": WALL, "free": FREE}
 
 
-class PaintedRun:
-    """Just what the overview asks a run: the search state of each cell of a row (its
-    ``run.now.row_states``)."""
+class PaintedRun(Run):
+    """A one-way run (the map draws a bidirectional one otherwise) with just what the
+    overview asks of it: the search state of each cell of a row (its ``run.now.row_states``)."""
 
-    def __init__(self, states: dict[Cell, int]) -> None:
+    def __init__(self, states: dict[Cell, int]) -> None:  # no search: no Run.__init__
         self.states = states
-        self.now = self
+        self.now = self  # type: ignore[assignment]
 
     def row_states(self, y: int, x0: int, x1: int) -> list[int]:
         return [self.states.get((x, y), FREE) for x in range(x0, x1)]

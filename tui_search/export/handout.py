@@ -12,10 +12,10 @@ from tui_search.engine.search.compare import MARKS_KEY, comparison, summary_sent
 from tui_search.export.frames import Film
 from tui_search.export.job import Job
 from tui_search.export.svg import svg_of
-from tui_search.plain.telling import result_sentence, step_report
+from tui_search.plain.two_way import report, result
 from tui_search.tui.model.session import Session
 from tui_search.tui.view.code_trace import code_of
-from tui_search.tui.view.two_way_text import stop_words
+from tui_search.tui.view.two_way.words import stop_words
 
 
 def _markdown_table(cells: list[tuple[str, ...]]) -> list[str]:
@@ -55,7 +55,7 @@ def handout_of(job: Job, film: Film, picture: str) -> tuple[str, str]:
         said = []
         for name, run in zip(labels, runs, strict=True):
             if run.k == k:
-                said += step_report(run, name if several else "", False)
+                said += report(run, name if several else "", False)
             if not run.at_end:
                 run.forward()
         if not said:
@@ -69,7 +69,7 @@ def handout_of(job: Job, film: Film, picture: str) -> tuple[str, str]:
     lines += _markdown_table(table_cells(rows))
     lines += ["", MARKS_KEY if several else "", summary_sentence(rows, job.grid.costs is not None)
               if several else "", ""]
-    lines += [f"- {labels[i] + ': ' if several else ''}{result_sentence(run)}"
+    lines += [f"- {labels[i] + ': ' if several else ''}{result(run)}"
               for i, run in enumerate(runs)]
     lines += ["", f"Made with `tui-search --export`; the picture is the app at step "
               f"{len(film.frames) - 1}, the last.", ""]

@@ -21,7 +21,7 @@ from tui_search.plain.settings import apply_setting, settings_lines
 from tui_search.tui.model.searches import current_node
 from tui_search.tui.model.session import Session
 from tui_search.tui.view.narration import cell_text, status_parts
-from tui_search.tui.view.two_way_text import two_way_parts
+from tui_search.tui.view.two_way.words import two_way_parts
 
 _BY_KEY = {a.app_key: a.key for a in ALGORITHMS.values()}
 
@@ -84,7 +84,7 @@ class PlainMode:
                 self.say(f"{name} is done at step {run.k}." if name else
                          f"At step {run.k}.")
                 continue
-            self.say(*telling.step_report(run, name, hide_order=s.quiz.on))
+            self.say(*two_way.report(run, name, hide_order=s.quiz.on))
         if s.note and not s.quiz.on:
             self.say(s.note)
 
@@ -169,7 +169,7 @@ class PlainMode:
         for run in self.session.runs:
             code = code_of(run)
             if not isinstance(run, Run):
-                from tui_search.tui.view.two_way_code import two_way_lines
+                from tui_search.tui.view.two_way.code_lines import two_way_lines
 
                 lit = two_way_lines(run)[0]
                 notes: list[str] = []

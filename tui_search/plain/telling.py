@@ -16,16 +16,10 @@ narration (:func:`~tui_search.tui.view.narration.narrate`) says it.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from tui_search.engine.run.recorded import Run
 from tui_search.engine.search.registry import Frontier
-from tui_search.plain.two_way import two_way_report, two_way_result
 from tui_search.tui.view.frontier_text import SHORT_NAMES
 from tui_search.tui.view.narration import cell_text, narrate
-
-if TYPE_CHECKING:
-    from tui_search.engine.run.bidirectional import BiRun
 
 #: The moves' names in full, for a node that is its parent's only successor.
 FULL_NAMES = {"N": "North", "S": "South", "E": "East", "W": "West", "NE": "North East",
@@ -133,10 +127,8 @@ def tree_sentence(run: Run) -> str:
     return f"New in the tree: {', '.join(edges)}."
 
 
-def result_sentence(run: Run | BiRun) -> str:
+def result_sentence(run: Run) -> str:
     """At the run's end: the path, its moves and cost, or that there is none ("" before)."""
-    if not isinstance(run, Run):
-        return two_way_result(run)
     if not run.at_end:
         return ""
     counts = (f"Expanded {run.now.expanded}, generated {run.now.generated}, the largest "
@@ -151,11 +143,9 @@ def result_sentence(run: Run | BiRun) -> str:
             f"{cell_text(path[-1])}: {said}. {counts}")
 
 
-def step_report(run: Run | BiRun, name: str = "", hide_order: bool = False) -> list[str]:
+def step_report(run: Run, name: str = "", hide_order: bool = False) -> list[str]:
     """What plain mode prints of a run after a key: the step, the tree's new edges, the
     frontier, and at the end the path."""
-    if not isinstance(run, Run):
-        return two_way_report(run, name, hide_order)
     lines = [step_sentence(run, name), tree_sentence(run), frontier_sentence(run, hide_order),
              result_sentence(run)]
     return [line for line in lines if line]

@@ -1,4 +1,5 @@
-"""A bidirectional search in plain sentences (plain mode and the handout): each step as its
+"""A bidirectional search in plain sentences (plain mode and the handout), and what either
+kind of run says after a key (:func:`report`, :func:`result`): each step as its
 narration says it, with whose turn it was; both frontiers; the tree the step grew; both
 trees; and at the end the path through the meeting cell and why the search stopped."""
 
@@ -6,8 +7,16 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+from tui_search.engine.run.recorded import Run
+from tui_search.plain.telling import (
+    frontier_sentence,
+    result_sentence,
+    step_report,
+    tree_lines,
+    tree_sentence,
+)
 from tui_search.tui.view.narration import cell_text
-from tui_search.tui.view.two_way_text import NAMES, two_way_narration
+from tui_search.tui.view.two_way.words import NAMES, two_way_narration
 
 if TYPE_CHECKING:
     from tui_search.engine.run.bidirectional import BiRun
@@ -25,16 +34,12 @@ def two_way_step(run: BiRun, name: str = "") -> str:
 
 def two_way_frontiers(run: BiRun, hide_order: bool = False) -> str:
     """Both frontiers, each as the one-way search's sentence says it, named by its half."""
-    from tui_search.plain.telling import frontier_sentence
-
     return " ".join(f"{NAMES[d]}: {frontier_sentence(half, hide_order)}"
                     for d, half in zip(NAMES, run.halves, strict=True))
 
 
 def two_way_new_edges(run: BiRun) -> str:
     """The new edges of the tree of the half that took the step ("" at step 0)."""
-    from tui_search.plain.telling import tree_sentence
-
     if not run.k:
         return ""
     direction = run.direction(run.k)
@@ -67,8 +72,6 @@ def two_way_report(run: BiRun, name: str = "", hide_order: bool = False) -> list
 
 def two_way_trees(run: BiRun) -> list[str]:
     """Both search trees, the forward's first."""
-    from tui_search.plain.telling import tree_lines
-
     out: list[str] = []
     for direction, half in zip(NAMES, run.halves, strict=True):
         lines = tree_lines(half)
@@ -76,5 +79,18 @@ def two_way_trees(run: BiRun) -> list[str]:
     return out
 
 
-__all__ = ["two_way_frontiers", "two_way_new_edges", "two_way_report", "two_way_result",
-           "two_way_step", "two_way_trees"]
+def report(run: Run | BiRun, name: str = "", hide_order: bool = False) -> list[str]:
+    """What plain mode prints of either kind of run after a key (:func:`~tui_search.plain.
+    telling.step_report` for a one-way search)."""
+    if isinstance(run, Run):
+        return step_report(run, name, hide_order)
+    return two_way_report(run, name, hide_order)
+
+
+def result(run: Run | BiRun) -> str:
+    """Either kind of run's answer at its end ("" before)."""
+    return result_sentence(run) if isinstance(run, Run) else two_way_result(run)
+
+
+__all__ = ["report", "result", "two_way_frontiers", "two_way_new_edges", "two_way_report",
+           "two_way_result", "two_way_step", "two_way_trees"]

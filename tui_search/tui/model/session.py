@@ -18,20 +18,13 @@ from tui_search.engine.search.choices import DEFAULT_SEMANTICS, Semantics
 from tui_search.engine.search.compare import Contender
 from tui_search.engine.search.registry import DEFAULT_ALGORITHM
 from tui_search.engine.search.state import State
-from tui_search.tui.model import playback
+from tui_search.tui.model import playback, searches
 from tui_search.tui.model.boards import has_endpoints, holds, semantics_for, start_of
 from tui_search.tui.model.map_edits import BRUSHES, NO_BRUSH, MapEdits
 from tui_search.tui.model.playback import Before
 from tui_search.tui.model.quiz import Quiz, toggled, verdict
 from tui_search.tui.model.replay_jumps import LOCKSTEP, LOCKSTEP_SHORT, REPLAY_ENDED, ReplayJumps
-from tui_search.tui.model.searches import (
-    DEFAULT_COMPARE,
-    current_node,
-    normal_spec,
-    run_of,
-    searches_of,
-    with_key,
-)
+from tui_search.tui.model.searches import DEFAULT_COMPARE, normal_spec, searches_of, with_key
 
 if TYPE_CHECKING:
     # Imported where used: exercises are read and graded only once one is shown, so the first
@@ -213,7 +206,7 @@ class Session:
                 replay, self.note = None, note or REPLAY_ENDED
             try:
                 self.runs = ([*replay.runs(board, self.max_steps)] if replay is not None
-                             else [run_of(board, c.algorithm, c.semantics, self.max_steps)
+                             else [searches.run_of(board, c.algorithm, c.semantics, self.max_steps)
                                    for c in self.contenders])
             except ValueError as refused:  # a search the app cannot show on this map
                 self.runs, self.note = [], note or str(refused)
@@ -399,7 +392,7 @@ class Session:
         before = self.advance(forward=True)  # every pane steps
         if before is None:
             return None
-        node = current_node(run)
+        node = searches.current_node(run)
         if node is not None and run.k != before[0][0]:
             self.quiz, self.note = verdict(self.quiz, run, node, guess)
             if self.records is not None:

@@ -16,5 +16,7 @@
 * :mod:`~tui_search.tui.view.tree_shape`: the search tree's shape, kept in step;
 * :mod:`~tui_search.tui.view.tree_window`: a tree's line as a sideways scroll shows it;
 * :mod:`~tui_search.tui.view.themes`: the colour themes, as data;
-* :mod:`~tui_search.tui.view.graph_layout`: a graph drawn in cells: places, labels, tiles.
+* :mod:`~tui_search.tui.view.graph_layout`: a graph drawn in cells: places, labels, tiles;
+* :mod:`~tui_search.tui.view.two_way`: a bidirectional search shown: its cells, its words, its
+  code's lines.
 """

@@ -47,7 +47,7 @@ def label(run: Run | BiRun, cell: Cell, mode: str) -> tuple[str, list[float]]:
     latest event that reached the cell at the run's position (nothing when none did; a
     bidirectional search's: in the half that reached it, the forward first)."""
     if not isinstance(run, Run):
-        from tui_search.tui.view.two_way import half_at
+        from tui_search.tui.view.two_way.cells import half_at
 
         half = half_at(run, cell)
         if half is None:

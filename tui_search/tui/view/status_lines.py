@@ -125,8 +125,8 @@ def search_status(run: "Run | BiRun | None", name: str, *, in_pane: bool, playin
 def _two_way_status(run: "BiRun", name: str, *, in_pane: bool, playing: str, note: str,
                     done: bool) -> Status:
     """A bidirectional search's lines: its name and rules, both halves' counts and μ, then
-    its narration (:mod:`~tui_search.tui.view.two_way_text`) and at the end its path."""
-    from tui_search.tui.view.two_way_text import (
+    its narration (:mod:`~tui_search.tui.view.two_way.words`) and at the end its path."""
+    from tui_search.tui.view.two_way.words import (
         stop_words,
         two_way_narration,
         two_way_parts,
@@ -172,7 +172,7 @@ def _counts(label: str, run: "Run | BiRun") -> list[tuple[str, str]]:
     """``BFS step 5/22 expanded 5``: a search's counts that never go."""
     parts = [(label, "stats--value")]
     if not isinstance(run, Run):
-        from tui_search.tui.view.two_way_text import two_way_parts
+        from tui_search.tui.view.two_way.words import two_way_parts
 
         counted = two_way_parts(run)
     else:

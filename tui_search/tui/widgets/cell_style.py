@@ -30,7 +30,7 @@ from tui_search.tui.view.cell_codes import (
     WALL,
 )
 from tui_search.tui.view.cell_labels import cell_line, number_text
-from tui_search.tui.view.two_way import two_way_codes
+from tui_search.tui.view.two_way.cells import two_way_codes
 
 if TYPE_CHECKING:
     from tui_search.engine.run.bidirectional import BiRun

@@ -98,12 +98,12 @@ class CodePanel(LinePanel):
 
     def show(self, run: Run | BiRun) -> None:
         """Show ``run``'s code with its position's step lit, its most specific lit line in
-        view (a bidirectional search's: :mod:`~tui_search.tui.view.two_way_code`)."""
+        view (a bidirectional search's: :mod:`~tui_search.tui.view.two_way.code_lines`)."""
         code = code_of(run)
         if isinstance(run, Run):
             lit, focus, named = lit_lines(run), focus_line(run), named_lines(run)
         else:
-            from tui_search.tui.view.two_way_code import two_way_lines
+            from tui_search.tui.view.two_way.code_lines import two_way_lines
 
             lit, focus, named = two_way_lines(run)
         if (code, lit, focus) == (self.code, self.lit, self.focus_number) and self._rows:

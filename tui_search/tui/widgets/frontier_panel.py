@@ -59,7 +59,7 @@ from tui_search.tui.view.frontier_text import (
     titles,
 )
 from tui_search.tui.view.pieces import Line, Parts, length, plain, wrap
-from tui_search.tui.view.two_way_text import directed
+from tui_search.tui.view.two_way.words import directed
 from tui_search.tui.widgets.line_panel import LinePanel
 from tui_search.tui.widgets.scrollbars import set_virtual_size
 

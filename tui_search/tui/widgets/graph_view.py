@@ -98,7 +98,7 @@ class GraphView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True,
                                    text-style: bold; }
         & > .graph-view--path { background: $map-path; color: $map-path-text; text-style: bold; }
         /* A bidirectional search's backward half, a cell both halves reached, the best
-           meeting (tui_search/tui/view/two_way.py). */
+           meeting (tui_search/tui/view/two_way/cells.py). */
         & > .graph-view--back-frontier { background: $map-back-frontier;
                                         color: $map-back-frontier-text; }
         & > .graph-view--back-expanded { background: $map-back-expanded;
@@ -167,7 +167,7 @@ class GraphView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True,
         if run is None:
             state_of: StateOf = unseen
         elif not isinstance(run, Run):  # a bidirectional search's two halves, its meeting
-            from tui_search.tui.view.two_way import node_code
+            from tui_search.tui.view.two_way.cells import node_code
 
             two_way, names = run, self.graph.names
             state_of = lambda v: node_code(two_way, names[v])  # noqa: E731

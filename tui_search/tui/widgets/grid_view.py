@@ -87,7 +87,7 @@ class GridView(QuietScrollbars, CachedStyles, ScrollView, can_focus=True, inheri
                                   text-style: bold; }
         & > .grid-view--path { background: $map-path; color: $map-path-text; text-style: bold; }
         /* A bidirectional search's backward half, a cell both halves reached, the best
-           meeting (tui_search/tui/view/two_way.py). */
+           meeting (tui_search/tui/view/two_way/cells.py). */
         & > .grid-view--back-frontier { background: $map-back-frontier;
                                        color: $map-back-frontier-text; }
         & > .grid-view--back-expanded { background: $map-back-expanded;

@@ -27,7 +27,7 @@ from tui_search.tui.view.pieces import Parts
 from tui_search.tui.view.tree_listing import GLYPH_EXPANDED, GLYPH_FRONTIER, GLYPH_GOAL, TreeModel
 from tui_search.tui.view.tree_listing import Parts as TreeParts
 from tui_search.tui.view.tree_window import label_span, tree_window
-from tui_search.tui.view.two_way_text import directed
+from tui_search.tui.view.two_way.words import directed
 from tui_search.tui.widgets.line_panel import LinePanel
 from tui_search.tui.widgets.scrollbars import set_virtual_size
 
