@@ -258,3 +258,11 @@ async def test_by_hand_says_it_steps_a_one_way_search() -> None:
         await wait_until(pilot, lambda: any("By hand steps a one-way search" in n.message
                                             for n in notifications(app)))
         assert len(app.screen_stack) == 1  # the main screen alone: no by-hand screen
+
+
+def test_a_spec_s_own_stopping_rule_is_no_setting_that_does_not_apply() -> None:
+    from tui_search.tui.model.searches import searches_of
+
+    contenders, note = searches_of("biastar:first-meeting,biastar", Semantics())
+    assert [c.semantics.stop for c in contenders] == ["first-meeting", "proven"]
+    assert note == ""

@@ -39,8 +39,9 @@ def searches_of(spec: str, semantics: Semantics) -> tuple[list[Contender], str]:
     note = (f"Visit on expand does not apply to {', '.join(fitted)}: visit on generate "
             "there" if fitted else "")
     if not note:
-        others = [c.label for c in contenders
-                  if c.semantics.replace(heuristic=semantics.heuristic) != semantics]
+        others = [c.label for c in contenders  # a spec's own rule (biastar:first-meeting) aside
+                  if c.semantics.replace(heuristic=semantics.heuristic, stop=semantics.stop,
+                                         turn=semantics.turn) != semantics]
         if others:
             note = (f"Some settings do not apply to {', '.join(others)}: their defaults "
                     "there")
