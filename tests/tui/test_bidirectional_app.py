@@ -266,3 +266,9 @@ def test_a_spec_s_own_stopping_rule_is_no_setting_that_does_not_apply() -> None:
     contenders, note = searches_of("biastar:first-meeting,biastar", Semantics())
     assert [c.semantics.stop for c in contenders] == ["first-meeting", "proven"]
     assert note == ""
+
+
+def test_plain_mode_s_trees_name_the_goal_root_and_one_node_being_expanded() -> None:
+    said = "\n".join(plain("n", "n", "tree", path=TRAP, algorithm="bibfs"))
+    assert "Forward search tree, 6 nodes:\nSTART (5,4), expanded, 5 children" in said
+    assert "Backward search tree, 5 nodes:\nGOAL (15,4), being expanded, 4 children" in said

@@ -73,9 +73,14 @@ def two_way_report(run: BiRun, name: str = "", hide_order: bool = False) -> list
 def two_way_trees(run: BiRun) -> list[str]:
     """Both search trees, the forward's first."""
     out: list[str] = []
+    moved = run.direction(run.k) if run.k else ""
     for direction, half in zip(NAMES, run.halves, strict=True):
-        lines = tree_lines(half)
-        out += [f"{NAMES[direction]} {lines[0][0].lower()}{lines[0][1:]}", *lines[1:]]
+        head, *lines = tree_lines(half)
+        if direction == "backward" and lines and lines[0].startswith("START"):
+            lines[0] = "GOAL" + lines[0][len("START"):]  # the backward search's root
+        if direction != moved:  # only the half that took the step is expanding a node
+            lines = [line.replace(", being expanded", ", expanded") for line in lines]
+        out += [f"{NAMES[direction]} {head[0].lower()}{head[1:]}", *lines]
     return out
 
 
