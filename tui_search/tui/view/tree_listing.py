@@ -94,6 +94,9 @@ class TreeModel:
         self._current = -1  # event expanded at the position (-1 at step 0)
         self._current_discarded = False  # ...or taken off and discarded
         self._ended = False  # the run at its end: nothing is being expanded any more
+        #: A bidirectional search's half that did not take the step: none of its nodes is
+        #: being expanded (its last one is marked as the current, without "expanding").
+        self.idle = False
         self._limit: int | None = None
         self._f_limit: float | None = None  # IDA*'s
         self._coord_w = 5
@@ -191,7 +194,7 @@ class TreeModel:
         self._listed = listed
         self._current = run.steps.expanded_event(k) if k else -1
         self._current_discarded = bool(k) and run.steps.is_discarded(k)
-        self._ended = run.at_end
+        self._ended = run.at_end or self.idle
         self._tree_size = size
         self._limit = run.steps.depth_limit() if run.algo.iterative else None
         f_limits = run.steps.f_limits()

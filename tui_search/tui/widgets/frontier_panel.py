@@ -175,13 +175,14 @@ class FrontierPanel(LinePanel):
     QUIZ_ENTRIES = 2000
 
     def show(self, run: Run, hide_order: bool = False, as_added: bool = False,
-             direction: str = "") -> None:
+             direction: str = "", idle: bool = False) -> None:
         """Show ``run`` at its position: O(1), whatever the frontier's size.  ``hide_order``
         (the quiz) lists the entries by cell instead, without the next-out marks, so that the
         panel does not give the answer away; ``as_added`` (by hand) lists them in the order
         they were added, oldest first, without the marks: which to take is the student's
         lesson.  ``direction``: the half of a bidirectional search it is ("forward" or
-        "backward", its title says so; "" for a one-way search).
+        "backward", its title says so; "" for a one-way search); ``idle``: that half did not
+        take the step, so nothing on it was just added.
 
         Keeps the count and the entry expanded next (the first two lines) in view when the run
         or the position changed; a repeated call at the same position leaves the scroll where
@@ -194,7 +195,7 @@ class FrontierPanel(LinePanel):
         kind = self._kind = run.algo.frontier
         self._iddfs = run.algo.iterative and not run.algo.contours  # d=N: a depth limit's
         n = self._count = run.now.frontier_len()
-        self._added = run.now.added_now()
+        self._added = range(0) if idle else run.now.added_now()
         widths = column_widths(run)
         self._coord_w, self._depth_w, self._move_w, self._cost_w = widths
         self._hint_col = entry_width(run, widths) + HINT_GAP

@@ -221,10 +221,12 @@ class RunPane(Vertical):
         self._show_part(frontier, True)
         self._show_part(tree, True)
         tree.set_class(self.tree_panel.has_class("-folded"), "-folded")
-        self.frontier.show(ahead, hide_order=hide_order, direction="forward")
-        frontier.show(behind, hide_order=hide_order, direction="backward")
-        self.tree_panel.show(ahead, direction="forward")
-        tree.show(behind, direction="backward")
+        back = bool(run.k) and run.direction(run.k) != "forward"
+        self.frontier.show(ahead, hide_order=hide_order, direction="forward", idle=back)
+        frontier.show(behind, hide_order=hide_order, direction="backward",
+                      idle=not back)
+        self.tree_panel.show(ahead, direction="forward", idle=back)
+        tree.show(behind, direction="backward", idle=not back)
 
 
 

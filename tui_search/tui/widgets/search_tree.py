@@ -103,10 +103,12 @@ class SearchTreePanel(LinePanel):
         """``"list"`` (the whole tree) or ``"focus"`` (the path to the node being expanded)."""
         return self.model.mode
 
-    def show(self, run: Run, direction: str = "") -> None:
+    def show(self, run: Run, direction: str = "", idle: bool = False) -> None:
         """Show ``run`` at its position and keep the node being expanded in view
-        (``direction``: the half of a bidirectional search it is, which its title says)."""
+        (``direction``: the half of a bidirectional search it is, which its title says;
+        ``idle``: that half did not take the step, so none of its nodes is expanding)."""
         model = self.model
+        model.idle = idle
         moved = model.update(run)
         limit, f_limit = model.limit, model.f_limit
         titles = ("Search tree", "Tree") if limit is None else (
