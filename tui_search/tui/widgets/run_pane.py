@@ -221,12 +221,13 @@ class RunPane(Vertical):
         self._show_part(frontier, True)
         self._show_part(tree, True)
         tree.set_class(self.tree_panel.has_class("-folded"), "-folded")
-        back = bool(run.k) and run.direction(run.k) != "forward"
-        self.frontier.show(ahead, hide_order=hide_order, direction="forward", idle=back)
+        stepped_back = bool(run.k) and run.direction(run.k) != "forward"
+        self.frontier.show(ahead, hide_order=hide_order, direction="forward",
+                           idle=stepped_back)
         frontier.show(behind, hide_order=hide_order, direction="backward",
-                      idle=not back)
-        self.tree_panel.show(ahead, direction="forward", idle=back)
-        tree.show(behind, direction="backward", idle=not back)
+                      idle=not stepped_back)
+        self.tree_panel.show(ahead, direction="forward", idle=stepped_back)
+        tree.show(behind, direction="backward", idle=not stepped_back)
 
 
 
