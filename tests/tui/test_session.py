@@ -66,6 +66,18 @@ def test_the_visit_rule_falls_back_where_it_does_not_apply() -> None:
     assert [c.semantics.visit for c in session.contenders] == ["expand", "generate"]
 
 
+def test_a_choice_a_search_names_itself_is_not_a_setting_that_did_not_apply() -> None:
+    """``biastar:first-meeting`` and ``astar:w=2`` choose their own rule and weight: no note
+    says the settings did not apply to them; a stopping rule set for all still does not apply
+    to BFS, and the note says so."""
+    from tui_search.tui.model.searches import searches_of
+
+    for spec in ("biastar:first-meeting,biastar", "astar:w=2,astar", "bibfs:smaller,bfs"):
+        assert searches_of(spec, DEFAULT_SEMANTICS)[1] == ""
+    note = searches_of("biastar,bfs", DEFAULT_SEMANTICS.replace(stop="first-meeting"))[1]
+    assert note == "Some settings do not apply to BFS: their defaults there"
+
+
 def test_lockstep_steps_every_run_forward_and_the_latest_back() -> None:
     session = tutorial(compare="bfs,dfs")
     for k in range(3):

@@ -33,15 +33,16 @@ def normal_spec(spec: str) -> str:
 def searches_of(spec: str, semantics: Semantics) -> tuple[list[Contender], str]:
     """The searches of ``spec`` under ``semantics``, and a note when a setting does not
     apply to one of them (that one takes the default: the visit rule, a priority queue's
-    choices, recursion)."""
+    choices, recursion).  What a search's part names itself (``astar:w=2``,
+    ``biastar:first-meeting``) is its own choice, not a setting that did not apply."""
     contenders = parse_compare(spec, semantics, fit=True, fewest=1)
     fitted = [c.label for c in contenders if c.semantics.visit != semantics.visit]
     note = (f"Visit on expand does not apply to {', '.join(fitted)}: visit on generate "
             "there" if fitted else "")
     if not note:
-        others = [c.label for c in contenders  # a spec's own rule (biastar:first-meeting) aside
-                  if c.semantics.replace(heuristic=semantics.heuristic, stop=semantics.stop,
-                                         turn=semantics.turn) != semantics]
+        others = [c.label for c in contenders
+                  if parse_compare(c.algorithm, semantics, fit=True, fewest=1)[0]
+                  .semantics.replace(heuristic=semantics.heuristic) != semantics]
         if others:
             note = (f"Some settings do not apply to {', '.join(others)}: their defaults "
                     "there")
