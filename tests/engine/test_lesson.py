@@ -51,11 +51,30 @@ def test_a_section_shows_its_text_without_its_block_and_fences_hide_headings() -
 
 
 def test_the_built_in_lessons_are_listed_and_found_by_name() -> None:
-    assert set(built_in()) == {"tutorial", "choices"}
+    assert set(built_in()) == {"tutorial", "choices", "bidirectional"}
     assert len(read_lesson(find_lesson("tutorial")).sections) == 10
     choices = read_lesson(find_lesson("choices"))
     assert len(choices.sections) == 5
     assert all(s.state is not None and s.state.code for s in choices.sections)
+
+
+def test_the_bidirectional_lesson_walks_the_trap_on_its_own_copy_of_the_map() -> None:
+    """Every section sets the app (its setting checked when read: a bad one would raise);
+    the map is the package's copy of maps/pathfinding-js-28.txt, the same grid, so the lesson
+    opens from anywhere; the stopping rules come in compare mode, two panes."""
+    from tui_search.engine.maps.load import load_map
+
+    lesson = read_lesson(find_lesson("bidirectional"), "bidirectional")
+    assert lesson.title == "Bidirectional search and its trap"
+    states = [s.state for s in lesson.sections]
+    assert all(state is not None for state in states)
+    trap_map = states[0].map if states[0] is not None else None
+    assert trap_map is not None and trap_map.parent == find_lesson("bidirectional").parent
+    assert load_map(trap_map) == load_map(ROOT / "maps" / "pathfinding-js-28.txt")
+    assert [(s.spec, s.step) for s in states if s is not None] == [
+        ("biastar:first-meeting,biastar", 0), ("biastar:first-meeting,biastar", 16),
+        ("biastar:first-meeting,biastar", None), ("biastar,astar", None),
+        ("bibfs:first-meeting,bibfs", None)]
 
 
 BAD = [
@@ -131,7 +150,9 @@ def test_the_command_line_lists_the_lessons_and_refuses_a_bad_one(capsys,
                                                                    tmp_path: Path) -> None:
     code, out, err = run_cli(capsys, "--lesson")
     assert code == 0 and err == ""
-    assert [line.split()[0] for line in out.splitlines()] == ["choices", "tutorial"]
+    assert [line.split()[0] for line in out.splitlines()] == ["bidirectional", "choices",
+                                                              "tutorial"]
+    assert len({line.index(line.split()[1]) for line in out.splitlines()}) == 1  # a column
     bad = tmp_path / "bad.md"
     bad.write_text("## One\n\n```lesson\nalgorithm: quick\n```\n")
     code, out, err = run_cli(capsys, "--lesson", str(bad))
@@ -139,7 +160,7 @@ def test_the_command_line_lists_the_lessons_and_refuses_a_bad_one(capsys,
     assert err == f"tui-search: {bad}:4:12: algorithm 'quick': use bfs, dfs, iddfs, ucs, " \
         "greedy, astar, idastar\n"
     code, _, err = run_cli(capsys, "--lesson", "no-such-lesson")
-    assert code == 2 and "no such lesson (built in: choices, tutorial)" in err
+    assert code == 2 and "no such lesson (built in: bidirectional, choices, tutorial)" in err
     code, _, err = run_cli(capsys, "--lesson", "tutorial", "--headless")
     assert code == 2 and err.count("\n") == 1 and "--lesson is for the app" in err
     for flag, value in (("--compare", "bfs,dfs"), ("--exercise", "1")):  # never ignored

@@ -259,8 +259,10 @@ def run(options: Options) -> int:
     if options.lesson is not None and options.lesson_read is None:
         from tui_search.engine.course.lesson import built_in
 
-        for name, title in built_in().items():
-            print(f"{name:10} {title}")
+        lessons = built_in()
+        width = max(map(len, lessons), default=0)
+        for name, title in lessons.items():
+            print(f"{name:{width}}  {title}")
         return 0
     if options.headless and options.exercise:
         from tui_search.cli.report import run_exercise  # not the app's: its start does without
