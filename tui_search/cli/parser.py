@@ -77,7 +77,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("-a", "--algorithm", choices=[*ALGORITHMS, *BIDIRECTIONAL], default=None,
                    help="; ".join(f"{a.key}: {a.name}" for a in (*ALGORITHMS.values(),
                                                                  *BIDIRECTIONAL.values()))
-                   + " (the bidirectional ones headless)")
+                   + " (the bidirectional ones: not beside --replay)")
     p.add_argument("--start", metavar="X,Y", help="start cell (overrides the map's S); on a "
                    "graph, a node's name")
     p.add_argument("--goal", metavar="X,Y", help="goal cell (overrides the map's G); on a "

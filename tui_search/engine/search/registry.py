@@ -185,7 +185,7 @@ ALGORITHMS: dict[str, Algorithm] = {
 }
 
 #: The bidirectional searches: each a forward search from the start and a backward one from
-#: the goal, run headless (the app's recorded runs are one-directional).
+#: the goal, in turn (headless and in the app; not beside a replayed trace).
 BIDIRECTIONAL: dict[str, Algorithm] = {
     a.key: a
     for a in (
