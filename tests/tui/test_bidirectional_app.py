@@ -272,3 +272,25 @@ def test_plain_mode_s_trees_name_the_goal_root_and_one_node_being_expanded() -> 
     said = "\n".join(plain("n", "n", "tree", path=TRAP, algorithm="bibfs"))
     assert "Forward search tree, 6 nodes:\nSTART (5,4), expanded, 5 children" in said
     assert "Backward search tree, 5 nodes:\nGOAL (15,4), being expanded, 4 children" in said
+
+
+TRAP_EXERCISE = """\
+title = "The first meeting"
+text = "Find a map where stopping at the first meeting costs more than the proven meeting."
+map = "pathfinding-js-28.txt"
+searches = ["biastar:first-meeting", "biastar"]
+edits = ["obstacles"]
+solved = "biastar_first_meeting.cost > biastar.cost"
+"""
+
+
+@sync
+async def test_the_app_s_challenge_grades_bidirectional_searches() -> None:
+    from tui_search.engine.course.exercise_file import parse_exercise
+
+    exercise = parse_exercise(TRAP_EXERCISE, str(MAPS / "trap.toml"))
+    app = SearchApp(exercise.board, exercise=exercise)
+    async with app.run_test(size=BIG) as pilot:
+        panel = app.main.challenge
+        await wait_until(pilot, lambda: panel.is_mounted and "Solved" in panel.text)
+        assert "BiA* (first-meeting)'s path costs 14.24, BiA*'s 13.66" in panel.text
