@@ -133,3 +133,18 @@ def test_a_graph_with_two_goals_is_refused_in_the_app() -> None:
     assert "2 goals" in app_refusal(g)
     with pytest.raises(ValueError, match="2 goals"):
         BiRun(g, "bibfs")
+
+
+def test_no_proof_is_claimed_with_a_heuristic_that_overestimates() -> None:
+    """Manhattan with diagonal moves overestimates: the front-to-end bound proves nothing,
+    and here the answer is not the cheapest (UCS: 8.24), which the reason says it may not be."""
+    from tui_search.engine.maps.load import parse_map_text
+
+    grid = parse_map_text("G.....#...\n...##.#..#\n.#.##.#.#.\n.......S#.\n", "m.txt")
+    run = BiRun(grid, "biastar", Semantics(heuristic="manhattan"))
+    run.goto(10**6)
+    assert round(run.path_cost(), 2) == 9.07
+    assert "proven" not in run.why() and "it may not be the cheapest" in run.why()
+    octile = BiRun(grid, "biastar", Semantics())
+    octile.goto(10**6)
+    assert round(octile.path_cost(), 2) == 8.24 and "is proven the cheapest" in octile.why()

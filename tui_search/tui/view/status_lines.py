@@ -136,7 +136,10 @@ def _two_way_status(run: "BiRun", name: str, *, in_pane: bool, playing: str, not
     status = [Piece([(name, "stats--value")])]
     if done:
         status.append(Piece([(f"done at step {run.k:,}", "stats--result")], DONE_RANK, SEP))
-    status.append(Piece([("· " + stop_words(run), "stats--note")], 0, (" ", "stats--note")))
+    # a pane's own lines (the map comes first) may drop the rule: its label names a first
+    # meeting, and the narration says why it stopped
+    status.append(Piece([("· " + stop_words(run), "stats--note")], PEAK_RANK if in_pane else 0,
+                        (" ", "stats--note")))
     for count, value in two_way_parts(run):
         parts = [(f"{count} ", "stats--label"), (value, "stats--value")]
         status.append(Piece(parts, RANKS.get(count, 1), SEP))
@@ -144,7 +147,8 @@ def _two_way_status(run: "BiRun", name: str, *, in_pane: bool, playing: str, not
         status.append(Piece([(playing, "stats--play")], PLAYING_RANK, SEP))
     failed = run.at_end and not run.found and not run.gave_up
     cls = "stats--no-path" if failed else "stats--narration"
-    line = [Piece([(note, "stats--note")] if note else [(two_way_narration(run), cls)])]
+    line = [Piece([(note, "stats--note")] if note else [(two_way_narration(run, in_pane),
+                                                          cls)])]
     if not note and run.at_end and run.found:
         line.append(Piece([(two_way_result(run), "stats--result")], 0, (" · ", "stats--label")))
     return Status([Line(status), Line(line, prose=True)], PANE_ROWS if in_pane else MAX_ROWS)

@@ -40,6 +40,7 @@ from tui_search.engine.maps.graph import Graph
 from tui_search.engine.maps.grid import Grid
 from tui_search.engine.search.bidirectional.backward import both_ways
 from tui_search.engine.search.choices import STOP_RULES, TURN_RULES, Semantics
+from tui_search.engine.search.heuristics import admissible
 from tui_search.engine.search.outcome import Outcome
 from tui_search.engine.search.registry import Algorithm
 from tui_search.engine.search.rules import (
@@ -142,6 +143,13 @@ class BidirectionalSearch:
             return True
         return False
 
+    def _admissible(self) -> bool:
+        """Can the heuristic be trusted never to overestimate (the front-to-end bound's
+        proof needs it)?  A graph's estimates are the app's checked ones."""
+        if not isinstance(self.board, Grid):
+            return True
+        return admissible(self.semantics.heuristic, self.semantics.order)
+
     def why(self) -> str:
         """Why it stopped, in a sentence: "both searches reached (7,3): with first-meeting
         this is the path, cost 14.24; nothing proves it the cheapest"."""
@@ -159,6 +167,11 @@ class BidirectionalSearch:
             side = "forward" if not self.forward.queue else "backward"
             return (f"the {side} frontier emptied: the best meeting, {cell}, {measure} {mu}, "
                     "is the cheapest")
+        if self.algorithm.informed and not self._admissible():
+            return (f"the best meeting, {cell}, {measure} μ = {mu}: a frontier's smallest f is "
+                    f"{self.bound:.2f}, μ or more (front-to-end), no proof with "
+                    f"{self.semantics.heuristic}, which overestimates here: it may not be the "
+                    "cheapest")
         if self.algorithm.informed:
             rule = f"a frontier's smallest f is {self.bound:.2f}, μ or more (front-to-end)"
         else:

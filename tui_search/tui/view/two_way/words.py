@@ -80,10 +80,13 @@ def two_way_parts(run: BiRun) -> list[tuple[str, str]]:
     return parts
 
 
-def two_way_narration(run: BiRun) -> str:
+def two_way_narration(run: BiRun, brief: bool = False) -> str:
     """One line about the step just taken (at step 0, how the two searches will go), and at
-    the end why the search stopped."""
+    the end why the search stopped (``brief``: a pane's own lines, beside others: at the
+    end, only why)."""
     k = run.k
+    if brief and run.at_end and k:
+        return _ended(run, "").removeprefix(". ")
     if k == 0:
         text = (f"START {cell_text(run.start)} is on the forward {frontier_word(run.halves[0])}"
                 f", the goal {cell_text(run.goal)} on the backward one: {turn_words(run)}")
