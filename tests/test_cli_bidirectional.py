@@ -149,11 +149,13 @@ def test_the_pseudocode_moves_its_lines_with_the_stopping_rule(capsys) -> None:
                                         "the first meeting)")
 
 
-def student_bibfs(rows: list[str], first_meeting: bool, backward_forwards: bool = False
-                  ) -> list[dict]:
+def student_bibfs(rows: list[str], first_meeting: bool, backward_forwards: bool = False,
+                  meet_on_expand: bool = False) -> list[dict]:
     """A student's bidirectional BFS written again with no tui_search search code, on the
     default eight moves: its trace lines.  ``backward_forwards``: the backward search lists
-    a cell's neighbours as the forward one does (the moves not reversed)."""
+    a cell's neighbours as the forward one does (the moves not reversed);
+    ``meet_on_expand``: the classroom version, which stops when it takes off a cell the
+    other search reached (that line adds nothing)."""
     from collections import deque
 
     from tui_search.engine.maps.grid import DEFAULT_ORDER, DELTAS
@@ -177,9 +179,14 @@ def student_bibfs(rows: list[str], first_meeting: bool, backward_forwards: bool 
     depths: tuple[dict, dict] = ({start: 0}, {goal: 0})
     best, lines, side = float("inf"), [], 0
     while queues[0] and queues[1]:
-        if not first_meeting and depths[0][queues[0][0]] + depths[1][queues[1][0]] >= best:
+        if (not first_meeting and not meet_on_expand
+                and depths[0][queues[0][0]] + depths[1][queues[1][0]] >= best):
             break
         node, added, met = queues[side].popleft(), [], False
+        if meet_on_expand and node in depths[1 - side]:
+            lines.append({"step": len(lines) + 1, "node": list(node),
+                          "dir": ("forward", "backward")[side], "successors": []})
+            break
         for near in neighbours(node, side == 1):
             if near in depths[side]:
                 continue
@@ -188,7 +195,7 @@ def student_bibfs(rows: list[str], first_meeting: bool, backward_forwards: bool 
             added.append(near)
             if near in depths[1 - side] and depths[0][near] + depths[1][near] < best:
                 best = depths[0][near] + depths[1][near]
-                met = first_meeting
+                met = first_meeting and not meet_on_expand
                 if met:
                     break
         lines.append({"step": len(lines) + 1, "node": list(node),
@@ -236,6 +243,20 @@ def test_a_student_who_stops_at_the_first_meeting_is_told_so(capsys, tmp_path) -
     code, verdict = _check(capsys, tmp_path, proven, "--stop", "first-meeting")
     assert code == 1 and verdict["cause"] == "stopping rule"
     assert "your search goes on, as proven does" in verdict["text"]
+
+
+def test_a_student_who_tests_the_meeting_on_taking_a_cell_off_is_told_so(capsys,
+                                                                        tmp_path) -> None:
+    """The classroom version: no stop at a push; it stops when it takes off a cell the other
+    search reached.  On the trap's map that is 75 steps, 12 moves."""
+    lines = student_bibfs(TRAP_ROWS, first_meeting=False, meet_on_expand=True)
+    assert len(lines) == 75 and lines[-1]["successors"] == []
+    for stop in ((), ("--stop", "first-meeting")):
+        code, verdict = _check(capsys, tmp_path, lines, *stop)
+        assert code == 1 and verdict["cause"] == "stopping rule"
+        assert ("your search tests the meeting when it takes a cell off: it took off (8,2), "
+                "which the other search had reached") in verdict["text"]
+        assert "tests it when it pushes one (meeting on generation)" in verdict["text"]
 
 
 def test_a_backward_search_that_does_not_reverse_its_moves(capsys, tmp_path) -> None:

@@ -98,6 +98,21 @@ def _first_difference(trace: Sequence[TraceStep], steps: list[Expansion]) -> int
     return None
 
 
+def _met_on_expand(board: Grid | Graph, key: str, semantics: Semantics,
+                    t_steps: Sequence[TraceStep], most: int) -> str | None:
+    """Why the trace stopped, when it is a search that tests the meeting on taking a cell
+    off (None: it is not)."""
+    search = BidirectionalSearch(board, get_algorithm(key), semantics, meet_on_expand=True)
+    steps: list[Expansion] = []
+    for step in search:
+        steps.append(step)
+        if len(steps) >= most:
+            return None
+    if len(steps) != len(t_steps) or _first_difference(t_steps, steps) is not None:
+        return None
+    return search.why()
+
+
 def check_bidirectional(trace: Trace, board: Grid | Graph, key: str, semantics: Semantics,
                         max_steps: int) -> MeetingVerdict:
     """``trace`` against ``key`` (bibfs, biucs, biastar) under ``semantics``, its stopping
@@ -136,6 +151,14 @@ def check_bidirectional(trace: Trace, board: Grid | Graph, key: str, semantics: 
         return verdict(False, matched, "stopping rule", f"difference at step {len(ref):,}: "
                        f"{name} stops there ({search.why()}); your search goes on, as proven "
                        f"does: {alt_search.why()}", at=len(ref), kind="goes_on")
+    slip = _met_on_expand(board, key, semantics, t_steps, most)
+    if slip is not None:  # the classroom slip: the meeting tested when a cell is taken off
+        return verdict(False, matched, "stopping rule", f"difference at step {n:,}: your "
+                       f"search tests the meeting when it takes a cell off: {slip}", f"{name} "
+                       "tests it when it pushes one (meeting on generation), "
+                       + ("and stops at the first meeting" if chosen != STOP_RULES[0] else
+                          "and stops once the best meeting is proven the cheapest"),
+                       at=n, kind="ends")
     if diff is None:
         if n < len(ref):
             return verdict(False, n, "ends early", f"difference at step {n + 1}: your trace "

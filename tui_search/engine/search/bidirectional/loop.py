@@ -86,11 +86,15 @@ class BidirectionalSearch:
     ``mu`` its cost, and ``path``/``moves`` its path.  ``generated``, ``expanded``,
     ``discarded`` and ``max_frontier`` (the two frontiers together) as the reference's."""
 
-    def __init__(self, board: Grid | Graph, algorithm: Algorithm, semantics: Semantics
-                 ) -> None:
+    def __init__(self, board: Grid | Graph, algorithm: Algorithm, semantics: Semantics,
+                 meet_on_expand: bool = False) -> None:
+        """``meet_on_expand``: the classroom slip a trace check looks for, not a rule of the
+        app's -- no stop at a push; the search stops when it takes off a cell the other has
+        reached (that step adds nothing)."""
         semantics.check(algorithm)
         self.board, self.algorithm, self.semantics = board, algorithm, semantics
-        self.proven = semantics.stop == STOP_RULES[0]
+        self.meet_on_expand = meet_on_expand
+        self.proven = semantics.stop == STOP_RULES[0] and not meet_on_expand
         forward, backward, self.roots = both_ways(board, semantics, algorithm.weighted)
         self.space = forward
         self.forward = _Half(FORWARD, forward, algorithm, semantics)
@@ -163,6 +167,9 @@ class BidirectionalSearch:
         if self.stopped_by == "meeting":
             return (f"both searches reached {cell}: with first-meeting this is the path, "
                     f"{measure} {mu}; nothing proves it the cheapest")
+        if self.stopped_by == "taken":
+            return (f"it took off {cell}, which the other search had reached (meeting tested "
+                    f"on expansion): this path, {measure} {mu}; nothing proves it the cheapest")
         if self.stopped_by == "empty":
             side = "forward" if not self.forward.queue else "backward"
             return (f"the {side} frontier emptied: the best meeting, {cell}, {measure} {mu}, "
@@ -185,7 +192,7 @@ class BidirectionalSearch:
         met = self._push(self.forward, self.space.start, None, None, 0.0)
         for root in self.roots:
             met = self._push(self.backward, root, None, None, 0.0) or met
-        if met and not self.proven:
+        if met and not self.proven and not self.meet_on_expand:
             self.stopped_by = "meeting"
             return
         turn = (self.forward, self.backward)
@@ -205,6 +212,14 @@ class BidirectionalSearch:
                 continue
             self.expanded += 1
             node = half.reached.taken(node)
+            other = self.backward if half is self.forward else self.forward
+            if self.meet_on_expand and node.cell in other.best:  # the slip: met on taking off
+                met_node = other.best[node.cell]
+                self.mu = self._cost(node) + self._cost(met_node)
+                self.meeting = (node, met_node) if half is self.forward else (met_node, node)
+                self.stopped_by = "taken"
+                yield Expansion(k, node, (), False, True, size, direction=half.name)
+                return
             added, found = [], False
             for move, cell, cost in half.space.successors(node.cell):
                 g = node.g + cost
@@ -212,7 +227,7 @@ class BidirectionalSearch:
                     continue
                 met = self._push(half, cell, node, move, g)
                 added.append(half.best[cell])
-                if met and not self.proven:
+                if met and not self.proven and not self.meet_on_expand:
                     found = True
                     break
             size = len(self.forward.queue) + len(self.backward.queue)
