@@ -99,6 +99,7 @@ class SettingsScreen(ModalScreen["SettingsChoice | None"]):
         & .picks, .ticks { height: 1; width: 100%; margin-top: 0; }
         & .picks > Checkbox, .ticks > Checkbox { width: auto; margin-right: 2; }
         & .row-label { width: auto; margin-right: 1; }
+        & .row-label:disabled { color: $text-disabled; }
         & #stop, #turn { width: auto; margin-right: 2; }
         & #stop > RadioButton, #turn > RadioButton { margin-right: 1; }
         & #order-error { display: none; }  /* a line only when there is a problem */

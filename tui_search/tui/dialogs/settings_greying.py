@@ -115,6 +115,8 @@ def sync_two_way(screen: DOMNode, algorithms: list[Algorithm]) -> None:
     applies = two_way_applies(screen, algorithms)
     for name in ("#stop", "#turn"):
         screen.query_one(name, RadioSet).disabled = not applies
+    for label in screen.query(".row-label"):  # "stop", "turn": greyed out with their rows
+        label.disabled = not applies
     explain = screen.query_one("#two-way-explain", Label)
     explain.update(TWO_WAY_EXPLAIN if applies else
                    f"not {names(algorithms)}'s: a bidirectional search's (tick one below)")
