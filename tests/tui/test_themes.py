@@ -17,7 +17,7 @@ from textual.command import CommandList, CommandPalette
 from tests.textual_internals import notifications, repainted
 from tests.tui.test_app import SIZE, TUTORIAL, sync, tutorial_app, wait_until
 from tui_search.engine.maps.load import load_map
-from tui_search.engine.search.registry import ALGORITHMS
+from tui_search.engine.search.registry import ALGORITHMS, BIDIRECTIONAL
 from tui_search.tui import config as config_module
 from tui_search.tui.app import SearchApp
 from tui_search.tui.config import CONFIG_DIR_ENV, Config, config_path
@@ -262,12 +262,15 @@ async def test_an_unwritable_config_dir_says_so_once(monkeypatch) -> None:
 
 @sync
 async def test_the_palette_picks_each_algorithm_of_the_registry() -> None:
+    """Each search, the bidirectional ones (which have no key) too."""
     app = tutorial_app()
+    everyone = [*ALGORITHMS.values(), *BIDIRECTIONAL.values()]
     async with app.run_test(size=SIZE) as pilot:
-        for algorithm in reversed(ALGORITHMS.values()):
-            # "Iterative deepening" begins "Iterative deepening A*" too: it comes first
-            longer = any(other.name.startswith(algorithm.name) and other is not algorithm
-                         for other in ALGORITHMS.values())
+        for algorithm in reversed(everyone):
+            # "Iterative deepening" is in "Iterative deepening A*" too, "Uniform-cost search"
+            # in "Bidirectional uniform-cost search": it comes first
+            longer = any(algorithm.name.lower() in other.name.lower() and other is not algorithm
+                         for other in everyone)
             await palette_run(pilot, f"algorithm: {algorithm.name}", best=longer)
             assert app.session.algorithm == algorithm.key
             assert app.session.run is not None and app.session.run.algorithm == algorithm.key
@@ -294,7 +297,8 @@ async def test_the_palette_lists_the_apps_commands_beside_textuals() -> None:
     async with app.run_test(size=SIZE):
         names = [name for name, _, _ in SearchCommands(app.screen).commands()]
     assert [n for n in names if n.startswith("Algorithm: ")] == [
-        f"Algorithm: {a.name}" for a in ALGORITHMS.values()]
+        f"Algorithm: {a.name}" for a in (*ALGORITHMS.values(), *BIDIRECTIONAL.values())]
+    assert "Algorithm: Bidirectional A*" in names  # after the one-way searches
     assert [n for n in names if n.startswith("Theme: ")] == [
         f"Theme: {t.title}" for t in THEMES.values()]
     assert {"Search settings", "Save the map", "Save the map as…", "Open a map…",

@@ -1,6 +1,7 @@
 """The app's own commands in Textual's command palette (``ctrl+p``), beside Textual's: each
-algorithm of the registry, each theme, each cost of the terrain brush, and the actions a key does
-(settings, save, save as, open, overview, zoom, cell labels, help), and the run exported.
+algorithm of the registry (the bidirectional ones too: they have no key), each theme, each cost
+of the terrain brush, and the actions a key does (settings, save, save as, open, overview,
+zoom, cell labels, help), and the run exported.
 
 A command runs the same action as its key (the main screen's ``run_action``), so the palette
 can never do
@@ -18,7 +19,7 @@ from textual.command import DiscoveryHit, Hit, Hits, Provider
 
 from tui_search.engine.course.exercise_file import BUILT_IN_FILES, built_in_exercise
 from tui_search.engine.search.compare import parse_compare
-from tui_search.engine.search.registry import ALGORITHMS
+from tui_search.engine.search.registry import ALGORITHMS, BIDIRECTIONAL
 from tui_search.tui.model.map_edits import BRUSHES, brush_name
 from tui_search.tui.screens.keys import KEYS
 from tui_search.tui.view.themes import THEMES
@@ -29,6 +30,8 @@ COMPARISONS = {
     "bfs,ucs,astar": "fewest moves, the cheapest path, and the cheapest with fewer expansions",
     "astar,astar:manhattan": "an admissible heuristic against an inadmissible one",
     "ucs,greedy,astar": "g, h and g + h: what each priority buys",
+    "biastar:proven,biastar:first-meeting": "bidirectional A*'s trap: stopped at the first "
+    "meeting, its path is not always the cheapest",
 }
 
 #: The actions of the app's key table offered by name, with the palette's name for each.
@@ -61,8 +64,9 @@ class SearchCommands(Provider):
         main = app.screen_stack[0]  # the main screen: its keys' actions
         found: list[Command] = [
             (f"Algorithm: {a.name}", partial(main.run_action, f"algorithm({a.key!r})"),
-             f"{a.summary} (key {a.app_key})")
-            for a in ALGORITHMS.values()
+             f"{a.summary} (key {a.app_key})" if a.app_key else
+             f"{a.summary} (no key: here, or ticked in the settings for c)")
+            for a in (*ALGORITHMS.values(), *BIDIRECTIONAL.values())
         ]
         for spec in THEMES.values():
             now = " · the theme now" if app.theme == spec.name else ""

@@ -2,6 +2,10 @@
 
 * :mod:`~tui_search.tui.dialogs.help`: the keys, the colours, how BFS and DFS work;
 * :mod:`~tui_search.tui.dialogs.settings`: the search choices;
+* :mod:`~tui_search.tui.dialogs.settings_controls`: the settings' rows of radio buttons and
+  compare boxes, built and read;
+* :mod:`~tui_search.tui.dialogs.settings_greying`: which choices apply to the searches shown;
+  the others greyed out, and why;
 * :mod:`~tui_search.tui.dialogs.settings_choice`: what the settings dismiss with;
 * :mod:`~tui_search.tui.dialogs.path_prompt`: a file-name prompt with a picker;
 * :mod:`~tui_search.tui.dialogs.open_map`: open a map file;

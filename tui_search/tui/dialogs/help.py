@@ -13,7 +13,7 @@ from textual.containers import VerticalScroll
 from textual.screen import ModalScreen
 from textual.widgets import Static
 
-from tui_search.engine.search.registry import ALGORITHMS
+from tui_search.engine.search.registry import ALGORITHMS, BIDIRECTIONAL
 from tui_search.tui.view.themes import THEMES
 from tui_search.tui.widgets.grid_view import GridView
 
@@ -38,6 +38,8 @@ KEYS = (
     ("esc", "stop computing the last step (on a big map)"),
     (" ".join(a.app_key for a in ALGORITHMS.values()),
      " / ".join(a.short for a in ALGORITHMS.values()) + " (a new search, same map)"),
+    ("ctrl+p  ,", " / ".join(a.short for a in BIDIRECTIONAL.values())
+     + ", bidirectional: no key; pick one in the palette, or tick it in the settings for c"),
     ("c", "compare searches side by side, in lockstep; "
           f"{_FIRST.app_key}-{_LAST.app_key} add / remove"),
     ("f", "fold the search trees away / show them"),
@@ -100,6 +102,13 @@ is a DFS from START that cuts off any node whose f is over the limit (the status
 [b]f-limit[/b]); the next limit is the smallest f cut off ([b]next[/b]). A*'s cheapest path, on \
 a small stack, paid for by repeating each iteration.
 
+A [b]bidirectional[/b] search (BiBFS, BiUCS, BiA*: no key, in the palette or the \
+settings) runs the same search from START and, the moves reversed, from the GOAL, a step \
+each in turn (or the smaller frontier's first): two frontiers on one map, two panels, two \
+trees. Where they meet is a path, but stopping at the [b]first meeting[/b] is a famous trap: \
+it is not always the cheapest. The settings' [b]proven[/b] stop keeps the best meeting and \
+goes on until no path through the frontiers can be cheaper.
+
 Each expanded node turns blue and its successors are generated (dark). When the goal is \
 generated, the path is traced back up the tree from the goal to START (green). (These are the \
 dark theme's colours: the legend above shows the colours of the theme in use, t changes it.)"""
@@ -160,6 +169,7 @@ class HelpScreen(ModalScreen[None]):
             padding: 0 1;
         }
         & .help-heading { text-style: bold; color: $text-accent; margin-top: 1; }
+        & .help-note { color: $text-muted; padding: 0 1; }
     }
     """
 
@@ -174,6 +184,9 @@ class HelpScreen(ModalScreen[None]):
             yield Static(keys_table(), id="help-keys")
             yield Static("Colours and glyphs", classes="help-heading")
             yield Legend(self._view)
+            yield Static("A bidirectional search's, besides: the backward search's cells "
+                         "(←), those both reached, the best meeting", classes="help-note")
+            yield Legend(self._view, only_two_way=True)
             yield Static("How the searches work", classes="help-heading")
             yield Static(HOW)
             yield Static("Without the screen", classes="help-heading")

@@ -87,5 +87,16 @@ def with_key(spec: str, key: str) -> tuple[str, str | None]:
     return ",".join(parts), None
 
 
+def with_ticked(spec: str, ticked: list[str]) -> str:
+    """The settings' compare boxes ticked (``ticked``, registry keys) over the comparison
+    ``spec``: its searches whose box is still ticked, as it names them and in its order (a
+    heuristic, a weight, a stopping rule kept; ``biastar:proven,biastar:first-meeting`` is
+    one box), then the boxes newly ticked, in ``ticked``'s order."""
+    parts = [p.strip() for p in spec.split(",") if p.strip()]
+    named = {p.partition(":")[0] for p in parts}
+    return ",".join([p for p in parts if p.partition(":")[0] in ticked]
+                    + [key for key in ticked if key not in named])
+
+
 __all__ = ["DEFAULT_COMPARE", "MAX_PANES", "MIN_COMPARED", "current_node", "normal_spec", "run_of",
-           "searches_of", "with_key"]
+           "searches_of", "with_key", "with_ticked"]

@@ -61,6 +61,15 @@ TWO_WAY_ENTRIES = (
     (PATH, "path"),
 )
 
+#: What a bidirectional search adds to the one-way legend (the help lists them apart).
+ONLY_TWO_WAY = (
+    (BACK_FRONTIER, "frontier ←"),
+    (BACK_EXPANDED, "expanded ←"),
+    (BACK_CURRENT, "expanding ←"),
+    (BOTH, "both"),
+    (MEETING, "meeting"),
+)
+
 
 class Legend(Widget):
     """Glyph-and-colour entries packed into as many lines as the width needs."""
@@ -73,11 +82,22 @@ class Legend(Widget):
     }
     """
 
-    def __init__(self, view: GridView | GraphView, *, id: str | None = None) -> None:
+    def __init__(self, view: GridView | GraphView, *, id: str | None = None,
+                 only_two_way: bool = False) -> None:
+        """``only_two_way``: the kinds a bidirectional search adds, alone (no cursor, no
+        terrain's ramp: the help lists them under the one-way legend)."""
         super().__init__(id=id)
         self.view = view
         #: A bidirectional search is shown: its kinds of cell too.
         self.two_way = False
+        self.only_two_way = only_two_way
+
+    @property
+    def kinds(self) -> tuple[tuple[int, str], ...]:
+        """The kinds of cell listed, each a code and its name."""
+        if self.only_two_way:
+            return ONLY_TWO_WAY
+        return TWO_WAY_ENTRIES if self.two_way else ENTRIES
 
     def entries(self, styled: bool = True) -> list[Text]:
         """The entries, in the looks the map draws with (read once a restyle, by the map);
@@ -90,8 +110,9 @@ class Legend(Widget):
         def look(code: int) -> tuple[str, Style | str]:
             return looks.codes[code] if looks else (GLYPHS[code % len(COMPONENTS)], "")
 
-        entries = TWO_WAY_ENTRIES if self.two_way else ENTRIES
-        out = [Text.assemble(look(code), f" {name}") for code, name in entries]
+        out = [Text.assemble(look(code), f" {name}") for code, name in self.kinds]
+        if self.only_two_way:
+            return out
         out.append(Text.assemble(look(FREE + len(COMPONENTS)), " cursor"))
         if view.grid.costs is not None:  # terrain: the ramp that shades a free cell's cost
             ramp: list[Style | str] = list(looks.ramp[1:]) if looks else [""] * len(RAMP_NAMES)
@@ -107,9 +128,11 @@ class Legend(Widget):
 
         looks = view.looks() if styled else None
         out = []
-        for code, name in (TWO_WAY_ENTRIES if self.two_way else ENTRIES):
+        for code, name in self.kinds:
             glyph, style = looks.mark[code] if looks else (MARKS[code], "")
             out.append(Text.assemble((glyph, style), f" {'closed' if code == WALL else name}"))
+        if self.only_two_way:
+            return out
         out.append(Text.assemble((CURSOR_MARK, looks.cursor if looks else ""), " cursor"))
         return out
 
