@@ -228,7 +228,8 @@ async def at_every_size(pilot: Pilot, check: Callable[[list[str]], list[str]],
     for size in SIZES:
         await pilot.resize_terminal(*size)
         found: list[str] = ["not drawn yet"]
-        for _ in range(100):  # the panes are fitted after the resize: wait for it
+        for _ in range(300):  # the panes are fitted after the resize: wait for it (a busy
+            # machine may take seconds)
             screen = ["".join(text for text, _ in line) for line in await repainted(pilot)]
             found = check(screen)
             if not found and app.size == size:

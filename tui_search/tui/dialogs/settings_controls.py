@@ -5,9 +5,12 @@ the comparison they make, or the problem (fewer than two, more than four) shown 
 
 from __future__ import annotations
 
+from typing import Any
+
 from textual.app import ComposeResult
 from textual.containers import Horizontal
 from textual.dom import DOMNode
+from textual.widget import Widget
 from textual.widgets import Checkbox, Label, RadioSet
 
 from tui_search.engine.search.choices import RECURSIVE_FORMS
@@ -46,9 +49,10 @@ class ChoiceRow(RadioSet):
     opened scrolled would depend on when the layout came (to the last row's pick, on a
     terminal too short for them all)."""
 
-    def _scroll_to_selected(self) -> None:
-        if self.has_focus:
-            super()._scroll_to_selected()
+    def scroll_to_widget(self, widget: Widget, **kwargs: Any) -> bool:
+        """Textual's public scroll (the row's own pick is all it brings into view), only
+        while the row has the focus."""
+        return self.has_focus and super().scroll_to_widget(widget, **kwargs)
 
 
 def radios(name: str, values: tuple[str, ...], chosen: str) -> RadioSet:
