@@ -10,7 +10,7 @@ import io
 import json
 
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
 from tests.engine.student_searches import bfs
@@ -171,6 +171,11 @@ def test_a_trace_that_stops_early_names_where_the_rule_goes_on() -> None:
 @given(random_grids(max_side=5), st.sampled_from(list(BIDIRECTIONAL)),
        st.sampled_from(STOP_RULES), st.sampled_from(TURN_RULES),
        st.sampled_from(["always", "never"]), st.booleans())
+# found on CI: the goal a diagonal away, so the backward step that takes it off is one the
+# two trees do not tell apart, and its moves (N, NE) showed in no step that is: the app's
+# whole order must be tried, not only its moves the told-apart steps show
+@example(Grid(2, 3, start=(0, 0), goal=(1, 1)), "biucs", "proven", "alternate", "always",
+         False)
 def test_the_apps_own_bidirectional_trace_is_named(grid: Grid, key: str, stop: str, turn: str,
                                                    corners: str, four: bool) -> None:
     """Whatever its rules, the search it is (its key, stopping and turn rules) is among the

@@ -203,7 +203,8 @@ def bidirectional_orders(trace: Trace, board: Grid | Graph) -> list[tuple[str, .
     from the steps whose search the two trees tell apart (a cell only the forward tree
     holds, or only the backward one), a backward step's successors mirrored through its
     node; a step that stops at the cell it last added says nothing of the moves after it.
-    The app's order (of the moves the trace made) first where the steps allow it."""
+    The app's order (all of it, then of the moves the trace made) first where the steps allow
+    it."""
     if on_graph(trace) or not isinstance(board, Grid):
         return inferred_orders(trace)
     forward: set[State] = {board.start} if board.start is not None else set()
@@ -228,6 +229,11 @@ def bidirectional_orders(trace: Trace, board: Grid | Graph) -> list[tuple[str, .
     default = tuple(m for m in DEFAULT_ORDER if m in orders[0])
     if agrees(view, default):
         orders = [default, *(o for o in orders if o != default)]
+    # the app's whole order too: a step the trees do not tell apart (the goal taken off
+    # after the forward search reached it) may use moves no step told apart shows
+    full = tuple(DEFAULT_ORDER)
+    if full not in orders and agrees(view, full):
+        orders = [full, *orders]
     return orders
 
 
