@@ -20,10 +20,14 @@ from __future__ import annotations
 import math
 import sys
 import time
+from collections.abc import Iterator
+from pathlib import Path
 
 from benchmarks.core import NEVER
 from benchmarks.maps import MAPS
 from benchmarks.table import Row, add
+from tui_search.engine.maps.grid import Grid
+from tui_search.engine.maps.scenarios import Scenario
 from tui_search.engine.run.recorded import Run
 
 #: Rows a ``.scen`` file (evenly spaced, its last included), and with ``--quick``.
@@ -39,11 +43,23 @@ def _spread(n: int, count: int) -> list[int]:
     return sorted({round(i * (n - 1) / (count - 1)) for i in range(count)})
 
 
-def bench_weighted(quick: bool) -> None:
-    print("weighted ...", file=sys.stderr, flush=True)
+def _scen_maps() -> Iterator[tuple[Path, list[Scenario], Grid]]:
+    """Each ``.scen`` of the maps folder with its rows and its map (those with no rows or no
+    map left out)."""
     from tui_search.engine.maps.load import load_map
     from tui_search.engine.maps.scenarios import read_scenarios
 
+    for scen_path in sorted(MAPS.glob("*.scen")):
+        rows = read_scenarios(scen_path)
+        if not rows:
+            continue
+        map_path = scen_path.parent / rows[0].map_name.rsplit("/", 1)[-1]
+        if map_path.exists():
+            yield scen_path, rows, load_map(map_path)
+
+
+def bench_weighted(quick: bool) -> None:
+    print("weighted ...", file=sys.stderr, flush=True)
     scens = sorted(MAPS.glob("*.scen"))
     if not scens:
         add(Row("weighted", "weighted A* w=2 / the optimum", "skipped", f"no .scen in {MAPS}"))
@@ -54,14 +70,7 @@ def bench_weighted(quick: bool) -> None:
     expanded = dict.fromkeys(runs, 0)
     cpu = dict.fromkeys(runs, 0.0)
     worst_all, rows_all = 1.0, 0
-    for scen_path in scens:
-        rows = read_scenarios(scen_path)
-        if not rows:
-            continue
-        map_path = scen_path.parent / rows[0].map_name.rsplit("/", 1)[-1]
-        if not map_path.exists():
-            continue
-        base = load_map(map_path)
+    for scen_path, rows, base in _scen_maps():
         ratios: list[float] = []
         closed_ratios: list[float] = []
         misses = 0
@@ -112,19 +121,9 @@ def every_row(step: int = 1) -> bool:
     every scenario of the optima check".  Only w = 2 runs (the ``.scen`` gives the optimum;
     the optima check holds A* to it), recorded on the core in use.  Prints a line a file and
     the total; True when every ratio is at most 2."""
-    from tui_search.engine.maps.load import load_map
-    from tui_search.engine.maps.scenarios import read_scenarios
-
     heavy = NEVER.replace(weight=WEIGHT)
     worst_all, rows_all, cpu_all = 1.0, 0, 0.0
-    for scen_path in sorted(MAPS.glob("*.scen")):
-        rows = read_scenarios(scen_path)
-        if not rows:
-            continue
-        map_path = scen_path.parent / rows[0].map_name.rsplit("/", 1)[-1]
-        if not map_path.exists():
-            continue
-        base = load_map(map_path)
+    for scen_path, rows, base in _scen_maps():
         worst, count, t0 = 1.0, 0, time.process_time()
         for scen in rows[::step]:
             if scen.optimal_length <= 0:

@@ -26,7 +26,7 @@ from typing import TYPE_CHECKING
 
 from tui_search.engine.maps.graph import Edge, Graph
 from tui_search.engine.maps.grid import Grid
-from tui_search.engine.run.recorded import MAX_STEPS, Run, Source
+from tui_search.engine.run.recorded import MAX_STEPS, OnBoard, Run, Source
 from tui_search.engine.search.bidirectional.loop import FORWARD, BidirectionalSearch
 from tui_search.engine.search.choices import DEFAULT_SEMANTICS, Semantics
 from tui_search.engine.search.outcome import Outcome
@@ -168,7 +168,7 @@ class _Half:
         rec.done = True
 
 
-class BiRun:
+class BiRun(OnBoard):
     """A bidirectional search recorded as its two halves (:attr:`halves`: forward, backward),
     with a position over both.  Its names, as a run's where they mean the same: ``board``,
     ``grid``, ``graph``, ``algorithm``, ``algo``, ``semantics``, ``max_steps``,
@@ -206,21 +206,6 @@ class BiRun:
     def grid(self) -> Grid:
         assert isinstance(self.board, Grid), "a run on a graph has no grid"
         return self.board
-
-    @property
-    def graph(self) -> Graph | None:
-        return self.board if isinstance(self.board, Graph) else None
-
-    @property
-    def start(self) -> State | None:
-        return self.board.start
-
-    @property
-    def goal(self) -> State | None:
-        board = self.board
-        if isinstance(board, Grid):
-            return board.goal
-        return board.goals[0] if board.goals else None
 
     # -- how much is recorded --------------------------------------------------------------
     def advance(self, until_step: int | None = None) -> bool:

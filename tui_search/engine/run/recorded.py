@@ -32,7 +32,34 @@ if TYPE_CHECKING:
     from tui_search.engine.maps.graph import Graph
     from tui_search.engine.search.state import State
 
-class Run:
+class OnBoard:
+    """What a run searches, by name: its ``board`` (a grid or a graph), the graph, the start
+    and the goal -- a run's and a bidirectional search's
+    (:class:`~tui_search.engine.run.bidirectional.BiRun`) alike."""
+
+    board: Grid | Graph
+
+    @property
+    def graph(self) -> Graph | None:
+        """The run's own copy of the graph, when it searches one."""
+        board = self.board
+        return None if isinstance(board, Grid) else board
+
+    @property
+    def start(self) -> State | None:
+        """Where the search starts: a cell, or a node's name."""
+        return self.board.start
+
+    @property
+    def goal(self) -> State | None:
+        """The goal (a graph's first, where it has several)."""
+        board = self.board
+        if isinstance(board, Grid):
+            return board.goal
+        return board.goals[0] if board.goals else None
+
+
+class Run(OnBoard):
     """A search on a snapshot of a grid, recorded lazily, with a movable position.
 
     The grid is copied: editing the original afterwards never changes this run.  Its names
@@ -96,25 +123,6 @@ class Run:
     def grid(self) -> Grid:
         """The run's own copy of the grid (a run on a graph has none: :attr:`board`)."""
         return self._recording.grid
-
-    @property
-    def graph(self) -> Graph | None:
-        """The run's own copy of the graph, when it searches one."""
-        board = self.board
-        return None if isinstance(board, Grid) else board
-
-    @property
-    def start(self) -> State | None:
-        """Where the search starts: a cell, or a node's name."""
-        return self.board.start
-
-    @property
-    def goal(self) -> State | None:
-        """The goal (a graph's first, where it has several)."""
-        board = self.board
-        if isinstance(board, Grid):
-            return board.goal
-        return board.goals[0] if board.goals else None
 
     def path_cost(self) -> float:
         """The path's cost (0.0 until the goal is found)."""
@@ -251,4 +259,4 @@ def recording_of(run: Run) -> Recording:
     return run._recording
 
 
-__all__ = ["MAX_STEPS", "Run", "Source", "Step", "recording_of"]
+__all__ = ["MAX_STEPS", "OnBoard", "Run", "Source", "Step", "recording_of"]
