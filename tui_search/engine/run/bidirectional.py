@@ -99,7 +99,6 @@ class _Driver:
             self.over = self.gave_up = True
             return False
         step = next(self._steps, None)
-        search = self.search
         if step is None:
             self.over = True
             if self.steps == 0:  # the roots alone: met at once, or nothing to search
@@ -110,9 +109,9 @@ class _Driver:
         self.forward_upto.append(self.forward_upto[-1] + (not back))
         self.pending[back].append(step)
         self.peak.append(max(self.peak[-1], step.frontier_size))
-        self.mu.append(search.mu)
+        self.mu.append(0.0)
         self.meeting.append(None)
-        self._note_meeting(self.steps)
+        self._note_meeting(self.steps)  # the best meeting after this step
         return True
 
     def _note_meeting(self, k: int) -> None:
@@ -200,6 +199,7 @@ class BiRun(OnBoard):
         #: The forward half and the backward half, each a run of its own.
         self.halves: tuple[Run, Run] = (halves[0], halves[1])
         self._k = 0
+        self._path: list[State] | None = None  # once found: the answer never changes
 
     # -- what it searches ------------------------------------------------------------------
     @property
@@ -322,8 +322,13 @@ class BiRun(OnBoard):
         return self._driver.search.why()
 
     def path(self) -> list[State] | None:
-        """Start to goal through the meeting (None until recorded whole, or not met)."""
-        return self._driver.search.path if self.found else None
+        """Start to goal through the meeting (None until recorded whole, or not met):
+        walked once, the search being over (the map asks it for every line it draws)."""
+        if not self.found:
+            return None
+        if self._path is None:
+            self._path = self._driver.search.path
+        return self._path
 
     def moves(self) -> list[str] | None:
         return self._driver.search.moves if self.found else None
